@@ -1,0 +1,182 @@
+//! The interpreter: evaluates any DAG at `f64` inputs.
+//!
+//! Tests use it as the oracle for generated code; benches use it as the
+//! "interpreted" baseline. [`Tape`] compiles the nodes reachable from a set
+//! of roots into a flat, topologically ordered program once, so that repeated
+//! evaluation does no hashing and no recursion.
+
+use crate::graph::{Binary, Graph, Id, Node, Sym, Unary};
+
+/// Value of a one-argument function; the definitions the generated code uses.
+pub fn unary(op: Unary, x: f64) -> f64 {
+    match op {
+        Unary::Sin => x.sin(),
+        Unary::Cos => x.cos(),
+        Unary::Tan => x.tan(),
+        Unary::Asin => x.asin(),
+        Unary::Acos => x.acos(),
+        Unary::Atan => x.atan(),
+        Unary::Exp => x.exp(),
+        Unary::Expm1 => x.exp_m1(),
+        Unary::Ln => x.ln(),
+        Unary::Ln1p => x.ln_1p(),
+        Unary::Abs => x.abs(),
+        Unary::Sign => {
+            if x > 0.0 {
+                1.0
+            } else if x < 0.0 {
+                -1.0
+            } else {
+                x * 0.0
+            }
+        }
+        Unary::Tanh => x.tanh(),
+        // NaN propagates through both (f64::max would swallow it).
+        Unary::Max0 => {
+            if x > 0.0 || x.is_nan() {
+                x
+            } else {
+                0.0
+            }
+        }
+        Unary::Step => {
+            if x > 0.0 {
+                1.0
+            } else if x.is_nan() {
+                x
+            } else {
+                0.0
+            }
+        }
+    }
+}
+
+/// Value of a two-argument function.
+pub fn binary(op: Binary, a: f64, b: f64) -> f64 {
+    match op {
+        Binary::Atan2 => a.atan2(b),
+        Binary::Hypot => a.hypot(b),
+    }
+}
+
+/// Value of `base ^ exponent` as the emitter computes it (sqrt and integer
+/// powers are special-cased there too).
+pub fn pow(b: f64, e: f64) -> f64 {
+    if e == 0.5 {
+        b.sqrt()
+    } else if e == -0.5 {
+        1.0 / b.sqrt()
+    } else if e.fract() == 0.0 && e.abs() <= 64.0 {
+        b.powi(e as i32)
+    } else {
+        b.powf(e)
+    }
+}
+
+#[derive(Clone, Debug)]
+enum Op {
+    Const(f64),
+    Sym(usize),
+    Add(Vec<u32>),
+    Mul(Vec<u32>),
+    Pow(u32, u32),
+    Unary(Unary, u32),
+    Binary(Binary, u32, u32),
+}
+
+/// A compiled program for the nodes reachable from some roots.
+#[derive(Clone, Debug)]
+pub struct Tape {
+    ops: Vec<Op>,
+    roots: Vec<u32>,
+    n_syms: usize,
+}
+
+impl Tape {
+    /// Compiles the nodes reachable from `roots`.
+    pub fn new(g: &Graph, roots: &[Id]) -> Tape {
+        let n = roots.iter().map(|r| r.index() + 1).max().unwrap_or(0);
+        let mut live = vec![false; n];
+        for r in roots {
+            live[r.index()] = true;
+        }
+        for i in (0..n).rev() {
+            if live[i] {
+                g.with_node(Id(i as u32), |node| node.for_each_child(|c| live[c.index()] = true));
+            }
+        }
+        let mut slot = vec![u32::MAX; n];
+        let mut ops = Vec::new();
+        for i in 0..n {
+            if !live[i] {
+                continue;
+            }
+            let s = |id: &Id| slot[id.index()];
+            let op = g.with_node(Id(i as u32), |node| match node {
+                Node::Const(c) => Op::Const(c.value()),
+                Node::Sym(sym) => Op::Sym(sym.index()),
+                Node::Add(xs) => Op::Add(xs.iter().map(s).collect()),
+                Node::Mul(xs) => Op::Mul(xs.iter().map(s).collect()),
+                Node::Pow(a, b) => Op::Pow(s(a), s(b)),
+                Node::Unary(u, a) => Op::Unary(*u, s(a)),
+                Node::Binary(o, a, b) => Op::Binary(*o, s(a), s(b)),
+            });
+            slot[i] = ops.len() as u32;
+            ops.push(op);
+        }
+        Tape { ops, roots: roots.iter().map(|r| slot[r.index()]).collect(), n_syms: g.symbols().len() }
+    }
+
+    /// Number of operations (reachable nodes).
+    pub fn len(&self) -> usize {
+        self.ops.len()
+    }
+
+    /// True for an empty tape.
+    pub fn is_empty(&self) -> bool {
+        self.ops.is_empty()
+    }
+
+    /// Number of symbols the tape expects in `values` (by [`Sym::index`]).
+    pub fn n_syms(&self) -> usize {
+        self.n_syms
+    }
+
+    /// Evaluates the roots with symbol values `values[sym.index()]`, using
+    /// `scratch` as working memory (resized as needed), writing `out[k]` for
+    /// root `k`.
+    pub fn eval_into(&self, values: &[f64], scratch: &mut Vec<f64>, out: &mut [f64]) {
+        scratch.clear();
+        scratch.reserve(self.ops.len());
+        for op in &self.ops {
+            let v = |k: &u32| scratch[*k as usize];
+            let r = match op {
+                Op::Const(c) => *c,
+                Op::Sym(s) => values[*s],
+                Op::Add(xs) => xs.iter().map(v).sum(),
+                Op::Mul(xs) => xs.iter().map(v).product(),
+                Op::Pow(a, b) => pow(v(a), v(b)),
+                Op::Unary(u, a) => unary(*u, v(a)),
+                Op::Binary(o, a, b) => binary(*o, v(a), v(b)),
+            };
+            scratch.push(r);
+        }
+        for (o, r) in out.iter_mut().zip(&self.roots) {
+            *o = scratch[*r as usize];
+        }
+    }
+
+    /// Evaluates the roots (allocating); see [`Tape::eval_into`].
+    pub fn eval(&self, values: &[f64]) -> Vec<f64> {
+        let mut scratch = Vec::new();
+        let mut out = vec![0.0; self.roots.len()];
+        self.eval_into(values, &mut scratch, &mut out);
+        out
+    }
+}
+
+/// Evaluates one expression with symbol values given by `value_of`.
+pub fn eval(g: &Graph, root: Id, value_of: impl Fn(Sym) -> f64) -> f64 {
+    let values: Vec<f64> = g.symbols().into_iter().map(|(s, _)| value_of(s)).collect();
+    Tape::new(g, &[root]).eval(&values)[0]
+}

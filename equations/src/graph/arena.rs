@@ -1,0 +1,119 @@
+//! The arena itself: nodes, the hash-consing memo and the symbol table.
+
+use std::cell::RefCell;
+use std::collections::HashMap;
+
+use super::node::{Id, Node, Sym, SymKind};
+
+/// A named symbol and what it stands for.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SymInfo {
+    pub name: String,
+    pub kind: SymKind,
+}
+
+#[derive(Default)]
+struct Inner {
+    nodes: Vec<Node>,
+    memo: HashMap<Node, Id>,
+    syms: Vec<SymInfo>,
+    sym_by_name: HashMap<String, Sym>,
+}
+
+/// A hash-consed arena of expression nodes.
+///
+/// Invariant: a node's children have smaller ids than the node itself, so
+/// `0..len()` is a topological order. Interning a node equal to a stored one
+/// returns the stored id (structural sharing).
+///
+/// The arena uses interior mutability so that many [`Expr`](crate::Expr)
+/// handles can build new nodes through `&Graph` with ordinary operators.
+#[derive(Default)]
+pub struct Graph {
+    inner: RefCell<Inner>,
+}
+
+impl Graph {
+    /// An empty arena.
+    pub fn new() -> Graph {
+        Graph::default()
+    }
+
+    /// Stores `node` (or finds the equal node already stored) without any
+    /// simplification. Use the [`Expr`](crate::Expr) operators instead unless
+    /// you are the simplifier.
+    ///
+    /// # Panics
+    /// If a child id is not already in the arena (that would break the
+    /// children-first invariant).
+    pub fn intern(&self, node: Node) -> Id {
+        let mut inner = self.inner.borrow_mut();
+        if let Some(&id) = inner.memo.get(&node) {
+            return id;
+        }
+        let id = Id(u32::try_from(inner.nodes.len()).expect("more than 2^32 nodes"));
+        node.for_each_child(|c| assert!(c < id, "child {c:?} not yet in the arena"));
+        inner.nodes.push(node.clone());
+        inner.memo.insert(node, id);
+        id
+    }
+
+    /// The node stored at `id` (cloned; the arena is append-only).
+    pub fn node(&self, id: Id) -> Node {
+        self.inner.borrow().nodes[id.index()].clone()
+    }
+
+    /// Runs `f` on the node stored at `id` without cloning it.
+    pub fn with_node<R>(&self, id: Id, f: impl FnOnce(&Node) -> R) -> R {
+        f(&self.inner.borrow().nodes[id.index()])
+    }
+
+    /// Number of nodes stored.
+    pub fn len(&self) -> usize {
+        self.inner.borrow().nodes.len()
+    }
+
+    /// True when no node is stored.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The symbol called `name`, created with `kind` if it does not exist.
+    ///
+    /// # Panics
+    /// If `name` already exists with another kind: a model that uses one name
+    /// for a variable and a parameter is a bug in the model.
+    pub fn symbol(&self, name: &str, kind: SymKind) -> Sym {
+        let mut inner = self.inner.borrow_mut();
+        if let Some(&s) = inner.sym_by_name.get(name) {
+            let have = inner.syms[s.index()].kind;
+            assert_eq!(have, kind, "symbol `{name}` declared as {have:?} and as {kind:?}");
+            return s;
+        }
+        let s = Sym(u32::try_from(inner.syms.len()).expect("more than 2^32 symbols"));
+        inner.syms.push(SymInfo { name: name.to_owned(), kind });
+        inner.sym_by_name.insert(name.to_owned(), s);
+        s
+    }
+
+    /// The symbol called `name`, if any.
+    pub fn lookup(&self, name: &str) -> Option<Sym> {
+        self.inner.borrow().sym_by_name.get(name).copied()
+    }
+
+    /// Name and kind of a symbol.
+    pub fn sym_info(&self, s: Sym) -> SymInfo {
+        self.inner.borrow().syms[s.index()].clone()
+    }
+
+    /// All symbols, in creation order.
+    pub fn symbols(&self) -> Vec<(Sym, SymInfo)> {
+        let inner = self.inner.borrow();
+        inner
+            .syms
+            .iter()
+            .enumerate()
+            .map(|(i, s)| (Sym(i as u32), s.clone()))
+            .collect()
+    }
+}

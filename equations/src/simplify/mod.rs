@@ -1,0 +1,243 @@
+//! Simplification at construction.
+//!
+//! Every [`Expr`](crate::Expr) operator calls one of the constructors here,
+//! which canonicalize and simplify before interning:
+//! - constant folding;
+//! - 0 and 1 identities;
+//! - flattening and canonical (id) ordering of sums and products;
+//! - collecting like terms into coefficients (`x + 2x → 3x`, `x − x → 0`) and
+//!   like factors into powers (`x·x → x²`, `x/x → 1`).
+//!
+//! The laws are meant never to change a value where the input is defined.
+//! Rewrites towards numerically stable forms live in [`rules`].
+
+pub mod rules;
+
+use std::collections::BTreeMap;
+
+use crate::graph::{Binary, Const, Graph, Id, Node, Unary};
+
+fn konst(g: &Graph, v: f64) -> Id {
+    g.intern(Node::Const(Const::new(v).expect("NaN constant")))
+}
+
+fn const_of(g: &Graph, id: Id) -> Option<f64> {
+    g.with_node(id, |n| match n {
+        Node::Const(c) => Some(c.value()),
+        _ => None,
+    })
+}
+
+/// Splits a term into `(coefficient, rest)`: `3·x·y → (3, x·y)`, `x → (1, x)`.
+pub(crate) fn split_coeff(g: &Graph, id: Id) -> (f64, Id) {
+    match g.node(id) {
+        Node::Mul(fs) => match const_of(g, fs[0]) {
+            Some(c) => {
+                let rest = &fs[1..];
+                let base = if rest.len() == 1 { rest[0] } else { g.intern(Node::Mul(rest.into())) };
+                (c, base)
+            }
+            None => (1.0, id),
+        },
+        _ => (1.0, id),
+    }
+}
+
+/// `c · base` for a base that is not a constant, in canonical form.
+pub(crate) fn scale(g: &Graph, c: f64, base: Id) -> Id {
+    if c == 0.0 {
+        return konst(g, 0.0);
+    }
+    if c == 1.0 {
+        return base;
+    }
+    let mut fs = vec![konst(g, c)];
+    match g.node(base) {
+        Node::Mul(xs) => fs.extend(xs.iter().copied()),
+        _ => fs.push(base),
+    }
+    g.intern(Node::Mul(fs.into()))
+}
+
+/// The sum of `terms`.
+pub fn add(g: &Graph, terms: &[Id]) -> Id {
+    let mut flat = Vec::with_capacity(terms.len());
+    for &t in terms {
+        match g.node(t) {
+            Node::Add(xs) => flat.extend(xs.iter().copied()),
+            _ => flat.push(t),
+        }
+    }
+    let mut c0 = 0.0;
+    let mut coeffs: BTreeMap<Id, f64> = BTreeMap::new();
+    for t in flat {
+        if let Some(v) = const_of(g, t) {
+            c0 += v;
+            continue;
+        }
+        let (c, base) = split_coeff(g, t);
+        *coeffs.entry(base).or_insert(0.0) += c;
+    }
+    let mut out: Vec<Id> = coeffs
+        .into_iter()
+        .filter(|&(_, c)| c != 0.0)
+        .map(|(b, c)| scale(g, c, b))
+        .collect();
+    if c0 != 0.0 || c0.is_nan() {
+        out.push(konst(g, c0));
+    }
+    rules::rewrite_sum(g, out)
+}
+
+/// Interns an already simplified list of sum terms (used by the rules).
+pub(crate) fn finish_sum(g: &Graph, mut out: Vec<Id>) -> Id {
+    out.sort_unstable();
+    match out.len() {
+        0 => konst(g, 0.0),
+        1 => out[0],
+        _ => g.intern(Node::Add(out.into())),
+    }
+}
+
+/// `a − b`.
+pub fn sub(g: &Graph, a: Id, b: Id) -> Id {
+    let nb = mul(g, &[konst(g, -1.0), b]);
+    add(g, &[a, nb])
+}
+
+/// `a / b`.
+pub fn div(g: &Graph, a: Id, b: Id) -> Id {
+    let inv = pow(g, b, konst(g, -1.0));
+    mul(g, &[a, inv])
+}
+
+/// Splits a factor into `(base, constant exponent)`: `x^3 → (x, 3)`.
+fn split_pow(g: &Graph, id: Id) -> (Id, f64) {
+    match g.node(id) {
+        Node::Pow(b, e) => match const_of(g, e) {
+            Some(v) => (b, v),
+            None => (id, 1.0),
+        },
+        _ => (id, 1.0),
+    }
+}
+
+/// The product of `factors`.
+pub fn mul(g: &Graph, factors: &[Id]) -> Id {
+    let mut flat = Vec::with_capacity(factors.len());
+    for &f in factors {
+        match g.node(f) {
+            Node::Mul(xs) => flat.extend(xs.iter().copied()),
+            _ => flat.push(f),
+        }
+    }
+    let mut c = 1.0;
+    let mut exps: BTreeMap<Id, f64> = BTreeMap::new();
+    for f in flat {
+        if let Some(v) = const_of(g, f) {
+            c *= v;
+            continue;
+        }
+        let (b, e) = split_pow(g, f);
+        *exps.entry(b).or_insert(0.0) += e;
+    }
+    if c == 0.0 {
+        return konst(g, 0.0);
+    }
+    let mut out = Vec::with_capacity(exps.len() + 1);
+    for (b, e) in exps {
+        if e == 0.0 {
+            continue;
+        }
+        let f = if e == 1.0 { b } else { pow(g, b, konst(g, e)) };
+        // A power may fold to a constant or a product (e.g. of a constant base).
+        if let Some(v) = const_of(g, f) {
+            c *= v;
+        } else {
+            match g.node(f) {
+                Node::Mul(xs) => {
+                    for &x in xs.iter() {
+                        match const_of(g, x) {
+                            Some(v) => c *= v,
+                            None => out.push(x),
+                        }
+                    }
+                }
+                _ => out.push(f),
+            }
+        }
+    }
+    out.sort_unstable();
+    if c == 0.0 {
+        return konst(g, 0.0);
+    }
+    match (out.len(), c == 1.0) {
+        (0, _) => konst(g, c),
+        (1, true) => out[0],
+        (_, true) => g.intern(Node::Mul(out.into())),
+        (_, false) => {
+            out.insert(0, konst(g, c));
+            g.intern(Node::Mul(out.into()))
+        }
+    }
+}
+
+/// `base ^ exponent`.
+pub fn pow(g: &Graph, base: Id, exponent: Id) -> Id {
+    let eb = const_of(g, base);
+    let ee = const_of(g, exponent);
+    if let (Some(b), Some(e)) = (eb, ee) {
+        let v = b.powf(e);
+        if v.is_finite() {
+            return konst(g, v);
+        }
+    }
+    match ee {
+        Some(e) if e == 0.0 => return konst(g, 1.0),
+        Some(e) if e == 1.0 => return base,
+        _ => {}
+    }
+    if eb == Some(1.0) {
+        return konst(g, 1.0);
+    }
+    if let Some(e) = ee {
+        let integer = e.fract() == 0.0;
+        match g.node(base) {
+            // (x^a)^n = x^(a n) for integer n.
+            Node::Pow(b, a) if integer => {
+                if let Some(a) = const_of(g, a) {
+                    return pow(g, b, konst(g, a * e));
+                }
+            }
+            // (x y)^n = x^n y^n for integer n.
+            Node::Mul(xs) if integer => {
+                let fs: Vec<Id> = xs.iter().map(|&x| pow(g, x, exponent)).collect();
+                return mul(g, &fs);
+            }
+            _ => {}
+        }
+    }
+    g.intern(Node::Pow(base, exponent))
+}
+
+/// A one-argument function.
+pub fn unary(g: &Graph, op: Unary, x: Id) -> Id {
+    if let Some(v) = const_of(g, x) {
+        let r = crate::eval::unary(op, v);
+        if r.is_finite() {
+            return konst(g, r);
+        }
+    }
+    rules::rewrite_unary(g, op, x).unwrap_or_else(|| g.intern(Node::Unary(op, x)))
+}
+
+/// A two-argument function other than `pow`.
+pub fn binary(g: &Graph, op: Binary, a: Id, b: Id) -> Id {
+    if let (Some(x), Some(y)) = (const_of(g, a), const_of(g, b)) {
+        let r = crate::eval::binary(op, x, y);
+        if r.is_finite() {
+            return konst(g, r);
+        }
+    }
+    g.intern(Node::Binary(op, a, b))
+}
