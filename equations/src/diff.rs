@@ -52,7 +52,12 @@ fn diff_memo(g: &Graph, e: Id, x: Sym, memo: &mut HashMap<Id, Id>) -> Id {
                     continue;
                 }
                 let mut fs: Vec<Id> = Vec::with_capacity(xs.len());
-                fs.extend(xs.iter().enumerate().filter(|&(j, _)| j != k).map(|(_, &f)| f));
+                fs.extend(
+                    xs.iter()
+                        .enumerate()
+                        .filter(|&(j, _)| j != k)
+                        .map(|(_, &f)| f),
+                );
                 fs.push(dk);
                 terms.push(simplify::mul(g, &fs));
             }
@@ -119,7 +124,10 @@ fn diff_memo(g: &Graph, e: Id, x: Sym, memo: &mut HashMap<Id, Id>) -> Id {
 /// the first term vanishes by itself.
 pub fn time_derivative(g: &Graph, e: Id, pairs: &[(Sym, Sym)]) -> Id {
     let mut terms = Vec::with_capacity(pairs.len() + 1);
-    if let Some(t) = g.lookup("t").filter(|&t| g.sym_info(t).kind == SymKind::Time) {
+    if let Some(t) = g
+        .lookup("t")
+        .filter(|&t| g.sym_info(t).kind == SymKind::Time)
+    {
         terms.push(diff(g, e, t));
     }
     for &(q, qd) in pairs {
@@ -152,6 +160,7 @@ impl<'g> Expr<'g> {
             _ => panic!("dt: `{e}` is not a symbol"),
         };
         let ps: Vec<(Sym, Sym)> = pairs.iter().map(|&(q, v)| (sym(q), sym(v))).collect();
-        self.graph().expr(time_derivative(self.graph(), self.id(), &ps))
+        self.graph()
+            .expr(time_derivative(self.graph(), self.id(), &ps))
     }
 }

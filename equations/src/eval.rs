@@ -102,7 +102,9 @@ impl Tape {
         }
         for i in (0..n).rev() {
             if live[i] {
-                g.with_node(Id(i as u32), |node| node.for_each_child(|c| live[c.index()] = true));
+                g.with_node(Id(i as u32), |node| {
+                    node.for_each_child(|c| live[c.index()] = true)
+                });
             }
         }
         let mut slot = vec![u32::MAX; n];
@@ -124,7 +126,11 @@ impl Tape {
             slot[i] = ops.len() as u32;
             ops.push(op);
         }
-        Tape { ops, roots: roots.iter().map(|r| slot[r.index()]).collect(), n_syms: g.symbols().len() }
+        Tape {
+            ops,
+            roots: roots.iter().map(|r| slot[r.index()]).collect(),
+            n_syms: g.symbols().len(),
+        }
     }
 
     /// Number of operations (reachable nodes).

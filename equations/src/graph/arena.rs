@@ -58,6 +58,13 @@ impl Graph {
         id
     }
 
+    /// The id of `node` if an equal node is already stored. Unlike
+    /// [`Graph::intern`] this never grows the arena, so rules can ask "does
+    /// the partner term exist?" without leaving garbage behind.
+    pub fn find(&self, node: &Node) -> Option<Id> {
+        self.inner.borrow().memo.get(node).copied()
+    }
+
     /// The node stored at `id` (cloned; the arena is append-only).
     pub fn node(&self, id: Id) -> Node {
         self.inner.borrow().nodes[id.index()].clone()
@@ -87,11 +94,17 @@ impl Graph {
         let mut inner = self.inner.borrow_mut();
         if let Some(&s) = inner.sym_by_name.get(name) {
             let have = inner.syms[s.index()].kind;
-            assert_eq!(have, kind, "symbol `{name}` declared as {have:?} and as {kind:?}");
+            assert_eq!(
+                have, kind,
+                "symbol `{name}` declared as {have:?} and as {kind:?}"
+            );
             return s;
         }
         let s = Sym(u32::try_from(inner.syms.len()).expect("more than 2^32 symbols"));
-        inner.syms.push(SymInfo { name: name.to_owned(), kind });
+        inner.syms.push(SymInfo {
+            name: name.to_owned(),
+            kind,
+        });
         inner.sym_by_name.insert(name.to_owned(), s);
         s
     }

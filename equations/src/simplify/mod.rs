@@ -1,27 +1,30 @@
 //! Simplification at construction.
 //!
 //! Every [`Expr`](crate::Expr) operator calls one of the constructors here,
-//! which canonicalize and simplify before interning:
-//! - constant folding;
-//! - 0 and 1 identities;
-//! - flattening and canonical (id) ordering of sums and products;
-//! - collecting like terms into coefficients (`x + 2x → 3x`, `x − x → 0`) and
-//!   like factors into powers (`x·x → x²`, `x/x → 1`).
+//! which canonicalize and simplify before interning. The constructors do the
+//! bookkeeping every computer-algebra system does (constant folding, the 0
+//! and 1 identities, flattening and id ordering of sums and products,
+//! collecting like terms into coefficients and like factors into powers);
+//! every other law is a row of the table [`rules::RULES`], which also lists
+//! the constructor laws with their domains so that one table documents all
+//! rewrites.
 //!
-//! The laws are meant never to change a value where the input is defined.
-//! Rewrites towards numerically stable forms live in [`rules`].
+//! A law may turn an undefined value (NaN, a division by zero) into a defined
+//! one (`x/x → 1` at `x = 0`), but never changes a value where the input
+//! expression is defined and finite.
 
+mod laws;
 pub mod rules;
 
 use std::collections::BTreeMap;
 
 use crate::graph::{Binary, Const, Graph, Id, Node, Unary};
 
-fn konst(g: &Graph, v: f64) -> Id {
+pub(crate) fn konst(g: &Graph, v: f64) -> Id {
     g.intern(Node::Const(Const::new(v).expect("NaN constant")))
 }
 
-fn const_of(g: &Graph, id: Id) -> Option<f64> {
+pub(crate) fn const_of(g: &Graph, id: Id) -> Option<f64> {
     g.with_node(id, |n| match n {
         Node::Const(c) => Some(c.value()),
         _ => None,
@@ -34,13 +37,34 @@ pub(crate) fn split_coeff(g: &Graph, id: Id) -> (f64, Id) {
         Node::Mul(fs) => match const_of(g, fs[0]) {
             Some(c) => {
                 let rest = &fs[1..];
-                let base = if rest.len() == 1 { rest[0] } else { g.intern(Node::Mul(rest.into())) };
+                let base = if rest.len() == 1 {
+                    rest[0]
+                } else {
+                    g.intern(Node::Mul(rest.into()))
+                };
                 (c, base)
             }
             None => (1.0, id),
         },
         _ => (1.0, id),
     }
+}
+
+/// Splits a term into its coefficient and its non-constant factors, without
+/// interning anything: `3·x·y → (3, [x, y])`, `x → (1, [x])`, `5 → (5, [])`.
+/// The factors are in canonical (id) order.
+pub(crate) fn term_parts(g: &Graph, id: Id) -> (f64, Vec<Id>) {
+    g.with_node(id, |n| match n {
+        Node::Const(c) => (c.value(), Vec::new()),
+        Node::Mul(fs) => match g.with_node(fs[0], |f| match f {
+            Node::Const(c) => Some(c.value()),
+            _ => None,
+        }) {
+            Some(c) => (c, fs[1..].to_vec()),
+            None => (1.0, fs.to_vec()),
+        },
+        _ => (1.0, vec![id]),
+    })
 }
 
 /// `c · base` for a base that is not a constant, in canonical form.
@@ -86,10 +110,13 @@ pub fn add(g: &Graph, terms: &[Id]) -> Id {
     if c0 != 0.0 || c0.is_nan() {
         out.push(konst(g, c0));
     }
-    rules::rewrite_sum(g, out)
+    if let Some(next) = rules::rewrite_sum(g, &out) {
+        return add(g, &next);
+    }
+    finish_sum(g, out)
 }
 
-/// Interns an already simplified list of sum terms (used by the rules).
+/// Interns an already simplified list of sum terms.
 pub(crate) fn finish_sum(g: &Graph, mut out: Vec<Id>) -> Id {
     out.sort_unstable();
     match out.len() {
@@ -101,8 +128,13 @@ pub(crate) fn finish_sum(g: &Graph, mut out: Vec<Id>) -> Id {
 
 /// `a − b`.
 pub fn sub(g: &Graph, a: Id, b: Id) -> Id {
-    let nb = mul(g, &[konst(g, -1.0), b]);
+    let nb = neg(g, b);
     add(g, &[a, nb])
+}
+
+/// `−a`.
+pub fn neg(g: &Graph, a: Id) -> Id {
+    mul(g, &[konst(g, -1.0), a])
 }
 
 /// `a / b`.
@@ -145,31 +177,34 @@ pub fn mul(g: &Graph, factors: &[Id]) -> Id {
         return konst(g, 0.0);
     }
     let mut out = Vec::with_capacity(exps.len() + 1);
+    let mut nested = false;
     for (b, e) in exps {
         if e == 0.0 {
             continue;
         }
         let f = if e == 1.0 { b } else { pow(g, b, konst(g, e)) };
-        // A power may fold to a constant or a product (e.g. of a constant base).
-        if let Some(v) = const_of(g, f) {
-            c *= v;
-        } else {
-            match g.node(f) {
-                Node::Mul(xs) => {
-                    for &x in xs.iter() {
-                        match const_of(g, x) {
-                            Some(v) => c *= v,
-                            None => out.push(x),
-                        }
-                    }
-                }
-                _ => out.push(f),
+        // A power may fold to a constant, or to a product (x^a·x^b with a
+        // product x), whose factors must be collected again.
+        match const_of(g, f) {
+            Some(v) => c *= v,
+            None => {
+                nested |= matches!(g.node(f), Node::Mul(_));
+                out.push(f);
             }
         }
     }
-    out.sort_unstable();
     if c == 0.0 {
         return konst(g, 0.0);
+    }
+    if nested {
+        // Terminates: the nested products are factors of strictly smaller
+        // expressions (a power's base), so this recursion descends.
+        out.push(konst(g, c));
+        return mul(g, &out);
+    }
+    out.sort_unstable();
+    if let Some(r) = rules::rewrite_product(g, c, &out) {
+        return r;
     }
     match (out.len(), c == 1.0) {
         (0, _) => konst(g, c),
@@ -187,37 +222,20 @@ pub fn pow(g: &Graph, base: Id, exponent: Id) -> Id {
     let eb = const_of(g, base);
     let ee = const_of(g, exponent);
     if let (Some(b), Some(e)) = (eb, ee) {
-        let v = b.powf(e);
+        let v = crate::eval::pow(b, e);
         if v.is_finite() {
             return konst(g, v);
         }
     }
     match ee {
-        Some(e) if e == 0.0 => return konst(g, 1.0),
-        Some(e) if e == 1.0 => return base,
+        Some(0.0) => return konst(g, 1.0),
+        Some(1.0) => return base,
         _ => {}
     }
     if eb == Some(1.0) {
         return konst(g, 1.0);
     }
-    if let Some(e) = ee {
-        let integer = e.fract() == 0.0;
-        match g.node(base) {
-            // (x^a)^n = x^(a n) for integer n.
-            Node::Pow(b, a) if integer => {
-                if let Some(a) = const_of(g, a) {
-                    return pow(g, b, konst(g, a * e));
-                }
-            }
-            // (x y)^n = x^n y^n for integer n.
-            Node::Mul(xs) if integer => {
-                let fs: Vec<Id> = xs.iter().map(|&x| pow(g, x, exponent)).collect();
-                return mul(g, &fs);
-            }
-            _ => {}
-        }
-    }
-    g.intern(Node::Pow(base, exponent))
+    rules::rewrite_pow(g, base, exponent).unwrap_or_else(|| g.intern(Node::Pow(base, exponent)))
 }
 
 /// A one-argument function.
@@ -239,5 +257,23 @@ pub fn binary(g: &Graph, op: Binary, a: Id, b: Id) -> Id {
             return konst(g, r);
         }
     }
-    g.intern(Node::Binary(op, a, b))
+    rules::rewrite_binary(g, op, a, b).unwrap_or_else(|| g.intern(Node::Binary(op, a, b)))
+}
+
+/// True when `id` is "negative" in the canonical sense the odd/even rules
+/// use: a product with a negative coefficient, or a sum whose term with the
+/// smallest factor list has a negative coefficient. Exactly one of `u` and
+/// `−u` is negative for every non-constant `u` that is a sum or a product
+/// with a coefficient, so rewriting `f(−u)` to `±f(u)` cannot loop.
+pub(crate) fn is_negative(g: &Graph, id: Id) -> bool {
+    match g.node(id) {
+        Node::Mul(_) => term_parts(g, id).0 < 0.0,
+        Node::Add(xs) => xs
+            .iter()
+            .map(|&t| term_parts(g, t))
+            .filter(|(_, fs)| !fs.is_empty())
+            .min_by(|a, b| a.1.cmp(&b.1))
+            .is_some_and(|(c, _)| c < 0.0),
+        _ => false,
+    }
 }

@@ -1,16 +1,305 @@
-//! The rewrite table: identities and numerically stable forms.
+//! The rewrite table: every law the simplifier applies, one row each.
 //!
-//! Later work extends this table; each rule is one row with the law it
-//! implements and, for stable forms, the cancellation it avoids.
+//! A row names the law, states it, gives the domain on which it preserves
+//! the value, and says why it cannot loop. Rows with [`Site::Core`] are
+//! applied by the constructors in [`super`] (they are the bookkeeping every
+//! computer-algebra system does and are listed here so that this table is
+//! the one place that documents all rewrites); every other row carries the
+//! function that applies it, and is tried, in table order, each time a node
+//! of its site is built.
+//!
+//! To add a law, write its function (in [`super::laws`] or a new sibling
+//! module) and add a row. A [`Site::Sum`] rule must strictly decrease the
+//! number of `cos` occurrences in the sum (counted as a tree): that is the
+//! measure that proves the sum rules terminate, and [`rewrite_sum`] refuses
+//! (and in debug builds reports) a rewrite that does not decrease it.
 
-use crate::graph::{Graph, Id, Unary};
+use std::collections::HashMap;
 
-/// Rewrites applied to a sum whose terms are already collected.
-pub(crate) fn rewrite_sum(g: &Graph, terms: Vec<Id>) -> Id {
-    super::finish_sum(g, terms)
+use super::laws;
+use crate::graph::{Binary, Graph, Id, Node, Unary};
+
+/// Rewrites a sum whose like terms are already collected (the constant, if
+/// any, last); returns the new, uncollected terms.
+pub type SumRule = fn(&Graph, &[Id]) -> Option<Vec<Id>>;
+/// Rewrites a product `c · f₁ · … · fₙ` whose like factors are collected
+/// (the factors non-constant, in canonical order, `c ≠ 0`).
+pub type ProductRule = fn(&Graph, f64, &[Id]) -> Option<Id>;
+/// Rewrites `base ^ exponent` after constant folding and the 0/1 identities.
+pub type PowRule = fn(&Graph, Id, Id) -> Option<Id>;
+/// Rewrites `op(x)` for a non-constant `x`.
+pub type UnaryRule = fn(&Graph, Unary, Id) -> Option<Id>;
+/// Rewrites `op(a, b)` when not both operands are constants.
+pub type BinaryRule = fn(&Graph, Binary, Id, Id) -> Option<Id>;
+
+/// Where a rule looks, with the function that applies it.
+#[derive(Clone, Copy)]
+pub enum Site {
+    /// Applied by the constructors in [`crate::simplify`] (no function here).
+    Core,
+    Sum(SumRule),
+    Product(ProductRule),
+    Pow(PowRule),
+    /// Tried only for this function.
+    Unary(Unary, UnaryRule),
+    /// Tried only for this function.
+    Binary(Binary, BinaryRule),
 }
 
-/// Rewrites of a one-argument function of a non-constant argument.
-pub(crate) fn rewrite_unary(_g: &Graph, _op: Unary, _x: Id) -> Option<Id> {
+/// One rewrite law.
+#[derive(Clone, Copy)]
+pub struct Rule {
+    /// Short identifier, unique in the table.
+    pub name: &'static str,
+    /// The law, left side to right side.
+    pub law: &'static str,
+    /// Where the law preserves the value (outside, the left side is
+    /// undefined or the law is not applied).
+    pub domain: &'static str,
+    /// Why applying the law cannot loop.
+    pub terminates: &'static str,
+    /// Where it applies.
+    pub site: Site,
+}
+
+const fn core(name: &'static str, law: &'static str, domain: &'static str) -> Rule {
+    Rule {
+        name,
+        law,
+        domain,
+        terminates: "applied once by the constructor",
+        site: Site::Core,
+    }
+}
+
+const SMALLER: &str = "rebuilds from strictly smaller subexpressions";
+const ODD_T: &str = "the argument of the result is not negative (exactly one of u, -u is)";
+
+/// All rewrites, in the order they are tried within a site.
+pub static RULES: &[Rule] = &[
+    // ---- constructor laws (simplify/mod.rs) ----
+    core(
+        "fold",
+        "f(c1, …) = value for constants",
+        "result finite (else the node is kept)",
+    ),
+    core("add_zero", "x + 0 = x", "all x"),
+    core("mul_one", "1·x = x", "all x"),
+    core("mul_zero", "0·x = 0", "finite x"),
+    core("pow_zero", "x^0 = 1", "all x (as powi/powf)"),
+    core("pow_one", "x^1 = x; 1^x = 1", "all x"),
+    core(
+        "flatten",
+        "(a + b) + c = a + b + c; (a·b)·c = a·b·c",
+        "all (order of rounding changes)",
+    ),
+    core(
+        "order",
+        "operands of + and · sorted by id",
+        "all (order of rounding changes)",
+    ),
+    core(
+        "collect_terms",
+        "a·x + b·x = (a+b)·x; x − x = 0",
+        "finite x",
+    ),
+    core(
+        "collect_factors",
+        "x^a · x^b = x^(a+b); x/x = 1",
+        "where both factors are defined, x ≠ 0",
+    ),
+    // ---- sums ----
+    Rule {
+        name: "pythagorean",
+        law: "c·F·sin(u)^2 + c·F·cos(u)^2 = c·F",
+        domain: "all u, F",
+        terminates: "removes a cos",
+        site: Site::Sum(laws::pythagorean),
+    },
+    Rule {
+        name: "one_minus_cos",
+        law: "c·F − c·F·cos(u) = 2·c·F·sin(u/2)^2 (no cancellation at small u)",
+        domain: "all u, F",
+        terminates: "removes a cos",
+        site: Site::Sum(laws::one_minus_cos),
+    },
+    // ---- products ----
+    Rule {
+        name: "distribute_scalar",
+        law: "c·(a + b) = c·a + c·b",
+        domain: "all (rounding changes)",
+        terminates: "the sum constructor scales terms without building products",
+        site: Site::Product(laws::distribute_scalar),
+    },
+    // ---- powers ----
+    Rule {
+        name: "pow_of_pow_int",
+        law: "(x^a)^n = x^(a·n) for integer n",
+        domain: "where x^a is defined",
+        terminates: SMALLER,
+        site: Site::Pow(laws::pow_of_pow_int),
+    },
+    Rule {
+        name: "even_root",
+        law: "(x^n)^e = |x|^(n·e) for even n and integer n·e (e.g. sqrt(x^2) = |x|, never x)",
+        domain: "all x",
+        terminates: SMALLER,
+        site: Site::Pow(laws::even_root),
+    },
+    Rule {
+        name: "abs_even_pow",
+        law: "|x|^n = x^n for even integer n",
+        domain: "all x",
+        terminates: SMALLER,
+        site: Site::Pow(laws::abs_even_pow),
+    },
+    Rule {
+        name: "pow_of_product_int",
+        law: "(x·y)^n = x^n·y^n for integer n",
+        domain: "all x, y",
+        terminates: SMALLER,
+        site: Site::Pow(laws::pow_of_product_int),
+    },
+    // ---- odd and even functions ----
+    Rule {
+        name: "sin_odd",
+        law: "sin(-u) = -sin(u)",
+        domain: "all u",
+        terminates: ODD_T,
+        site: Site::Unary(Unary::Sin, laws::odd),
+    },
+    Rule {
+        name: "tan_odd",
+        law: "tan(-u) = -tan(u)",
+        domain: "all u",
+        terminates: ODD_T,
+        site: Site::Unary(Unary::Tan, laws::odd),
+    },
+    Rule {
+        name: "asin_odd",
+        law: "asin(-u) = -asin(u)",
+        domain: "|u| <= 1",
+        terminates: ODD_T,
+        site: Site::Unary(Unary::Asin, laws::odd),
+    },
+    Rule {
+        name: "atan_odd",
+        law: "atan(-u) = -atan(u)",
+        domain: "all u",
+        terminates: ODD_T,
+        site: Site::Unary(Unary::Atan, laws::odd),
+    },
+    Rule {
+        name: "tanh_odd",
+        law: "tanh(-u) = -tanh(u)",
+        domain: "all u",
+        terminates: ODD_T,
+        site: Site::Unary(Unary::Tanh, laws::odd),
+    },
+    Rule {
+        name: "sign_odd",
+        law: "sign(-u) = -sign(u)",
+        domain: "all u",
+        terminates: ODD_T,
+        site: Site::Unary(Unary::Sign, laws::odd),
+    },
+    Rule {
+        name: "cos_even",
+        law: "cos(-u) = cos(u)",
+        domain: "all u",
+        terminates: ODD_T,
+        site: Site::Unary(Unary::Cos, laws::even),
+    },
+    Rule {
+        name: "abs_scale",
+        law: "|c·u| = |c|·|u|; |-u| = |u|",
+        domain: "all u",
+        terminates: "the argument of the result has coefficient 1 and is not negative",
+        site: Site::Unary(Unary::Abs, laws::abs_scale),
+    },
+    Rule {
+        name: "abs_idempotent",
+        law: "| |u| | = |u|; |u^n| = u^n for even n",
+        domain: "all u",
+        terminates: "returns the argument",
+        site: Site::Unary(Unary::Abs, laws::abs_of_nonneg),
+    },
+    Rule {
+        name: "hypot_canonical",
+        law: "hypot(±a, ±b) = hypot(a, b) = hypot(b, a), operands sorted",
+        domain: "all a, b",
+        terminates: "the result's operands are sorted and not negative",
+        site: Site::Binary(Binary::Hypot, laws::hypot_canonical),
+    },
+    // Not a rule, on purpose: atan2(-y, x) = -atan2(y, x) fails on the branch
+    // cut (y = ±0, x < 0), where the sign of a computed zero picks ±π.
+];
+
+/// Applies the first sum rule that fires and decreases the measure.
+pub(crate) fn rewrite_sum(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
+    for rule in RULES {
+        let Site::Sum(f) = rule.site else { continue };
+        if let Some(next) = f(g, terms) {
+            if cos_count(g, &next) < cos_count(g, terms) {
+                return Some(next);
+            }
+            debug_assert!(
+                false,
+                "sum rule `{}` does not decrease the measure",
+                rule.name
+            );
+        }
+    }
     None
+}
+
+/// The termination measure of the sum rules: occurrences of `cos` in the
+/// terms, counted as a tree (saturating).
+pub(crate) fn cos_count(g: &Graph, terms: &[Id]) -> u64 {
+    fn count(g: &Graph, id: Id, memo: &mut HashMap<Id, u64>) -> u64 {
+        if let Some(&n) = memo.get(&id) {
+            return n;
+        }
+        let node = g.node(id);
+        let mut n = u64::from(matches!(node, Node::Unary(Unary::Cos, _)));
+        node.for_each_child(|c| n = n.saturating_add(count(g, c, memo)));
+        memo.insert(id, n);
+        n
+    }
+    let mut memo = HashMap::new();
+    terms
+        .iter()
+        .fold(0, |n, &t| n.saturating_add(count(g, t, &mut memo)))
+}
+
+/// Applies the first product rule that fires.
+pub(crate) fn rewrite_product(g: &Graph, c: f64, factors: &[Id]) -> Option<Id> {
+    RULES.iter().find_map(|r| match r.site {
+        Site::Product(f) => f(g, c, factors),
+        _ => None,
+    })
+}
+
+/// Applies the first power rule that fires.
+pub(crate) fn rewrite_pow(g: &Graph, base: Id, exponent: Id) -> Option<Id> {
+    RULES.iter().find_map(|r| match r.site {
+        Site::Pow(f) => f(g, base, exponent),
+        _ => None,
+    })
+}
+
+/// Applies the first rule for `op` that fires.
+pub(crate) fn rewrite_unary(g: &Graph, op: Unary, x: Id) -> Option<Id> {
+    RULES.iter().find_map(|r| match r.site {
+        Site::Unary(o, f) if o == op => f(g, op, x),
+        _ => None,
+    })
+}
+
+/// Applies the first rule for `op` that fires.
+pub(crate) fn rewrite_binary(g: &Graph, op: Binary, a: Id, b: Id) -> Option<Id> {
+    RULES.iter().find_map(|r| match r.site {
+        Site::Binary(o, f) if o == op => f(g, op, a, b),
+        _ => None,
+    })
 }

@@ -1,0 +1,204 @@
+//! The functions behind the rows of [`super::rules::RULES`]. Each one is
+//! documented by its row (law, domain, termination); comments here explain
+//! only how it finds its pattern.
+
+use super::{add, const_of, is_negative, konst, mul, neg, pow, term_parts, unary};
+use crate::graph::{Binary, Const, Graph, Id, Node, Unary};
+
+/// `u` when `f` is `op(u)^2`; only looks up nodes, never interns.
+fn square_of(g: &Graph, f: Id, op: Unary) -> Option<Id> {
+    let Node::Pow(b, e) = g.node(f) else {
+        return None;
+    };
+    if const_of(g, e) != Some(2.0) {
+        return None;
+    }
+    match g.node(b) {
+        Node::Unary(o, u) if o == op => Some(u),
+        _ => None,
+    }
+}
+
+/// The terms of `terms` other than those at `i` and `j`.
+fn without(terms: &[Id], i: usize, j: usize) -> Vec<Id> {
+    terms
+        .iter()
+        .enumerate()
+        .filter(|&(k, _)| k != i && k != j)
+        .map(|(_, &t)| t)
+        .collect()
+}
+
+/// `c·F·sin(u)^2 + c·F·cos(u)^2 → c·F`.
+pub(super) fn pythagorean(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
+    let parts: Vec<(f64, Vec<Id>)> = terms.iter().map(|&t| term_parts(g, t)).collect();
+    let two = g.find(&Node::Const(Const::new(2.0)?))?;
+    for (i, (c, fs)) in parts.iter().enumerate() {
+        for (k, &f) in fs.iter().enumerate() {
+            let Some(u) = square_of(g, f, Unary::Sin) else {
+                continue;
+            };
+            let Some(cos_u) = g.find(&Node::Unary(Unary::Cos, u)) else {
+                continue;
+            };
+            let Some(cos2) = g.find(&Node::Pow(cos_u, two)) else {
+                continue;
+            };
+            let mut partner = fs.clone();
+            partner[k] = cos2;
+            partner.sort_unstable();
+            let Some(j) = parts.iter().position(|(cj, fj)| cj == c && *fj == partner) else {
+                continue;
+            };
+            let mut rest: Vec<Id> = fs
+                .iter()
+                .enumerate()
+                .filter(|&(m, _)| m != k)
+                .map(|(_, &x)| x)
+                .collect();
+            rest.push(konst(g, *c));
+            let mut next = without(terms, i, j);
+            next.push(mul(g, &rest));
+            return Some(next);
+        }
+    }
+    None
+}
+
+/// `c·F − c·F·cos(u) → 2·c·F·sin(u/2)^2`, where `F` may be 1 (then the
+/// partner is the constant term).
+pub(super) fn one_minus_cos(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
+    let parts: Vec<(f64, Vec<Id>)> = terms.iter().map(|&t| term_parts(g, t)).collect();
+    for (i, (c, fs)) in parts.iter().enumerate() {
+        for (k, &f) in fs.iter().enumerate() {
+            let Node::Unary(Unary::Cos, u) = g.node(f) else {
+                continue;
+            };
+            let rest: Vec<Id> = fs
+                .iter()
+                .enumerate()
+                .filter(|&(m, _)| m != k)
+                .map(|(_, &x)| x)
+                .collect();
+            let Some(j) = parts.iter().position(|(cj, fj)| *cj == -c && *fj == rest) else {
+                continue;
+            };
+            // cj·F + c·F·cos u with cj = −c is −c·F·(1 − cos u) = −2c·F·sin²(u/2).
+            let half = mul(g, &[konst(g, 0.5), u]);
+            let s2 = pow(g, unary(g, Unary::Sin, half), konst(g, 2.0));
+            let mut fs2 = rest;
+            fs2.push(s2);
+            fs2.push(konst(g, -2.0 * c));
+            let mut next = without(terms, i, j);
+            next.push(mul(g, &fs2));
+            return Some(next);
+        }
+    }
+    None
+}
+
+/// `c·(a + b) → c·a + c·b` for a product of a constant and one sum.
+pub(super) fn distribute_scalar(g: &Graph, c: f64, factors: &[Id]) -> Option<Id> {
+    if c == 1.0 || factors.len() != 1 {
+        return None;
+    }
+    let Node::Add(xs) = g.node(factors[0]) else {
+        return None;
+    };
+    let k = konst(g, c);
+    let scaled: Vec<Id> = xs.iter().map(|&t| mul(g, &[k, t])).collect();
+    Some(add(g, &scaled))
+}
+
+/// The value of `id` when it is a constant integer.
+fn integer(g: &Graph, id: Id) -> Option<f64> {
+    const_of(g, id).filter(|v| v.fract() == 0.0)
+}
+
+/// `(x^a)^n → x^(a·n)` for integer `n`.
+pub(super) fn pow_of_pow_int(g: &Graph, base: Id, e: Id) -> Option<Id> {
+    let n = integer(g, e)?;
+    let Node::Pow(x, a) = g.node(base) else {
+        return None;
+    };
+    let a = const_of(g, a)?;
+    Some(pow(g, x, konst(g, a * n)))
+}
+
+/// `(x^n)^e → |x|^(n·e)` for even integer `n` and integer `n·e`.
+pub(super) fn even_root(g: &Graph, base: Id, e: Id) -> Option<Id> {
+    let e = const_of(g, e)?;
+    let Node::Pow(x, n) = g.node(base) else {
+        return None;
+    };
+    let n = integer(g, n)?;
+    let m = n * e;
+    if n % 2.0 != 0.0 || m.fract() != 0.0 {
+        return None;
+    }
+    Some(pow(g, unary(g, Unary::Abs, x), konst(g, m)))
+}
+
+/// `|x|^n → x^n` for even integer `n`.
+pub(super) fn abs_even_pow(g: &Graph, base: Id, e: Id) -> Option<Id> {
+    let n = integer(g, e)?;
+    let Node::Unary(Unary::Abs, x) = g.node(base) else {
+        return None;
+    };
+    (n % 2.0 == 0.0).then(|| pow(g, x, e))
+}
+
+/// `(x·y)^n → x^n·y^n` for integer `n`.
+pub(super) fn pow_of_product_int(g: &Graph, base: Id, e: Id) -> Option<Id> {
+    integer(g, e)?;
+    let Node::Mul(xs) = g.node(base) else {
+        return None;
+    };
+    let fs: Vec<Id> = xs.iter().map(|&x| pow(g, x, e)).collect();
+    Some(mul(g, &fs))
+}
+
+/// `f(−u) → −f(u)` for an odd `f`.
+pub(super) fn odd(g: &Graph, op: Unary, x: Id) -> Option<Id> {
+    is_negative(g, x).then(|| neg(g, unary(g, op, neg(g, x))))
+}
+
+/// `f(−u) → f(u)` for an even `f`.
+pub(super) fn even(g: &Graph, op: Unary, x: Id) -> Option<Id> {
+    is_negative(g, x).then(|| unary(g, op, neg(g, x)))
+}
+
+/// `|c·u| → |c|·|u|`, `|−u| → |u|`.
+pub(super) fn abs_scale(g: &Graph, op: Unary, x: Id) -> Option<Id> {
+    let (c, fs) = term_parts(g, x);
+    if matches!(g.node(x), Node::Mul(_)) && c != 1.0 {
+        let inner = unary(g, op, mul(g, &fs));
+        return Some(mul(g, &[konst(g, c.abs()), inner]));
+    }
+    even(g, op, x)
+}
+
+/// `| |u| | → |u|`, `|u^n| → u^n` for even `n`.
+pub(super) fn abs_of_nonneg(g: &Graph, _op: Unary, x: Id) -> Option<Id> {
+    match g.node(x) {
+        Node::Unary(Unary::Abs, _) => Some(x),
+        Node::Pow(_, e) if integer(g, e).is_some_and(|n| n % 2.0 == 0.0) => Some(x),
+        _ => None,
+    }
+}
+
+/// Strips negative signs from both operands of `hypot` and sorts them.
+pub(super) fn hypot_canonical(g: &Graph, op: Binary, a: Id, b: Id) -> Option<Id> {
+    let positive = |x: Id| match const_of(g, x) {
+        Some(v) if v < 0.0 => Some(konst(g, -v)),
+        Some(_) => None,
+        None => is_negative(g, x).then(|| neg(g, x)),
+    };
+    let (pa, pb) = (positive(a), positive(b));
+    let (a2, b2) = (pa.unwrap_or(a), pb.unwrap_or(b));
+    let (lo, hi) = if a2 <= b2 { (a2, b2) } else { (b2, a2) };
+    if pa.is_none() && pb.is_none() && (lo, hi) == (a, b) {
+        return None;
+    }
+    Some(super::binary(g, op, lo, hi))
+}
