@@ -1,1 +1,3 @@
 //! pegdyn
+pub mod compliant;
+pub mod hertz;
