@@ -59,8 +59,11 @@ pub fn binary(op: Binary, a: f64, b: f64) -> f64 {
     }
 }
 
-/// Value of `base ^ exponent` as the emitter computes it (sqrt and integer
-/// powers are special-cased there too).
+/// Value of `base ^ exponent` as the emitter computes it: exponent `0.5` is
+/// `b.sqrt()`, `-0.5` is `1.0 / b.sqrt()`, an integer exponent `n` with
+/// `|n| <= 64` is `b.powi(n)`, anything else `b.powf(e)`. The generated code
+/// must make the same choices, or generated and interpreted values differ in
+/// the last bits.
 pub fn pow(b: f64, e: f64) -> f64 {
     if e == 0.5 {
         b.sqrt()
@@ -73,21 +76,34 @@ pub fn pow(b: f64, e: f64) -> f64 {
     }
 }
 
-#[derive(Clone, Debug)]
+/// One instruction: the operands are slots of earlier instructions.
+#[derive(Clone, Copy, Debug)]
 enum Op {
     Const(f64),
-    Sym(usize),
-    Add(Vec<u32>),
-    Mul(Vec<u32>),
+    Sym(u32),
+    /// Sum of the slots `args[start..start + len]`, left to right.
+    Add {
+        start: u32,
+        len: u32,
+    },
+    /// Product of the slots `args[start..start + len]`, left to right.
+    Mul {
+        start: u32,
+        len: u32,
+    },
     Pow(u32, u32),
     Unary(Unary, u32),
     Binary(Binary, u32, u32),
 }
 
-/// A compiled program for the nodes reachable from some roots.
+/// A compiled program for the nodes reachable from some roots: one
+/// instruction per node, in arena (topological) order, the operands of sums
+/// and products in one flat array. Evaluation allocates nothing beyond the
+/// caller's scratch buffer.
 #[derive(Clone, Debug)]
 pub struct Tape {
     ops: Vec<Op>,
+    args: Vec<u32>,
     roots: Vec<u32>,
     n_syms: usize,
 }
@@ -109,25 +125,40 @@ impl Tape {
         }
         let mut slot = vec![u32::MAX; n];
         let mut ops = Vec::new();
+        let mut args = Vec::new();
         for i in 0..n {
             if !live[i] {
                 continue;
             }
-            let s = |id: &Id| slot[id.index()];
-            let op = g.with_node(Id(i as u32), |node| match node {
-                Node::Const(c) => Op::Const(c.value()),
-                Node::Sym(sym) => Op::Sym(sym.index()),
-                Node::Add(xs) => Op::Add(xs.iter().map(s).collect()),
-                Node::Mul(xs) => Op::Mul(xs.iter().map(s).collect()),
-                Node::Pow(a, b) => Op::Pow(s(a), s(b)),
-                Node::Unary(u, a) => Op::Unary(*u, s(a)),
-                Node::Binary(o, a, b) => Op::Binary(*o, s(a), s(b)),
+            let op = g.with_node(Id(i as u32), |node| {
+                let s = |id: &Id| slot[id.index()];
+                let mut list = |xs: &[Id]| {
+                    let start = args.len() as u32;
+                    args.extend(xs.iter().map(s));
+                    (start, xs.len() as u32)
+                };
+                match node {
+                    Node::Const(c) => Op::Const(c.value()),
+                    Node::Sym(sym) => Op::Sym(sym.index() as u32),
+                    Node::Add(xs) => {
+                        let (start, len) = list(xs);
+                        Op::Add { start, len }
+                    }
+                    Node::Mul(xs) => {
+                        let (start, len) = list(xs);
+                        Op::Mul { start, len }
+                    }
+                    Node::Pow(a, b) => Op::Pow(s(a), s(b)),
+                    Node::Unary(u, a) => Op::Unary(*u, s(a)),
+                    Node::Binary(o, a, b) => Op::Binary(*o, s(a), s(b)),
+                }
             });
             slot[i] = ops.len() as u32;
             ops.push(op);
         }
         Tape {
             ops,
+            args,
             roots: roots.iter().map(|r| slot[r.index()]).collect(),
             n_syms: g.symbols().len(),
         }
@@ -148,24 +179,43 @@ impl Tape {
         self.n_syms
     }
 
+    /// Number of roots, i.e. of values written by [`Tape::eval_into`].
+    pub fn n_roots(&self) -> usize {
+        self.roots.len()
+    }
+
     /// Evaluates the roots with symbol values `values[sym.index()]`, using
-    /// `scratch` as working memory (resized as needed), writing `out[k]` for
-    /// root `k`.
+    /// `scratch` as working memory (resized as needed, so a reused buffer
+    /// makes evaluation allocation-free), writing `out[k]` for root `k`.
+    ///
+    /// Sums and products are evaluated left to right in canonical operand
+    /// order; powers, functions and their NaN behaviour are [`pow`],
+    /// [`unary`] and [`binary`], the definitions the emitted code uses.
+    ///
+    /// # Panics
+    /// If `values` is shorter than a symbol index the tape reads.
     pub fn eval_into(&self, values: &[f64], scratch: &mut Vec<f64>, out: &mut [f64]) {
         scratch.clear();
-        scratch.reserve(self.ops.len());
-        for op in &self.ops {
-            let v = |k: &u32| scratch[*k as usize];
-            let r = match op {
-                Op::Const(c) => *c,
-                Op::Sym(s) => values[*s],
-                Op::Add(xs) => xs.iter().map(v).sum(),
-                Op::Mul(xs) => xs.iter().map(v).product(),
+        scratch.resize(self.ops.len(), 0.0);
+        let args = &self.args[..];
+        for (i, op) in self.ops.iter().enumerate() {
+            let v = |k: u32| scratch[k as usize];
+            let r = match *op {
+                Op::Const(c) => c,
+                Op::Sym(s) => values[s as usize],
+                Op::Add { start, len } => {
+                    let xs = &args[start as usize..(start + len) as usize];
+                    xs[1..].iter().fold(v(xs[0]), |acc, &k| acc + v(k))
+                }
+                Op::Mul { start, len } => {
+                    let xs = &args[start as usize..(start + len) as usize];
+                    xs[1..].iter().fold(v(xs[0]), |acc, &k| acc * v(k))
+                }
                 Op::Pow(a, b) => pow(v(a), v(b)),
-                Op::Unary(u, a) => unary(*u, v(a)),
-                Op::Binary(o, a, b) => binary(*o, v(a), v(b)),
+                Op::Unary(u, a) => unary(u, v(a)),
+                Op::Binary(o, a, b) => binary(o, v(a), v(b)),
             };
-            scratch.push(r);
+            scratch[i] = r;
         }
         for (o, r) in out.iter_mut().zip(&self.roots) {
             *o = scratch[*r as usize];
