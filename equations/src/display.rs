@@ -9,6 +9,17 @@
 //! than `*` and `/`, which bind tighter than `+`, `-` and a leading minus).
 //! Printing never adds nodes to the graph and depends only on the DAG, so
 //! it is deterministic.
+//!
+//! ```
+//! use pegdyn_equations::Graph;
+//! let g = Graph::new();
+//! let (theta, w) = (g.var("theta"), g.var("thetadot"));
+//! let (m, l, gr) = (g.param("m"), g.param("l"), g.param("g"));
+//! let lagrangian = 0.5 * m * (l * w).square() + m * gr * l * theta.cos();
+//! assert_eq!(lagrangian.diff(theta).to_string(), "-m*l*g*sin(theta)");
+//! assert_eq!((m - l).to_string(), "m - l");
+//! assert_eq!(((m - l) / gr).to_string(), "(m - l)/g");
+//! ```
 
 use std::fmt::Write;
 
@@ -274,5 +285,59 @@ fn write_fraction(g: &Graph, f: &Fraction, s: &mut String) {
     }
     if n_den > 1 {
         s.push(')');
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::Graph;
+
+    #[test]
+    fn prints_like_the_paper() {
+        let g = Graph::new();
+        let (x, y, a, b) = (g.var("x"), g.var("y"), g.param("a"), g.param("b"));
+        let cases = [
+            (-(a * b * x.sin()), "-a*b*sin(x)"),
+            (a - b, "a - b"),
+            (a / b, "a/b"),
+            (a / (b * x), "a/(b*x)"),
+            ((a + b) / x, "(a + b)/x"),
+            (x.sqrt(), "sqrt(x)"),
+            (x.powf(-0.5), "1/sqrt(x)"),
+            (a / x.sqrt(), "a/sqrt(x)"),
+            (x.powi(-2), "1/x^2"),
+            ((a + b).square(), "(a + b)^2"),
+            (-x.square(), "-x^2"),
+            ((-x).powf(1.5), "(-x)^1.5"),
+            (x.pow(-y), "x^(-y)"),
+            (x.pow(a + b), "x^(a + b)"),
+            (x / 2.0, "x/2"),
+            (-x / 3.0, "-x/3"),
+            (0.5 / x, "1/(2*x)"),
+            (2.0 / x, "2/x"),
+            (1.5 * x, "1.5*x"),
+            (1e-20 * x, "1e-20*x"),
+            (x - 3.0, "x - 3"),
+            (x.sin().square(), "sin(x)^2"),
+            ((x - y).max0(), "max0(x - y)"),
+            (y.atan2(x), "atan2(y, x)"),
+            ((-x).exp(), "exp(-x)"),
+            (x * (a - b), "x*(a - b)"),
+            (x.square().sqrt(), "abs(x)"),
+            (g.constant(-2.5), "-2.5"),
+        ];
+        for (e, want) in cases {
+            assert_eq!(e.to_string(), want);
+        }
+    }
+
+    #[test]
+    fn printing_adds_no_nodes() {
+        let g = Graph::new();
+        let (x, y) = (g.var("x"), g.var("y"));
+        let e = -3.0 * x * y / (x + y).sqrt() - x.powi(-3);
+        let n = g.len();
+        let _ = e.to_string();
+        assert_eq!(g.len(), n);
     }
 }

@@ -29,8 +29,26 @@ fn without(terms: &[Id], i: usize, j: usize) -> Vec<Id> {
         .collect()
 }
 
+/// True when some term is, or has a factor, for which `pred` holds. Reads
+/// nodes in place (this runs on every sum built, so it must be cheap).
+fn any_factor(g: &Graph, terms: &[Id], pred: impl Fn(&Node) -> bool) -> bool {
+    terms.iter().any(|&t| {
+        g.with_node(t, |n| match n {
+            Node::Mul(fs) => fs.iter().any(|&f| g.with_node(f, &pred)),
+            other => pred(other),
+        })
+    })
+}
+
 /// `c·F·sin(u)^2 + c·F·cos(u)^2 → c·F`.
 pub(super) fn pythagorean(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
+    let sin_power = |n: &Node| match n {
+        Node::Pow(b, _) => g.with_node(*b, |b| matches!(b, Node::Unary(Unary::Sin, _))),
+        _ => false,
+    };
+    if terms.len() < 2 || !any_factor(g, terms, sin_power) {
+        return None;
+    }
     let parts: Vec<(f64, Vec<Id>)> = terms.iter().map(|&t| term_parts(g, t)).collect();
     let two = g.find(&Node::Const(Const::new(2.0)?))?;
     for (i, (c, fs)) in parts.iter().enumerate() {
@@ -68,6 +86,9 @@ pub(super) fn pythagorean(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
 /// `c·F − c·F·cos(u) → 2·c·F·sin(u/2)^2`, where `F` may be 1 (then the
 /// partner is the constant term).
 pub(super) fn one_minus_cos(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
+    if terms.len() < 2 || !any_factor(g, terms, |n| matches!(n, Node::Unary(Unary::Cos, _))) {
+        return None;
+    }
     let parts: Vec<(f64, Vec<Id>)> = terms.iter().map(|&t| term_parts(g, t)).collect();
     for (i, (c, fs)) in parts.iter().enumerate() {
         for (k, &f) in fs.iter().enumerate() {

@@ -76,21 +76,25 @@ pub(crate) fn scale(g: &Graph, c: f64, base: Id) -> Id {
         return base;
     }
     let mut fs = vec![konst(g, c)];
-    match g.node(base) {
-        Node::Mul(xs) => fs.extend(xs.iter().copied()),
-        _ => fs.push(base),
-    }
+    flatten_into(g, base, false, &mut fs);
     g.intern(Node::Mul(fs.into()))
+}
+
+/// Pushes the operands of `id` onto `out` if it is a sum (`sum`) or a
+/// product (`!sum`), else `id` itself. Reads the node in place.
+fn flatten_into(g: &Graph, id: Id, sum: bool, out: &mut Vec<Id>) {
+    g.with_node(id, |n| match n {
+        Node::Add(xs) if sum => out.extend_from_slice(xs),
+        Node::Mul(xs) if !sum => out.extend_from_slice(xs),
+        _ => out.push(id),
+    })
 }
 
 /// The sum of `terms`.
 pub fn add(g: &Graph, terms: &[Id]) -> Id {
     let mut flat = Vec::with_capacity(terms.len());
     for &t in terms {
-        match g.node(t) {
-            Node::Add(xs) => flat.extend(xs.iter().copied()),
-            _ => flat.push(t),
-        }
+        flatten_into(g, t, true, &mut flat);
     }
     let mut c0 = 0.0;
     let mut coeffs: BTreeMap<Id, f64> = BTreeMap::new();
@@ -158,10 +162,7 @@ fn split_pow(g: &Graph, id: Id) -> (Id, f64) {
 pub fn mul(g: &Graph, factors: &[Id]) -> Id {
     let mut flat = Vec::with_capacity(factors.len());
     for &f in factors {
-        match g.node(f) {
-            Node::Mul(xs) => flat.extend(xs.iter().copied()),
-            _ => flat.push(f),
-        }
+        flatten_into(g, f, false, &mut flat);
     }
     let mut c = 1.0;
     let mut exps: BTreeMap<Id, f64> = BTreeMap::new();
@@ -188,7 +189,7 @@ pub fn mul(g: &Graph, factors: &[Id]) -> Id {
         match const_of(g, f) {
             Some(v) => c *= v,
             None => {
-                nested |= matches!(g.node(f), Node::Mul(_));
+                nested |= g.with_node(f, |n| matches!(n, Node::Mul(_)));
                 out.push(f);
             }
         }
