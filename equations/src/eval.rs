@@ -60,15 +60,18 @@ pub fn binary(op: Binary, a: f64, b: f64) -> f64 {
 }
 
 /// Value of `base ^ exponent` as the emitter computes it: exponent `0.5` is
-/// `b.sqrt()`, `-0.5` is `1.0 / b.sqrt()`, an integer exponent `n` with
-/// `|n| <= 64` is `b.powi(n)`, anything else `b.powf(e)`. The generated code
-/// must make the same choices, or generated and interpreted values differ in
-/// the last bits.
+/// `b.sqrt()`, `-0.5` is `1.0 / b.sqrt()`, `1.5` is `b * b.sqrt()`, an
+/// integer exponent `n` with `|n| <= 64` is `b.powi(n)` (which the emitter
+/// writes as `b * b`, `b * b * b` for `n = 2, 3`: the same bits), anything
+/// else `b.powf(e)`. The generated code must make the same choices, or
+/// generated and interpreted values differ in the last bits.
 pub fn pow(b: f64, e: f64) -> f64 {
     if e == 0.5 {
         b.sqrt()
     } else if e == -0.5 {
         1.0 / b.sqrt()
+    } else if e == 1.5 {
+        b * b.sqrt()
     } else if e.fract() == 0.0 && e.abs() <= 64.0 {
         b.powi(e as i32)
     } else {

@@ -16,10 +16,13 @@ fn pow_special_cases_match_the_emitter() {
     for b in [0.0, 0.3, 2.0, 7.5, -2.0, -0.0] {
         assert!(same(eval::pow(b, 0.5), b.sqrt()), "sqrt {b}");
         assert!(same(eval::pow(b, -0.5), 1.0 / b.sqrt()), "1/sqrt {b}");
+        assert!(same(eval::pow(b, 1.5), b * b.sqrt()), "b sqrt(b) {b}");
+        assert!(same(eval::pow(b, 2.0), b * b), "b*b {b}");
+        assert!(same(eval::pow(b, 3.0), b * b * b), "b*b*b {b}");
         for n in [-64, -3, -1, 2, 3, 17, 64] {
             assert!(same(eval::pow(b, f64::from(n)), b.powi(n)), "powi {b} {n}");
         }
-        for e in [2.5, -1.5, 1.0 / 3.0, 65.0, -65.0, 100.0] {
+        for e in [2.5, -1.5, 1.0 / 3.0, 0.25, 65.0, -65.0, 100.0] {
             assert!(same(eval::pow(b, e), b.powf(e)), "powf {b} {e}");
         }
     }

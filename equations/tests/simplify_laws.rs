@@ -78,6 +78,10 @@ laws! {
     pow_of_pow_int: |l| l.x.powf(1.5).powi(2) => l.x.powi(3);
     pow_of_product_int: |l| (l.x * l.y).powi(2) => l.x.powi(2) * l.y.powi(2);
     divide_by_constant: |l| l.x / 4.0 => 0.25 * l.x;
+    common_coefficient_of_sum: |l| (l.x + l.y) / (2.0 * l.x + 2.0 * l.y) => l.g.constant(0.5);
+    sign_of_sum_under_even_power: |l| (l.x - l.y).square() => (l.y - l.x).square();
+    difference_over_reversed: |l| (l.a - l.b) / (l.b - l.a) => l.g.constant(-1.0);
+    sqrt_of_scaled_sum: |l| (4.0 * l.x + 4.0).sqrt() => 2.0 * (l.x + 1.0).sqrt();
     neg_neg: |l| -(-l.x) => l.x;
     distribute_scalar: |l| 2.0 * (l.x + l.y) => 2.0 * l.x + 2.0 * l.y;
     neg_difference: |l| -(l.x - l.y) => l.y - l.x;
@@ -113,6 +117,7 @@ not_laws! {
     cube_root_of_square_keeps_power: |l| l.x.square().powf(1.0 / 3.0) => l.x.powf(2.0 / 3.0);
     sqrt_of_product_not_split: |l| (l.x * l.y).sqrt() => l.x.sqrt() * l.y.sqrt();
     atan2_not_odd: |l| (-l.y).atan2(l.x) => -l.y.atan2(l.x);
+    sqrt_of_negated_sum_not_split: |l| (-l.x - l.y).sqrt() => -(l.x + l.y).sqrt();
     ln_exp_kept: |l| l.x.exp().ln() => l.x;
 }
 

@@ -2,7 +2,9 @@
 //! documented by its row (law, domain, termination); comments here explain
 //! only how it finds its pattern.
 
-use super::{add, const_of, is_negative, konst, mul, neg, pow, term_parts, unary};
+use super::{
+    add, const_of, is_negative, konst, mul, neg, pow, scale, split_coeff, term_parts, unary,
+};
 use crate::graph::{Binary, Const, Graph, Id, Node, Unary};
 
 /// `u` when `f` is `op(u)^2`; only looks up nodes, never interns.
@@ -177,6 +179,39 @@ pub(super) fn pow_of_product_int(g: &Graph, base: Id, e: Id) -> Option<Id> {
     };
     let fs: Vec<Id> = xs.iter().map(|&x| pow(g, x, e)).collect();
     Some(mul(g, &fs))
+}
+
+/// `(c·s)^e → c^e·s^e` for a sum `c·s` whose coefficients are all `±c`,
+/// `c` the coefficient of its leading term (the one [`is_negative`] looks
+/// at); for a non-integer `e` only when `c > 0`.
+pub(super) fn pow_sum_content(g: &Graph, base: Id, e: Id) -> Option<Id> {
+    let ev = const_of(g, e)?;
+    let Node::Add(xs) = g.node(base) else {
+        return None;
+    };
+    let parts: Vec<(f64, Vec<Id>)> = xs.iter().map(|&t| term_parts(g, t)).collect();
+    let (c, _) = parts
+        .iter()
+        .filter(|(_, fs)| !fs.is_empty())
+        .min_by(|a, b| a.1.cmp(&b.1))?;
+    let c = *c;
+    if c == 1.0 || parts.iter().any(|(ct, _)| ct.abs() != c.abs()) || (ev.fract() != 0.0 && c < 0.0)
+    {
+        return None;
+    }
+    // Every quotient ct / c is exactly ±1.
+    let terms: Vec<Id> = xs
+        .iter()
+        .map(|&t| match const_of(g, t) {
+            Some(v) => konst(g, v / c),
+            None => {
+                let (ct, b) = split_coeff(g, t);
+                scale(g, ct / c, b)
+            }
+        })
+        .collect();
+    let s = add(g, &terms);
+    Some(mul(g, &[pow(g, konst(g, c), e), pow(g, s, e)]))
 }
 
 /// `f(−u) → −f(u)` for an odd `f`.

@@ -160,6 +160,13 @@ pub static RULES: &[Rule] = &[
         terminates: SMALLER,
         site: Site::Pow(laws::pow_of_product_int),
     },
+    Rule {
+        name: "pow_sum_content",
+        law: "(c·s)^e = c^e·s^e for a sum whose coefficients are all ±c (2x + 2y, -a + b)",
+        domain: "integer e: all; other e: c > 0, where s^e is defined",
+        terminates: "the new sum's leading coefficient is 1",
+        site: Site::Pow(laws::pow_sum_content),
+    },
     // ---- odd and even functions ----
     Rule {
         name: "sin_odd",
