@@ -1,1 +1,7 @@
-fn main() {}
+//! The `pegdyn` command-line tool; see `pegdyn --help` and [`cli`].
+
+mod cli;
+
+fn main() -> std::process::ExitCode {
+    cli::main()
+}

@@ -1,0 +1,68 @@
+//! Command-line interface: argument definitions (clap derive) and dispatch.
+//!
+//! Exit codes: 0 success, 1 a scene or run failed, 2 usage error.
+//! One file per subcommand; `bench` and `accuracy` will join them.
+
+mod check;
+mod run;
+
+use std::path::PathBuf;
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+/// Symbolic-to-code generator and solver for peg-in-hole assembly dynamics.
+#[derive(Debug, Parser)]
+#[command(name = "pegdyn", version, about, propagate_version = true)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Run a scene: write OUT/<scene>.csv and OUT/<scene>.svg, print a summary.
+    Run {
+        /// Scene file (TOML).
+        scene: PathBuf,
+        /// Output directory (created if missing).
+        #[arg(long, short, default_value = "out")]
+        out: PathBuf,
+        /// No progress line on stderr.
+        #[arg(long, short)]
+        quiet: bool,
+    },
+    /// Validate scene files without running them.
+    Check {
+        /// Scene files (TOML).
+        #[arg(required = true)]
+        scenes: Vec<PathBuf>,
+    },
+    /// List the scene kinds this build knows.
+    Kinds,
+}
+
+/// Parses the arguments and runs the subcommand.
+pub fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => {
+            // Help and version go to stdout with success; usage errors to
+            // stderr with exit code 2.
+            let code = if e.use_stderr() { 2 } else { 0 };
+            // If printing fails there is nowhere left to report it.
+            let _ = e.print();
+            return ExitCode::from(code);
+        }
+    };
+    match cli.command {
+        Command::Run { scene, out, quiet } => run::run(&scene, &out, quiet),
+        Command::Check { scenes } => check::check(&scenes),
+        Command::Kinds => {
+            for k in pegdyn::scene::KINDS {
+                println!("{:<20} {}", k.name, k.about);
+            }
+            ExitCode::SUCCESS
+        }
+    }
+}

@@ -1,0 +1,216 @@
+//! Error types of the runtime crate that reach the user: scene loading and
+//! validation ([`SceneError`], [`SceneErrors`]), output writing
+//! ([`OutputError`]) and running a scene ([`RunError`]).
+//!
+//! Every scene error names the offending field by its dotted path (for
+//! example `pendulum.length`) and, where there is one, the offending value.
+
+use std::fmt;
+use std::path::PathBuf;
+
+/// One problem with a scene file.
+#[derive(Debug, thiserror::Error)]
+pub enum SceneError {
+    /// The file could not be read.
+    #[error("cannot read {path}: {source}")]
+    Io {
+        /// The scene file.
+        path: PathBuf,
+        /// The underlying I/O error.
+        source: std::io::Error,
+    },
+    /// The file is not valid TOML.
+    #[error("TOML syntax error: {message}")]
+    Syntax {
+        /// The parser's description of the problem.
+        message: String,
+    },
+    /// A required field is absent.
+    #[error("missing field `{field}`")]
+    Missing {
+        /// Dotted path of the missing field, e.g. `pendulum.length`.
+        field: String,
+    },
+    /// A field that this scene kind does not know (often a typo).
+    #[error("unknown field `{field}`; {expected}")]
+    Unknown {
+        /// Dotted path of the unknown field.
+        field: String,
+        /// Which fields are allowed there.
+        expected: String,
+    },
+    /// A field holds a value of the wrong TOML type.
+    #[error("`{field}` has the wrong type: found {found}, expected {expected}")]
+    WrongType {
+        /// Dotted path of the field.
+        field: String,
+        /// The value found, with its TOML type, e.g. `string "heavy"`.
+        found: String,
+        /// The type expected.
+        expected: String,
+    },
+    /// A field holds a value of the right type that is not acceptable
+    /// (NaN, negative mass, `t_end <= t0`, an unknown method name, ...).
+    #[error("`{field}` = {value}: {reason}")]
+    Invalid {
+        /// Dotted path of the field.
+        field: String,
+        /// The offending value as written (Rust formatting of the parsed value).
+        value: String,
+        /// Why it is rejected.
+        reason: String,
+    },
+    /// The `kind` field names no registered scene kind.
+    #[error("`kind` = {value:?}: unknown scene kind; known kinds: {known}")]
+    UnknownKind {
+        /// The kind as written.
+        value: String,
+        /// Comma-separated list of the registered kinds.
+        known: String,
+    },
+}
+
+impl SceneError {
+    /// Shorthand for [`SceneError::Invalid`].
+    pub fn invalid(
+        field: impl Into<String>,
+        value: impl fmt::Debug,
+        reason: impl Into<String>,
+    ) -> Self {
+        SceneError::Invalid {
+            field: field.into(),
+            value: format!("{value:?}"),
+            reason: reason.into(),
+        }
+    }
+
+    /// Dotted path of the field this error is about, if any.
+    pub fn field(&self) -> Option<&str> {
+        match self {
+            SceneError::Io { .. } | SceneError::Syntax { .. } => None,
+            SceneError::Missing { field }
+            | SceneError::Unknown { field, .. }
+            | SceneError::WrongType { field, .. }
+            | SceneError::Invalid { field, .. } => Some(field),
+            SceneError::UnknownKind { .. } => Some("kind"),
+        }
+    }
+}
+
+/// A position in a scene file, 1-based.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Location {
+    /// Line number, starting at 1.
+    pub line: usize,
+    /// Column number in characters, starting at 1.
+    pub column: usize,
+}
+
+/// A [`SceneError`] with the place in the file it refers to, when known.
+#[derive(Debug)]
+pub struct Located {
+    /// The error.
+    pub error: SceneError,
+    /// Where in the file, when the field could be found there.
+    pub at: Option<Location>,
+}
+
+/// All problems found in one scene file (at least one).
+#[derive(Debug)]
+pub struct SceneErrors {
+    /// The problems, in the order they were found.
+    pub errors: Vec<Located>,
+}
+
+impl SceneErrors {
+    /// Errors without locations.
+    pub fn new(errors: impl IntoIterator<Item = SceneError>) -> Self {
+        SceneErrors {
+            errors: errors
+                .into_iter()
+                .map(|error| Located { error, at: None })
+                .collect(),
+        }
+    }
+}
+
+impl From<SceneError> for SceneErrors {
+    fn from(error: SceneError) -> Self {
+        SceneErrors::new([error])
+    }
+}
+
+impl fmt::Display for SceneErrors {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, e) in self.errors.iter().enumerate() {
+            if i > 0 {
+                writeln!(f)?;
+            }
+            if let Some(at) = e.at {
+                write!(f, "line {}, column {}: ", at.line, at.column)?;
+            }
+            write!(f, "{}", e.error)?;
+        }
+        Ok(())
+    }
+}
+
+impl std::error::Error for SceneErrors {}
+
+/// Failure to write an output file.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    /// Creating or writing a file failed.
+    #[error("cannot write {path}: {source}")]
+    Io {
+        /// The output file.
+        path: PathBuf,
+        /// The underlying I/O error.
+        source: std::io::Error,
+    },
+    /// A CSV row has a different number of columns than the header.
+    #[error("{path}: row {row} has {got} columns, header has {expected}")]
+    RowWidth {
+        /// The output file.
+        path: PathBuf,
+        /// 0-based data row index.
+        row: usize,
+        /// Columns in the row.
+        got: usize,
+        /// Columns in the header.
+        expected: usize,
+    },
+    /// The plotting library reported an error.
+    #[error("cannot draw {path}: {message}")]
+    Plot {
+        /// The output file.
+        path: PathBuf,
+        /// The plotting library's message.
+        message: String,
+    },
+    /// A plot has no finite data point to scale its axes by.
+    #[error("cannot draw {path}: panel {panel:?} has no finite data point")]
+    EmptyPlot {
+        /// The output file.
+        path: PathBuf,
+        /// Title of the panel.
+        panel: String,
+    },
+}
+
+/// Failure while running a scene.
+#[derive(Debug, thiserror::Error)]
+pub enum RunError {
+    /// Writing the CSV or SVG failed.
+    #[error(transparent)]
+    Output(#[from] OutputError),
+    /// The integrator gave up before reaching `t_end` and produced no
+    /// usable solution.
+    #[error("integration failed at t = {t}: {reason}")]
+    Integration {
+        /// Time reached, s.
+        t: f64,
+        /// The integrator's reason.
+        reason: String,
+    },
+}

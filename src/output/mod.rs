@@ -1,0 +1,6 @@
+//! Output files written by scene runs: CSV tables ([`csv`]) and SVG line
+//! plots ([`plot`] describes a figure, [`svg`] renders it).
+
+pub mod csv;
+pub mod plot;
+pub mod svg;

@@ -1,0 +1,289 @@
+//! A parsed scene file before it is handed to its kind: the TOML tree with
+//! source spans, the `kind` tag, and translation of TOML/serde errors into
+//! [`SceneError`]s that name the field by its dotted path.
+
+use serde::de::DeserializeOwned;
+use toml::Spanned;
+use toml::de::{DeTable, DeValue};
+
+use crate::error::{Located, Location, SceneError, SceneErrors};
+
+/// Top-level keys every scene may have, whatever its kind.
+pub const COMMON_KEYS: [&str; 2] = ["kind", "description"];
+
+/// A syntactically valid scene file.
+pub struct Document<'a> {
+    text: &'a str,
+    root: Spanned<DeTable<'a>>,
+    kind: String,
+    description: Option<String>,
+}
+
+impl<'a> Document<'a> {
+    /// Parses `text` as TOML and reads the common keys `kind` (required,
+    /// string) and `description` (optional, string).
+    pub fn parse(text: &'a str) -> Result<Self, SceneErrors> {
+        let root = DeTable::parse(text).map_err(|e| {
+            let at = e.span().map(|s| location(text, s.start));
+            SceneErrors {
+                errors: vec![Located {
+                    error: SceneError::Syntax {
+                        message: e.message().to_string(),
+                    },
+                    at,
+                }],
+            }
+        })?;
+        let mut doc = Document {
+            text,
+            root,
+            kind: String::new(),
+            description: None,
+        };
+        doc.kind = doc.string("kind")?.ok_or_else(|| {
+            SceneErrors::from(SceneError::Missing {
+                field: "kind".into(),
+            })
+        })?;
+        doc.description = doc.string("description")?;
+        Ok(doc)
+    }
+
+    fn string(&self, key: &str) -> Result<Option<String>, SceneErrors> {
+        match self.root.get_ref().get(key) {
+            None => Ok(None),
+            Some(v) => match v.get_ref() {
+                DeValue::String(s) => Ok(Some(s.to_string())),
+                other => Err(self.locate(SceneError::WrongType {
+                    field: key.into(),
+                    found: type_name(other).into(),
+                    expected: "a string".into(),
+                })),
+            },
+        }
+    }
+
+    /// The scene kind, e.g. `"pendulum"`.
+    pub fn kind(&self) -> &str {
+        &self.kind
+    }
+
+    /// The optional free-text description.
+    pub fn description(&self) -> Option<&str> {
+        self.description.as_deref()
+    }
+
+    /// Deserializes the kind-specific part of the document (everything but
+    /// [`COMMON_KEYS`]) into `T`. Use `#[serde(deny_unknown_fields)]` on `T`
+    /// and its tables so that typos are reported.
+    pub fn body<T: DeserializeOwned>(&self) -> Result<T, SceneErrors> {
+        let mut root = self.root.clone();
+        for key in COMMON_KEYS {
+            root.get_mut().remove(key);
+        }
+        T::deserialize(toml::de::Deserializer::from(root)).map_err(|e| {
+            let at = e.span().map(|s| location(self.text, s.start));
+            let error = translate(e);
+            self.locate_all(SceneErrors {
+                errors: vec![Located { error, at }],
+            })
+        })
+    }
+
+    /// Attaches the file location of each error's field, where it can be found.
+    pub fn locate_all(&self, mut errors: SceneErrors) -> SceneErrors {
+        for e in &mut errors.errors {
+            if e.at.is_none() {
+                e.at = e
+                    .error
+                    .field()
+                    .and_then(|f| self.span_of(f))
+                    .map(|s| location(self.text, s));
+            }
+        }
+        errors
+    }
+
+    fn locate(&self, error: SceneError) -> SceneErrors {
+        self.locate_all(SceneErrors::from(error))
+    }
+
+    /// Byte offset of the value at dotted `path`, or of its deepest existing
+    /// parent table's key when the field itself is absent.
+    fn span_of(&self, path: &str) -> Option<usize> {
+        let mut table = self.root.get_ref();
+        let mut found = None;
+        for key in path.split('.') {
+            let (k, v) = table.get_key_value(key)?;
+            found = Some(k.span().start);
+            match v.get_ref() {
+                DeValue::Table(t) => table = t,
+                _ => return Some(v.span().start),
+            }
+        }
+        found
+    }
+}
+
+/// 1-based line and column of byte offset `at` in `text`.
+pub fn location(text: &str, at: usize) -> Location {
+    let at = at.min(text.len());
+    let before = text.get(..at).unwrap_or(text);
+    let line = before.matches('\n').count() + 1;
+    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+    let column = before.get(line_start..).map_or(0, |s| s.chars().count()) + 1;
+    Location { line, column }
+}
+
+fn type_name(v: &DeValue<'_>) -> &'static str {
+    match v {
+        DeValue::String(_) => "a string",
+        DeValue::Integer(_) => "an integer",
+        DeValue::Float(_) => "a float",
+        DeValue::Boolean(_) => "a boolean",
+        DeValue::Datetime(_) => "a datetime",
+        DeValue::Array(_) => "an array",
+        DeValue::Table(_) => "a table",
+    }
+}
+
+/// Translates a serde/TOML deserialization error into a [`SceneError`] with
+/// the dotted field path. The path comes from the error's key trail, which
+/// `toml` prints as a trailing ``in `a.b` `` line when the error carries no
+/// input text (ours never does: the deserializer is built from a tree).
+fn translate(e: toml::de::Error) -> SceneError {
+    let message = e.message().to_string();
+    let shown = e.to_string();
+    let trail = shown
+        .lines()
+        .rev()
+        .find_map(|l| l.strip_prefix("in `").and_then(|l| l.strip_suffix('`')))
+        .unwrap_or("")
+        .to_string();
+    let join = |name: &str| {
+        if trail.is_empty() {
+            name.to_string()
+        } else {
+            format!("{trail}.{name}")
+        }
+    };
+    let ticked = |s: &str| -> Option<(String, String)> {
+        let rest = s.strip_prefix('`')?;
+        let end = rest.find('`')?;
+        Some((rest[..end].to_string(), rest[end + 1..].to_string()))
+    };
+    if let Some((name, _)) = message.strip_prefix("missing field ").and_then(ticked) {
+        return SceneError::Missing { field: join(&name) };
+    }
+    if let Some((name, rest)) = message.strip_prefix("unknown field ").and_then(ticked) {
+        let expected = rest.trim_start_matches(", ").trim();
+        let expected = if expected.starts_with("there are no fields") {
+            "this table takes no fields".to_string()
+        } else {
+            expected.to_string()
+        };
+        return SceneError::Unknown {
+            field: join(&name),
+            expected,
+        };
+    }
+    if let Some((name, rest)) = message.strip_prefix("unknown variant ").and_then(ticked) {
+        return SceneError::Invalid {
+            field: trail,
+            value: format!("{name:?}"),
+            reason: rest.trim_start_matches(", ").trim().to_string(),
+        };
+    }
+    if let Some(rest) = message.strip_prefix("invalid value: ") {
+        if let Some((value, expected)) = rest.rsplit_once(", expected ") {
+            return SceneError::Invalid {
+                field: trail,
+                value: value.to_string(),
+                reason: format!("expected {expected}"),
+            };
+        }
+    }
+    if let Some(rest) = message.strip_prefix("invalid type: ") {
+        if let Some((found, expected)) = rest.rsplit_once(", expected ") {
+            let expected = match expected {
+                "f64" => "a number",
+                "usize" | "u64" | "u32" => "a non-negative integer",
+                "a string" | "string" => "a string",
+                e => e,
+            };
+            return SceneError::WrongType {
+                field: trail,
+                found: found.to_string(),
+                expected: expected.to_string(),
+            };
+        }
+    }
+    SceneError::Invalid {
+        field: trail,
+        value: String::from("(see reason)"),
+        reason: message,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde::Deserialize;
+
+    #[derive(Debug, Deserialize)]
+    #[serde(deny_unknown_fields)]
+    #[allow(dead_code)]
+    struct Body {
+        peg: Peg,
+    }
+    #[derive(Debug, Deserialize)]
+    #[serde(deny_unknown_fields)]
+    #[allow(dead_code)]
+    struct Peg {
+        mass: f64,
+        n: usize,
+    }
+
+    fn err(text: &str) -> SceneErrors {
+        Document::parse(text)
+            .and_then(|d| d.body::<Body>())
+            .unwrap_err()
+    }
+
+    #[test]
+    fn structural_errors_name_the_dotted_field() {
+        let e = err("kind = 'x'\n[peg]\nn = 1\n");
+        assert!(matches!(&e.errors[0].error, SceneError::Missing { field } if field == "peg.mass"));
+        let e = err("kind = 'x'\n[peg]\nmass = 1.0\nn = 1\nmas = 2\n");
+        assert!(
+            matches!(&e.errors[0].error, SceneError::Unknown { field, .. } if field == "peg.mas")
+        );
+        assert_eq!(e.errors[0].at, Some(Location { line: 5, column: 1 }));
+        let e = err("kind = 'x'\n[peg]\nmass = true\nn = 1\n");
+        assert!(
+            matches!(&e.errors[0].error, SceneError::WrongType { field, found, .. } if field == "peg.mass" && found.contains("true")),
+            "{e}"
+        );
+        let e = err("kind = 'x'\n[peg]\nmass = 1.0\nn = -3\n");
+        assert!(
+            e.to_string().contains("peg.n") && e.to_string().contains("-3"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn kind_is_required_and_a_string() {
+        let e = Document::parse("[peg]\n").err().unwrap();
+        assert!(matches!(&e.errors[0].error, SceneError::Missing { field } if field == "kind"));
+        let e = Document::parse("kind = 3\n").err().unwrap();
+        assert!(
+            matches!(&e.errors[0].error, SceneError::WrongType { field, .. } if field == "kind")
+        );
+    }
+
+    #[test]
+    fn locations_are_one_based() {
+        assert_eq!(location("ab\ncd", 4), Location { line: 2, column: 2 });
+        assert_eq!(location("", 0), Location { line: 1, column: 1 });
+    }
+}

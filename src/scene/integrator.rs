@@ -1,0 +1,186 @@
+//! The `[integrator]` table shared by all scene kinds: which method, its
+//! tolerances or step, the time span and the output sampling interval.
+//!
+//! ```toml
+//! [integrator]
+//! method = "dopri5"        # "dopri5" | "rk4" | "rosenbrock"
+//! rtol = 1e-9              # relative tolerance (adaptive methods)
+//! atol = 1e-12             # absolute tolerance (adaptive methods)
+//! h = 1e-3                 # fixed step, s (rk4 only; required there)
+//! t0 = 0.0                 # start time, s (default 0)
+//! t_end = 10.0             # end time, s
+//! output_interval = 0.01   # sampling of the CSV/SVG output, s
+//! max_steps = 1000000      # step budget (default 10^6)
+//! ```
+
+use serde::Deserialize;
+
+use crate::error::{SceneError, SceneErrors};
+use crate::scene::validate::Checker;
+
+/// Integration method selected by `integrator.method`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Method {
+    /// Classical fixed-step Runge–Kutta 4.
+    Rk4,
+    /// Dormand–Prince 5(4), adaptive, with dense output and events.
+    Dopri5,
+    /// Linearly implicit Rosenbrock method for stiff problems, adaptive.
+    Rosenbrock,
+}
+
+impl Method {
+    /// Name as written in scene files.
+    pub fn name(self) -> &'static str {
+        match self {
+            Method::Rk4 => "rk4",
+            Method::Dopri5 => "dopri5",
+            Method::Rosenbrock => "rosenbrock",
+        }
+    }
+
+    /// Whether the method chooses its own step from `rtol`/`atol`.
+    pub fn is_adaptive(self) -> bool {
+        !matches!(self, Method::Rk4)
+    }
+}
+
+/// The `[integrator]` table as written; call [`IntegratorSpec::check`].
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct IntegratorSpec {
+    /// Integration method.
+    pub method: Method,
+    /// Relative tolerance, dimensionless (adaptive methods).
+    #[serde(default = "default_rtol")]
+    pub rtol: f64,
+    /// Absolute tolerance, in the state's units (adaptive methods).
+    #[serde(default = "default_atol")]
+    pub atol: f64,
+    /// Fixed step size, s (required for `rk4`; initial step hint otherwise).
+    pub h: Option<f64>,
+    /// Start time, s.
+    #[serde(default)]
+    pub t0: f64,
+    /// End time, s.
+    pub t_end: f64,
+    /// Output sampling interval, s (default: 1/1000 of the span).
+    pub output_interval: Option<f64>,
+    /// Maximum number of steps before giving up.
+    #[serde(default = "default_max_steps")]
+    pub max_steps: usize,
+}
+
+fn default_rtol() -> f64 {
+    1e-8
+}
+fn default_atol() -> f64 {
+    1e-10
+}
+fn default_max_steps() -> usize {
+    1_000_000
+}
+
+impl IntegratorSpec {
+    /// Validates the table; `table` is its dotted name (`"integrator"`).
+    pub fn check(&self, table: &str) -> Result<(), SceneErrors> {
+        let f = |k: &str| format!("{table}.{k}");
+        let mut c = Checker::default();
+        let t0 = c.finite(&f("t0"), self.t0);
+        let t_end = c.greater_than(&f("t_end"), self.t_end, &f("t0"), t0);
+        let span = t_end - t0;
+        if self.method.is_adaptive() {
+            let rtol = c.positive(&f("rtol"), self.rtol);
+            if rtol >= 1.0 {
+                c.push(SceneError::invalid(f("rtol"), rtol, "must be less than 1"));
+            }
+            c.non_negative(&f("atol"), self.atol);
+        }
+        match (self.method, self.h) {
+            (Method::Rk4, None) => c.push(SceneError::Missing { field: f("h") }),
+            (_, Some(h)) => {
+                let h = c.positive(&f("h"), h);
+                if c.is_ok() && h > span {
+                    c.push(SceneError::invalid(
+                        f("h"),
+                        h,
+                        format!("must not exceed t_end - t0 = {span:?}"),
+                    ));
+                }
+            }
+            (_, None) => {}
+        }
+        if let Some(dt) = self.output_interval {
+            c.positive(&f("output_interval"), dt);
+        }
+        if self.max_steps == 0 {
+            c.push(SceneError::invalid(f("max_steps"), 0, "must be at least 1"));
+        }
+        c.finish()
+    }
+
+    /// The output sampling interval, s.
+    pub fn output_interval(&self) -> f64 {
+        self.output_interval
+            .unwrap_or((self.t_end - self.t0) / 1000.0)
+    }
+
+    /// Output sample times `t0, t0 + dt, ...`, ending exactly at `t_end`.
+    pub fn output_times(&self) -> Vec<f64> {
+        let dt = self.output_interval();
+        let n = ((self.t_end - self.t0) / dt).floor() as usize;
+        let mut ts: Vec<f64> = (0..=n).map(|i| self.t0 + i as f64 * dt).collect();
+        if ts.last().is_some_and(|&t| self.t_end - t > 1e-9 * dt) {
+            ts.push(self.t_end);
+        }
+        ts
+    }
+
+    /// One-line description, e.g. `dopri5 rtol=1e-9 atol=1e-12, t in [0, 10] s`.
+    pub fn describe(&self) -> String {
+        let m = match (self.method, self.h) {
+            (Method::Rk4, Some(h)) => format!("rk4 h={h:e} s"),
+            (m, _) => format!("{} rtol={:e} atol={:e}", m.name(), self.rtol, self.atol),
+        };
+        format!("{m}, t in [{}, {}] s", self.t0, self.t_end)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec(method: Method) -> IntegratorSpec {
+        IntegratorSpec {
+            method,
+            rtol: 1e-8,
+            atol: 1e-10,
+            h: None,
+            t0: 0.0,
+            t_end: 1.0,
+            output_interval: Some(0.3),
+            max_steps: 10,
+        }
+    }
+
+    #[test]
+    fn output_times_end_at_t_end() {
+        let ts = spec(Method::Dopri5).output_times();
+        assert_eq!(ts.len(), 5);
+        assert_eq!(ts[4], 1.0);
+        assert!((ts[3] - 0.9).abs() < 1e-15);
+    }
+
+    #[test]
+    fn rk4_needs_h_and_bad_tolerances_are_named() {
+        let e = spec(Method::Rk4).check("integrator").unwrap_err();
+        assert!(e.to_string().contains("integrator.h"), "{e}");
+        let mut s = spec(Method::Dopri5);
+        s.rtol = -1e-6;
+        s.t_end = -1.0;
+        let e = s.check("integrator").unwrap_err().to_string();
+        assert!(e.contains("integrator.rtol") && e.contains("-1e-6"), "{e}");
+        assert!(e.contains("integrator.t_end"), "{e}");
+    }
+}

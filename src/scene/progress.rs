@@ -1,0 +1,76 @@
+//! A throttled progress line on stderr for long runs.
+//!
+//! Quiet when stderr is not a terminal (pipes, tests, CI) or when the user
+//! passed `--quiet`; at most ten updates per second otherwise.
+
+use std::io::{IsTerminal, Write};
+use std::time::{Duration, Instant};
+
+/// Progress reporter handed to a running scene via its run context.
+#[derive(Debug)]
+pub struct Progress {
+    enabled: bool,
+    t0: f64,
+    t_end: f64,
+    last: Option<Instant>,
+    shown: bool,
+}
+
+const EVERY: Duration = Duration::from_millis(100);
+
+impl Progress {
+    /// A reporter that prints only if `!quiet` and stderr is a terminal.
+    pub fn new(quiet: bool) -> Self {
+        Progress {
+            enabled: !quiet && std::io::stderr().is_terminal(),
+            t0: 0.0,
+            t_end: 1.0,
+            last: None,
+            shown: false,
+        }
+    }
+
+    /// A reporter that never prints.
+    pub fn silent() -> Self {
+        Progress::new(true)
+    }
+
+    /// Sets the simulated time span the percentage refers to.
+    pub fn set_span(&mut self, t0: f64, t_end: f64) {
+        self.t0 = t0;
+        self.t_end = t_end;
+    }
+
+    /// Reports simulated time `t`, s (throttled).
+    pub fn update(&mut self, t: f64) {
+        if !self.enabled || self.last.is_some_and(|l| l.elapsed() < EVERY) {
+            return;
+        }
+        self.last = Some(Instant::now());
+        let span = self.t_end - self.t0;
+        let pct = if span > 0.0 {
+            100.0 * ((t - self.t0) / span).clamp(0.0, 1.0)
+        } else {
+            100.0
+        };
+        let mut err = std::io::stderr().lock();
+        // Progress output is best effort: a failed write to stderr is ignored.
+        let _ = write!(err, "\r  t = {t:.4} s / {:.4} s ({pct:5.1}%)", self.t_end);
+        let _ = err.flush();
+        self.shown = true;
+    }
+
+    /// Clears the progress line, if one was printed.
+    pub fn finish(&mut self) {
+        if self.shown {
+            let _ = write!(std::io::stderr(), "\r{:60}\r", "");
+            self.shown = false;
+        }
+    }
+}
+
+impl Drop for Progress {
+    fn drop(&mut self) {
+        self.finish();
+    }
+}
