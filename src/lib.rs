@@ -1,5 +1,6 @@
 //! pegdyn
 pub mod compliant;
+pub mod generated;
 pub mod hertz;
 pub mod error;
 pub mod output;

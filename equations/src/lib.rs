@@ -16,3 +16,11 @@ pub mod simplify;
 
 pub use expr::Expr;
 pub use graph::{Graph, Id, Node, Sym, SymKind};
+pub mod codegen;
+pub mod error;
+pub mod lagrange;
+pub mod model;
+pub mod models;
+
+pub use codegen::{Report, generate};
+pub use error::GenError;

@@ -1,0 +1,424 @@
+//! Emission of one function: `let` bindings in schedule order, then the
+//! outputs, as a `proc_macro2::TokenStream`.
+//!
+//! Canonical forms are turned back into what a person would write: a sum
+//! term with a negative coefficient becomes `a - b`, a factor `b^-n` becomes
+//! a division, `x^0.5` becomes `x.sqrt()`, `x²` becomes `x * x`. The
+//! semantics of `max0`, `step` and `sign` are exactly those of
+//! [`crate::eval::unary`] (NaN propagates). Operations are counted as they
+//! are emitted, so the counts are those of the code.
+
+use proc_macro2::{Ident, Literal, Span, TokenStream};
+use quote::quote;
+
+use super::ops::OpCounts;
+use super::schedule::{Names, Schedule, as_integer, const_exponent, is_repeated_mul};
+use crate::graph::{Binary, Graph, Id, Node, Sym, Unary};
+
+/// Binding strength of an emitted fragment, loosest first.
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Debug)]
+enum Prec {
+    /// `a + b`, `a - b`
+    Sum,
+    /// `a * b`, `a / b`
+    Product,
+    /// `-a`
+    Prefix,
+    /// names, literals, calls, parenthesized expressions
+    Atom,
+}
+
+/// An emitted expression and how tightly it binds.
+struct Frag {
+    ts: TokenStream,
+    prec: Prec,
+}
+
+impl Frag {
+    fn new(ts: TokenStream, prec: Prec) -> Frag {
+        Frag { ts, prec }
+    }
+
+    /// The tokens, parenthesized if they bind looser than `min`.
+    fn at(self, min: Prec) -> TokenStream {
+        let ts = self.ts;
+        if self.prec < min { quote!((#ts)) } else { ts }
+    }
+}
+
+/// An `f64` literal of a finite, non-negative value.
+pub(crate) fn lit(v: f64) -> Literal {
+    Literal::f64_unsuffixed(v)
+}
+
+/// A `usize` literal without suffix.
+pub(crate) fn ulit(n: usize) -> Literal {
+    Literal::usize_unsuffixed(n)
+}
+
+/// An identifier.
+pub(crate) fn ident(s: &str) -> Ident {
+    Ident::new(s, Span::call_site())
+}
+
+/// Emits the expressions of one function.
+pub struct Emitter<'a> {
+    g: &'a Graph,
+    sched: &'a Schedule,
+    /// Rust name of each named node (symbols and `let`s), by node index.
+    names: Vec<Option<Ident>>,
+    /// Operations emitted so far.
+    pub ops: OpCounts,
+}
+
+impl<'a> Emitter<'a> {
+    /// An emitter for `sched`; `sym_name` gives the local name of each symbol.
+    pub fn new(
+        g: &'a Graph,
+        sched: &'a Schedule,
+        names: &mut Names,
+        sym_name: &dyn Fn(Sym) -> String,
+    ) -> Emitter<'a> {
+        let mut out: Vec<Option<Ident>> = vec![None; sched.live.len()];
+        for (i, slot) in out.iter_mut().enumerate() {
+            if !sched.named[i] {
+                continue;
+            }
+            let name = match g.node(Id(i as u32)) {
+                Node::Sym(s) => sym_name(s),
+                node => match let_base(g, &node, sym_name) {
+                    Some(base) => names.fresh(&base),
+                    None => names.numbered("t"),
+                },
+            };
+            *slot = Some(ident(&name));
+        }
+        Emitter {
+            g,
+            sched,
+            names: out,
+            ops: OpCounts::default(),
+        }
+    }
+
+    /// The local name of a named node.
+    pub fn name(&self, id: Id) -> &Ident {
+        self.names[id.index()].as_ref().expect("node is not named")
+    }
+
+    /// `let name = value;` for every scheduled `let`, in order.
+    pub fn lets(&mut self) -> Vec<TokenStream> {
+        let sched = self.sched;
+        sched
+            .lets
+            .iter()
+            .map(|&id| {
+                let value = self.node(id).ts;
+                let name = self.name(id);
+                quote!(let #name = #value;)
+            })
+            .collect()
+    }
+
+    /// The expression for `id`: its name if named, else the node inlined.
+    pub fn expr(&mut self, id: Id) -> TokenStream {
+        self.frag(id).ts
+    }
+
+    fn frag(&mut self, id: Id) -> Frag {
+        if let Some(name) = &self.names[id.index()] {
+            return Frag::new(quote!(#name), Prec::Atom);
+        }
+        self.node(id)
+    }
+
+    /// The node itself (never its name).
+    fn node(&mut self, id: Id) -> Frag {
+        let g = self.g;
+        match g.node(id) {
+            Node::Const(c) => constant(c.value()),
+            Node::Sym(_) => {
+                let name = self.name(id);
+                Frag::new(quote!(#name), Prec::Atom)
+            }
+            Node::Add(xs) => self.sum(&xs),
+            Node::Mul(xs) => self.product(&xs, None),
+            Node::Pow(b, e) => self.power(b, e),
+            Node::Unary(op, a) => self.unary(op, a),
+            Node::Binary(op, a, b) => {
+                self.ops.transcendental += 1;
+                let a = self.frag(a).at(Prec::Atom);
+                let b = self.frag(b).ts;
+                let ts = match op {
+                    Binary::Atan2 => quote!(#a.atan2(#b)),
+                    Binary::Hypot => quote!(#a.hypot(#b)),
+                };
+                Frag::new(ts, Prec::Atom)
+            }
+        }
+    }
+
+    /// A sum, terms in node order; negative-coefficient terms subtracted.
+    fn sum(&mut self, xs: &[Id]) -> Frag {
+        let mut ts = TokenStream::new();
+        for (k, &x) in xs.iter().enumerate() {
+            if k > 0 {
+                self.ops.add += 1;
+            }
+            let (negative, term) = self.signed_term(x);
+            ts = match (k, negative) {
+                (0, false) => term.at(Prec::Sum),
+                (0, true) => {
+                    let t = term.at(Prec::Prefix);
+                    quote!(-#t)
+                }
+                (_, false) => {
+                    let t = term.at(Prec::Sum);
+                    quote!(#ts + #t)
+                }
+                (_, true) => {
+                    let t = term.at(Prec::Product);
+                    quote!(#ts - #t)
+                }
+            };
+        }
+        Frag::new(ts, Prec::Sum)
+    }
+
+    /// A sum term as (is negative, magnitude).
+    fn signed_term(&mut self, x: Id) -> (bool, Frag) {
+        if self.sched.is_named(x) {
+            return (false, self.frag(x));
+        }
+        match self.g.node(x) {
+            Node::Const(c) if c.value() < 0.0 => (true, constant(-c.value())),
+            Node::Mul(fs) => match self.g.expr(fs[0]).as_const() {
+                Some(c) if c < 0.0 => (true, self.product(&fs[1..], Some(-c))),
+                _ => (false, self.product(&fs, None)),
+            },
+            _ => (false, self.node(x)),
+        }
+    }
+
+    /// A product `c * n1 * n2 / (d1 * d2)`. `coeff` overrides a leading
+    /// constant factor (already removed from `fs`).
+    fn product(&mut self, fs: &[Id], coeff: Option<f64>) -> Frag {
+        let mut c = coeff.unwrap_or(1.0);
+        let mut num: Vec<Frag> = Vec::new();
+        let mut den: Vec<Frag> = Vec::new();
+        for (k, &f) in fs.iter().enumerate() {
+            if k == 0
+                && coeff.is_none()
+                && let Some(v) = self.g.expr(f).as_const()
+            {
+                c = v;
+                continue;
+            }
+            match self.denominator(f) {
+                Some(d) => den.push(d),
+                None => num.push(self.frag(f)),
+            }
+        }
+        let negative = c < 0.0;
+        if c.abs() != 1.0 || num.is_empty() {
+            num.insert(0, constant(c.abs()));
+        }
+        self.ops.mul += num.len() - 1 + den.len().saturating_sub(1);
+        let mut it = num.into_iter();
+        let first = it.next().map(|f| {
+            f.at(if negative {
+                Prec::Prefix
+            } else {
+                Prec::Product
+            })
+        });
+        let mut ts = if negative {
+            quote!(-#first)
+        } else {
+            quote!(#first)
+        };
+        let mut prec = if negative { Prec::Prefix } else { Prec::Atom };
+        for f in it {
+            let f = f.at(Prec::Prefix);
+            ts = quote!(#ts * #f);
+            prec = Prec::Product;
+        }
+        if !den.is_empty() {
+            self.ops.div += 1;
+            let d = if den.len() == 1 {
+                den.pop().map(|d| d.at(Prec::Atom))
+            } else {
+                let mut it = den.into_iter().map(|d| d.at(Prec::Prefix));
+                let first = it.next();
+                let mut d = quote!(#first);
+                for f in it {
+                    d = quote!(#d * #f);
+                }
+                Some(quote!((#d)))
+            };
+            ts = quote!(#ts / #d);
+            prec = Prec::Product;
+        }
+        Frag::new(ts, prec)
+    }
+
+    /// `Some(b^n)` when factor `f` is an inlined `b^-n` for an integer `n`.
+    fn denominator(&mut self, f: Id) -> Option<Frag> {
+        if self.sched.is_named(f) {
+            return None;
+        }
+        let Node::Pow(b, e) = self.g.node(f) else {
+            return None;
+        };
+        let n = const_exponent(self.g, e).and_then(as_integer)?;
+        (n < 0).then(|| self.int_power(b, -n))
+    }
+
+    /// `b^n` for an integer `n >= 1`.
+    fn int_power(&mut self, b: Id, n: i32) -> Frag {
+        let base = self.frag(b);
+        if n == 1 {
+            return base;
+        }
+        let base = base.at(Prec::Atom);
+        if is_repeated_mul(f64::from(n)) {
+            self.ops.mul += n as usize - 1;
+            return Frag::new(
+                if n == 2 {
+                    quote!(#base * #base)
+                } else {
+                    quote!(#base * #base * #base)
+                },
+                Prec::Product,
+            );
+        }
+        self.ops.mul += OpCounts::powi_muls(n as u32);
+        let n = Literal::i32_unsuffixed(n);
+        Frag::new(quote!(#base.powi(#n)), Prec::Atom)
+    }
+
+    /// `b^e` standing alone (not a denominator of a product).
+    fn power(&mut self, b: Id, e: Id) -> Frag {
+        let Some(n) = const_exponent(self.g, e) else {
+            self.ops.transcendental += 1;
+            let base = self.frag(b).at(Prec::Atom);
+            let e = self.frag(e).ts;
+            return Frag::new(quote!(#base.powf(#e)), Prec::Atom);
+        };
+        if let Some(k) = as_integer(n) {
+            if k >= 0 {
+                return self.int_power(b, k);
+            }
+            self.ops.div += 1;
+            let d = self.int_power(b, -k).at(Prec::Atom);
+            return Frag::new(quote!(1.0 / #d), Prec::Product);
+        }
+        let base = self.frag(b).at(Prec::Atom);
+        if n == 0.5 {
+            self.ops.sqrt += 1;
+            Frag::new(quote!(#base.sqrt()), Prec::Atom)
+        } else if n == -0.5 {
+            self.ops.sqrt += 1;
+            self.ops.div += 1;
+            Frag::new(quote!(1.0 / #base.sqrt()), Prec::Product)
+        } else if n == 1.5 {
+            self.ops.sqrt += 1;
+            self.ops.mul += 1;
+            Frag::new(quote!(#base * #base.sqrt()), Prec::Product)
+        } else {
+            self.ops.transcendental += 1;
+            let n = lit_signed(n);
+            Frag::new(quote!(#base.powf(#n)), Prec::Atom)
+        }
+    }
+
+    /// A one-argument function; the branchy ones exactly as
+    /// [`crate::eval::unary`].
+    fn unary(&mut self, op: Unary, a: Id) -> Frag {
+        let x = self.frag(a).at(Prec::Atom);
+        let call = |m: &str| {
+            let m = ident(m);
+            Frag::new(quote!(#x.#m()), Prec::Atom)
+        };
+        match op {
+            Unary::Abs => call("abs"),
+            Unary::Max0 => {
+                self.ops.branch += 1;
+                Frag::new(
+                    quote!(if #x > 0.0 || #x.is_nan() { #x } else { 0.0 }),
+                    Prec::Atom,
+                )
+            }
+            Unary::Step => {
+                self.ops.branch += 2;
+                Frag::new(
+                    quote!(if #x > 0.0 { 1.0 } else if #x.is_nan() { #x } else { 0.0 }),
+                    Prec::Atom,
+                )
+            }
+            Unary::Sign => {
+                self.ops.branch += 2;
+                Frag::new(
+                    quote!(if #x > 0.0 { 1.0 } else if #x < 0.0 { -1.0 } else { #x * 0.0 }),
+                    Prec::Atom,
+                )
+            }
+            _ => {
+                self.ops.transcendental += 1;
+                call(method(op))
+            }
+        }
+    }
+}
+
+/// The `f64` method implementing a transcendental function.
+fn method(op: Unary) -> &'static str {
+    match op {
+        Unary::Sin => "sin",
+        Unary::Cos => "cos",
+        Unary::Tan => "tan",
+        Unary::Asin => "asin",
+        Unary::Acos => "acos",
+        Unary::Atan => "atan",
+        Unary::Exp => "exp",
+        Unary::Expm1 => "exp_m1",
+        Unary::Ln => "ln",
+        Unary::Ln1p => "ln_1p",
+        Unary::Tanh => "tanh",
+        Unary::Abs => "abs",
+        Unary::Sign => "signum",
+        Unary::Max0 => "max0",
+        Unary::Step => "step",
+    }
+}
+
+/// A readable base name for a `let`: `sin_theta` for a function of a
+/// symbol, `sqrt_x` for its root; `None` for a numbered temporary.
+fn let_base(g: &Graph, node: &Node, sym_name: &dyn Fn(Sym) -> String) -> Option<String> {
+    let sym = |a: Id| match g.node(a) {
+        Node::Sym(s) => Some(sym_name(s)),
+        _ => None,
+    };
+    match node {
+        Node::Unary(op, a) => sym(*a).map(|s| format!("{}_{s}", method(*op))),
+        Node::Pow(b, e) if const_exponent(g, *e) == Some(0.5) => {
+            sym(*b).map(|s| format!("sqrt_{s}"))
+        }
+        _ => None,
+    }
+}
+
+/// A constant; negative ones as `-c`.
+fn constant(v: f64) -> Frag {
+    let l = lit(v.abs());
+    if v < 0.0 {
+        Frag::new(quote!(-#l), Prec::Prefix)
+    } else {
+        Frag::new(quote!(#l), Prec::Atom)
+    }
+}
+
+/// A literal that may be negative, as tokens.
+fn lit_signed(v: f64) -> TokenStream {
+    constant(v).ts
+}

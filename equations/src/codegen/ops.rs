@@ -1,0 +1,130 @@
+//! Operation counts of generated functions and the generation report.
+
+use std::fmt;
+use std::ops::AddAssign;
+
+/// Floating-point operations one call of a generated function performs, as
+/// emitted (each `let` counted once, inlined expressions once).
+///
+/// `abs` and negation are not counted (sign-bit operations); `powi(n)` counts
+/// as the multiplications of square-and-multiply; `powf`, `exp`, `ln`,
+/// trigonometric functions, `atan2` and `hypot` are transcendental calls;
+/// each `if` is a branch (`max0`, `step` and `sign` contain them).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct OpCounts {
+    /// Additions and subtractions.
+    pub add: usize,
+    /// Multiplications.
+    pub mul: usize,
+    /// Divisions.
+    pub div: usize,
+    /// Square roots.
+    pub sqrt: usize,
+    /// Calls of transcendental functions.
+    pub transcendental: usize,
+    /// `if` conditions.
+    pub branch: usize,
+}
+
+impl OpCounts {
+    /// Multiplications for `x.powi(n)` by square-and-multiply (1/x counted
+    /// separately as a division by the caller).
+    pub fn powi_muls(n: u32) -> usize {
+        if n <= 1 {
+            return 0;
+        }
+        let bits = 32 - n.leading_zeros() as usize;
+        (bits - 1) + (n.count_ones() as usize - 1)
+    }
+
+    /// Total of all counted operations.
+    pub fn total(&self) -> usize {
+        self.add + self.mul + self.div + self.sqrt + self.transcendental + self.branch
+    }
+}
+
+impl AddAssign for OpCounts {
+    fn add_assign(&mut self, o: OpCounts) {
+        self.add += o.add;
+        self.mul += o.mul;
+        self.div += o.div;
+        self.sqrt += o.sqrt;
+        self.transcendental += o.transcendental;
+        self.branch += o.branch;
+    }
+}
+
+impl fmt::Display for OpCounts {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "{} add/sub, {} mul, {} div, {} sqrt, {} transcendental, {} branches",
+            self.add, self.mul, self.div, self.sqrt, self.transcendental, self.branch
+        )
+    }
+}
+
+/// One generated function in the report.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ReportRow {
+    pub module: String,
+    pub function: String,
+    pub ops: OpCounts,
+    /// Number of `let` bindings of intermediate values.
+    pub lets: usize,
+}
+
+/// What was generated: one row per function, in emission order.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Report {
+    pub rows: Vec<ReportRow>,
+}
+
+impl fmt::Display for Report {
+    /// A plain-text table, one function per line.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let header = [
+            "module", "function", "add/sub", "mul", "div", "sqrt", "transc", "branch", "lets",
+        ];
+        let rows: Vec<[String; 9]> = self
+            .rows
+            .iter()
+            .map(|r| {
+                let o = r.ops;
+                [
+                    r.module.clone(),
+                    r.function.clone(),
+                    o.add.to_string(),
+                    o.mul.to_string(),
+                    o.div.to_string(),
+                    o.sqrt.to_string(),
+                    o.transcendental.to_string(),
+                    o.branch.to_string(),
+                    r.lets.to_string(),
+                ]
+            })
+            .collect();
+        let mut width = header.map(str::len);
+        for r in &rows {
+            for (w, c) in width.iter_mut().zip(r) {
+                *w = (*w).max(c.len());
+            }
+        }
+        let line = |f: &mut fmt::Formatter<'_>, cells: &[&str]| -> fmt::Result {
+            let mut s = String::new();
+            for (k, (c, w)) in cells.iter().zip(width).enumerate() {
+                if k < 2 {
+                    s.push_str(&format!("{c:<w$}  "));
+                } else {
+                    s.push_str(&format!("{c:>w$}  "));
+                }
+            }
+            writeln!(f, "{}", s.trim_end())
+        };
+        line(f, &header)?;
+        for r in &rows {
+            line(f, &r.iter().map(String::as_str).collect::<Vec<_>>())?;
+        }
+        Ok(())
+    }
+}

@@ -1,0 +1,14 @@
+//! The models, one file each. A model is a function building a [`Module`]
+//! in a fresh [`Graph`]; register it in [`ALL`] (one line) to have its code
+//! generated into `pegdyn::generated::<name>`.
+
+use crate::graph::Graph;
+use crate::model::Module;
+
+pub mod pendulum;
+
+/// Builds one model's module in the given graph.
+pub type ModelFn = fn(&Graph) -> Module;
+
+/// Every model the build generates code for, in emission order.
+pub const ALL: &[ModelFn] = &[pendulum::module];
