@@ -31,93 +31,121 @@ fn without(terms: &[Id], i: usize, j: usize) -> Vec<Id> {
         .collect()
 }
 
-/// True when some term is, or has a factor, for which `pred` holds. Reads
-/// nodes in place (this runs on every sum built, so it must be cheap).
-fn any_factor(g: &Graph, terms: &[Id], pred: impl Fn(&Node) -> bool) -> bool {
-    terms.iter().any(|&t| {
-        g.with_node(t, |n| match n {
-            Node::Mul(fs) => fs.iter().any(|&f| g.with_node(f, &pred)),
-            other => pred(other),
-        })
+/// True when `t` is, or has a factor, for which `pred` holds. Reads nodes
+/// in place (this runs on every sum built, so it must be cheap).
+fn has_factor(g: &Graph, t: Id, pred: &impl Fn(&Node) -> bool) -> bool {
+    g.with_node(t, |n| match n {
+        Node::Mul(fs) => fs.iter().any(|&f| g.with_node(f, pred)),
+        other => pred(other),
     })
+}
+
+/// The id of the term `c·f₁·…·fₙ` (factors non-constant, in canonical
+/// order) if it is stored; never interns.
+fn find_term(g: &Graph, c: f64, fs: &[Id]) -> Option<Id> {
+    let k = || g.find(&Node::Const(Const::new(c)?));
+    match (fs, c == 1.0) {
+        ([], _) => k(),
+        ([f], true) => Some(*f),
+        (_, true) => g.find(&Node::Mul(fs.into())),
+        (_, false) => {
+            let mut v = Vec::with_capacity(fs.len() + 1);
+            v.push(k()?);
+            v.extend_from_slice(fs);
+            g.find(&Node::Mul(v.into()))
+        }
+    }
+}
+
+/// Finds the first term `terms[i]` with a factor `f` (at position `k` of
+/// its factors) for which `partner(c, factors, k)` names another term of
+/// the sum; returns `(i, j, c, factors, k)`. Linear in the number of terms:
+/// only terms with a matching factor are split, partners are looked up by
+/// id.
+fn find_pair(
+    g: &Graph,
+    terms: &[Id],
+    pred: impl Fn(&Node) -> bool,
+    partner: impl Fn(f64, &[Id], usize) -> Option<Id>,
+) -> Option<(usize, usize, f64, Vec<Id>, usize)> {
+    let mut index: Option<std::collections::HashMap<Id, usize>> = None;
+    for (i, &t) in terms.iter().enumerate() {
+        if !has_factor(g, t, &pred) {
+            continue;
+        }
+        let (c, fs) = term_parts(g, t);
+        for k in 0..fs.len() {
+            if !g.with_node(fs[k], &pred) {
+                continue;
+            }
+            let Some(p) = partner(c, &fs, k) else {
+                continue;
+            };
+            let index = index
+                .get_or_insert_with(|| terms.iter().enumerate().map(|(j, &t)| (t, j)).collect());
+            if let Some(&j) = index.get(&p).filter(|&&j| j != i) {
+                return Some((i, j, c, fs, k));
+            }
+        }
+    }
+    None
+}
+
+/// `fs` without the element at `k`.
+fn remove(fs: &[Id], k: usize) -> Vec<Id> {
+    let mut v = fs.to_vec();
+    v.remove(k);
+    v
 }
 
 /// `c·F·sin(u)^2 + c·F·cos(u)^2 → c·F`.
 pub(super) fn pythagorean(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
-    let sin_power = |n: &Node| match n {
-        Node::Pow(b, _) => g.with_node(*b, |b| matches!(b, Node::Unary(Unary::Sin, _))),
-        _ => false,
-    };
-    if terms.len() < 2 || !any_factor(g, terms, sin_power) {
+    if terms.len() < 2 {
         return None;
     }
-    let parts: Vec<(f64, Vec<Id>)> = terms.iter().map(|&t| term_parts(g, t)).collect();
     let two = g.find(&Node::Const(Const::new(2.0)?))?;
-    for (i, (c, fs)) in parts.iter().enumerate() {
-        for (k, &f) in fs.iter().enumerate() {
-            let Some(u) = square_of(g, f, Unary::Sin) else {
-                continue;
-            };
-            let Some(cos_u) = g.find(&Node::Unary(Unary::Cos, u)) else {
-                continue;
-            };
-            let Some(cos2) = g.find(&Node::Pow(cos_u, two)) else {
-                continue;
-            };
-            let mut partner = fs.clone();
-            partner[k] = cos2;
-            partner.sort_unstable();
-            let Some(j) = parts.iter().position(|(cj, fj)| cj == c && *fj == partner) else {
-                continue;
-            };
-            let mut rest: Vec<Id> = fs
-                .iter()
-                .enumerate()
-                .filter(|&(m, _)| m != k)
-                .map(|(_, &x)| x)
-                .collect();
-            rest.push(konst(g, *c));
-            let mut next = without(terms, i, j);
-            next.push(mul(g, &rest));
-            return Some(next);
+    let sin_square = |n: &Node| match n {
+        Node::Pow(b, e) => {
+            *e == two && g.with_node(*b, |b| matches!(b, Node::Unary(Unary::Sin, _)))
         }
-    }
-    None
+        _ => false,
+    };
+    let partner = |c: f64, fs: &[Id], k: usize| {
+        let u = square_of(g, fs[k], Unary::Sin)?;
+        let cos_u = g.find(&Node::Unary(Unary::Cos, u))?;
+        let mut p = fs.to_vec();
+        p[k] = g.find(&Node::Pow(cos_u, two))?;
+        p.sort_unstable();
+        find_term(g, c, &p)
+    };
+    let (i, j, c, fs, k) = find_pair(g, terms, sin_square, partner)?;
+    let mut rest = remove(&fs, k);
+    rest.push(konst(g, c));
+    let mut next = without(terms, i, j);
+    next.push(mul(g, &rest));
+    Some(next)
 }
 
 /// `c·F − c·F·cos(u) → 2·c·F·sin(u/2)^2`, where `F` may be 1 (then the
 /// partner is the constant term).
 pub(super) fn one_minus_cos(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
-    if terms.len() < 2 || !any_factor(g, terms, |n| matches!(n, Node::Unary(Unary::Cos, _))) {
+    if terms.len() < 2 {
         return None;
     }
-    let parts: Vec<(f64, Vec<Id>)> = terms.iter().map(|&t| term_parts(g, t)).collect();
-    for (i, (c, fs)) in parts.iter().enumerate() {
-        for (k, &f) in fs.iter().enumerate() {
-            let Node::Unary(Unary::Cos, u) = g.node(f) else {
-                continue;
-            };
-            let rest: Vec<Id> = fs
-                .iter()
-                .enumerate()
-                .filter(|&(m, _)| m != k)
-                .map(|(_, &x)| x)
-                .collect();
-            let Some(j) = parts.iter().position(|(cj, fj)| *cj == -c && *fj == rest) else {
-                continue;
-            };
-            // cj·F + c·F·cos u with cj = −c is −c·F·(1 − cos u) = −2c·F·sin²(u/2).
-            let half = mul(g, &[konst(g, 0.5), u]);
-            let s2 = pow(g, unary(g, Unary::Sin, half), konst(g, 2.0));
-            let mut fs2 = rest;
-            fs2.push(s2);
-            fs2.push(konst(g, -2.0 * c));
-            let mut next = without(terms, i, j);
-            next.push(mul(g, &fs2));
-            return Some(next);
-        }
-    }
-    None
+    let is_cos = |n: &Node| matches!(n, Node::Unary(Unary::Cos, _));
+    let partner = |c: f64, fs: &[Id], k: usize| find_term(g, -c, &remove(fs, k));
+    let (i, j, c, fs, k) = find_pair(g, terms, is_cos, partner)?;
+    let Node::Unary(_, u) = g.node(fs[k]) else {
+        return None;
+    };
+    // cj·F + c·F·cos u with cj = −c is −c·F·(1 − cos u) = −2c·F·sin²(u/2).
+    let half = mul(g, &[konst(g, 0.5), u]);
+    let mut fs2 = remove(&fs, k);
+    fs2.push(pow(g, unary(g, Unary::Sin, half), konst(g, 2.0)));
+    fs2.push(konst(g, -2.0 * c));
+    let mut next = without(terms, i, j);
+    next.push(mul(g, &fs2));
+    Some(next)
 }
 
 /// `c·(a + b) → c·a + c·b` for a product of a constant and one sum.
