@@ -5,3 +5,4 @@ pub mod hertz;
 pub mod error;
 pub mod output;
 pub mod scene;
+pub mod jamming;

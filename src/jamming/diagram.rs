@@ -1,0 +1,145 @@
+//! The jamming diagram (paper §4.1.1, Fig. 6; Whitney 1982): the set of load
+//! ratios (F_x/F_z, M/(r F_z)) under which a peg in two-point contact at
+//! depth l slides in instead of jamming.
+//!
+//! For the reference tilt, the two-point sliding line joins two corners where
+//! one contact force vanishes ([`super::forces`]):
+//!
+//! ```text
+//! edge only (f_tip = 0):  P₁ = (k1/k2, (l + μr)/(r k2))     → Whitney (1/μ, 1 + 2λ)
+//! tip only  (f_edge = 0): P₂ = (−1/μ, −k2/μ)                → Whitney (−1/μ, −1)
+//! ```
+//!
+//! with k1 = cos θ − μ sin θ, k2 = sin θ + μ cos θ, λ = l/(2rμ). Above that
+//! line (larger moment) the contacts can hold the load inside their friction
+//! cones: the peg jams. Beyond the corners' abscissae one-point contact is
+//! stuck in its own friction cone: the peg jams. The opposite tilt is the
+//! point reflection (F_x, M) → (−F_x, −M). What is left is the parallelogram
+//! with corners −P₁, −P₂, P₁, P₂ (counter-clockwise); it is a parallelogram
+//! at any θ because it is centrally symmetric. Inside: no jamming; on its
+//! edges: equilibrium sliding; outside: jamming.
+//!
+//! Whitney's small-angle diagram ([`whitney_parallelogram`]) is the θ = 0
+//! case of the exact one ([`exact_parallelogram_at_tilt`]).
+
+use super::error::ParamError;
+use super::geometry::two_point_tilt;
+use super::params::PegHole;
+
+/// A point of the diagram: (F_x/F_z, M/(r F_z)), moment about the peg tip.
+pub type Ratio = [f64; 2];
+
+/// Which contact force vanishes at a parallelogram corner.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CornerKind {
+    /// Only the hole-mouth edge pushes (f_tip = 0), reference tilt.
+    EdgeOnly,
+    /// Only the tip corner pushes (f_edge = 0), reference tilt.
+    TipOnly,
+    /// Edge only, opposite tilt (point reflection of `EdgeOnly`).
+    EdgeOnlyMirrored,
+    /// Tip only, opposite tilt (point reflection of `TipOnly`).
+    TipOnlyMirrored,
+}
+
+/// The no-jamming parallelogram, corners counter-clockwise starting at the
+/// mirrored edge-only corner: `[−P₁, −P₂, P₁, P₂]`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Parallelogram {
+    /// Corners (F_x/F_z, M/(r F_z)), counter-clockwise.
+    pub corners: [Ratio; 4],
+    /// Tilt θ (rad) the corners were computed at (0 for Whitney's).
+    pub theta: f64,
+}
+
+impl Parallelogram {
+    fn from_reference(p1: Ratio, p2: Ratio, theta: f64) -> Self {
+        Self {
+            corners: [[-p1[0], -p1[1]], [-p2[0], -p2[1]], p1, p2],
+            theta,
+        }
+    }
+
+    /// Corners with what vanishes at each, in [`Self::corners`] order.
+    pub fn labelled_corners(&self) -> [(CornerKind, Ratio); 4] {
+        let k = [
+            CornerKind::EdgeOnlyMirrored,
+            CornerKind::TipOnlyMirrored,
+            CornerKind::EdgeOnly,
+            CornerKind::TipOnly,
+        ];
+        [0, 1, 2, 3].map(|i| (k[i], self.corners[i]))
+    }
+
+    /// Edges as (start, end) pairs, counter-clockwise: the mirrored two-point
+    /// line, the right side, the reference two-point line, the left side.
+    pub fn edges(&self) -> [(Ratio, Ratio); 4] {
+        [0, 1, 2, 3].map(|i| (self.corners[i], self.corners[(i + 1) % 4]))
+    }
+
+    /// Signed distance (in ratio units) from `q` to the nearest edge line:
+    /// positive strictly inside, zero on the boundary, negative outside.
+    pub fn margin(&self, q: Ratio) -> f64 {
+        self.edges()
+            .iter()
+            .map(|(a, b)| {
+                let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
+                (ex * (q[1] - a[1]) - ey * (q[0] - a[0])) / ex.hypot(ey)
+            })
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// True when the load ratio `q` is strictly inside: the peg does not jam.
+    pub fn avoids_jamming(&self, q: Ratio) -> bool {
+        self.margin(q) > 0.0
+    }
+
+    /// Slope and intercept of the reference two-point line M/(rF_z) =
+    /// slope·F_x/F_z + intercept (the mirrored line has the opposite intercept).
+    pub fn two_point_line(&self) -> (f64, f64) {
+        let [_, _, p1, p2] = self.corners;
+        let slope = (p1[1] - p2[1]) / (p1[0] - p2[0]);
+        (slope, p1[1] - slope * p1[0])
+    }
+}
+
+/// Whitney's small-angle parallelogram at depth `l` (m): corners
+/// (−1/μ, −1 − 2λ), (1/μ, 1), (1/μ, 1 + 2λ), (−1/μ, −1), λ = l/(2rμ);
+/// two-point lines M/(rF_z) = ±λ + μ(1 + λ) F_x/F_z.
+///
+/// ```
+/// use pegdyn::jamming::{PegHole, diagram::whitney_parallelogram};
+/// let p = PegHole::try_new(0.0125, 0.01, 0.25).unwrap();
+/// let g = whitney_parallelogram(&p, 0.01).unwrap(); // λ = 1.6
+/// assert_eq!(g.corners[2], [4.0, 1.0 + 2.0 * 1.6]);
+/// let (slope, icpt) = g.two_point_line();
+/// assert!((slope - 0.25 * 2.6).abs() < 1e-12 && (icpt - 1.6).abs() < 1e-12);
+/// ```
+pub fn whitney_parallelogram(p: &PegHole, l: f64) -> Result<Parallelogram, ParamError> {
+    let l = PegHole::check_depth(l)?;
+    let (mu, lam) = (p.mu(), p.lambda(l));
+    Ok(Parallelogram::from_reference(
+        [1.0 / mu, 1.0 + 2.0 * lam],
+        [-1.0 / mu, -1.0],
+        0.0,
+    ))
+}
+
+/// The exact finite-angle parallelogram at depth `l` (m), tilt from the exact
+/// two-point geometry; `Ok(None)` when two-point contact is impossible
+/// (l < √(D² − d²)).
+pub fn exact_parallelogram(p: &PegHole, l: f64) -> Result<Option<Parallelogram>, ParamError> {
+    Ok(two_point_tilt(p, l)?.map(|theta| exact_parallelogram_at_tilt(p, l, theta)))
+}
+
+/// The finite-angle parallelogram for a given depth `l` (m) and tilt `theta`
+/// (rad), without checking that they are geometrically compatible.
+pub fn exact_parallelogram_at_tilt(p: &PegHole, l: f64, theta: f64) -> Parallelogram {
+    let (mu, r) = (p.mu(), p.r());
+    let (k1, k2, _) = super::forces::k_factors(mu, theta);
+    Parallelogram::from_reference(
+        [k1 / k2, (l + mu * r) / (r * k2)],
+        [-1.0 / mu, -k2 / mu],
+        theta,
+    )
+}

@@ -1,0 +1,99 @@
+//! Quasi-static two-point contact forces in Whitney's frame (hole frame,
+//! applied load reduced to the peg tip), exact in the tilt θ.
+//!
+//! Reference configuration as in [`super::geometry`]. Forces *on the peg*
+//! while it slides into the hole (tip corner moves along +z, the peg slides
+//! down its own axis past the edge), friction at the kinetic limit:
+//!
+//! ```text
+//! tip contact  (wall x = 0, normal +x):        f_t (1, −μ)
+//! edge contact (normal −n, n = (cosθ, sinθ)):  f_e (−cosθ + μ sinθ, −sinθ − μ cosθ)
+//! ```
+//!
+//! The applied wrench (F_x, F_z, M), with M about the tip centre and positive
+//! in the sense τ = Δx F_z − Δz F_x, balances them:
+//!
+//! ```text
+//! F_x = −f_t + k1 f_e          k1 = cosθ − μ sinθ
+//! F_z =  μ f_t + k2 f_e        k2 = sinθ + μ cosθ
+//! M   = −r k2 f_t + (l + μr) f_e
+//! ```
+//!
+//! The edge normal is perpendicular to the peg axis at distance l from the
+//! tip, and the edge friction runs along the peg side at distance r, so the
+//! edge moment arm is exactly l + μr at any θ. These are the paper's
+//! Eqs. 51–52 with accelerations zero, mirrored and with the moment taken
+//! about the tip instead of the centre of mass (see [`super::quasi_static`]).
+
+use super::params::PegHole;
+
+/// A planar load applied to the peg, reduced to the tip centre: forces
+/// F_x, F_z (N) and moment M about the tip (N·m), hole frame.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Wrench {
+    /// Lateral force F_x (N), positive towards the edge-contact wall.
+    pub fx: f64,
+    /// Axial force F_z (N), positive into the hole.
+    pub fz: f64,
+    /// Moment about the tip centre (N·m), τ = Δx F_z − Δz F_x.
+    pub m: f64,
+}
+
+/// Normal contact forces of two-point contact (N).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactForces {
+    /// At the tip corner against the wall (Whitney's f₂).
+    pub tip: f64,
+    /// At the hole-mouth edge against the peg side (Whitney's f₁).
+    pub edge: f64,
+}
+
+/// The friction-dependent factors (k1, k2, k3 = k2 + μ k1) of the paper's
+/// Eq. 52 at tilt `theta`.
+pub fn k_factors(mu: f64, theta: f64) -> (f64, f64, f64) {
+    let (s, c) = theta.sin_cos();
+    let k1 = c - mu * s;
+    let k2 = s + mu * c;
+    (k1, k2, k2 + mu * k1)
+}
+
+/// Contact forces that balance the applied forces `fx`, `fz` (N) while the
+/// peg slides in two-point contact at tilt `theta` (rad).
+///
+/// Both must be non-negative for two-point sliding to be possible.
+pub fn sliding_contact_forces(p: &PegHole, theta: f64, fx: f64, fz: f64) -> ContactForces {
+    let (k1, k2, k3) = k_factors(p.mu(), theta);
+    ContactForces {
+        tip: (k1 * fz - k2 * fx) / k3,
+        edge: (fz + p.mu() * fx) / k3,
+    }
+}
+
+/// The applied wrench that holds the peg in equilibrium sliding for given
+/// contact forces (N) at depth `l` (m) and tilt `theta` (rad).
+pub fn sliding_wrench(p: &PegHole, l: f64, theta: f64, f: ContactForces) -> Wrench {
+    let (mu, r) = (p.mu(), p.r());
+    let (k1, k2, _) = k_factors(mu, theta);
+    Wrench {
+        fx: -f.tip + k1 * f.edge,
+        fz: mu * f.tip + k2 * f.edge,
+        m: -r * k2 * f.tip + (l + mu * r) * f.edge,
+    }
+}
+
+/// Moment about the tip (N·m) needed for equilibrium sliding under `fx`,
+/// `fz` (N): the two-point contact line of the jamming diagram.
+pub fn sliding_moment(p: &PegHole, l: f64, theta: f64, fx: f64, fz: f64) -> f64 {
+    sliding_wrench(p, l, theta, sliding_contact_forces(p, theta, fx, fz)).m
+}
+
+/// Whitney's small-angle form (θ → 0): F_x = f₁ − f₂, F_z = μ(f₁ + f₂),
+/// M = f₁ l + μ r (f₁ − f₂), with f₁ at the edge and f₂ at the tip.
+pub fn whitney_sliding_wrench(p: &PegHole, l: f64, f: ContactForces) -> Wrench {
+    let (mu, r) = (p.mu(), p.r());
+    Wrench {
+        fx: f.edge - f.tip,
+        fz: mu * (f.edge + f.tip),
+        m: f.edge * l + mu * r * (f.edge - f.tip),
+    }
+}

@@ -1,0 +1,25 @@
+//! Jamming and wedging of a peg in two-point contact (paper Eqs. 52–54 and
+//! 65–86; Whitney, "Quasi-static assembly of compliantly supported rigid
+//! parts", 1982).
+//!
+//! - [`params`]: the peg/hole parameters (r, c, μ), checked.
+//! - [`geometry`]: exact two-point tilt θ(l), too-shallow limit.
+//! - [`forces`]: quasi-static contact forces in Whitney's frame.
+//! - [`quasi_static`]: the paper's Eqs. 51–54 in the paper's frame.
+//! - [`diagram`]: the jamming parallelogram, Whitney's and exact.
+//! - [`wedging`]: the wedging angle θ_c, exact and series.
+//! - [`space3d`]: the 3-D no-jamming inequalities (Eqs. 81–82).
+//!
+//! The derivation and the comparison with the paper are in `docs/jamming.md`.
+
+pub mod diagram;
+pub mod error;
+pub mod forces;
+pub mod geometry;
+pub mod params;
+pub mod quasi_static;
+pub mod space3d;
+pub mod wedging;
+
+pub use error::ParamError;
+pub use params::PegHole;
