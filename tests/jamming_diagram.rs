@@ -6,10 +6,10 @@
 //! parallelogram cannot be held by the contacts (no jam) while loads past the
 //! two-point line can (jam).
 
+use pegdyn::jamming::PegHole;
 use pegdyn::jamming::diagram::*;
 use pegdyn::jamming::forces::*;
 use pegdyn::jamming::geometry::*;
-use pegdyn::jamming::PegHole;
 
 const R: f64 = 0.0125;
 const SCENE: [(f64, f64); 4] = [(0.002, 0.1), (0.002, 0.3), (0.01, 0.1), (0.01, 0.3)];
@@ -125,8 +125,14 @@ fn sliding_equilibrium_matches_moments_from_contact_points() {
             assert!((back.tip - ft).abs() < 1e-12 && (back.edge - fe).abs() < 1e-12);
         }
         // Whitney's small-angle form is the θ = 0 case
-        let f = ContactForces { tip: 1.3, edge: 0.4 };
-        let (w, e) = (whitney_sliding_wrench(&p, l, f), sliding_wrench(&p, l, 0.0, f));
+        let f = ContactForces {
+            tip: 1.3,
+            edge: 0.4,
+        };
+        let (w, e) = (
+            whitney_sliding_wrench(&p, l, f),
+            sliding_wrench(&p, l, 0.0, f),
+        );
         assert!((w.fx - e.fx).abs() < 1e-15 && (w.fz - e.fz).abs() < 1e-15);
         assert!((w.m - e.m).abs() < 1e-15);
     }
@@ -140,7 +146,10 @@ fn holdable(p: &PegHole, l: f64, th: f64, q: Ratio) -> bool {
     let w = [q[0], 1.0, q[1] * r];
     let (tip, edge, t) = contact_points(p, l, th);
     let (s, c) = th.sin_cos();
-    let (at, ae) = ([tip[0] - t[0], tip[1] - t[1]], [edge[0] - t[0], edge[1] - t[1]]);
+    let (at, ae) = (
+        [tip[0] - t[0], tip[1] - t[1]],
+        [edge[0] - t[0], edge[1] - t[1]],
+    );
     let tau = |a: [f64; 2], g: [f64; 2]| a[0] * g[1] - a[1] * g[0];
     (0..=2000).any(|k| {
         let st = mu * (k as f64 / 1000.0 - 1.0);
@@ -152,9 +161,9 @@ fn holdable(p: &PegHole, l: f64, th: f64, q: Ratio) -> bool {
             _ => tau(pts[j], cols[j]),
         });
         let rhs = nalgebra::Vector3::new(-w[0], -w[1], -w[2]);
-        m.lu().solve(&rhs).is_some_and(|x| {
-            x[0] >= 0.0 && x[1] >= 0.0 && x[2].abs() <= mu * x[1] + 1e-12
-        })
+        m.lu()
+            .solve(&rhs)
+            .is_some_and(|x| x[0] >= 0.0 && x[1] >= 0.0 && x[2].abs() <= mu * x[1] + 1e-12)
     })
 }
 

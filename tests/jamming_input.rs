@@ -43,14 +43,28 @@ fn depth_must_be_positive_and_finite() {
     let p = PegHole::try_new(0.0125, 0.01, 0.3).unwrap();
     for l in [0.0, -0.001, f64::NAN] {
         assert_eq!(geometry::two_point_tilt(&p, l).unwrap_err().field, "l");
-        assert_eq!(diagram::whitney_parallelogram(&p, l).unwrap_err().field, "l");
+        assert_eq!(
+            diagram::whitney_parallelogram(&p, l).unwrap_err().field,
+            "l"
+        );
         assert_eq!(diagram::exact_parallelogram(&p, l).unwrap_err().field, "l");
     }
 }
 
 #[test]
 fn spherical_force_checks_fields() {
-    assert_eq!(SphericalForce::try_new(-1.0, 0.1, 0.0).unwrap_err().field, "F");
-    assert_eq!(SphericalForce::try_new(1.0, 4.0, 0.0).unwrap_err().field, "beta");
-    assert_eq!(SphericalForce::try_new(1.0, 0.1, f64::NAN).unwrap_err().field, "gamma");
+    assert_eq!(
+        SphericalForce::try_new(-1.0, 0.1, 0.0).unwrap_err().field,
+        "F"
+    );
+    assert_eq!(
+        SphericalForce::try_new(1.0, 4.0, 0.0).unwrap_err().field,
+        "beta"
+    );
+    assert_eq!(
+        SphericalForce::try_new(1.0, 0.1, f64::NAN)
+            .unwrap_err()
+            .field,
+        "gamma"
+    );
 }

@@ -36,7 +36,11 @@ fn eq51(p: &PaperPeg, u: PegLoad, a: PegAcc, s: PaperSolution) -> [f64; 3] {
 fn eq52_solves_eq51() {
     let p = peg();
     let u = PegLoad { f1: 12.0, f2: -1.5 };
-    let a = PegAcc { xdd: 0.3, ydd: 1.2, thdd: -4.0 };
+    let a = PegAcc {
+        xdd: 0.3,
+        ydd: 1.2,
+        thdd: -4.0,
+    };
     let s = p.two_point(u, a);
     for r in eq51(&p, u, a, s) {
         assert!(r.abs() < 1e-12, "{r}");
@@ -75,13 +79,21 @@ fn one_point_forms_solve_eq51_with_other_force_zero() {
         let k1 = cs - p.mu * sn;
         let f_a = (p.m * xdd - u.f1 * sn - u.f2 * cs) / k1;
         let ydd = (u.f1 * cs - u.f2 * sn - k2 * f_a) / p.m;
-        let a = PegAcc { xdd, ydd, thdd: 1.0 };
+        let a = PegAcc {
+            xdd,
+            ydd,
+            thdd: 1.0,
+        };
         (p.edge_only(u, a), a)
     };
     for r in eq51(&p, u, s_a.1, s_a.0) {
         assert!(r.abs() < 1e-12, "edge-only residual {r}");
     }
-    let a = PegAcc { xdd: 0.2, ydd: 0.0, thdd: -2.0 };
+    let a = PegAcc {
+        xdd: 0.2,
+        ydd: 0.0,
+        thdd: -2.0,
+    };
     let s_b = p.tip_only(u, a);
     let ydd = (u.f1 * cs - u.f2 * sn - p.mu * s_b.f_b) / p.m;
     let a = PegAcc { ydd, ..a };

@@ -10,7 +10,13 @@ use pegdyn::jamming::diagram::exact_parallelogram;
 use pegdyn::jamming::geometry::{contact_points, two_point_tilt};
 use pegdyn::jamming::space3d::*;
 
-fn setup() -> (PegHole, f64, f64, NoJamSpace, pegdyn::jamming::diagram::Parallelogram) {
+fn setup() -> (
+    PegHole,
+    f64,
+    f64,
+    NoJamSpace,
+    pegdyn::jamming::diagram::Parallelogram,
+) {
     let p = PegHole::try_new(0.0125, 0.01, 0.3).unwrap();
     let l = 0.01;
     let th = two_point_tilt(&p, l).unwrap().unwrap();
@@ -60,7 +66,10 @@ fn two_point_sliding_load_is_on_the_boundary_in_every_plane() {
             &p,
             l,
             th,
-            pegdyn::jamming::forces::ContactForces { tip: 1.7, edge: 2.2 },
+            pegdyn::jamming::forces::ContactForces {
+                tip: 1.7,
+                edge: 2.2,
+            },
         );
         assert!((q[0] - planar.fx / planar.fz).abs() < 1e-12);
         assert!((q[1] - planar.m / (p.r() * planar.fz)).abs() < 1e-9);
@@ -71,7 +80,14 @@ fn two_point_sliding_load_is_on_the_boundary_in_every_plane() {
 fn planar_verdict_lifts_to_any_plane() {
     let (p, _, _, space, g) = setup();
     let fz = 10.0;
-    for q in [[0.0, 0.0], [1.0, 1.5], [-2.0, -3.0], [2.0, 6.0], [0.5, 9.0], [-3.4, 0.0]] {
+    for q in [
+        [0.0, 0.0],
+        [1.0, 1.5],
+        [-2.0, -3.0],
+        [2.0, 6.0],
+        [0.5, 9.0],
+        [-3.4, 0.0],
+    ] {
         for phi in [0.0, 1.1, 3.0] {
             let f = lift([q[0] * fz, fz], phi);
             // planar moment τ = −M·(z × e_φ): M along −(z × e_φ)

@@ -4,9 +4,9 @@
 //! not; at θ_c the contact forces self-equilibrate exactly on the edge
 //! contact's friction cone.
 
+use pegdyn::jamming::PegHole;
 use pegdyn::jamming::geometry::{depth_at_tilt, min_two_point_depth, two_point_tilt};
 use pegdyn::jamming::wedging::*;
-use pegdyn::jamming::PegHole;
 
 fn peg(c: f64, mu: f64) -> PegHole {
     PegHole::try_new(0.0125, c, mu).unwrap()
@@ -37,7 +37,10 @@ fn paper_eq86_is_off_by_one_over_mu_squared() {
         let p = peg(c, mu);
         let exact = wedging_angle(&p).unwrap();
         let ratio = exact / wedging_angle_paper_eq86(&p);
-        assert!((ratio * mu * mu - 1.0).abs() < 0.2, "c={c} mu={mu}: {ratio}");
+        assert!(
+            (ratio * mu * mu - 1.0).abs() < 0.2,
+            "c={c} mu={mu}: {ratio}"
+        );
     }
 }
 

@@ -110,7 +110,10 @@ impl NoJamSpace {
     /// when F_z ≤ 0 (not an insertion force).
     pub fn values(&self, f: &SphericalForce, m: &Vector3<f64>) -> Option<[f64; 2]> {
         let (a, mm) = self.ratios(f, m)?;
-        Some(self.u.map(|u| (u[0] * a[0] + u[1] * mm[0]).hypot(u[0] * a[1] + u[1] * mm[1])))
+        Some(
+            self.u
+                .map(|u| (u[0] * a[0] + u[1] * mm[0]).hypot(u[0] * a[1] + u[1] * mm[1])),
+        )
     }
 
     /// True when the load avoids jamming whatever the tilt azimuth.
