@@ -9,6 +9,17 @@
 //! the constructor laws with their domains so that one table documents all
 //! rewrites.
 //!
+//! ```
+//! use pegdyn_equations::Graph;
+//! let g = Graph::new();
+//! let (x, y) = (g.var("x"), g.var("y"));
+//! assert_eq!(x + x, 2.0 * x);
+//! assert_eq!((x - y) - (x - y), g.constant(0.0));
+//! assert_eq!(x.sin().square() + x.cos().square(), g.constant(1.0));
+//! assert_eq!((1.0 - x.cos()).to_string(), "2*sin(x/2)^2");
+//! assert_eq!(x.square().sqrt(), x.abs()); // never x
+//! ```
+//!
 //! A law may turn an undefined value (NaN, a division by zero) into a defined
 //! one (`x/x → 1` at `x = 0`), but never changes a value where the input
 //! expression is defined and finite.
@@ -33,20 +44,23 @@ pub(crate) fn const_of(g: &Graph, id: Id) -> Option<f64> {
 
 /// Splits a term into `(coefficient, rest)`: `3·x·y → (3, x·y)`, `x → (1, x)`.
 pub(crate) fn split_coeff(g: &Graph, id: Id) -> (f64, Id) {
-    match g.node(id) {
+    enum Split {
+        Plain,
+        One(f64, Id),
+        Many(f64, Box<[Id]>),
+    }
+    let split = g.with_node(id, |n| match n {
         Node::Mul(fs) => match const_of(g, fs[0]) {
-            Some(c) => {
-                let rest = &fs[1..];
-                let base = if rest.len() == 1 {
-                    rest[0]
-                } else {
-                    g.intern(Node::Mul(rest.into()))
-                };
-                (c, base)
-            }
-            None => (1.0, id),
+            Some(c) if fs.len() == 2 => Split::One(c, fs[1]),
+            Some(c) => Split::Many(c, fs[1..].into()),
+            None => Split::Plain,
         },
-        _ => (1.0, id),
+        _ => Split::Plain,
+    });
+    match split {
+        Split::Plain => (1.0, id),
+        Split::One(c, b) => (c, b),
+        Split::Many(c, rest) => (c, g.intern(Node::Mul(rest))),
     }
 }
 

@@ -34,6 +34,21 @@ pub const UNARY: [Unary; 15] = [
     Unary::Step,
 ];
 
+/// Stops compiling when a node kind is added to the crate, as a reminder
+/// to add it to [`UNARY`] or to [`Tree`].
+#[allow(clippy::match_single_binding)]
+pub fn covers_every_kind(u: Unary, b: pegdyn_equations::graph::Binary) {
+    use pegdyn_equations::graph::Binary as B;
+    match u {
+        Unary::Sin | Unary::Cos | Unary::Tan | Unary::Asin | Unary::Acos | Unary::Atan => {}
+        Unary::Exp | Unary::Expm1 | Unary::Ln | Unary::Ln1p | Unary::Abs | Unary::Sign => {}
+        Unary::Tanh | Unary::Max0 | Unary::Step => {}
+    }
+    match b {
+        B::Atan2 | B::Hypot => {}
+    }
+}
+
 /// An unsimplified expression.
 #[derive(Clone, Debug)]
 pub enum Tree {
