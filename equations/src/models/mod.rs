@@ -5,7 +5,10 @@
 use crate::graph::Graph;
 use crate::model::Module;
 
+pub mod hertz;
 pub mod pendulum;
+pub mod planar_peg;
+pub mod planar_peg_geometry;
 
 /// Builds one model's module in the given graph.
 pub type ModelFn = fn(&Graph) -> Module;

@@ -1,0 +1,175 @@
+//! The planar compliant peg-in-hole (paper 001, (31)–(51) and (55)–(64)),
+//! derived from a potential instead of the paper's constraint Jacobians.
+//!
+//! Coordinates `q = (x, z, θ)` of the peg's centre of mass and tilt (frame in
+//! [`super::planar_peg_geometry`]); mass matrix `diag(m, m, J)`. Each contact
+//! `c` has a penetration `δ_c(q)` and stores the Hertz energy
+//! `V_c = (2/5) k_c max(δ_c, 0)^{5/2}` ((62)); its normal force on the peg is
+//! `−∂V_c/∂q = −k_c max(δ_c,0)^{3/2} ∂δ_c/∂q` — unilateral, acting only
+//! while the bodies overlap, along the contact normal (the gradient of a
+//! distance). Coulomb friction acts against the sliding velocity
+//! `v_c = J_c(q) q̇` of the peg's material point at the contact:
+//! generalized force `−μ f_c φ(v_c) J_cᵀ`, with the regularized sign
+//! `φ(v) = v/√(v² + v_s²)` (velocity scale `v_s`). The applied force
+//! `f₁ e_a + f₂ e_r` at the centre of mass and the torque `M` give
+//! `(f₁ sin θ + f₂ cos θ, f₁ cos θ − f₂ sin θ, M)`, the right side of (50).
+//!
+//! The state is `(x, z, θ, ẋ, ż, θ̇, W, S)` with `W` the work of the applied
+//! loads and `S ≥ 0` the energy dissipated by friction (`S_μ` of (64)), so
+//! that `T + V − W + S` is constant along every solution.
+//! Units: SI (kg, kg·m², m, rad, N, N·m, J).
+
+use super::hertz::{self, HertzCoefficients, HertzState};
+use super::planar_peg_geometry::{Contact, PegFrame};
+use crate::expr::Expr;
+use crate::graph::Graph;
+
+/// Names of the state components, in order.
+pub const STATE: [&str; 8] = [
+    "x",
+    "z",
+    "theta",
+    "xdot",
+    "zdot",
+    "thetadot",
+    "work",
+    "dissipation",
+];
+
+/// Names of the parameters, in order: mass `m` (kg), inertia `J` about the
+/// centre of mass (kg·m²), dimensions `r, l_c, D, ρ_p, ρ_h` (m), friction
+/// coefficient `μ`, friction velocity scale `v_s` (m/s), Hertz stiffnesses
+/// `k_edge, k_wall` (N/m^{3/2}), loads `f₁, f₂` (N) and `M` (N·m), and the
+/// Hertz coefficients of the edge and wall contacts (see
+/// [`HertzCoefficients::params`]).
+pub const PARAMS: [&str; 23] = [
+    "m",
+    "J",
+    "r",
+    "l_c",
+    "D",
+    "rho_p",
+    "rho_h",
+    "mu",
+    "v_s",
+    "k_edge",
+    "k_wall",
+    "f1",
+    "f2",
+    "M",
+    "e_star",
+    "edge_sum",
+    "edge_ma",
+    "edge_mb",
+    "edge_dstar",
+    "wall_sum",
+    "wall_ma",
+    "wall_mb",
+    "wall_dstar",
+];
+
+/// Everything the generated functions output, as expressions.
+pub struct PlanarPeg<'g> {
+    /// The state symbols, in [`STATE`] order.
+    pub state: Vec<Expr<'g>>,
+    /// The parameter symbols, in [`PARAMS`] order.
+    pub params: Vec<Expr<'g>>,
+    /// The contacts included, in output order.
+    pub contacts: Vec<Contact>,
+    /// Right-hand side `ẏ = f(y)` of the 8 states.
+    pub rhs: Vec<Expr<'g>>,
+    /// Exact Jacobian `∂f/∂y`, rows of 8.
+    pub jacobian: Vec<Vec<Expr<'g>>>,
+    /// Normal force `f_c = k max(δ,0)^{3/2}` per contact (N).
+    pub normal: Vec<Expr<'g>>,
+    /// Friction force `−μ f_c φ(v_c)` per contact, along its tangent (N).
+    pub friction: Vec<Expr<'g>>,
+    /// Penetration `δ_c` per contact (m; negative = gap).
+    pub delta: Vec<Expr<'g>>,
+    /// Sliding velocity `v_c` per contact (m/s).
+    pub slip: Vec<Expr<'g>>,
+    /// Hertz ellipse and pressure per contact at load `f_c`.
+    pub ellipse: Vec<HertzState<'g>>,
+    /// Kinetic energy `T` (59) (J).
+    pub kinetic: Expr<'g>,
+    /// Contact potential `P = Σ ∫ f dδ` (63) (J).
+    pub potential: Expr<'g>,
+    /// Insertion depth `l` of the bottom face's centre (m).
+    pub depth: Expr<'g>,
+}
+
+/// Builds the model with the given contacts (a scene that only leans one way
+/// generates only the two contacts of that lean).
+pub fn build<'g>(g: &'g Graph, contacts: &[Contact]) -> PlanarPeg<'g> {
+    let f = PegFrame::new(g);
+    let state: Vec<Expr<'g>> = STATE.iter().map(|n| g.var(n)).collect();
+    let params: Vec<Expr<'g>> = PARAMS.iter().map(|n| g.param(n)).collect();
+    let p = |n: &str| g.param(n);
+    let (m, j, mu, vs) = (p("m"), p("J"), p("mu"), p("v_s"));
+    let q = [f.x, f.z, f.theta];
+    let qd = [f.xdot, f.zdot, f.thetadot];
+    let (ea, er) = f.axes();
+    let (f1, f2, torque) = (p("f1"), p("f2"), p("M"));
+    let applied = [f1 * ea[0] + f2 * er[0], f1 * ea[1] + f2 * er[1], torque];
+
+    let mut gen_force = applied;
+    let (mut normal, mut friction, mut delta, mut slip, mut ellipse) =
+        (vec![], vec![], vec![], vec![], vec![]);
+    let mut potentials = vec![];
+    let mut dissipation_rate = vec![];
+    let edge = HertzCoefficients::params(g, "edge");
+    let wall = HertzCoefficients::params(g, "wall");
+    for &c in contacts {
+        let kin = f.contact(c);
+        let (k, coeffs) = if c.is_edge() {
+            (p("k_edge"), &edge)
+        } else {
+            (p("k_wall"), &wall)
+        };
+        let v = hertz::potential(k, kin.delta);
+        let fn_ = hertz::load(k, kin.delta);
+        // Regularized Coulomb friction along the tangent, against the slip.
+        let ft = -mu * fn_ * kin.slip / kin.slip.hypot(vs);
+        for i in 0..3 {
+            gen_force[i] = gen_force[i] - v.diff(q[i]) + ft * kin.slip.diff(qd[i]);
+        }
+        dissipation_rate.push(-ft * kin.slip);
+        potentials.push(v);
+        ellipse.push(hertz::state(fn_, coeffs));
+        normal.push(fn_);
+        friction.push(ft);
+        delta.push(kin.delta);
+        slip.push(kin.slip);
+    }
+    let power = g.sum((0..3).map(|i| applied[i] * qd[i]));
+    let rhs = vec![
+        f.xdot,
+        f.zdot,
+        f.thetadot,
+        gen_force[0] / m,
+        gen_force[1] / m,
+        gen_force[2] / j,
+        power,
+        g.sum(dissipation_rate),
+    ];
+    let jacobian = rhs
+        .iter()
+        .map(|fi| state.iter().map(|&y| fi.diff(y)).collect())
+        .collect();
+    let kinetic = 0.5 * m * (f.xdot.square() + f.zdot.square()) + 0.5 * j * f.thetadot.square();
+    PlanarPeg {
+        state,
+        params,
+        contacts: contacts.to_vec(),
+        rhs,
+        jacobian,
+        normal,
+        friction,
+        delta,
+        slip,
+        ellipse,
+        kinetic,
+        potential: g.sum(potentials),
+        depth: f.depth(),
+    }
+}
