@@ -88,3 +88,50 @@ pub fn load<'g>(k: Expr<'g>, delta: Expr<'g>) -> Expr<'g> {
 pub fn potential<'g>(k: Expr<'g>, delta: Expr<'g>) -> Expr<'g> {
     0.4 * k * delta.max0().powf(2.5)
 }
+
+/// The `hertz` module: the load-dependent Hertz quantities from the
+/// setup-time coefficients `c = (c_sum, e_star, c_ma, c_mb, c_dstar)`.
+pub fn module(g: &Graph) -> crate::model::Module {
+    use crate::model::{FnSpec, Input, Module, Output};
+    let c = HertzCoefficients::params(g, "c");
+    let q = g.var("load");
+    // A negative load (no contact) gives the zero ellipse, not NaN.
+    let s = state(q.max0(), &c);
+    let coeffs = Input::new(
+        "c",
+        &[
+            c.sum_curvature,
+            c.contact_modulus,
+            c.m_a,
+            c.m_b,
+            c.delta_star,
+        ],
+    );
+    Module {
+        name: "hertz".to_owned(),
+        doc: "Hertz elliptical contact (paper 001, (9)-(13)) from setup-time coefficients \
+              c = (sum of curvatures 1/m, contact modulus Pa, m_a, m_b, delta_star). SI units."
+            .to_owned(),
+        functions: vec![
+            FnSpec {
+                name: "ellipse".to_owned(),
+                doc: "Semi-axes a, b (m) (9)-(10), maximum pressure p0 (Pa) (11) and approach delta (m) (13) \
+                      at load Q (N); negative loads count as 0."
+                    .to_owned(),
+                inputs: vec![Input::new("load", &[q]), coeffs.clone()],
+                outputs: vec![
+                    ("a".to_owned(), Output::scalar(s.a)),
+                    ("b".to_owned(), Output::scalar(s.b)),
+                    ("p0".to_owned(), Output::scalar(s.p0)),
+                    ("delta".to_owned(), Output::scalar(s.delta)),
+                ],
+            },
+            FnSpec {
+                name: "stiffness".to_owned(),
+                doc: "Stiffness k (N/m^1.5) of Q = k delta^1.5 ((13) inverted).".to_owned(),
+                inputs: vec![coeffs],
+                outputs: vec![("k".to_owned(), Output::scalar(stiffness(&c)))],
+            },
+        ],
+    }
+}

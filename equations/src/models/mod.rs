@@ -9,9 +9,15 @@ pub mod hertz;
 pub mod pendulum;
 pub mod planar_peg;
 pub mod planar_peg_geometry;
+pub mod planar_peg_module;
 
 /// Builds one model's module in the given graph.
 pub type ModelFn = fn(&Graph) -> Module;
 
 /// Every model the build generates code for, in emission order.
-pub const ALL: &[ModelFn] = &[pendulum::module];
+pub const ALL: &[ModelFn] = &[
+    pendulum::module,
+    hertz::module,
+    planar_peg_module::module,
+    planar_peg_module::module_lean,
+];
