@@ -5,8 +5,11 @@
 //! A second table lists rewrites the simplifier must NOT do because they
 //! change a value where it is defined (`sqrt(x^2)` is `|x|`, not `x`).
 
+use std::collections::HashMap;
+
 use pegdyn_equations::simplify::rules::{RULES, Site};
-use pegdyn_equations::{Expr, Graph};
+use pegdyn_equations::{Expr, Graph, Id, Node, simplify};
+use proptest::prelude::*;
 
 /// The leaves every row may use: variables `x`, `y`, parameters `a`, `b`.
 struct Leaves<'g> {
@@ -74,6 +77,7 @@ laws! {
     x_times_x: |l| l.x * l.x => l.x.powi(2);
     powers_collect: |l| l.x.powi(2) * l.x.powi(3) => l.x.powi(5);
     sqrt_times_sqrt: |l| l.x.sqrt() * l.x.sqrt() => l.x;
+    sqrt_of_product_squared_recollects: |l| (l.x * l.y).sqrt() * (l.x * l.y).sqrt() * l.x => l.x.powi(2) * l.y;
     sqrt_squared: |l| l.x.sqrt().square() => l.x;
     pow_of_pow_int: |l| l.x.powf(1.5).powi(2) => l.x.powi(3);
     pow_of_product_int: |l| (l.x * l.y).powi(2) => l.x.powi(2) * l.y.powi(2);
@@ -140,4 +144,48 @@ fn rules_table_is_complete_and_unique() {
         .filter(|r| !matches!(r.site, Site::Core))
         .count();
     assert!(with_fn >= 15, "only {with_fn} rules with a function");
+}
+
+mod common;
+
+/// Rebuilds `id` bottom-up through the simplifying constructors.
+fn rebuild(g: &Graph, id: Id, memo: &mut HashMap<Id, Id>) -> Id {
+    if let Some(&r) = memo.get(&id) {
+        return r;
+    }
+    let mut kids = |xs: &[Id]| -> Vec<Id> { xs.iter().map(|&x| rebuild(g, x, memo)).collect() };
+    let r = match g.node(id) {
+        Node::Const(_) | Node::Sym(_) => id,
+        Node::Add(xs) => simplify::add(g, &kids(&xs)),
+        Node::Mul(xs) => simplify::mul(g, &kids(&xs)),
+        Node::Pow(b, e) => {
+            let k = kids(&[b, e]);
+            simplify::pow(g, k[0], k[1])
+        }
+        Node::Unary(op, a) => {
+            let k = kids(&[a]);
+            simplify::unary(g, op, k[0])
+        }
+        Node::Binary(op, a, b) => {
+            let k = kids(&[a, b]);
+            simplify::binary(g, op, k[0], k[1])
+        }
+    };
+    memo.insert(id, r);
+    r
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 2000, failure_persistence: None, ..ProptestConfig::default() })]
+
+    /// Simplified forms are canonical: rebuilding one through the
+    /// constructors gives the same node, so equal expressions share ids
+    /// however they were built.
+    #[test]
+    fn simplified_forms_are_fixed_points(t in common::tree()) {
+        let g = Graph::new();
+        let e = common::build(&g, &t);
+        let r = rebuild(&g, e.id(), &mut HashMap::new());
+        prop_assert_eq!(r, e.id(), "{} rebuilt as {}", e, g.expr(r));
+    }
 }
