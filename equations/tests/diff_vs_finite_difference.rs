@@ -407,6 +407,11 @@ fn random_time_derivatives_match_finite_differences() {
     if let Err(e) = result {
         panic!("{e}");
     }
+    eprintln!(
+        "time derivative: {} of {} points compared",
+        compared.get(),
+        points.get()
+    );
     assert!(
         compared.get() * 2 >= points.get(),
         "{} of {} compared",

@@ -96,6 +96,8 @@ laws! {
     c_minus_c_cos: |l| 3.0 - 3.0 * l.x.cos() => 6.0 * (l.x / 2.0).sin().square();
     a_minus_a_cos: |l| l.a - l.a * l.x.cos() + l.y => 2.0 * l.a * (l.x / 2.0).sin().square() + l.y;
     cos_minus_one: |l| l.x.cos() - 1.0 => -2.0 * (l.x / 2.0).sin().square();
+    one_minus_cos_squared: |l| 1.0 - l.x.cos().square() => l.x.sin().square();
+    a_minus_a_cos_squared: |l| l.a * l.b - l.a * l.b * l.x.cos().square() => l.a * l.b * l.x.sin().square();
     sin_odd: |l| (-l.x).sin() => -l.x.sin();
     sin_odd_difference: |l| (l.y - l.x).sin() + (l.x - l.y).sin() => l.g.constant(0.0);
     tan_odd: |l| (-2.0 * l.x).tan() => -(2.0 * l.x).tan();

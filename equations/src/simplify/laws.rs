@@ -126,6 +126,30 @@ pub(super) fn pythagorean(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
     Some(next)
 }
 
+/// `c·F − c·F·cos(u)^2 → c·F·sin(u)^2`.
+pub(super) fn one_minus_cos_squared(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
+    if terms.len() < 2 {
+        return None;
+    }
+    let two = g.find(&Node::Const(Const::new(2.0)?))?;
+    let cos_square = |n: &Node| match n {
+        Node::Pow(b, e) => {
+            *e == two && g.with_node(*b, |b| matches!(b, Node::Unary(Unary::Cos, _)))
+        }
+        _ => false,
+    };
+    let partner = |c: f64, fs: &[Id], k: usize| find_term(g, -c, &remove(fs, k));
+    let (i, j, c, fs, k) = find_pair(g, terms, cos_square, partner)?;
+    let u = square_of(g, fs[k], Unary::Cos)?;
+    // cj·F + c·F·cos²u with cj = −c is −c·F·(1 − cos²u) = −c·F·sin²u.
+    let mut fs2 = remove(&fs, k);
+    fs2.push(pow(g, unary(g, Unary::Sin, u), konst(g, 2.0)));
+    fs2.push(konst(g, -c));
+    let mut next = without(terms, i, j);
+    next.push(mul(g, &fs2));
+    Some(next)
+}
+
 /// `c·F − c·F·cos(u) → 2·c·F·sin(u/2)^2`, where `F` may be 1 (then the
 /// partner is the constant term).
 pub(super) fn one_minus_cos(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {

@@ -123,6 +123,13 @@ pub static RULES: &[Rule] = &[
         terminates: "removes a cos",
         site: Site::Sum(laws::one_minus_cos),
     },
+    Rule {
+        name: "one_minus_cos_squared",
+        law: "c·F − c·F·cos(u)^2 = c·F·sin(u)^2 (no cancellation near u = 0)",
+        domain: "all u, F",
+        terminates: "removes a cos",
+        site: Site::Sum(laws::one_minus_cos_squared),
+    },
     // ---- products ----
     Rule {
         name: "distribute_scalar",

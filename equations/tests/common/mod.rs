@@ -115,6 +115,10 @@ pub fn tree() -> impl Strategy<Value = Tree> {
                 b(c.clone()),
                 b(Mul(b(c), b(Un(Unary::Cos, b(x))))),
             )),
+            1 => (inner.clone(), inner.clone()).prop_map(move |(x, c)| Sub(
+                b(c.clone()),
+                b(Mul(b(c), b(Powi(b(Un(Unary::Cos, b(x))), 2)))),
+            )),
             1 => inner.clone().prop_map(move |x| Sqrt(b(Powi(b(x), 2)))),
             1 => (prop::sample::select(UNARY.to_vec()), inner.clone())
                 .prop_map(move |(f, x)| Un(f, b(Neg(b(x))))),
