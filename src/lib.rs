@@ -6,3 +6,6 @@ pub mod error;
 pub mod output;
 pub mod scene;
 pub mod jamming;
+pub mod integrate;
+pub mod reference_problems;
+pub mod system;

@@ -1,0 +1,148 @@
+//! Integration options and their validation.
+
+use thiserror::Error;
+
+/// Which points the integrator reports (stores in the
+/// [`super::Solution`] and passes to the observer).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum OutputMode {
+    /// The initial point and the end of every accepted step (a terminal
+    /// event replaces the end of its step by the event point).
+    #[default]
+    EveryStep,
+    /// The given times only, interpolated with the method's dense output.
+    /// Must be finite, non-decreasing and inside `[t0, t_end]`.
+    AtTimes(Vec<f64>),
+}
+
+/// Tolerances and limits of an integration.
+///
+/// The local error estimate `e` of a step is accepted when
+/// `√(mean((eᵢ / (atol + rtol·max(|xᵢ|, |x̃ᵢ|)))²)) ≤ 1`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Options {
+    /// Relative tolerance (> 0).
+    pub rtol: f64,
+    /// Absolute tolerance (> 0), in state units.
+    pub atol: f64,
+    /// Initial step; `None` chooses one from the right-hand side
+    /// (Hairer, Nørsett & Wanner I, §II.4, "starting step size").
+    pub h0: Option<f64>,
+    /// Largest step; `None` means the whole interval.
+    pub h_max: Option<f64>,
+    /// Budget of attempted (accepted + rejected) steps.
+    pub max_steps: usize,
+    /// Which points to report.
+    pub output: OutputMode,
+    /// Keep the reported points in [`super::Solution::t`] /
+    /// [`super::Solution::x`]; turn off when an observer streams them.
+    pub store: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            rtol: 1e-6,
+            atol: 1e-9,
+            h0: None,
+            h_max: None,
+            max_steps: 1_000_000,
+            output: OutputMode::EveryStep,
+            store: true,
+        }
+    }
+}
+
+impl Options {
+    /// Default options with the given tolerances.
+    pub fn with_tolerances(rtol: f64, atol: f64) -> Self {
+        Options {
+            rtol,
+            atol,
+            ..Options::default()
+        }
+    }
+
+    /// Checks every field against the interval `[t0, t_end]`.
+    pub fn validate(&self, t0: f64, t_end: f64) -> Result<(), IntegrateError> {
+        let positive = |name: &'static str, value: f64| {
+            if value.is_finite() && value > 0.0 {
+                Ok(())
+            } else {
+                Err(IntegrateError::InvalidOption {
+                    name,
+                    value,
+                    reason: "must be finite and positive",
+                })
+            }
+        };
+        if !(t0.is_finite() && t_end.is_finite() && t_end >= t0) {
+            return Err(IntegrateError::InvalidSpan { t0, t_end });
+        }
+        positive("rtol", self.rtol)?;
+        positive("atol", self.atol)?;
+        if let Some(h0) = self.h0 {
+            positive("h0", h0)?;
+        }
+        if let Some(h_max) = self.h_max {
+            positive("h_max", h_max)?;
+        }
+        if self.max_steps == 0 {
+            return Err(IntegrateError::InvalidOption {
+                name: "max_steps",
+                value: 0.0,
+                reason: "must be at least 1",
+            });
+        }
+        if let OutputMode::AtTimes(times) = &self.output {
+            let mut previous = t0;
+            for (index, &value) in times.iter().enumerate() {
+                if !(value.is_finite() && value >= previous && value <= t_end) {
+                    return Err(IntegrateError::InvalidOutputTime { index, value });
+                }
+                previous = value;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Invalid input to an integrator (user input: never a panic).
+#[derive(Debug, Clone, PartialEq, Error)]
+pub enum IntegrateError {
+    /// An option is out of range.
+    #[error("integrator option `{name}` = {value}: {reason}")]
+    InvalidOption {
+        /// Field name in [`Options`] (or `h` of a fixed-step method).
+        name: &'static str,
+        /// The offending value.
+        value: f64,
+        /// What the value must satisfy.
+        reason: &'static str,
+    },
+    /// The time interval is not finite or runs backwards.
+    #[error("integration interval [{t0}, {t_end}] must be finite with t_end >= t0")]
+    InvalidSpan {
+        /// Start time.
+        t0: f64,
+        /// End time.
+        t_end: f64,
+    },
+    /// A requested output time is not finite, not sorted, or outside the
+    /// interval.
+    #[error("output time #{index} = {value} is not finite, not sorted, or outside [t0, t_end]")]
+    InvalidOutputTime {
+        /// Position in [`OutputMode::AtTimes`].
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+    /// A component of the initial state is not finite.
+    #[error("initial state component {index} = {value} is not finite")]
+    NonFiniteInitialState {
+        /// Component index.
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+}

@@ -1,0 +1,162 @@
+//! Explicit Runge–Kutta methods as data (Butcher tableaux).
+//!
+//! One engine ([`super::explicit_rk`]) runs every tableau here; the tests in
+//! `tests/integrators.rs` check each against the Runge–Kutta order
+//! conditions (Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.2, Table 2.2).
+
+/// How a method interpolates inside an accepted step.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum DenseKind {
+    /// Cubic Hermite interpolation of the step end points and slopes
+    /// (third order; used when the method has no continuous extension).
+    Hermite,
+    /// The fourth-order continuous extension of Dormand–Prince 5(4)
+    /// (Hairer, Nørsett & Wanner I, §II.6, eq. (6.12) ff.; coefficients of
+    /// Shampine's dense output in Hairer's `DOPRI5`).
+    Dopri5,
+}
+
+/// An explicit Runge–Kutta method with `S` stages:
+/// `kᵢ = f(t + cᵢh, x + h Σⱼ<ᵢ aᵢⱼ kⱼ)`, `x₁ = x + h Σ bᵢ kᵢ`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Tableau<const S: usize> {
+    /// Method name as used in bench ids and CLI options.
+    pub name: &'static str,
+    /// Strictly lower-triangular stage matrix `A`.
+    pub a: [[f64; S]; S],
+    /// Weights `b` of the propagated solution.
+    pub b: [f64; S],
+    /// Nodes `c` (`cᵢ = Σⱼ aᵢⱼ`).
+    pub c: [f64; S],
+    /// Weights `b̂` of the embedded solution used only for the error
+    /// estimate `h Σ (bᵢ − b̂ᵢ) kᵢ`; `None` for fixed-step methods.
+    pub b_embedded: Option<[f64; S]>,
+    /// Classical order of `b`.
+    pub order: u32,
+    /// Order of the embedded weights (0 when there are none).
+    pub embedded_order: u32,
+    /// First-same-as-last: the last stage is evaluated at `x₁`
+    /// (`a[S-1] == b`, `c[S-1] == 1`), so `f(t + h, x₁)` comes for free.
+    pub fsal: bool,
+    /// The interpolant used for dense output and event location.
+    pub dense: DenseKind,
+}
+
+impl Tableau<4> {
+    /// The classical fourth-order Runge–Kutta method (fixed step).
+    pub const fn rk4() -> Self {
+        Tableau {
+            name: "rk4",
+            a: [
+                [0.0, 0.0, 0.0, 0.0],
+                [0.5, 0.0, 0.0, 0.0],
+                [0.0, 0.5, 0.0, 0.0],
+                [0.0, 0.0, 1.0, 0.0],
+            ],
+            b: [1.0 / 6.0, 1.0 / 3.0, 1.0 / 3.0, 1.0 / 6.0],
+            c: [0.0, 0.5, 0.5, 1.0],
+            b_embedded: None,
+            order: 4,
+            embedded_order: 0,
+            fsal: false,
+            dense: DenseKind::Hermite,
+        }
+    }
+}
+
+impl Tableau<7> {
+    /// Dormand & Prince (1980) 5(4), "DOPRI5": seven stages, FSAL, local
+    /// extrapolation with the fifth-order weights, fourth-order embedded
+    /// weights for the error estimate (Hairer, Nørsett & Wanner I, Table 5.2).
+    pub const fn dopri5() -> Self {
+        Tableau {
+            name: "dopri5",
+            a: [
+                [0.0; 7],
+                [1.0 / 5.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+                [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+                [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0, 0.0, 0.0, 0.0, 0.0],
+                [
+                    19372.0 / 6561.0,
+                    -25360.0 / 2187.0,
+                    64448.0 / 6561.0,
+                    -212.0 / 729.0,
+                    0.0,
+                    0.0,
+                    0.0,
+                ],
+                [
+                    9017.0 / 3168.0,
+                    -355.0 / 33.0,
+                    46732.0 / 5247.0,
+                    49.0 / 176.0,
+                    -5103.0 / 18656.0,
+                    0.0,
+                    0.0,
+                ],
+                DOPRI5_B,
+            ],
+            b: DOPRI5_B,
+            c: [0.0, 1.0 / 5.0, 3.0 / 10.0, 4.0 / 5.0, 8.0 / 9.0, 1.0, 1.0],
+            b_embedded: Some([
+                5179.0 / 57600.0,
+                0.0,
+                7571.0 / 16695.0,
+                393.0 / 640.0,
+                -92097.0 / 339200.0,
+                187.0 / 2100.0,
+                1.0 / 40.0,
+            ]),
+            order: 5,
+            embedded_order: 4,
+            fsal: true,
+            dense: DenseKind::Dopri5,
+        }
+    }
+}
+
+/// Fifth-order weights of DOPRI5 (also its last stage row: FSAL).
+const DOPRI5_B: [f64; 7] = [
+    35.0 / 384.0,
+    0.0,
+    500.0 / 1113.0,
+    125.0 / 192.0,
+    -2187.0 / 6784.0,
+    11.0 / 84.0,
+    0.0,
+];
+
+/// Coefficients `d` of the DOPRI5 dense output (Hairer's `CONTD5`): the
+/// fifth term of the interpolant is `h Σ dᵢ kᵢ` (stages 2 has weight 0).
+pub const DOPRI5_DENSE_D: [f64; 7] = [
+    -12715105075.0 / 11282082432.0,
+    0.0,
+    87487479700.0 / 32700410799.0,
+    -10690763975.0 / 1880347072.0,
+    701980252875.0 / 199316789632.0,
+    -1453857185.0 / 822651844.0,
+    69997945.0 / 29380423.0,
+];
+
+/// The weights `wᵢ(θ)` of the DOPRI5 continuous extension, so that
+/// `x(t + θh) = x + h Σ wᵢ(θ) kᵢ` for `θ ∈ [0, 1]`.
+///
+/// Expanded from Hairer's `CONTD5` form
+/// `x + θ(Δ + (1−θ)(hk₁ − Δ + θ(2Δ − hk₁ − hk₇ + (1−θ) h Σ dᵢkᵢ)))`,
+/// `Δ = h Σ bᵢkᵢ`; it is of order 4 for every `θ` and reproduces the
+/// fifth-order step at `θ = 1`.
+pub fn dopri5_dense_weights(theta: f64) -> [f64; 7] {
+    let b = DOPRI5_B;
+    let d = DOPRI5_DENSE_D;
+    let s = 1.0 - theta;
+    let mut w = [0.0; 7];
+    for i in 0..7 {
+        let first = if i == 0 { 1.0 } else { 0.0 };
+        let last = if i == 6 { 1.0 } else { 0.0 };
+        w[i] = theta * b[i]
+            + theta * s * (first - b[i])
+            + theta * theta * s * (2.0 * b[i] - first - last)
+            + theta * theta * s * s * d[i];
+    }
+    w
+}

@@ -1,0 +1,109 @@
+//! The interface between a model and the integrators.
+//!
+//! A model is a first-order system `ẋ = f(t, x)` with a fixed state dimension
+//! `N`. Generated models (see `src/generated.rs`) implement [`OdeSystem`]
+//! with their exact right-hand side and exact Jacobian; hand-written systems
+//! (tests, [`crate::reference_problems`]) may rely on the finite-difference
+//! defaults.
+//!
+//! Everything here works on fixed-size nalgebra types, so no call allocates.
+
+use nalgebra::{SMatrix, SVector};
+
+/// A system of ordinary differential equations `ẋ = f(t, x)`, `x ∈ ℝᴺ`.
+///
+/// The integrators in [`crate::integrate`] count how often they call
+/// [`rhs`](OdeSystem::rhs), [`jacobian`](OdeSystem::jacobian) and
+/// [`time_derivative`](OdeSystem::time_derivative) (see
+/// [`crate::integrate::Stats`]); implementations need not count anything.
+///
+/// ```
+/// use nalgebra::{SMatrix, SVector, Vector2};
+/// use pegdyn::system::OdeSystem;
+///
+/// /// Harmonic oscillator `q̈ = −q` as `x = (q, q̇)`.
+/// struct Oscillator;
+/// impl OdeSystem<2> for Oscillator {
+///     fn rhs(&self, _t: f64, x: &SVector<f64, 2>) -> SVector<f64, 2> {
+///         Vector2::new(x[1], -x[0])
+///     }
+/// }
+///
+/// // The default Jacobian is a forward finite difference of `rhs`.
+/// let j: SMatrix<f64, 2, 2> = Oscillator.jacobian(0.0, &Vector2::new(0.3, 0.1));
+/// assert!((j[(0, 1)] - 1.0).abs() < 1e-7 && (j[(1, 0)] + 1.0).abs() < 1e-7);
+/// ```
+pub trait OdeSystem<const N: usize> {
+    /// The right-hand side `f(t, x)`, in the units of the state per unit time.
+    fn rhs(&self, t: f64, x: &SVector<f64, N>) -> SVector<f64, N>;
+
+    /// The Jacobian `∂f/∂x` at `(t, x)`, entry `(i, j) = ∂fᵢ/∂xⱼ`.
+    ///
+    /// The default is a forward finite difference: column `j` is
+    /// `(f(t, x + δⱼ eⱼ) − f(t, x)) / δⱼ` with `δⱼ = √ε · max(|xⱼ|, 1)`
+    /// (ε the machine epsilon), which costs `N + 1` calls of
+    /// [`rhs`](OdeSystem::rhs) and is accurate to about `√ε ≈ 1.5e-8`
+    /// relative. Implicit integrators only use the Jacobian in the iteration
+    /// matrix, so this accuracy is enough for convergence, but generated
+    /// models override it with the exact symbolic Jacobian.
+    fn jacobian(&self, t: f64, x: &SVector<f64, N>) -> SMatrix<f64, N, N> {
+        finite_difference_jacobian(|x| self.rhs(t, x), x)
+    }
+
+    /// The partial time derivative `∂f/∂t` at `(t, x)`, needed by
+    /// Rosenbrock methods for non-autonomous systems.
+    ///
+    /// The default is the forward difference
+    /// `(f(t + δ, x) − f(t, x)) / δ` with `δ = √ε · max(|t|, 1)` (two calls
+    /// of [`rhs`](OdeSystem::rhs)). Autonomous systems, such as all the
+    /// generated rigid-body models, should override it to return zero.
+    fn time_derivative(&self, t: f64, x: &SVector<f64, N>) -> SVector<f64, N> {
+        let delta = f64::EPSILON.sqrt() * t.abs().max(1.0);
+        // Make t + delta exactly representable so the quotient is consistent.
+        let t1 = t + delta;
+        let delta = t1 - t;
+        (self.rhs(t1, x) - self.rhs(t, x)) / delta
+    }
+}
+
+/// A forward finite-difference Jacobian of `f` at `x` (see
+/// [`OdeSystem::jacobian`] for the step rule). Costs `N + 1` calls of `f`.
+pub fn finite_difference_jacobian<const N: usize>(
+    f: impl Fn(&SVector<f64, N>) -> SVector<f64, N>,
+    x: &SVector<f64, N>,
+) -> SMatrix<f64, N, N> {
+    let f0 = f(x);
+    let mut jac = SMatrix::<f64, N, N>::zeros();
+    let mut xp = *x;
+    for j in 0..N {
+        let delta = f64::EPSILON.sqrt() * x[j].abs().max(1.0);
+        xp[j] = x[j] + delta;
+        // The representable step, so that (f(xp) - f0) / delta is consistent.
+        let delta = xp[j] - x[j];
+        jac.set_column(j, &((f(&xp) - f0) / delta));
+        xp[j] = x[j];
+    }
+    jac
+}
+
+/// Adapts a closure `|t, x| -> ẋ` to an [`OdeSystem`] (finite-difference
+/// Jacobian and time derivative).
+///
+/// ```
+/// use nalgebra::Vector1;
+/// use pegdyn::system::{FnSystem, OdeSystem};
+///
+/// let decay = FnSystem(|_t: f64, x: &Vector1<f64>| -2.0 * x);
+/// assert_eq!(decay.rhs(0.0, &Vector1::new(1.5))[0], -3.0);
+/// ```
+#[derive(Debug, Clone, Copy)]
+pub struct FnSystem<F>(pub F);
+
+impl<const N: usize, F> OdeSystem<N> for FnSystem<F>
+where
+    F: Fn(f64, &SVector<f64, N>) -> SVector<f64, N>,
+{
+    fn rhs(&self, t: f64, x: &SVector<f64, N>) -> SVector<f64, N> {
+        (self.0)(t, x)
+    }
+}
