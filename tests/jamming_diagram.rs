@@ -2,9 +2,10 @@
 //! finite-angle corners at θ = 0 and their limit as c → 0; the exact
 //! two-point equilibrium is checked against moments summed from the contact
 //! points; two-point contact is refused where it is geometrically impossible;
-//! and a static-friction feasibility search confirms that loads inside the
+//! a static-friction feasibility search confirms that loads inside the
 //! parallelogram cannot be held by the contacts (no jam) while loads past the
-//! two-point line can (jam).
+//! two-point line can (jam); and past the right side the force lies inside
+//! the edge contact's friction cone (one-point jam).
 
 use pegdyn::jamming::PegHole;
 use pegdyn::jamming::diagram::*;
@@ -188,6 +189,40 @@ fn inside_slides_outside_past_two_point_line_holds() {
             let past = [fx, on + 0.05 * icpt];
             assert!(!g.avoids_jamming(past));
             assert!(holdable(&p, l, th, past), "c={c} mu={mu} {past:?}");
+        }
+    }
+}
+
+#[test]
+fn right_side_is_the_edge_friction_cone_limit() {
+    for (c, mu) in SCENE {
+        let p = peg(c, mu);
+        for l in [0.005, 0.01] {
+            let g = exact_parallelogram(&p, l).unwrap().unwrap();
+            let th = g.theta;
+            let x_side = g.corners[2][0];
+            // angle between the applied force (x, 1) and the edge normal (cosθ, sinθ)
+            let off_normal = |x: f64| {
+                let (s, c) = th.sin_cos();
+                ((x * s - c) / (x * c + s)).atan().abs()
+            };
+            let alpha = mu.atan();
+            assert!((off_normal(x_side) - alpha).abs() < 1e-12);
+            assert!(
+                off_normal(x_side * 1.01) < alpha,
+                "beyond: inside the edge cone"
+            );
+            assert!(off_normal(x_side * 0.99) > alpha);
+            // the side is vertical and the corners sit on the two-point lines
+            assert!((g.corners[1][0] - x_side).abs() < 1e-12);
+            let (slope, icpt) = g.two_point_line();
+            let q = g.corners[1];
+            assert!((q[1] - (slope * q[0] - icpt)).abs() < 1e-9 * (1.0 + icpt));
+            assert!(!g.avoids_jamming([x_side * 1.01, 0.5 * (q[1] + g.corners[2][1])]));
+            assert!(g.avoids_jamming([x_side * 0.99, 0.5 * (q[1] + g.corners[2][1])]));
+            // at finite tilt the tip-only end of the two-point line is outside
+            let (p2, _) = two_point_segment(&p, l, th);
+            assert!(!g.avoids_jamming(p2) && p2[0] < -x_side);
         }
     }
 }

@@ -59,7 +59,9 @@ fn two_point_sliding_load_is_on_the_boundary_in_every_plane() {
         let v = space.values(&force, &m_ext).unwrap();
         assert!((v[0] - 1.0).abs() < 1e-9, "phi={phi}: {v:?}");
         assert!(v[1] < 1.0);
-        assert!(!space.avoids_jamming(&force, &m_ext));
+        // 1 % more moment is past the two-point line, 1 % less is inside
+        assert!(!space.avoids_jamming(&force, &(m_ext * 1.01)));
+        assert!(space.avoids_jamming(&force, &(m_ext * 0.99)));
         // the in-plane ratio is the planar sliding point
         let q = space.in_plane(&force, &m_ext, phi).unwrap();
         let planar = pegdyn::jamming::forces::sliding_wrench(

@@ -2,8 +2,8 @@
 //! ratios (F_x/F_z, M/(r F_z)) under which a peg in two-point contact at
 //! depth l slides in instead of jamming.
 //!
-//! For the reference tilt, the two-point sliding line joins two corners where
-//! one contact force vanishes ([`super::forces`]):
+//! For the reference tilt, the two-point sliding line runs between the two
+//! load ratios where one contact force vanishes ([`super::forces`]):
 //!
 //! ```text
 //! edge only (f_tip = 0):  P₁ = (k1/k2, (l + μr)/(r k2))     → Whitney (1/μ, 1 + 2λ)
@@ -11,16 +11,23 @@
 //! ```
 //!
 //! with k1 = cos θ − μ sin θ, k2 = sin θ + μ cos θ, λ = l/(2rμ). Above that
-//! line (larger moment) the contacts can hold the load inside their friction
-//! cones: the peg jams. Beyond the corners' abscissae one-point contact is
-//! stuck in its own friction cone: the peg jams. The opposite tilt is the
-//! point reflection (F_x, M) → (−F_x, −M). What is left is the parallelogram
-//! with corners −P₁, −P₂, P₁, P₂ (counter-clockwise); it is a parallelogram
-//! at any θ because it is centrally symmetric. Inside: no jamming; on its
-//! edges: equilibrium sliding; outside: jamming.
+//! line (larger moment) the contacts hold the load inside their friction
+//! cones: the peg jams. In one-point contact the load is stuck when the force
+//! lies inside the single contact's friction cone: F_x/F_z < −1/μ at the tip
+//! (wall normal +x), F_x/F_z > cot(θ + atan μ) = k1/k2 at the edge (normal
+//! tilted by θ). The opposite tilt is the point reflection
+//! (F_x, M) → (−F_x, −M). Intersecting the two tilts leaves the parallelogram
 //!
-//! Whitney's small-angle diagram ([`whitney_parallelogram`]) is the θ = 0
-//! case of the exact one ([`exact_parallelogram_at_tilt`]).
+//! ```text
+//! −P₁,  Q = (P₁ₓ, y₂(P₁ₓ)),  P₁,  −Q          (counter-clockwise)
+//! ```
+//!
+//! bounded by the two two-point lines and the edge-contact cone limits
+//! |F_x/F_z| = k1/k2 (y₂ is the mirrored two-point line). Inside: no jamming;
+//! on the edges: equilibrium sliding; outside: jamming. At θ = 0, Q = −P₂ and
+//! this is Whitney's parallelogram ([`whitney_parallelogram`]); at finite θ the
+//! tip-only ends ±P₂ of the two-point lines lie outside it
+//! ([`two_point_segment`]).
 
 use super::error::ParamError;
 use super::geometry::two_point_tilt;
@@ -29,21 +36,8 @@ use super::params::PegHole;
 /// A point of the diagram: (F_x/F_z, M/(r F_z)), moment about the peg tip.
 pub type Ratio = [f64; 2];
 
-/// Which contact force vanishes at a parallelogram corner.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum CornerKind {
-    /// Only the hole-mouth edge pushes (f_tip = 0), reference tilt.
-    EdgeOnly,
-    /// Only the tip corner pushes (f_edge = 0), reference tilt.
-    TipOnly,
-    /// Edge only, opposite tilt (point reflection of `EdgeOnly`).
-    EdgeOnlyMirrored,
-    /// Tip only, opposite tilt (point reflection of `TipOnly`).
-    TipOnlyMirrored,
-}
-
 /// The no-jamming parallelogram, corners counter-clockwise starting at the
-/// mirrored edge-only corner: `[−P₁, −P₂, P₁, P₂]`.
+/// mirrored edge-only corner: `[−P₁, Q, P₁, −Q]` (Whitney: `[−P₁, −P₂, P₁, P₂]`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Parallelogram {
     /// Corners (F_x/F_z, M/(r F_z)), counter-clockwise.
@@ -53,26 +47,20 @@ pub struct Parallelogram {
 }
 
 impl Parallelogram {
-    fn from_reference(p1: Ratio, p2: Ratio, theta: f64) -> Self {
+    /// From the reference edge-only corner `p1` and the reference two-point
+    /// line's slope: the right side is the vertical through `p1`.
+    fn from_edge_corner(p1: Ratio, slope: f64, theta: f64) -> Self {
+        // mirrored two-point line through −P₁ with the same slope, at x = P₁ₓ
+        let q = [p1[0], -p1[1] + 2.0 * slope * p1[0]];
         Self {
-            corners: [[-p1[0], -p1[1]], [-p2[0], -p2[1]], p1, p2],
+            corners: [[-p1[0], -p1[1]], q, p1, [-q[0], -q[1]]],
             theta,
         }
     }
 
-    /// Corners with what vanishes at each, in [`Self::corners`] order.
-    pub fn labelled_corners(&self) -> [(CornerKind, Ratio); 4] {
-        let k = [
-            CornerKind::EdgeOnlyMirrored,
-            CornerKind::TipOnlyMirrored,
-            CornerKind::EdgeOnly,
-            CornerKind::TipOnly,
-        ];
-        [0, 1, 2, 3].map(|i| (k[i], self.corners[i]))
-    }
-
     /// Edges as (start, end) pairs, counter-clockwise: the mirrored two-point
-    /// line, the right side, the reference two-point line, the left side.
+    /// line, the right side (edge cone limit), the reference two-point line,
+    /// the left side.
     pub fn edges(&self) -> [(Ratio, Ratio); 4] {
         [0, 1, 2, 3].map(|i| (self.corners[i], self.corners[(i + 1) % 4]))
     }
@@ -119,9 +107,9 @@ impl Parallelogram {
 pub fn whitney_parallelogram(p: &PegHole, l: f64) -> Result<Parallelogram, ParamError> {
     let l = PegHole::check_depth(l)?;
     let (mu, lam) = (p.mu(), p.lambda(l));
-    Ok(Parallelogram::from_reference(
+    Ok(Parallelogram::from_edge_corner(
         [1.0 / mu, 1.0 + 2.0 * lam],
-        [-1.0 / mu, -1.0],
+        mu * (1.0 + lam),
         0.0,
     ))
 }
@@ -133,14 +121,18 @@ pub fn exact_parallelogram(p: &PegHole, l: f64) -> Result<Option<Parallelogram>,
     Ok(two_point_tilt(p, l)?.map(|theta| exact_parallelogram_at_tilt(p, l, theta)))
 }
 
+/// Ends of the reference two-point sliding segment at depth `l` (m) and tilt
+/// `theta` (rad): `(P₂, P₁)`, tip-only and edge-only.
+pub fn two_point_segment(p: &PegHole, l: f64, theta: f64) -> (Ratio, Ratio) {
+    let (mu, r) = (p.mu(), p.r());
+    let (k1, k2, _) = super::forces::k_factors(mu, theta);
+    ([-1.0 / mu, -k2 / mu], [k1 / k2, (l + mu * r) / (r * k2)])
+}
+
 /// The finite-angle parallelogram for a given depth `l` (m) and tilt `theta`
 /// (rad), without checking that they are geometrically compatible.
 pub fn exact_parallelogram_at_tilt(p: &PegHole, l: f64, theta: f64) -> Parallelogram {
-    let (mu, r) = (p.mu(), p.r());
-    let (k1, k2, _) = super::forces::k_factors(mu, theta);
-    Parallelogram::from_reference(
-        [k1 / k2, (l + mu * r) / (r * k2)],
-        [-1.0 / mu, -k2 / mu],
-        theta,
-    )
+    let (p2, p1) = two_point_segment(p, l, theta);
+    let slope = (p1[1] - p2[1]) / (p1[0] - p2[0]);
+    Parallelogram::from_edge_corner(p1, slope, theta)
 }

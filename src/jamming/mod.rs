@@ -9,16 +9,19 @@
 //! - [`diagram`]: the jamming parallelogram, Whitney's and exact.
 //! - [`wedging`]: the wedging angle θ_c, exact and series.
 //! - [`space3d`]: the 3-D no-jamming inequalities (Eqs. 81–82).
+//! - [`table`], [`figure`]: the scene's corner/wedging tables and Fig. 6-style panels.
 //!
 //! The derivation and the comparison with the paper are in `docs/jamming.md`.
 
 pub mod diagram;
 pub mod error;
+pub mod figure;
 pub mod forces;
 pub mod geometry;
 pub mod params;
 pub mod quasi_static;
 pub mod space3d;
+pub mod table;
 pub mod wedging;
 
 pub use error::ParamError;

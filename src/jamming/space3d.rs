@@ -87,7 +87,7 @@ fn covector_through(a: Ratio, b: Ratio) -> Ratio {
 }
 
 impl NoJamSpace {
-    /// From a planar parallelogram (corners `[−P₁, −P₂, P₁, P₂]`) and the peg
+    /// From a planar parallelogram (corners `[−P₁, Q, P₁, −Q]`) and the peg
     /// radius `r` (m).
     pub fn new(par: &Parallelogram, r: f64) -> Self {
         let [_, m2, p1, p2] = par.corners;

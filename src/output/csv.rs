@@ -92,6 +92,30 @@ impl CsvWriter {
             })
     }
 
+    /// Appends one row of pre-formatted cells, e.g. a label column beside
+    /// numbers formatted with [`format_f64`]. Same width rule as
+    /// [`CsvWriter::row`]; cells must not contain commas or newlines.
+    pub fn row_cells(&mut self, cells: &[&str]) -> Result<(), OutputError> {
+        if cells.len() != self.columns {
+            return Err(OutputError::RowWidth {
+                path: self.path.clone(),
+                row: self.rows,
+                got: cells.len(),
+                expected: self.columns,
+            });
+        }
+        self.line.clear();
+        self.line.push_str(&cells.join(","));
+        self.line.push('\n');
+        self.rows += 1;
+        self.out
+            .write_all(self.line.as_bytes())
+            .map_err(|source| OutputError::Io {
+                path: self.path.clone(),
+                source,
+            })
+    }
+
     /// Number of data rows written so far.
     pub fn rows(&self) -> usize {
         self.rows

@@ -29,6 +29,7 @@
 pub mod document;
 pub mod double_pendulum;
 pub mod integrator;
+pub mod jamming;
 pub mod pendulum;
 pub mod progress;
 pub mod validate;
@@ -61,7 +62,7 @@ pub struct Kind {
 }
 
 /// Every scene kind `pegdyn` knows. Add a row here for a new kind.
-pub const KINDS: &[Kind] = &[pendulum::KIND, double_pendulum::KIND];
+pub const KINDS: &[Kind] = &[pendulum::KIND, double_pendulum::KIND, jamming::KIND];
 
 /// A scene read from a file.
 #[derive(Debug)]

@@ -1,0 +1,177 @@
+//! Scene kind `jamming`: the quasi-static jamming diagram and wedging angle
+//! of paper 001 §4 over lists of clearance ratios, friction coefficients and
+//! insertion depths (`src/jamming`, `docs/jamming.md`).
+//!
+//! ```toml
+//! kind = "jamming"
+//! [jamming]
+//! r_m = 0.0125                 # peg radius r, m
+//! c = [0.002, 0.01]            # clearance ratios (D − d)/D, each in (0, 1)
+//! mu = [0.1, 0.3]              # friction coefficients, each > 0
+//! l_m = [0.001, 0.005, 0.01]   # insertion depths l, m, each > 0
+//! ```
+//!
+//! Writes `<out>/jamming_corners.csv` (`l_m,c,mu,kind,fx_over_fz,m_over_rfz`:
+//! every corner of Whitney's small-angle parallelogram and of the exact
+//! finite-angle one; no exact rows where two-point contact is impossible),
+//! `<out>/wedging.csv` (`c,mu,theta_wedge_rad`; `inf` where wedging is
+//! impossible at any tilt) and `<out>/<name>.svg` (the diagrams, Fig. 6
+//! style).
+
+use serde::Deserialize;
+
+use crate::error::{RunError, SceneError, SceneErrors};
+use crate::jamming::{figure, table};
+use crate::output::csv::{CsvWriter, format_f64};
+use crate::output::plot::Figure;
+use crate::scene::validate::Checker;
+use crate::scene::{Document, Kind, Method, RunContext, RunSummary, Scene};
+
+/// Registry entry.
+pub const KIND: Kind = Kind {
+    name: "jamming",
+    about: "jamming diagram (Whitney and exact) and wedging angle over c, mu, depth lists",
+    parse,
+};
+
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+    let s: JammingScene = doc.body()?;
+    s.check()?;
+    Ok(Box::new(s))
+}
+
+/// The `[jamming]` table.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct JammingParams {
+    /// Peg radius r, m.
+    pub r_m: f64,
+    /// Clearance ratios c = (D − d)/D.
+    pub c: Vec<f64>,
+    /// Friction coefficients μ.
+    pub mu: Vec<f64>,
+    /// Insertion depths l, m.
+    pub l_m: Vec<f64>,
+}
+
+/// A `jamming` scene.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct JammingScene {
+    /// Geometry, friction and depths.
+    pub jamming: JammingParams,
+}
+
+fn check_list(
+    c: &mut Checker,
+    field: &str,
+    values: &[f64],
+    ok: impl Fn(f64) -> bool,
+    reason: &str,
+) {
+    if values.is_empty() {
+        c.push(SceneError::invalid(
+            field,
+            values,
+            "must list at least one value",
+        ));
+    }
+    for (i, &v) in values.iter().enumerate() {
+        let name = format!("{field}[{i}]");
+        if !v.is_finite() {
+            c.push(SceneError::invalid(name, v, "must be a finite number"));
+        } else if !ok(v) {
+            c.push(SceneError::invalid(name, v, reason));
+        }
+    }
+}
+
+impl JammingScene {
+    /// Validates every field, reporting all problems.
+    pub fn check(&self) -> Result<(), SceneErrors> {
+        let p = &self.jamming;
+        let mut c = Checker::default();
+        c.positive("jamming.r_m", p.r_m);
+        let open_unit = |v: f64| v > 0.0 && v < 1.0;
+        check_list(&mut c, "jamming.c", &p.c, open_unit, "must lie in (0, 1)");
+        check_list(&mut c, "jamming.mu", &p.mu, |v| v > 0.0, "must be positive");
+        check_list(
+            &mut c,
+            "jamming.l_m",
+            &p.l_m,
+            |v| v > 0.0,
+            "must be positive",
+        );
+        c.finish()
+    }
+}
+
+fn analytic_error(e: crate::jamming::ParamError) -> RunError {
+    // unreachable after `check`, but reported rather than unwrapped
+    RunError::Integration {
+        t: 0.0,
+        reason: format!("jamming analysis refused {e}"),
+    }
+}
+
+impl Scene for JammingScene {
+    fn describe(&self) -> String {
+        let p = &self.jamming;
+        format!(
+            "jamming diagram and wedging angle, r = {} m, c = {:?}, mu = {:?}, l = {:?} m",
+            p.r_m, p.c, p.mu, p.l_m
+        )
+    }
+
+    fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
+        let p = &self.jamming;
+        let corners = table::corner_rows(p.r_m, &p.c, &p.mu, &p.l_m).map_err(analytic_error)?;
+        let wedging = table::wedging_rows(p.r_m, &p.c, &p.mu).map_err(analytic_error)?;
+
+        let path = ctx.out_dir.join("jamming_corners.csv");
+        let header = ["l_m", "c", "mu", "kind", "fx_over_fz", "m_over_rfz"];
+        let mut w = CsvWriter::create(&path, &header)?;
+        for row in &corners {
+            let cells = [
+                format_f64(row.l),
+                format_f64(row.c),
+                format_f64(row.mu),
+                row.kind.name().to_string(),
+                format_f64(row.corner[0]),
+                format_f64(row.corner[1]),
+            ];
+            w.row_cells(&cells.each_ref().map(String::as_str))?;
+        }
+        let mut outputs = vec![w.finish()?];
+
+        let path = ctx.out_dir.join("wedging.csv");
+        let mut w = CsvWriter::create(&path, &["c", "mu", "theta_wedge_rad"])?;
+        for row in &wedging {
+            let theta = row.theta.map_or_else(|| "inf".to_string(), format_f64);
+            w.row_cells(&[&format_f64(row.c), &format_f64(row.mu), &theta])?;
+        }
+        outputs.push(w.finish()?);
+
+        let svg = ctx.output("svg");
+        let mut fig = Figure::new();
+        fig.panels = figure::panels(&corners);
+        fig.save(&svg)?;
+        outputs.push(svg);
+
+        let impossible = p.c.len() * p.mu.len() * p.l_m.len() * 8 - corners.len();
+        Ok(RunSummary {
+            method: Method::Dopri5,
+            t_end: 0.0,
+            stop: "analytic diagram only (no integration)".into(),
+            steps: 0,
+            rejected: 0,
+            rhs_calls: 0,
+            metrics: vec![crate::scene::Metric {
+                name: "exact corners left out (two-point contact impossible)".into(),
+                value: impossible as f64,
+                unit: "",
+            }],
+            outputs,
+        })
+    }
+}
