@@ -1,17 +1,19 @@
 //! Every generated function computes what the interpreter computes.
 //!
-//! For each registered model, each function is called through the
-//! build-generated call table on seeded random inputs and compared with
-//! `FnSpec::interpret` (the `eval::Tape` interpreter over the same DAG).
-//! The generated code differs from the interpreter only in rounding (`a / b`
-//! instead of `a * (1/b)`, `x * x` instead of `powi(2)`), so the outputs
-//! agree to a few ulps of the largest intermediate magnitude.
+//! For each registered model, and for the emitter-coverage model that
+//! exercises every emission path, each function is called through the
+//! build-generated call table on seeded random inputs and on special inputs
+//! (0, −0, ±∞, NaN), and compared with `FnSpec::interpret` (the `eval::Tape`
+//! interpreter over the same DAG). The generated code differs from the
+//! interpreter only in rounding (`a / b` instead of `a * (1/b)`), so the
+//! outputs agree to a few ulps; NaN must appear in exactly the same places.
 
+use pegdyn_equations::codegen::coverage;
 use pegdyn_equations::graph::SymKind;
-use pegdyn_equations::model::FnSpec;
+use pegdyn_equations::model::{FnSpec, Module};
 use pegdyn_equations::{Graph, models};
 
-#[allow(clippy::all)]
+#[allow(clippy::all, dead_code)]
 mod calls {
     include!(concat!(env!("OUT_DIR"), "/generated_calls.rs"));
 }
@@ -53,9 +55,53 @@ fn random_inputs(g: &Graph, f: &FnSpec, rng: &mut Rng) -> Vec<Vec<f64>> {
         .collect()
 }
 
+/// Every input component set to `v`.
+fn constant_inputs(f: &FnSpec, v: f64) -> Vec<Vec<f64>> {
+    f.inputs.iter().map(|i| vec![v; i.syms.len()]).collect()
+}
+
 const TRIALS: usize = 200;
 /// Agreement required, relative to max(1, |interpreted value|).
 const TOL: f64 = 1e-13;
+const SPECIAL: [f64; 6] = [0.0, -0.0, 1.0, f64::INFINITY, f64::NEG_INFINITY, f64::NAN];
+
+fn agree(a: f64, b: f64) -> bool {
+    (a.is_nan() && b.is_nan()) || a == b || (a - b).abs() <= TOL * b.abs().max(1.0)
+}
+
+/// Checks every function of `m`; returns how many it checked.
+fn check_module(g: &Graph, m: &Module, rng: &mut Rng) -> usize {
+    for f in &m.functions {
+        let call = CALLS
+            .iter()
+            .find(|(mn, fname, _)| *mn == m.name && *fname == f.name)
+            .map(|c| c.2)
+            .unwrap_or_else(|| panic!("{}::{} missing from the call table", m.name, f.name));
+        let random = (0..TRIALS).map(|_| random_inputs(g, f, rng));
+        let special = SPECIAL.iter().map(|&v| constant_inputs(f, v));
+        for inputs in random.chain(special) {
+            let slices: Vec<&[f64]> = inputs.iter().map(Vec::as_slice).collect();
+            let want: Vec<f64> = f.interpret(g, &slices).concat();
+            let got = call(&slices);
+            assert_eq!(
+                got.len(),
+                want.len(),
+                "{}::{}: output length",
+                m.name,
+                f.name
+            );
+            for (k, (&a, &b)) in got.iter().zip(&want).enumerate() {
+                assert!(
+                    agree(a, b),
+                    "{}::{} output[{k}]: generated {a:e}, interpreted {b:e}, inputs {inputs:?}",
+                    m.name,
+                    f.name
+                );
+            }
+        }
+    }
+    m.functions.len()
+}
 
 #[test]
 fn every_generated_function_matches_the_interpreter() {
@@ -63,37 +109,10 @@ fn every_generated_function_matches_the_interpreter() {
     let mut checked = 0;
     for build in models::ALL {
         let g = Graph::new();
-        let m = build(&g);
-        for f in &m.functions {
-            let call = CALLS
-                .iter()
-                .find(|(mn, fname, _)| *mn == m.name && *fname == f.name)
-                .map(|c| c.2)
-                .unwrap_or_else(|| panic!("{}::{} missing from the call table", m.name, f.name));
-            for trial in 0..TRIALS {
-                let inputs = random_inputs(&g, f, &mut rng);
-                let slices: Vec<&[f64]> = inputs.iter().map(Vec::as_slice).collect();
-                let want: Vec<f64> = f.interpret(&g, &slices).concat();
-                let got = call(&slices);
-                assert_eq!(
-                    got.len(),
-                    want.len(),
-                    "{}::{}: output length",
-                    m.name,
-                    f.name
-                );
-                for (k, (a, b)) in got.iter().zip(&want).enumerate() {
-                    assert!(
-                        (a - b).abs() <= TOL * b.abs().max(1.0),
-                        "{}::{} trial {trial} output[{k}]: generated {a:e}, interpreted {b:e}, inputs {inputs:?}",
-                        m.name,
-                        f.name
-                    );
-                }
-            }
-            checked += 1;
-        }
+        checked += check_module(&g, &build(&g), &mut rng);
     }
+    let g = Graph::new();
+    checked += check_module(&g, &coverage::module(&g), &mut rng);
     assert_eq!(
         checked,
         CALLS.len(),

@@ -386,7 +386,7 @@ fn method(op: Unary) -> &'static str {
         Unary::Ln1p => "ln_1p",
         Unary::Tanh => "tanh",
         Unary::Abs => "abs",
-        Unary::Sign => "signum",
+        Unary::Sign => "sign",
         Unary::Max0 => "max0",
         Unary::Step => "step",
     }

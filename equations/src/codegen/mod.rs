@@ -11,6 +11,7 @@
 //! model order, nodes in arena order; no hash-map iteration, no paths, no
 //! timestamps.
 
+pub mod coverage;
 pub mod emit;
 pub mod function;
 pub mod harness;
@@ -71,15 +72,7 @@ pub fn render(modules: &[(&Graph, &Module)]) -> Result<Generated, GenError> {
     let mut report = Report::default();
     let mut out = Vec::new();
     for (g, m) in modules {
-        let tokens = module_tokens(g, m, &mut report);
-        let file = syn::parse2::<syn::File>(tokens).map_err(|e| GenError::Parse {
-            module: m.name.clone(),
-            message: e.to_string(),
-        })?;
-        out.push(ModuleSource {
-            name: m.name.clone(),
-            code: prettyplease::unparse(&file),
-        });
+        out.push(emit_module(g, m, &mut report)?);
     }
     let names: Vec<&str> = modules.iter().map(|(_, m)| m.name.as_str()).collect();
     let mut source = header(&names);
@@ -87,12 +80,30 @@ pub fn render(modules: &[(&Graph, &Module)]) -> Result<Generated, GenError> {
         source.push('\n');
         source.push_str(&m.code);
     }
-    let calls = harness::calls(&modules.iter().map(|(_, m)| *m).collect::<Vec<_>>())?;
+    let cg = Graph::new();
+    let cm = coverage::module(&cg);
+    verify::verify_module(&cg, &cm)?;
+    let coverage_code = emit_module(&cg, &cm, &mut Report::default())?.code;
+    let registered: Vec<&Module> = modules.iter().map(|(_, m)| *m).collect();
+    let calls = harness::calls(&registered, (&cm, &coverage_code))?;
     Ok(Generated {
         modules: out,
         source,
         report,
         calls,
+    })
+}
+
+/// Emits and formats one verified module, appending its report rows.
+fn emit_module(g: &Graph, m: &Module, report: &mut Report) -> Result<ModuleSource, GenError> {
+    let tokens = module_tokens(g, m, report);
+    let file = syn::parse2::<syn::File>(tokens).map_err(|e| GenError::Parse {
+        module: m.name.clone(),
+        message: e.to_string(),
+    })?;
+    Ok(ModuleSource {
+        name: m.name.clone(),
+        code: prettyplease::unparse(&file),
     })
 }
 

@@ -5,6 +5,7 @@
 use crate::graph::Graph;
 use crate::model::Module;
 
+pub mod double_pendulum;
 pub mod hertz;
 pub mod pendulum;
 pub mod planar_peg;
@@ -14,9 +15,12 @@ pub mod planar_peg_module;
 /// Builds one model's module in the given graph.
 pub type ModelFn = fn(&Graph) -> Module;
 
-/// Every model the build generates code for, in emission order.
+/// Every model the build generates code for, in emission order. One model
+/// per line (kept by `rustfmt::skip`) so that registrations merge cleanly.
+#[rustfmt::skip]
 pub const ALL: &[ModelFn] = &[
     pendulum::module,
+    double_pendulum::module,
     hertz::module,
     planar_peg_module::module,
     planar_peg_module::module_lean,

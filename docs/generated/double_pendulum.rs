@@ -1,0 +1,259 @@
+// @generated readable copy of `pegdyn::generated::double_pendulum` — do not edit.
+// Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
+
+/// Double pendulum (textbook reference system): point masses `m1`, `m2` on massless rods of
+/// lengths `l1`, `l2`, absolute angles `theta1`, `theta2` from the downward vertical, gravity `g`.
+/// SI units.
+pub mod double_pendulum {
+    use nalgebra::{Matrix2, Matrix2x4, SMatrix, SVector, Vector2, Vector4};
+    /// Symbol names of the components of `x`, in order.
+    pub const X_NAMES: [&str; 4] = ["theta1", "theta2", "theta1dot", "theta2dot"];
+    /// Symbol names of the components of `p`, in order.
+    pub const P_NAMES: [&str; 5] = ["m1", "m2", "l1", "l2", "g"];
+    /// Symbol names of the components of `qdd`, in order.
+    pub const QDD_NAMES: [&str; 2] = ["theta1ddot", "theta2ddot"];
+    /// Mass matrix M(q) and forcing f(q, q̇) of M q̈ = f (Lagrange's equations, derived symbolically).
+    ///
+    /// Reference: Goldstein, Classical Mechanics, §1.6 (double pendulum). Units: SI.
+    ///
+    /// # Inputs
+    /// - `x` = [theta1, theta2, theta1dot, theta2dot]
+    /// - `p` = [m1, m2, l1, l2, g]
+    ///
+    /// # Outputs
+    /// - `mass`: symmetric 2×2 matrix
+    /// - `forcing`: vector of 2
+    ///
+    /// # Cost
+    /// 17 add/sub, 91 mul, 0 div, 0 sqrt, 4 transcendental, 0 branches; 8 `let`s.
+    #[inline]
+    pub fn dynamics(
+        x: &SVector<f64, 4>,
+        p: &SVector<f64, 5>,
+    ) -> (SMatrix<f64, 2, 2>, SVector<f64, 2>) {
+        let theta1 = x[0];
+        let theta2 = x[1];
+        let theta1dot = x[2];
+        let theta2dot = x[3];
+        let m1 = p[0];
+        let m2 = p[1];
+        let l1 = p[2];
+        let l2 = p[3];
+        let g = p[4];
+        let sin_theta1 = theta1.sin();
+        let cos_theta1 = theta1.cos();
+        let sin_theta2 = theta2.sin();
+        let cos_theta2 = theta2.cos();
+        let t0 = l1 * l1;
+        let t1 = 2.0 * theta1dot * l1 * cos_theta1 + 2.0 * theta2dot * l2 * cos_theta2;
+        let t2 = 2.0 * theta1dot * l1 * sin_theta1 + 2.0 * theta2dot * l2 * sin_theta2;
+        let t3 = 0.5 * m2
+            * (2.0 * l1 * l2 * cos_theta1 * cos_theta2
+                + 2.0 * l1 * l2 * sin_theta1 * sin_theta2);
+        let mass = Matrix2::new(m1 * t0 + m2 * t0, t3, t3, m2 * (l2 * l2));
+        let forcing = Vector2::new(
+            -(g * (m1 * l1 * sin_theta1 + m2 * l1 * sin_theta1))
+                + 0.5 * m2
+                    * (-(theta1dot * l1 * sin_theta1 * t1)
+                        + theta1dot * l1 * cos_theta1 * t2)
+                - 0.5 * theta1dot * m2 * (-(l1 * sin_theta1 * t1) + l1 * cos_theta1 * t2)
+                - 0.5 * theta2dot * m2
+                    * (-(2.0 * theta2dot * l1 * l2 * cos_theta1 * sin_theta2)
+                        + 2.0 * theta2dot * l1 * l2 * sin_theta1 * cos_theta2),
+            -(m2 * l2 * g * sin_theta2)
+                + 0.5 * m2
+                    * (-(theta2dot * l2 * sin_theta2 * t1)
+                        + theta2dot * l2 * cos_theta2 * t2)
+                - 0.5 * theta1dot * m2
+                    * (-(2.0 * theta1dot * l1 * l2 * sin_theta1 * cos_theta2)
+                        + 2.0 * theta1dot * l1 * l2 * cos_theta1 * sin_theta2)
+                - 0.5 * theta2dot * m2 * (-(l2 * sin_theta2 * t1) + l2 * cos_theta2 * t2),
+        );
+        (mass, forcing)
+    }
+    /// First-order right-hand side ẋ = (q̇, M⁻¹f), M⁻¹f by Cramer's rule.
+    ///
+    /// Reference: Goldstein, Classical Mechanics, §1.6 (double pendulum). Units: SI.
+    ///
+    /// # Inputs
+    /// - `x` = [theta1, theta2, theta1dot, theta2dot]
+    /// - `p` = [m1, m2, l1, l2, g]
+    ///
+    /// # Outputs
+    /// - `xdot`: vector of 4
+    ///
+    /// # Cost
+    /// 21 add/sub, 110 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 14 `let`s.
+    #[inline]
+    pub fn rhs(x: &SVector<f64, 4>, p: &SVector<f64, 5>) -> SVector<f64, 4> {
+        let theta1 = x[0];
+        let theta2 = x[1];
+        let theta1dot = x[2];
+        let theta2dot = x[3];
+        let m1 = p[0];
+        let m2 = p[1];
+        let l1 = p[2];
+        let l2 = p[3];
+        let g = p[4];
+        let sin_theta1 = theta1.sin();
+        let cos_theta1 = theta1.cos();
+        let sin_theta2 = theta2.sin();
+        let cos_theta2 = theta2.cos();
+        let t0 = l1 * l1;
+        let t1 = 2.0 * theta1dot * l1 * cos_theta1 + 2.0 * theta2dot * l2 * cos_theta2;
+        let t2 = 2.0 * theta1dot * l1 * sin_theta1 + 2.0 * theta2dot * l2 * sin_theta2;
+        let t3 = m1 * t0 + m2 * t0;
+        let t4 = 2.0 * l1 * l2 * cos_theta1 * cos_theta2
+            + 2.0 * l1 * l2 * sin_theta1 * sin_theta2;
+        let t5 = -(g * (m1 * l1 * sin_theta1 + m2 * l1 * sin_theta1))
+            + 0.5 * m2
+                * (-(theta1dot * l1 * sin_theta1 * t1)
+                    + theta1dot * l1 * cos_theta1 * t2)
+            - 0.5 * theta1dot * m2 * (-(l1 * sin_theta1 * t1) + l1 * cos_theta1 * t2)
+            - 0.5 * theta2dot * m2
+                * (-(2.0 * theta2dot * l1 * l2 * cos_theta1 * sin_theta2)
+                    + 2.0 * theta2dot * l1 * l2 * sin_theta1 * cos_theta2);
+        let t6 = l2 * l2;
+        let t7 = -(m2 * l2 * g * sin_theta2)
+            + 0.5 * m2
+                * (-(theta2dot * l2 * sin_theta2 * t1)
+                    + theta2dot * l2 * cos_theta2 * t2)
+            - 0.5 * theta1dot * m2
+                * (-(2.0 * theta1dot * l1 * l2 * sin_theta1 * cos_theta2)
+                    + 2.0 * theta1dot * l1 * l2 * cos_theta1 * sin_theta2)
+            - 0.5 * theta2dot * m2 * (-(l2 * sin_theta2 * t1) + l2 * cos_theta2 * t2);
+        let t8 = l1 * l2 * cos_theta1 * cos_theta2 + l1 * l2 * sin_theta1 * sin_theta2;
+        let t9 = 1.0 / (m2 * t3 * t6 - m2 * m2 * (t8 * t8));
+        Vector4::new(
+            theta1dot,
+            theta2dot,
+            (m2 * t5 * t6 - 0.5 * m2 * t4 * t7) * t9,
+            t9 * (t3 * t7 - 0.5 * m2 * t4 * t5),
+        )
+    }
+    /// G = ∂f/∂x − Σ_j (∂M_{·j}/∂x) q̈_j (n × 2n) at the accelerations `qdd`;
+    /// the state Jacobian is ∂ẋ/∂x = [[0, I], [M⁻¹G]] (one LU solve of M).
+    ///
+    /// Reference: Goldstein, Classical Mechanics, §1.6 (double pendulum). Units: SI.
+    ///
+    /// # Inputs
+    /// - `x` = [theta1, theta2, theta1dot, theta2dot]
+    /// - `qdd` = [theta1ddot, theta2ddot]
+    /// - `p` = [m1, m2, l1, l2, g]
+    ///
+    /// # Outputs
+    /// - `terms`: 2×4 matrix
+    ///
+    /// # Cost
+    /// 40 add/sub, 196 mul, 0 div, 0 sqrt, 4 transcendental, 0 branches; 17 `let`s.
+    #[inline]
+    pub fn jacobian_terms(
+        x: &SVector<f64, 4>,
+        qdd: &SVector<f64, 2>,
+        p: &SVector<f64, 5>,
+    ) -> SMatrix<f64, 2, 4> {
+        let theta1 = x[0];
+        let theta2 = x[1];
+        let theta1dot = x[2];
+        let theta2dot = x[3];
+        let theta1ddot = qdd[0];
+        let theta2ddot = qdd[1];
+        let m1 = p[0];
+        let m2 = p[1];
+        let l1 = p[2];
+        let l2 = p[3];
+        let g = p[4];
+        let sin_theta1 = theta1.sin();
+        let cos_theta1 = theta1.cos();
+        let sin_theta2 = theta2.sin();
+        let cos_theta2 = theta2.cos();
+        let t0 = l1 * l1;
+        let t1 = 2.0 * theta1dot * l1 * cos_theta1 + 2.0 * theta2dot * l2 * cos_theta2;
+        let t2 = 2.0 * theta1dot * l1 * sin_theta1 + 2.0 * theta2dot * l2 * sin_theta2;
+        let t3 = -(2.0 * theta2dot * l1 * l2 * cos_theta1 * sin_theta2)
+            + 2.0 * theta2dot * l1 * l2 * sin_theta1 * cos_theta2;
+        let t4 = l2 * l2;
+        let t5 = -(2.0 * theta1dot * l1 * l2 * sin_theta1 * cos_theta2)
+            + 2.0 * theta1dot * l1 * l2 * cos_theta1 * sin_theta2;
+        let t6 = -(2.0 * l1 * l2 * sin_theta1 * cos_theta2)
+            + 2.0 * l1 * l2 * cos_theta1 * sin_theta2;
+        let t7 = 2.0 * theta2dot * l1 * l2 * sin_theta1 * sin_theta2
+            + 2.0 * theta2dot * l1 * l2 * cos_theta1 * cos_theta2;
+        let t8 = -(2.0 * l1 * l2 * cos_theta1 * sin_theta2)
+            + 2.0 * l1 * l2 * sin_theta1 * cos_theta2;
+        let t9 = 0.5 * m2
+            * (2.0 * theta1dot * theta2dot * l1 * l2 * sin_theta1 * sin_theta2
+                + 2.0 * theta1dot * theta2dot * l1 * l2 * cos_theta1 * cos_theta2);
+        let t10 = -0.5 * theta1dot * m2 * t6;
+        let t11 = -0.5 * theta2dot * m2 * t8;
+        let t12 = 2.0 * theta1dot * l1 * l2 * sin_theta1 * sin_theta2
+            + 2.0 * theta1dot * l1 * l2 * cos_theta1 * cos_theta2;
+        Matrix2x4::new(
+            -(g * (m1 * l1 * cos_theta1 + m2 * l1 * cos_theta1))
+                + 0.5 * m2
+                    * (-(theta1dot * l1 * cos_theta1 * t1)
+                        - theta1dot * l1 * sin_theta1 * t2
+                        + 2.0 * (theta1dot * theta1dot) * t0)
+                - 0.5 * theta1dot * m2
+                    * (-(l1 * cos_theta1 * t1) - l1 * sin_theta1 * t2
+                        + 2.0 * theta1dot * t0) - 0.5 * theta2dot * m2 * t7
+                - 0.5 * theta2ddot * m2 * t6,
+            t9 - 0.5 * theta1dot * m2 * t7
+                - 0.5 * theta2dot * m2
+                    * (-(2.0 * theta2dot * l1 * l2 * cos_theta1 * cos_theta2)
+                        - 2.0 * theta2dot * l1 * l2 * sin_theta1 * sin_theta2)
+                - 0.5 * theta2ddot * m2 * t8,
+            0.0,
+            0.5 * m2 * t5 + t10 - 0.5 * m2 * t3 + t11,
+            t9
+                - 0.5 * theta1dot * m2
+                    * (-(2.0 * theta1dot * l1 * l2 * cos_theta1 * cos_theta2)
+                        - 2.0 * theta1dot * l1 * l2 * sin_theta1 * sin_theta2)
+                - 0.5 * theta2dot * m2 * t12 - 0.5 * theta1ddot * m2 * t6,
+            -(m2 * l2 * g * cos_theta2)
+                + 0.5 * m2
+                    * (-(theta2dot * l2 * cos_theta2 * t1)
+                        - theta2dot * l2 * sin_theta2 * t2
+                        + 2.0 * t4 * (theta2dot * theta2dot))
+                - 0.5 * theta1dot * m2 * t12
+                - 0.5 * theta2dot * m2
+                    * (-(l2 * cos_theta2 * t1) - l2 * sin_theta2 * t2
+                        + 2.0 * theta2dot * t4) - 0.5 * theta1ddot * m2 * t8,
+            0.5 * m2 * t3 + t10 + t11 - 0.5 * m2 * t5,
+            0.0,
+        )
+    }
+    /// Total mechanical energy T + V (conserved without generalized forces).
+    ///
+    /// Reference: Goldstein, Classical Mechanics, §1.6 (double pendulum). Units: SI.
+    ///
+    /// # Inputs
+    /// - `x` = [theta1, theta2, theta1dot, theta2dot]
+    /// - `p` = [m1, m2, l1, l2, g]
+    ///
+    /// # Outputs
+    /// - `energy`: scalar
+    ///
+    /// # Cost
+    /// 7 add/sub, 23 mul, 0 div, 0 sqrt, 4 transcendental, 0 branches; 6 `let`s.
+    #[inline]
+    pub fn energy(x: &SVector<f64, 4>, p: &SVector<f64, 5>) -> f64 {
+        let theta1 = x[0];
+        let theta2 = x[1];
+        let theta1dot = x[2];
+        let theta2dot = x[3];
+        let m1 = p[0];
+        let m2 = p[1];
+        let l1 = p[2];
+        let l2 = p[3];
+        let g = p[4];
+        let sin_theta1 = theta1.sin();
+        let cos_theta1 = theta1.cos();
+        let sin_theta2 = theta2.sin();
+        let cos_theta2 = theta2.cos();
+        let t0 = theta1dot * l1 * cos_theta1 + theta2dot * l2 * cos_theta2;
+        let t1 = theta1dot * l1 * sin_theta1 + theta2dot * l2 * sin_theta2;
+        0.5 * m1 * (theta1dot * theta1dot) * (l1 * l1) + 0.5 * m2 * (t0 * t0 + t1 * t1)
+            + g * (-(m1 * l1 * cos_theta1) + m2 * (-(l1 * cos_theta1) - l2 * cos_theta2))
+    }
+}

@@ -1,0 +1,115 @@
+// @generated readable copy of `pegdyn::generated::pendulum` — do not edit.
+// Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
+
+/// Simple pendulum (textbook reference system): point mass `m` on a massless rod of length `l`,
+/// angle `theta` from the downward vertical, gravity `g`. SI units.
+pub mod pendulum {
+    use nalgebra::{Matrix1, Matrix1x2, SMatrix, SVector, Vector1, Vector2};
+    /// Symbol names of the components of `x`, in order.
+    pub const X_NAMES: [&str; 2] = ["theta", "thetadot"];
+    /// Symbol names of the components of `p`, in order.
+    pub const P_NAMES: [&str; 3] = ["m", "l", "g"];
+    /// Symbol names of the components of `qdd`, in order.
+    pub const QDD_NAMES: [&str; 1] = ["thetaddot"];
+    /// Mass matrix M(q) and forcing f(q, q̇) of M q̈ = f (Lagrange's equations, derived symbolically).
+    ///
+    /// Reference: Goldstein, Classical Mechanics, §1.6. Units: SI.
+    ///
+    /// # Inputs
+    /// - `x` = [theta, thetadot]
+    /// - `p` = [m, l, g]
+    ///
+    /// # Outputs
+    /// - `mass`: symmetric 1×1 matrix
+    /// - `forcing`: vector of 1
+    ///
+    /// # Cost
+    /// 0 add/sub, 5 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 1 `let`s.
+    #[inline]
+    pub fn dynamics(
+        x: &SVector<f64, 2>,
+        p: &SVector<f64, 3>,
+    ) -> (SMatrix<f64, 1, 1>, SVector<f64, 1>) {
+        let theta = x[0];
+        let m = p[0];
+        let l = p[1];
+        let g = p[2];
+        let sin_theta = theta.sin();
+        let mass = Matrix1::new(m * (l * l));
+        let forcing = Vector1::new(-m * l * g * sin_theta);
+        (mass, forcing)
+    }
+    /// First-order right-hand side ẋ = (q̇, M⁻¹f), M⁻¹f by Cramer's rule.
+    ///
+    /// Reference: Goldstein, Classical Mechanics, §1.6. Units: SI.
+    ///
+    /// # Inputs
+    /// - `x` = [theta, thetadot]
+    /// - `p` = [m, l, g]
+    ///
+    /// # Outputs
+    /// - `xdot`: vector of 2
+    ///
+    /// # Cost
+    /// 0 add/sub, 1 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 1 `let`s.
+    #[inline]
+    pub fn rhs(x: &SVector<f64, 2>, p: &SVector<f64, 3>) -> SVector<f64, 2> {
+        let theta = x[0];
+        let thetadot = x[1];
+        let l = p[1];
+        let g = p[2];
+        let sin_theta = theta.sin();
+        Vector2::new(thetadot, -g * sin_theta / l)
+    }
+    /// G = ∂f/∂x − Σ_j (∂M_{·j}/∂x) q̈_j (n × 2n) at the accelerations `qdd`;
+    /// the state Jacobian is ∂ẋ/∂x = [[0, I], [M⁻¹G]] (one LU solve of M).
+    ///
+    /// Reference: Goldstein, Classical Mechanics, §1.6. Units: SI.
+    ///
+    /// # Inputs
+    /// - `x` = [theta, thetadot]
+    /// - `qdd` = [thetaddot]
+    /// - `p` = [m, l, g]
+    ///
+    /// # Outputs
+    /// - `terms`: 1×2 matrix
+    ///
+    /// # Cost
+    /// 0 add/sub, 3 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 1 `let`s.
+    #[inline]
+    pub fn jacobian_terms(
+        x: &SVector<f64, 2>,
+        _qdd: &SVector<f64, 1>,
+        p: &SVector<f64, 3>,
+    ) -> SMatrix<f64, 1, 2> {
+        let theta = x[0];
+        let m = p[0];
+        let l = p[1];
+        let g = p[2];
+        let cos_theta = theta.cos();
+        Matrix1x2::new(-m * l * g * cos_theta, 0.0)
+    }
+    /// Total mechanical energy T + V (conserved without generalized forces).
+    ///
+    /// Reference: Goldstein, Classical Mechanics, §1.6. Units: SI.
+    ///
+    /// # Inputs
+    /// - `x` = [theta, thetadot]
+    /// - `p` = [m, l, g]
+    ///
+    /// # Outputs
+    /// - `energy`: scalar
+    ///
+    /// # Cost
+    /// 1 add/sub, 8 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 1 `let`s.
+    #[inline]
+    pub fn energy(x: &SVector<f64, 2>, p: &SVector<f64, 3>) -> f64 {
+        let theta = x[0];
+        let thetadot = x[1];
+        let m = p[0];
+        let l = p[1];
+        let g = p[2];
+        let cos_theta = theta.cos();
+        0.5 * m * (thetadot * thetadot) * (l * l) - m * l * g * cos_theta
+    }
+}
