@@ -1,7 +1,9 @@
 //! The paper's Eq. 52 (two-point contact forces and moment about the centre
 //! of mass, paper frame) agrees with the Whitney-frame solution at the tip,
 //! and its solutions satisfy Eq. 51; the one-point forms (Eqs. 53–54,
-//! corrected) satisfy Eq. 51 with the other force zero.
+//! corrected) satisfy Eq. 51 with the other force zero; and the generated
+//! model `quasi_static` (derived from the contact geometry in
+//! `equations/src/models/quasi_static.rs`) reproduces all of them.
 
 use pegdyn::jamming::PegHole;
 use pegdyn::jamming::forces::{sliding_contact_forces, sliding_moment};
@@ -99,5 +101,57 @@ fn one_point_forms_solve_eq51_with_other_force_zero() {
     let a = PegAcc { ydd, ..a };
     for r in eq51(&p, u, a, p.tip_only(u, a)) {
         assert!(r.abs() < 1e-12, "tip-only residual {r}");
+    }
+}
+
+#[test]
+fn generated_model_matches_hand_written_solution() {
+    use nalgebra::SVector;
+    use pegdyn::generated::quasi_static as qs;
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * (1.0 + a.abs().max(b.abs()));
+    for (theta, l, f1, f2, acc) in [
+        (0.04, 0.01, 12.0, -1.5, [0.3, 1.2, -4.0]),
+        (0.2, 0.03, 5.0, 2.0, [0.0, 0.0, 0.0]),
+        (-0.1, 0.02, 8.0, 0.5, [-1.0, 0.4, 2.5]),
+    ] {
+        let p = PaperPeg { theta, l, ..peg() };
+        let (u, a) = (
+            PegLoad { f1, f2 },
+            PegAcc {
+                xdd: acc[0],
+                ydd: acc[1],
+                thdd: acc[2],
+            },
+        );
+        let pose = SVector::from([theta, l]);
+        let load = SVector::from([f1, f2]);
+        let accv = SVector::from(acc);
+        let params = SVector::from([p.mu, p.r, p.l_c, p.m, p.j]);
+        let (fa, fb, m) = qs::two_point(&pose, &load, &accv, &params);
+        let h = p.two_point(u, a);
+        assert!(
+            close(fa, h.f_a) && close(fb, h.f_b) && close(m, h.m),
+            "{fa} {fb} {m} vs {h:?}"
+        );
+        let (fa, m) = qs::edge_only(&pose, &load, &accv, &params);
+        let h = p.edge_only(u, a);
+        assert!(
+            close(fa, h.f_a) && close(m, h.m),
+            "edge only {fa} {m} vs {h:?}"
+        );
+        let (fb, m) = qs::tip_only(&pose, &load, &accv, &params);
+        let h = p.tip_only(u, a);
+        assert!(
+            close(fb, h.f_b) && close(m, h.m),
+            "tip only {fb} {m} vs {h:?}"
+        );
+
+        let hp = PegHole::try_new(p.r, 0.01, p.mu).unwrap();
+        let (fx, fz) = (f2, f1);
+        let (ft, fe, mt) =
+            qs::whitney_tip(&pose, &SVector::from([fx, fz]), &SVector::from([p.mu, p.r]));
+        let w = sliding_contact_forces(&hp, theta, fx, fz);
+        assert!(close(ft, w.tip) && close(fe, w.edge), "{ft} {fe} vs {w:?}");
+        assert!(close(mt, sliding_moment(&hp, l, theta, fx, fz)));
     }
 }

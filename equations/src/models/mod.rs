@@ -11,6 +11,7 @@ pub mod pendulum;
 pub mod planar_peg;
 pub mod planar_peg_geometry;
 pub mod planar_peg_module;
+pub mod quasi_static;
 
 /// Builds one model's module in the given graph.
 pub type ModelFn = fn(&Graph) -> Module;
@@ -24,4 +25,5 @@ pub const ALL: &[ModelFn] = &[
     hertz::module,
     planar_peg_module::module,
     planar_peg_module::module_lean,
+    quasi_static::module,
 ];

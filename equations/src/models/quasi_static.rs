@@ -1,0 +1,148 @@
+//! The quasi-static contact-force solution of paper 001, Eqs. 51–54, derived
+//! here from the contact geometry (not typed in from the printed result).
+//!
+//! Paper frame (Fig. 5): x lateral, y along the hole axis into the hole, θ the
+//! tilt, positive in the sense of the rotation matrix R(θ) = [[c, s], [−s, c]]
+//! (body → world) used by Eqs. 27–30. Body axes at the centre of mass C: x
+//! across the peg, y along it towards the tip; C is l_c above the tip face.
+//!
+//! - A, the hole-mouth edge on the peg side, body point (−r, l_c − l); force
+//!   on the peg f_A (n_A − μ a), n_A = R(1, 0) = (c, −s), a = R(0, 1) = (s, c)
+//!   the axis towards the tip (friction opposes insertion).
+//! - B, the tip corner on the wall x = D, body point (r, l_c); force
+//!   f_B ((−1, 0) − μ (0, 1)).
+//! - Input force f₁ a + f₂ n_A (f₁ axial, f₂ radial), input moment M about C
+//!   in the sense of θ, so J θ̈ = M − Σ τ with τ = Δx F_y − Δy F_x.
+//!
+//! The force balance m (ẍ, ÿ) = F + f_A u_A + f_B u_B is solved for (f_A, f_B)
+//! by Cramer's rule (determinant −k₃ of Eq. 52), then M = J θ̈ + Σ τ. One-point
+//! forms (Eqs. 53, 54): the normal force from the balance along the contact
+//! normal, then M. `whitney_tip` is the same equilibrium in Whitney's hole
+//! frame (mirror image, moment about the tip, quasi-static), the form the
+//! jamming diagram uses (`pegdyn::jamming::forces`).
+//! Units: N, N·m, m, kg, kg·m², rad, m/s², rad/s².
+
+use crate::expr::Expr;
+use crate::graph::Graph;
+use crate::model::{FnSpec, Input, Module, Output};
+
+type V2<'g> = (Expr<'g>, Expr<'g>);
+
+fn torque<'g>(at: V2<'g>, f: V2<'g>) -> Expr<'g> {
+    at.0 * f.1 - at.1 * f.0
+}
+
+/// R(θ) (bx, by) with R = [[c, s], [−s, c]], given s = sin θ, c = cos θ.
+fn rot<'g>(s: Expr<'g>, c: Expr<'g>, bx: Expr<'g>, by: Expr<'g>) -> V2<'g> {
+    (c * bx + s * by, -s * bx + c * by)
+}
+
+/// Solve [u v] (x, y)ᵀ = w by Cramer's rule.
+fn cramer<'g>(u: V2<'g>, v: V2<'g>, w: V2<'g>) -> V2<'g> {
+    let det = u.0 * v.1 - u.1 * v.0;
+    ((w.0 * v.1 - w.1 * v.0) / det, (u.0 * w.1 - u.1 * w.0) / det)
+}
+
+/// The `quasi_static` module.
+pub fn module(g: &Graph) -> Module {
+    let (theta, l) = (g.var("theta"), g.var("l"));
+    let (f1, f2) = (g.var("f1"), g.var("f2"));
+    let (xdd, ydd, thdd) = (g.var("xdd"), g.var("ydd"), g.var("thdd"));
+    let (mu, r, l_c, m, j) = (
+        g.param("mu"),
+        g.param("r"),
+        g.param("l_c"),
+        g.param("m"),
+        g.param("J"),
+    );
+    let (s, c) = (theta.sin(), theta.cos());
+    let n_a = (c, -s);
+    let axis = (s, c);
+    let u_a = (n_a.0 - mu * axis.0, n_a.1 - mu * axis.1);
+    let u_b = (-g.constant(1.0), -mu);
+    let at_a = rot(s, c, -r, l_c - l);
+    let at_b = rot(s, c, r, l_c);
+    let force = (f1 * axis.0 + f2 * n_a.0, f1 * axis.1 + f2 * n_a.1);
+    let rhs = (m * xdd - force.0, m * ydd - force.1);
+
+    let (fa, fb) = cramer(u_a, u_b, rhs);
+    let moment_two =
+        j * thdd + torque(at_a, (fa * u_a.0, fa * u_a.1)) + torque(at_b, (fb * u_b.0, fb * u_b.1));
+    // one-point: normal balance (u_A·n_A = 1, u_B·(−1, 0) = 1)
+    let fa_only = rhs.0 * n_a.0 + rhs.1 * n_a.1;
+    let moment_a = j * thdd + torque(at_a, (fa_only * u_a.0, fa_only * u_a.1));
+    let fb_only = -rhs.0;
+    let moment_b = j * thdd + torque(at_b, (fb_only * u_b.0, fb_only * u_b.1));
+
+    let pose = Input::new("pose", &[theta, l]);
+    let load = Input::new("load", &[f1, f2]);
+    let acc = Input::new("acc", &[xdd, ydd, thdd]);
+    let params = Input::new("p", &[mu, r, l_c, m, j]);
+    let paper_inputs = vec![pose.clone(), load, acc, params];
+    let paper_fn = |name: &str, doc: &str, outs: Vec<(&str, Expr)>| FnSpec {
+        name: name.to_owned(),
+        doc: doc.to_owned(),
+        inputs: paper_inputs.clone(),
+        outputs: outs
+            .into_iter()
+            .map(|(n, e)| (n.to_owned(), Output::scalar(e)))
+            .collect(),
+    };
+
+    // Whitney's frame (hole frame, z into the hole, moment about the tip)
+    let (fx, fz) = (g.var("fx"), g.var("fz"));
+    let tip_at = (-r * c, -r * s);
+    let edge_at = (r * c + l * s, r * s - l * c);
+    let u_t = (g.constant(1.0), -mu);
+    let u_e = (-c + mu * s, -s - mu * c);
+    let (ft, fe) = cramer(u_t, u_e, (-fx, -fz));
+    let m_tip =
+        -(torque(tip_at, (ft * u_t.0, ft * u_t.1)) + torque(edge_at, (fe * u_e.0, fe * u_e.1)));
+
+    Module {
+        name: "quasi_static".to_owned(),
+        doc: "Quasi-static contact forces of the planar peg in two-point and one-point contact \
+              (paper 001, Eqs. 51-54), derived from the contact geometry. Inputs: pose = (theta rad, \
+              l m), load = (f1 axial N, f2 radial N), acc = (xdd, ydd m/s^2, thdd rad/s^2), \
+              p = (mu, r m, l_c m, m kg, J kg m^2)."
+            .to_owned(),
+        functions: vec![
+            paper_fn(
+                "two_point",
+                "Eq. 52: edge force f_a (N), tip force f_b (N) and input moment about C (N m) \
+                 for two-point sliding contact with the given accelerations.",
+                vec![("f_a", fa), ("f_b", fb), ("moment", moment_two)],
+            ),
+            paper_fn(
+                "edge_only",
+                "Eq. 53 (signs corrected): edge force f_a (N) from the normal balance and \
+                 input moment about C (N m), one-point contact at the edge A.",
+                vec![("f_a", fa_only), ("moment", moment_a)],
+            ),
+            paper_fn(
+                "tip_only",
+                "Eq. 54: tip force f_b (N) from the normal balance and input moment about C \
+                 (N m), one-point contact at the tip corner B.",
+                vec![("f_b", fb_only), ("moment", moment_b)],
+            ),
+            FnSpec {
+                name: "whitney_tip".to_owned(),
+                doc: "Whitney's frame (x lateral, z into the hole, moment about the tip): tip \
+                      force f_tip (N), edge force f_edge (N) and the moment M (N m) holding \
+                      the peg in two-point sliding under applied (F_x, F_z) (N); \
+                      pose = (theta rad, l m), w = (F_x, F_z), q = (mu, r m)."
+                    .to_owned(),
+                inputs: vec![
+                    pose,
+                    Input::new("w", &[fx, fz]),
+                    Input::new("q", &[mu, r]),
+                ],
+                outputs: vec![
+                    ("f_tip".to_owned(), Output::scalar(ft)),
+                    ("f_edge".to_owned(), Output::scalar(fe)),
+                    ("moment".to_owned(), Output::scalar(m_tip)),
+                ],
+            },
+        ],
+    }
+}
