@@ -1,0 +1,197 @@
+// @generated readable copy of `pegdyn::generated::quasi_static` — do not edit.
+// Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
+
+/// Quasi-static contact forces of the planar peg in two-point and one-point contact (paper 001, Eqs. 51-54), derived from the contact geometry. Inputs: pose = (theta rad, l m), load = (f1 axial N, f2 radial N), acc = (xdd, ydd m/s^2, thdd rad/s^2), p = (mu, r m, l_c m, m kg, J kg m^2).
+pub mod quasi_static {
+    use nalgebra::SVector;
+    /// Symbol names of the components of `pose`, in order.
+    pub const POSE_NAMES: [&str; 2] = ["theta", "l"];
+    /// Symbol names of the components of `load`, in order.
+    pub const LOAD_NAMES: [&str; 2] = ["f1", "f2"];
+    /// Symbol names of the components of `acc`, in order.
+    pub const ACC_NAMES: [&str; 3] = ["xdd", "ydd", "thdd"];
+    /// Symbol names of the components of `p`, in order.
+    pub const P_NAMES: [&str; 5] = ["mu", "r", "l_c", "m", "J"];
+    /// Symbol names of the components of `w`, in order.
+    pub const W_NAMES: [&str; 2] = ["fx", "fz"];
+    /// Symbol names of the components of `q`, in order.
+    pub const Q_NAMES: [&str; 2] = ["mu", "r"];
+    /// Eq. 52: edge force f_a (N), tip force f_b (N) and input moment about C (N m) for two-point sliding contact with the given accelerations.
+    ///
+    /// # Inputs
+    /// - `pose` = [theta, l]
+    /// - `load` = [f1, f2]
+    /// - `acc` = [xdd, ydd, thdd]
+    /// - `p` = [mu, r, l_c, m, J]
+    ///
+    /// # Outputs
+    /// - `f_a`: scalar
+    /// - `f_b`: scalar
+    /// - `moment`: scalar
+    ///
+    /// # Cost
+    /// 21 add/sub, 35 mul, 1 div, 0 sqrt, 2 transcendental, 0 branches; 12 `let`s.
+    #[inline]
+    pub fn two_point(
+        pose: &SVector<f64, 2>,
+        load: &SVector<f64, 2>,
+        acc: &SVector<f64, 3>,
+        p: &SVector<f64, 5>,
+    ) -> (f64, f64, f64) {
+        let theta = pose[0];
+        let l = pose[1];
+        let f1 = load[0];
+        let f2 = load[1];
+        let xdd = acc[0];
+        let ydd = acc[1];
+        let thdd = acc[2];
+        let mu = p[0];
+        let r = p[1];
+        let l_c = p[2];
+        let m = p[3];
+        let j = p[4];
+        let sin_theta = theta.sin();
+        let cos_theta = theta.cos();
+        let t0 = cos_theta - mu * sin_theta;
+        let t1 = -sin_theta - mu * cos_theta;
+        let t2 = l_c - l;
+        let t3 = f2 * sin_theta;
+        let t4 = xdd * m - f1 * sin_theta - f2 * cos_theta;
+        let t5 = ydd * m;
+        let t6 = -f1 * cos_theta;
+        let t7 = t3 + t5 + t6 - mu * t4;
+        let t8 = 1.0 / (sin_theta + mu * cos_theta + mu * t0);
+        let t9 = t0 * (t3 + t5 + t6) - t1 * t4;
+        let f_a = -t7 * t8;
+        let f_b = -t8 * t9;
+        let moment = thdd * j - t1 * (-(r * cos_theta) + sin_theta * t2) * t7 * t8
+            + t0 * (r * sin_theta + cos_theta * t2) * t7 * t8
+            + mu * (r * cos_theta + l_c * sin_theta) * t8 * t9
+            - (-(r * sin_theta) + l_c * cos_theta) * t8 * t9;
+        (f_a, f_b, moment)
+    }
+    /// Eq. 53 (signs corrected): edge force f_a (N) from the normal balance and input moment about C (N m), one-point contact at the edge A.
+    ///
+    /// # Inputs
+    /// - `pose` = [theta, l]
+    /// - `load` = [f1, f2]
+    /// - `acc` = [xdd, ydd, thdd]
+    /// - `p` = [mu, r, l_c, m, J]
+    ///
+    /// # Outputs
+    /// - `f_a`: scalar
+    /// - `moment`: scalar
+    ///
+    /// # Cost
+    /// 12 add/sub, 19 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 4 `let`s.
+    #[inline]
+    pub fn edge_only(
+        pose: &SVector<f64, 2>,
+        load: &SVector<f64, 2>,
+        acc: &SVector<f64, 3>,
+        p: &SVector<f64, 5>,
+    ) -> (f64, f64) {
+        let theta = pose[0];
+        let l = pose[1];
+        let f1 = load[0];
+        let f2 = load[1];
+        let xdd = acc[0];
+        let ydd = acc[1];
+        let thdd = acc[2];
+        let mu = p[0];
+        let r = p[1];
+        let l_c = p[2];
+        let m = p[3];
+        let j = p[4];
+        let sin_theta = theta.sin();
+        let cos_theta = theta.cos();
+        let t0 = l_c - l;
+        let t1 = cos_theta * (xdd * m - f1 * sin_theta - f2 * cos_theta)
+            - sin_theta * (f2 * sin_theta + ydd * m - f1 * cos_theta);
+        let f_a = t1;
+        let moment = thdd * j
+            + (-sin_theta - mu * cos_theta) * (-(r * cos_theta) + sin_theta * t0) * t1
+            - (cos_theta - mu * sin_theta) * (r * sin_theta + cos_theta * t0) * t1;
+        (f_a, moment)
+    }
+    /// Eq. 54: tip force f_b (N) from the normal balance and input moment about C (N m), one-point contact at the tip corner B.
+    ///
+    /// # Inputs
+    /// - `pose` = [theta, l]
+    /// - `load` = [f1, f2]
+    /// - `acc` = [xdd, ydd, thdd]
+    /// - `p` = [mu, r, l_c, m, J]
+    ///
+    /// # Outputs
+    /// - `f_b`: scalar
+    /// - `moment`: scalar
+    ///
+    /// # Cost
+    /// 8 add/sub, 14 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 3 `let`s.
+    #[inline]
+    pub fn tip_only(
+        pose: &SVector<f64, 2>,
+        load: &SVector<f64, 2>,
+        acc: &SVector<f64, 3>,
+        p: &SVector<f64, 5>,
+    ) -> (f64, f64) {
+        let theta = pose[0];
+        let f1 = load[0];
+        let f2 = load[1];
+        let xdd = acc[0];
+        let thdd = acc[2];
+        let mu = p[0];
+        let r = p[1];
+        let l_c = p[2];
+        let m = p[3];
+        let j = p[4];
+        let sin_theta = theta.sin();
+        let cos_theta = theta.cos();
+        let t0 = f1 * sin_theta + f2 * cos_theta - xdd * m;
+        let f_b = t0;
+        let moment = thdd * j - mu * (r * cos_theta + l_c * sin_theta) * t0
+            - (-(r * sin_theta) + l_c * cos_theta)
+                * (xdd * m - f1 * sin_theta - f2 * cos_theta);
+        (f_b, moment)
+    }
+    /// Whitney's frame (x lateral, z into the hole, moment about the tip): tip force f_tip (N), edge force f_edge (N) and the moment M (N m) holding the peg in two-point sliding under applied (F_x, F_z) (N); pose = (theta rad, l m), w = (F_x, F_z), q = (mu, r m).
+    ///
+    /// # Inputs
+    /// - `pose` = [theta, l]
+    /// - `w` = [fx, fz]
+    /// - `q` = [mu, r]
+    ///
+    /// # Outputs
+    /// - `f_tip`: scalar
+    /// - `f_edge`: scalar
+    /// - `moment`: scalar
+    ///
+    /// # Cost
+    /// 11 add/sub, 26 mul, 1 div, 0 sqrt, 2 transcendental, 0 branches; 7 `let`s.
+    #[inline]
+    pub fn whitney_tip(
+        pose: &SVector<f64, 2>,
+        w: &SVector<f64, 2>,
+        q: &SVector<f64, 2>,
+    ) -> (f64, f64, f64) {
+        let theta = pose[0];
+        let l = pose[1];
+        let fx = w[0];
+        let fz = w[1];
+        let mu = q[0];
+        let r = q[1];
+        let sin_theta = theta.sin();
+        let cos_theta = theta.cos();
+        let t0 = -sin_theta - mu * cos_theta;
+        let t1 = mu * sin_theta - cos_theta;
+        let t2 = -(t0 * fx) + fz * t1;
+        let t3 = 1.0 / (sin_theta + mu * cos_theta - mu * t1);
+        let t4 = -fz - mu * fx;
+        let f_tip = -t2 * t3;
+        let f_edge = -t3 * t4;
+        let moment = r * sin_theta * t2 * t3 + mu * r * cos_theta * t2 * t3
+            - (r * sin_theta - l * cos_theta) * t1 * t3 * t4
+            + t0 * (r * cos_theta + l * sin_theta) * t3 * t4;
+        (f_tip, f_edge, moment)
+    }
+}
