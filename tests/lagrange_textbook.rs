@@ -5,7 +5,10 @@
 //!   M = [[(m1+m2) l1², m2 l1 l2 cos δ], [m2 l1 l2 cos δ, m2 l2²]],
 //!   f1 = −m2 l1 l2 θ̇2² sin δ − (m1+m2) g l1 sin θ1,
 //!   f2 =  m2 l1 l2 θ̇1² sin δ − m2 g l2 sin θ2.
-//! - For both, the state Jacobian assembled from the generated pieces,
+//! - Cart-pole (θ from the downward vertical, push force u):
+//!   M = [[mc + m, m l cos θ], [m l cos θ, m l²]],
+//!   f = (u + m l θ̇² sin θ, −m g l sin θ).
+//! - For each, the state Jacobian assembled from the generated pieces,
 //!   J = [[0, I], [M⁻¹ G(q̈)]], matches central finite differences of the
 //!   generated right-hand side.
 //!
@@ -13,7 +16,7 @@
 //! (a sum that cancels is judged against its summands, not its result).
 
 use nalgebra::{DMatrix, SVector};
-use pegdyn::generated::{double_pendulum as dp, pendulum};
+use pegdyn::generated::{cart_pole, double_pendulum as dp, pendulum};
 
 /// SplitMix64: seeded inputs without a dependency.
 struct Rng(u64);
@@ -114,6 +117,49 @@ fn double_pendulum_matches_textbook() {
     }
 }
 
+#[test]
+fn cart_pole_matches_textbook() {
+    let mut rng = Rng(5);
+    for _ in 0..TRIALS {
+        let x: SVector<f64, 4> = rng.vector(-3.0, 3.0);
+        let p = SVector::<f64, 5>::from_fn(|i, _| {
+            if i == 4 {
+                rng.uniform(-10.0, 10.0)
+            } else {
+                rng.uniform(0.2, 5.0)
+            }
+        });
+        let (th, w) = (x[1], x[3]);
+        let (mc, m, l, g, u) = (p[0], p[1], p[2], p[3], p[4]);
+        let (mass, forcing) = cart_pole::dynamics(&x, &p);
+        let want_m = [[mc + m, m * l * th.cos()], [m * l * th.cos(), m * l * l]];
+        let scale_m = [[mc + m, m * l], [m * l, m * l * l]];
+        for i in 0..2 {
+            for j in 0..2 {
+                assert!(
+                    close(mass[(i, j)], want_m[i][j], scale_m[i][j]),
+                    "M[{i}{j}] = {} want {}",
+                    mass[(i, j)],
+                    want_m[i][j]
+                );
+            }
+        }
+        let a1 = m * l * w * w * th.sin();
+        assert!(
+            close(forcing[0], u + a1, u.abs() + a1.abs()),
+            "f1 = {} want {}",
+            forcing[0],
+            u + a1
+        );
+        let f2 = -m * g * l * th.sin();
+        assert!(
+            close(forcing[1], f2, f2.abs()),
+            "f2 = {} want {f2}",
+            forcing[1]
+        );
+    }
+}
+
 /// J = [[0, I], [M⁻¹ G]] from the generated pieces, G at q̈ from `rhs`.
 fn assembled_jacobian<const N: usize, const Q: usize>(
     rhs: impl Fn(&SVector<f64, N>) -> SVector<f64, N>,
@@ -189,5 +235,21 @@ fn double_pendulum_jacobian_matches_finite_differences() {
         };
         let exact = assembled_jacobian::<4, 2>(rhs, mass, g_at, &x);
         assert_jacobians_close(&exact, &finite_difference(rhs, &x), "double pendulum");
+    }
+}
+
+#[test]
+fn cart_pole_jacobian_matches_finite_differences() {
+    let mut rng = Rng(6);
+    for _ in 0..TRIALS {
+        let x: SVector<f64, 4> = rng.vector(-3.0, 3.0);
+        let p: SVector<f64, 5> = rng.vector(0.5, 2.0);
+        let rhs = |x: &SVector<f64, 4>| cart_pole::rhs(x, &p);
+        let mass = DMatrix::from_column_slice(2, 2, cart_pole::dynamics(&x, &p).0.as_slice());
+        let g_at = |qdd: &SVector<f64, 2>| {
+            DMatrix::from_column_slice(2, 4, cart_pole::jacobian_terms(&x, qdd, &p).as_slice())
+        };
+        let exact = assembled_jacobian::<4, 2>(rhs, mass, g_at, &x);
+        assert_jacobians_close(&exact, &finite_difference(rhs, &x), "cart-pole");
     }
 }

@@ -5,6 +5,7 @@
 use crate::graph::Graph;
 use crate::model::Module;
 
+pub mod cart_pole;
 pub mod double_pendulum;
 pub mod hertz;
 pub mod pendulum;
@@ -22,6 +23,7 @@ pub type ModelFn = fn(&Graph) -> Module;
 pub const ALL: &[ModelFn] = &[
     pendulum::module,
     double_pendulum::module,
+    cart_pole::module,
     hertz::module,
     planar_peg_module::module,
     planar_peg_module::module_lean,

@@ -1,0 +1,241 @@
+//! The code generator: what it emits for each canonical form, what
+//! verification rejects, identifier sanitizing, determinism and
+//! write-only-when-changed. (That the emitted code computes what the
+//! interpreter computes is `tests/generated_vs_interpreter.rs` at the
+//! workspace root, which compiles it.)
+
+use pegdyn_equations::codegen::schedule::snake_case;
+use pegdyn_equations::codegen::{render, render_registered, write_if_changed};
+use pegdyn_equations::model::{FnSpec, Input, Module, Output};
+use pegdyn_equations::{Expr, GenError, Graph};
+
+/// A one-function module `m::f(x) -> outputs` over the symbols `syms`.
+fn module(syms: &[Expr<'_>], outputs: Vec<(&str, Output)>) -> Module {
+    Module {
+        name: "m".to_owned(),
+        doc: "test".to_owned(),
+        functions: vec![FnSpec {
+            name: "f".to_owned(),
+            doc: "test".to_owned(),
+            inputs: vec![Input::new("x", syms)],
+            outputs: outputs
+                .into_iter()
+                .map(|(n, o)| (n.to_owned(), o))
+                .collect(),
+        }],
+    }
+}
+
+/// The emitted code of the scalar function `e` of a, b, c.
+fn emitted(build: impl for<'g> Fn(&'g Graph, Expr<'g>, Expr<'g>, Expr<'g>) -> Expr<'g>) -> String {
+    let g = Graph::new();
+    let (a, b, c) = (g.var("a"), g.var("b"), g.var("c"));
+    let m = module(&[a, b, c], vec![("y", Output::scalar(build(&g, a, b, c)))]);
+    render(&[(&g, &m)]).unwrap_or_else(|e| panic!("{e}")).source
+}
+
+#[test]
+fn canonical_forms_are_emitted_as_written_by_hand() {
+    // (expression, text the emitted function must contain)
+    let rows: Vec<(String, &str)> = vec![
+        (emitted(|_, a, b, _| a - b), "a - b"),
+        (emitted(|_, a, b, c| a - 2.0 * b * c), "a - 2.0 * b * c"),
+        (emitted(|_, a, b, _| -a + b), "b - a"),
+        (emitted(|_, a, _, _| -a), "-a"),
+        (emitted(|_, a, b, c| a / (b * c)), "a / (b * c)"),
+        (emitted(|_, a, b, _| -a / b), "-a / b"),
+        (emitted(|_, a, _, _| a.sqrt()), "a.sqrt()"),
+        (emitted(|_, a, _, _| a.powf(-0.5)), "1.0 / a.sqrt()"),
+        (emitted(|_, a, _, _| a.square()), "a * a"),
+        (emitted(|_, a, _, _| a.powi(3)), "a * a * a"),
+        (emitted(|_, a, _, _| a.powi(6)), "a.powi(6)"),
+        (emitted(|_, a, _, _| a.powf(0.3)), "a.powf(0.3)"),
+        (emitted(|_, a, b, _| a.atan2(b)), "a.atan2(b)"),
+        (emitted(|_, a, b, _| a.hypot(b)), "a.hypot(b)"),
+        (emitted(|_, a, _, _| a.exp_m1()), "a.exp_m1()"),
+        (emitted(|_, a, _, _| a.ln_1p()), "a.ln_1p()"),
+        (emitted(|_, a, b, _| (a + b).sin()), "(a + b).sin()"),
+        (
+            emitted(|_, a, _, _| a.max0()),
+            "if a > 0.0 || a.is_nan() { a } else { 0.0 }",
+        ),
+        (emitted(|_, a, b, c| (a - b) * (b - c)), "(a - b) * (b - c)"),
+    ];
+    for (code, want) in &rows {
+        assert!(code.contains(want), "expected `{want}` in:\n{code}");
+    }
+}
+
+#[test]
+fn shared_and_expensive_nodes_get_a_let_and_are_computed_once() {
+    let code = emitted(|_, a, b, _| (a + b).sin() * (a + b).cos() + (a + b).sin());
+    assert_eq!(code.matches(".sin()").count(), 1, "{code}");
+    assert!(code.contains("let t0 = a + b;"), "{code}");
+    let code = emitted(|_, a, _, _| a.sin() + a.cos());
+    assert!(code.contains("let sin_a = a.sin();"), "{code}");
+}
+
+#[test]
+fn docs_carry_the_operation_counts() {
+    let code = emitted(|_, a, b, c| a * b / c + a.sin());
+    assert!(
+        code.contains("1 add/sub, 1 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches"),
+        "{code}"
+    );
+}
+
+#[test]
+fn symbol_names_become_snake_case_identifiers() {
+    for (name, want) in [
+        ("theta", "theta"),
+        ("thetaDot", "theta_dot"),
+        ("γ", "gamma"),
+        ("ψ\u{307}", "psidot"),
+        ("x_B1", "x_b1"),
+        ("1st", "s1st"),
+        ("m-1", "m_1"),
+        ("", "s"),
+    ] {
+        assert_eq!(snake_case(name), want, "{name:?}");
+    }
+}
+
+#[test]
+fn clashing_names_are_renamed() {
+    // A symbol called like the input, and one that is a keyword.
+    let g = Graph::new();
+    let (x, kw) = (g.var("x"), g.var("type"));
+    let m = module(&[x, kw], vec![("y", Output::scalar(x * kw))]);
+    let code = render(&[(&g, &m)]).unwrap_or_else(|e| panic!("{e}")).source;
+    assert!(
+        code.contains("let x_2 = x[0];") && code.contains("let type_2 = x[1];"),
+        "{code}"
+    );
+}
+
+fn verify_error(build: impl for<'g> Fn(&'g Graph) -> Module) -> GenError {
+    let g = Graph::new();
+    let m = build(&g);
+    match render(&[(&g, &m)]) {
+        Ok(_) => panic!("verification accepted an invalid module"),
+        Err(e) => e,
+    }
+}
+
+#[test]
+fn verification_rejects_invalid_models() {
+    let e = verify_error(|g| {
+        module(
+            &[g.var("a")],
+            vec![("y", Output::scalar(g.var("a") * g.param("k")))],
+        )
+    });
+    assert!(
+        matches!(e, GenError::UnboundSymbol { ref symbol, .. } if symbol == "k"),
+        "{e}"
+    );
+
+    let e = verify_error(|g| {
+        module(
+            &[g.var("a"), g.var("a")],
+            vec![("y", Output::scalar(g.var("a")))],
+        )
+    });
+    assert!(matches!(e, GenError::SymbolBoundTwice { .. }), "{e}");
+
+    let e = verify_error(|g| {
+        let (a, b) = (g.var("a"), g.var("b"));
+        module(
+            &[a, b],
+            vec![("m", Output::symmetric(&[vec![a, b], vec![a, b]]))],
+        )
+    });
+    assert!(
+        matches!(e, GenError::NotSymmetric { row: 1, col: 0, .. }),
+        "{e}"
+    );
+
+    let e = verify_error(|g| {
+        let a = g.var("a");
+        module(
+            &[a],
+            vec![(
+                "m",
+                Output::Matrix {
+                    rows: 2,
+                    cols: 2,
+                    entries: vec![a.id(); 3],
+                },
+            )],
+        )
+    });
+    assert!(matches!(e, GenError::Shape { entries: 3, .. }), "{e}");
+
+    let e = verify_error(|g| {
+        module(
+            &[g.var("a")],
+            vec![("y", Output::scalar(g.var("a") + f64::INFINITY))],
+        )
+    });
+    assert!(matches!(e, GenError::NonFiniteConstant { .. }), "{e}");
+
+    let e = verify_error(|g| module(&[g.var("a")], vec![]));
+    assert!(matches!(e, GenError::Empty { .. }), "{e}");
+
+    let e = verify_error(|g| {
+        let mut m = module(&[g.var("a")], vec![("y", Output::scalar(g.var("a")))]);
+        m.functions[0].name = "Rhs".to_owned();
+        m
+    });
+    assert!(
+        matches!(
+            e,
+            GenError::InvalidName {
+                what: "function",
+                ..
+            }
+        ),
+        "{e}"
+    );
+
+    let e = verify_error(|g| {
+        let mut m = module(&[g.var("a")], vec![("y", Output::scalar(g.var("a")))]);
+        let mut f2 = m.functions[0].clone();
+        f2.name = "f2".to_owned();
+        f2.inputs = vec![Input::new("x", &[g.var("b")])];
+        f2.outputs = vec![("y".to_owned(), Output::scalar(g.var("b")))];
+        m.functions.push(f2);
+        m
+    });
+    assert!(matches!(e, GenError::InconsistentInput { .. }), "{e}");
+}
+
+#[test]
+fn generation_is_deterministic_and_path_free() {
+    let one = render_registered().unwrap_or_else(|e| panic!("{e}"));
+    let two = render_registered().unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(one, two);
+    assert!(
+        one.source
+            .starts_with("// @generated by pegdyn-equations (build.rs) — do not edit.")
+    );
+    let here = env!("CARGO_MANIFEST_DIR");
+    assert!(!one.source.contains(here) && !one.calls.contains(here));
+}
+
+#[test]
+fn files_are_written_only_when_their_bytes_change() {
+    let dir = std::env::temp_dir().join(format!("pegdyn-codegen-test-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("temp dir");
+    let path = dir.join("f.txt");
+    let _ = std::fs::remove_file(&path);
+    assert!(write_if_changed(&path, b"one").expect("write"));
+    assert!(!write_if_changed(&path, b"one").expect("write"));
+    assert!(write_if_changed(&path, b"two").expect("write"));
+    let report = pegdyn_equations::generate(&dir).expect("generate");
+    assert!(!report.rows.is_empty());
+    for f in ["generated.rs", "codegen_report.txt", "generated_calls.rs"] {
+        assert!(dir.join(f).is_file(), "{f} not written");
+    }
+    std::fs::remove_dir_all(&dir).expect("clean up");
+}
