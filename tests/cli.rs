@@ -36,6 +36,9 @@ const BAD: &[(&str, &str, &str)] = &[
     ("unknown_method.toml", "integrator.method", "euler"),
     ("unknown_field.toml", "pendulum.colour", "unknown field"),
     ("wrong_type.toml", "pendulum.mass", "\"heavy\""),
+    ("zero_atol.toml", "integrator.atol", "0.0"),
+    ("rk4_without_h.toml", "integrator.h", "missing"),
+    ("t_end_before_t0.toml", "integrator.t_end", "1.0"),
 ];
 
 fn assert_rejected(out: &Output, file: &str, field: &str, value: &str) {
@@ -131,4 +134,19 @@ fn missing_file_is_an_error_naming_the_path() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1));
     assert!(stderr.contains("does_not_exist.toml"), "{stderr}");
+}
+
+#[test]
+fn codegen_prints_source_and_report() {
+    let out = pegdyn(&["codegen"]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(stdout.contains("@generated") && stdout.contains("pub mod pendulum"));
+    assert!(stdout.contains("add/sub"));
+    let report = pegdyn(&["codegen", "--report-only"]);
+    let report = String::from_utf8_lossy(&report.stdout);
+    assert!(
+        report.contains("add/sub") && !report.contains("pub mod"),
+        "{report}"
+    );
 }

@@ -4,6 +4,7 @@
 //! One file per subcommand; `bench` and `accuracy` will join them.
 
 mod check;
+mod codegen;
 mod run;
 
 use std::path::PathBuf;
@@ -38,6 +39,12 @@ enum Command {
         #[arg(required = true)]
         scenes: Vec<PathBuf>,
     },
+    /// Print the generated model code, then its operation-count report.
+    Codegen {
+        /// Print only the operation-count report.
+        #[arg(long)]
+        report_only: bool,
+    },
     /// List the scene kinds this build knows.
     Kinds,
 }
@@ -58,6 +65,7 @@ pub fn main() -> ExitCode {
     match cli.command {
         Command::Run { scene, out, quiet } => run::run(&scene, &out, quiet),
         Command::Check { scenes } => check::check(&scenes),
+        Command::Codegen { report_only } => codegen::codegen(report_only),
         Command::Kinds => {
             for k in pegdyn::scene::KINDS {
                 println!("{:<20} {}", k.name, k.about);

@@ -39,7 +39,17 @@ pub fn run(path: &Path, out: &Path, quiet: bool) -> ExitCode {
     match result {
         Ok(summary) => {
             print!("{summary}");
-            ExitCode::SUCCESS
+            match &summary.integration {
+                Some(i) if !i.success => {
+                    eprintln!(
+                        "{}: error: integration stopped early: {}",
+                        path.display(),
+                        i.stop
+                    );
+                    ExitCode::FAILURE
+                }
+                _ => ExitCode::SUCCESS,
+            }
         }
         Err(e) => {
             eprintln!("{}: error: {e}", path.display());

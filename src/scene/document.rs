@@ -114,7 +114,9 @@ impl<'a> Document<'a> {
         let mut table = self.root.get_ref();
         let mut found = None;
         for key in path.split('.') {
-            let (k, v) = table.get_key_value(key)?;
+            let Some((k, v)) = table.get_key_value(key) else {
+                return found;
+            };
             found = Some(k.span().start);
             match v.get_ref() {
                 DeValue::Table(t) => table = t,

@@ -5,7 +5,7 @@
 //! [integrator]
 //! method = "dopri5"        # "dopri5" | "rk4" | "rosenbrock"
 //! rtol = 1e-9              # relative tolerance (adaptive methods)
-//! atol = 1e-12             # absolute tolerance (adaptive methods)
+//! atol = 1e-12             # absolute tolerance, > 0 (adaptive methods)
 //! h = 1e-3                 # fixed step, s (rk4 only; required there)
 //! t0 = 0.0                 # start time, s (default 0)
 //! t_end = 10.0             # end time, s
@@ -95,7 +95,7 @@ impl IntegratorSpec {
             if rtol >= 1.0 {
                 c.push(SceneError::invalid(f("rtol"), rtol, "must be less than 1"));
             }
-            c.non_negative(&f("atol"), self.atol);
+            c.positive(&f("atol"), self.atol);
         }
         match (self.method, self.h) {
             (Method::Rk4, None) => c.push(SceneError::Missing { field: f("h") }),

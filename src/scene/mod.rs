@@ -32,6 +32,7 @@ pub mod integrator;
 pub mod jamming;
 pub mod pendulum;
 pub mod progress;
+pub mod summary;
 pub mod validate;
 
 use std::fmt;
@@ -40,6 +41,7 @@ use std::path::{Path, PathBuf};
 pub use document::Document;
 pub use integrator::{IntegratorSpec, Method};
 pub use progress::Progress;
+pub use summary::{IntegrationSummary, Metric, RunSummary};
 
 use crate::error::{RunError, SceneError, SceneErrors};
 
@@ -132,59 +134,5 @@ impl RunContext {
     /// `<out_dir>/<name>_<suffix>.<ext>`, for scenes with several outputs.
     pub fn output_with(&self, suffix: &str, ext: &str) -> PathBuf {
         self.out_dir.join(format!("{}_{suffix}.{ext}", self.name))
-    }
-}
-
-/// A scalar result of a run worth printing (e.g. energy drift).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Metric {
-    /// What it is, e.g. `"max relative energy drift"`.
-    pub name: String,
-    /// Its value.
-    pub value: f64,
-    /// Its unit (`""` for dimensionless).
-    pub unit: &'static str,
-}
-
-/// What a run reports back.
-#[derive(Debug, Clone, PartialEq)]
-pub struct RunSummary {
-    /// Integration method used.
-    pub method: Method,
-    /// Time the integration stopped at, s.
-    pub t_end: f64,
-    /// Why it stopped, e.g. `reached t_end` or `event contact_lost at t = 0.3 s`.
-    pub stop: String,
-    /// Accepted steps.
-    pub steps: usize,
-    /// Rejected steps (adaptive methods).
-    pub rejected: usize,
-    /// Right-hand-side evaluations.
-    pub rhs_calls: usize,
-    /// Scene-specific results.
-    pub metrics: Vec<Metric>,
-    /// Files written.
-    pub outputs: Vec<PathBuf>,
-}
-
-impl fmt::Display for RunSummary {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        writeln!(f, "  stopped at t = {} s: {}", self.t_end, self.stop)?;
-        writeln!(
-            f,
-            "  {}: {} steps ({} rejected), {} rhs calls",
-            self.method.name(),
-            self.steps,
-            self.rejected,
-            self.rhs_calls
-        )?;
-        for m in &self.metrics {
-            let sep = if m.unit.is_empty() { "" } else { " " };
-            writeln!(f, "  {} = {:.3e}{sep}{}", m.name, m.value, m.unit)?;
-        }
-        for p in &self.outputs {
-            writeln!(f, "  wrote {}", p.display())?;
-        }
-        Ok(())
     }
 }

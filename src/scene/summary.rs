@@ -1,0 +1,157 @@
+//! What a scene run reports: how the integration(s) ended and what they
+//! cost ([`IntegrationSummary`]), scene-specific numbers ([`Metric`]), and
+//! the files written. `pegdyn run` prints it with [`std::fmt::Display`].
+
+use std::fmt;
+use std::path::PathBuf;
+
+use crate::scene::Method;
+
+/// A scalar result of a run worth printing (e.g. energy drift).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Metric {
+    /// What it is, e.g. `"max |E - E0| / (m g L)"`.
+    pub name: String,
+    /// Its value.
+    pub value: f64,
+    /// Its unit (`""` for dimensionless).
+    pub unit: &'static str,
+}
+
+impl Metric {
+    /// A metric.
+    pub fn new(name: impl Into<String>, value: f64, unit: &'static str) -> Self {
+        Metric {
+            name: name.into(),
+            value,
+            unit,
+        }
+    }
+}
+
+/// How an integration ended and what it cost.
+#[derive(Debug, Clone, PartialEq)]
+pub struct IntegrationSummary {
+    /// Integration method used.
+    pub method: Method,
+    /// Time the integration stopped at, s.
+    pub t_end: f64,
+    /// Why it stopped, e.g. `reached t_end` or `event `contact_lost` at t = 0.3 s`.
+    pub stop: String,
+    /// Whether that is a planned end (end time or terminal event); the CLI
+    /// exits with 1 otherwise, after writing what was computed.
+    pub success: bool,
+    /// Accepted steps.
+    pub steps: usize,
+    /// Rejected steps (adaptive methods).
+    pub rejected: usize,
+    /// Right-hand-side evaluations.
+    pub rhs_calls: usize,
+}
+
+impl IntegrationSummary {
+    /// Appends a later integration (e.g. the next contact phase): counters
+    /// add up, the end time, stop reason and success are the later one's.
+    pub fn merge(&mut self, later: IntegrationSummary) {
+        self.steps += later.steps;
+        self.rejected += later.rejected;
+        self.rhs_calls += later.rhs_calls;
+        self.t_end = later.t_end;
+        self.stop = later.stop;
+        self.success = later.success;
+        self.method = later.method;
+    }
+}
+
+/// What a run reports back.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct RunSummary {
+    /// The time integration, if the scene integrates in time (a parameter
+    /// sweep of static equilibria does not).
+    pub integration: Option<IntegrationSummary>,
+    /// Scene-specific results.
+    pub metrics: Vec<Metric>,
+    /// Files written.
+    pub outputs: Vec<PathBuf>,
+}
+
+impl RunSummary {
+    /// `false` when the integration stopped unplanned.
+    pub fn success(&self) -> bool {
+        self.integration.as_ref().is_none_or(|i| i.success)
+    }
+}
+
+impl fmt::Display for RunSummary {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if let Some(i) = &self.integration {
+            writeln!(f, "  stopped at t = {} s: {}", i.t_end, i.stop)?;
+            writeln!(
+                f,
+                "  {}: {} steps ({} rejected), {} rhs calls",
+                i.method.name(),
+                i.steps,
+                i.rejected,
+                i.rhs_calls
+            )?;
+        }
+        for m in &self.metrics {
+            let sep = if m.unit.is_empty() { "" } else { " " };
+            let v = if (1e-3..1e6).contains(&m.value.abs()) {
+                format!("{:.6}", m.value)
+            } else {
+                format!("{:.3e}", m.value)
+            };
+            writeln!(f, "  {} = {v}{sep}{}", m.name, m.unit)?;
+        }
+        for p in &self.outputs {
+            writeln!(f, "  wrote {}", p.display())?;
+        }
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn part(steps: usize, t_end: f64, success: bool) -> IntegrationSummary {
+        IntegrationSummary {
+            method: Method::Dopri5,
+            t_end,
+            stop: format!("stop at {t_end}"),
+            success,
+            steps,
+            rejected: 1,
+            rhs_calls: 6 * steps,
+        }
+    }
+
+    #[test]
+    fn merge_adds_counters_and_keeps_the_last_stop() {
+        let mut a = part(10, 1.0, true);
+        a.merge(part(5, 2.5, false));
+        assert_eq!((a.steps, a.rejected, a.rhs_calls), (15, 2, 90));
+        assert_eq!((a.t_end, a.success), (2.5, false));
+    }
+
+    #[test]
+    fn display_prints_metrics_readably() {
+        let s = RunSummary {
+            integration: Some(part(3, 1.0, true)),
+            metrics: vec![
+                Metric::new("period", 2.0, "s"),
+                Metric::new("drift", 1.5e-11, ""),
+            ],
+            outputs: vec![],
+        };
+        let text = s.to_string();
+        assert!(text.contains("period = 2.000000 s"), "{text}");
+        assert!(text.contains("drift = 1.500e-11\n"), "{text}");
+        assert!(
+            text.contains("3 steps (1 rejected), 18 rhs calls"),
+            "{text}"
+        );
+        assert!(s.success() && RunSummary::default().success());
+    }
+}
