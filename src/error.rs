@@ -204,13 +204,13 @@ pub enum RunError {
     /// Writing the CSV or SVG failed.
     #[error(transparent)]
     Output(#[from] OutputError),
-    /// The integrator gave up before reaching `t_end` and produced no
-    /// usable solution.
-    #[error("integration failed at t = {t}: {reason}")]
-    Integration {
-        /// Time reached, s.
-        t: f64,
-        /// The integrator's reason.
-        reason: String,
+    /// The scene needs something this build does not have yet.
+    #[error("not available in this build: {what}")]
+    Unavailable {
+        /// What is missing, e.g. `the rosenbrock integrator`.
+        what: &'static str,
     },
+    /// The integrator rejected its input.
+    #[error(transparent)]
+    Integrate(#[from] crate::integrate::IntegrateError),
 }

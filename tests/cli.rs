@@ -136,6 +136,104 @@ fn missing_file_is_an_error_naming_the_path() {
     assert!(stderr.contains("does_not_exist.toml"), "{stderr}");
 }
 
+/// A CSV file as its header and numeric rows.
+fn read_csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {
+    let text = std::fs::read_to_string(path).expect("CSV written");
+    let mut lines = text.lines();
+    let header = lines
+        .next()
+        .expect("header")
+        .split(',')
+        .map(str::to_string)
+        .collect();
+    let rows = lines
+        .map(|l| {
+            l.split(',')
+                .map(|v| v.parse().expect("numeric CSV field"))
+                .collect()
+        })
+        .collect();
+    (header, rows)
+}
+
+/// The value printed for metric `name` in the run summary.
+fn metric(stdout: &str, name: &str) -> f64 {
+    let line = stdout
+        .lines()
+        .find(|l| l.trim_start().starts_with(name))
+        .unwrap_or_else(|| panic!("no `{name}` in {stdout}"));
+    let value = line.split('=').nth(1).expect("name = value");
+    value
+        .split_whitespace()
+        .next()
+        .expect("value")
+        .parse()
+        .expect("number")
+}
+
+/// Runs a pendulum scene and checks its outputs against the physics: the
+/// initial angle, the amplitude bound from energy conservation, a small
+/// energy error, and the measured period against the exact AGM period.
+fn run_pendulum(scene: &str, test: &str, theta0_deg: f64, t_end: f64, dt: f64) {
+    let dir = out_dir(test);
+    let out = pegdyn(&["run", scene, "--out", dir.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(stdout.contains("reached t_end"), "{stdout}");
+
+    let stem = Path::new(scene).file_stem().unwrap().to_str().unwrap();
+    let (header, rows) = read_csv(&dir.join(format!("{stem}.csv")));
+    assert_eq!(
+        header,
+        [
+            "t_s",
+            "theta_rad",
+            "omega_rad_s",
+            "energy_J",
+            "energy_error"
+        ]
+    );
+    assert_eq!(rows.len(), (t_end / dt).round() as usize + 1);
+    assert_eq!(rows[0][0], 0.0);
+    assert_eq!(rows.last().unwrap()[0], t_end);
+    let theta0 = theta0_deg.to_radians();
+    assert_eq!(rows[0][1], theta0);
+    for r in &rows {
+        assert!(
+            r[1].abs() <= theta0 + 1e-8,
+            "amplitude exceeded at t = {}: {}",
+            r[0],
+            r[1]
+        );
+        assert!(r[4].abs() < 1e-8, "energy error {} at t = {}", r[4], r[0]);
+    }
+    // The amplitude is reached again: the pendulum swings, not creeps.
+    assert!(rows.iter().any(|r| r[1] < -0.99 * theta0));
+    assert!(metric(&stdout, "max |E - E0|") < 1e-8);
+    assert!(metric(&stdout, "period relative error") < 1e-8, "{stdout}");
+
+    let svg = std::fs::read_to_string(dir.join(format!("{stem}.svg"))).expect("SVG written");
+    assert!(
+        svg.starts_with("<svg") && svg.contains("Energy error"),
+        "not an SVG plot"
+    );
+}
+
+#[test]
+fn run_pendulum_dopri5_conserves_energy_and_period() {
+    run_pendulum("scenes/pendulum.toml", "pendulum", 60.0, 10.0, 0.01);
+}
+
+#[test]
+fn run_pendulum_rk4_conserves_energy_and_period() {
+    run_pendulum(&fixture("good_pendulum_rk4.toml"), "rk4", 90.0, 3.0, 0.1);
+}
+
 #[test]
 fn codegen_prints_source_and_report() {
     let out = pegdyn(&["codegen"]);

@@ -117,9 +117,8 @@ impl Scene for DoublePendulumScene {
     }
 
     fn run(&self, _ctx: &mut RunContext) -> Result<RunSummary, RunError> {
-        Err(RunError::Integration {
-            t: self.integrator.t0,
-            reason: "the double pendulum run is not wired to the integrators yet".into(),
+        Err(RunError::Unavailable {
+            what: "the generated double_pendulum model",
         })
     }
 }

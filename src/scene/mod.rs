@@ -32,6 +32,7 @@ pub mod integrator;
 pub mod jamming;
 pub mod pendulum;
 pub mod progress;
+pub mod simulate;
 pub mod summary;
 pub mod validate;
 

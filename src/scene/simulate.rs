@@ -1,0 +1,103 @@
+//! Running an [`OdeSystem`] as a scene asks: map the `[integrator]` table
+//! onto the integrators' [`Solver`], sample the output times, report
+//! progress, and describe how the integration ended.
+
+use nalgebra::SVector;
+
+use crate::error::RunError;
+use crate::integrate::{
+    self, Event, IntegrateError, Options, OutputMode, Solution, Solver, StopReason,
+};
+use crate::scene::{IntegrationSummary, IntegratorSpec, Method, Progress};
+use crate::system::OdeSystem;
+
+/// The integrator method and options described by `spec`.
+///
+/// # Errors
+/// [`RunError::Integrate`] for `rk4` without `h` (never for a spec that
+/// passed [`IntegratorSpec::check`]); [`RunError::Unavailable`] for a method
+/// this build lacks.
+pub fn solver_config(spec: &IntegratorSpec) -> Result<(integrate::Method, Options), RunError> {
+    let method = match (spec.method, spec.h) {
+        (Method::Rk4, Some(h)) => integrate::Method::Rk4 { h },
+        (Method::Rk4, None) => {
+            return Err(RunError::Integrate(IntegrateError::InvalidOption {
+                name: "h",
+                value: f64::NAN,
+                reason: "is required for rk4",
+            }));
+        }
+        (Method::Dopri5, _) => integrate::Method::Dopri5,
+        (Method::Rosenbrock, _) => {
+            return Err(RunError::Unavailable {
+                what: "the rosenbrock integrator",
+            });
+        }
+    };
+    let mut options = Options::with_tolerances(spec.rtol, spec.atol);
+    options.max_steps = spec.max_steps;
+    options.output = OutputMode::AtTimes(spec.output_times());
+    if spec.method.is_adaptive() {
+        options.h0 = spec.h;
+    }
+    Ok((method, options))
+}
+
+/// Integrates `system` from `x0` over the span of `spec`, sampled at
+/// [`IntegratorSpec::output_times`], with `events` (non-terminal or
+/// terminal), reporting progress.
+///
+/// # Errors
+/// [`RunError::Integrate`] when the integrator rejects its input.
+pub fn integrate<'a, const N: usize, S: OdeSystem<N>>(
+    system: &S,
+    x0: SVector<f64, N>,
+    spec: &IntegratorSpec,
+    events: Vec<Event<'a, N>>,
+    progress: &'a mut Progress,
+) -> Result<Solution<N>, RunError> {
+    let (method, options) = solver_config(spec)?;
+    progress.set_span(spec.t0, spec.t_end);
+    let mut solver = Solver::new(method, options);
+    for e in events {
+        solver = solver.with_event(e);
+    }
+    let mut solver = solver.with_progress(|t| progress.update(t));
+    Ok(solver.solve(system, spec.t0, x0, spec.t_end)?)
+}
+
+/// A human-readable account of `stop`, naming events by `event_names`
+/// (index order; a missing name prints as `#index`).
+pub fn describe_stop(stop: &StopReason, event_names: &[&str]) -> String {
+    match *stop {
+        StopReason::ReachedEnd => "reached t_end".into(),
+        StopReason::Event { index, t } => match event_names.get(index) {
+            Some(name) => format!("event `{name}` at t = {t} s"),
+            None => format!("event #{index} at t = {t} s"),
+        },
+        StopReason::StepSizeTooSmall { t, h } => {
+            format!("step size too small (h = {h:e} s) at t = {t} s")
+        }
+        StopReason::NonFinite { t } => format!("state became non-finite after t = {t} s"),
+        StopReason::MaxSteps { t, steps } => {
+            format!("step budget of {steps} steps exhausted at t = {t} s")
+        }
+    }
+}
+
+/// How `sol` ended and what it cost, naming events by `event_names`.
+pub fn integration_summary<const N: usize>(
+    spec: &IntegratorSpec,
+    sol: &Solution<N>,
+    event_names: &[&str],
+) -> IntegrationSummary {
+    IntegrationSummary {
+        method: spec.method,
+        t_end: sol.t_final,
+        stop: describe_stop(&sol.stop, event_names),
+        success: sol.stop.is_success(),
+        steps: sol.stats.steps,
+        rejected: sol.stats.rejected,
+        rhs_calls: sol.stats.rhs_calls,
+    }
+}
