@@ -210,6 +210,10 @@ pub enum RunError {
         /// What is missing, e.g. `the rosenbrock integrator`.
         what: &'static str,
     },
+    /// The jamming analysis refused a parameter (cannot happen after the
+    /// scene's `check`; reported rather than unwrapped).
+    #[error("jamming analysis refused {0}")]
+    Jamming(#[from] crate::jamming::ParamError),
     /// The integrator rejected its input.
     #[error(transparent)]
     Integrate(#[from] crate::integrate::IntegrateError),

@@ -25,7 +25,7 @@ use crate::jamming::{figure, table};
 use crate::output::csv::{CsvWriter, format_f64};
 use crate::output::plot::Figure;
 use crate::scene::validate::Checker;
-use crate::scene::{Document, Kind, Method, RunContext, RunSummary, Scene};
+use crate::scene::{Document, Kind, Metric, RunContext, RunSummary, Scene};
 
 /// Registry entry.
 pub const KIND: Kind = Kind {
@@ -106,14 +106,6 @@ impl JammingScene {
     }
 }
 
-fn analytic_error(e: crate::jamming::ParamError) -> RunError {
-    // unreachable after `check`, but reported rather than unwrapped
-    RunError::Integration {
-        t: 0.0,
-        reason: format!("jamming analysis refused {e}"),
-    }
-}
-
 impl Scene for JammingScene {
     fn describe(&self) -> String {
         let p = &self.jamming;
@@ -125,8 +117,8 @@ impl Scene for JammingScene {
 
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
         let p = &self.jamming;
-        let corners = table::corner_rows(p.r_m, &p.c, &p.mu, &p.l_m).map_err(analytic_error)?;
-        let wedging = table::wedging_rows(p.r_m, &p.c, &p.mu).map_err(analytic_error)?;
+        let corners = table::corner_rows(p.r_m, &p.c, &p.mu, &p.l_m)?;
+        let wedging = table::wedging_rows(p.r_m, &p.c, &p.mu)?;
 
         let path = ctx.out_dir.join("jamming_corners.csv");
         let header = ["l_m", "c", "mu", "kind", "fx_over_fz", "m_over_rfz"];
@@ -160,17 +152,12 @@ impl Scene for JammingScene {
 
         let impossible = p.c.len() * p.mu.len() * p.l_m.len() * 8 - corners.len();
         Ok(RunSummary {
-            method: Method::Dopri5,
-            t_end: 0.0,
-            stop: "analytic diagram only (no integration)".into(),
-            steps: 0,
-            rejected: 0,
-            rhs_calls: 0,
-            metrics: vec![crate::scene::Metric {
-                name: "exact corners left out (two-point contact impossible)".into(),
-                value: impossible as f64,
-                unit: "",
-            }],
+            integration: None,
+            metrics: vec![Metric::new(
+                "exact corners left out (two-point contact impossible)",
+                impossible as f64,
+                "",
+            )],
             outputs,
         })
     }
