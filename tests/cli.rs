@@ -235,6 +235,41 @@ fn run_pendulum_rk4_conserves_energy_and_period() {
 }
 
 #[test]
+fn run_double_pendulum_conserves_energy() {
+    let dir = out_dir("double");
+    let scene = fixture("good_double_pendulum.toml");
+    let out = pegdyn(&["run", &scene, "--out", dir.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let (header, rows) = read_csv(&dir.join("good_double_pendulum.csv"));
+    assert_eq!(header.len(), 7);
+    assert_eq!(header[1], "theta1_rad");
+    assert_eq!(rows.len(), 151);
+    assert_eq!(
+        (rows[0][1], rows[0][2], rows[0][4]),
+        (90f64.to_radians(), 45f64.to_radians(), 1.0)
+    );
+    let e0 = rows[0][5];
+    for r in &rows {
+        assert!(
+            (r[5] - e0).abs() < 1e-6 * e0.abs().max(1.0),
+            "energy {} vs {e0} at t = {}",
+            r[5],
+            r[0]
+        );
+    }
+    // It moves: the upper rod swings through the vertical.
+    assert!(rows.iter().any(|r| r[1] < 0.0));
+    assert!(metric(&stdout, "max |E - E0|") < 1e-7);
+    assert!(dir.join("good_double_pendulum.svg").exists());
+}
+
+#[test]
 fn codegen_prints_source_and_report() {
     let out = pegdyn(&["codegen"]);
     let stdout = String::from_utf8_lossy(&out.stdout);
