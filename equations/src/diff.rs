@@ -8,6 +8,14 @@
 //! - d sign(x)/dx = d step(x)/dx = 0 (everywhere except at 0, where the
 //!   derivative does not exist; 0 is what the generated code uses).
 //!
+//! The chain rule is applied literally, so a derivative is NaN where it
+//! multiplies an infinite factor by a zero one, even when the function is
+//! locally constant there: `d sqrt(u) = du / (2 sqrt(u))` at `u = du = 0`
+//! (e.g. `sqrt(max0(δ))` for an inactive contact: use exponents `>= 1` on a
+//! `max0`, whose derivatives stay finite), `d b^y/dy = b^y ln(b)` at `b = 0`,
+//! and `hypot(a, b)'` at `a = b = 0`. `tests/diff_vs_finite_difference.rs`
+//! counts such points in random trees (about 0.1 %).
+//!
 //! [`time_derivative`] is the total derivative d/dt along given
 //! coordinate/velocity pairs: d e/dt = ∂e/∂t + Σ ∂e/∂q_i · q̇_i.
 
