@@ -121,6 +121,44 @@ fn check_reports_every_bad_file_and_fails() {
 }
 
 #[test]
+fn check_reports_every_problem_of_a_file() {
+    let out = pegdyn(&["check", &fixture("two_errors.toml")]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1));
+    for (field, value) in [
+        ("pendulum.length", "NaN"),
+        ("pendulum.mass", "-1"),
+        ("integrator.rtol", "2"),
+    ] {
+        let line = stderr
+            .lines()
+            .find(|l| l.contains(&format!("`{field}`")))
+            .unwrap_or_else(|| panic!("{field} not reported: {stderr}"));
+        assert!(line.contains(value), "{line}");
+    }
+}
+
+#[test]
+fn run_writes_to_out_by_default_and_is_quiet_when_not_a_terminal() {
+    let dir = out_dir("default-out");
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = Path::new(env!("CARGO_MANIFEST_DIR")).join(fixture("good_pendulum_rk4.toml"));
+    let out = Command::new(env!("CARGO_BIN_EXE_pegdyn"))
+        .args(["run", scene.to_str().unwrap()])
+        .current_dir(&dir)
+        .output()
+        .expect("the pegdyn binary runs");
+    assert_eq!(out.status.code(), Some(0));
+    assert!(
+        out.stderr.is_empty(),
+        "no progress line on a pipe: {:?}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(dir.join("out/good_pendulum_rk4.csv").is_file());
+    assert!(dir.join("out/good_pendulum_rk4.svg").is_file());
+}
+
+#[test]
 fn usage_errors_exit_2() {
     assert_eq!(pegdyn(&[]).status.code(), Some(2));
     assert_eq!(pegdyn(&["check"]).status.code(), Some(2));
