@@ -101,3 +101,79 @@ pub fn integration_summary<const N: usize>(
         rhs_calls: sol.stats.rhs_calls,
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::integrate::Direction;
+    use crate::system::FnSystem;
+    use nalgebra::Vector2;
+
+    fn spec(method: Method, h: Option<f64>) -> IntegratorSpec {
+        IntegratorSpec {
+            method,
+            rtol: 1e-9,
+            atol: 1e-12,
+            h,
+            t0: 0.0,
+            t_end: 2.0,
+            output_interval: Some(0.5),
+            max_steps: 100_000,
+        }
+    }
+
+    #[test]
+    fn config_maps_methods_and_output_times() {
+        let (m, o) = solver_config(&spec(Method::Rk4, Some(0.01))).unwrap();
+        assert_eq!(m, integrate::Method::Rk4 { h: 0.01 });
+        assert_eq!(o.output, OutputMode::AtTimes(vec![0.0, 0.5, 1.0, 1.5, 2.0]));
+        assert_eq!(o.h0, None);
+        let (m, o) = solver_config(&spec(Method::Dopri5, Some(1e-3))).unwrap();
+        assert_eq!(
+            (m, o.h0, o.rtol, o.atol),
+            (integrate::Method::Dopri5, Some(1e-3), 1e-9, 1e-12)
+        );
+        assert!(solver_config(&spec(Method::Rk4, None)).is_err());
+    }
+
+    #[test]
+    fn terminal_event_is_named_in_the_summary() {
+        // Falling body from 1 m: hits the ground at t = sqrt(2/g).
+        let g = 9.81;
+        let fall = FnSystem(move |_t: f64, x: &Vector2<f64>| Vector2::new(x[1], -g));
+        let ground = Event::new(|_t, x: &Vector2<f64>| x[0])
+            .direction(Direction::Falling)
+            .terminal();
+        let s = spec(Method::Dopri5, None);
+        let mut progress = Progress::silent();
+        let sol = integrate(
+            &fall,
+            Vector2::new(1.0, 0.0),
+            &s,
+            vec![ground],
+            &mut progress,
+        )
+        .unwrap();
+        let summary = integration_summary(&s, &sol, &["ground"]);
+        assert!(summary.success);
+        assert!(
+            (summary.t_end - (2.0 / g).sqrt()).abs() < 1e-9,
+            "{}",
+            summary.t_end
+        );
+        assert!(
+            summary.stop.starts_with("event `ground` at t = 0.45"),
+            "{}",
+            summary.stop
+        );
+        assert!(summary.rhs_calls > summary.steps);
+    }
+
+    #[test]
+    fn unplanned_stops_are_described() {
+        let s = describe_stop(&StopReason::MaxSteps { t: 0.5, steps: 10 }, &[]);
+        assert_eq!(s, "step budget of 10 steps exhausted at t = 0.5 s");
+        let s = describe_stop(&StopReason::Event { index: 2, t: 1.0 }, &["a"]);
+        assert_eq!(s, "event #2 at t = 1 s");
+    }
+}
