@@ -9,6 +9,7 @@
 //! - [`diagram`]: the jamming parallelogram, Whitney's and exact.
 //! - [`wedging`]: the wedging angle θ_c, exact and series.
 //! - [`space3d`]: the 3-D no-jamming inequalities (Eqs. 81–82).
+//! - [`sweep`]: the dynamic sweep driver (rayon) and its comparison with the diagram.
 //! - [`table`], [`figure`]: the scene's corner/wedging tables and Fig. 6-style panels.
 //!
 //! The derivation and the comparison with the paper are in `docs/jamming.md`.
@@ -21,6 +22,8 @@ pub mod geometry;
 pub mod params;
 pub mod quasi_static;
 pub mod space3d;
+pub mod statics;
+pub mod sweep;
 pub mod table;
 pub mod wedging;
 
