@@ -1,6 +1,19 @@
 //! The compliant peg-in-hole model of paper 001 (sections 2–3): contact
-//! geometry and Hertz stiffness ([`geometry`]).
+//! geometry and Hertz stiffness ([`geometry`]), checked parameters
+//! ([`params`]), the generated model as an ODE system ([`system`]), initial
+//! states ([`initial`]) and classified insertion runs ([`simulate`]).
+//! See `docs/compliant.md` and `docs/contact-geometry.md`.
 
 pub mod geometry;
+pub mod initial;
+pub mod params;
+pub mod simulate;
+pub mod system;
 
 pub use geometry::{ContactPair, DEFAULT_FILLET, PegHoleGeometry};
+pub use initial::PegState;
+pub use params::{CompliantParams, CompliantSpec, ContactSet, Load};
+pub use simulate::{
+    InsertionOptions, InsertionOutcome, InsertionRun, Integrator, simulate_insertion,
+};
+pub use system::{CompliantSystem, Sample};

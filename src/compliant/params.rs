@@ -1,0 +1,228 @@
+//! Checked parameters of the compliant peg-in-hole and their translation
+//! into the generated model's parameter vector.
+
+use nalgebra::SVector;
+
+use super::geometry::{ContactPair, PegHoleGeometry};
+use crate::generated::compliant_peg::P_NAMES;
+use crate::hertz::{EllipticityMethod, HertzContact, HertzError, Material};
+
+/// Number of model parameters (`P_NAMES`).
+pub const N_PARAMS: usize = 23;
+
+/// Which contacts the model includes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum ContactSet {
+    /// All four (either lean, every contact state of the paper's Fig. 4).
+    #[default]
+    All,
+    /// Only the left edge and right wall (the paper's Fig. 5 lean, θ > 0).
+    Lean,
+}
+
+/// Everything that defines a compliant peg and hole (SI units).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CompliantSpec {
+    /// Peg and hole dimensions and fillets.
+    pub geometry: PegHoleGeometry,
+    /// Peg material.
+    pub peg: Material,
+    /// Hole material.
+    pub hole: Material,
+    /// Peg mass `m` (kg).
+    pub mass: f64,
+    /// Moment of inertia `J` about the centre of mass (kg·m²).
+    pub inertia: f64,
+    /// Distance `l_c` from the centre of mass to the bottom face (m).
+    pub com_height: f64,
+    /// Coulomb friction coefficient `μ ≥ 0`.
+    pub friction: f64,
+    /// Velocity scale `v_s > 0` of the regularized friction law (m/s).
+    pub slip_velocity: f64,
+    /// Tilt at which the Hertz stiffness is evaluated (rad).
+    pub reference_tilt: f64,
+    /// Contacts included.
+    pub contacts: ContactSet,
+}
+
+/// Validated parameters with the Hertz contacts set up.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CompliantParams {
+    /// The specification.
+    pub spec: CompliantSpec,
+    /// Hertz contacts of edge and wall at the reference tilt.
+    pub pair: ContactPair,
+}
+
+/// The applied loads in the peg's frame, the paper's (50) (constant in time).
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub struct Load {
+    /// Axial force `f₁` (N), positive pushing the peg into the hole.
+    pub axial: f64,
+    /// Radial force `f₂` (N), along `e_r` (towards `+x` at θ = 0).
+    pub radial: f64,
+    /// Torque `M` (N·m) about the centre of mass, positive increasing θ.
+    pub torque: f64,
+}
+
+impl CompliantSpec {
+    /// The reference peg of `scenes/insert_compliant.toml`: a solid steel
+    /// cylinder of length `length` (m) in a steel hole of diameter `d` (m)
+    /// with clearance ratio `c`, 0.2 mm fillets, centre of mass at
+    /// mid-length, friction `mu`, `v_s = 1e-5 m/s`, all four contacts.
+    ///
+    /// ```
+    /// use pegdyn::compliant::{CompliantParams, CompliantSpec};
+    /// let spec = CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, 0.1);
+    /// assert!((spec.mass - 1.535).abs() < 1e-3);
+    /// assert!(CompliantParams::try_new(spec).is_ok());
+    /// ```
+    pub fn steel_cylinder(d: f64, c: f64, length: f64, mu: f64) -> CompliantSpec {
+        let r = 0.5 * d * (1.0 - c);
+        let mass = 7850.0 * std::f64::consts::PI * r * r * length;
+        CompliantSpec {
+            geometry: PegHoleGeometry {
+                hole_diameter: d,
+                peg_radius: r,
+                peg_fillet: super::geometry::DEFAULT_FILLET,
+                hole_fillet: super::geometry::DEFAULT_FILLET,
+            },
+            peg: Material::STEEL,
+            hole: Material::STEEL,
+            mass,
+            inertia: mass * (3.0 * r * r + length * length) / 12.0,
+            com_height: 0.5 * length,
+            friction: mu,
+            slip_velocity: 1e-5,
+            reference_tilt: 0.0,
+            contacts: ContactSet::All,
+        }
+    }
+}
+
+fn invalid(field: &str, value: f64, reason: &'static str) -> HertzError {
+    HertzError::Invalid {
+        field: field.to_owned(),
+        value,
+        reason,
+    }
+}
+
+impl CompliantParams {
+    /// Checks `spec` and sets up the Hertz contacts. Errors name the field:
+    /// `mass`, `inertia`, `com_height` (finite, `> 0`, above the fillet),
+    /// `friction` (finite, `≥ 0`), `slip_velocity` (finite, `> 0`),
+    /// `reference_tilt` (below 0.8 of the wall contact's split tilt),
+    /// `peg.*`, `hole.*` for the materials.
+    pub fn try_new(spec: CompliantSpec) -> Result<CompliantParams, HertzError> {
+        let g = &spec.geometry;
+        // Re-check the geometry and materials (their fields are public).
+        PegHoleGeometry::try_new(g.hole_diameter, g.peg_radius, g.peg_fillet, g.hole_fillet)?;
+        Material::try_new(spec.peg.youngs_modulus, spec.peg.poisson_ratio)
+            .map_err(|e| e.with_prefix("peg"))?;
+        Material::try_new(spec.hole.youngs_modulus, spec.hole.poisson_ratio)
+            .map_err(|e| e.with_prefix("hole"))?;
+        for (field, v) in [
+            ("mass", spec.mass),
+            ("inertia", spec.inertia),
+            ("com_height", spec.com_height),
+        ] {
+            if !(v.is_finite() && v > 0.0) {
+                return Err(invalid(field, v, "must be finite and > 0"));
+            }
+        }
+        if spec.com_height <= g.peg_fillet {
+            return Err(invalid(
+                "com_height",
+                spec.com_height,
+                "must exceed peg_fillet",
+            ));
+        }
+        if !(spec.friction.is_finite() && spec.friction >= 0.0) {
+            return Err(invalid(
+                "friction",
+                spec.friction,
+                "must be finite and >= 0",
+            ));
+        }
+        if !(spec.slip_velocity.is_finite() && spec.slip_velocity > 0.0) {
+            return Err(invalid(
+                "slip_velocity",
+                spec.slip_velocity,
+                "must be finite and > 0",
+            ));
+        }
+        let tilt_ok = spec.reference_tilt.is_finite()
+            && spec.reference_tilt.abs() < 0.8 * g.wall_split_tilt();
+        if !tilt_ok {
+            return Err(invalid(
+                "reference_tilt",
+                spec.reference_tilt,
+                "must be below 0.8 of the tilt at which the wall contact splits (see docs/contact-geometry.md)",
+            ));
+        }
+        let pair = ContactPair::try_new(
+            g,
+            &spec.peg,
+            &spec.hole,
+            spec.reference_tilt.abs(),
+            EllipticityMethod::Exact,
+        )?;
+        Ok(CompliantParams { spec, pair })
+    }
+
+    /// The value of the model parameter `name` (one of `P_NAMES`).
+    fn value(&self, name: &str, load: &Load) -> Option<f64> {
+        let s = &self.spec;
+        let g = &s.geometry;
+        let hertz = |c: &HertzContact, what: &str| match what {
+            "sum" => Some(c.sum_curvature),
+            "ma" => Some(c.coefficients.m_a),
+            "mb" => Some(c.coefficients.m_b),
+            "dstar" => Some(c.coefficients.delta_star),
+            _ => None,
+        };
+        Some(match name {
+            "m" => s.mass,
+            "J" => s.inertia,
+            "r" => g.peg_radius,
+            "l_c" => s.com_height,
+            "D" => g.hole_diameter,
+            "rho_p" => g.peg_fillet,
+            "rho_h" => g.hole_fillet,
+            "mu" => s.friction,
+            "v_s" => s.slip_velocity,
+            "k_edge" => self.pair.edge.stiffness(),
+            "k_wall" => self.pair.wall.stiffness(),
+            "f1" => load.axial,
+            "f2" => load.radial,
+            "M" => load.torque,
+            "e_star" => self.pair.edge.contact_modulus,
+            _ => {
+                let (which, what) = name.split_once('_')?;
+                match which {
+                    "edge" => hertz(&self.pair.edge, what)?,
+                    "wall" => hertz(&self.pair.wall, what)?,
+                    _ => return None,
+                }
+            }
+        })
+    }
+
+    /// The generated model's parameter vector (order of `P_NAMES`, the same
+    /// for `compliant_peg` and `compliant_peg_lean`) under `load`.
+    pub fn vector(&self, load: &Load) -> SVector<f64, N_PARAMS> {
+        // Every name is known (tests/compliant_runtime.rs checks it); an
+        // unknown one would read as NaN and stop the integration visibly.
+        SVector::from_fn(|i, _| self.value(P_NAMES[i], load).unwrap_or(f64::NAN))
+    }
+
+    /// Names of `P_NAMES` that [`vector`](Self::vector) does not know (empty).
+    pub fn unknown_names(&self) -> Vec<&'static str> {
+        P_NAMES
+            .iter()
+            .copied()
+            .filter(|n| self.value(n, &Load::default()).is_none())
+            .collect()
+    }
+}

@@ -1,0 +1,263 @@
+//! Dynamic insertion of the compliant peg, classified: inserted, jammed,
+//! wedged, stalled, backed out, or unfinished. This is the entry point of
+//! the jamming/wedging sweep (`src/jamming`).
+//!
+//! ```text
+//! pub fn simulate_insertion(params: &CompliantParams, load: &Load, initial: &PegState,
+//!                           opts: &InsertionOptions) -> Result<InsertionRun, IntegrateError>
+//! ```
+//!
+//! Classification (the integration runs in windows of `opts.window`
+//! seconds, each with terminal events):
+//! - **Inserted** — the bottom face reaches `opts.target_depth`.
+//! - **Exited** — the bottom face rises above the hole's edge fillet
+//!   (depth < `ρ_h`): the loads pull the peg out.
+//! - A window in which the depth advances less than `opts.stall_distance`
+//!   is a **stall**, classified at its end:
+//!   - **Wedged** — two-point contact (edge and wall forces both positive)
+//!     and the line joining the two contact points lies inside both friction
+//!     cones (angle to each contact normal `≤ atan μ`): the two contact
+//!     forces can balance each other whatever the applied load (the paper's
+//!     §4.2, Whitney's wedging geometry).
+//!   - **Jammed** — any other stall in contact: the contact forces, inside
+//!     their friction cones, balance the applied load (the paper's §4.1).
+//!   - **Stalled** — no contact force at all (the applied load does not
+//!     push the peg in, e.g. zero axial force).
+//! - **Unfinished** — `opts.t_max` reached while the peg still moves.
+//!
+//! With the regularized friction law a stuck peg creeps at a speed of the
+//! order of `v_s`; `stall_distance` must exceed `v_s · window` times the
+//! friction utilisation to see the stall (defaults: `v_s = 1e-5 m/s` in
+//! scenes, window 20 ms, stall distance 2 µm).
+
+use super::initial::PegState;
+use super::params::{CompliantParams, Load};
+use super::system::{CompliantSystem, N_STATE, Sample};
+use crate::integrate::{
+    Direction, Event, IntegrateError, Method, Options, Solver, Stats, StopReason,
+};
+use nalgebra::SVector;
+
+/// Which integrator runs the insertion.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Integrator {
+    /// Adaptive explicit Dormand–Prince 5(4): slow (steps limited by the
+    /// contact frequency and the friction time constant) but reliable.
+    #[default]
+    Explicit,
+}
+
+/// Options of [`simulate_insertion`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct InsertionOptions {
+    /// Depth of the bottom face at which the insertion counts as done (m).
+    pub target_depth: f64,
+    /// Longest simulated time (s).
+    pub t_max: f64,
+    /// Length of a classification window (s).
+    pub window: f64,
+    /// Depth progress per window below which the peg counts as stuck (m).
+    pub stall_distance: f64,
+    /// Relative and absolute tolerances of the integrator.
+    pub rtol: f64,
+    /// Absolute tolerance (state units: m, rad, m/s, J).
+    pub atol: f64,
+    /// The integrator.
+    pub integrator: Integrator,
+}
+
+impl Default for InsertionOptions {
+    fn default() -> Self {
+        InsertionOptions {
+            target_depth: 0.02,
+            t_max: 1.0,
+            window: 0.02,
+            stall_distance: 2e-6,
+            rtol: 1e-6,
+            atol: 1e-10,
+            integrator: Integrator::Explicit,
+        }
+    }
+}
+
+/// How an insertion ended (an expected outcome, not an error).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum InsertionOutcome {
+    /// The target depth was reached at time `t`.
+    Inserted { t: f64 },
+    /// Stuck in two-point contact with the contact line inside both
+    /// friction cones.
+    Wedged {
+        t: f64,
+        depth: f64,
+        theta: f64,
+        f_edge: f64,
+        f_wall: f64,
+    },
+    /// Stuck in contact, the contact forces balancing the applied load.
+    Jammed {
+        t: f64,
+        depth: f64,
+        theta: f64,
+        f_edge: f64,
+        f_wall: f64,
+    },
+    /// Not moving and not in contact.
+    Stalled { t: f64, depth: f64 },
+    /// The peg left the hole at time `t`.
+    Exited { t: f64 },
+    /// Still moving at `t_max`.
+    Unfinished { t: f64, depth: f64 },
+    /// The integrator could not continue (step size underflow, non-finite
+    /// values, step budget).
+    Failed { reason: StopReason },
+}
+
+/// The outcome with the final state and the integrator's work.
+#[derive(Clone, Debug)]
+pub struct InsertionRun {
+    /// How the insertion ended.
+    pub outcome: InsertionOutcome,
+    /// Time and state at the end.
+    pub t: f64,
+    /// State at the end.
+    pub y: SVector<f64, N_STATE>,
+    /// Contact and energy quantities at the end.
+    pub last: Sample,
+    /// Integrator counters summed over all windows.
+    pub stats: Stats,
+}
+
+fn add(total: &mut Stats, s: &Stats) {
+    total.steps += s.steps;
+    total.rejected += s.rejected;
+    total.rhs_calls += s.rhs_calls;
+    total.jacobian_calls += s.jacobian_calls;
+    total.time_derivative_calls += s.time_derivative_calls;
+    total.lu_factorizations += s.lu_factorizations;
+    total.event_calls += s.event_calls;
+}
+
+/// Whether the segment between the two contact points of a two-point state
+/// lies inside both friction cones (see the module documentation).
+pub fn contact_line_in_cones(params: &CompliantParams, y: &SVector<f64, N_STATE>) -> bool {
+    let g = &params.spec.geometry;
+    let (x, z, theta) = (y[0], y[1], y[2]);
+    // Mirror a negative lean onto a positive one.
+    let (x, theta) = if theta < 0.0 {
+        (-x, -theta)
+    } else {
+        (x, theta)
+    };
+    let (s, c) = theta.sin_cos();
+    let half_d = 0.5 * g.hole_diameter;
+    // Edge contact point on the left edge fillet, normal e_r on the peg.
+    let (ax, az) = (
+        -(half_d + g.hole_fillet) + g.hole_fillet * c,
+        g.hole_fillet - g.hole_fillet * s,
+    );
+    // Wall contact point on the right wall, normal (−1, 0) on the peg.
+    let lc = params.spec.com_height;
+    let bz = z + (lc - g.peg_fillet) * c - (g.peg_radius - g.peg_fillet) * s;
+    let (bx, _) = (half_d, x);
+    let (dx, dz) = (bx - ax, bz - az);
+    let len = dx.hypot(dz);
+    let cone = params.spec.friction.atan();
+    // Angle between A→B and n_A = (cos θ, −sin θ); between B→A and n_B = (−1, 0).
+    let angle_a = ((dx * c - dz * s) / len).clamp(-1.0, 1.0).acos();
+    let angle_b = (dx / len).clamp(-1.0, 1.0).acos();
+    angle_a <= cone && angle_b <= cone
+}
+
+/// Simulates the insertion of the peg from `initial` under the constant
+/// `load`, and classifies how it ends (see the module documentation).
+///
+/// # Errors
+/// [`IntegrateError`] for invalid options (tolerances, times) or a
+/// non-finite initial state.
+pub fn simulate_insertion(
+    params: &CompliantParams,
+    load: &Load,
+    initial: &PegState,
+    opts: &InsertionOptions,
+) -> Result<InsertionRun, IntegrateError> {
+    let sys = CompliantSystem::new(params, load);
+    let lc = params.spec.com_height;
+    let exit_depth = params.spec.geometry.hole_fillet;
+    let target = opts.target_depth;
+    let depth = move |y: &SVector<f64, N_STATE>| y[1] + lc * y[2].cos();
+    let mut stats = Stats::default();
+    let (mut t, mut y) = (0.0, initial.to_vector());
+    let finish = |outcome, t, y: SVector<f64, N_STATE>, stats| InsertionRun {
+        outcome,
+        t,
+        y,
+        last: sys.sample(&y),
+        stats,
+    };
+    let method = match opts.integrator {
+        Integrator::Explicit => Method::Dopri5,
+    };
+    while t < opts.t_max {
+        let t_end = (t + opts.window).min(opts.t_max);
+        let mut options = Options::with_tolerances(opts.rtol, opts.atol);
+        options.store = false;
+        let mut solver = Solver::new(method, options)
+            .with_event(
+                Event::new(move |_, y| depth(y) - target)
+                    .direction(Direction::Rising)
+                    .terminal(),
+            )
+            .with_event(
+                Event::new(move |_, y| depth(y) - exit_depth)
+                    .direction(Direction::Falling)
+                    .terminal(),
+            );
+        let sol = solver.solve(&sys, t, y, t_end)?;
+        add(&mut stats, &sol.stats);
+        let d0 = depth(&y);
+        (t, y) = (sol.t_final, sol.x_final);
+        match sol.stop {
+            StopReason::Event { index: 0, t } => {
+                return Ok(finish(InsertionOutcome::Inserted { t }, t, y, stats));
+            }
+            StopReason::Event { t, .. } => {
+                return Ok(finish(InsertionOutcome::Exited { t }, t, y, stats));
+            }
+            StopReason::ReachedEnd => {}
+            reason => return Ok(finish(InsertionOutcome::Failed { reason }, t, y, stats)),
+        }
+        let d1 = depth(&y);
+        if d1 - d0 < opts.stall_distance {
+            let s = sys.sample(&y);
+            let (f_edge, f_wall, theta) = (s.f_edge, s.f_wall, y[2]);
+            let outcome = if f_edge > 0.0 && f_wall > 0.0 && contact_line_in_cones(params, &y) {
+                InsertionOutcome::Wedged {
+                    t,
+                    depth: d1,
+                    theta,
+                    f_edge,
+                    f_wall,
+                }
+            } else if f_edge > 0.0 || f_wall > 0.0 {
+                InsertionOutcome::Jammed {
+                    t,
+                    depth: d1,
+                    theta,
+                    f_edge,
+                    f_wall,
+                }
+            } else {
+                InsertionOutcome::Stalled { t, depth: d1 }
+            };
+            return Ok(finish(outcome, t, y, stats));
+        }
+    }
+    let d = depth(&y);
+    Ok(finish(
+        InsertionOutcome::Unfinished { t, depth: d },
+        t,
+        y,
+        stats,
+    ))
+}

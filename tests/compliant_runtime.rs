@@ -1,0 +1,86 @@
+//! Runtime of the compliant model: the parameter vector matches the
+//! generated model's names, the two-point start has both contact forces
+//! positive, and bad input is refused with the field named.
+
+use pegdyn::compliant::{CompliantParams, CompliantSpec, CompliantSystem, Load, PegState};
+use pegdyn::hertz::{HertzError, Material};
+
+fn field(r: Result<CompliantParams, HertzError>) -> String {
+    match r {
+        Err(HertzError::Invalid { field, .. }) => field,
+        other => panic!("expected an error, got {other:?}"),
+    }
+}
+
+#[test]
+fn every_model_parameter_has_a_value() {
+    let p = CompliantParams::try_new(CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, 0.1)).unwrap();
+    assert!(p.unknown_names().is_empty(), "{:?}", p.unknown_names());
+    let v = p.vector(&Load {
+        axial: 1.0,
+        radial: 2.0,
+        torque: 3.0,
+    });
+    assert!(v.iter().all(|x| x.is_finite()));
+}
+
+#[test]
+fn tilted_peg_in_two_point_contact_has_both_forces_positive() {
+    let p = CompliantParams::try_new(CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, 0.1)).unwrap();
+    for theta in [0.004, 0.01, 0.03] {
+        let s = PegState::two_point(&p, theta, 1e-7).unwrap();
+        let sample = CompliantSystem::new(&p, &Load::default()).sample(&s.to_vector());
+        assert!(
+            sample.f_edge > 0.0 && sample.f_wall > 0.0,
+            "θ = {theta}: {sample:?}"
+        );
+        assert!(
+            (sample.delta_edge - 1e-7).abs() < 1e-12 && (sample.delta_wall - 1e-7).abs() < 1e-12
+        );
+        // Depth ≈ (D − 2r cos θ)/sin θ, the sharp-edged two-point geometry
+        // (the fillets shift the contact points by fractions of ρ).
+        let r = 0.5 * 0.05 * (1.0 - 0.002);
+        let expected = (0.05 - 2.0 * r * theta.cos()) / theta.sin();
+        assert!(
+            (s.depth(&p) / expected - 1.0).abs() < 0.1,
+            "depth {} vs {expected}",
+            s.depth(&p)
+        );
+    }
+}
+
+#[test]
+fn bad_input_is_refused_with_the_field_named() {
+    let ok = CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, 0.1);
+    let mut s = ok;
+    s.geometry.peg_radius = 0.025;
+    assert_eq!(field(CompliantParams::try_new(s)), "peg_radius");
+    let mut s = ok;
+    s.friction = -0.1;
+    assert_eq!(field(CompliantParams::try_new(s)), "friction");
+    let mut s = ok;
+    s.peg = Material {
+        youngs_modulus: 0.0,
+        poisson_ratio: 0.3,
+    };
+    assert_eq!(field(CompliantParams::try_new(s)), "peg.youngs_modulus");
+    let mut s = ok;
+    s.hole = Material {
+        youngs_modulus: 2e11,
+        poisson_ratio: 0.5,
+    };
+    assert_eq!(field(CompliantParams::try_new(s)), "hole.poisson_ratio");
+    let mut s = ok;
+    s.hole.poisson_ratio = -1.2;
+    assert_eq!(field(CompliantParams::try_new(s)), "hole.poisson_ratio");
+    let mut s = ok;
+    s.slip_velocity = 0.0;
+    assert_eq!(field(CompliantParams::try_new(s)), "slip_velocity");
+    let mut s = ok;
+    s.reference_tilt = 0.06;
+    assert_eq!(field(CompliantParams::try_new(s)), "reference_tilt");
+    let p = CompliantParams::try_new(ok).unwrap();
+    assert!(
+        matches!(PegState::two_point(&p, 0.0, 0.0), Err(HertzError::Invalid { field, .. }) if field == "tilt")
+    );
+}
