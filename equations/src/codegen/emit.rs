@@ -8,16 +8,17 @@
 //! [`crate::eval::unary`] (NaN propagates). Operations are counted as they
 //! are emitted, so the counts are those of the code.
 
-use proc_macro2::{Ident, Literal, Span, TokenStream};
+use proc_macro2::{Ident, Literal, TokenStream};
 use quote::quote;
 
 use super::ops::OpCounts;
 use super::schedule::{Names, Schedule, as_integer, const_exponent, is_repeated_mul};
+use super::tokens::{constant, ident, let_base, lit_signed, method};
 use crate::graph::{Binary, Graph, Id, Node, Sym, Unary};
 
 /// Binding strength of an emitted fragment, loosest first.
 #[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Debug)]
-enum Prec {
+pub(crate) enum Prec {
     /// `a + b`, `a - b`
     Sum,
     /// `a * b`, `a / b`
@@ -29,13 +30,13 @@ enum Prec {
 }
 
 /// An emitted expression and how tightly it binds.
-struct Frag {
-    ts: TokenStream,
+pub(crate) struct Frag {
+    pub(crate) ts: TokenStream,
     prec: Prec,
 }
 
 impl Frag {
-    fn new(ts: TokenStream, prec: Prec) -> Frag {
+    pub(crate) fn new(ts: TokenStream, prec: Prec) -> Frag {
         Frag { ts, prec }
     }
 
@@ -44,21 +45,6 @@ impl Frag {
         let ts = self.ts;
         if self.prec < min { quote!((#ts)) } else { ts }
     }
-}
-
-/// An `f64` literal of a finite, non-negative value.
-pub(crate) fn lit(v: f64) -> Literal {
-    Literal::f64_unsuffixed(v)
-}
-
-/// A `usize` literal without suffix.
-pub(crate) fn ulit(n: usize) -> Literal {
-    Literal::usize_unsuffixed(n)
-}
-
-/// An identifier.
-pub(crate) fn ident(s: &str) -> Ident {
-    Ident::new(s, Span::call_site())
 }
 
 /// Emits the expressions of one function.
@@ -369,56 +355,4 @@ impl<'a> Emitter<'a> {
             }
         }
     }
-}
-
-/// The `f64` method implementing a transcendental function.
-fn method(op: Unary) -> &'static str {
-    match op {
-        Unary::Sin => "sin",
-        Unary::Cos => "cos",
-        Unary::Tan => "tan",
-        Unary::Asin => "asin",
-        Unary::Acos => "acos",
-        Unary::Atan => "atan",
-        Unary::Exp => "exp",
-        Unary::Expm1 => "exp_m1",
-        Unary::Ln => "ln",
-        Unary::Ln1p => "ln_1p",
-        Unary::Tanh => "tanh",
-        Unary::Abs => "abs",
-        Unary::Sign => "sign",
-        Unary::Max0 => "max0",
-        Unary::Step => "step",
-    }
-}
-
-/// A readable base name for a `let`: `sin_theta` for a function of a
-/// symbol, `sqrt_x` for its root; `None` for a numbered temporary.
-fn let_base(g: &Graph, node: &Node, sym_name: &dyn Fn(Sym) -> String) -> Option<String> {
-    let sym = |a: Id| match g.node(a) {
-        Node::Sym(s) => Some(sym_name(s)),
-        _ => None,
-    };
-    match node {
-        Node::Unary(op, a) => sym(*a).map(|s| format!("{}_{s}", method(*op))),
-        Node::Pow(b, e) if const_exponent(g, *e) == Some(0.5) => {
-            sym(*b).map(|s| format!("sqrt_{s}"))
-        }
-        _ => None,
-    }
-}
-
-/// A constant; negative ones as `-c`.
-fn constant(v: f64) -> Frag {
-    let l = lit(v.abs());
-    if v < 0.0 {
-        Frag::new(quote!(-#l), Prec::Prefix)
-    } else {
-        Frag::new(quote!(#l), Prec::Atom)
-    }
-}
-
-/// A literal that may be negative, as tokens.
-fn lit_signed(v: f64) -> TokenStream {
-    constant(v).ts
 }

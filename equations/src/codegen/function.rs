@@ -6,9 +6,10 @@ use std::collections::{BTreeMap, BTreeSet};
 use proc_macro2::TokenStream;
 use quote::quote;
 
-use super::emit::{Emitter, ident, ulit};
+use super::emit::Emitter;
 use super::ops::ReportRow;
 use super::schedule::{Names, Schedule, snake_case};
+use super::tokens::{ident, ulit};
 use crate::graph::{Graph, Id, Sym};
 use crate::model::{FnSpec, Output};
 

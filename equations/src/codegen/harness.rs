@@ -10,7 +10,7 @@
 use proc_macro2::TokenStream;
 use quote::{format_ident, quote};
 
-use super::emit::ident;
+use super::tokens::ident;
 use crate::error::GenError;
 use crate::model::{Module, Output};
 

@@ -17,6 +17,7 @@ pub mod function;
 pub mod harness;
 pub mod ops;
 pub mod schedule;
+mod tokens;
 pub mod verify;
 
 use std::path::Path;
@@ -29,7 +30,7 @@ pub use ops::{OpCounts, Report, ReportRow};
 use crate::error::GenError;
 use crate::graph::Graph;
 use crate::model::Module;
-use emit::{ident, ulit};
+use tokens::{ident, ulit};
 
 /// Name of the generated source file in the output directory.
 pub const SOURCE_FILE: &str = "generated.rs";
