@@ -25,6 +25,8 @@ pub(crate) enum Attempt<const N: usize> {
     },
     /// A stage value or the new state was not finite.
     NonFinite,
+    /// The iteration matrix of an implicit method was singular.
+    Singular,
 }
 
 /// A one-step method as seen by the driver.

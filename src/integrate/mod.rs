@@ -1,5 +1,6 @@
 //! Integrators for [`OdeSystem`]s: fixed-step RK4, adaptive Dormand–Prince
-//! 5(4) with dense output, and event location.
+//! 5(4) with dense output, the L-stable Rosenbrock method RODAS3 for stiff
+//! systems, and event location for all of them.
 //!
 //! Methods are data ([`tableau`]) run by one engine; one driver loop does
 //! step control, event location and output for all of them. Expected ends
@@ -25,7 +26,9 @@ mod dense;
 mod driver;
 mod events;
 mod explicit_rk;
+mod lu;
 mod options;
+mod rosenbrock;
 mod solution;
 mod step_control;
 pub mod tableau;
@@ -40,7 +43,8 @@ pub use solution::{EventHit, Solution, Stats, StopReason};
 
 use driver::Hooks;
 use explicit_rk::ExplicitRk;
-use tableau::Tableau;
+use rosenbrock::Rosenbrock;
+use tableau::{RosenbrockTableau, Tableau};
 
 /// An integration method.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -56,6 +60,10 @@ pub enum Method {
     /// Adaptive Dormand–Prince 5(4) with PI step control and fourth-order
     /// dense output. The default for non-stiff problems.
     Dopri5,
+    /// Adaptive L-stable Rosenbrock method RODAS3, order 3(2), one
+    /// Jacobian and one LU factorization per step, cubic Hermite dense
+    /// output. For stiff problems (stiff contacts, large damping).
+    Rodas3,
 }
 
 impl Method {
@@ -64,6 +72,7 @@ impl Method {
         match self {
             Method::Rk4 { .. } => "rk4",
             Method::Dopri5 => "dopri5",
+            Method::Rodas3 => "rodas3",
         }
     }
 }
@@ -170,6 +179,19 @@ impl<'a, const N: usize> Solver<'a, N> {
             }
             Method::Dopri5 => {
                 let mut stepper = ExplicitRk::<N, 7>::new(Tableau::dopri5());
+                driver::run(
+                    &mut stepper,
+                    system,
+                    start,
+                    t_end,
+                    options,
+                    None,
+                    events,
+                    &mut hooks,
+                )
+            }
+            Method::Rodas3 => {
+                let mut stepper = Rosenbrock::<N, 4>::new(&RosenbrockTableau::rodas3());
                 driver::run(
                     &mut stepper,
                     system,

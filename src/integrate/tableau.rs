@@ -160,3 +160,61 @@ pub fn dopri5_dense_weights(theta: f64) -> [f64; 7] {
     }
     w
 }
+
+/// A Rosenbrock method with `S` stages in the form of Hairer & Wanner II,
+/// §IV.7, eq. (7.4):
+/// `(I − hγJ) kᵢ = h f(t + αᵢh, x + Σⱼ<ᵢ αᵢⱼkⱼ) + hJ Σⱼ<ᵢ γᵢⱼkⱼ + γᵢh² ∂f/∂t`,
+/// `x₁ = x + Σ bᵢkᵢ`, with `αᵢ = Σⱼ αᵢⱼ`, `γᵢ = γ + Σⱼ<ᵢ γᵢⱼ`.
+///
+/// The stepper ([`super::rosenbrock`]) runs the equivalent transformed form
+/// (eq. (7.25)) whose coefficients it derives from these once.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RosenbrockTableau<const S: usize> {
+    /// Method name as used in bench ids and CLI options.
+    pub name: &'static str,
+    /// Diagonal coefficient γ (the same for every stage).
+    pub gamma: f64,
+    /// Strictly lower-triangular `αᵢⱼ`.
+    pub alpha: [[f64; S]; S],
+    /// Strictly lower-triangular `γᵢⱼ` (the diagonal is [`Self::gamma`]).
+    pub gamma_lower: [[f64; S]; S],
+    /// Weights `b` of the propagated solution.
+    pub b: [f64; S],
+    /// Weights `b̂` of the embedded solution (error estimate only).
+    pub b_embedded: [f64; S],
+    /// Order of `b` (with the exact Jacobian).
+    pub order: u32,
+    /// Order of `b̂`.
+    pub embedded_order: u32,
+}
+
+impl RosenbrockTableau<4> {
+    /// RODAS3 (Sandu et al., *Atmos. Environ.* 31 (1997) 3459, "Rodas3"):
+    /// four stages, order 3 with embedded order 2, stiffly accurate and
+    /// L-stable (`R(∞) = 0`), γ = 1/2. Coefficients converted from the
+    /// transformed form of that paper (`A`, `C`, `M`, `E`) to eq. (7.4) by
+    /// `Γ = (diag(1/γ) − C)⁻¹`, `α = AΓ`, `b = MΓ`, `b̂ = (M − E)Γ`; the
+    /// tests check them against the Rosenbrock order conditions.
+    pub const fn rodas3() -> Self {
+        RosenbrockTableau {
+            name: "rodas3",
+            gamma: 0.5,
+            alpha: [
+                [0.0; 4],
+                [0.0; 4],
+                [1.0, 0.0, 0.0, 0.0],
+                [0.75, -0.25, 0.5, 0.0],
+            ],
+            gamma_lower: [
+                [0.0; 4],
+                [1.0, 0.0, 0.0, 0.0],
+                [-0.25, -0.25, 0.0, 0.0],
+                [1.0 / 12.0, 1.0 / 12.0, -2.0 / 3.0, 0.0],
+            ],
+            b: [5.0 / 6.0, -1.0 / 6.0, -1.0 / 6.0, 0.5],
+            b_embedded: [0.75, -0.25, 0.5, 0.0],
+            order: 3,
+            embedded_order: 2,
+        }
+    }
+}

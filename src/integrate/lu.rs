@@ -1,0 +1,93 @@
+//! LU factorization with partial pivoting on fixed-size matrices, for the
+//! iteration matrix `I/(hγ) − J` of the Rosenbrock stepper.
+//!
+//! nalgebra's `SMatrix::lu()` needs the bound
+//! `Const<N>: DimMin<Const<N>, Output = Const<N>>`, which would then have to
+//! appear on every function generic over the state dimension (the solver,
+//! the CLI). This Doolittle elimination works for any `N`, allocates
+//! nothing, and reports a zero or non-finite pivot instead of dividing by it.
+
+use nalgebra::{SMatrix, SVector};
+
+/// `P A = L U` packed in one matrix (unit `L` below the diagonal).
+#[derive(Debug, Clone)]
+pub(crate) struct Lu<const N: usize> {
+    lu: SMatrix<f64, N, N>,
+    /// Row `i` of `P A` is row `perm[i]` of `A`.
+    perm: [usize; N],
+}
+
+impl<const N: usize> Lu<N> {
+    /// Factorizes `a`; `None` if a pivot is zero or not finite (singular or
+    /// non-finite matrix).
+    pub(crate) fn new(mut a: SMatrix<f64, N, N>) -> Option<Self> {
+        let mut perm = [0; N];
+        for (i, p) in perm.iter_mut().enumerate() {
+            *p = i;
+        }
+        for k in 0..N {
+            let pivot_row = (k..N)
+                .max_by(|&i, &j| a[(i, k)].abs().total_cmp(&a[(j, k)].abs()))
+                .unwrap_or(k);
+            let pivot = a[(pivot_row, k)];
+            if pivot == 0.0 || !pivot.is_finite() {
+                return None;
+            }
+            if pivot_row != k {
+                a.swap_rows(k, pivot_row);
+                perm.swap(k, pivot_row);
+            }
+            for i in k + 1..N {
+                let l = a[(i, k)] / pivot;
+                a[(i, k)] = l;
+                for j in k + 1..N {
+                    a[(i, j)] -= l * a[(k, j)];
+                }
+            }
+        }
+        Some(Lu { lu: a, perm })
+    }
+
+    /// Solves `A y = b`.
+    pub(crate) fn solve(&self, b: &SVector<f64, N>) -> SVector<f64, N> {
+        let mut y = SVector::<f64, N>::from_fn(|i, _| b[self.perm[i]]);
+        for i in 0..N {
+            for j in 0..i {
+                y[i] -= self.lu[(i, j)] * y[j];
+            }
+        }
+        for i in (0..N).rev() {
+            for j in i + 1..N {
+                y[i] -= self.lu[(i, j)] * y[j];
+            }
+            y[i] /= self.lu[(i, i)];
+        }
+        y
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Lu;
+    use nalgebra::{Matrix3, Vector3};
+
+    #[test]
+    fn solves_like_nalgebra_lu_with_pivoting() {
+        // Zero leading entry forces a row swap.
+        let a = Matrix3::new(0.0, 2.0, 1.0, 1.0, -1.0, 4.0, 3.0, 0.5, -2.0);
+        let b = Vector3::new(1.0, -2.0, 0.25);
+        let ours = Lu::new(a).expect("regular").solve(&b);
+        let theirs = a.lu().solve(&b).expect("regular");
+        assert!((ours - theirs).amax() < 1e-14);
+        assert!((a * ours - b).amax() < 1e-14);
+    }
+
+    #[test]
+    fn reports_singular_and_non_finite_matrices() {
+        let singular = Matrix3::new(1.0, 2.0, 3.0, 2.0, 4.0, 6.0, 0.0, 1.0, 1.0);
+        assert!(Lu::new(singular).is_none());
+        let mut nan = Matrix3::identity();
+        nan[(1, 1)] = f64::NAN;
+        assert!(Lu::new(nan).is_none());
+    }
+}
