@@ -17,8 +17,8 @@ pub mod cart_pole {
     /// Reference: Tedrake, Underactuated Robotics, ch. 3 (cart-pole). Units: SI.
     ///
     /// # Inputs
-    /// - `x` = [xc, theta, xcdot, thetadot]
-    /// - `p` = [mc, m, l, g, u]
+    /// - `x` = (`xc`, `theta`, `xcdot`, `thetadot`)
+    /// - `p` = (`mc`, `m`, `l`, `g`, `u`)
     ///
     /// # Outputs
     /// - `mass`: symmetric 2×2 matrix
@@ -63,8 +63,8 @@ pub mod cart_pole {
     /// Reference: Tedrake, Underactuated Robotics, ch. 3 (cart-pole). Units: SI.
     ///
     /// # Inputs
-    /// - `x` = [xc, theta, xcdot, thetadot]
-    /// - `p` = [mc, m, l, g, u]
+    /// - `x` = (`xc`, `theta`, `xcdot`, `thetadot`)
+    /// - `p` = (`mc`, `m`, `l`, `g`, `u`)
     ///
     /// # Outputs
     /// - `xdot`: vector of 4
@@ -108,9 +108,9 @@ pub mod cart_pole {
     /// Reference: Tedrake, Underactuated Robotics, ch. 3 (cart-pole). Units: SI.
     ///
     /// # Inputs
-    /// - `x` = [xc, theta, xcdot, thetadot]
-    /// - `qdd` = [xcddot, thetaddot]
-    /// - `p` = [mc, m, l, g, u]
+    /// - `x` = (`xc`, `theta`, `xcdot`, `thetadot`)
+    /// - `qdd` = (`xcddot`, `thetaddot`)
+    /// - `p` = (`mc`, `m`, `l`, `g`, `u`)
     ///
     /// # Outputs
     /// - `terms`: 2×4 matrix
@@ -156,8 +156,8 @@ pub mod cart_pole {
     /// Reference: Tedrake, Underactuated Robotics, ch. 3 (cart-pole). Units: SI.
     ///
     /// # Inputs
-    /// - `x` = [xc, theta, xcdot, thetadot]
-    /// - `p` = [mc, m, l, g, u]
+    /// - `x` = (`xc`, `theta`, `xcdot`, `thetadot`)
+    /// - `p` = (`mc`, `m`, `l`, `g`, `u`)
     ///
     /// # Outputs
     /// - `energy`: scalar

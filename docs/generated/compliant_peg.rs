@@ -44,8 +44,8 @@ pub mod compliant_peg {
     /// Right-hand side of y = (x, z, theta, xdot, zdot, thetadot, work, dissipation): M qdd = applied (50) + contact normal forces (-grad of the Hertz potential (62)) + Coulomb friction; work and dissipation rates. SI units.
     ///
     /// # Inputs
-    /// - `y` = [x, z, theta, xdot, zdot, thetadot, work, dissipation]
-    /// - `p` = [m, J, r, l_c, D, rho_p, rho_h, mu, v_s, k_edge, k_wall, f1, f2, M, e_star, edge_sum, edge_ma, edge_mb, edge_dstar, wall_sum, wall_ma, wall_mb, wall_dstar]
+    /// - `y` = (`x`, `z`, `theta`, `xdot`, `zdot`, `thetadot`, `work`, `dissipation`)
+    /// - `p` = (`m`, `J`, `r`, `l_c`, `D`, `rho_p`, `rho_h`, `mu`, `v_s`, `k_edge`, `k_wall`, `f1`, `f2`, `M`, `e_star`, `edge_sum`, `edge_ma`, `edge_mb`, `edge_dstar`, `wall_sum`, `wall_ma`, `wall_mb`, `wall_dstar`)
     ///
     /// # Outputs
     /// - `ydot`: vector of 8
@@ -171,8 +171,8 @@ pub mod compliant_peg {
     /// Exact Jacobian d(rhs)/dy, row-major 8x8.
     ///
     /// # Inputs
-    /// - `y` = [x, z, theta, xdot, zdot, thetadot, work, dissipation]
-    /// - `p` = [m, J, r, l_c, D, rho_p, rho_h, mu, v_s, k_edge, k_wall, f1, f2, M, e_star, edge_sum, edge_ma, edge_mb, edge_dstar, wall_sum, wall_ma, wall_mb, wall_dstar]
+    /// - `y` = (`x`, `z`, `theta`, `xdot`, `zdot`, `thetadot`, `work`, `dissipation`)
+    /// - `p` = (`m`, `J`, `r`, `l_c`, `D`, `rho_p`, `rho_h`, `mu`, `v_s`, `k_edge`, `k_wall`, `f1`, `f2`, `M`, `e_star`, `edge_sum`, `edge_ma`, `edge_mb`, `edge_dstar`, `wall_sum`, `wall_ma`, `wall_mb`, `wall_dstar`)
     ///
     /// # Outputs
     /// - `jac`: 8×8 matrix
@@ -558,8 +558,8 @@ pub mod compliant_peg {
     /// Per contact (edge_left, wall_right, edge_right, wall_left): normal force f (N), friction force along the tangent (N), penetration delta (m), sliding velocity (m/s), contact ellipse a, b (m) and maximum pressure p0 (Pa) ((9)-(11)).
     ///
     /// # Inputs
-    /// - `y` = [x, z, theta, xdot, zdot, thetadot, work, dissipation]
-    /// - `p` = [m, J, r, l_c, D, rho_p, rho_h, mu, v_s, k_edge, k_wall, f1, f2, M, e_star, edge_sum, edge_ma, edge_mb, edge_dstar, wall_sum, wall_ma, wall_mb, wall_dstar]
+    /// - `y` = (`x`, `z`, `theta`, `xdot`, `zdot`, `thetadot`, `work`, `dissipation`)
+    /// - `p` = (`m`, `J`, `r`, `l_c`, `D`, `rho_p`, `rho_h`, `mu`, `v_s`, `k_edge`, `k_wall`, `f1`, `f2`, `M`, `e_star`, `edge_sum`, `edge_ma`, `edge_mb`, `edge_dstar`, `wall_sum`, `wall_ma`, `wall_mb`, `wall_dstar`)
     ///
     /// # Outputs
     /// - `normal`: vector of 4
@@ -694,8 +694,8 @@ pub mod compliant_peg {
     /// Kinetic energy (59) (J), contact potential (63) (J) and insertion depth of the bottom face (m).
     ///
     /// # Inputs
-    /// - `y` = [x, z, theta, xdot, zdot, thetadot, work, dissipation]
-    /// - `p` = [m, J, r, l_c, D, rho_p, rho_h, mu, v_s, k_edge, k_wall, f1, f2, M, e_star, edge_sum, edge_ma, edge_mb, edge_dstar, wall_sum, wall_ma, wall_mb, wall_dstar]
+    /// - `y` = (`x`, `z`, `theta`, `xdot`, `zdot`, `thetadot`, `work`, `dissipation`)
+    /// - `p` = (`m`, `J`, `r`, `l_c`, `D`, `rho_p`, `rho_h`, `mu`, `v_s`, `k_edge`, `k_wall`, `f1`, `f2`, `M`, `e_star`, `edge_sum`, `edge_ma`, `edge_mb`, `edge_dstar`, `wall_sum`, `wall_ma`, `wall_mb`, `wall_dstar`)
     ///
     /// # Outputs
     /// - `kinetic`: scalar

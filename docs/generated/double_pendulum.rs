@@ -17,8 +17,8 @@ pub mod double_pendulum {
     /// Reference: Goldstein, Classical Mechanics, §1.6 (double pendulum). Units: SI.
     ///
     /// # Inputs
-    /// - `x` = [theta1, theta2, theta1dot, theta2dot]
-    /// - `p` = [m1, m2, l1, l2, g]
+    /// - `x` = (`theta1`, `theta2`, `theta1dot`, `theta2dot`)
+    /// - `p` = (`m1`, `m2`, `l1`, `l2`, `g`)
     ///
     /// # Outputs
     /// - `mass`: symmetric 2×2 matrix
@@ -76,8 +76,8 @@ pub mod double_pendulum {
     /// Reference: Goldstein, Classical Mechanics, §1.6 (double pendulum). Units: SI.
     ///
     /// # Inputs
-    /// - `x` = [theta1, theta2, theta1dot, theta2dot]
-    /// - `p` = [m1, m2, l1, l2, g]
+    /// - `x` = (`theta1`, `theta2`, `theta1dot`, `theta2dot`)
+    /// - `p` = (`m1`, `m2`, `l1`, `l2`, `g`)
     ///
     /// # Outputs
     /// - `xdot`: vector of 4
@@ -137,9 +137,9 @@ pub mod double_pendulum {
     /// Reference: Goldstein, Classical Mechanics, §1.6 (double pendulum). Units: SI.
     ///
     /// # Inputs
-    /// - `x` = [theta1, theta2, theta1dot, theta2dot]
-    /// - `qdd` = [theta1ddot, theta2ddot]
-    /// - `p` = [m1, m2, l1, l2, g]
+    /// - `x` = (`theta1`, `theta2`, `theta1dot`, `theta2dot`)
+    /// - `qdd` = (`theta1ddot`, `theta2ddot`)
+    /// - `p` = (`m1`, `m2`, `l1`, `l2`, `g`)
     ///
     /// # Outputs
     /// - `terms`: 2×4 matrix
@@ -228,8 +228,8 @@ pub mod double_pendulum {
     /// Reference: Goldstein, Classical Mechanics, §1.6 (double pendulum). Units: SI.
     ///
     /// # Inputs
-    /// - `x` = [theta1, theta2, theta1dot, theta2dot]
-    /// - `p` = [m1, m2, l1, l2, g]
+    /// - `x` = (`theta1`, `theta2`, `theta1dot`, `theta2dot`)
+    /// - `p` = (`m1`, `m2`, `l1`, `l2`, `g`)
     ///
     /// # Outputs
     /// - `energy`: scalar

@@ -11,8 +11,8 @@ pub mod hertz {
     /// Semi-axes a, b (m) (9)-(10), maximum pressure p0 (Pa) (11) and approach delta (m) (13) at load Q (N); negative loads count as 0.
     ///
     /// # Inputs
-    /// - `load` = [load]
-    /// - `c` = [c_sum, e_star, c_ma, c_mb, c_dstar]
+    /// - `load` = (`load`)
+    /// - `c` = (`c_sum`, `e_star`, `c_ma`, `c_mb`, `c_dstar`)
     ///
     /// # Outputs
     /// - `a`: scalar
@@ -45,7 +45,7 @@ pub mod hertz {
     /// Stiffness k (N/m^1.5) of Q = k delta^1.5 ((13) inverted).
     ///
     /// # Inputs
-    /// - `c` = [c_sum, e_star, c_ma, c_mb, c_dstar]
+    /// - `c` = (`c_sum`, `e_star`, `c_ma`, `c_mb`, `c_dstar`)
     ///
     /// # Outputs
     /// - `k`: scalar

@@ -16,8 +16,8 @@ pub mod pendulum {
     /// Reference: Goldstein, Classical Mechanics, §1.6. Units: SI.
     ///
     /// # Inputs
-    /// - `x` = [theta, thetadot]
-    /// - `p` = [m, l, g]
+    /// - `x` = (`theta`, `thetadot`)
+    /// - `p` = (`m`, `l`, `g`)
     ///
     /// # Outputs
     /// - `mass`: symmetric 1×1 matrix
@@ -44,8 +44,8 @@ pub mod pendulum {
     /// Reference: Goldstein, Classical Mechanics, §1.6. Units: SI.
     ///
     /// # Inputs
-    /// - `x` = [theta, thetadot]
-    /// - `p` = [m, l, g]
+    /// - `x` = (`theta`, `thetadot`)
+    /// - `p` = (`m`, `l`, `g`)
     ///
     /// # Outputs
     /// - `xdot`: vector of 2
@@ -67,9 +67,9 @@ pub mod pendulum {
     /// Reference: Goldstein, Classical Mechanics, §1.6. Units: SI.
     ///
     /// # Inputs
-    /// - `x` = [theta, thetadot]
-    /// - `qdd` = [thetaddot]
-    /// - `p` = [m, l, g]
+    /// - `x` = (`theta`, `thetadot`)
+    /// - `qdd` = (`thetaddot`)
+    /// - `p` = (`m`, `l`, `g`)
     ///
     /// # Outputs
     /// - `terms`: 1×2 matrix
@@ -94,8 +94,8 @@ pub mod pendulum {
     /// Reference: Goldstein, Classical Mechanics, §1.6. Units: SI.
     ///
     /// # Inputs
-    /// - `x` = [theta, thetadot]
-    /// - `p` = [m, l, g]
+    /// - `x` = (`theta`, `thetadot`)
+    /// - `p` = (`m`, `l`, `g`)
     ///
     /// # Outputs
     /// - `energy`: scalar

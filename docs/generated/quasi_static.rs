@@ -19,10 +19,10 @@ pub mod quasi_static {
     /// Eq. 52: edge force f_a (N), tip force f_b (N) and input moment about C (N m) for two-point sliding contact with the given accelerations.
     ///
     /// # Inputs
-    /// - `pose` = [theta, l]
-    /// - `load` = [f1, f2]
-    /// - `acc` = [xdd, ydd, thdd]
-    /// - `p` = [mu, r, l_c, m, J]
+    /// - `pose` = (`theta`, `l`)
+    /// - `load` = (`f1`, `f2`)
+    /// - `acc` = (`xdd`, `ydd`, `thdd`)
+    /// - `p` = (`mu`, `r`, `l_c`, `m`, `J`)
     ///
     /// # Outputs
     /// - `f_a`: scalar
@@ -73,10 +73,10 @@ pub mod quasi_static {
     /// Eq. 53 (signs corrected): edge force f_a (N) from the normal balance and input moment about C (N m), one-point contact at the edge A.
     ///
     /// # Inputs
-    /// - `pose` = [theta, l]
-    /// - `load` = [f1, f2]
-    /// - `acc` = [xdd, ydd, thdd]
-    /// - `p` = [mu, r, l_c, m, J]
+    /// - `pose` = (`theta`, `l`)
+    /// - `load` = (`f1`, `f2`)
+    /// - `acc` = (`xdd`, `ydd`, `thdd`)
+    /// - `p` = (`mu`, `r`, `l_c`, `m`, `J`)
     ///
     /// # Outputs
     /// - `f_a`: scalar
@@ -117,10 +117,10 @@ pub mod quasi_static {
     /// Eq. 54: tip force f_b (N) from the normal balance and input moment about C (N m), one-point contact at the tip corner B.
     ///
     /// # Inputs
-    /// - `pose` = [theta, l]
-    /// - `load` = [f1, f2]
-    /// - `acc` = [xdd, ydd, thdd]
-    /// - `p` = [mu, r, l_c, m, J]
+    /// - `pose` = (`theta`, `l`)
+    /// - `load` = (`f1`, `f2`)
+    /// - `acc` = (`xdd`, `ydd`, `thdd`)
+    /// - `p` = (`mu`, `r`, `l_c`, `m`, `J`)
     ///
     /// # Outputs
     /// - `f_b`: scalar
@@ -157,9 +157,9 @@ pub mod quasi_static {
     /// Whitney's frame (x lateral, z into the hole, moment about the tip): tip force f_tip (N), edge force f_edge (N) and the moment M (N m) holding the peg in two-point sliding under applied (F_x, F_z) (N); pose = (theta rad, l m), w = (F_x, F_z), q = (mu, r m).
     ///
     /// # Inputs
-    /// - `pose` = [theta, l]
-    /// - `w` = [fx, fz]
-    /// - `q` = [mu, r]
+    /// - `pose` = (`theta`, `l`)
+    /// - `w` = (`fx`, `fz`)
+    /// - `q` = (`mu`, `r`)
     ///
     /// # Outputs
     /// - `f_tip`: scalar
