@@ -193,7 +193,11 @@ fn fn_doc(g: &Graph, spec: &FnSpec, row: &ReportRow) -> String {
     let mut s = spec.doc.trim_end().to_owned();
     s.push_str("\n\n# Inputs\n");
     for i in &spec.inputs {
-        let names: Vec<String> = i.syms.iter().map(|&s| format!("`{}`", g.sym_info(s).name)).collect();
+        let names: Vec<String> = i
+            .syms
+            .iter()
+            .map(|&s| format!("`{}`", g.sym_info(s).name))
+            .collect();
         s.push_str(&format!("- `{}` = ({})\n", i.name, names.join(", ")));
     }
     s.push_str("\n# Outputs\n");
