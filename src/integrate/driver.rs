@@ -195,6 +195,7 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
             &mut stats,
         ),
     };
+    let needs_dense = !events.is_empty() || recorder.times.is_some();
     let mut last_rejected = false;
     let mut last_nonfinite = false;
     let mut attempts = 0usize;
@@ -264,14 +265,15 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
         }
         (last_rejected, last_nonfinite) = (false, false);
         stats.steps += 1;
-        let dense = stepper.interpolant(t, h_try, (&x, &f), (&x1, &f1));
+        // The interpolant is only built when something reads it.
+        let dense = needs_dense.then(|| stepper.interpolant(t, h_try, (&x, &f), (&x1, &f1)));
 
         found.clear();
         for (index, event) in events.iter().enumerate() {
             let g1 = event.eval(t1, &x1);
             stats.event_calls += 1;
-            if let Some(rising) = event.fires(g_prev[index], g1) {
-                let (te, xe, calls) = locate(event, &dense, (t, g_prev[index]), (t1, g1, &x1));
+            if let (Some(rising), Some(dense)) = (event.fires(g_prev[index], g1), &dense) {
+                let (te, xe, calls) = locate(event, dense, (t, g_prev[index]), (t1, g1, &x1));
                 stats.event_calls += calls;
                 found.push(EventHit {
                     index,
@@ -286,7 +288,7 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
         if let Some(p) = found.iter().position(|hit| events[hit.index].is_terminal()) {
             found.truncate(p + 1);
             let hit = found[p].clone();
-            recorder.advance(hit.t, &hit.x, Some(&dense), hooks);
+            recorder.advance(hit.t, &hit.x, dense.as_ref(), hooks);
             solution_events.append(&mut found);
             if let Some(progress) = hooks.progress.as_mut() {
                 progress(hit.t);
@@ -299,7 +301,7 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
         }
         solution_events.append(&mut found);
 
-        recorder.advance(t1, &x1, Some(&dense), hooks);
+        recorder.advance(t1, &x1, dense.as_ref(), hooks);
         if let Some(progress) = hooks.progress.as_mut() {
             progress(t1);
         }

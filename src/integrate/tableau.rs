@@ -1,6 +1,6 @@
 //! Explicit Runge–Kutta methods as data (Butcher tableaux).
 //!
-//! One engine ([`super::explicit_rk`]) runs every tableau here; the tests in
+//! One engine (`integrate/explicit_rk.rs`) runs every tableau here; the tests in
 //! `tests/integrators.rs` check each against the Runge–Kutta order
 //! conditions (Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.2, Table 2.2).
 
@@ -166,7 +166,7 @@ pub fn dopri5_dense_weights(theta: f64) -> [f64; 7] {
 /// `(I − hγJ) kᵢ = h f(t + αᵢh, x + Σⱼ<ᵢ αᵢⱼkⱼ) + hJ Σⱼ<ᵢ γᵢⱼkⱼ + γᵢh² ∂f/∂t`,
 /// `x₁ = x + Σ bᵢkᵢ`, with `αᵢ = Σⱼ αᵢⱼ`, `γᵢ = γ + Σⱼ<ᵢ γᵢⱼ`.
 ///
-/// The stepper ([`super::rosenbrock`]) runs the equivalent transformed form
+/// The stepper (`integrate/rosenbrock.rs`) runs the equivalent transformed form
 /// (eq. (7.25)) whose coefficients it derives from these once.
 #[derive(Debug, Clone, PartialEq)]
 pub struct RosenbrockTableau<const S: usize> {
