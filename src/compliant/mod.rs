@@ -6,7 +6,9 @@
 
 pub mod geometry;
 pub mod initial;
+pub mod output;
 pub mod params;
+pub mod scene;
 pub mod simulate;
 pub mod system;
 

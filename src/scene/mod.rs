@@ -65,7 +65,12 @@ pub struct Kind {
 }
 
 /// Every scene kind `pegdyn` knows. Add a row here for a new kind.
-pub const KINDS: &[Kind] = &[pendulum::KIND, double_pendulum::KIND, jamming::KIND];
+pub const KINDS: &[Kind] = &[
+    pendulum::KIND,
+    double_pendulum::KIND,
+    jamming::KIND,
+    crate::compliant::scene::KIND,
+];
 
 /// A scene read from a file.
 #[derive(Debug)]

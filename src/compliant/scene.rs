@@ -1,0 +1,312 @@
+//! Scene kind `insert_compliant`: a steel peg pushed into a round hole with
+//! Hertz contacts at filleted edges (paper 001, sections 2–3; see
+//! `docs/compliant.md`). Writes the time series (t, x, z, θ, depth, contact
+//! forces, pressures and penetrations, energy terms) as CSV and plots it.
+//!
+//! ```toml
+//! kind = "insert_compliant"
+//! [insert_compliant]
+//! hole_diameter = 0.05      # D, m
+//! clearance_ratio = 0.002   # c = (D - 2r)/D
+//! peg_length = 0.1          # m; solid cylinder: mass, inertia
+//! density = 7850.0          # kg/m^3
+//! # com_height = 0.05       # l_c, m (default peg_length / 2)
+//! peg_fillet = 0.0002       # m (default 0.2 mm)
+//! hole_fillet = 0.0002      # m (default 0.2 mm)
+//! friction = 0.1            # Coulomb mu
+//! slip_velocity = 1e-5      # v_s of the regularized friction law, m/s
+//! contacts = "all"          # "all" | "lean"
+//! axial_force = 5.0         # f1, N (into the hole)
+//! radial_force = 0.0        # f2, N
+//! torque = -0.002           # M, N m
+//! initial_tilt = 0.01       # rad; two-point start, or 0 for centred upright
+//! initial_depth = 0.005     # m, for initial_tilt = 0
+//! target_depth = 0.03       # m; the run stops there
+//! [insert_compliant.peg_material]
+//! youngs_modulus = 210e9    # Pa
+//! poisson_ratio = 0.3
+//! [insert_compliant.hole_material]
+//! youngs_modulus = 210e9
+//! poisson_ratio = 0.3
+//! [integrator]
+//! method = "dopri5"
+//! t_end = 0.2
+//! ```
+
+use serde::Deserialize;
+
+use super::output::write_outputs;
+use super::{
+    CompliantParams, CompliantSpec, CompliantSystem, ContactSet, Load, PegHoleGeometry, PegState,
+};
+use crate::error::{RunError, SceneError, SceneErrors};
+use crate::hertz::{HertzError, Material};
+use crate::integrate::{Direction, Event};
+use crate::scene::simulate::{integrate, integration_summary};
+use crate::scene::validate::Checker;
+use crate::scene::{Document, IntegratorSpec, Kind, RunContext, RunSummary, Scene};
+
+/// Registry entry.
+pub const KIND: Kind = Kind {
+    name: "insert_compliant",
+    about: "compliant (Hertz) peg-in-hole insertion, planar, with friction (paper 001)",
+    parse,
+};
+
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+    let s: InsertCompliantScene = doc.body()?;
+    let built = s.build()?;
+    Ok(Box::new(Ready { scene: s, built }))
+}
+
+fn steel() -> MaterialSpec {
+    MaterialSpec {
+        youngs_modulus: 210e9,
+        poisson_ratio: 0.3,
+    }
+}
+fn default_fillet() -> f64 {
+    super::DEFAULT_FILLET
+}
+fn default_slip() -> f64 {
+    1e-5
+}
+
+/// A material table.
+#[derive(Debug, Clone, Copy, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MaterialSpec {
+    /// Young's modulus, Pa.
+    pub youngs_modulus: f64,
+    /// Poisson's ratio, in (−1, 0.5).
+    pub poisson_ratio: f64,
+}
+
+/// Which contacts to generate.
+#[derive(Debug, Clone, Copy, Deserialize, Default, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum ContactsSpec {
+    /// All four contacts.
+    #[default]
+    All,
+    /// The two of a lean with θ > 0.
+    Lean,
+}
+
+/// The `[insert_compliant]` table (SI units).
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct InsertParams {
+    pub hole_diameter: f64,
+    pub clearance_ratio: f64,
+    pub peg_length: f64,
+    pub density: f64,
+    pub com_height: Option<f64>,
+    #[serde(default = "default_fillet")]
+    pub peg_fillet: f64,
+    #[serde(default = "default_fillet")]
+    pub hole_fillet: f64,
+    pub friction: f64,
+    #[serde(default = "default_slip")]
+    pub slip_velocity: f64,
+    #[serde(default)]
+    pub contacts: ContactsSpec,
+    pub axial_force: f64,
+    #[serde(default)]
+    pub radial_force: f64,
+    #[serde(default)]
+    pub torque: f64,
+    pub initial_tilt: f64,
+    #[serde(default)]
+    pub initial_depth: f64,
+    pub target_depth: f64,
+    #[serde(default = "steel")]
+    pub peg_material: MaterialSpec,
+    #[serde(default = "steel")]
+    pub hole_material: MaterialSpec,
+}
+
+/// An `insert_compliant` scene as written.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct InsertCompliantScene {
+    pub insert_compliant: InsertParams,
+    pub integrator: IntegratorSpec,
+}
+
+/// What the scene builds from its tables.
+#[derive(Debug, Clone, Copy)]
+pub struct Built {
+    /// Checked model parameters.
+    pub params: CompliantParams,
+    /// Applied loads.
+    pub load: Load,
+    /// Initial state.
+    pub initial: PegState,
+}
+
+#[derive(Debug)]
+struct Ready {
+    scene: InsertCompliantScene,
+    built: Built,
+}
+
+/// The scene field a model-level field corresponds to.
+fn scene_field(field: &str) -> String {
+    let t = "insert_compliant";
+    let mapped = match field {
+        "peg_radius" => "clearance_ratio".to_owned(),
+        "mass" | "inertia" => "density".to_owned(),
+        "tilt" => "initial_tilt".to_owned(),
+        f => f
+            .replace("peg.", "peg_material.")
+            .replace("hole.", "hole_material."),
+    };
+    format!("{t}.{mapped}")
+}
+
+fn to_scene_error(e: HertzError) -> SceneErrors {
+    match e {
+        HertzError::Invalid {
+            field,
+            value,
+            reason,
+        } => SceneErrors::from(SceneError::invalid(scene_field(&field), value, reason)),
+        other => SceneErrors::from(SceneError::invalid(
+            "insert_compliant",
+            f64::NAN,
+            other.to_string(),
+        )),
+    }
+}
+
+impl InsertCompliantScene {
+    /// Validates every field and builds the model parameters, loads and
+    /// initial state.
+    pub fn build(&self) -> Result<Built, SceneErrors> {
+        let p = &self.insert_compliant;
+        let f = |k: &str| format!("insert_compliant.{k}");
+        let mut c = Checker::default();
+        let d = c.positive(&f("hole_diameter"), p.hole_diameter);
+        let cr = c.finite(&f("clearance_ratio"), p.clearance_ratio);
+        let len = c.positive(&f("peg_length"), p.peg_length);
+        c.positive(&f("density"), p.density);
+        c.finite(&f("axial_force"), p.axial_force);
+        c.finite(&f("radial_force"), p.radial_force);
+        c.finite(&f("torque"), p.torque);
+        c.non_negative(&f("initial_tilt"), p.initial_tilt);
+        c.non_negative(&f("initial_depth"), p.initial_depth);
+        c.positive(&f("target_depth"), p.target_depth);
+        if let Some(lc) = p.com_height {
+            c.in_range(&f("com_height"), lc, 0.0, len);
+        }
+        c.extend(self.integrator.check("integrator"));
+        c.finish()?;
+        let r = 0.5 * d * (1.0 - cr);
+        let mass = p.density * std::f64::consts::PI * r * r * len;
+        let spec = CompliantSpec {
+            geometry: PegHoleGeometry {
+                hole_diameter: d,
+                peg_radius: r,
+                peg_fillet: p.peg_fillet,
+                hole_fillet: p.hole_fillet,
+            },
+            peg: Material {
+                youngs_modulus: p.peg_material.youngs_modulus,
+                poisson_ratio: p.peg_material.poisson_ratio,
+            },
+            hole: Material {
+                youngs_modulus: p.hole_material.youngs_modulus,
+                poisson_ratio: p.hole_material.poisson_ratio,
+            },
+            mass,
+            inertia: mass * (3.0 * r * r + len * len) / 12.0,
+            com_height: p.com_height.unwrap_or(0.5 * len),
+            friction: p.friction,
+            slip_velocity: p.slip_velocity,
+            reference_tilt: 0.0,
+            contacts: match p.contacts {
+                ContactsSpec::All => ContactSet::All,
+                ContactsSpec::Lean => ContactSet::Lean,
+            },
+        };
+        let params = CompliantParams::try_new(spec).map_err(to_scene_error)?;
+        let initial = if p.initial_tilt > 0.0 {
+            PegState::two_point(&params, p.initial_tilt, 0.0).map_err(to_scene_error)?
+        } else {
+            PegState::centred(&params, p.initial_depth)
+        };
+        if p.target_depth <= initial.depth(&params) {
+            return Err(SceneErrors::from(SceneError::invalid(
+                f("target_depth"),
+                p.target_depth,
+                format!(
+                    "must exceed the initial depth {:e} m",
+                    initial.depth(&params)
+                ),
+            )));
+        }
+        let load = Load {
+            axial: p.axial_force,
+            radial: p.radial_force,
+            torque: p.torque,
+        };
+        Ok(Built {
+            params,
+            load,
+            initial,
+        })
+    }
+}
+
+impl Scene for Ready {
+    fn describe(&self) -> String {
+        let p = &self.scene.insert_compliant;
+        format!(
+            "compliant peg-in-hole D = {} m, c = {}, mu = {}, f1 = {} N, f2 = {} N, M = {} N m, \
+             start tilt {} rad, k_edge = {:.3e} N/m^1.5; {}",
+            p.hole_diameter,
+            p.clearance_ratio,
+            p.friction,
+            p.axial_force,
+            p.radial_force,
+            p.torque,
+            p.initial_tilt,
+            self.built.params.pair.edge.stiffness(),
+            self.scene.integrator.describe()
+        )
+    }
+
+    fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
+        let Built {
+            params,
+            load,
+            initial,
+        } = self.built;
+        let sys = CompliantSystem::new(&params, &load);
+        let (lc, target) = (
+            params.spec.com_height,
+            self.scene.insert_compliant.target_depth,
+        );
+        let inserted = Event::new(move |_t, y| y[1] + lc * y[2].cos() - target)
+            .direction(Direction::Rising)
+            .terminal();
+        let sol = integrate(
+            &sys,
+            initial.to_vector(),
+            &self.scene.integrator,
+            vec![inserted],
+            &mut ctx.progress,
+        )?;
+        let mut out = RunSummary {
+            integration: Some(integration_summary(
+                &self.scene.integrator,
+                &sol,
+                &["inserted"],
+            )),
+            ..RunSummary::default()
+        };
+        write_outputs(ctx, &sys, &sol, &mut out)?;
+        Ok(out)
+    }
+}
