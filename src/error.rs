@@ -204,12 +204,6 @@ pub enum RunError {
     /// Writing the CSV or SVG failed.
     #[error(transparent)]
     Output(#[from] OutputError),
-    /// The scene needs something this build does not have yet.
-    #[error("not available in this build: {what}")]
-    Unavailable {
-        /// What is missing, e.g. `the rosenbrock integrator`.
-        what: &'static str,
-    },
     /// The jamming analysis refused a parameter (cannot happen after the
     /// scene's `check`; reported rather than unwrapped).
     #[error("jamming analysis refused {0}")]

@@ -273,6 +273,17 @@ fn run_pendulum_rk4_conserves_energy_and_period() {
 }
 
 #[test]
+fn run_pendulum_rosenbrock_conserves_energy_and_period() {
+    run_pendulum(
+        &fixture("good_pendulum_rosenbrock.toml"),
+        "rosenbrock",
+        45.0,
+        5.0,
+        0.05,
+    );
+}
+
+#[test]
 fn run_double_pendulum_conserves_energy() {
     let dir = out_dir("double");
     let scene = fixture("good_double_pendulum.toml");

@@ -26,7 +26,9 @@ pub enum Method {
     Rk4,
     /// Dormand–Prince 5(4), adaptive, with dense output and events.
     Dopri5,
-    /// Linearly implicit Rosenbrock method for stiff problems, adaptive.
+    /// Linearly implicit, L-stable Rosenbrock method RODAS3 (order 3(2))
+    /// for stiff problems, adaptive; also accepted as `"rodas3"`.
+    #[serde(alias = "rodas3")]
     Rosenbrock,
 }
 

@@ -15,8 +15,7 @@ use crate::system::OdeSystem;
 ///
 /// # Errors
 /// [`RunError::Integrate`] for `rk4` without `h` (never for a spec that
-/// passed [`IntegratorSpec::check`]); [`RunError::Unavailable`] for a method
-/// this build lacks.
+/// passed [`IntegratorSpec::check`]).
 pub fn solver_config(spec: &IntegratorSpec) -> Result<(integrate::Method, Options), RunError> {
     let method = match (spec.method, spec.h) {
         (Method::Rk4, Some(h)) => integrate::Method::Rk4 { h },
@@ -28,11 +27,7 @@ pub fn solver_config(spec: &IntegratorSpec) -> Result<(integrate::Method, Option
             }));
         }
         (Method::Dopri5, _) => integrate::Method::Dopri5,
-        (Method::Rosenbrock, _) => {
-            return Err(RunError::Unavailable {
-                what: "the rosenbrock integrator",
-            });
-        }
+        (Method::Rosenbrock, _) => integrate::Method::Rodas3,
     };
     let mut options = Options::with_tolerances(spec.rtol, spec.atol);
     options.max_steps = spec.max_steps;
@@ -134,6 +129,8 @@ mod tests {
             (integrate::Method::Dopri5, Some(1e-3), 1e-9, 1e-12)
         );
         assert!(solver_config(&spec(Method::Rk4, None)).is_err());
+        let (m, _) = solver_config(&spec(Method::Rosenbrock, None)).unwrap();
+        assert_eq!(m, integrate::Method::Rodas3);
     }
 
     #[test]
