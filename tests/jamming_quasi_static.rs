@@ -155,3 +155,18 @@ fn generated_model_matches_hand_written_solution() {
         assert!(close(mt, sliding_moment(&hp, l, theta, fx, fz)));
     }
 }
+
+#[test]
+fn whitney_load_converted_to_paper_frame_gives_the_same_contact_forces() {
+    use pegdyn::jamming::forces::{Wrench, to_paper_frame};
+    let p = peg();
+    let hp = PegHole::try_new(p.r, 0.01, p.mu).unwrap();
+    for (fx, fz) in [(0.0, 10.0), (2.0, 10.0), (-3.0, 5.0)] {
+        let m = sliding_moment(&hp, p.l, p.theta, fx, fz);
+        let (f1, f2, m_c) = to_paper_frame(&Wrench { fx, fz, m }, p.theta, p.l_c);
+        let s = p.two_point(PegLoad { f1, f2 }, PegAcc::default());
+        let w = sliding_contact_forces(&hp, p.theta, fx, fz);
+        assert!((s.f_a - w.edge).abs() < 1e-12 && (s.f_b - w.tip).abs() < 1e-12);
+        assert!((s.m - m_c).abs() < 1e-12, "{} vs {m_c}", s.m);
+    }
+}

@@ -97,3 +97,18 @@ pub fn whitney_sliding_wrench(p: &PegHole, l: f64, f: ContactForces) -> Wrench {
         m: f.edge * l + mu * r * (f.edge - f.tip),
     }
 }
+
+/// The same load in the paper's frame (Fig. 5; the mirror image of
+/// Whitney's): `(f₁, f₂, M_C)` with f₁ along the peg axis towards the tip,
+/// f₂ across it (N), and the moment about the centre of mass C, which lies
+/// `l_c` (m) above the tip face, in the sense of θ (N·m). `w` is in
+/// Whitney's frame with the moment about the tip; `theta` (rad) is the tilt.
+pub fn to_paper_frame(w: &Wrench, theta: f64, l_c: f64) -> (f64, f64, f64) {
+    let (s, c) = theta.sin_cos();
+    let (x, y) = (-w.fx, w.fz);
+    (
+        x * s + y * c,
+        x * c - y * s,
+        w.m - l_c * (w.fz * s + w.fx * c),
+    )
+}
