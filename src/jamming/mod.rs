@@ -9,12 +9,14 @@
 //! - [`diagram`]: the jamming parallelogram, Whitney's and exact.
 //! - [`wedging`]: the wedging angle θ_c, exact and series.
 //! - [`space3d`]: the 3-D no-jamming inequalities (Eqs. 81–82).
+//! - [`dynamic`]: the sweep of compliant-contact insertions (needs `compliant`).
 //! - [`sweep`]: the dynamic sweep driver (rayon) and its comparison with the diagram.
 //! - [`table`], [`figure`]: the scene's corner/wedging tables and Fig. 6-style panels.
 //!
 //! The derivation and the comparison with the paper are in `docs/jamming.md`.
 
 pub mod diagram;
+pub mod dynamic;
 pub mod error;
 pub mod figure;
 pub mod forces;

@@ -16,14 +16,17 @@
 //! finite-angle one; no exact rows where two-point contact is impossible),
 //! `<out>/wedging.csv` (`c,mu,theta_wedge_rad`; `inf` where wedging is
 //! impossible at any tilt) and `<out>/<name>.svg` (the diagrams, Fig. 6
-//! style).
+//! style). An optional `[sweep]` table adds the dynamic check of one
+//! diagram ([`super::jamming_sweep`]).
 
 use serde::Deserialize;
 
 use crate::error::{RunError, SceneError, SceneErrors};
+use crate::jamming::dynamic::SweepSetup;
 use crate::jamming::{figure, table};
 use crate::output::csv::{CsvWriter, format_f64};
 use crate::output::plot::Figure;
+use crate::scene::jamming_sweep::{self, SweepParams};
 use crate::scene::validate::Checker;
 use crate::scene::{Document, Kind, Metric, RunContext, RunSummary, Scene};
 
@@ -35,8 +38,11 @@ pub const KIND: Kind = Kind {
 };
 
 fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
-    let s: JammingScene = doc.body()?;
+    let mut s: JammingScene = doc.body()?;
     s.check()?;
+    if let Some(sweep) = &s.sweep {
+        s.setup = Some(sweep.prepare()?);
+    }
     Ok(Box::new(s))
 }
 
@@ -60,6 +66,12 @@ pub struct JammingParams {
 pub struct JammingScene {
     /// Geometry, friction and depths.
     pub jamming: JammingParams,
+    /// Optional dynamic sweep.
+    #[serde(default)]
+    pub sweep: Option<SweepParams>,
+    /// The sweep's model, built by `parse` after the checks.
+    #[serde(skip)]
+    setup: Option<SweepSetup>,
 }
 
 fn check_list(
@@ -151,13 +163,19 @@ impl Scene for JammingScene {
         outputs.push(svg);
 
         let impossible = p.c.len() * p.mu.len() * p.l_m.len() * 8 - corners.len();
+        let mut metrics = vec![Metric::new(
+            "exact corners left out (two-point contact impossible)",
+            impossible as f64,
+            "",
+        )];
+        if let (Some(params), Some(setup)) = (&self.sweep, &self.setup) {
+            let (files, more) = jamming_sweep::run(params, setup, ctx)?;
+            outputs.extend(files);
+            metrics.extend(more);
+        }
         Ok(RunSummary {
             integration: None,
-            metrics: vec![Metric::new(
-                "exact corners left out (two-point contact impossible)",
-                impossible as f64,
-                "",
-            )],
+            metrics,
             outputs,
         })
     }

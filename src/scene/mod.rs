@@ -30,6 +30,7 @@ pub mod document;
 pub mod double_pendulum;
 pub mod integrator;
 pub mod jamming;
+pub mod jamming_sweep;
 pub mod pendulum;
 pub mod progress;
 pub mod simulate;

@@ -60,6 +60,22 @@ impl Progress {
         self.shown = true;
     }
 
+    /// Reports `done` of `total` work items, e.g. runs of a sweep
+    /// (throttled; the last one is always shown).
+    pub fn update_count(&mut self, done: usize, total: usize, what: &str) {
+        let last = done >= total;
+        if !self.enabled || (!last && self.last.is_some_and(|l| l.elapsed() < EVERY)) {
+            return;
+        }
+        self.last = Some(Instant::now());
+        let pct = 100.0 * done as f64 / total.max(1) as f64;
+        let mut err = std::io::stderr().lock();
+        // Progress output is best effort: a failed write to stderr is ignored.
+        let _ = write!(err, "\r  {what} {done}/{total} ({pct:5.1}%)");
+        let _ = err.flush();
+        self.shown = true;
+    }
+
     /// Clears the progress line, if one was printed.
     pub fn finish(&mut self) {
         if self.shown {

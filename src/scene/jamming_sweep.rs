@@ -1,0 +1,244 @@
+//! The optional `[sweep]` table of the `jamming` scene: the dynamic check of
+//! the jamming diagram (`crate::jamming::dynamic`).
+//!
+//! ```toml
+//! [sweep]
+//! r_m = 0.0125           # peg radius, m
+//! c = 0.01               # clearance ratio
+//! mu = 0.3               # friction coefficient
+//! l_m = 0.01             # insertion depth (two-point contact must exist), m
+//! fz_n = 20.0            # axial force F_z, N
+//! peg_length_m = 0.1     # steel cylinder length (mass, inertia), m
+//! fx_over_fz_max = 4.5   # grid: F_x/F_z from −max to max
+//! m_over_rfz_max = 6.0   # grid: M/(r F_z) from −max to max
+//! n = 13                 # grid points per axis (≥ 3)
+//! t_max_s = 0.2          # longest simulated time per run, s
+//! advance_m = 0.001      # advance of the bottom face that counts as inserted, m
+//! ```
+//!
+//! Writes `<out>/jamming_sweep.csv` (`fx_over_fz,m_over_rfz,class,lean_plus,
+//! lean_minus,margin_exact,margin_whitney`) and `<out>/jamming_sweep.svg`
+//! (simulated classes as markers, exact parallelogram solid, Whitney's
+//! dashed).
+
+use std::path::PathBuf;
+use std::sync::Mutex;
+
+use serde::Deserialize;
+
+use crate::error::{RunError, SceneError, SceneErrors};
+use crate::jamming::PegHole;
+use crate::jamming::diagram::whitney_parallelogram;
+use crate::jamming::dynamic::{self, DynamicPoint, SweepSetup, SweepSpec};
+use crate::jamming::figure::{X_LABEL, Y_LABEL, parallelogram_series};
+use crate::jamming::sweep::{self, RunClass};
+use crate::output::csv::{CsvWriter, format_f64};
+use crate::output::plot::{Figure, Panel, Series, Style};
+use crate::scene::validate::Checker;
+use crate::scene::{Metric, RunContext};
+
+/// The `[sweep]` table.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepParams {
+    /// Peg radius r, m.
+    pub r_m: f64,
+    /// Clearance ratio.
+    pub c: f64,
+    /// Friction coefficient.
+    pub mu: f64,
+    /// Insertion depth, m.
+    pub l_m: f64,
+    /// Axial force F_z, N.
+    pub fz_n: f64,
+    /// Peg length, m.
+    pub peg_length_m: f64,
+    /// Grid half-width in F_x/F_z.
+    pub fx_over_fz_max: f64,
+    /// Grid half-height in M/(r F_z).
+    pub m_over_rfz_max: f64,
+    /// Grid points per axis.
+    pub n: usize,
+    /// Longest simulated time per run, s.
+    pub t_max_s: f64,
+    /// Advance that counts as inserted, m.
+    pub advance_m: f64,
+}
+
+impl SweepParams {
+    /// Checks every field and builds the model; errors name `sweep.<field>`.
+    pub fn prepare(&self) -> Result<SweepSetup, SceneErrors> {
+        let mut c = Checker::default();
+        c.positive("sweep.r_m", self.r_m);
+        c.check(
+            crate::scene::validate::finite("sweep.c", self.c).and_then(|v| {
+                if v > 0.0 && v < 1.0 {
+                    Ok(v)
+                } else {
+                    Err(SceneError::invalid("sweep.c", v, "must lie in (0, 1)"))
+                }
+            }),
+            self.c,
+        );
+        c.positive("sweep.mu", self.mu);
+        c.positive("sweep.l_m", self.l_m);
+        c.positive("sweep.fz_n", self.fz_n);
+        c.positive("sweep.peg_length_m", self.peg_length_m);
+        c.positive("sweep.fx_over_fz_max", self.fx_over_fz_max);
+        c.positive("sweep.m_over_rfz_max", self.m_over_rfz_max);
+        c.positive("sweep.t_max_s", self.t_max_s);
+        c.positive("sweep.advance_m", self.advance_m);
+        if self.n < 3 {
+            c.push(SceneError::invalid("sweep.n", self.n, "must be at least 3"));
+        }
+        c.finish()?;
+        let peg = PegHole::try_new(self.r_m, self.c, self.mu)
+            .map_err(|e| SceneError::invalid(format!("sweep.{}", e.field), e.value, e.reason))?;
+        let spec = SweepSpec {
+            peg,
+            depth: self.l_m,
+            fz: self.fz_n,
+            peg_length: self.peg_length_m,
+            t_max: self.t_max_s,
+            advance: self.advance_m,
+        };
+        SweepSetup::new(spec).map_err(|e| {
+            SceneErrors::from(SceneError::invalid(
+                "sweep",
+                self.l_m,
+                format!("the compliant model refused the sweep: {e}"),
+            ))
+        })
+    }
+}
+
+/// Runs the sweep with a progress line and writes its CSV and SVG; returns
+/// the files written and the comparison metrics.
+pub fn run(
+    params: &SweepParams,
+    setup: &SweepSetup,
+    ctx: &mut RunContext,
+) -> Result<(Vec<PathBuf>, Vec<Metric>), RunError> {
+    let (grid, points) = {
+        let progress = Mutex::new(&mut ctx.progress);
+        let report = |done: usize, total: usize| {
+            if let Ok(mut p) = progress.lock() {
+                p.update_count(done, total, "sweep run");
+            }
+        };
+        dynamic::run(
+            setup,
+            params.fx_over_fz_max,
+            params.m_over_rfz_max,
+            params.n,
+            report,
+        )?
+    };
+    ctx.progress.finish();
+    let whitney = whitney_parallelogram(&setup.spec.peg, setup.depth)?;
+
+    let path = ctx.out_dir.join("jamming_sweep.csv");
+    let header = [
+        "fx_over_fz",
+        "m_over_rfz",
+        "class",
+        "lean_plus",
+        "lean_minus",
+        "margin_exact",
+        "margin_whitney",
+    ];
+    let mut w = CsvWriter::create(&path, &header)?;
+    for p in &points {
+        let q = p.point.ratio;
+        let cells = [
+            format_f64(q[0]),
+            format_f64(q[1]),
+            p.point.class.name().to_string(),
+            p.lean_plus.name().to_string(),
+            p.lean_minus.name().to_string(),
+            format_f64(setup.diagram.margin(q)),
+            format_f64(whitney.margin(q)),
+        ];
+        w.row_cells(&cells.each_ref().map(String::as_str))?;
+    }
+    let mut outputs = vec![w.finish()?];
+
+    let svg = ctx.out_dir.join("jamming_sweep.svg");
+    figure(setup, &whitney, &points).save(&svg)?;
+    outputs.push(svg);
+
+    let plain: Vec<_> = points.iter().map(|p| p.point).collect();
+    let exact = sweep::check(&setup.diagram, &plain, grid.resolution());
+    let small = sweep::check(&whitney, &plain, grid.resolution());
+    let metrics = vec![
+        Metric::new("sweep runs", points.len() as f64, ""),
+        Metric::new(
+            "grid points judged (beyond one cell of the boundary)",
+            exact.judged as f64,
+            "",
+        ),
+        Metric::new(
+            "points contradicting the exact diagram",
+            exact.mismatches.len() as f64,
+            "",
+        ),
+        Metric::new(
+            "points contradicting Whitney's diagram",
+            small.mismatches.len() as f64,
+            "",
+        ),
+        Metric::new("runs neither inserted nor stuck", exact.other as f64, ""),
+    ];
+    Ok((outputs, metrics))
+}
+
+fn figure(
+    setup: &SweepSetup,
+    whitney: &crate::jamming::diagram::Parallelogram,
+    points: &[DynamicPoint],
+) -> Figure {
+    let title = format!(
+        "dynamic sweep, c = {}, mu = {}, l = {:.2} mm, theta = {:.4} rad",
+        setup.spec.peg.c(),
+        setup.spec.peg.mu(),
+        setup.depth * 1e3,
+        setup.theta
+    );
+    let mut panel = Panel::new(&title, X_LABEL, Y_LABEL);
+    let classes = [
+        (RunClass::Inserted, 2),
+        (RunClass::Jammed, 1),
+        (RunClass::Wedged, 4),
+        (RunClass::Other, 7),
+    ];
+    for (class, colour) in classes {
+        let pts: Vec<(f64, f64)> = points
+            .iter()
+            .filter(|p| p.point.class == class)
+            .map(|p| (p.point.ratio[0], p.point.ratio[1]))
+            .collect();
+        if !pts.is_empty() {
+            panel.series.push(
+                Series::line(format!("simulated: {}", class.name()), pts)
+                    .styled(Style::Markers)
+                    .colored(colour),
+            );
+        }
+    }
+    panel.series.push(parallelogram_series(
+        "exact (quasi-static)",
+        &setup.diagram,
+        Style::Solid,
+        0,
+    ));
+    panel.series.push(parallelogram_series(
+        "Whitney (small angle)",
+        whitney,
+        Style::Dashed,
+        0,
+    ));
+    let mut fig = Figure::new();
+    fig.panels.push(panel);
+    fig.panel_height = 600;
+    fig
+}
