@@ -45,6 +45,10 @@ pub enum Integrator {
     /// contact frequency and the friction time constant) but reliable.
     #[default]
     Explicit,
+    /// Linearly implicit Rosenbrock RODAS3 with the generated exact
+    /// Jacobian: steps far longer than the contact period where the
+    /// motion is smooth.
+    Implicit,
 }
 
 /// Options of [`simulate_insertion`].
@@ -197,6 +201,7 @@ pub fn simulate_insertion(
     };
     let method = match opts.integrator {
         Integrator::Explicit => Method::Dopri5,
+        Integrator::Implicit => Method::Rodas3,
     };
     while t < opts.t_max {
         let t_end = (t + opts.window).min(opts.t_max);
