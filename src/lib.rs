@@ -1,11 +1,11 @@
 //! pegdyn
 pub mod compliant;
+pub mod error;
 pub mod generated;
 pub mod hertz;
-pub mod error;
-pub mod output;
-pub mod scene;
-pub mod jamming;
 pub mod integrate;
+pub mod jamming;
+pub mod output;
 pub mod reference_problems;
+pub mod scene;
 pub mod system;
