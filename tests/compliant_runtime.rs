@@ -84,3 +84,21 @@ fn bad_input_is_refused_with_the_field_named() {
         matches!(PegState::two_point(&p, 0.0, 0.0), Err(HertzError::Invalid { field, .. }) if field == "tilt")
     );
 }
+
+/// Whitney's wedging geometry: the line between the two contact points lies
+/// inside both friction cones when the depth is below about `μD`
+/// (μ = 0.1, D = 50 mm: 5 mm), not when the peg is deeper.
+#[test]
+fn contact_line_lies_in_the_friction_cones_only_when_shallow() {
+    use pegdyn::compliant::simulate::contact_line_in_cones;
+    let p = CompliantParams::try_new(CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, 0.1)).unwrap();
+    let shallow = PegState::two_point(&p, 0.04, 0.0).unwrap();
+    let deep = PegState::two_point(&p, 0.005, 0.0).unwrap();
+    assert!(shallow.depth(&p) < 0.004 && deep.depth(&p) > 0.015);
+    assert!(contact_line_in_cones(&p, &shallow.to_vector()));
+    assert!(!contact_line_in_cones(&p, &deep.to_vector()));
+    // The mirror lean is classified alike.
+    let mut mirror = shallow;
+    (mirror.x, mirror.theta) = (-shallow.x, -shallow.theta);
+    assert!(contact_line_in_cones(&p, &mirror.to_vector()));
+}
