@@ -332,3 +332,20 @@ fn codegen_prints_source_and_report() {
         "{report}"
     );
 }
+
+#[test]
+fn closed_stdout_is_not_a_panic() {
+    // `pegdyn codegen | head -1`: the reader goes away after the first line.
+    // The generated source is larger than a pipe buffer, so writes fail.
+    let mut child = Command::new(env!("CARGO_BIN_EXE_pegdyn"))
+        .arg("codegen")
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("the pegdyn binary runs");
+    drop(child.stdout.take());
+    let out = child.wait_with_output().expect("pegdyn exits");
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(!stderr.contains("panicked"), "{stderr}");
+    assert_eq!(out.status.code(), Some(0));
+}

@@ -11,7 +11,7 @@ pub fn check(paths: &[PathBuf]) -> ExitCode {
     let mut ok = true;
     for path in paths {
         match scene::load(path) {
-            Ok(s) => println!(
+            Ok(s) => outln!(
                 "{}: OK ({}): {}",
                 path.display(),
                 s.kind,
@@ -20,7 +20,7 @@ pub fn check(paths: &[PathBuf]) -> ExitCode {
             Err(errors) => {
                 ok = false;
                 for e in errors.to_string().lines() {
-                    eprintln!("{}: error: {e}", path.display());
+                    errln!("{}: error: {e}", path.display());
                 }
             }
         }

@@ -8,8 +8,8 @@ use pegdyn::generated::{REPORT, SOURCE};
 /// Prints the generated source (unless `report_only`) and the report.
 pub fn codegen(report_only: bool) -> ExitCode {
     if !report_only {
-        println!("{SOURCE}");
+        outln!("{SOURCE}");
     }
-    println!("{REPORT}");
+    outln!("{REPORT}");
     ExitCode::SUCCESS
 }

@@ -3,6 +3,23 @@
 //! Exit codes: 0 success, 1 a scene or run failed, 2 usage error.
 //! One file per subcommand; `bench` and `accuracy` will join them.
 
+/// `println!` that does not panic when stdout is closed early (`| head`):
+/// output is best effort, a failed write is dropped.
+macro_rules! outln {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stdout(), $($arg)*);
+    }};
+}
+
+/// `eprintln!` that does not panic when stderr is closed.
+macro_rules! errln {
+    ($($arg:tt)*) => {{
+        use std::io::Write as _;
+        let _ = writeln!(std::io::stderr(), $($arg)*);
+    }};
+}
+
 mod check;
 mod codegen;
 mod run;
@@ -68,7 +85,7 @@ pub fn main() -> ExitCode {
         Command::Codegen { report_only } => codegen::codegen(report_only),
         Command::Kinds => {
             for k in pegdyn::scene::KINDS {
-                println!("{:<20} {}", k.name, k.about);
+                outln!("{:<20} {}", k.name, k.about);
             }
             ExitCode::SUCCESS
         }

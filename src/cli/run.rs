@@ -11,19 +11,19 @@ pub fn run(path: &Path, out: &Path, quiet: bool) -> ExitCode {
         Ok(s) => s,
         Err(errors) => {
             for e in errors.to_string().lines() {
-                eprintln!("{}: error: {e}", path.display());
+                errln!("{}: error: {e}", path.display());
             }
             return ExitCode::FAILURE;
         }
     };
     if let Err(e) = std::fs::create_dir_all(out) {
-        eprintln!(
+        errln!(
             "error: cannot create output directory {}: {e}",
             out.display()
         );
         return ExitCode::FAILURE;
     }
-    println!(
+    outln!(
         "{} ({}): {}",
         loaded.name,
         loaded.kind,
@@ -38,10 +38,10 @@ pub fn run(path: &Path, out: &Path, quiet: bool) -> ExitCode {
     ctx.progress.finish();
     match result {
         Ok(summary) => {
-            print!("{summary}");
+            outln!("{}", summary.to_string().trim_end());
             match &summary.integration {
                 Some(i) if !i.success => {
-                    eprintln!(
+                    errln!(
                         "{}: error: integration stopped early: {}",
                         path.display(),
                         i.stop
@@ -52,7 +52,7 @@ pub fn run(path: &Path, out: &Path, quiet: bool) -> ExitCode {
             }
         }
         Err(e) => {
-            eprintln!("{}: error: {e}", path.display());
+            errln!("{}: error: {e}", path.display());
             ExitCode::FAILURE
         }
     }

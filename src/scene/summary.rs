@@ -97,17 +97,25 @@ impl fmt::Display for RunSummary {
         }
         for m in &self.metrics {
             let sep = if m.unit.is_empty() { "" } else { " " };
-            let v = if (1e-3..1e6).contains(&m.value.abs()) {
-                format!("{:.6}", m.value)
-            } else {
-                format!("{:.3e}", m.value)
-            };
+            let v = format_metric(m.value);
             writeln!(f, "  {} = {v}{sep}{}", m.name, m.unit)?;
         }
         for p in &self.outputs {
             writeln!(f, "  wrote {}", p.display())?;
         }
         Ok(())
+    }
+}
+
+/// Integers (counts) as integers, `[1e-3, 1e6)` with six decimals, the
+/// rest with four significant digits in scientific notation.
+fn format_metric(v: f64) -> String {
+    if v.fract() == 0.0 && v.abs() < 1e15 {
+        format!("{v:.0}")
+    } else if (1e-3..1e6).contains(&v.abs()) {
+        format!("{v:.6}")
+    } else {
+        format!("{v:.3e}")
     }
 }
 
@@ -146,7 +154,10 @@ mod tests {
             outputs: vec![],
         };
         let text = s.to_string();
-        assert!(text.contains("period = 2.000000 s"), "{text}");
+        assert!(text.contains("period = 2 s"), "{text}");
+        assert_eq!(format_metric(0.0), "0");
+        assert_eq!(format_metric(169.0), "169");
+        assert_eq!(format_metric(2.5), "2.500000");
         assert!(text.contains("drift = 1.500e-11\n"), "{text}");
         assert!(
             text.contains("3 steps (1 rejected), 18 rhs calls"),
