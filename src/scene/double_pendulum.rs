@@ -7,6 +7,12 @@
 //!     − (m₁+m₂)g l₁cos θ₁ − m₂ g l₂ cos θ₂
 //! ```
 //!
+//! Outputs: `<name>.csv` (`t_s, theta1_rad, theta2_rad, omega1_rad_s,
+//! omega2_rad_s, energy_J, energy_error`, the error relative to
+//! `(m₁+m₂) g l₁ + m₂ g l₂`) and `<name>.svg` (angles, path of the lower
+//! bob, energy error). As for the `pendulum` scene, the energy error is
+//! taken on the dense output at the output times.
+//!
 //! ```toml
 //! kind = "double_pendulum"
 //! [double_pendulum]

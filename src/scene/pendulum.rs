@@ -3,6 +3,15 @@
 //! downward vertical. A textbook check of the generator and integrators:
 //! the total energy `E = ½ m L² θ̇² − m g L cos θ` must stay constant.
 //!
+//! Outputs: `<name>.csv` (`t_s, theta_rad, omega_rad_s, energy_J,
+//! energy_error` with `energy_error = (E − E₀)/(m g L)`) and `<name>.svg`.
+//! The energy error is evaluated at the output times, that is on the
+//! integrator's dense output (4th order for DOPRI5, cubic Hermite for
+//! RODAS3), whose interpolation error shows as spikes between steps. The
+//! summary also compares the period measured from the upward zero
+//! crossings of `θ` (located by events) with the exact period
+//! ([`exact_period`]).
+//!
 //! ```toml
 //! kind = "pendulum"
 //! [pendulum]
