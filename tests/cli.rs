@@ -319,6 +319,23 @@ fn run_double_pendulum_conserves_energy() {
 }
 
 #[test]
+fn unplanned_stop_writes_outputs_and_exits_1() {
+    let dir = out_dir("budget");
+    let scene = fixture("step_budget_too_small.toml");
+    let out = pegdyn(&["run", &scene, "--out", dir.to_str().unwrap()]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stdout}{stderr}");
+    assert!(
+        stderr.contains("step budget of 20 steps exhausted"),
+        "{stderr}"
+    );
+    // What was computed before the stop is still written.
+    let (_, rows) = read_csv(&dir.join("step_budget_too_small.csv"));
+    assert!(!rows.is_empty() && rows.last().unwrap()[0] < 5.0);
+}
+
+#[test]
 fn codegen_prints_source_and_report() {
     let out = pegdyn(&["codegen"]);
     let stdout = String::from_utf8_lossy(&out.stdout);
