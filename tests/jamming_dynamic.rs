@@ -19,6 +19,7 @@ fn setup() -> SweepSetup {
         peg_length: 0.1,
         t_max: 0.2,
         advance: 0.001,
+        window: 0.05,
     })
     .unwrap()
 }

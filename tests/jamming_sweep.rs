@@ -58,3 +58,26 @@ fn static_verdict_matches_exact_parallelogram_on_a_grid() {
         whitney.mismatches.len()
     );
 }
+
+/// When l < μd (λ < 1) wedging is possible: the two contacts can then hold
+/// loads inside the parallelogram too (with internal forces), so the
+/// jamming diagram bounds jamming only for λ > 1.
+#[test]
+fn inside_loads_are_holdable_when_wedging_is_possible() {
+    use pegdyn::jamming::forces::Wrench;
+    use pegdyn::jamming::statics::holds;
+    let p = PegHole::try_new(0.0125, 0.002, 0.3).unwrap();
+    for (l, wedge) in [(0.005, true), (0.01, false)] {
+        assert_eq!(p.lambda(l) < 1.0, wedge);
+        let g = exact_parallelogram(&p, l).unwrap().unwrap();
+        let (_, icpt) = g.two_point_line();
+        let q = [0.0, 0.8 * icpt];
+        assert!(g.avoids_jamming(q));
+        let w = Wrench {
+            fx: q[0],
+            fz: 1.0,
+            m: q[1] * p.r(),
+        };
+        assert_eq!(holds(&p, l, g.theta, &w), wedge, "l = {l}");
+    }
+}

@@ -38,6 +38,10 @@ pub struct SweepSpec {
     pub t_max: f64,
     /// Advance of the bottom face (m) that counts as inserted.
     pub advance: f64,
+    /// Classification window (s): a run whose depth advances less than
+    /// 2 µm in one window counts as stuck. Near the boundary the peg starts
+    /// slowly, so too short a window calls slow insertions stuck.
+    pub window: f64,
 }
 
 /// A prepared sweep: the compliant model, the start state and the
@@ -106,6 +110,7 @@ impl SweepSetup {
         let opts = InsertionOptions {
             target_depth: self.start.depth(&self.params) + self.spec.advance,
             t_max: self.spec.t_max,
+            window: self.spec.window,
             ..InsertionOptions::default()
         };
         let run = simulate_insertion(&self.params, &load, &self.start, &opts)?;

@@ -14,6 +14,7 @@
 //! n = 13                 # grid points per axis (≥ 3)
 //! t_max_s = 0.2          # longest simulated time per run, s
 //! advance_m = 0.001      # advance of the bottom face that counts as inserted, m
+//! window_s = 0.05        # classification window: < 2 µm advance in it = stuck, s
 //! ```
 //!
 //! Writes `<out>/jamming_sweep.csv` (`fx_over_fz,m_over_rfz,class,lean_plus,
@@ -63,6 +64,8 @@ pub struct SweepParams {
     pub t_max_s: f64,
     /// Advance that counts as inserted, m.
     pub advance_m: f64,
+    /// Classification window, s.
+    pub window_s: f64,
 }
 
 impl SweepParams {
@@ -88,6 +91,7 @@ impl SweepParams {
         c.positive("sweep.m_over_rfz_max", self.m_over_rfz_max);
         c.positive("sweep.t_max_s", self.t_max_s);
         c.positive("sweep.advance_m", self.advance_m);
+        c.positive("sweep.window_s", self.window_s);
         if self.n < 3 {
             c.push(SceneError::invalid("sweep.n", self.n, "must be at least 3"));
         }
@@ -101,6 +105,7 @@ impl SweepParams {
             peg_length: self.peg_length_m,
             t_max: self.t_max_s,
             advance: self.advance_m,
+            window: self.window_s,
         };
         SweepSetup::new(spec).map_err(|e| {
             SceneErrors::from(SceneError::invalid(
