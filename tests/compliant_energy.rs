@@ -1,7 +1,8 @@
 //! Energy and passivity of the compliant peg-in-hole (paper 001, (55)–(64)):
 //! without friction `T + P − W` is constant to the integrator tolerance;
 //! with friction the dissipated energy `S` never decreases and
-//! `T + P − W + S` is constant. `W` (work of the applied loads) and `S` are
+//! `T + P − W + S` is constant, also with Hunt–Crossley contact damping.
+//! `W` (work of the applied loads) and `S` are
 //! integrated as extra states of the generated model.
 
 use nalgebra::SVector;
@@ -17,7 +18,13 @@ struct Trace {
 }
 
 fn run(mu: f64, rtol: f64, atol: f64) -> Trace {
-    let p = CompliantParams::try_new(CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, mu)).unwrap();
+    run_damped(mu, 0.0, rtol, atol)
+}
+
+fn run_damped(mu: f64, damping: f64, rtol: f64, atol: f64) -> Trace {
+    let mut spec = CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, mu);
+    spec.damping = damping;
+    let p = CompliantParams::try_new(spec).unwrap();
     // Tilted two-point start; the torque rocks the peg against both contacts.
     let load = Load {
         axial: 20.0,
@@ -77,6 +84,31 @@ fn frictionless_energy_is_conserved_to_the_tolerance() {
 #[test]
 fn friction_dissipates_and_the_balance_closes() {
     let tr = run(0.1, 1e-10, 1e-15);
+    assert!(tr.max_force > 1.0);
+    assert!(
+        tr.dissipation > 1e-4 * tr.scale,
+        "dissipated {} of {}",
+        tr.dissipation,
+        tr.scale
+    );
+    assert!(
+        tr.min_dissipation_step >= 0.0,
+        "dissipation decreased by {}",
+        -tr.min_dissipation_step
+    );
+    assert!(
+        tr.balance_drift / tr.scale < 1e-7,
+        "balance drift {} of {}",
+        tr.balance_drift,
+        tr.scale
+    );
+}
+
+/// Hunt–Crossley contact damping (α = 0.5 s/m, no friction) dissipates
+/// energy and the balance, with its dissipation in `S`, still closes.
+#[test]
+fn contact_damping_dissipates_and_the_balance_closes() {
+    let tr = run_damped(0.0, 0.5, 1e-10, 1e-15);
     assert!(tr.max_force > 1.0);
     assert!(
         tr.dissipation > 1e-4 * tr.scale,

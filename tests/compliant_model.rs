@@ -53,6 +53,7 @@ fn params(mu: f64, loads: [f64; 3]) -> (Vec<(String, f64)>, ContactPair) {
         ("f2", loads[1]),
         ("M", loads[2]),
         ("e_star", pair.edge.contact_modulus),
+        ("hc_alpha", 0.0),
     ]
     .iter()
     .map(|(n, v)| (n.to_string(), *v))
@@ -117,7 +118,11 @@ fn jacobian_matches_central_differences() {
     let rhs_ids: Vec<_> = pp.rhs.iter().map(|e| e.id()).collect();
     let jac_ids: Vec<_> = pp.jacobian.iter().flatten().map(|e| e.id()).collect();
     let (rhs, jac) = (Tape::new(&model.g, &rhs_ids), Tape::new(&model.g, &jac_ids));
-    let (p, _) = params(0.1, [20.0, 3.0, 0.1]);
+    let (mut p, _) = params(0.1, [20.0, 3.0, 0.1]);
+    // Exercise the Hunt–Crossley terms too.
+    p.iter_mut()
+        .filter(|(n, _)| n == "hc_alpha")
+        .for_each(|(_, v)| *v = 0.5);
     let [x, z, th] = two_point(0.01, 2e-7, 3e-7);
     // Velocities chosen so that both contacts slip by a few v_s.
     let y = [x, z, th, 3e-4, -2e-4, 0.02, 0.0, 0.0];
@@ -254,7 +259,7 @@ fn generated_functions_match_the_interpreter_at_a_physical_state() {
         .collect();
     let (yv, pv) = (
         SVector::<f64, 8>::from_column_slice(&y),
-        SVector::<f64, 23>::from_column_slice(&pv),
+        SVector::<f64, 24>::from_column_slice(&pv),
     );
     let (f, j) = (cp::rhs(&yv, &pv), cp::jacobian(&yv, &pv));
     let got: Vec<f64> = f

@@ -8,7 +8,7 @@ use crate::generated::compliant_peg::P_NAMES;
 use crate::hertz::{EllipticityMethod, HertzContact, HertzError, Material};
 
 /// Number of model parameters (`P_NAMES`).
-pub const N_PARAMS: usize = 23;
+pub const N_PARAMS: usize = 24;
 
 /// Which contacts the model includes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -43,6 +43,9 @@ pub struct CompliantSpec {
     pub reference_tilt: f64,
     /// Contacts included.
     pub contacts: ContactSet,
+    /// Hunt–Crossley damping coefficient `α ≥ 0` (s/m): the normal force is
+    /// `k δ^{3/2} max(0, 1 + α δ̇)`. 0 (the default) gives elastic contacts.
+    pub damping: f64,
 }
 
 /// Validated parameters with the Hertz contacts set up.
@@ -96,6 +99,7 @@ impl CompliantSpec {
             slip_velocity: 1e-5,
             reference_tilt: 0.0,
             contacts: ContactSet::All,
+            damping: 0.0,
         }
     }
 }
@@ -144,6 +148,9 @@ impl CompliantParams {
                 spec.friction,
                 "must be finite and >= 0",
             ));
+        }
+        if !(spec.damping.is_finite() && spec.damping >= 0.0) {
+            return Err(invalid("damping", spec.damping, "must be finite and >= 0"));
         }
         if !(spec.slip_velocity.is_finite() && spec.slip_velocity > 0.0) {
             return Err(invalid(
@@ -198,6 +205,7 @@ impl CompliantParams {
             "f2" => load.radial,
             "M" => load.torque,
             "e_star" => self.pair.edge.contact_modulus,
+            "hc_alpha" => s.damping,
             _ => {
                 let (which, what) = name.split_once('_')?;
                 match which {

@@ -16,6 +16,7 @@
 //! friction = 0.1            # Coulomb mu
 //! slip_velocity = 1e-5      # v_s of the regularized friction law, m/s
 //! contacts = "all"          # "all" | "lean"
+//! contact_damping = 0.0     # Hunt–Crossley alpha, s/m (default 0: elastic)
 //! axial_force = 5.0         # f1, N (into the hole)
 //! radial_force = 0.0        # f2, N
 //! torque = -0.002           # M, N m
@@ -111,6 +112,8 @@ pub struct InsertParams {
     pub slip_velocity: f64,
     #[serde(default)]
     pub contacts: ContactsSpec,
+    #[serde(default)]
+    pub contact_damping: f64,
     pub axial_force: f64,
     #[serde(default)]
     pub radial_force: f64,
@@ -158,6 +161,7 @@ fn scene_field(field: &str) -> String {
         "peg_radius" => "clearance_ratio".to_owned(),
         "mass" | "inertia" => "density".to_owned(),
         "tilt" => "initial_tilt".to_owned(),
+        "damping" => "contact_damping".to_owned(),
         f => f
             .replace("peg.", "peg_material.")
             .replace("hole.", "hole_material."),
@@ -225,6 +229,7 @@ impl InsertCompliantScene {
             friction: p.friction,
             slip_velocity: p.slip_velocity,
             reference_tilt: 0.0,
+            damping: p.contact_damping,
             contacts: match p.contacts {
                 ContactsSpec::All => ContactSet::All,
                 ContactsSpec::Lean => ContactSet::Lean,

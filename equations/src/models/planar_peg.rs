@@ -11,11 +11,14 @@
 //! `v_c = J_c(q) q̇` of the peg's material point at the contact:
 //! generalized force `−μ f_c φ(v_c) J_cᵀ`, with the regularized sign
 //! `φ(v) = v/√(v² + v_s²)` (velocity scale `v_s`). The applied force
+//! Optional Hunt–Crossley damping (`α = hc_alpha`, default 0) scales the
+//! normal force by `max(0, 1 + α δ̇)`. The applied force
 //! `f₁ e_a + f₂ e_r` at the centre of mass and the torque `M` give
 //! `(f₁ sin θ + f₂ cos θ, f₁ cos θ − f₂ sin θ, M)`, the right side of (50).
 //!
 //! The state is `(x, z, θ, ẋ, ż, θ̇, W, S)` with `W` the work of the applied
-//! loads and `S ≥ 0` the energy dissipated by friction (`S_μ` of (64)), so
+//! loads and `S ≥ 0` the energy dissipated by friction (`S_μ` of (64)) and
+//! contact damping, so
 //! that `T + V − W + S` is constant along every solution.
 //! Units: SI (kg, kg·m², m, rad, N, N·m, J).
 
@@ -41,8 +44,9 @@ pub const STATE: [&str; 8] = [
 /// coefficient `μ`, friction velocity scale `v_s` (m/s), Hertz stiffnesses
 /// `k_edge, k_wall` (N/m^{3/2}), loads `f₁, f₂` (N) and `M` (N·m), and the
 /// Hertz coefficients of the edge and wall contacts (see
-/// [`HertzCoefficients::params`]).
-pub const PARAMS: [&str; 23] = [
+/// [`HertzCoefficients::params`]), and the Hunt–Crossley damping
+/// coefficient `α` (s/m; 0 for purely elastic contacts).
+pub const PARAMS: [&str; 24] = [
     "m",
     "J",
     "r",
@@ -66,6 +70,7 @@ pub const PARAMS: [&str; 23] = [
     "wall_ma",
     "wall_mb",
     "wall_dstar",
+    "hc_alpha",
 ];
 
 /// Everything the generated functions output, as expressions.
@@ -80,7 +85,7 @@ pub struct PlanarPeg<'g> {
     pub rhs: Vec<Expr<'g>>,
     /// Exact Jacobian `∂f/∂y`, rows of 8.
     pub jacobian: Vec<Vec<Expr<'g>>>,
-    /// Normal force `f_c = k max(δ,0)^{3/2}` per contact (N).
+    /// Normal force `f_c = k max(δ,0)^{3/2} max(0, 1 + α δ̇)` per contact (N).
     pub normal: Vec<Expr<'g>>,
     /// Friction force `−μ f_c φ(v_c)` per contact, along its tangent (N).
     pub friction: Vec<Expr<'g>>,
@@ -105,9 +110,10 @@ pub fn build<'g>(g: &'g Graph, contacts: &[Contact]) -> PlanarPeg<'g> {
     let state: Vec<Expr<'g>> = STATE.iter().map(|n| g.var(n)).collect();
     let params: Vec<Expr<'g>> = PARAMS.iter().map(|n| g.param(n)).collect();
     let p = |n: &str| g.param(n);
-    let (m, j, mu, vs) = (p("m"), p("J"), p("mu"), p("v_s"));
+    let (m, j, mu, vs, alpha) = (p("m"), p("J"), p("mu"), p("v_s"), p("hc_alpha"));
     let q = [f.x, f.z, f.theta];
     let qd = [f.xdot, f.zdot, f.thetadot];
+    let pairs = [(f.x, f.xdot), (f.z, f.zdot), (f.theta, f.thetadot)];
     let (ea, er) = f.axes();
     let (f1, f2, torque) = (p("f1"), p("f2"), p("M"));
     let applied = [f1 * ea[0] + f2 * er[0], f1 * ea[1] + f2 * er[1], torque];
@@ -127,13 +133,19 @@ pub fn build<'g>(g: &'g Graph, contacts: &[Contact]) -> PlanarPeg<'g> {
             (p("k_wall"), &wall)
         };
         let v = hertz::potential(k, kin.delta);
-        let fn_ = hertz::load(k, kin.delta);
+        let elastic = hertz::load(k, kin.delta);
+        // Hunt–Crossley: f = k δ^{3/2} max(0, 1 + α δ̇); the damping part
+        // f − k δ^{3/2} never makes the contact pull.
+        let ddelta = kin.delta.dt(&pairs);
+        let fn_ = elastic * (1.0 + alpha * ddelta).max0();
+        let damping = fn_ - elastic;
         // Regularized Coulomb friction along the tangent, against the slip.
         let ft = -mu * fn_ * kin.slip / kin.slip.hypot(vs);
         for i in 0..3 {
-            gen_force[i] = gen_force[i] - v.diff(q[i]) + ft * kin.slip.diff(qd[i]);
+            gen_force[i] = gen_force[i] - v.diff(q[i]) - damping * kin.delta.diff(q[i])
+                + ft * kin.slip.diff(qd[i]);
         }
-        dissipation_rate.push(-ft * kin.slip);
+        dissipation_rate.push(-ft * kin.slip + damping * ddelta);
         potentials.push(v);
         ellipse.push(hertz::state(fn_, coeffs));
         normal.push(fn_);
