@@ -170,3 +170,29 @@ fn whitney_load_converted_to_paper_frame_gives_the_same_contact_forces() {
         assert!((s.m - m_c).abs() < 1e-12, "{} vs {m_c}", s.m);
     }
 }
+
+/// The exact two-point segment seen in the paper's plane reproduces the
+/// paper's (75) bounds `−1/μ < f₂/f₁ < k₁/k₂` at its ends and lies on the
+/// line (78) `M = c₁ f₁ + c₂ f₂` (moment about C).
+#[test]
+fn two_point_segment_in_the_paper_plane_is_eqs_75_and_78() {
+    use pegdyn::jamming::diagram::{to_paper_plane, two_point_segment};
+    let p = peg();
+    let hp = PegHole::try_new(p.r, 0.01, p.mu).unwrap();
+    let (p2, p1) = two_point_segment(&hp, p.l, p.theta);
+    let a = to_paper_plane(p1, p.r, p.theta, p.l_c);
+    let b = to_paper_plane(p2, p.r, p.theta, p.l_c);
+    let (sn, cs) = p.theta.sin_cos();
+    let (k1, k2) = (cs - p.mu * sn, sn + p.mu * cs);
+    assert!((a[0] + 1.0 / p.mu).abs() < 1e-12, "{a:?}");
+    assert!((b[0] - k1 / k2).abs() < 1e-12, "{b:?}");
+    let c1 = p
+        .two_point(PegLoad { f1: 1.0, f2: 0.0 }, PegAcc::default())
+        .m;
+    let c2 = p
+        .two_point(PegLoad { f1: 0.0, f2: 1.0 }, PegAcc::default())
+        .m;
+    for q in [a, b] {
+        assert!((q[1] - (c2 * q[0] + c1) / p.r).abs() < 1e-12, "{q:?}");
+    }
+}

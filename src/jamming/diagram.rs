@@ -136,3 +136,19 @@ pub fn exact_parallelogram_at_tilt(p: &PegHole, l: f64, theta: f64) -> Parallelo
     let slope = (p1[1] - p2[1]) / (p1[0] - p2[0]);
     Parallelogram::from_edge_corner(p1, slope, theta)
 }
+
+/// A Whitney-frame load ratio `q` = (F_x/F_z, M_tip/(r F_z)) of the
+/// reference lean at tilt `theta` (rad), seen in the paper's plane (Fig. 6,
+/// Eqs. 75–80): (f₂/f₁, M_C/(r f₁)) with f₁, f₂ along and across the peg and
+/// M_C about the centre of mass, `l_c` (m) above the tip; `r` is the peg
+/// radius (m). The map is projective (f₁ depends on F_x), so lines stay lines
+/// but the parallelogram is not one in the paper's plane.
+pub fn to_paper_plane(q: Ratio, r: f64, theta: f64, l_c: f64) -> Ratio {
+    let w = super::forces::Wrench {
+        fx: q[0],
+        fz: 1.0,
+        m: q[1] * r,
+    };
+    let (f1, f2, m_c) = super::forces::to_paper_frame(&w, theta, l_c);
+    [f2 / f1, m_c / (r * f1)]
+}
