@@ -121,10 +121,20 @@ impl JammingScene {
 impl Scene for JammingScene {
     fn describe(&self) -> String {
         let p = &self.jamming;
-        format!(
+        let mut text = format!(
             "jamming diagram and wedging angle, r = {} m, c = {:?}, mu = {:?}, l = {:?} m",
             p.r_m, p.c, p.mu, p.l_m
-        )
+        );
+        if let Some(s) = &self.sweep {
+            text.push_str(&format!(
+                "; dynamic sweep {n} x {n} at c = {}, mu = {}, l = {} m",
+                s.c,
+                s.mu,
+                s.l_m,
+                n = s.n
+            ));
+        }
+        text
     }
 
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
