@@ -9,3 +9,4 @@ pub mod output;
 pub mod reference_problems;
 pub mod scene;
 pub mod system;
+pub mod rigid;

@@ -1,0 +1,49 @@
+//! Seed 000: a rigid peg leaning on a horizontal hole edge at three points
+//! K, B1, B2, with two degrees of freedom: nutation γ and precession ψ.
+//!
+//! - [`params`]: dimensions, mass, friction and loads;
+//! - [`hand`]: hand-derived geometry and kinematics (corrected paper forms);
+//! - [`hand_dynamics`]: hand-derived equations of motion and reactions.
+//!
+//! Derivation and findings: `docs/rigid-peg.md`.
+
+pub mod hand;
+pub mod hand_dynamics;
+pub mod params;
+
+pub use params::{Loads, PegParams};
+
+/// Why a rigid-peg computation cannot return a physical answer.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum RigidError {
+    /// A parameter is out of range.
+    #[error("parameter `{field}` = {value}: {reason}")]
+    Param {
+        /// Parameter name.
+        field: &'static str,
+        /// Offending value.
+        value: f64,
+        /// What is required.
+        reason: &'static str,
+    },
+    /// γ is outside the three-point-contact range γ0 < γ < π/2.
+    #[error("gamma = {gamma} rad is outside the three-point contact range (gamma0 = {gamma0} rad, pi/2)")]
+    NotThreePoint {
+        /// The requested γ (rad).
+        gamma: f64,
+        /// γ0 = arccos(d/D) (rad).
+        gamma0: f64,
+    },
+    /// The linear system for accelerations and reactions is singular.
+    #[error("singular contact system at gamma = {gamma} rad (Painleve-type indeterminacy)")]
+    Singular {
+        /// γ (rad).
+        gamma: f64,
+    },
+    /// Friction direction undefined: a contact does not slide.
+    #[error("contact {contact} has zero sliding speed; Coulomb friction has no direction")]
+    NoSliding {
+        /// Contact name (K, B1, B2).
+        contact: &'static str,
+    },
+}
