@@ -15,14 +15,28 @@ fn peg() -> PegParams {
 /// γ grid from γ0(1 + 1e-9) to 1.2 rad and ψ grid over a full turn.
 fn grid(p: &PegParams) -> Vec<(f64, f64)> {
     let g0 = p.gamma0();
-    let gammas = [g0 * (1.0 + 1e-9), g0 * (1.0 + 1e-6), g0 * 1.01, g0 * 1.3, 0.1, 0.3, 0.5, 0.8, 1.2];
+    let gammas = [
+        g0 * (1.0 + 1e-9),
+        g0 * (1.0 + 1e-6),
+        g0 * 1.01,
+        g0 * 1.3,
+        0.1,
+        0.3,
+        0.5,
+        0.8,
+        1.2,
+    ];
     let psis = [0.0, 0.4, -1.3, 2.5, 3.9];
-    gammas.iter().flat_map(|&g| psis.iter().map(move |&s| (g, s))).collect()
+    gammas
+        .iter()
+        .flat_map(|&g| psis.iter().map(move |&s| (g, s)))
+        .collect()
 }
 
 /// Rotation of the peg from its upright reference: R = Rz(ψ) Ry(−γ).
 fn rotation(gamma: f64, psi: f64) -> Rotation3<f64> {
-    Rotation3::from_axis_angle(&Vector3::z_axis(), psi) * Rotation3::from_axis_angle(&Vector3::y_axis(), -gamma)
+    Rotation3::from_axis_angle(&Vector3::z_axis(), psi)
+        * Rotation3::from_axis_angle(&Vector3::y_axis(), -gamma)
 }
 
 #[test]
@@ -36,18 +50,31 @@ fn contact_points_lie_on_hole_edge_and_peg_surface() {
         for (i, c) in pose.contacts.iter().enumerate() {
             // On the hole edge: z = 0, |ρ| = D/2.
             assert!(c.z.abs() < tol, "contact {i} z = {} at γ = {gamma}", c.z);
-            assert!((c.xy().norm() - half).abs() < tol, "contact {i} off the hole edge at γ = {gamma}");
+            assert!(
+                (c.xy().norm() - half).abs() < tol,
+                "contact {i} off the hole edge at γ = {gamma}"
+            );
         }
         // K on the peg's side: distance r from the axis, axial coordinate in [0, H].
         let rk = pose.contacts[0] - pose.o2;
         let axial = rk.dot(&u);
-        assert!(((rk - u * axial).norm() - r).abs() < tol, "K off the side at γ = {gamma}");
+        assert!(
+            ((rk - u * axial).norm() - r).abs() < tol,
+            "K off the side at γ = {gamma}"
+        );
         assert!(axial > 0.0 && axial < h, "K beyond the peg's ends: {axial}");
         // B1, B2 on the rim of the bottom face: in its plane, at distance r from O2.
         for b in &pose.contacts[1..] {
             let rb = b - pose.o2;
-            assert!(rb.dot(&u).abs() < tol, "B off the bottom plane at γ = {gamma}");
-            assert!((rb.norm() - r).abs() < tol, "B off the rim at γ = {gamma}: {}", rb.norm() - r);
+            assert!(
+                rb.dot(&u).abs() < tol,
+                "B off the bottom plane at γ = {gamma}"
+            );
+            assert!(
+                (rb.norm() - r).abs() < tol,
+                "B off the rim at γ = {gamma}: {}",
+                rb.norm() - r
+            );
         }
         // B1 and B2 are mirror images about the symmetry plane (e_η, e_z).
         let n = pose.frame.n;
@@ -96,8 +123,18 @@ fn newton_solution_of_contact_conditions_matches_closed_forms() {
         let pose = Pose::try_new(&p, gamma, 0.0).unwrap();
         let guess = Vector3::new(pose.o2.x * 1.01, pose.o2.z * 0.99 - 1e-4, 0.9);
         let x = newton_contact(&p, gamma, guess);
-        assert!((x[0] - pose.o2.x).abs() < 1e-9, "O2 η: {} vs {}", x[0], pose.o2.x);
-        assert!((x[1] - pose.o2.z).abs() < 1e-9, "O2 z: {} vs {}", x[1], pose.o2.z);
+        assert!(
+            (x[0] - pose.o2.x).abs() < 1e-9,
+            "O2 η: {} vs {}",
+            x[0],
+            pose.o2.x
+        );
+        assert!(
+            (x[1] - pose.o2.z).abs() < 1e-9,
+            "O2 z: {} vs {}",
+            x[1],
+            pose.o2.z
+        );
         let b = p.radius() * x[2].sin();
         assert!((b - pose.geo.b).abs() < 1e-9, "b: {b} vs {}", pose.geo.b);
     }
@@ -116,7 +153,10 @@ fn hole_edge_does_not_penetrate_the_peg() {
             let radial = (rq - pose.axis * axial).norm();
             let inside = axial > 0.0 && axial < p.height && radial < p.radius();
             let depth = (p.radius() - radial).min(axial);
-            assert!(!inside || depth < 1e-12, "edge point at {a} inside the peg by {depth} (γ = {gamma})");
+            assert!(
+                !inside || depth < 1e-12,
+                "edge point at {a} inside the peg by {depth} (γ = {gamma})"
+            );
         }
     }
 }
@@ -129,7 +169,10 @@ fn point_a_moves_along_the_hole_wall_and_l_is_the_instant_centre() {
         let pose = Pose::try_new(&p, gamma, 0.0).unwrap();
         let (s, c) = gamma.sin_cos();
         let a = pose.o2 + Vector3::new(c, 0.0, s) * p.radius();
-        assert!((a.x - 0.5 * p.hole_diameter).abs() < 1e-15, "η_A = D/2, eq. (4a)");
+        assert!(
+            (a.x - 0.5 * p.hole_diameter).abs() < 1e-15,
+            "η_A = D/2, eq. (4a)"
+        );
         // Material velocity is zero at L for the planar motion (ψ̇ = 0).
         let (eta_l, z_l) = g.centre_l();
         let kin = pose.kinematics(Vector2::new(1.0, 0.0));
@@ -165,7 +208,10 @@ fn material_velocities_equal_finite_difference_derivatives() {
         assert!((fd(pose.c) - kin.v_c).norm() < 1e-7 * scale);
         for (i, c) in pose.contacts.iter().enumerate() {
             let err = (fd(*c) - kin.v_contacts[i]).norm();
-            assert!(err < 1e-7 * scale, "contact {i} at γ = {gamma}: |Δv| = {err}");
+            assert!(
+                err < 1e-7 * scale,
+                "contact {i} at γ = {gamma}: |Δv| = {err}"
+            );
         }
         // Angular velocity: Ṙ Rᵀ = [ω]×.
         let rdot = (rotation(gamma + qd[0] * h, psi + qd[1] * h).matrix()
@@ -198,11 +244,18 @@ fn no_penetration_rate_at_any_contact() {
     let p = peg();
     for (gamma, psi) in grid(&p) {
         let pose = Pose::try_new(&p, gamma, psi).unwrap();
-        for qd in [Vector2::new(1.0, 0.0), Vector2::new(0.0, 1.0), Vector2::new(-2.0, 10.0)] {
+        for qd in [
+            Vector2::new(1.0, 0.0),
+            Vector2::new(0.0, 1.0),
+            Vector2::new(-2.0, 10.0),
+        ] {
             let kin = pose.kinematics(qd);
             for i in 0..3 {
                 let vn = kin.v_contacts[i].dot(&pose.normals[i]);
-                assert!(vn.abs() < 1e-14 * kin.v_contacts[i].norm().max(1e-3), "v·n = {vn} at {i}, γ = {gamma}");
+                assert!(
+                    vn.abs() < 1e-14 * kin.v_contacts[i].norm().max(1e-3),
+                    "v·n = {vn} at {i}, γ = {gamma}"
+                );
             }
         }
     }

@@ -19,7 +19,7 @@
 //! they are evaluated as 2D sin((γ+γ0)/2) sin((γ−γ0)/2) and
 //! (d − D cos γ) cos γ / sin²γ (exact forms, no cancellation).
 
-use nalgebra::{Matrix3x2, Vector2, Vector3};
+use nalgebra::{Matrix3, Matrix3x2, Vector2, Vector3};
 
 use crate::rigid::{PegParams, RigidError};
 
@@ -146,12 +146,21 @@ impl Frame {
     /// The frame at precession angle `psi`.
     pub fn new(psi: f64) -> Frame {
         let (s, c) = psi.sin_cos();
-        Frame { eta: Vector3::new(c, s, 0.0), n: Vector3::new(-s, c, 0.0), z: Vector3::z() }
+        Frame {
+            eta: Vector3::new(c, s, 0.0),
+            n: Vector3::new(-s, c, 0.0),
+            z: Vector3::z(),
+        }
     }
 
     /// The fixed-frame vector with components (η, n, z).
     pub fn at(&self, eta: f64, n: f64, z: f64) -> Vector3<f64> {
         self.eta * eta + self.n * n + self.z * z
+    }
+
+    /// The rotation R = [e_η | e_n | e_z]: fixed = R · local.
+    pub fn matrix(&self) -> Matrix3<f64> {
+        Matrix3::from_columns(&[self.eta, self.n, self.z])
     }
 }
 
@@ -175,6 +184,21 @@ pub struct Pose {
     pub contacts: [Vector3<f64>; 3],
     /// Unit normals of the contact forces on the peg, `[n_K, n_B1, n_B2]`.
     pub normals: [Vector3<f64>; 3],
+    /// The same points and normals in frame components (η, n, z), computed
+    /// directly (not projected), so that the lateral (e_n) components keep
+    /// full relative accuracy when b → 0.
+    pub local: LocalPose,
+}
+
+/// Centre of mass, contacts and normals in components along (e_η, e_n, e_z).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LocalPose {
+    /// C = (η_C, 0, z_C).
+    pub c: Vector3<f64>,
+    /// `[K, B1, B2]`.
+    pub contacts: [Vector3<f64>; 3],
+    /// `[n_K, n_B1, n_B2]`.
+    pub normals: [Vector3<f64>; 3],
 }
 
 impl Pose {
@@ -189,27 +213,36 @@ impl Pose {
     /// The pose from an already computed geometry.
     pub fn from_geometry(p: &PegParams, geo: Geometry, psi: f64) -> Pose {
         let fr = Frame::new(psi);
+        let rot = fr.matrix();
         let (s, co) = geo.gamma.sin_cos();
         let half = 0.5 * p.hole_diameter;
         let axis = fr.at(-s, 0.0, co);
         let o = fr.at(0.0, 0.0, geo.a1);
-        let k = fr.at(-half, 0.0, 0.0);
-        let b1 = fr.at(geo.s1, geo.b, 0.0);
-        let b2 = fr.at(geo.s1, -geo.b, 0.0);
+        let k = Vector3::new(-half, 0.0, 0.0);
+        let b1 = Vector3::new(geo.s1, geo.b, 0.0);
+        let b2 = Vector3::new(geo.s1, -geo.b, 0.0);
         // K: normal of the peg side in the symmetry plane, w = (cos γ, 0, sin γ).
-        let n_k = fr.at(co, 0.0, s);
-        // B1, B2: along B→O (common perpendicular of the two edge tangents).
-        let n_b1 = (o - b1).normalize();
-        let n_b2 = (o - b2).normalize();
+        let n_k = Vector3::new(co, 0.0, s);
+        // B1, B2: along B→O (common perpendicular of the two edge tangents),
+        // |OB| = √(D²/4 + a1²).
+        let ob = half.hypot(geo.a1);
+        let n_b1 = Vector3::new(-geo.s1, -geo.b, geo.a1) / ob;
+        let n_b2 = Vector3::new(-geo.s1, geo.b, geo.a1) / ob;
+        let local = LocalPose {
+            c: Vector3::new(geo.eta_c, 0.0, geo.z_c),
+            contacts: [k, b1, b2],
+            normals: [n_k, n_b1, n_b2],
+        };
         Pose {
             geo,
             frame: fr,
             axis,
-            c: fr.at(geo.eta_c, 0.0, geo.z_c),
+            c: rot * local.c,
             o,
             o2: o - axis * geo.a2,
-            contacts: [k, b1, b2],
-            normals: [n_k, n_b1, n_b2],
+            contacts: local.contacts.map(|v| rot * v),
+            normals: local.normals.map(|v| rot * v),
+            local,
         }
     }
 }
@@ -224,6 +257,8 @@ pub struct Kinematics {
     pub v_c: Vector3<f64>,
     /// Material velocity of the peg at `[K, B1, B2]` (m/s).
     pub v_contacts: [Vector3<f64>; 3],
+    /// The same velocities in frame components (η, n, z).
+    pub v_contacts_local: [Vector3<f64>; 3],
 }
 
 /// Velocity Jacobians: columns ∂v/∂γ̇, ∂v/∂ψ̇ of the centre of mass and of
@@ -237,27 +272,40 @@ pub struct Jacobians {
 }
 
 impl Pose {
-    /// Jacobians at this pose: v_P = J_P q̇ with q̇ = (γ̇, ψ̇).
-    pub fn jacobians(&self) -> Jacobians {
-        let (g, fr) = (&self.geo, &self.frame);
-        let jc = Matrix3x2::from_columns(&[fr.at(g.deta_c, 0.0, g.dz_c), fr.at(0.0, g.eta_c, 0.0)]);
+    /// Jacobians in frame components (η, n, z): v_P = J_P q̇ with
+    /// q̇ = (γ̇, ψ̇); ∂ω/∂γ̇ = −e_n, ∂ω/∂ψ̇ = e_z.
+    pub fn jacobians_local(&self) -> Jacobians {
+        let g = &self.geo;
+        let (e_n, e_z) = (Vector3::y(), Vector3::z());
+        let jc = Matrix3x2::new(g.deta_c, 0.0, 0.0, g.eta_c, g.dz_c, 0.0);
         let col = |p: &Vector3<f64>| {
-            let r = p - self.c;
-            Matrix3x2::from_columns(&[
-                jc.column(0) + (-fr.n).cross(&r),
-                jc.column(1) + fr.z.cross(&r),
-            ])
+            let r = p - self.local.c;
+            Matrix3x2::from_columns(&[jc.column(0) - e_n.cross(&r), jc.column(1) + e_z.cross(&r)])
         };
-        Jacobians { c: jc, contacts: [col(&self.contacts[0]), col(&self.contacts[1]), col(&self.contacts[2])] }
+        Jacobians {
+            c: jc,
+            contacts: self.local.contacts.map(|p| col(&p)),
+        }
+    }
+
+    /// Jacobians in the fixed frame.
+    pub fn jacobians(&self) -> Jacobians {
+        let (rot, j) = (self.frame.matrix(), self.jacobians_local());
+        Jacobians {
+            c: rot * j.c,
+            contacts: j.contacts.map(|m| rot * m),
+        }
     }
 
     /// Velocities at this pose for generalized velocities `qdot = (γ̇, ψ̇)`.
     pub fn kinematics(&self, qdot: Vector2<f64>) -> Kinematics {
-        let j = self.jacobians();
+        let (rot, j) = (self.frame.matrix(), self.jacobians_local());
+        let local = j.contacts.map(|m| m * qdot);
         Kinematics {
             omega: self.frame.z * qdot[1] - self.frame.n * qdot[0],
-            v_c: j.c * qdot,
-            v_contacts: [j.contacts[0] * qdot, j.contacts[1] * qdot, j.contacts[2] * qdot],
+            v_c: rot * (j.c * qdot),
+            v_contacts: local.map(|v| rot * v),
+            v_contacts_local: local,
         }
     }
 }

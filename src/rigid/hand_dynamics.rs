@@ -11,6 +11,12 @@
 //! m (J_C q̈ + J̇_C q̇)  = F + m g + Σ_i N_i (n_i + f t_i)
 //! ```
 //!
+//! The centre-of-mass rows are written in the rotating components
+//! (e_η, e_n, e_z) — the paper's (29)–(31) rotated by −ψ — so that the
+//! lateral balance, which alone fixes N_B1 − N_B2 through the small lateral
+//! components ±b/|OB| of the edge normals, carries no rounding from the
+//! large in-plane terms.
+//!
 //! with M = diag(m(η_C'² + z_C'²) + I_ε, m η_C² + I_ε sin²γ + I_ζ cos²γ),
 //! h_γ = m(η_C'η_C'' + z_C'z_C'')γ̇² − (m η_C η_C' + (I_ε − I_ζ) sin γ cos γ)ψ̇²,
 //! h_ψ = 2(m η_C η_C' + (I_ε − I_ζ) sin γ cos γ)γ̇ψ̇, Q_grav = (−m g z_C', 0).
@@ -58,28 +64,30 @@ pub fn velocity_terms(p: &PegParams, pose: &Pose, qdot: Vector2<f64>) -> Vector2
 }
 
 /// J̇_C q̇: the part of the centre-of-mass acceleration that does not depend
-/// on q̈ (m/s²).
+/// on q̈, in frame components (η, n, z) (m/s²).
 pub fn com_bias(pose: &Pose, qdot: Vector2<f64>) -> Vector3<f64> {
     let g = &pose.geo;
     let (gd, pd) = (qdot[0], qdot[1]);
-    pose.frame.at(
+    Vector3::new(
         g.d2eta_c * gd * gd - g.eta_c * pd * pd,
         2.0 * g.deta_c * gd * pd,
         g.d2z_c * gd * gd,
     )
 }
 
-/// Friction directions t_i = −v_i/|v_i| (unit, force on the peg) from the
-/// sliding velocities.
+/// Friction directions t_i = −v_i/|v_i| (unit, force on the peg, frame
+/// components (η, n, z)) from the sliding velocities.
 ///
 /// # Errors
 /// [`RigidError::NoSliding`] when a contact's sliding speed is zero.
 pub fn friction_directions(kin: &Kinematics) -> Result<[Vector3<f64>; 3], RigidError> {
     let mut t = [Vector3::zeros(); 3];
-    for (i, v) in kin.v_contacts.iter().enumerate() {
+    for (i, v) in kin.v_contacts_local.iter().enumerate() {
         let speed = v.norm();
         if speed == 0.0 || !speed.is_finite() {
-            return Err(RigidError::NoSliding { contact: CONTACTS[i] });
+            return Err(RigidError::NoSliding {
+                contact: CONTACTS[i],
+            });
         }
         t[i] = -v / speed;
     }
@@ -89,7 +97,8 @@ pub fn friction_directions(kin: &Kinematics) -> Result<[Vector3<f64>; 3], RigidE
 /// Regularized friction directions t_i = −v_i/√(|v_i|² + v_s²) with the
 /// velocity scale `v_s` (m/s): |t_i| < 1, defined at v = 0.
 pub fn regularized_directions(kin: &Kinematics, v_s: f64) -> [Vector3<f64>; 3] {
-    kin.v_contacts.map(|v| -v / (v.norm_squared() + v_s * v_s).sqrt())
+    kin.v_contacts_local
+        .map(|v| -v / (v.norm_squared() + v_s * v_s).sqrt())
 }
 
 /// The blocks shared by both problems: Lagrange rows (2) and centre-of-mass
@@ -108,16 +117,22 @@ struct Blocks {
     com_rhs: Vector3<f64>,
 }
 
-fn blocks(p: &PegParams, pose: &Pose, qdot: Vector2<f64>, force: [f64; 3], t: &[Vector3<f64>; 3]) -> Blocks {
-    let j = pose.jacobians();
+fn blocks(
+    p: &PegParams,
+    pose: &Pose,
+    qdot: Vector2<f64>,
+    force: [f64; 3],
+    t: &[Vector3<f64>; 3],
+) -> Blocks {
+    let j = pose.jacobians_local();
     let f = p.friction;
-    let force = Vector3::from(force);
+    let force = pose.frame.matrix().transpose() * Vector3::from(force);
     let weight = Vector3::new(0.0, 0.0, -p.mass * p.gravity);
     let mut lag_n = SMatrix::<f64, 2, 3>::zeros();
     let mut com_n = Matrix3::zeros();
-    for i in 0..3 {
-        lag_n.set_column(i, &(-f * j.contacts[i].transpose() * t[i]));
-        com_n.set_column(i, &(-(pose.normals[i] + t[i] * f)));
+    for (i, ti) in t.iter().enumerate() {
+        lag_n.set_column(i, &(-f * j.contacts[i].transpose() * ti));
+        com_n.set_column(i, &(-(pose.local.normals[i] + ti * f)));
     }
     let q_grav = Vector2::new(-p.mass * p.gravity * pose.geo.dz_c, 0.0);
     Blocks {
@@ -147,7 +162,8 @@ pub fn forward_system(
     a.fixed_view_mut::<3, 2>(2, 0).copy_from(&bl.com_q);
     a.fixed_view_mut::<3, 3>(2, 2).copy_from(&bl.com_n);
     let mut rhs = Vector5::zeros();
-    rhs.fixed_rows_mut::<2>(0).copy_from(&(bl.lag_rhs + Vector2::new(loads.m_gamma, loads.m_psi)));
+    rhs.fixed_rows_mut::<2>(0)
+        .copy_from(&(bl.lag_rhs + Vector2::new(loads.m_gamma, loads.m_psi)));
     rhs.fixed_rows_mut::<3>(2).copy_from(&bl.com_rhs);
     (a, rhs)
 }
@@ -165,12 +181,15 @@ pub fn prescribed_system(
 ) -> (Matrix5, Vector5) {
     let bl = blocks(p, pose, qdot, loads.force, t);
     let mut a = Matrix5::zeros();
-    a.fixed_view_mut::<2, 2>(0, 0).copy_from(&(-Matrix2::identity()));
+    a.fixed_view_mut::<2, 2>(0, 0)
+        .copy_from(&(-Matrix2::identity()));
     a.fixed_view_mut::<2, 3>(0, 2).copy_from(&bl.lag_n);
     a.fixed_view_mut::<3, 3>(2, 2).copy_from(&bl.com_n);
     let mut rhs = Vector5::zeros();
-    rhs.fixed_rows_mut::<2>(0).copy_from(&(bl.lag_rhs - bl.mass * qddot));
-    rhs.fixed_rows_mut::<3>(2).copy_from(&(bl.com_rhs - bl.com_q * qddot));
+    rhs.fixed_rows_mut::<2>(0)
+        .copy_from(&(bl.lag_rhs - bl.mass * qddot));
+    rhs.fixed_rows_mut::<3>(2)
+        .copy_from(&(bl.com_rhs - bl.com_q * qddot));
     (a, rhs)
 }
 
@@ -191,7 +210,8 @@ pub fn solve(a: &Matrix5, rhs: &Vector5, gamma: f64) -> Result<Vector5, RigidErr
 pub fn kinetic_energy(p: &PegParams, pose: &Pose, kin: &Kinematics) -> f64 {
     let w_ax = kin.omega.dot(&pose.axis);
     let w_tr2 = kin.omega.norm_squared() - w_ax * w_ax;
-    0.5 * p.mass * kin.v_c.norm_squared() + 0.5 * (p.inertia_axial() * w_ax * w_ax + p.inertia_transverse() * w_tr2)
+    0.5 * p.mass * kin.v_c.norm_squared()
+        + 0.5 * (p.inertia_axial() * w_ax * w_ax + p.inertia_transverse() * w_tr2)
 }
 
 /// The potential energy V = m g z_C (J).

@@ -10,6 +10,7 @@
 pub mod hand;
 pub mod hand_dynamics;
 pub mod params;
+pub mod prescribed;
 
 pub use params::{Loads, PegParams};
 
@@ -27,7 +28,9 @@ pub enum RigidError {
         reason: &'static str,
     },
     /// γ is outside the three-point-contact range γ0 < γ < π/2.
-    #[error("gamma = {gamma} rad is outside the three-point contact range (gamma0 = {gamma0} rad, pi/2)")]
+    #[error(
+        "gamma = {gamma} rad is outside the three-point contact range (gamma0 = {gamma0} rad, pi/2)"
+    )]
     NotThreePoint {
         /// The requested γ (rad).
         gamma: f64,

@@ -52,16 +52,35 @@ impl PegParams {
     /// all finite.
     pub fn validate(&self) -> Result<(), RigidError> {
         let checks: [(&'static str, f64, bool, &'static str); 6] = [
-            ("hole_diameter", self.hole_diameter, self.hole_diameter > 0.0, "must be > 0"),
-            ("peg_diameter", self.peg_diameter, self.peg_diameter > 0.0, "must be > 0"),
+            (
+                "hole_diameter",
+                self.hole_diameter,
+                self.hole_diameter > 0.0,
+                "must be > 0",
+            ),
+            (
+                "peg_diameter",
+                self.peg_diameter,
+                self.peg_diameter > 0.0,
+                "must be > 0",
+            ),
             ("height", self.height, self.height > 0.0, "must be > 0"),
             ("mass", self.mass, self.mass > 0.0, "must be > 0"),
             ("gravity", self.gravity, self.gravity >= 0.0, "must be >= 0"),
-            ("friction", self.friction, self.friction >= 0.0, "must be >= 0"),
+            (
+                "friction",
+                self.friction,
+                self.friction >= 0.0,
+                "must be >= 0",
+            ),
         ];
         for (field, value, ok, reason) in checks {
             if !value.is_finite() || !ok {
-                return Err(RigidError::Param { field, value, reason });
+                return Err(RigidError::Param {
+                    field,
+                    value,
+                    reason,
+                });
             }
         }
         if self.peg_diameter >= self.hole_diameter {

@@ -28,6 +28,7 @@
 
 pub mod document;
 pub mod double_pendulum;
+pub mod fig9;
 pub mod integrator;
 pub mod jamming;
 pub mod jamming_sweep;
@@ -71,6 +72,7 @@ pub const KINDS: &[Kind] = &[
     double_pendulum::KIND,
     jamming::KIND,
     crate::compliant::scene::KIND,
+    fig9::KIND,
 ];
 
 /// A scene read from a file.

@@ -1,0 +1,124 @@
+//! Prescribed motion (paper's cases (i) and (ii), Fig. 9): given γ(t), ψ(t)
+//! and their derivatives, the normal reactions N_K, N_B1, N_B2 and the
+//! moments M_γ, M_ψ that drive the motion.
+
+use nalgebra::Vector2;
+
+use crate::rigid::hand::Pose;
+use crate::rigid::hand_dynamics::{friction_directions, prescribed_system, solve};
+use crate::rigid::{Loads, PegParams, RigidError};
+
+/// Reactions and driving moments of a prescribed motion.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Reactions {
+    /// Moment conjugate to γ that drives the motion (N·m).
+    pub m_gamma: f64,
+    /// Moment about the hole axis that drives the motion (N·m).
+    pub m_psi: f64,
+    /// Normal reactions `[N_K, N_B1, N_B2]` (N); negative = the contact would
+    /// have to pull.
+    pub normal: [f64; 3],
+}
+
+impl Reactions {
+    /// True when every contact pushes (N ≥ 0): the prescribed motion is
+    /// possible with the peg on three points.
+    pub fn feasible(&self) -> bool {
+        self.normal.iter().all(|&n| n >= 0.0)
+    }
+}
+
+/// Reactions for the state (γ, ψ, γ̇, ψ̇) and accelerations (γ̈, ψ̈), with
+/// the assembly force `loads.force` (its moments are ignored: they are the
+/// unknowns). Friction opposes each contact's sliding velocity.
+///
+/// # Errors
+/// [`RigidError::NotThreePoint`] outside γ0 < γ < π/2,
+/// [`RigidError::NoSliding`] when a contact does not slide (no friction
+/// direction), [`RigidError::Singular`] when the reactions are indeterminate.
+pub fn reactions(
+    p: &PegParams,
+    loads: &Loads,
+    q: Vector2<f64>,
+    qdot: Vector2<f64>,
+    qddot: Vector2<f64>,
+) -> Result<Reactions, RigidError> {
+    let pose = Pose::try_new(p, q[0], q[1])?;
+    let t = friction_directions(&pose.kinematics(qdot))?;
+    let (a, rhs) = prescribed_system(p, loads, &pose, qdot, qddot, &t);
+    let y = solve(&a, &rhs, q[0])?;
+    Ok(Reactions {
+        m_gamma: y[0],
+        m_psi: y[1],
+        normal: [y[2], y[3], y[4]],
+    })
+}
+
+/// One row of the Fig. 9 study: reactions over m g, moments over m g D.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Fig9Row {
+    /// γ (rad).
+    pub gamma: f64,
+    /// ψ̇ (1/s).
+    pub psidot: f64,
+    /// N_B1/(m g).
+    pub n_b1: f64,
+    /// N_B2/(m g).
+    pub n_b2: f64,
+    /// N_K/(m g).
+    pub n_k: f64,
+    /// M_γ/(m g D).
+    pub m_gamma: f64,
+    /// M_ψ/(m g D).
+    pub m_psi: f64,
+    /// All reactions non-negative.
+    pub feasible: bool,
+}
+
+/// The Fig. 9 table: for each ψ̇ of `psidots` and each γ of `gammas`, the
+/// steady rates (γ̇, ψ̇) = (`gammadot`, ψ̇), γ̈ = ψ̈ = 0, ψ = 0, no applied
+/// force.
+///
+/// # Errors
+/// As [`reactions`].
+pub fn fig9_rows(
+    p: &PegParams,
+    gammas: &[f64],
+    gammadot: f64,
+    psidots: &[f64],
+) -> Result<Vec<Fig9Row>, RigidError> {
+    let (w, wd) = (p.mass * p.gravity, p.mass * p.gravity * p.hole_diameter);
+    let mut rows = Vec::with_capacity(gammas.len() * psidots.len());
+    for &psidot in psidots {
+        for &gamma in gammas {
+            let r = reactions(
+                p,
+                &Loads::default(),
+                Vector2::new(gamma, 0.0),
+                Vector2::new(gammadot, psidot),
+                Vector2::zeros(),
+            )?;
+            rows.push(Fig9Row {
+                gamma,
+                psidot,
+                n_b1: r.normal[1] / w,
+                n_b2: r.normal[2] / w,
+                n_k: r.normal[0] / w,
+                m_gamma: r.m_gamma / wd,
+                m_psi: r.m_psi / wd,
+                feasible: r.feasible(),
+            });
+        }
+    }
+    Ok(rows)
+}
+
+/// `count` values of γ from `start` to `end`, geometrically spaced in
+/// γ − γ0 so that they are dense near γ0 (`start > γ0`, `count ≥ 2`).
+pub fn gamma_grid(gamma0: f64, start: f64, end: f64, count: usize) -> Vec<f64> {
+    let (lo, hi) = (start - gamma0, end - gamma0);
+    let n = count.max(2);
+    (0..n)
+        .map(|i| gamma0 + lo * (hi / lo).powf(i as f64 / (n - 1) as f64))
+        .collect()
+}
