@@ -7,6 +7,6 @@ pub mod integrate;
 pub mod jamming;
 pub mod output;
 pub mod reference_problems;
+pub mod rigid;
 pub mod scene;
 pub mod system;
-pub mod rigid;
