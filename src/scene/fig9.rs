@@ -32,7 +32,7 @@ use crate::error::{RunError, SceneError, SceneErrors};
 use crate::output::csv::{CsvWriter, format_f64};
 use crate::output::plot::{Figure, Panel, Scale, Series};
 use crate::rigid::PegParams;
-use crate::rigid::prescribed::{fig9_rows, gamma_grid};
+use crate::rigid::prescribed::{Fig9Row, fig9_rows, gamma_grid};
 use crate::scene::validate::Checker;
 use crate::scene::{Document, Kind, Metric, RunContext, RunSummary, Scene};
 
@@ -277,21 +277,40 @@ impl Scene for Fig9Scene {
         }
         let mut outputs = vec![w.finish()?];
 
-        let mut panel = Panel::new(
-            "Normal reaction at B1 during alignment (rigid peg, three-point contact)",
-            "gamma [rad]",
-            "N_B1 / (m g) [-]",
-        )
-        .scales(Scale::Log, Scale::Log);
-        let mut metrics = Vec::new();
-        for (k, &psidot) in self.motion.psidot.iter().enumerate() {
-            let curve: Vec<_> = rows.iter().filter(|r| r.psidot == psidot).collect();
-            let pts: Vec<(f64, f64)> = curve.iter().map(|r| (r.gamma, r.n_b1)).collect();
-            let ok: Vec<bool> = curve.iter().map(|r| r.feasible).collect();
-            let name = format!("psidot = {psidot} 1/s");
-            for s in Series::split_feasible(&name, &pts, &ok, k) {
-                panel = panel.with(s);
+        // One panel per reaction, linear in N/(m g) so that negative
+        // (infeasible: the contact would have to pull) stretches show.
+        type Pick = fn(&Fig9Row) -> f64;
+        let quantities: [(&str, &str, Pick); 3] = [
+            (
+                "Normal reaction at B1 during alignment (rigid peg, three-point contact)",
+                "N_B1 / (m g) [-]",
+                |r| r.n_b1,
+            ),
+            ("Normal reaction at B2", "N_B2 / (m g) [-]", |r| r.n_b2),
+            ("Normal reaction at K", "N_K / (m g) [-]", |r| r.n_k),
+        ];
+        // x = γ − γ0 on a log axis resolves the approach to γ0, where B1 and
+        // B2 merge and the reactions change fastest.
+        let gamma0 = p.gamma0();
+        let mut panels = Vec::new();
+        for (title, y_label, pick) in quantities {
+            let mut panel = Panel::new(title, "gamma - gamma0 [rad]", y_label)
+                .scales(Scale::Log, Scale::Linear);
+            for (k, &psidot) in self.motion.psidot.iter().enumerate() {
+                let curve: Vec<_> = rows.iter().filter(|r| r.psidot == psidot).collect();
+                let pts: Vec<(f64, f64)> =
+                    curve.iter().map(|r| (r.gamma - gamma0, pick(r))).collect();
+                let ok: Vec<bool> = curve.iter().map(|r| r.feasible).collect();
+                let name = format!("psidot = {psidot} 1/s");
+                for s in Series::split_feasible(&name, &pts, &ok, k) {
+                    panel = panel.with(s);
+                }
             }
+            panels.push(panel);
+        }
+        let mut metrics = Vec::new();
+        for &psidot in &self.motion.psidot {
+            let curve: Vec<_> = rows.iter().filter(|r| r.psidot == psidot).collect();
             if let Some(first) = curve.first() {
                 metrics.push(Metric::new(
                     format!("N_B1/(mg) at first gamma, psidot = {psidot}"),
@@ -308,7 +327,7 @@ impl Scene for Fig9Scene {
         }
         let svg = ctx.output("svg");
         let mut fig = Figure::new();
-        fig.panels = vec![panel];
+        fig.panels = panels;
         fig.save(&svg)?;
         outputs.push(svg);
         Ok(RunSummary {
