@@ -251,6 +251,28 @@ fn contact_velocities_and_energies_equal_the_hand_derived_ones() {
     }
 }
 
+#[test]
+fn geometry_equals_the_hand_derived_geometry() {
+    let p = PegParams::fig9();
+    for gamma in gammas(&p).into_iter().chain([0.05, 0.3, 0.9]) {
+        let h = pegdyn::rigid::hand::Geometry::try_new(&p, gamma).unwrap();
+        let (eta_l, z_l) = h.centre_l();
+        let want = [
+            h.a1, h.a2, h.s1, h.s2, h.b, h.sin_tau, h.cos_tau, h.eta_c, h.z_c, h.kl, h.bl, eta_l,
+            z_l,
+        ];
+        let x = SVector::<f64, 4>::new(gamma, 0.3, 1.0, 1.0);
+        let got = rigid_peg::geometry(&x, &p.to_vector());
+        for (k, (g, w)) in got.iter().zip(want).enumerate() {
+            // Each quantity to 1e-12 of itself, S2 too where it is small (near 0.3 rad).
+            assert!(
+                (g - w).abs() <= TOL * w.abs(),
+                "γ = {gamma}, output {k}: {g} vs {w}"
+            );
+        }
+    }
+}
+
 /// SplitMix64 for seeded random states.
 struct Rng(u64);
 

@@ -291,11 +291,13 @@ pub fn build(g: &Graph, variant: Variant) -> Module {
             geo.z_c,
             geo.kl,
             geo.bl,
+            geo.centre_l[0],
+            geo.centre_l[1],
         ];
         functions.push(spec(
             "geometry",
             "Planar geometry at γ (m): a1, a2 (paper (1)), S1, S2 (2), b = BB1, sin τ, cos τ, η_C, z_C \
-             (3), KL, BL (5)."
+             (3), KL, BL (5), η_L, z_L (4b)."
                 .into(),
             vec![x, p],
             vec![("geo", Output::vector(&outs))],
