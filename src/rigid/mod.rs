@@ -3,14 +3,25 @@
 //!
 //! - [`params`]: dimensions, mass, friction and loads;
 //! - [`hand`]: hand-derived geometry and kinematics (corrected paper forms);
-//! - [`hand_dynamics`]: hand-derived equations of motion and reactions.
+//! - [`hand_dynamics`]: hand-derived equations of motion and reactions;
+//! - [`prescribed`]: reactions and driving moments of a prescribed motion;
+//! - [`forward`], [`forward_events`], [`trajectory`], [`stop`]: forward
+//!   dynamics with contact-state events;
+//! - [`stick`]: stick or slip from rest; [`modes`]: contact modes
+//!   (lift-off, Painlevé).
 //!
 //! Derivation and findings: `docs/rigid-peg.md`.
 
+pub mod forward;
+pub mod forward_events;
 pub mod hand;
 pub mod hand_dynamics;
+pub mod modes;
 pub mod params;
 pub mod prescribed;
+pub mod stick;
+pub mod stop;
+pub mod trajectory;
 
 pub use params::{Loads, PegParams};
 
