@@ -43,6 +43,17 @@ pub enum RestOutcome {
         /// Consistent starts, largest |q̈| first.
         starts: Vec<SlidingStart>,
     },
+    /// No three-point start is consistent, but a start with q̈ = λ û,
+    /// λ > 0, exists that needs contact `contact` to pull: the peg does not
+    /// stay on three points (it leaves the model; static friction is not
+    /// checked).
+    LeavesContact {
+        /// The start with the largest |q̈| among these (`normal` has the
+        /// negative entry).
+        start: SlidingStart,
+        /// Index of the most negative reaction (0 = K, 1 = B1, 2 = B2).
+        contact: usize,
+    },
 }
 
 fn direction(theta: f64) -> Vector2<f64> {
@@ -75,6 +86,7 @@ pub fn start_from_rest(model: &ForwardModel, q: Vector2<f64>) -> Result<RestOutc
         .map(|&th| cross(model, q, th).map(|c| c.0))
         .collect();
     let mut starts: Vec<SlidingStart> = Vec::new();
+    let mut pulling: Vec<SlidingStart> = Vec::new();
     for k in 0..SAMPLES {
         let (Some(c0), Some(c1)) = (values[k], values[(k + 1) % SAMPLES]) else {
             continue;
@@ -102,16 +114,28 @@ pub fn start_from_rest(model: &ForwardModel, q: Vector2<f64>) -> Result<RestOutc
         let u = direction(root);
         let lambda = u.dot(&acc.qdd);
         let scale = model.params.mass * model.params.gravity;
+        let start = SlidingStart {
+            direction: u,
+            qdd: acc.qdd,
+            normal: acc.normal,
+        };
         if lambda > 0.0 && acc.normal.iter().all(|&n| n >= -1e-9 * scale) {
-            starts.push(SlidingStart {
-                direction: u,
-                qdd: acc.qdd,
-                normal: acc.normal,
-            });
+            starts.push(start);
+        } else if lambda > 0.0 {
+            pulling.push(start);
         }
     }
     if starts.is_empty() {
-        return Ok(RestOutcome::Sticks);
+        pulling.sort_by(|x, y| y.qdd.norm().total_cmp(&x.qdd.norm()));
+        return Ok(match pulling.first() {
+            None => RestOutcome::Sticks,
+            Some(s) => {
+                let contact = (0..3)
+                    .min_by(|&i, &j| s.normal[i].total_cmp(&s.normal[j]))
+                    .unwrap_or(0);
+                RestOutcome::LeavesContact { start: *s, contact }
+            }
+        });
     }
     starts.sort_by(|x, y| y.qdd.norm().total_cmp(&x.qdd.norm()));
     Ok(RestOutcome::Slides { starts })

@@ -140,6 +140,15 @@ pub fn simulate(
                     };
                     return Ok(out);
                 }
+                RestOutcome::LeavesContact { contact, .. } => {
+                    push_row(model, &mut out.rows, t, x, None);
+                    out.stop = ForwardStop::LiftOff {
+                        contact: crate::rigid::hand_dynamics::CONTACTS[contact],
+                        t,
+                        state: x,
+                    };
+                    return Ok(out);
+                }
                 RestOutcome::Slides { starts } => {
                     let u = starts[0].direction;
                     if out.restarts.len() >= MAX_RESTARTS {
