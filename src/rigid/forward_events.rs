@@ -7,12 +7,19 @@
 //! - `stop` (exact Coulomb only): RMS sliding speed − v_stop falling
 //!   through 0 (the peg comes to rest: decide stick or slip);
 //! - `singular`: the normalized determinant of the forward system changing
-//!   sign (Painlevé singularity).
+//!   sign (Painlevé singularity);
+//! - `jam`: the largest reaction rising through [`N_JAM`]·m g: the
+//!   determinant tends to zero and the reactions grow without bound before
+//!   it changes sign (approach to a Painlevé singularity, a "dynamic jam"
+//!   that a rigid model can only resolve by a tangential impulse).
 
 use nalgebra::{Vector2, Vector4};
 
 use crate::integrate::{Direction, Event};
 use crate::rigid::forward::{ForwardModel, FrictionLaw};
+
+/// Reaction level (in units of m g) taken as unbounded by the `jam` event.
+pub const N_JAM: f64 = 1e4;
 
 /// What an event index means.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -25,6 +32,8 @@ pub enum EventKind {
     Stop,
     /// The forward system became singular.
     Singular,
+    /// A reaction exceeded [`N_JAM`]·m g.
+    Jam,
 }
 
 /// The events for `model` with the sliding start `start`, and their kinds
@@ -68,5 +77,15 @@ pub fn events(
             .terminal(),
     );
     kinds.push(EventKind::Singular);
+    ev.push(
+        Event::new(move |_t, x: &Vector4<f64>| {
+            model.evaluate_clamped(x, start).map_or(f64::NAN, |a| {
+                a.normal.iter().fold(f64::NEG_INFINITY, |m, &n| m.max(n)) / weight - N_JAM
+            })
+        })
+        .direction(Direction::Rising)
+        .terminal(),
+    );
+    kinds.push(EventKind::Jam);
     (ev, kinds)
 }

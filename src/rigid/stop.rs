@@ -20,9 +20,9 @@ pub enum PainleveCase {
     /// The forward system's determinant changed sign: accelerations and
     /// reactions pass through infinity.
     Singular,
-    /// At rest, the stick/slip decision found no consistent start and the
-    /// static problem is singular.
-    RestSingular,
+    /// A reaction grew past `forward_events::N_JAM`·m g: the determinant is
+    /// tending to zero (approach to a Painlevé singularity, dynamic jam).
+    Unbounded,
 }
 
 /// How a forward simulation ended.
@@ -140,7 +140,10 @@ impl fmt::Display for ForwardStop {
                         format!("{} consistent contact modes", m.len())
                     }
                     PainleveCase::Singular => "singular contact system".to_string(),
-                    PainleveCase::RestSingular => "singular at rest".to_string(),
+                    PainleveCase::Unbounded => {
+                        "reactions unbounded (approaching a singular contact system: dynamic jam)"
+                            .to_string()
+                    }
                 };
                 write!(f, "Painleve: {what} at t = {t} s, {}", state(x))
             }

@@ -197,6 +197,7 @@ pub fn simulate(
                 state: x,
             },
             (_, Some(EventKind::Singular)) => painleve(t, x, PainleveCase::Singular),
+            (_, Some(EventKind::Jam)) => painleve(t, x, PainleveCase::Unbounded),
             (_, Some(EventKind::Stop)) => continue,
             (reason, _) => ForwardStop::Integrator(reason),
         };
