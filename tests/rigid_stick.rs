@@ -296,3 +296,42 @@ fn regularized_friction_converges_to_coulomb() {
         assert!(e3 / e4 > min_ratio, "error ratio per decade {}", e3 / e4);
     }
 }
+
+/// Released spinning (ψ̇ = 10 1/s) without loads, friction halts the peg
+/// and it sticks. Friction only dissipates: T + V never rises along the
+/// run; the speed at the stop is v_stop; the rest position admits a static
+/// equilibrium inside the cones.
+#[test]
+fn friction_halts_a_spinning_peg_which_then_sticks() {
+    let p = PegParams::fig9();
+    let m = ForwardModel::new(p, Loads::default()).unwrap();
+    let x0 = Vector4::new(0.3, 0.0, 0.0, 10.0);
+    let tr = simulate(
+        &m,
+        x0,
+        0.0,
+        1.0,
+        Method::Dopri5,
+        &Options::with_tolerances(1e-10, 1e-12),
+    )
+    .unwrap();
+    let ForwardStop::Stuck { t, gamma, psi } = tr.stop else {
+        panic!("{}", tr.stop);
+    };
+    assert!(t > 0.0 && t < 0.1, "{t}");
+    let e: Vec<f64> = tr.rows.iter().map(|r| m.energy(&r.x).unwrap()).collect();
+    let e0 = e[0];
+    for w in e.windows(2) {
+        assert!(
+            w[1] <= w[0] + 1e-9 * e0,
+            "energy rose: {} -> {}",
+            w[0],
+            w[1]
+        );
+    }
+    assert!(e[e.len() - 1] < 0.99 * e0);
+    // The last row is the located stop: RMS speed = v_stop.
+    let before = tr.rows[tr.rows.len() - 1].x;
+    assert!((m.speed(&before) - m.v_stop).abs() < 1e-3 * m.v_stop);
+    assert!(static_margin(&p, &Loads::default(), Vector2::new(gamma, psi)) < 0.0);
+}

@@ -115,6 +115,21 @@ pub fn simulate(
     method: Method,
     options: &Options,
 ) -> Result<Trajectory, ForwardError> {
+    simulate_with_progress(model, x0, (t0, t_end), method, options, &mut |_| {})
+}
+
+/// [`simulate`] calling `progress` with the time after every accepted step.
+///
+/// # Errors
+/// As [`simulate`].
+pub fn simulate_with_progress(
+    model: &ForwardModel,
+    x0: Vector4<f64>,
+    (t0, t_end): (f64, f64),
+    method: Method,
+    options: &Options,
+    progress: &mut dyn FnMut(f64),
+) -> Result<Trajectory, ForwardError> {
     options.validate(t0, t_end)?;
     crate::rigid::hand::Geometry::try_new(&model.params, x0[0])?;
     let mut out = Trajectory {
@@ -176,6 +191,7 @@ pub fn simulate(
         for e in evs {
             solver = solver.with_event(e);
         }
+        let mut solver = solver.with_progress(|t| progress(t));
         let system = PegSystem { model, start };
         let sol = solver.solve(&system, t, x, t_end)?;
         add(&mut out.stats, &sol.stats);

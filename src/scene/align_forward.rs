@@ -43,7 +43,7 @@ use crate::output::csv::CsvWriter;
 use crate::output::plot::{Figure, Panel, Series};
 use crate::rigid::Loads;
 use crate::rigid::forward::{ForwardModel, FrictionLaw};
-use crate::rigid::trajectory::simulate;
+use crate::rigid::trajectory::simulate_with_progress;
 use crate::scene::fig9::PegTable;
 use crate::scene::simulate::solver_config;
 use crate::scene::validate::Checker;
@@ -241,11 +241,19 @@ impl Scene for AlignForwardScene {
         let i = &self.initial;
         let x0 = Vector4::new(i.gamma, i.psi, i.gammadot, i.psidot);
         ctx.progress.set_span(spec.t0, spec.t_end);
-        let tr =
-            simulate(&model, x0, spec.t0, spec.t_end, method, &options).map_err(|e| match e {
-                crate::rigid::trajectory::ForwardError::Integrate(e) => RunError::Integrate(e),
-                crate::rigid::trajectory::ForwardError::Rigid(e) => RunError::Rigid(e),
-            })?;
+        let progress = &mut ctx.progress;
+        let tr = simulate_with_progress(
+            &model,
+            x0,
+            (spec.t0, spec.t_end),
+            method,
+            &options,
+            &mut |t| progress.update(t),
+        )
+        .map_err(|e| match e {
+            crate::rigid::trajectory::ForwardError::Integrate(e) => RunError::Integrate(e),
+            crate::rigid::trajectory::ForwardError::Rigid(e) => RunError::Rigid(e),
+        })?;
         let header = [
             "t", "gamma", "psi", "gammadot", "psidot", "N_K", "N_B1", "N_B2",
         ];
