@@ -191,7 +191,7 @@ pub fn simulate_with_progress(
         for e in evs {
             solver = solver.with_event(e);
         }
-        let mut solver = solver.with_progress(|t| progress(t));
+        let mut solver = solver.with_progress(&mut *progress);
         let system = PegSystem { model, start };
         let sol = solver.solve(&system, t, x, t_end)?;
         add(&mut out.stats, &sol.stats);
