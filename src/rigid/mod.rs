@@ -6,17 +6,27 @@
 //! - [`hand_dynamics`]: hand-derived equations of motion and reactions;
 //! - [`generated_model`]: the same model derived by the generator
 //!   (`pegdyn::generated::rigid_peg*`), in four variants;
-//! - [`prescribed`]: reactions of prescribed motions (Fig. 9), through the
-//!   generated model.
+//! - [`prescribed`]: reactions and driving moments of a prescribed motion
+//!   (Fig. 9), through the generated model;
+//! - [`forward`], [`forward_events`], [`trajectory`], [`stop`]: forward
+//!   dynamics with contact-state events;
+//! - [`stick`]: stick or slip from rest; [`modes`]: contact modes
+//!   (lift-off, Painlevé).
 //!
 //! Derivation and findings: `docs/rigid-peg.md`; the generated model:
 //! `docs/rigid-model.md`.
 
+pub mod forward;
+pub mod forward_events;
 pub mod generated_model;
 pub mod hand;
 pub mod hand_dynamics;
+pub mod modes;
 pub mod params;
 pub mod prescribed;
+pub mod stick;
+pub mod stop;
+pub mod trajectory;
 
 pub use params::{Loads, PegParams};
 

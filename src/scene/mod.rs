@@ -26,6 +26,7 @@
 //! assert!(err.contains("pendulum.length") && err.contains("-1.0"), "{err}");
 //! ```
 
+pub mod align_forward;
 pub mod document;
 pub mod double_pendulum;
 pub mod fig9;
@@ -73,6 +74,7 @@ pub const KINDS: &[Kind] = &[
     jamming::KIND,
     crate::compliant::scene::KIND,
     fig9::KIND,
+    align_forward::KIND,
 ];
 
 /// A scene read from a file.

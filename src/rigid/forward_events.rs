@@ -1,0 +1,91 @@
+//! Contact-state events of the forward simulation (issue item 6), as
+//! integrator [`Event`]s on x = (γ, ψ, γ̇, ψ̇), all terminal:
+//!
+//! - `gamma0`: γ − γ0 falling through 0 (B1 and B2 merge, b → 0);
+//! - `lift_off_K`, `lift_off_B1`, `lift_off_B2`: N_i/(m g) falling
+//!   through 0;
+//! - `stop` (exact Coulomb only): RMS sliding speed − v_stop falling
+//!   through 0 (the peg comes to rest: decide stick or slip);
+//! - `singular`: the normalized determinant of the forward system changing
+//!   sign (Painlevé singularity);
+//! - `jam`: the largest reaction rising through [`N_JAM`]·m g: the
+//!   determinant tends to zero and the reactions grow without bound before
+//!   it changes sign (approach to a Painlevé singularity, a "dynamic jam"
+//!   that a rigid model can only resolve by a tangential impulse).
+
+use nalgebra::{Vector2, Vector4};
+
+use crate::integrate::{Direction, Event};
+use crate::rigid::forward::{ForwardModel, FrictionLaw};
+
+/// Reaction level (in units of m g) taken as unbounded by the `jam` event.
+pub const N_JAM: f64 = 1e4;
+
+/// What an event index means.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EventKind {
+    /// γ reached γ0.
+    Gamma0,
+    /// Normal reaction `i` (0 = K, 1 = B1, 2 = B2) fell to zero.
+    LiftOff(usize),
+    /// The sliding speed fell to v_stop.
+    Stop,
+    /// The forward system became singular.
+    Singular,
+    /// A reaction exceeded [`N_JAM`]·m g.
+    Jam,
+}
+
+/// The events for `model` with the sliding start `start`, and their kinds
+/// in index order.
+pub fn events(
+    model: &ForwardModel,
+    start: Option<Vector2<f64>>,
+) -> (Vec<Event<'_, 4>>, Vec<EventKind>) {
+    let g0 = model.params.gamma0();
+    let weight = model.params.mass * model.params.gravity.max(f64::MIN_POSITIVE);
+    let mut ev = vec![
+        Event::new(move |_t, x: &Vector4<f64>| x[0] - g0)
+            .direction(Direction::Falling)
+            .terminal(),
+    ];
+    let mut kinds = vec![EventKind::Gamma0];
+    for i in 0..3 {
+        ev.push(
+            Event::new(move |_t, x: &Vector4<f64>| {
+                model
+                    .evaluate_clamped(x, start)
+                    .map_or(f64::NAN, |a| a.normal[i] / weight)
+            })
+            .direction(Direction::Falling)
+            .terminal(),
+        );
+        kinds.push(EventKind::LiftOff(i));
+    }
+    if model.friction == FrictionLaw::Coulomb {
+        let v_stop = model.v_stop;
+        ev.push(
+            Event::new(move |_t, x: &Vector4<f64>| model.speed(x) - v_stop)
+                .direction(Direction::Falling)
+                .terminal(),
+        );
+        kinds.push(EventKind::Stop);
+    }
+    ev.push(
+        Event::new(move |_t, x: &Vector4<f64>| model.contact_determinant(x, start))
+            .direction(Direction::Both)
+            .terminal(),
+    );
+    kinds.push(EventKind::Singular);
+    ev.push(
+        Event::new(move |_t, x: &Vector4<f64>| {
+            model.evaluate_clamped(x, start).map_or(f64::NAN, |a| {
+                a.normal.iter().fold(f64::NEG_INFINITY, |m, &n| m.max(n)) / weight - N_JAM
+            })
+        })
+        .direction(Direction::Rising)
+        .terminal(),
+    );
+    kinds.push(EventKind::Jam);
+    (ev, kinds)
+}
