@@ -4,6 +4,7 @@
 // inside this crate and in the test harness that includes it.
 extern crate self as pegdyn;
 
+pub mod accuracy;
 pub mod compliant;
 pub mod error;
 pub mod generated;
