@@ -112,7 +112,7 @@ pub mod compliant_peg {
         let t29 = -rho_p;
         let t30 = l_c + t29;
         let t31 = r + t29;
-        let t32 = x + r + t4 + sin_theta * t30 - T::from_f64(2.0) * t10 * t31;
+        let t32 = r + t4 + x + sin_theta * t30 - T::from_f64(2.0) * t10 * t31;
         let t33 = -(sin_theta * (l_c + t29 + rho_p * sin_theta))
             - cos_theta * (r - T::from_f64(2.0) * rho_p * t10);
         let t34 = zdot + thetadot * t33;
@@ -126,7 +126,7 @@ pub mod compliant_peg {
         let t42 = T::from_f64(1.0) / t41;
         let t43 = t32.step();
         let t44 = rho_h + T::from_f64(0.5) * d + t5;
-        let t45 = x + r + t4 + sin_theta * t7 + T::from_f64(2.0) * t10 * t44;
+        let t45 = r + t4 + x + sin_theta * t7 + T::from_f64(2.0) * t10 * t44;
         let t46 = t12 + sin_theta * t44;
         let t47 = -(r * sin_theta) + cos_theta * t46;
         let t48 = -(r * cos_theta) - sin_theta * t46;
@@ -276,7 +276,7 @@ pub mod compliant_peg {
         let t42 = l_c + t41;
         let t43 = r + t41;
         let t44 = sin_theta * t42;
-        let t45 = x + r + t3 + t44 - T::from_f64(2.0) * t12 * t43;
+        let t45 = r + t3 + x + t44 - T::from_f64(2.0) * t12 * t43;
         let t46 = l_c + t41 + rho_p * sin_theta;
         let t47 = r - T::from_f64(2.0) * rho_p * t12;
         let t48 = -(sin_theta * t46) - cos_theta * t47;
@@ -296,7 +296,7 @@ pub mod compliant_peg {
         let t62 = t49 * t49;
         let t63 = rho_h + T::from_f64(0.5) * d + t4;
         let t64 = t7 + cos_theta * t63;
-        let t65 = x + r + t3 + t8 + T::from_f64(2.0) * t12 * t63;
+        let t65 = r + t3 + x + t8 + T::from_f64(2.0) * t12 * t63;
         let t66 = t14 + sin_theta * t63;
         let t67 = t17 + cos_theta * t66;
         let t68 = xdot + thetadot * t67;
@@ -936,7 +936,7 @@ pub mod compliant_peg {
         let t24 = -rho_p;
         let t25 = l_c + t24;
         let t26 = r + t24;
-        let t27 = x + r + t0 + sin_theta * t25 - T::from_f64(2.0) * t6 * t26;
+        let t27 = r + t0 + x + sin_theta * t25 - T::from_f64(2.0) * t6 * t26;
         let t28 = zdot
             + thetadot
                 * (-(sin_theta * (l_c + t24 + rho_p * sin_theta))
@@ -958,7 +958,7 @@ pub mod compliant_peg {
         let t37 = T::from_f64(1.0) / wall_ma;
         let t38 = T::from_f64(1.0) / wall_mb;
         let t39 = rho_h + T::from_f64(0.5) * d + t1;
-        let t40 = x + r + t0 + sin_theta * t3 + T::from_f64(2.0) * t6 * t39;
+        let t40 = r + t0 + x + sin_theta * t3 + T::from_f64(2.0) * t6 * t39;
         let t41 = t8 + sin_theta * t39;
         let t42 = sin_theta * (xdot + thetadot * (-(r * sin_theta) + cos_theta * t41))
             + cos_theta * (zdot + thetadot * (-(r * cos_theta) - sin_theta * t41));
@@ -1060,9 +1060,9 @@ pub mod compliant_peg {
         let t6 = t5.powf(T::from_f64(2.5));
         let t7 = -rho_p;
         let t8 = l_c + t7;
-        let t9 = (x + r + t0 + sin_theta * t8 - T::from_f64(2.0) * t4 * (r + t7)).max0();
+        let t9 = (r + t0 + x + sin_theta * t8 - T::from_f64(2.0) * t4 * (r + t7)).max0();
         let t10 = t9.powf(T::from_f64(2.5));
-        let t11 = (x + r + t0 + sin_theta * t2
+        let t11 = (r + t0 + x + sin_theta * t2
             + T::from_f64(2.0) * t4 * (rho_h + T::from_f64(0.5) * d + t1))
             .max0();
         let t12 = t11.powf(T::from_f64(2.5));

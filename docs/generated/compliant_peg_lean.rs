@@ -110,7 +110,7 @@ pub mod compliant_peg_lean {
         let t27 = -rho_p;
         let t28 = l_c + t27;
         let t29 = r + t27;
-        let t30 = x + r + t4 + sin_theta * t28 - T::from_f64(2.0) * t10 * t29;
+        let t30 = r + t4 + x + sin_theta * t28 - T::from_f64(2.0) * t10 * t29;
         let t31 = -(sin_theta * (l_c + t27 + rho_p * sin_theta))
             - cos_theta * (r - T::from_f64(2.0) * rho_p * t10);
         let t32 = zdot + thetadot * t31;
@@ -223,7 +223,7 @@ pub mod compliant_peg_lean {
         let t35 = -rho_p;
         let t36 = l_c + t35;
         let t37 = r + t35;
-        let t38 = x + r + t3 + sin_theta * t36 - T::from_f64(2.0) * t11 * t37;
+        let t38 = r + t3 + x + sin_theta * t36 - T::from_f64(2.0) * t11 * t37;
         let t39 = l_c + t35 + rho_p * sin_theta;
         let t40 = r - T::from_f64(2.0) * rho_p * t11;
         let t41 = -(sin_theta * t39) - cos_theta * t40;
@@ -617,7 +617,7 @@ pub mod compliant_peg_lean {
         let t19 = -rho_p;
         let t20 = l_c + t19;
         let t21 = r + t19;
-        let t22 = x + r + t0 + sin_theta * t20 - T::from_f64(2.0) * t6 * t21;
+        let t22 = r + t0 + x + sin_theta * t20 - T::from_f64(2.0) * t6 * t21;
         let t23 = zdot
             + thetadot
                 * (-(sin_theta * (l_c + t19 + rho_p * sin_theta))
@@ -691,7 +691,7 @@ pub mod compliant_peg_lean {
             .max0();
         let t5 = t4.powf(T::from_f64(2.5));
         let t6 = -rho_p;
-        let t7 = (x + r + t0 + sin_theta * (l_c + t6) - T::from_f64(2.0) * t3 * (r + t6))
+        let t7 = (r + t0 + x + sin_theta * (l_c + t6) - T::from_f64(2.0) * t3 * (r + t6))
             .max0();
         let t8 = t7.powf(T::from_f64(2.5));
         let kinetic = T::from_f64(0.5) * m * (xdot * xdot + zdot * zdot)

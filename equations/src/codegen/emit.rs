@@ -129,7 +129,7 @@ impl<'a> Emitter<'a> {
                 let name = self.name(id);
                 Frag::new(quote!(#name), Prec::Atom)
             }
-            Node::Add(xs) => self.sum(&xs),
+            Node::Add(xs) => self.sum(&crate::eval::sum_order(g, &xs)),
             Node::Mul(xs) => self.product(&xs, None),
             Node::Pow(b, e) => self.power(b, e),
             Node::Unary(op, a) => self.unary(op, a),
@@ -146,7 +146,8 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    /// A sum, terms in node order; negative-coefficient terms subtracted.
+    /// A sum, terms in [`crate::eval::sum_order`]; negative-coefficient
+    /// terms subtracted.
     fn sum(&mut self, xs: &[Id]) -> Frag {
         let mut ts = TokenStream::new();
         for (k, &x) in xs.iter().enumerate() {
