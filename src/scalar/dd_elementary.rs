@@ -19,13 +19,13 @@ use super::dd::{Dd, two_prod};
 
 /// ln 2 in three parts (their sum is ln 2 to 160 bits).
 const LN2: [f64; 3] = [
-    0.6931471805599453,
+    std::f64::consts::LN_2,
     2.3190468138462996e-17,
     5.707708438416212e-34,
 ];
 /// π/2 in three parts.
 const PI_2: [f64; 3] = [
-    1.5707963267948966,
+    std::f64::consts::FRAC_PI_2,
     6.123233995736766e-17,
     -1.4973849048591698e-33,
 ];
