@@ -74,6 +74,11 @@ pub struct FunctionAccuracy {
     pub max_ulps: f64,
     /// Worst relative error.
     pub max_relative: f64,
+    /// Worst normwise error: `|value − reference|` over the largest
+    /// `|reference|` among the entries of the same output at the same point
+    /// (meaningful where an entry's exact value is 0 or tiny, as in
+    /// Jacobians, where ulps and relative error are not).
+    pub max_normwise: f64,
     /// Where the worst ulps occurred: point label and output entry.
     pub worst_at: String,
     /// Entries that are NaN or infinite at `f64` with a finite reference.
@@ -128,6 +133,7 @@ pub fn measure_function(f: &Function, points: &[Point]) -> Result<FunctionAccura
         entries: 0,
         max_ulps: 0.0,
         max_relative: 0.0,
+        max_normwise: 0.0,
         worst_at: String::new(),
         non_finite: 0,
     };
@@ -140,7 +146,32 @@ pub fn measure_function(f: &Function, points: &[Point]) -> Result<FunctionAccura
             .collect();
         let xd: Vec<&[Dd]> = xd.iter().map(Vec::as_slice).collect();
         let (lo, hi) = ((f.eval_f64)(&xf), (f.eval_dd)(&xd));
+        // Scale of each output at this point: its largest |reference|.
+        let mut scale = Vec::with_capacity(hi.len());
+        let mut start = 0;
+        for &(_, len) in f.outputs {
+            let end = (start + len).min(hi.len());
+            let m = hi[start..end]
+                .iter()
+                .map(|r| r.hi().abs())
+                .filter(|v| v.is_finite())
+                .fold(0.0, f64::max);
+            scale.extend(std::iter::repeat_n(m, end - start));
+            start = end;
+        }
         for (k, (&v, &r)) in lo.iter().zip(&hi).enumerate() {
+            if v.is_finite() && r.is_finite() {
+                let err = (Dd::from(v) - r).hi().abs();
+                let s = scale.get(k).copied().unwrap_or(0.0);
+                let nw = if err == 0.0 {
+                    0.0
+                } else if s > 0.0 {
+                    err / s
+                } else {
+                    f64::INFINITY
+                };
+                acc.max_normwise = acc.max_normwise.max(nw);
+            }
             let e = entry_error(v, r);
             acc.entries += 1;
             acc.non_finite += usize::from(e.non_finite);
@@ -154,12 +185,20 @@ pub fn measure_function(f: &Function, points: &[Point]) -> Result<FunctionAccura
     Ok(acc)
 }
 
-/// Measures every function in `functions` on the hard grid of its module.
-pub fn measure(functions: &[Function]) -> Result<Report, AccuracyError> {
+/// Measures every function in `functions` on the hard grid of its module,
+/// restricted to the points whose label contains `only` if given.
+pub fn measure(functions: &[Function], only: Option<&str>) -> Result<Report, AccuracyError> {
     let mut report = Report::default();
     for f in functions {
         match grid::points(f.module) {
-            Some(points) => report.functions.push(measure_function(f, &points)?),
+            Some(mut points) => {
+                if let Some(sub) = only {
+                    points.retain(|p| p.label.contains(sub));
+                }
+                if !points.is_empty() {
+                    report.functions.push(measure_function(f, &points)?);
+                }
+            }
             None => {
                 if !report.skipped.iter().any(|m| m == f.module) {
                     report.skipped.push(f.module.to_owned());

@@ -34,18 +34,19 @@ impl fmt::Display for Report {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         writeln!(
             f,
-            "{:<34} {:>6} {:>8} {:>10} {:>10} {:>5}  worst at",
-            "function", "points", "entries", "max ulps", "max rel", "nonf"
+            "{:<34} {:>6} {:>8} {:>10} {:>10} {:>10} {:>5}  worst ulps at",
+            "function", "points", "entries", "max ulps", "max rel", "normwise", "nonf"
         )?;
         for r in &self.functions {
             writeln!(
                 f,
-                "{:<34} {:>6} {:>8} {:>10} {:>10.2e} {:>5}  {}",
+                "{:<34} {:>6} {:>8} {:>10} {:>10.2e} {:>10.2e} {:>5}  {}",
                 r.path,
                 r.points,
                 r.entries,
                 ulps(r.max_ulps),
                 r.max_relative,
+                r.max_normwise,
                 r.non_finite,
                 r.worst_at
             )?;

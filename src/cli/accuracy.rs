@@ -1,4 +1,4 @@
-//! `pegdyn accuracy [--csv FILE]`: the rounding error of every generated
+//! `pegdyn accuracy [--csv FILE] [--only TEXT]`: the rounding error of every generated
 //! function, `f64` against double-double on the hard grid
 //! ([`pegdyn::accuracy`]). Exit 1 if the grid is incomplete or the CSV
 //! cannot be written.
@@ -10,8 +10,8 @@ use pegdyn::accuracy::measure;
 use pegdyn::generated::registry::FUNCTIONS;
 
 /// Measures, prints the table, writes the CSV if asked.
-pub fn accuracy(csv: Option<&Path>) -> ExitCode {
-    let report = match measure(&FUNCTIONS) {
+pub fn accuracy(csv: Option<&Path>, only: Option<&str>) -> ExitCode {
+    let report = match measure(&FUNCTIONS, only) {
         Ok(r) => r,
         Err(e) => {
             errln!("error: {e}");

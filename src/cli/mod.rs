@@ -71,6 +71,9 @@ enum Command {
         /// Also write the table as CSV to this file.
         #[arg(long)]
         csv: Option<PathBuf>,
+        /// Only the grid points whose label contains this text (e.g. "theta=0e0").
+        #[arg(long)]
+        only: Option<String>,
     },
 }
 
@@ -91,7 +94,7 @@ pub fn main() -> ExitCode {
         Command::Run { scene, out, quiet } => run::run(&scene, &out, quiet),
         Command::Check { scenes } => check::check(&scenes),
         Command::Codegen { report_only } => codegen::codegen(report_only),
-        Command::Accuracy { csv } => accuracy::accuracy(csv.as_deref()),
+        Command::Accuracy { csv, only } => accuracy::accuracy(csv.as_deref(), only.as_deref()),
         Command::Kinds => {
             for k in pegdyn::scene::KINDS {
                 outln!("{:<20} {}", k.name, k.about);
