@@ -23,7 +23,7 @@ pub(crate) fn ident(s: &str) -> Ident {
     Ident::new(s, Span::call_site())
 }
 
-/// The [`Real`](../../pegdyn/scalar/trait.Real.html) method implementing a transcendental function.
+/// The `pegdyn::scalar::Real` method implementing a transcendental function.
 pub(crate) fn method(op: Unary) -> &'static str {
     match op {
         Unary::Sin => "sin",
