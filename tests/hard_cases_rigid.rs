@@ -2,9 +2,9 @@
 //! hand-derived model `pegdyn::rigid`): γ → γ0 = arccos(d/D) for small
 //! clearances, γ up to 1.2 rad, ψ̇ = 0 exactly and 1e-12, and a 10 s
 //! frictionless simulation (energy and contact-constraint drift).
-//! The generated rigid model (`pegdyn::generated::rigid_peg*`, branch
-//! `rigidgen`) joins `pegdyn accuracy` with a grid in
-//! `src/accuracy/grid.rs` (see `docs/ACCURACY.md`).
+//! The generated rigid model (`pegdyn::generated::rigid_peg*`) is measured
+//! near γ0 by `pegdyn accuracy` (grid in `src/accuracy/grid.rs`, asserted
+//! in `tests/accuracy_report.rs`).
 
 use nalgebra::{SVector, Vector2, Vector4};
 use pegdyn::integrate::{Method, Options, Solver};

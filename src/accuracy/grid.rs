@@ -4,9 +4,7 @@
 //! of the jamming parallelogram).
 //!
 //! A point gives a value to every input symbol of its module by name, so a
-//! new model needs only a base point and its variations here (for the
-//! rigid peg of seed 000: `gamma` = γ0(1 + ε) with γ0 = acos(d/D) for
-//! ε = 1e-3 … 1e-12, `psidot` = 0 and 1e-12, clearances as below).
+//! new model needs only a base point and its variations here.
 
 use crate::compliant::{CompliantParams, CompliantSpec, Load};
 use crate::generated::compliant_peg::P_NAMES;
@@ -97,6 +95,10 @@ pub fn points(module: &str) -> Option<Vec<Point>> {
         "hertz" => Some(hertz()),
         "compliant_peg" | "compliant_peg_lean" => Some(compliant()),
         "quasi_static" => Some(quasi_static()),
+        "rigid_peg"
+        | "rigid_peg_frictionless"
+        | "rigid_peg_planar"
+        | "rigid_peg_planar_frictionless" => Some(rigid()),
         _ => None,
     }
 }
@@ -239,6 +241,66 @@ fn quasi_static() -> Vec<Point> {
                     .with("fx", ratio)
                     .with("fz", 1.0);
                 out.push(p.labelled(format!("theta={theta:e} l={l:e} ratio={ratio:.3}")));
+            }
+        }
+    }
+    out
+}
+
+/// The rigid peg of seed 000 (Fig. 9 dimensions, D = 50 mm) for
+/// clearances 50 µm, 1 µm and 1 nm: γ = γ0(1 + ε) for ε = 1e-3, 1e-6,
+/// 1e-9, 1e-12 and γ = 0.3, 1.2 rad; ψ̇ = 0, 1e-12 and 1 rad/s; γ0 given
+/// as `2 asin(√((D − d)/(2D)))` rounded to `f64` (as `PegParams::gamma0`).
+fn rigid() -> Vec<Point> {
+    let mut out = Vec::new();
+    for &c in &[50e-6f64, 1e-6, 1e-9] {
+        let (dh, dp) = (0.05, 0.05 - c);
+        let gamma0 = 2.0 * ((dh - dp) / (2.0 * dh)).sqrt().asin();
+        let base = Point::new(
+            "",
+            &[
+                ("D_hole", dh),
+                ("d_peg", dp),
+                ("H", 0.07),
+                ("m", 1.0),
+                ("g", 9.81),
+                ("f", 0.2),
+                ("gamma0", gamma0),
+                ("psi", 0.4),
+                ("gammadot", 0.1),
+                ("M_gamma", 0.01),
+                ("M_psi", 0.0),
+                ("F_x", 0.0),
+                ("F_y", 0.0),
+                ("F_z", -1.0),
+                ("gammaddot", 0.5),
+                ("psiddot", 0.5),
+            ],
+        );
+        let mut with_t = base.clone();
+        for (n, v) in [
+            ("t_K_eta", 0.6),
+            ("t_K_n", 0.8),
+            ("t_K_z", 0.0),
+            ("t_B1_eta", 0.0),
+            ("t_B1_n", 0.6),
+            ("t_B1_z", -0.8),
+            ("t_B2_eta", 0.0),
+            ("t_B2_n", -0.6),
+            ("t_B2_z", -0.8),
+            ("t_B_eta", 0.6),
+            ("t_B_z", -0.8),
+        ] {
+            with_t = with_t.with(n, v);
+        }
+        let gammas = [1e-3, 1e-6, 1e-9, 1e-12]
+            .map(|e| (gamma0 * (1.0 + e), format!("gamma=gamma0(1+{e:e})")))
+            .into_iter()
+            .chain([(0.3, "gamma=0.3".to_owned()), (1.2, "gamma=1.2".to_owned())]);
+        for (gamma, glabel) in gammas {
+            for &psidot in &[0.0, 1e-12, 1.0] {
+                let p = with_t.with("gamma", gamma).with("psidot", psidot);
+                out.push(p.labelled(format!("clearance={c:e} {glabel} psidot={psidot:e}")));
             }
         }
     }
