@@ -1,7 +1,10 @@
 //! Code generated at build time from the symbolic models in
 //! `pegdyn-equations` (see `build.rs`): one module per model, each with
-//! straight-line functions of `&SVector<f64, N>` inputs and `<INPUT>_NAMES`
-//! constants that give the symbol name of every input component.
+//! straight-line functions `f<T: Real>` of `&SVector<T, N>` inputs (generic
+//! over the scalar, [`crate::scalar::Real`]: `f64`, or the double-double
+//! [`crate::scalar::Dd`] as a reference) and `<INPUT>_NAMES` constants that
+//! give the symbol name of every input component; then `registry`, which
+//! lists every function with callers at both scalars.
 //!
 //! A readable copy of every module is checked in under `docs/generated/`
 //! and kept current by `tests/generated_snapshot.rs`.
@@ -24,3 +27,46 @@ pub const SOURCE: &str = include_str!(concat!(env!("OUT_DIR"), "/generated.rs"))
 
 /// Operation counts of every generated function (plain-text table).
 pub const REPORT: &str = include_str!(concat!(env!("OUT_DIR"), "/codegen_report.txt"));
+
+/// One generated function as the registry lists it
+/// (`pegdyn::generated::registry::FUNCTIONS`): where it is, what it takes
+/// and returns, and callers on slices at `f64` and at double-double.
+#[derive(Clone, Copy, Debug)]
+pub struct Function {
+    /// The module (model) name.
+    pub module: &'static str,
+    /// The function name.
+    pub name: &'static str,
+    /// Inputs in order: argument name and the symbol name of each component.
+    pub inputs: &'static [(&'static str, &'static [&'static str])],
+    /// Outputs in order: name and number of entries (matrices row-major).
+    pub outputs: &'static [(&'static str, usize)],
+    /// Calls the function at `f64`: one slice per input, of its length;
+    /// returns every output entry flattened in order.
+    pub eval_f64: fn(&[&[f64]]) -> Vec<f64>,
+    /// The same at double-double.
+    pub eval_dd: fn(&[&[crate::scalar::Dd]]) -> Vec<crate::scalar::Dd>,
+}
+
+impl Function {
+    /// `module::name`.
+    pub fn path(&self) -> String {
+        format!("{}::{}", self.module, self.name)
+    }
+
+    /// The name of flattened output entry `k`: `name` for a scalar,
+    /// `name[i]` otherwise.
+    pub fn output_name(&self, mut k: usize) -> String {
+        for &(name, len) in self.outputs {
+            if k < len {
+                return if len == 1 {
+                    name.to_owned()
+                } else {
+                    format!("{name}[{k}]")
+                };
+            }
+            k -= len;
+        }
+        format!("#{k}")
+    }
+}

@@ -1,4 +1,10 @@
 //! pegdyn
+
+// Generated code names the crate as `pegdyn::…` so that it reads the same
+// inside this crate and in the test harness that includes it.
+extern crate self as pegdyn;
+
+pub mod accuracy;
 pub mod compliant;
 pub mod error;
 pub mod generated;
@@ -8,5 +14,6 @@ pub mod jamming;
 pub mod output;
 pub mod reference_problems;
 pub mod rigid;
+pub mod scalar;
 pub mod scene;
 pub mod system;

@@ -6,6 +6,7 @@
 /// gravity `g`. SI units.
 pub mod cart_pole {
     use nalgebra::{Matrix2, Matrix2x4, SMatrix, SVector, Vector2, Vector4};
+    use pegdyn::scalar::Real;
     /// Symbol names of the components of `x`, in order.
     pub const X_NAMES: [&str; 4] = ["xc", "theta", "xcdot", "thetadot"];
     /// Symbol names of the components of `p`, in order.
@@ -27,10 +28,10 @@ pub mod cart_pole {
     /// # Cost
     /// 7 add/sub, 33 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 6 `let`s.
     #[inline]
-    pub fn dynamics(
-        x: &SVector<f64, 4>,
-        p: &SVector<f64, 5>,
-    ) -> (SMatrix<f64, 2, 2>, SVector<f64, 2>) {
+    pub fn dynamics<T: Real>(
+        x: &SVector<T, 4>,
+        p: &SVector<T, 5>,
+    ) -> (SMatrix<T, 2, 2>, SVector<T, 2>) {
         let theta = x[1];
         let xcdot = x[2];
         let thetadot = x[3];
@@ -43,18 +44,18 @@ pub mod cart_pole {
         let cos_theta = theta.cos();
         let t0 = thetadot * thetadot;
         let t1 = l * l;
-        let t2 = 2.0 * xcdot + 2.0 * thetadot * l * cos_theta;
+        let t2 = T::from_f64(2.0) * xcdot + T::from_f64(2.0) * thetadot * l * cos_theta;
         let t3 = m * l * cos_theta;
         let mass = Matrix2::new(mc + m, t3, t3, m * t1);
         let forcing = Vector2::new(
             u + m * l * sin_theta * t0,
             -(m * l * g * sin_theta)
-                + 0.5 * m
+                + T::from_f64(0.5) * m
                     * (-(thetadot * l * sin_theta * t2)
-                        + 2.0 * sin_theta * cos_theta * t0 * t1)
-                - 0.5 * thetadot * m
+                        + T::from_f64(2.0) * sin_theta * cos_theta * t0 * t1)
+                - T::from_f64(0.5) * thetadot * m
                     * (-(l * sin_theta * t2)
-                        + 2.0 * thetadot * sin_theta * cos_theta * t1),
+                        + T::from_f64(2.0) * thetadot * sin_theta * cos_theta * t1),
         );
         (mass, forcing)
     }
@@ -72,7 +73,7 @@ pub mod cart_pole {
     /// # Cost
     /// 10 add/sub, 47 mul, 1 div, 0 sqrt, 2 transcendental, 0 branches; 9 `let`s.
     #[inline]
-    pub fn rhs(x: &SVector<f64, 4>, p: &SVector<f64, 5>) -> SVector<f64, 4> {
+    pub fn rhs<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> SVector<T, 4> {
         let theta = x[1];
         let xcdot = x[2];
         let thetadot = x[3];
@@ -85,16 +86,18 @@ pub mod cart_pole {
         let cos_theta = theta.cos();
         let t0 = thetadot * thetadot;
         let t1 = l * l;
-        let t2 = 2.0 * xcdot + 2.0 * thetadot * l * cos_theta;
+        let t2 = T::from_f64(2.0) * xcdot + T::from_f64(2.0) * thetadot * l * cos_theta;
         let t3 = mc + m;
         let t4 = u + m * l * sin_theta * t0;
         let t5 = -(m * l * g * sin_theta)
-            + 0.5 * m
+            + T::from_f64(0.5) * m
                 * (-(thetadot * l * sin_theta * t2)
-                    + 2.0 * sin_theta * cos_theta * t0 * t1)
-            - 0.5 * thetadot * m
-                * (-(l * sin_theta * t2) + 2.0 * thetadot * sin_theta * cos_theta * t1);
-        let t6 = 1.0 / (m * t1 * t3 - t1 * (cos_theta * cos_theta) * (m * m));
+                    + T::from_f64(2.0) * sin_theta * cos_theta * t0 * t1)
+            - T::from_f64(0.5) * thetadot * m
+                * (-(l * sin_theta * t2)
+                    + T::from_f64(2.0) * thetadot * sin_theta * cos_theta * t1);
+        let t6 = T::from_f64(1.0)
+            / (m * t1 * t3 - t1 * (cos_theta * cos_theta) * (m * m));
         Vector4::new(
             xcdot,
             thetadot,
@@ -118,11 +121,11 @@ pub mod cart_pole {
     /// # Cost
     /// 7 add/sub, 39 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 6 `let`s.
     #[inline]
-    pub fn jacobian_terms(
-        x: &SVector<f64, 4>,
-        qdd: &SVector<f64, 2>,
-        p: &SVector<f64, 5>,
-    ) -> SMatrix<f64, 2, 4> {
+    pub fn jacobian_terms<T: Real>(
+        x: &SVector<T, 4>,
+        qdd: &SVector<T, 2>,
+        p: &SVector<T, 5>,
+    ) -> SMatrix<T, 2, 4> {
         let theta = x[1];
         let xcdot = x[2];
         let thetadot = x[3];
@@ -135,20 +138,22 @@ pub mod cart_pole {
         let cos_theta = theta.cos();
         let t0 = thetadot * thetadot;
         let t1 = l * l;
-        let t2 = 2.0 * xcdot + 2.0 * thetadot * l * cos_theta;
+        let t2 = T::from_f64(2.0) * xcdot + T::from_f64(2.0) * thetadot * l * cos_theta;
         let t3 = cos_theta * cos_theta;
         Matrix2x4::new(
-            0.0,
+            T::from_f64(0.0),
             thetaddot * m * l * sin_theta + m * l * cos_theta * t0,
-            0.0,
-            2.0 * thetadot * m * l * sin_theta,
-            0.0,
+            T::from_f64(0.0),
+            T::from_f64(2.0) * thetadot * m * l * sin_theta,
+            T::from_f64(0.0),
             -(m * l * g * cos_theta) + xcddot * m * l * sin_theta
-                + 0.5 * m * (-(thetadot * l * cos_theta * t2) + 2.0 * t0 * t1 * t3)
-                - 0.5 * thetadot * m
-                    * (-(l * cos_theta * t2) + 2.0 * thetadot * t1 * t3),
-            0.0,
-            0.0,
+                + T::from_f64(0.5) * m
+                    * (-(thetadot * l * cos_theta * t2)
+                        + T::from_f64(2.0) * t0 * t1 * t3)
+                - T::from_f64(0.5) * thetadot * m
+                    * (-(l * cos_theta * t2) + T::from_f64(2.0) * thetadot * t1 * t3),
+            T::from_f64(0.0),
+            T::from_f64(0.0),
         )
     }
     /// Total mechanical energy T + V (conserved without generalized forces).
@@ -165,7 +170,7 @@ pub mod cart_pole {
     /// # Cost
     /// 4 add/sub, 16 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 3 `let`s.
     #[inline]
-    pub fn energy(x: &SVector<f64, 4>, p: &SVector<f64, 5>) -> f64 {
+    pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> T {
         let theta = x[1];
         let xcdot = x[2];
         let thetadot = x[3];
@@ -176,8 +181,8 @@ pub mod cart_pole {
         let sin_theta = theta.sin();
         let cos_theta = theta.cos();
         let t0 = xcdot + thetadot * l * cos_theta;
-        0.5 * mc * (xcdot * xcdot)
-            + 0.5 * m
+        T::from_f64(0.5) * mc * (xcdot * xcdot)
+            + T::from_f64(0.5) * m
                 * (t0 * t0 + thetadot * thetadot * (l * l) * (sin_theta * sin_theta))
             - m * l * g * cos_theta
     }

@@ -4,6 +4,7 @@
 /// Planar compliant peg-in-hole (paper 001, (31)-(51), (55)-(64)) with contacts edge_left, wall_right. Inputs: state y (see STATE) and parameters p (see P_NAMES). SI units.
 pub mod compliant_peg_lean {
     use nalgebra::{SMatrix, SVector, Vector2};
+    use pegdyn::scalar::Real;
     /// Symbol names of the components of `y`, in order.
     pub const Y_NAMES: [&str; 8] = [
         "x",
@@ -52,9 +53,9 @@ pub mod compliant_peg_lean {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 58 add/sub, 116 mul, 4 div, 2 sqrt, 5 transcendental, 8 branches; 42 `let`s.
+    /// 60 add/sub, 123 mul, 4 div, 2 sqrt, 6 transcendental, 8 branches; 45 `let`s.
     #[inline]
-    pub fn rhs(y: &SVector<f64, 8>, p: &SVector<f64, 24>) -> SVector<f64, 8> {
+    pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
         let z = y[1];
         let theta = y[2];
@@ -82,46 +83,49 @@ pub mod compliant_peg_lean {
         let t1 = f2 * cos_theta;
         let t2 = f1 * cos_theta;
         let t3 = -f2 * sin_theta;
-        let t4 = -0.5 * d;
-        let t5 = -rho_h + t4 - x;
-        let t6 = rho_h - z;
-        let t7 = r + rho_h + cos_theta * t5 - sin_theta * t6;
-        let t8 = sin_theta * t5 + cos_theta * t6;
-        let t9 = cos_theta * t8 + r * sin_theta;
-        let t10 = -(sin_theta * t8) + r * cos_theta;
-        let t11 = sin_theta * (xdot + thetadot * t9)
-            + cos_theta * (zdot + thetadot * t10);
-        let t12 = if t7 > 0.0 || t7.is_nan() { t7 } else { 0.0 };
-        let t13 = t12 * t12.sqrt();
-        let t14 = -(sin_theta * t5) - cos_theta * t6;
-        let t15 = -(xdot * cos_theta) + zdot * sin_theta + thetadot * t14;
-        let t16 = 1.0 + hc_alpha * t15;
-        let t17 = if t16 > 0.0 || t16.is_nan() { t16 } else { 0.0 };
-        let t18 = k_edge * t13 * t17 - k_edge * t13;
-        let t19 = v_s.hypot(t11);
-        let t20 = 1.0 / t19;
-        let t21 = if t7 > 0.0 { 1.0 } else if t7.is_nan() { t7 } else { 0.0 };
-        let t22 = -rho_p;
-        let t23 = l_c + t22;
-        let t24 = r + t22;
-        let t25 = x + rho_p + t4 + sin_theta * t23 + cos_theta * t24;
-        let t26 = (0.5 * theta).sin();
-        let t27 = -(sin_theta * (l_c + t22 + rho_p * sin_theta))
-            - cos_theta * (r - 2.0 * rho_p * (t26 * t26));
-        let t28 = zdot + thetadot * t27;
-        let t29 = if t25 > 0.0 || t25.is_nan() { t25 } else { 0.0 };
-        let t30 = t29 * t29.sqrt();
-        let t31 = cos_theta * t23 - sin_theta * t24;
-        let t32 = xdot + thetadot * t31;
-        let t33 = 1.0 + hc_alpha * t32;
-        let t34 = if t33 > 0.0 || t33.is_nan() { t33 } else { 0.0 };
-        let t35 = k_wall * t30 * t34 - k_wall * t30;
-        let t36 = v_s.hypot(t28);
-        let t37 = 1.0 / t36;
-        let t38 = if t25 > 0.0 { 1.0 } else if t25.is_nan() { t25 } else { 0.0 };
-        let t39 = 1.0 / m;
+        let t4 = -T::from_f64(0.5) * d;
+        let t5 = -x;
+        let t6 = -rho_h + t4 + t5;
+        let t7 = rho_h - z;
+        let t8 = T::from_f64(0.5) * theta;
+        let t9 = t8.sin();
+        let t10 = t9 * t9;
+        let t11 = r + t4 + t5 - sin_theta * t7 - T::from_f64(2.0) * t6 * t10;
+        let t12 = sin_theta * t6 + cos_theta * t7;
+        let t13 = cos_theta * t12 + r * sin_theta;
+        let t14 = -(sin_theta * t12) + r * cos_theta;
+        let t15 = sin_theta * (xdot + thetadot * t13)
+            + cos_theta * (zdot + thetadot * t14);
+        let t16 = t11.max0();
+        let t17 = t16 * t16.sqrt();
+        let t18 = -T::from_f64(1.0) + T::from_f64(2.0) * t10;
+        let t19 = t8.cos();
+        let t20 = -(cos_theta * t7) - T::from_f64(2.0) * t6 * t9 * t19;
+        let t21 = xdot * t18 + zdot * sin_theta + thetadot * t20;
+        let t22 = (T::from_f64(1.0) + hc_alpha * t21).max0();
+        let t23 = k_edge * t17 * t22 - k_edge * t17;
+        let t24 = v_s.hypot(t15);
+        let t25 = T::from_f64(1.0) / t24;
+        let t26 = t11.step();
+        let t27 = -rho_p;
+        let t28 = l_c + t27;
+        let t29 = r + t27;
+        let t30 = r + t4 + x + sin_theta * t28 - T::from_f64(2.0) * t10 * t29;
+        let t31 = -(sin_theta * (l_c + t27 + rho_p * sin_theta))
+            - cos_theta * (r - T::from_f64(2.0) * rho_p * t10);
+        let t32 = zdot + thetadot * t31;
+        let t33 = t30.max0();
+        let t34 = t33 * t33.sqrt();
+        let t35 = cos_theta * t28 - T::from_f64(2.0) * t9 * t19 * t29;
+        let t36 = xdot + thetadot * t35;
+        let t37 = (T::from_f64(1.0) + hc_alpha * t36).max0();
+        let t38 = k_wall * t34 * t37 - k_wall * t34;
+        let t39 = v_s.hypot(t32);
+        let t40 = T::from_f64(1.0) / t39;
+        let t41 = t30.step();
+        let t42 = T::from_f64(1.0) / m;
         SMatrix::<
-            f64,
+            T,
             8,
             1,
         >::from_row_slice(
@@ -129,19 +133,19 @@ pub mod compliant_peg_lean {
                 xdot,
                 zdot,
                 thetadot,
-                (t0 + t1 + k_edge * cos_theta * t13 * t21 + cos_theta * t18
-                    - mu * k_edge * sin_theta * t11 * t13 * t17 * t20 + k_wall * t30
-                    - k_wall * t30 * t38 - k_wall * t30 * t34) * t39,
-                (t2 + t3 - k_edge * sin_theta * t13 * t21 - sin_theta * t18
-                    - mu * k_edge * cos_theta * t11 * t13 * t17 * t20
-                    - mu * k_wall * t28 * t30 * t34 * t37) * t39,
-                (m_2 - k_edge * t13 * t14 * t21 - t14 * t18
-                    - mu * k_edge * t11 * t13 * t17 * t20
-                        * (sin_theta * t9 + cos_theta * t10) - k_wall * t30 * t31 * t38
-                    - t31 * t35 - mu * k_wall * t27 * t28 * t30 * t34 * t37) / j,
+                (t0 + t1 - k_edge * t17 * t18 * t26 - t18 * t23
+                    - mu * k_edge * sin_theta * t15 * t17 * t22 * t25 + k_wall * t34
+                    - k_wall * t34 * t41 - k_wall * t34 * t37) * t42,
+                (t2 + t3 - k_edge * sin_theta * t17 * t26 - sin_theta * t23
+                    - mu * k_edge * cos_theta * t15 * t17 * t22 * t25
+                    - mu * k_wall * t32 * t34 * t37 * t40) * t42,
+                (m_2 - k_edge * t17 * t20 * t26 - t20 * t23
+                    - mu * k_edge * t15 * t17 * t22 * t25
+                        * (sin_theta * t13 + cos_theta * t14) - k_wall * t34 * t35 * t41
+                    - t35 * t38 - mu * k_wall * t31 * t32 * t34 * t37 * t40) / j,
                 xdot * (t0 + t1) + zdot * (t2 + t3) + thetadot * m_2,
-                mu * k_edge * t13 * t17 * t20 * (t11 * t11) + t15 * t18
-                    + mu * k_wall * t30 * t34 * t37 * (t28 * t28) + t32 * t35,
+                mu * k_edge * t17 * t22 * t25 * (t15 * t15) + t21 * t23
+                    + mu * k_wall * t34 * t37 * t40 * (t32 * t32) + t36 * t38,
             ],
         )
     }
@@ -155,9 +159,9 @@ pub mod compliant_peg_lean {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 227 add/sub, 1027 mul, 6 div, 4 sqrt, 6 transcendental, 12 branches; 113 `let`s.
+    /// 230 add/sub, 1068 mul, 6 div, 4 sqrt, 6 transcendental, 12 branches; 115 `let`s.
     #[inline]
-    pub fn jacobian(y: &SVector<f64, 8>, p: &SVector<f64, 24>) -> SMatrix<f64, 8, 8> {
+    pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
         let z = y[1];
         let theta = y[2];
@@ -184,329 +188,348 @@ pub mod compliant_peg_lean {
         let t0 = f1 * cos_theta;
         let t1 = -f2 * sin_theta;
         let t2 = t0 + t1;
-        let t3 = -0.5 * d;
-        let t4 = -rho_h + t3 - x;
-        let t5 = rho_h - z;
-        let t6 = cos_theta * t4;
-        let t7 = -sin_theta * t5;
-        let t8 = t6 + t7;
-        let t9 = sin_theta * t5 - cos_theta * t4;
-        let t10 = r + rho_h + t6 + t7;
-        let t11 = sin_theta * t4 + cos_theta * t5;
-        let t12 = cos_theta * t11 + r * sin_theta;
-        let t13 = xdot + thetadot * t12;
-        let t14 = -sin_theta * t11;
-        let t15 = r * cos_theta;
-        let t16 = t14 + t15;
-        let t17 = zdot + thetadot * t16;
-        let t18 = sin_theta * t13 + cos_theta * t17;
-        let t19 = if t10 > 0.0 || t10.is_nan() { t10 } else { 0.0 };
-        let t20 = t19 * t19.sqrt();
-        let t21 = -(sin_theta * t4) - cos_theta * t5;
-        let t22 = -(xdot * cos_theta) + zdot * sin_theta + thetadot * t21;
-        let t23 = 1.0 + hc_alpha * t22;
-        let t24 = if t23 > 0.0 || t23.is_nan() { t23 } else { 0.0 };
-        let t25 = k_edge * t20 * t24 - k_edge * t20;
-        let t26 = v_s.hypot(t18);
-        let t27 = 1.0 / t26;
-        let t28 = if t10 > 0.0 { 1.0 } else if t10.is_nan() { t10 } else { 0.0 };
-        let t29 = -k_edge * cos_theta * t20 * t28;
-        let t30 = -cos_theta * t25;
-        let t31 = -k_edge * sin_theta * t20 * t28;
-        let t32 = -sin_theta * t25;
-        let t33 = sin_theta * t12 + cos_theta * t16;
-        let t34 = t18 * t18;
+        let t3 = -T::from_f64(0.5) * d;
+        let t4 = -x;
+        let t5 = -rho_h + t3 + t4;
+        let t6 = rho_h - z;
+        let t7 = -sin_theta * t6;
+        let t8 = cos_theta * t5 + t7;
+        let t9 = T::from_f64(0.5) * theta;
+        let t10 = t9.sin();
+        let t11 = t10 * t10;
+        let t12 = r + t3 + t4 + t7 - T::from_f64(2.0) * t5 * t11;
+        let t13 = sin_theta * t5 + cos_theta * t6;
+        let t14 = cos_theta * t13 + r * sin_theta;
+        let t15 = xdot + thetadot * t14;
+        let t16 = -sin_theta * t13;
+        let t17 = r * cos_theta;
+        let t18 = t16 + t17;
+        let t19 = zdot + thetadot * t18;
+        let t20 = sin_theta * t15 + cos_theta * t19;
+        let t21 = t12.max0();
+        let t22 = t21 * t21.sqrt();
+        let t23 = -T::from_f64(1.0) + T::from_f64(2.0) * t11;
+        let t24 = t9.cos();
+        let t25 = -(cos_theta * t6) - T::from_f64(2.0) * t5 * t10 * t24;
+        let t26 = xdot * t23 + zdot * sin_theta + thetadot * t25;
+        let t27 = T::from_f64(1.0) + hc_alpha * t26;
+        let t28 = t27.max0();
+        let t29 = k_edge * t22 * t28 - k_edge * t22;
+        let t30 = v_s.hypot(t20);
+        let t31 = T::from_f64(1.0) / t30;
+        let t32 = t12.step();
+        let t33 = sin_theta * t14 + cos_theta * t18;
+        let t34 = t20 * t20;
         let t35 = -rho_p;
         let t36 = l_c + t35;
         let t37 = r + t35;
-        let t38 = x + rho_p + t3 + sin_theta * t36 + cos_theta * t37;
+        let t38 = r + t3 + x + sin_theta * t36 - T::from_f64(2.0) * t11 * t37;
         let t39 = l_c + t35 + rho_p * sin_theta;
-        let t40 = 0.5 * theta;
-        let t41 = t40.sin();
-        let t42 = r - 2.0 * rho_p * (t41 * t41);
-        let t43 = -(sin_theta * t39) - cos_theta * t42;
-        let t44 = zdot + thetadot * t43;
-        let t45 = if t38 > 0.0 || t38.is_nan() { t38 } else { 0.0 };
-        let t46 = t45 * t45.sqrt();
-        let t47 = cos_theta * t36 - sin_theta * t37;
-        let t48 = xdot + thetadot * t47;
-        let t49 = 1.0 + hc_alpha * t48;
-        let t50 = if t49 > 0.0 || t49.is_nan() { t49 } else { 0.0 };
-        let t51 = k_wall * t46 * t50;
-        let t52 = -k_wall * t46;
-        let t53 = t51 + t52;
-        let t54 = v_s.hypot(t44);
-        let t55 = 1.0 / t54;
-        let t56 = if t38 > 0.0 { 1.0 } else if t38.is_nan() { t38 } else { 0.0 };
-        let t57 = t44 * t44;
-        let t58 = 1.0 / m;
-        let t59 = 1.0 / j;
-        let t60 = t19.sqrt();
-        let t61 = cos_theta * cos_theta;
-        let t62 = t28 * t28;
-        let t63 = if t23 > 0.0 { 1.0 } else if t23.is_nan() { t23 } else { 0.0 };
-        let t64 = -(1.5 * k_edge * cos_theta * t24 * t28 * t60)
-            + thetadot * k_edge * hc_alpha * sin_theta * t20 * t63
-            + 1.5 * k_edge * cos_theta * t28 * t60;
-        let t65 = sin_theta * sin_theta;
-        let t66 = t45.sqrt();
-        let t67 = t56 * t56;
-        let t68 = 1.5 * k_edge * sin_theta * cos_theta * t60 * t62;
-        let t69 = 1.5 * k_edge * sin_theta * t24 * t28 * t60
-            + thetadot * k_edge * hc_alpha * cos_theta * t20 * t63
-            - 1.5 * k_edge * sin_theta * t28 * t60;
-        let t70 = -thetadot * mu * k_edge * hc_alpha * sin_theta * cos_theta * t18 * t20
-            * t27 * t63;
-        let t71 = 1.5 * k_edge * cos_theta * t21 * t60 * t62;
-        let t72 = xdot * sin_theta + zdot * cos_theta + thetadot * t9;
-        let t73 = 1.5 * k_edge * t21 * t24 * t28 * t60
-            + k_edge * hc_alpha * t20 * t63 * t72 - 1.5 * k_edge * t21 * t28 * t60;
-        let t74 = t14 + t15 + cos_theta * t8;
-        let t75 = -(r * sin_theta) - cos_theta * t11 - sin_theta * t8;
-        let t76 = cos_theta * t13 + thetadot * sin_theta * t74 - sin_theta * t17
-            + thetadot * cos_theta * t75;
-        let t77 = 1.0 / (t26 * t26 * t26);
-        let t78 = -1.5 * k_wall * t47 * t66 * t67;
-        let t79 = -(sin_theta * t36) - cos_theta * t37;
-        let t80 = if t49 > 0.0 { 1.0 } else if t49.is_nan() { t49 } else { 0.0 };
-        let t81 = k_edge * hc_alpha * sin_theta * cos_theta * t20 * t63;
-        let t82 = -mu * k_edge * sin_theta * cos_theta * t20 * t24 * t27;
-        let t83 = mu * k_edge * sin_theta * cos_theta * t20 * t24 * t34 * t77;
-        let t84 = k_edge * hc_alpha * cos_theta * t20 * t21 * t63;
-        let t85 = -mu * k_edge * sin_theta * t20 * t24 * t27 * t33;
-        let t86 = mu * k_edge * sin_theta * t20 * t24 * t33 * t34 * t77;
-        let t87 = -k_wall * hc_alpha * t46 * t47 * t80;
-        let t88 = -f1 * sin_theta;
-        let t89 = -f2 * cos_theta;
-        let t90 = -1.5 * k_edge * sin_theta * t21 * t60 * t62;
-        let t91 = t40.cos();
-        let t92 = sin_theta * t42 - cos_theta * t39 - rho_p * sin_theta * cos_theta
-            + 2.0 * rho_p * cos_theta * t41 * t91;
-        let t93 = 1.0 / (t54 * t54 * t54);
-        let t94 = -k_edge * hc_alpha * sin_theta * t20 * t21 * t63;
-        let t95 = -mu * k_edge * cos_theta * t20 * t24 * t27 * t33;
-        let t96 = mu * k_edge * cos_theta * t20 * t24 * t33 * t34 * t77;
-        let t97 = -mu * k_wall * t43 * t46 * t50 * t55;
-        let t98 = mu * k_wall * t43 * t46 * t50 * t57 * t93;
-        let t99 = 1.5 * k_wall * t50 * t56 * t66 - 1.5 * k_wall * t56 * t66;
-        let t100 = t11 * t11;
-        let t101 = sin_theta * t37 - cos_theta * t36;
-        let t102 = t101 * t101;
-        let t103 = thetadot * k_wall * hc_alpha * t46 * t79 * t80
-            + 1.5 * k_wall * t47 * t50 * t56 * t66 - 1.5 * k_wall * t47 * t56 * t66;
-        let t104 = t33 * t33;
-        let t105 = cos_theta * t42 + sin_theta * t39;
-        let t106 = t105 * t105;
-        let t107 = t18 * t18 * t18;
-        let t108 = 2.0 * sin_theta * t13 + 2.0 * cos_theta * t17;
-        let t109 = t44 * t44 * t44;
-        let t110 = 2.0 * zdot + 2.0 * thetadot * t43;
+        let t40 = r - T::from_f64(2.0) * rho_p * t11;
+        let t41 = -(sin_theta * t39) - cos_theta * t40;
+        let t42 = zdot + thetadot * t41;
+        let t43 = t38.max0();
+        let t44 = t43 * t43.sqrt();
+        let t45 = cos_theta * t36 - T::from_f64(2.0) * t10 * t24 * t37;
+        let t46 = xdot + thetadot * t45;
+        let t47 = T::from_f64(1.0) + hc_alpha * t46;
+        let t48 = t47.max0();
+        let t49 = k_wall * t44 * t48;
+        let t50 = -k_wall * t44;
+        let t51 = t49 + t50;
+        let t52 = v_s.hypot(t42);
+        let t53 = T::from_f64(1.0) / t52;
+        let t54 = t38.step();
+        let t55 = t42 * t42;
+        let t56 = T::from_f64(1.0) / m;
+        let t57 = T::from_f64(1.0) / j;
+        let t58 = t21.sqrt();
+        let t59 = t23 * t23;
+        let t60 = t32 * t32;
+        let t61 = t27.step();
+        let t62 = T::from_f64(1.5) * k_edge * t23 * t28 * t32 * t58
+            + T::from_f64(2.0) * thetadot * k_edge * hc_alpha * t10 * t22 * t24 * t61
+            - T::from_f64(1.5) * k_edge * t23 * t32 * t58;
+        let t63 = sin_theta * sin_theta;
+        let t64 = t43.sqrt();
+        let t65 = t54 * t54;
+        let t66 = -T::from_f64(1.5) * k_edge * sin_theta * t23 * t58 * t60;
+        let t67 = T::from_f64(1.5) * k_edge * sin_theta * t28 * t32 * t58
+            + thetadot * k_edge * hc_alpha * cos_theta * t22 * t61
+            - T::from_f64(1.5) * k_edge * sin_theta * t32 * t58;
+        let t68 = cos_theta * cos_theta;
+        let t69 = -T::from_f64(1.5) * k_edge * t23 * t25 * t58 * t60;
+        let t70 = -T::from_f64(2.0) * k_edge * t10 * t22 * t24 * t32;
+        let t71 = -T::from_f64(2.0) * t10 * t24 * t29;
+        let t72 = t24 * t24;
+        let t73 = sin_theta * t6 + t5 * t11 - t5 * t72;
+        let t74 = T::from_f64(2.0) * xdot * t10 * t24 + zdot * cos_theta
+            + thetadot * t73;
+        let t75 = T::from_f64(1.5) * k_edge * t25 * t28 * t32 * t58
+            + k_edge * hc_alpha * t22 * t61 * t74
+            - T::from_f64(1.5) * k_edge * t25 * t32 * t58;
+        let t76 = t16 + t17 + cos_theta * t8;
+        let t77 = -(r * sin_theta) - cos_theta * t13 - sin_theta * t8;
+        let t78 = cos_theta * t15 + thetadot * sin_theta * t76 - sin_theta * t19
+            + thetadot * cos_theta * t77;
+        let t79 = T::from_f64(1.0) / (t30 * t30 * t30);
+        let t80 = -T::from_f64(1.5) * k_wall * t45 * t64 * t65;
+        let t81 = t11 * t37 - sin_theta * t36 - t37 * t72;
+        let t82 = t47.step();
+        let t83 = -k_edge * hc_alpha * sin_theta * t22 * t23 * t61;
+        let t84 = -mu * k_edge * sin_theta * cos_theta * t22 * t28 * t31;
+        let t85 = mu * k_edge * sin_theta * cos_theta * t22 * t28 * t34 * t79;
+        let t86 = -k_edge * hc_alpha * t22 * t23 * t25 * t61;
+        let t87 = -mu * k_edge * sin_theta * t22 * t28 * t31 * t33;
+        let t88 = mu * k_edge * sin_theta * t22 * t28 * t33 * t34 * t79;
+        let t89 = -k_wall * hc_alpha * t44 * t45 * t82;
+        let t90 = -f1 * sin_theta;
+        let t91 = -f2 * cos_theta;
+        let t92 = -k_edge * cos_theta * t22 * t32;
+        let t93 = -T::from_f64(1.5) * k_edge * sin_theta * t25 * t58 * t60;
+        let t94 = -cos_theta * t29;
+        let t95 = sin_theta * t40 - cos_theta * t39 - rho_p * sin_theta * cos_theta
+            + T::from_f64(2.0) * rho_p * cos_theta * t10 * t24;
+        let t96 = T::from_f64(1.0) / (t52 * t52 * t52);
+        let t97 = -k_edge * hc_alpha * sin_theta * t22 * t25 * t61;
+        let t98 = -mu * k_edge * cos_theta * t22 * t28 * t31 * t33;
+        let t99 = mu * k_edge * cos_theta * t22 * t28 * t33 * t34 * t79;
+        let t100 = -mu * k_wall * t41 * t44 * t48 * t53;
+        let t101 = mu * k_wall * t41 * t44 * t48 * t55 * t96;
+        let t102 = T::from_f64(1.5) * k_wall * t48 * t54 * t64
+            - T::from_f64(1.5) * k_wall * t54 * t64;
+        let t103 = t25 * t25;
+        let t104 = t45 * t45;
+        let t105 = thetadot * k_wall * hc_alpha * t44 * t81 * t82
+            + T::from_f64(1.5) * k_wall * t45 * t48 * t54 * t64
+            - T::from_f64(1.5) * k_wall * t45 * t54 * t64;
+        let t106 = t33 * t33;
+        let t107 = cos_theta * t40 + sin_theta * t39;
+        let t108 = t107 * t107;
+        let t109 = t20 * t20 * t20;
+        let t110 = T::from_f64(2.0) * sin_theta * t15
+            + T::from_f64(2.0) * cos_theta * t19;
+        let t111 = t42 * t42 * t42;
+        let t112 = T::from_f64(2.0) * zdot + T::from_f64(2.0) * thetadot * t41;
         SMatrix::<
-            f64,
+            T,
             8,
             8,
         >::from_row_slice(
             &[
-                0.0,
-                0.0,
-                0.0,
-                1.0,
-                0.0,
-                0.0,
-                0.0,
-                0.0,
-                0.0,
-                0.0,
-                0.0,
-                0.0,
-                1.0,
-                0.0,
-                0.0,
-                0.0,
-                0.0,
-                0.0,
-                0.0,
-                0.0,
-                0.0,
-                1.0,
-                0.0,
-                0.0,
-                t58
-                    * (-(1.5 * k_edge * t60 * t61 * t62) + cos_theta * t64
-                        + 1.5 * mu * k_edge * sin_theta * cos_theta * t18 * t24 * t27
-                            * t28 * t60
-                        - thetadot * mu * k_edge * hc_alpha * t18 * t20 * t27 * t63 * t65
-                        + 1.5 * k_wall * t56 * t66 - 1.5 * k_wall * t66 * t67
-                        - 1.5 * k_wall * t50 * t56 * t66),
-                t58
-                    * (t68 + cos_theta * t69
-                        - 1.5 * mu * k_edge * t18 * t24 * t27 * t28 * t60 * t65 + t70),
-                t58
-                    * (t0 + t1 + t31 + t32
-                        - mu * k_edge * cos_theta * t18 * t20 * t24 * t27 + t71
-                        + cos_theta * t73
-                        - mu * k_edge * sin_theta * t20 * t24 * t27 * t76
-                        - 1.5 * mu * k_edge * sin_theta * t18 * t21 * t24 * t27 * t28
-                            * t60
-                        - mu * k_edge * hc_alpha * sin_theta * t18 * t20 * t27 * t63
-                            * t72 + mu * k_edge * sin_theta * t20 * t24 * t34 * t76 * t77
-                        + 1.5 * k_wall * t47 * t56 * t66 + t78
-                        - 1.5 * k_wall * t47 * t50 * t56 * t66
-                        - thetadot * k_wall * hc_alpha * t46 * t79 * t80),
-                t58
-                    * (-(k_edge * hc_alpha * t20 * t61 * t63)
-                        - mu * k_edge * t20 * t24 * t27 * t65
-                        + mu * k_edge * hc_alpha * sin_theta * cos_theta * t18 * t20
-                            * t27 * t63 + mu * k_edge * t20 * t24 * t34 * t65 * t77
-                        - k_wall * hc_alpha * t46 * t80),
-                t58
-                    * (t81 + t82 - mu * k_edge * hc_alpha * t18 * t20 * t27 * t63 * t65
-                        + t83),
-                t58
-                    * (t84 + t85
-                        - mu * k_edge * hc_alpha * sin_theta * t18 * t20 * t21 * t27
-                            * t63 + t86 + t87),
-                0.0,
-                0.0,
-                t58
-                    * (t68 + t70 - sin_theta * t64
-                        + 1.5 * mu * k_edge * t18 * t24 * t27 * t28 * t60 * t61
-                        - 1.5 * mu * k_wall * t44 * t50 * t55 * t56 * t66),
-                t58
-                    * (-(1.5 * k_edge * t60 * t62 * t65) - sin_theta * t69
-                        - 1.5 * mu * k_edge * sin_theta * cos_theta * t18 * t24 * t27
-                            * t28 * t60
-                        - thetadot * mu * k_edge * hc_alpha * t18 * t20 * t27 * t61
-                            * t63),
-                t58
-                    * (t29 + t30 + mu * k_edge * sin_theta * t18 * t20 * t24 * t27 + t88
-                        + t89 + t90 - sin_theta * t73
-                        - mu * k_edge * cos_theta * t20 * t24 * t27 * t76
-                        - 1.5 * mu * k_edge * cos_theta * t18 * t21 * t24 * t27 * t28
-                            * t60
-                        - mu * k_edge * hc_alpha * cos_theta * t18 * t20 * t27 * t63
-                            * t72 + mu * k_edge * cos_theta * t20 * t24 * t34 * t76 * t77
-                        - thetadot * mu * k_wall * t46 * t50 * t55 * t92
-                        - 1.5 * mu * k_wall * t44 * t47 * t50 * t55 * t56 * t66
-                        - thetadot * mu * k_wall * hc_alpha * t44 * t46 * t55 * t79 * t80
-                        + thetadot * mu * k_wall * t46 * t50 * t57 * t92 * t93),
-                t58
-                    * (t81 + t82 + t83
-                        + mu * k_edge * hc_alpha * t18 * t20 * t27 * t61 * t63
-                        - mu * k_wall * hc_alpha * t44 * t46 * t55 * t80),
-                t58
-                    * (-(k_edge * hc_alpha * t20 * t63 * t65)
-                        - mu * k_edge * t20 * t24 * t27 * t61
-                        - mu * k_edge * hc_alpha * sin_theta * cos_theta * t18 * t20
-                            * t27 * t63 + mu * k_edge * t20 * t24 * t34 * t61 * t77
-                        - mu * k_wall * t46 * t50 * t55
-                        + mu * k_wall * t46 * t50 * t57 * t93),
-                t58
-                    * (t94 + t95
-                        - mu * k_edge * hc_alpha * cos_theta * t18 * t20 * t21 * t27
-                            * t63 + t96 + t97
-                        - mu * k_wall * hc_alpha * t44 * t46 * t47 * t55 * t80 + t98),
-                0.0,
-                0.0,
-                t59
-                    * (t31 + t32 + t71 + t78 - t21 * t64
-                        + 1.5 * mu * k_edge * cos_theta * t18 * t24 * t27 * t28 * t33
-                            * t60
-                        - thetadot * mu * k_edge * hc_alpha * sin_theta * t18 * t20 * t27
-                            * t33 * t63 - t47 * t99
-                        - 1.5 * mu * k_wall * t43 * t44 * t50 * t55 * t56 * t66),
-                t59
-                    * (t29 + t30 + t90 - t21 * t69
-                        - 1.5 * mu * k_edge * sin_theta * t18 * t24 * t27 * t28 * t33
-                            * t60
-                        - thetadot * mu * k_edge * hc_alpha * cos_theta * t18 * t20 * t27
-                            * t33 * t63),
-                t59
-                    * (-(1.5 * k_edge * t60 * t62 * t100) - k_edge * t9 * t20 * t28
-                        - t9 * t25 - t21 * t73
-                        - mu * k_edge * t20 * t24 * t27 * t33 * t76
-                        - 1.5 * mu * k_edge * t18 * t21 * t24 * t27 * t28 * t33 * t60
-                        - mu * k_edge * hc_alpha * t18 * t20 * t27 * t33 * t63 * t72
-                        + mu * k_edge * t20 * t24 * t33 * t34 * t76 * t77
-                        - mu * k_edge * t18 * t20 * t24 * t27
-                            * (cos_theta * t12 + sin_theta * t74 - sin_theta * t16
-                                + cos_theta * t75) - 1.5 * k_wall * t66 * t67 * t102
-                        - k_wall * t46 * t56 * t79 - t53 * t79 - t47 * t103
-                        - mu * k_wall * t44 * t46 * t50 * t55 * t92
-                        - thetadot * mu * k_wall * t43 * t46 * t50 * t55 * t92
-                        - 1.5 * mu * k_wall * t43 * t44 * t47 * t50 * t55 * t56 * t66
-                        - thetadot * mu * k_wall * hc_alpha * t43 * t44 * t46 * t55 * t79
-                            * t80
-                        + thetadot * mu * k_wall * t43 * t46 * t50 * t57 * t92 * t93),
-                t59
-                    * (t84 + t85 + t86 + t87
-                        + mu * k_edge * hc_alpha * cos_theta * t18 * t20 * t27 * t33
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(1.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(1.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(1.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t56
+                    * (-(T::from_f64(1.5) * k_edge * t58 * t59 * t60) - t23 * t62
+                        - T::from_f64(1.5) * mu * k_edge * sin_theta * t20 * t23 * t28
+                            * t31 * t32 * t58
+                        - T::from_f64(2.0) * thetadot * mu * k_edge * hc_alpha
+                            * sin_theta * t10 * t20 * t22 * t24 * t31 * t61
+                        + T::from_f64(1.5) * k_wall * t54 * t64
+                        - T::from_f64(1.5) * k_wall * t64 * t65
+                        - T::from_f64(1.5) * k_wall * t48 * t54 * t64),
+                t56
+                    * (t66 - t23 * t67
+                        - T::from_f64(1.5) * mu * k_edge * t20 * t28 * t31 * t32 * t58
                             * t63
-                        - mu * k_wall * hc_alpha * t43 * t44 * t46 * t55 * t80),
-                t59
-                    * (t94 + t95 + t96 + t97 + t98
-                        - mu * k_edge * hc_alpha * sin_theta * t18 * t20 * t27 * t33
-                            * t63),
-                t59
-                    * (-(k_edge * hc_alpha * t20 * t63 * t100)
-                        - mu * k_edge * t20 * t24 * t27 * t104
-                        - mu * k_edge * hc_alpha * t18 * t20 * t21 * t27 * t33 * t63
-                        + mu * k_edge * t20 * t24 * t34 * t77 * t104
-                        - k_wall * hc_alpha * t46 * t80 * t102
-                        - mu * k_wall * t46 * t50 * t55 * t106
-                        - mu * k_wall * hc_alpha * t43 * t44 * t46 * t47 * t55 * t80
-                        + mu * k_wall * t46 * t50 * t57 * t93 * t106),
-                0.0,
-                0.0,
-                0.0,
-                0.0,
-                xdot * t2 + zdot * (t88 + t89),
+                        - thetadot * mu * k_edge * hc_alpha * sin_theta * cos_theta * t20
+                            * t22 * t31 * t61),
+                t56
+                    * (t0 + t1 - mu * k_edge * cos_theta * t20 * t22 * t28 * t31 + t69
+                        + t70 + t71 - t23 * t75
+                        - mu * k_edge * sin_theta * t22 * t28 * t31 * t78
+                        - T::from_f64(1.5) * mu * k_edge * sin_theta * t20 * t25 * t28
+                            * t31 * t32 * t58
+                        - mu * k_edge * hc_alpha * sin_theta * t20 * t22 * t31 * t61
+                            * t74 + mu * k_edge * sin_theta * t22 * t28 * t34 * t78 * t79
+                        + T::from_f64(1.5) * k_wall * t45 * t54 * t64 + t80
+                        - T::from_f64(1.5) * k_wall * t45 * t48 * t54 * t64
+                        - thetadot * k_wall * hc_alpha * t44 * t81 * t82),
+                t56
+                    * (-(k_edge * hc_alpha * t22 * t59 * t61)
+                        - mu * k_edge * t22 * t28 * t31 * t63
+                        - mu * k_edge * hc_alpha * sin_theta * t20 * t22 * t23 * t31
+                            * t61 + mu * k_edge * t22 * t28 * t34 * t63 * t79
+                        - k_wall * hc_alpha * t44 * t82),
+                t56
+                    * (t83 + t84 - mu * k_edge * hc_alpha * t20 * t22 * t31 * t61 * t63
+                        + t85),
+                t56
+                    * (t86 + t87
+                        - mu * k_edge * hc_alpha * sin_theta * t20 * t22 * t25 * t31
+                            * t61 + t88 + t89),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t56
+                    * (t66 - sin_theta * t62
+                        - T::from_f64(1.5) * mu * k_edge * cos_theta * t20 * t23 * t28
+                            * t31 * t32 * t58
+                        - T::from_f64(2.0) * thetadot * mu * k_edge * hc_alpha
+                            * cos_theta * t10 * t20 * t22 * t24 * t31 * t61
+                        - T::from_f64(1.5) * mu * k_wall * t42 * t48 * t53 * t54 * t64),
+                t56
+                    * (-(T::from_f64(1.5) * k_edge * t58 * t60 * t63) - sin_theta * t67
+                        - T::from_f64(1.5) * mu * k_edge * sin_theta * cos_theta * t20
+                            * t28 * t31 * t32 * t58
+                        - thetadot * mu * k_edge * hc_alpha * t20 * t22 * t31 * t61
+                            * t68),
+                t56
+                    * (mu * k_edge * sin_theta * t20 * t22 * t28 * t31 + t90 + t91 + t92
+                        + t93 + t94 - sin_theta * t75
+                        - mu * k_edge * cos_theta * t22 * t28 * t31 * t78
+                        - T::from_f64(1.5) * mu * k_edge * cos_theta * t20 * t25 * t28
+                            * t31 * t32 * t58
+                        - mu * k_edge * hc_alpha * cos_theta * t20 * t22 * t31 * t61
+                            * t74 + mu * k_edge * cos_theta * t22 * t28 * t34 * t78 * t79
+                        - thetadot * mu * k_wall * t44 * t48 * t53 * t95
+                        - T::from_f64(1.5) * mu * k_wall * t42 * t45 * t48 * t53 * t54
+                            * t64
+                        - thetadot * mu * k_wall * hc_alpha * t42 * t44 * t53 * t81 * t82
+                        + thetadot * mu * k_wall * t44 * t48 * t55 * t95 * t96),
+                t56
+                    * (t83 + t84 + t85
+                        - mu * k_edge * hc_alpha * cos_theta * t20 * t22 * t23 * t31
+                            * t61 - mu * k_wall * hc_alpha * t42 * t44 * t53 * t82),
+                t56
+                    * (-(k_edge * hc_alpha * t22 * t61 * t63)
+                        - mu * k_edge * t22 * t28 * t31 * t68
+                        - mu * k_edge * hc_alpha * sin_theta * cos_theta * t20 * t22
+                            * t31 * t61 + mu * k_edge * t22 * t28 * t34 * t68 * t79
+                        - mu * k_wall * t44 * t48 * t53
+                        + mu * k_wall * t44 * t48 * t55 * t96),
+                t56
+                    * (t97 + t98
+                        - mu * k_edge * hc_alpha * cos_theta * t20 * t22 * t25 * t31
+                            * t61 + t99 + t100
+                        - mu * k_wall * hc_alpha * t42 * t44 * t45 * t53 * t82 + t101),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t57
+                    * (t69 + t70 + t71 + t80 - t25 * t62
+                        - T::from_f64(1.5) * mu * k_edge * t20 * t23 * t28 * t31 * t32
+                            * t33 * t58
+                        - T::from_f64(2.0) * thetadot * mu * k_edge * hc_alpha * t10
+                            * t20 * t22 * t24 * t31 * t33 * t61 - t45 * t102
+                        - T::from_f64(1.5) * mu * k_wall * t41 * t42 * t48 * t53 * t54
+                            * t64),
+                t57
+                    * (t92 + t93 + t94 - t25 * t67
+                        - T::from_f64(1.5) * mu * k_edge * sin_theta * t20 * t28 * t31
+                            * t32 * t33 * t58
+                        - thetadot * mu * k_edge * hc_alpha * cos_theta * t20 * t22 * t31
+                            * t33 * t61),
+                t57
+                    * (-(T::from_f64(1.5) * k_edge * t58 * t60 * t103)
+                        - k_edge * t22 * t32 * t73 - t29 * t73 - t25 * t75
+                        - mu * k_edge * t22 * t28 * t31 * t33 * t78
+                        - T::from_f64(1.5) * mu * k_edge * t20 * t25 * t28 * t31 * t32
+                            * t33 * t58
+                        - mu * k_edge * hc_alpha * t20 * t22 * t31 * t33 * t61 * t74
+                        + mu * k_edge * t22 * t28 * t33 * t34 * t78 * t79
+                        - mu * k_edge * t20 * t22 * t28 * t31
+                            * (cos_theta * t14 + sin_theta * t76 - sin_theta * t18
+                                + cos_theta * t77)
+                        - T::from_f64(1.5) * k_wall * t64 * t65 * t104
+                        - k_wall * t44 * t54 * t81 - t51 * t81 - t45 * t105
+                        - mu * k_wall * t42 * t44 * t48 * t53 * t95
+                        - thetadot * mu * k_wall * t41 * t44 * t48 * t53 * t95
+                        - T::from_f64(1.5) * mu * k_wall * t41 * t42 * t45 * t48 * t53
+                            * t54 * t64
+                        - thetadot * mu * k_wall * hc_alpha * t41 * t42 * t44 * t53 * t81
+                            * t82
+                        + thetadot * mu * k_wall * t41 * t44 * t48 * t55 * t95 * t96),
+                t57
+                    * (t86 + t87 + t88 + t89
+                        - mu * k_edge * hc_alpha * t20 * t22 * t23 * t31 * t33 * t61
+                        - mu * k_wall * hc_alpha * t41 * t42 * t44 * t53 * t82),
+                t57
+                    * (t97 + t98 + t99 + t100 + t101
+                        - mu * k_edge * hc_alpha * sin_theta * t20 * t22 * t31 * t33
+                            * t61),
+                t57
+                    * (-(k_edge * hc_alpha * t22 * t61 * t103)
+                        - mu * k_edge * t22 * t28 * t31 * t106
+                        - mu * k_edge * hc_alpha * t20 * t22 * t25 * t31 * t33 * t61
+                        + mu * k_edge * t22 * t28 * t34 * t79 * t106
+                        - k_wall * hc_alpha * t44 * t82 * t104
+                        - mu * k_wall * t44 * t48 * t53 * t108
+                        - mu * k_wall * hc_alpha * t41 * t42 * t44 * t45 * t53 * t82
+                        + mu * k_wall * t44 * t48 * t55 * t96 * t108),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                xdot * t2 + zdot * (t90 + t91),
                 f1 * sin_theta + f2 * cos_theta,
                 t2,
                 m_2,
-                0.0,
-                0.0,
-                -(1.5 * mu * k_edge * cos_theta * t24 * t27 * t28 * t34 * t60)
-                    + thetadot * mu * k_edge * hc_alpha * sin_theta * t20 * t27 * t34
-                        * t63 + thetadot * sin_theta * t25 + t22 * t64
-                    + 1.5 * mu * k_wall * t50 * t55 * t56 * t57 * t66 + t48 * t99,
-                1.5 * mu * k_edge * sin_theta * t24 * t27 * t28 * t34 * t60
-                    + thetadot * mu * k_edge * hc_alpha * cos_theta * t20 * t27 * t34
-                        * t63 + thetadot * cos_theta * t25 + t22 * t69,
-                1.5 * mu * k_edge * t21 * t24 * t27 * t28 * t34 * t60
-                    + mu * k_edge * hc_alpha * t20 * t27 * t34 * t63 * t72
-                    - mu * k_edge * t20 * t24 * t76 * t77 * t107
-                    + mu * k_edge * t20 * t24 * t27 * t76 * t108 + t25 * t72 + t22 * t73
-                    + 1.5 * mu * k_wall * t47 * t50 * t55 * t56 * t57 * t66
-                    + thetadot * mu * k_wall * hc_alpha * t46 * t55 * t57 * t79 * t80
-                    - thetadot * mu * k_wall * t46 * t50 * t92 * t93 * t109
-                    + thetadot * mu * k_wall * t46 * t50 * t55 * t92 * t110
-                    + thetadot * t53 * t79 + t48 * t103,
-                t30 + t51 + t52
-                    - mu * k_edge * hc_alpha * cos_theta * t20 * t27 * t34 * t63
-                    - mu * k_edge * sin_theta * t20 * t24 * t77 * t107
-                    + mu * k_edge * sin_theta * t20 * t24 * t27 * t108
-                    - k_edge * hc_alpha * cos_theta * t20 * t22 * t63
-                    + mu * k_wall * hc_alpha * t46 * t55 * t57 * t80
-                    + k_wall * hc_alpha * t46 * t48 * t80,
-                sin_theta * t25
-                    + mu * k_edge * hc_alpha * sin_theta * t20 * t27 * t34 * t63
-                    - mu * k_edge * cos_theta * t20 * t24 * t77 * t107
-                    + mu * k_edge * cos_theta * t20 * t24 * t27 * t108
-                    + k_edge * hc_alpha * sin_theta * t20 * t22 * t63
-                    - mu * k_wall * t46 * t50 * t93 * t109
-                    + mu * k_wall * t46 * t50 * t55 * t110,
-                t21 * t25 + t47 * t53
-                    + mu * k_edge * hc_alpha * t20 * t21 * t27 * t34 * t63
-                    - mu * k_edge * t20 * t24 * t33 * t77 * t107
-                    + mu * k_edge * t20 * t24 * t27 * t33 * t108
-                    + k_edge * hc_alpha * t20 * t21 * t22 * t63
-                    + mu * k_wall * hc_alpha * t46 * t47 * t55 * t57 * t80
-                    - mu * k_wall * t43 * t46 * t50 * t93 * t109
-                    + mu * k_wall * t43 * t46 * t50 * t55 * t110
-                    + k_wall * hc_alpha * t46 * t47 * t48 * t80,
-                0.0,
-                0.0,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(1.5) * mu * k_edge * t23 * t28 * t31 * t32 * t34 * t58
+                    + T::from_f64(2.0) * thetadot * mu * k_edge * hc_alpha * t10 * t22
+                        * t24 * t31 * t34 * t61
+                    + T::from_f64(2.0) * thetadot * t10 * t24 * t29 + t26 * t62
+                    + T::from_f64(1.5) * mu * k_wall * t48 * t53 * t54 * t55 * t64
+                    + t46 * t102,
+                T::from_f64(1.5) * mu * k_edge * sin_theta * t28 * t31 * t32 * t34 * t58
+                    + thetadot * mu * k_edge * hc_alpha * cos_theta * t22 * t31 * t34
+                        * t61 + thetadot * cos_theta * t29 + t26 * t67,
+                T::from_f64(1.5) * mu * k_edge * t25 * t28 * t31 * t32 * t34 * t58
+                    + mu * k_edge * hc_alpha * t22 * t31 * t34 * t61 * t74
+                    - mu * k_edge * t22 * t28 * t78 * t79 * t109
+                    + mu * k_edge * t22 * t28 * t31 * t78 * t110 + t29 * t74 + t26 * t75
+                    + T::from_f64(1.5) * mu * k_wall * t45 * t48 * t53 * t54 * t55 * t64
+                    + thetadot * mu * k_wall * hc_alpha * t44 * t53 * t55 * t81 * t82
+                    - thetadot * mu * k_wall * t44 * t48 * t95 * t96 * t111
+                    + thetadot * mu * k_wall * t44 * t48 * t53 * t95 * t112
+                    + thetadot * t51 * t81 + t46 * t105,
+                t23 * t29 + t49 + t50
+                    + mu * k_edge * hc_alpha * t22 * t23 * t31 * t34 * t61
+                    - mu * k_edge * sin_theta * t22 * t28 * t79 * t109
+                    + mu * k_edge * sin_theta * t22 * t28 * t31 * t110
+                    + k_edge * hc_alpha * t22 * t23 * t26 * t61
+                    + mu * k_wall * hc_alpha * t44 * t53 * t55 * t82
+                    + k_wall * hc_alpha * t44 * t46 * t82,
+                sin_theta * t29
+                    + mu * k_edge * hc_alpha * sin_theta * t22 * t31 * t34 * t61
+                    - mu * k_edge * cos_theta * t22 * t28 * t79 * t109
+                    + mu * k_edge * cos_theta * t22 * t28 * t31 * t110
+                    + k_edge * hc_alpha * sin_theta * t22 * t26 * t61
+                    - mu * k_wall * t44 * t48 * t96 * t111
+                    + mu * k_wall * t44 * t48 * t53 * t112,
+                t25 * t29 + t45 * t51
+                    + mu * k_edge * hc_alpha * t22 * t25 * t31 * t34 * t61
+                    - mu * k_edge * t22 * t28 * t33 * t79 * t109
+                    + mu * k_edge * t22 * t28 * t31 * t33 * t110
+                    + k_edge * hc_alpha * t22 * t25 * t26 * t61
+                    + mu * k_wall * hc_alpha * t44 * t45 * t53 * t55 * t82
+                    - mu * k_wall * t41 * t44 * t48 * t96 * t111
+                    + mu * k_wall * t41 * t44 * t48 * t53 * t112
+                    + k_wall * hc_alpha * t44 * t45 * t46 * t82,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
             ],
         )
     }
@@ -526,19 +549,19 @@ pub mod compliant_peg_lean {
     /// - `p0`: vector of 2
     ///
     /// # Cost
-    /// 30 add/sub, 73 mul, 7 div, 2 sqrt, 11 transcendental, 4 branches; 31 `let`s.
+    /// 32 add/sub, 80 mul, 7 div, 2 sqrt, 12 transcendental, 4 branches; 33 `let`s.
     #[inline]
-    pub fn contacts(
-        y: &SVector<f64, 8>,
-        p: &SVector<f64, 24>,
+    pub fn contacts<T: Real>(
+        y: &SVector<T, 8>,
+        p: &SVector<T, 24>,
     ) -> (
-        SVector<f64, 2>,
-        SVector<f64, 2>,
-        SVector<f64, 2>,
-        SVector<f64, 2>,
-        SVector<f64, 2>,
-        SVector<f64, 2>,
-        SVector<f64, 2>,
+        SVector<T, 2>,
+        SVector<T, 2>,
+        SVector<T, 2>,
+        SVector<T, 2>,
+        SVector<T, 2>,
+        SVector<T, 2>,
+        SVector<T, 2>,
     ) {
         let x = y[0];
         let z = y[1];
@@ -565,55 +588,65 @@ pub mod compliant_peg_lean {
         let hc_alpha = p[23];
         let sin_theta = theta.sin();
         let cos_theta = theta.cos();
-        let t0 = -0.5 * d;
-        let t1 = -rho_h + t0 - x;
-        let t2 = rho_h - z;
-        let t3 = r + rho_h + cos_theta * t1 - sin_theta * t2;
-        let t4 = sin_theta * t1 + cos_theta * t2;
-        let t5 = sin_theta * (xdot + thetadot * (cos_theta * t4 + r * sin_theta))
-            + cos_theta * (zdot + thetadot * (-(sin_theta * t4) + r * cos_theta));
-        let t6 = if t3 > 0.0 || t3.is_nan() { t3 } else { 0.0 };
-        let t7 = t6 * t6.sqrt();
-        let t8 = 1.0
+        let t0 = -T::from_f64(0.5) * d;
+        let t1 = -x;
+        let t2 = -rho_h + t0 + t1;
+        let t3 = rho_h - z;
+        let t4 = T::from_f64(0.5) * theta;
+        let t5 = t4.sin();
+        let t6 = t5 * t5;
+        let t7 = r + t0 + t1 - sin_theta * t3 - T::from_f64(2.0) * t2 * t6;
+        let t8 = sin_theta * t2 + cos_theta * t3;
+        let t9 = sin_theta * (xdot + thetadot * (cos_theta * t8 + r * sin_theta))
+            + cos_theta * (zdot + thetadot * (-(sin_theta * t8) + r * cos_theta));
+        let t10 = t7.max0();
+        let t11 = t10 * t10.sqrt();
+        let t12 = t4.cos();
+        let t13 = (T::from_f64(1.0)
             + hc_alpha
-                * (-(xdot * cos_theta) + zdot * sin_theta
-                    + thetadot * (-(sin_theta * t1) - cos_theta * t2));
-        let t9 = if t8 > 0.0 || t8.is_nan() { t8 } else { 0.0 };
-        let t10 = v_s.hypot(t5);
-        let t11 = 1.0 / e_star;
-        let t12 = (1.5 * k_edge * t7 * t9 * t11 / edge_sum).powf(0.3333333333333333);
-        let t13 = (1.5 * k_edge * t7 * t9).powf(0.3333333333333333);
-        let t14 = (e_star * edge_sum).powf(0.6666666666666666);
-        let t15 = -rho_p;
-        let t16 = l_c + t15;
-        let t17 = r + t15;
-        let t18 = x + rho_p + t0 + sin_theta * t16 + cos_theta * t17;
-        let t19 = (0.5 * theta).sin();
-        let t20 = zdot
+                * (xdot * (-T::from_f64(1.0) + T::from_f64(2.0) * t6) + zdot * sin_theta
+                    + thetadot * (-(cos_theta * t3) - T::from_f64(2.0) * t2 * t5 * t12)))
+            .max0();
+        let t14 = v_s.hypot(t9);
+        let t15 = T::from_f64(1.0) / e_star;
+        let t16 = (T::from_f64(1.5) * k_edge * t11 * t13 * t15 / edge_sum)
+            .powf(T::from_f64(0.3333333333333333));
+        let t17 = (T::from_f64(1.5) * k_edge * t11 * t13)
+            .powf(T::from_f64(0.3333333333333333));
+        let t18 = (e_star * edge_sum).powf(T::from_f64(0.6666666666666666));
+        let t19 = -rho_p;
+        let t20 = l_c + t19;
+        let t21 = r + t19;
+        let t22 = r + t0 + x + sin_theta * t20 - T::from_f64(2.0) * t6 * t21;
+        let t23 = zdot
             + thetadot
-                * (-(sin_theta * (l_c + t15 + rho_p * sin_theta))
-                    - cos_theta * (r - 2.0 * rho_p * (t19 * t19)));
-        let t21 = if t18 > 0.0 || t18.is_nan() { t18 } else { 0.0 };
-        let t22 = t21 * t21.sqrt();
-        let t23 = 1.0
-            + hc_alpha * (xdot + thetadot * (cos_theta * t16 - sin_theta * t17));
-        let t24 = if t23 > 0.0 || t23.is_nan() { t23 } else { 0.0 };
-        let t25 = v_s.hypot(t20);
-        let t26 = (1.5 * k_wall * t11 * t22 * t24 / wall_sum).powf(0.3333333333333333);
-        let t27 = (1.5 * k_wall * t22 * t24).powf(0.3333333333333333);
-        let t28 = (e_star * wall_sum).powf(0.6666666666666666);
-        let normal = Vector2::new(k_edge * t7 * t9, k_wall * t22 * t24);
+                * (-(sin_theta * (l_c + t19 + rho_p * sin_theta))
+                    - cos_theta * (r - T::from_f64(2.0) * rho_p * t6));
+        let t24 = t22.max0();
+        let t25 = t24 * t24.sqrt();
+        let t26 = (T::from_f64(1.0)
+            + hc_alpha
+                * (xdot
+                    + thetadot * (cos_theta * t20 - T::from_f64(2.0) * t5 * t12 * t21)))
+            .max0();
+        let t27 = v_s.hypot(t23);
+        let t28 = (T::from_f64(1.5) * k_wall * t15 * t25 * t26 / wall_sum)
+            .powf(T::from_f64(0.3333333333333333));
+        let t29 = (T::from_f64(1.5) * k_wall * t25 * t26)
+            .powf(T::from_f64(0.3333333333333333));
+        let t30 = (e_star * wall_sum).powf(T::from_f64(0.6666666666666666));
+        let normal = Vector2::new(k_edge * t11 * t13, k_wall * t25 * t26);
         let friction = Vector2::new(
-            -mu * k_edge * t5 * t7 * t9 / t10,
-            -mu * k_wall * t20 * t22 * t24 / t25,
+            -mu * k_edge * t9 * t11 * t13 / t14,
+            -mu * k_wall * t23 * t25 * t26 / t27,
         );
-        let delta = Vector2::new(t3, t18);
-        let slip = Vector2::new(t5, t20);
-        let a = Vector2::new(edge_ma * t12, wall_ma * t26);
-        let b = Vector2::new(edge_mb * t12, wall_mb * t26);
+        let delta = Vector2::new(t7, t22);
+        let slip = Vector2::new(t9, t23);
+        let a = Vector2::new(edge_ma * t16, wall_ma * t28);
+        let b = Vector2::new(edge_mb * t16, wall_mb * t28);
         let p0 = Vector2::new(
-            0.3183098861837907 * t13 * t14 / (edge_ma * edge_mb),
-            0.3183098861837907 * t27 * t28 / (wall_ma * wall_mb),
+            T::from_f64(0.3183098861837907) * t17 * t18 / (edge_ma * edge_mb),
+            T::from_f64(0.3183098861837907) * t29 * t30 / (wall_ma * wall_mb),
         );
         (normal, friction, delta, slip, a, b, p0)
     }
@@ -629,9 +662,9 @@ pub mod compliant_peg_lean {
     /// - `depth`: scalar
     ///
     /// # Cost
-    /// 16 add/sub, 17 mul, 0 div, 0 sqrt, 4 transcendental, 2 branches; 10 `let`s.
+    /// 17 add/sub, 21 mul, 0 div, 0 sqrt, 5 transcendental, 2 branches; 11 `let`s.
     #[inline]
-    pub fn energy(y: &SVector<f64, 8>, p: &SVector<f64, 24>) -> (f64, f64, f64) {
+    pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> (T, T, T) {
         let x = y[0];
         let z = y[1];
         let theta = y[2];
@@ -649,17 +682,21 @@ pub mod compliant_peg_lean {
         let k_wall = p[10];
         let sin_theta = theta.sin();
         let cos_theta = theta.cos();
-        let t0 = -0.5 * d;
-        let t1 = r + rho_h + cos_theta * (-rho_h + t0 - x) - sin_theta * (rho_h - z);
-        let t2 = if t1 > 0.0 || t1.is_nan() { t1 } else { 0.0 };
-        let t3 = t2.powf(2.5);
-        let t4 = -rho_p;
-        let t5 = x + rho_p + t0 + sin_theta * (l_c + t4) + cos_theta * (r + t4);
-        let t6 = if t5 > 0.0 || t5.is_nan() { t5 } else { 0.0 };
-        let t7 = t6.powf(2.5);
-        let kinetic = 0.5 * m * (xdot * xdot + zdot * zdot)
-            + 0.5 * j * (thetadot * thetadot);
-        let potential = 0.4 * k_edge * t3 + 0.4 * k_wall * t7;
+        let t0 = -T::from_f64(0.5) * d;
+        let t1 = -x;
+        let t2 = (T::from_f64(0.5) * theta).sin();
+        let t3 = t2 * t2;
+        let t4 = (r + t0 + t1 - sin_theta * (rho_h - z)
+            - T::from_f64(2.0) * (-rho_h + t0 + t1) * t3)
+            .max0();
+        let t5 = t4.powf(T::from_f64(2.5));
+        let t6 = -rho_p;
+        let t7 = (r + t0 + x + sin_theta * (l_c + t6) - T::from_f64(2.0) * t3 * (r + t6))
+            .max0();
+        let t8 = t7.powf(T::from_f64(2.5));
+        let kinetic = T::from_f64(0.5) * m * (xdot * xdot + zdot * zdot)
+            + T::from_f64(0.5) * j * (thetadot * thetadot);
+        let potential = T::from_f64(0.4) * k_edge * t5 + T::from_f64(0.4) * k_wall * t8;
         let depth = z + l_c * cos_theta;
         (kinetic, potential, depth)
     }

@@ -6,6 +6,7 @@
 /// SI units.
 pub mod double_pendulum {
     use nalgebra::{Matrix2, Matrix2x4, SMatrix, SVector, Vector2, Vector4};
+    use pegdyn::scalar::Real;
     /// Symbol names of the components of `x`, in order.
     pub const X_NAMES: [&str; 4] = ["theta1", "theta2", "theta1dot", "theta2dot"];
     /// Symbol names of the components of `p`, in order.
@@ -27,10 +28,10 @@ pub mod double_pendulum {
     /// # Cost
     /// 17 add/sub, 91 mul, 0 div, 0 sqrt, 4 transcendental, 0 branches; 8 `let`s.
     #[inline]
-    pub fn dynamics(
-        x: &SVector<f64, 4>,
-        p: &SVector<f64, 5>,
-    ) -> (SMatrix<f64, 2, 2>, SVector<f64, 2>) {
+    pub fn dynamics<T: Real>(
+        x: &SVector<T, 4>,
+        p: &SVector<T, 5>,
+    ) -> (SMatrix<T, 2, 2>, SVector<T, 2>) {
         let theta1 = x[0];
         let theta2 = x[1];
         let theta1dot = x[2];
@@ -45,29 +46,37 @@ pub mod double_pendulum {
         let sin_theta2 = theta2.sin();
         let cos_theta2 = theta2.cos();
         let t0 = l1 * l1;
-        let t1 = 2.0 * theta1dot * l1 * cos_theta1 + 2.0 * theta2dot * l2 * cos_theta2;
-        let t2 = 2.0 * theta1dot * l1 * sin_theta1 + 2.0 * theta2dot * l2 * sin_theta2;
-        let t3 = 0.5 * m2
-            * (2.0 * l1 * l2 * cos_theta1 * cos_theta2
-                + 2.0 * l1 * l2 * sin_theta1 * sin_theta2);
+        let t1 = T::from_f64(2.0) * theta1dot * l1 * cos_theta1
+            + T::from_f64(2.0) * theta2dot * l2 * cos_theta2;
+        let t2 = T::from_f64(2.0) * theta1dot * l1 * sin_theta1
+            + T::from_f64(2.0) * theta2dot * l2 * sin_theta2;
+        let t3 = T::from_f64(0.5) * m2
+            * (T::from_f64(2.0) * l1 * l2 * cos_theta1 * cos_theta2
+                + T::from_f64(2.0) * l1 * l2 * sin_theta1 * sin_theta2);
         let mass = Matrix2::new(m1 * t0 + m2 * t0, t3, t3, m2 * (l2 * l2));
         let forcing = Vector2::new(
             -(g * (m1 * l1 * sin_theta1 + m2 * l1 * sin_theta1))
-                + 0.5 * m2
+                + T::from_f64(0.5) * m2
                     * (-(theta1dot * l1 * sin_theta1 * t1)
                         + theta1dot * l1 * cos_theta1 * t2)
-                - 0.5 * theta1dot * m2 * (-(l1 * sin_theta1 * t1) + l1 * cos_theta1 * t2)
-                - 0.5 * theta2dot * m2
-                    * (-(2.0 * theta2dot * l1 * l2 * cos_theta1 * sin_theta2)
-                        + 2.0 * theta2dot * l1 * l2 * sin_theta1 * cos_theta2),
+                - T::from_f64(0.5) * theta1dot * m2
+                    * (-(l1 * sin_theta1 * t1) + l1 * cos_theta1 * t2)
+                - T::from_f64(0.5) * theta2dot * m2
+                    * (-(T::from_f64(2.0) * theta2dot * l1 * l2 * cos_theta1
+                        * sin_theta2)
+                        + T::from_f64(2.0) * theta2dot * l1 * l2 * sin_theta1
+                            * cos_theta2),
             -(m2 * l2 * g * sin_theta2)
-                + 0.5 * m2
+                + T::from_f64(0.5) * m2
                     * (-(theta2dot * l2 * sin_theta2 * t1)
                         + theta2dot * l2 * cos_theta2 * t2)
-                - 0.5 * theta1dot * m2
-                    * (-(2.0 * theta1dot * l1 * l2 * sin_theta1 * cos_theta2)
-                        + 2.0 * theta1dot * l1 * l2 * cos_theta1 * sin_theta2)
-                - 0.5 * theta2dot * m2 * (-(l2 * sin_theta2 * t1) + l2 * cos_theta2 * t2),
+                - T::from_f64(0.5) * theta1dot * m2
+                    * (-(T::from_f64(2.0) * theta1dot * l1 * l2 * sin_theta1
+                        * cos_theta2)
+                        + T::from_f64(2.0) * theta1dot * l1 * l2 * cos_theta1
+                            * sin_theta2)
+                - T::from_f64(0.5) * theta2dot * m2
+                    * (-(l2 * sin_theta2 * t1) + l2 * cos_theta2 * t2),
         );
         (mass, forcing)
     }
@@ -85,7 +94,7 @@ pub mod double_pendulum {
     /// # Cost
     /// 21 add/sub, 110 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 14 `let`s.
     #[inline]
-    pub fn rhs(x: &SVector<f64, 4>, p: &SVector<f64, 5>) -> SVector<f64, 4> {
+    pub fn rhs<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> SVector<T, 4> {
         let theta1 = x[0];
         let theta2 = x[1];
         let theta1dot = x[2];
@@ -100,35 +109,39 @@ pub mod double_pendulum {
         let sin_theta2 = theta2.sin();
         let cos_theta2 = theta2.cos();
         let t0 = l1 * l1;
-        let t1 = 2.0 * theta1dot * l1 * cos_theta1 + 2.0 * theta2dot * l2 * cos_theta2;
-        let t2 = 2.0 * theta1dot * l1 * sin_theta1 + 2.0 * theta2dot * l2 * sin_theta2;
+        let t1 = T::from_f64(2.0) * theta1dot * l1 * cos_theta1
+            + T::from_f64(2.0) * theta2dot * l2 * cos_theta2;
+        let t2 = T::from_f64(2.0) * theta1dot * l1 * sin_theta1
+            + T::from_f64(2.0) * theta2dot * l2 * sin_theta2;
         let t3 = m1 * t0 + m2 * t0;
-        let t4 = 2.0 * l1 * l2 * cos_theta1 * cos_theta2
-            + 2.0 * l1 * l2 * sin_theta1 * sin_theta2;
+        let t4 = T::from_f64(2.0) * l1 * l2 * cos_theta1 * cos_theta2
+            + T::from_f64(2.0) * l1 * l2 * sin_theta1 * sin_theta2;
         let t5 = -(g * (m1 * l1 * sin_theta1 + m2 * l1 * sin_theta1))
-            + 0.5 * m2
+            + T::from_f64(0.5) * m2
                 * (-(theta1dot * l1 * sin_theta1 * t1)
                     + theta1dot * l1 * cos_theta1 * t2)
-            - 0.5 * theta1dot * m2 * (-(l1 * sin_theta1 * t1) + l1 * cos_theta1 * t2)
-            - 0.5 * theta2dot * m2
-                * (-(2.0 * theta2dot * l1 * l2 * cos_theta1 * sin_theta2)
-                    + 2.0 * theta2dot * l1 * l2 * sin_theta1 * cos_theta2);
+            - T::from_f64(0.5) * theta1dot * m2
+                * (-(l1 * sin_theta1 * t1) + l1 * cos_theta1 * t2)
+            - T::from_f64(0.5) * theta2dot * m2
+                * (-(T::from_f64(2.0) * theta2dot * l1 * l2 * cos_theta1 * sin_theta2)
+                    + T::from_f64(2.0) * theta2dot * l1 * l2 * sin_theta1 * cos_theta2);
         let t6 = l2 * l2;
         let t7 = -(m2 * l2 * g * sin_theta2)
-            + 0.5 * m2
+            + T::from_f64(0.5) * m2
                 * (-(theta2dot * l2 * sin_theta2 * t1)
                     + theta2dot * l2 * cos_theta2 * t2)
-            - 0.5 * theta1dot * m2
-                * (-(2.0 * theta1dot * l1 * l2 * sin_theta1 * cos_theta2)
-                    + 2.0 * theta1dot * l1 * l2 * cos_theta1 * sin_theta2)
-            - 0.5 * theta2dot * m2 * (-(l2 * sin_theta2 * t1) + l2 * cos_theta2 * t2);
+            - T::from_f64(0.5) * theta1dot * m2
+                * (-(T::from_f64(2.0) * theta1dot * l1 * l2 * sin_theta1 * cos_theta2)
+                    + T::from_f64(2.0) * theta1dot * l1 * l2 * cos_theta1 * sin_theta2)
+            - T::from_f64(0.5) * theta2dot * m2
+                * (-(l2 * sin_theta2 * t1) + l2 * cos_theta2 * t2);
         let t8 = l1 * l2 * cos_theta1 * cos_theta2 + l1 * l2 * sin_theta1 * sin_theta2;
-        let t9 = 1.0 / (m2 * t3 * t6 - m2 * m2 * (t8 * t8));
+        let t9 = T::from_f64(1.0) / (m2 * t3 * t6 - m2 * m2 * (t8 * t8));
         Vector4::new(
             theta1dot,
             theta2dot,
-            (m2 * t5 * t6 - 0.5 * m2 * t4 * t7) * t9,
-            t9 * (t3 * t7 - 0.5 * m2 * t4 * t5),
+            (m2 * t5 * t6 - T::from_f64(0.5) * m2 * t4 * t7) * t9,
+            t9 * (t3 * t7 - T::from_f64(0.5) * m2 * t4 * t5),
         )
     }
     /// G = ∂f/∂x − Σ_j (∂M_{·j}/∂x) q̈_j (n × 2n) at the accelerations `qdd`;
@@ -147,11 +160,11 @@ pub mod double_pendulum {
     /// # Cost
     /// 40 add/sub, 196 mul, 0 div, 0 sqrt, 4 transcendental, 0 branches; 17 `let`s.
     #[inline]
-    pub fn jacobian_terms(
-        x: &SVector<f64, 4>,
-        qdd: &SVector<f64, 2>,
-        p: &SVector<f64, 5>,
-    ) -> SMatrix<f64, 2, 4> {
+    pub fn jacobian_terms<T: Real>(
+        x: &SVector<T, 4>,
+        qdd: &SVector<T, 2>,
+        p: &SVector<T, 5>,
+    ) -> SMatrix<T, 2, 4> {
         let theta1 = x[0];
         let theta2 = x[1];
         let theta1dot = x[2];
@@ -168,59 +181,68 @@ pub mod double_pendulum {
         let sin_theta2 = theta2.sin();
         let cos_theta2 = theta2.cos();
         let t0 = l1 * l1;
-        let t1 = 2.0 * theta1dot * l1 * cos_theta1 + 2.0 * theta2dot * l2 * cos_theta2;
-        let t2 = 2.0 * theta1dot * l1 * sin_theta1 + 2.0 * theta2dot * l2 * sin_theta2;
-        let t3 = -(2.0 * theta2dot * l1 * l2 * cos_theta1 * sin_theta2)
-            + 2.0 * theta2dot * l1 * l2 * sin_theta1 * cos_theta2;
+        let t1 = T::from_f64(2.0) * theta1dot * l1 * cos_theta1
+            + T::from_f64(2.0) * theta2dot * l2 * cos_theta2;
+        let t2 = T::from_f64(2.0) * theta1dot * l1 * sin_theta1
+            + T::from_f64(2.0) * theta2dot * l2 * sin_theta2;
+        let t3 = -(T::from_f64(2.0) * theta2dot * l1 * l2 * cos_theta1 * sin_theta2)
+            + T::from_f64(2.0) * theta2dot * l1 * l2 * sin_theta1 * cos_theta2;
         let t4 = l2 * l2;
-        let t5 = -(2.0 * theta1dot * l1 * l2 * sin_theta1 * cos_theta2)
-            + 2.0 * theta1dot * l1 * l2 * cos_theta1 * sin_theta2;
-        let t6 = -(2.0 * l1 * l2 * sin_theta1 * cos_theta2)
-            + 2.0 * l1 * l2 * cos_theta1 * sin_theta2;
-        let t7 = 2.0 * theta2dot * l1 * l2 * sin_theta1 * sin_theta2
-            + 2.0 * theta2dot * l1 * l2 * cos_theta1 * cos_theta2;
-        let t8 = -(2.0 * l1 * l2 * cos_theta1 * sin_theta2)
-            + 2.0 * l1 * l2 * sin_theta1 * cos_theta2;
-        let t9 = 0.5 * m2
-            * (2.0 * theta1dot * theta2dot * l1 * l2 * sin_theta1 * sin_theta2
-                + 2.0 * theta1dot * theta2dot * l1 * l2 * cos_theta1 * cos_theta2);
-        let t10 = -0.5 * theta1dot * m2 * t6;
-        let t11 = -0.5 * theta2dot * m2 * t8;
-        let t12 = 2.0 * theta1dot * l1 * l2 * sin_theta1 * sin_theta2
-            + 2.0 * theta1dot * l1 * l2 * cos_theta1 * cos_theta2;
+        let t5 = -(T::from_f64(2.0) * theta1dot * l1 * l2 * sin_theta1 * cos_theta2)
+            + T::from_f64(2.0) * theta1dot * l1 * l2 * cos_theta1 * sin_theta2;
+        let t6 = -(T::from_f64(2.0) * l1 * l2 * sin_theta1 * cos_theta2)
+            + T::from_f64(2.0) * l1 * l2 * cos_theta1 * sin_theta2;
+        let t7 = T::from_f64(2.0) * theta2dot * l1 * l2 * sin_theta1 * sin_theta2
+            + T::from_f64(2.0) * theta2dot * l1 * l2 * cos_theta1 * cos_theta2;
+        let t8 = -(T::from_f64(2.0) * l1 * l2 * cos_theta1 * sin_theta2)
+            + T::from_f64(2.0) * l1 * l2 * sin_theta1 * cos_theta2;
+        let t9 = T::from_f64(0.5) * m2
+            * (T::from_f64(2.0) * theta1dot * theta2dot * l1 * l2 * sin_theta1
+                * sin_theta2
+                + T::from_f64(2.0) * theta1dot * theta2dot * l1 * l2 * cos_theta1
+                    * cos_theta2);
+        let t10 = -T::from_f64(0.5) * theta1dot * m2 * t6;
+        let t11 = -T::from_f64(0.5) * theta2dot * m2 * t8;
+        let t12 = T::from_f64(2.0) * theta1dot * l1 * l2 * sin_theta1 * sin_theta2
+            + T::from_f64(2.0) * theta1dot * l1 * l2 * cos_theta1 * cos_theta2;
         Matrix2x4::new(
             -(g * (m1 * l1 * cos_theta1 + m2 * l1 * cos_theta1))
-                + 0.5 * m2
+                + T::from_f64(0.5) * m2
                     * (-(theta1dot * l1 * cos_theta1 * t1)
                         - theta1dot * l1 * sin_theta1 * t2
-                        + 2.0 * (theta1dot * theta1dot) * t0)
-                - 0.5 * theta1dot * m2
+                        + T::from_f64(2.0) * (theta1dot * theta1dot) * t0)
+                - T::from_f64(0.5) * theta1dot * m2
                     * (-(l1 * cos_theta1 * t1) - l1 * sin_theta1 * t2
-                        + 2.0 * theta1dot * t0) - 0.5 * theta2dot * m2 * t7
-                - 0.5 * theta2ddot * m2 * t6,
-            t9 - 0.5 * theta1dot * m2 * t7
-                - 0.5 * theta2dot * m2
-                    * (-(2.0 * theta2dot * l1 * l2 * cos_theta1 * cos_theta2)
-                        - 2.0 * theta2dot * l1 * l2 * sin_theta1 * sin_theta2)
-                - 0.5 * theta2ddot * m2 * t8,
-            0.0,
-            0.5 * m2 * t5 + t10 - 0.5 * m2 * t3 + t11,
+                        + T::from_f64(2.0) * theta1dot * t0)
+                - T::from_f64(0.5) * theta2dot * m2 * t7
+                - T::from_f64(0.5) * theta2ddot * m2 * t6,
+            t9 - T::from_f64(0.5) * theta1dot * m2 * t7
+                - T::from_f64(0.5) * theta2dot * m2
+                    * (-(T::from_f64(2.0) * theta2dot * l1 * l2 * cos_theta1
+                        * cos_theta2)
+                        - T::from_f64(2.0) * theta2dot * l1 * l2 * sin_theta1
+                            * sin_theta2) - T::from_f64(0.5) * theta2ddot * m2 * t8,
+            T::from_f64(0.0),
+            T::from_f64(0.5) * m2 * t5 + t10 - T::from_f64(0.5) * m2 * t3 + t11,
             t9
-                - 0.5 * theta1dot * m2
-                    * (-(2.0 * theta1dot * l1 * l2 * cos_theta1 * cos_theta2)
-                        - 2.0 * theta1dot * l1 * l2 * sin_theta1 * sin_theta2)
-                - 0.5 * theta2dot * m2 * t12 - 0.5 * theta1ddot * m2 * t6,
+                - T::from_f64(0.5) * theta1dot * m2
+                    * (-(T::from_f64(2.0) * theta1dot * l1 * l2 * cos_theta1
+                        * cos_theta2)
+                        - T::from_f64(2.0) * theta1dot * l1 * l2 * sin_theta1
+                            * sin_theta2) - T::from_f64(0.5) * theta2dot * m2 * t12
+                - T::from_f64(0.5) * theta1ddot * m2 * t6,
             -(m2 * l2 * g * cos_theta2)
-                + 0.5 * m2
+                + T::from_f64(0.5) * m2
                     * (-(theta2dot * l2 * cos_theta2 * t1)
                         - theta2dot * l2 * sin_theta2 * t2
-                        + 2.0 * t4 * (theta2dot * theta2dot))
-                - 0.5 * theta1dot * m2 * t12
-                - 0.5 * theta2dot * m2
+                        + T::from_f64(2.0) * t4 * (theta2dot * theta2dot))
+                - T::from_f64(0.5) * theta1dot * m2 * t12
+                - T::from_f64(0.5) * theta2dot * m2
                     * (-(l2 * cos_theta2 * t1) - l2 * sin_theta2 * t2
-                        + 2.0 * theta2dot * t4) - 0.5 * theta1ddot * m2 * t8,
-            0.5 * m2 * t3 + t10 + t11 - 0.5 * m2 * t5,
-            0.0,
+                        + T::from_f64(2.0) * theta2dot * t4)
+                - T::from_f64(0.5) * theta1ddot * m2 * t8,
+            T::from_f64(0.5) * m2 * t3 + t10 + t11 - T::from_f64(0.5) * m2 * t5,
+            T::from_f64(0.0),
         )
     }
     /// Total mechanical energy T + V (conserved without generalized forces).
@@ -237,7 +259,7 @@ pub mod double_pendulum {
     /// # Cost
     /// 7 add/sub, 23 mul, 0 div, 0 sqrt, 4 transcendental, 0 branches; 6 `let`s.
     #[inline]
-    pub fn energy(x: &SVector<f64, 4>, p: &SVector<f64, 5>) -> f64 {
+    pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> T {
         let theta1 = x[0];
         let theta2 = x[1];
         let theta1dot = x[2];
@@ -253,7 +275,8 @@ pub mod double_pendulum {
         let cos_theta2 = theta2.cos();
         let t0 = theta1dot * l1 * cos_theta1 + theta2dot * l2 * cos_theta2;
         let t1 = theta1dot * l1 * sin_theta1 + theta2dot * l2 * sin_theta2;
-        0.5 * m1 * (theta1dot * theta1dot) * (l1 * l1) + 0.5 * m2 * (t0 * t0 + t1 * t1)
+        T::from_f64(0.5) * m1 * (theta1dot * theta1dot) * (l1 * l1)
+            + T::from_f64(0.5) * m2 * (t0 * t0 + t1 * t1)
             + g * (-(m1 * l1 * cos_theta1) + m2 * (-(l1 * cos_theta1) - l2 * cos_theta2))
     }
 }

@@ -4,6 +4,7 @@
 /// Hertz elliptical contact (paper 001, (9)-(13)) from setup-time coefficients c = (sum of curvatures 1/m, contact modulus Pa, m_a, m_b, delta_star). SI units.
 pub mod hertz {
     use nalgebra::SVector;
+    use pegdyn::scalar::Real;
     /// Symbol names of the components of `load`, in order.
     pub const LOAD_NAMES: [&str; 1] = ["load"];
     /// Symbol names of the components of `c`, in order.
@@ -23,22 +24,24 @@ pub mod hertz {
     /// # Cost
     /// 0 add/sub, 14 mul, 3 div, 0 sqrt, 4 transcendental, 1 branches; 5 `let`s.
     #[inline]
-    pub fn ellipse(load: &SVector<f64, 1>, c: &SVector<f64, 5>) -> (f64, f64, f64, f64) {
+    pub fn ellipse<T: Real>(load: &SVector<T, 1>, c: &SVector<T, 5>) -> (T, T, T, T) {
         let load_2 = load[0];
         let c_sum = c[0];
         let e_star = c[1];
         let c_ma = c[2];
         let c_mb = c[3];
         let c_dstar = c[4];
-        let max0_load_2 = if load_2 > 0.0 || load_2.is_nan() { load_2 } else { 0.0 };
-        let t0 = (1.5 * max0_load_2 / (c_sum * e_star)).powf(0.3333333333333333);
-        let t1 = (1.5 * max0_load_2).powf(0.3333333333333333);
-        let t2 = (c_sum * e_star).powf(0.6666666666666666);
-        let t3 = (0.28125 * c_sum * (max0_load_2 * max0_load_2) / (e_star * e_star))
-            .powf(0.3333333333333333);
+        let max0_load_2 = load_2.max0();
+        let t0 = (T::from_f64(1.5) * max0_load_2 / (c_sum * e_star))
+            .powf(T::from_f64(0.3333333333333333));
+        let t1 = (T::from_f64(1.5) * max0_load_2).powf(T::from_f64(0.3333333333333333));
+        let t2 = (c_sum * e_star).powf(T::from_f64(0.6666666666666666));
+        let t3 = (T::from_f64(0.28125) * c_sum * (max0_load_2 * max0_load_2)
+            / (e_star * e_star))
+            .powf(T::from_f64(0.3333333333333333));
         let a = c_ma * t0;
         let b = c_mb * t0;
-        let p0 = 0.3183098861837907 * t1 * t2 / (c_ma * c_mb);
+        let p0 = T::from_f64(0.3183098861837907) * t1 * t2 / (c_ma * c_mb);
         let delta = c_dstar * t3;
         (a, b, p0, delta)
     }
@@ -53,11 +56,11 @@ pub mod hertz {
     /// # Cost
     /// 0 add/sub, 5 mul, 1 div, 1 sqrt, 0 transcendental, 0 branches; 1 `let`s.
     #[inline]
-    pub fn stiffness(c: &SVector<f64, 5>) -> f64 {
+    pub fn stiffness<T: Real>(c: &SVector<T, 5>) -> T {
         let c_sum = c[0];
         let e_star = c[1];
         let c_dstar = c[4];
-        let t0 = (8.0 / (c_sum * (c_dstar * c_dstar * c_dstar))).sqrt();
-        0.6666666666666666 * e_star * t0
+        let t0 = (T::from_f64(8.0) / (c_sum * (c_dstar * c_dstar * c_dstar))).sqrt();
+        T::from_f64(0.6666666666666666) * e_star * t0
     }
 }

@@ -5,6 +5,7 @@
 /// angle `theta` from the downward vertical, gravity `g`. SI units.
 pub mod pendulum {
     use nalgebra::{Matrix1, Matrix1x2, SMatrix, SVector, Vector1, Vector2};
+    use pegdyn::scalar::Real;
     /// Symbol names of the components of `x`, in order.
     pub const X_NAMES: [&str; 2] = ["theta", "thetadot"];
     /// Symbol names of the components of `p`, in order.
@@ -26,10 +27,10 @@ pub mod pendulum {
     /// # Cost
     /// 0 add/sub, 5 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 1 `let`s.
     #[inline]
-    pub fn dynamics(
-        x: &SVector<f64, 2>,
-        p: &SVector<f64, 3>,
-    ) -> (SMatrix<f64, 1, 1>, SVector<f64, 1>) {
+    pub fn dynamics<T: Real>(
+        x: &SVector<T, 2>,
+        p: &SVector<T, 3>,
+    ) -> (SMatrix<T, 1, 1>, SVector<T, 1>) {
         let theta = x[0];
         let m = p[0];
         let l = p[1];
@@ -53,7 +54,7 @@ pub mod pendulum {
     /// # Cost
     /// 0 add/sub, 1 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 1 `let`s.
     #[inline]
-    pub fn rhs(x: &SVector<f64, 2>, p: &SVector<f64, 3>) -> SVector<f64, 2> {
+    pub fn rhs<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 3>) -> SVector<T, 2> {
         let theta = x[0];
         let thetadot = x[1];
         let l = p[1];
@@ -77,17 +78,17 @@ pub mod pendulum {
     /// # Cost
     /// 0 add/sub, 3 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 1 `let`s.
     #[inline]
-    pub fn jacobian_terms(
-        x: &SVector<f64, 2>,
-        _qdd: &SVector<f64, 1>,
-        p: &SVector<f64, 3>,
-    ) -> SMatrix<f64, 1, 2> {
+    pub fn jacobian_terms<T: Real>(
+        x: &SVector<T, 2>,
+        _qdd: &SVector<T, 1>,
+        p: &SVector<T, 3>,
+    ) -> SMatrix<T, 1, 2> {
         let theta = x[0];
         let m = p[0];
         let l = p[1];
         let g = p[2];
         let cos_theta = theta.cos();
-        Matrix1x2::new(-m * l * g * cos_theta, 0.0)
+        Matrix1x2::new(-m * l * g * cos_theta, T::from_f64(0.0))
     }
     /// Total mechanical energy T + V (conserved without generalized forces).
     ///
@@ -103,13 +104,13 @@ pub mod pendulum {
     /// # Cost
     /// 1 add/sub, 8 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 1 `let`s.
     #[inline]
-    pub fn energy(x: &SVector<f64, 2>, p: &SVector<f64, 3>) -> f64 {
+    pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 3>) -> T {
         let theta = x[0];
         let thetadot = x[1];
         let m = p[0];
         let l = p[1];
         let g = p[2];
         let cos_theta = theta.cos();
-        0.5 * m * (thetadot * thetadot) * (l * l) - m * l * g * cos_theta
+        T::from_f64(0.5) * m * (thetadot * thetadot) * (l * l) - m * l * g * cos_theta
     }
 }

@@ -4,6 +4,7 @@
 /// Quasi-static contact forces of the planar peg in two-point and one-point contact (paper 001, Eqs. 51-54), derived from the contact geometry. Inputs: pose = (theta rad, l m), load = (f1 axial N, f2 radial N), acc = (xdd, ydd m/s^2, thdd rad/s^2), p = (mu, r m, l_c m, m kg, J kg m^2).
 pub mod quasi_static {
     use nalgebra::SVector;
+    use pegdyn::scalar::Real;
     /// Symbol names of the components of `pose`, in order.
     pub const POSE_NAMES: [&str; 2] = ["theta", "l"];
     /// Symbol names of the components of `load`, in order.
@@ -32,12 +33,12 @@ pub mod quasi_static {
     /// # Cost
     /// 21 add/sub, 35 mul, 1 div, 0 sqrt, 2 transcendental, 0 branches; 12 `let`s.
     #[inline]
-    pub fn two_point(
-        pose: &SVector<f64, 2>,
-        load: &SVector<f64, 2>,
-        acc: &SVector<f64, 3>,
-        p: &SVector<f64, 5>,
-    ) -> (f64, f64, f64) {
+    pub fn two_point<T: Real>(
+        pose: &SVector<T, 2>,
+        load: &SVector<T, 2>,
+        acc: &SVector<T, 3>,
+        p: &SVector<T, 5>,
+    ) -> (T, T, T) {
         let theta = pose[0];
         let l = pose[1];
         let f1 = load[0];
@@ -60,7 +61,7 @@ pub mod quasi_static {
         let t5 = ydd * m;
         let t6 = -f1 * cos_theta;
         let t7 = t3 + t5 + t6 - mu * t4;
-        let t8 = 1.0 / (sin_theta + mu * cos_theta + mu * t0);
+        let t8 = T::from_f64(1.0) / (sin_theta + mu * cos_theta + mu * t0);
         let t9 = t0 * (t3 + t5 + t6) - t1 * t4;
         let f_a = -t7 * t8;
         let f_b = -t8 * t9;
@@ -85,12 +86,12 @@ pub mod quasi_static {
     /// # Cost
     /// 12 add/sub, 19 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 4 `let`s.
     #[inline]
-    pub fn edge_only(
-        pose: &SVector<f64, 2>,
-        load: &SVector<f64, 2>,
-        acc: &SVector<f64, 3>,
-        p: &SVector<f64, 5>,
-    ) -> (f64, f64) {
+    pub fn edge_only<T: Real>(
+        pose: &SVector<T, 2>,
+        load: &SVector<T, 2>,
+        acc: &SVector<T, 3>,
+        p: &SVector<T, 5>,
+    ) -> (T, T) {
         let theta = pose[0];
         let l = pose[1];
         let f1 = load[0];
@@ -129,12 +130,12 @@ pub mod quasi_static {
     /// # Cost
     /// 8 add/sub, 14 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 3 `let`s.
     #[inline]
-    pub fn tip_only(
-        pose: &SVector<f64, 2>,
-        load: &SVector<f64, 2>,
-        acc: &SVector<f64, 3>,
-        p: &SVector<f64, 5>,
-    ) -> (f64, f64) {
+    pub fn tip_only<T: Real>(
+        pose: &SVector<T, 2>,
+        load: &SVector<T, 2>,
+        acc: &SVector<T, 3>,
+        p: &SVector<T, 5>,
+    ) -> (T, T) {
         let theta = pose[0];
         let f1 = load[0];
         let f2 = load[1];
@@ -169,11 +170,11 @@ pub mod quasi_static {
     /// # Cost
     /// 11 add/sub, 26 mul, 1 div, 0 sqrt, 2 transcendental, 0 branches; 7 `let`s.
     #[inline]
-    pub fn whitney_tip(
-        pose: &SVector<f64, 2>,
-        w: &SVector<f64, 2>,
-        q: &SVector<f64, 2>,
-    ) -> (f64, f64, f64) {
+    pub fn whitney_tip<T: Real>(
+        pose: &SVector<T, 2>,
+        w: &SVector<T, 2>,
+        q: &SVector<T, 2>,
+    ) -> (T, T, T) {
         let theta = pose[0];
         let l = pose[1];
         let fx = w[0];
@@ -185,7 +186,7 @@ pub mod quasi_static {
         let t0 = -sin_theta - mu * cos_theta;
         let t1 = mu * sin_theta - cos_theta;
         let t2 = -(t0 * fx) + fz * t1;
-        let t3 = 1.0 / (sin_theta + mu * cos_theta - mu * t1);
+        let t3 = T::from_f64(1.0) / (sin_theta + mu * cos_theta - mu * t1);
         let t4 = -fz - mu * fx;
         let f_tip = -t2 * t3;
         let f_edge = -t3 * t4;

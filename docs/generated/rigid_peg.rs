@@ -6,6 +6,7 @@
 /// Vectors in rotating components (e_η, e_n, e_z). SI units.
 pub mod rigid_peg {
     use nalgebra::{Matrix3, Matrix5, SMatrix, SVector, Vector5};
+    use pegdyn::scalar::Real;
     /// Symbol names of the components of `x`, in order.
     pub const X_NAMES: [&str; 4] = ["gamma", "psi", "gammadot", "psidot"];
     /// Symbol names of the components of `p`, in order.
@@ -43,12 +44,12 @@ pub mod rigid_peg {
     /// # Cost
     /// 100 add/sub, 298 mul, 4 div, 1 sqrt, 11 transcendental, 0 branches; 63 `let`s.
     #[inline]
-    pub fn forward(
-        x: &SVector<f64, 4>,
-        p: &SVector<f64, 7>,
-        loads: &SVector<f64, 5>,
-        t: &SVector<f64, 9>,
-    ) -> (SMatrix<f64, 5, 5>, SVector<f64, 5>) {
+    pub fn forward<T: Real>(
+        x: &SVector<T, 4>,
+        p: &SVector<T, 7>,
+        loads: &SVector<T, 5>,
+        t: &SVector<T, 9>,
+    ) -> (SMatrix<T, 5, 5>, SVector<T, 5>) {
         let gamma = x[0];
         let psi = x[1];
         let gammadot = x[2];
@@ -76,60 +77,67 @@ pub mod rigid_peg {
         let t_b2_z = t[8];
         let sin_gamma = gamma.sin();
         let cos_gamma = gamma.cos();
-        let t0 = 0.5 * gamma0;
-        let t1 = 0.5 * gamma;
+        let t0 = T::from_f64(0.5) * gamma0;
+        let t1 = T::from_f64(0.5) * gamma;
         let t2 = t0 + t1;
         let t3 = t2.sin();
-        let t4 = t0 - 0.5 * gamma;
+        let t4 = t0 - T::from_f64(0.5) * gamma;
         let t5 = t4.sin();
         let t6 = t1.sin();
         let t7 = t6 * t6;
-        let t8 = d_hole - d_peg + 2.0 * d_peg * t7;
-        let t9 = 1.0 / sin_gamma;
-        let t10 = 0.5 * t8 * t9;
+        let t8 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t7;
+        let t9 = T::from_f64(1.0) / sin_gamma;
+        let t10 = T::from_f64(0.5) * t8 * t9;
         let t11 = t10 + d_hole * cos_gamma * t3 * t5 * t9;
         let t12 = sin_gamma * sin_gamma;
-        let t13 = 1.0 / (sin_gamma * sin_gamma);
-        let t14 = 2.0 * d_hole * cos_gamma * t3 * t5 * t13;
+        let t13 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t14 = T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t13;
         let t15 = d_hole * cos_gamma * t3 * t5 * t13;
-        let t16 = (-2.0 * d_hole * cos_gamma * t3 * t5 * t13 * (d_hole + t14)).sqrt();
-        let t17 = -0.5 * t8 * t9;
-        let t18 = 0.5 * h + t17;
-        let t19 = t10 - 0.5 * h;
-        let t20 = (d_hole * t3 * t5 * t9).hypot(0.5 * d_hole);
-        let t21 = 1.0 / t20;
+        let t16 = (-T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t13
+            * (d_hole + t14))
+            .sqrt();
+        let t17 = -T::from_f64(0.5) * t8 * t9;
+        let t18 = T::from_f64(0.5) * h + t17;
+        let t19 = -(T::from_f64(0.5) * h) + t10;
+        let t20 = (d_hole * t3 * t5 * t9).hypot(T::from_f64(0.5) * d_hole);
+        let t21 = T::from_f64(1.0) / t20;
         let t22 = cos_gamma * t19;
         let t23 = t1.cos();
-        let t24 = d_peg * t6 * t9 * t23 - 0.5 * cos_gamma * t8 * t13;
+        let t24 = d_peg * t6 * t9 * t23 - T::from_f64(0.5) * cos_gamma * t8 * t13;
         let t25 = sin_gamma * t24;
         let t26 = t22 + t25;
         let t27 = t2.cos();
-        let t28 = -0.5 * d_hole * t5 * t9 * t27;
+        let t28 = -T::from_f64(0.5) * d_hole * t5 * t9 * t27;
         let t29 = t4.cos();
-        let t30 = 0.5 * d_hole * t3 * t9 * t29;
+        let t30 = T::from_f64(0.5) * d_hole * t3 * t9 * t29;
         let t31 = -sin_gamma * t18;
-        let t32 = -(d_peg * t6 * t9 * t23) + 0.5 * cos_gamma * t8 * t13;
+        let t32 = -(d_peg * t6 * t9 * t23) + T::from_f64(0.5) * cos_gamma * t8 * t13;
         let t33 = cos_gamma * t32;
         let t34 = t15 + t28 + t30 + t31 + t33;
         let t35 = -sin_gamma * t19;
         let t36 = t23 * t23;
-        let t37 = 1.0 / (sin_gamma * sin_gamma * sin_gamma);
+        let t37 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
         let t38 = cos_gamma * cos_gamma;
         let t39 = t35
             + sin_gamma
-                * (t10 + 0.5 * d_peg * t9 * t36 - 0.5 * d_peg * t7 * t9 + t8 * t37 * t38
-                    - 2.0 * d_peg * cos_gamma * t6 * t13 * t23) + 2.0 * cos_gamma * t24;
+                * (t10 + T::from_f64(0.5) * d_peg * t9 * t36
+                    - T::from_f64(0.5) * d_peg * t7 * t9 + t8 * t37 * t38
+                    - T::from_f64(2.0) * d_peg * cos_gamma * t6 * t13 * t23)
+            + T::from_f64(2.0) * cos_gamma * t24;
         let t40 = gammadot * gammadot;
-        let t41 = -(2.0 * d_hole * t3 * t5 * t37 * t38)
+        let t41 = -(T::from_f64(2.0) * d_hole * t3 * t5 * t37 * t38)
             + d_hole * cos_gamma * t5 * t13 * t27 - cos_gamma * t18
             + cos_gamma
-                * (t17 - 0.5 * d_peg * t9 * t36 + 0.5 * d_peg * t7 * t9 - t8 * t37 * t38
-                    + 2.0 * d_peg * cos_gamma * t6 * t13 * t23)
-            - 0.5 * d_hole * t3 * t5 * t9 - d_hole * cos_gamma * t3 * t13 * t29
-            + 0.5 * d_hole * t9 * t27 * t29 - 2.0 * sin_gamma * t32;
+                * (t17 - T::from_f64(0.5) * d_peg * t9 * t36
+                    + T::from_f64(0.5) * d_peg * t7 * t9 - t8 * t37 * t38
+                    + T::from_f64(2.0) * d_peg * cos_gamma * t6 * t13 * t23)
+            - T::from_f64(0.5) * d_hole * t3 * t5 * t9
+            - d_hole * cos_gamma * t3 * t13 * t29
+            + T::from_f64(0.5) * d_hole * t9 * t27 * t29
+            - T::from_f64(2.0) * sin_gamma * t32;
         let t42 = psidot * psidot;
         let t43 = d_peg * d_peg;
-        let t44 = 0.75 * t43 + h * h;
+        let t44 = T::from_f64(0.75) * t43 + h * h;
         let t45 = h - t8 * t9;
         let t46 = t45 * t45;
         let sin_psi = psi.sin();
@@ -140,59 +148,65 @@ pub mod rigid_peg {
         let t50 = -f_x * sin_psi;
         let t51 = -(d_hole * t3 * t5 * t9) + cos_gamma * t18 + t22 + t25;
         let t52 = t9 * t11 + t15 + t28 + t30 + t31 + t33 + t35;
-        let t53 = 2.0 * cos_gamma * t19 + 2.0 * sin_gamma * t24;
+        let t53 = T::from_f64(2.0) * cos_gamma * t19
+            + T::from_f64(2.0) * sin_gamma * t24;
         let t54 = t14 + d_hole * t3 * t9 * t29 - d_hole * t5 * t9 * t27
-            - 2.0 * sin_gamma * t18 + 2.0 * cos_gamma * t32;
-        let t55 = cos_gamma * t8 * t13 - 2.0 * d_peg * t6 * t9 * t23;
-        let t56 = 2.0 * h - 2.0 * t8 * t9;
+            - T::from_f64(2.0) * sin_gamma * t18 + T::from_f64(2.0) * cos_gamma * t32;
+        let t55 = cos_gamma * t8 * t13 - T::from_f64(2.0) * d_peg * t6 * t9 * t23;
+        let t56 = T::from_f64(2.0) * h - T::from_f64(2.0) * t8 * t9;
         let t57 = t9 * t11 * t21;
         let t58 = d_hole * t3 * t5 * t9 * t21;
         let a = Matrix5::new(
-            0.08333333333333333 * m * t44
-                + 0.5 * m * (2.0 * (t26 * t26) + 2.0 * (t34 * t34)),
-            0.0,
+            T::from_f64(0.08333333333333333) * m * t44
+                + T::from_f64(0.5) * m
+                    * (T::from_f64(2.0) * (t26 * t26) + T::from_f64(2.0) * (t34 * t34)),
+            T::from_f64(0.0),
             -(f * t_k_eta * t51)
-                - f * t_k_z * (t15 - 0.5 * d_hole + t28 + t30 + t31 + t33 + t35),
+                - f * t_k_z
+                    * (-(T::from_f64(0.5) * d_hole) + t15 + t28 + t30 + t31 + t33 + t35),
             -(f * t_b1_eta * t51) - f * t_b1_z * t52,
             -(f * t_b2_eta * t51) - f * t_b2_z * t52,
-            0.0,
-            0.25 * m * t12 * t46 + 0.125 * m * t38 * t43
-                + 0.08333333333333333 * m * t12 * t44,
-            0.5 * d_hole * f * t_k_n,
+            T::from_f64(0.0),
+            T::from_f64(0.25) * m * t12 * t46 + T::from_f64(0.125) * m * t38 * t43
+                + T::from_f64(0.08333333333333333) * m * t12 * t44,
+            T::from_f64(0.5) * d_hole * f * t_k_n,
             f * t_b1_eta * t16 - f * t_b1_n * t9 * t11,
             -(f * t_b2_eta * t16) - f * t_b2_n * t9 * t11,
             m * t26,
-            0.0,
-            -cos_gamma - f * t_k_eta,
-            t57 - f * t_b1_eta,
-            t57 - f * t_b2_eta,
-            0.0,
+            T::from_f64(0.0),
+            -(f * t_k_eta) - cos_gamma,
+            -(f * t_b1_eta) + t57,
+            -(f * t_b2_eta) + t57,
+            T::from_f64(0.0),
             m * sin_gamma * t19,
             -f * t_k_n,
-            t16 * t21 - f * t_b1_n,
-            -(t16 * t21) - f * t_b2_n,
+            -(f * t_b1_n) + t16 * t21,
+            -(f * t_b2_n) - t16 * t21,
             m * t34,
-            0.0,
-            -sin_gamma - f * t_k_z,
-            t58 - f * t_b1_z,
-            t58 - f * t_b2_z,
+            T::from_f64(0.0),
+            -(f * t_k_z) - sin_gamma,
+            -(f * t_b1_z) + t58,
+            -(f * t_b2_z) + t58,
         );
         let b = Vector5::new(
             m_gamma + t26 * (t47 + t48) + f_z * t34 - m * g * t34
-                + 0.5 * m
-                    * (t39 * t40 * t53 + 0.5 * sin_gamma * cos_gamma * t42 * t46
-                        + 0.25 * t12 * t42 * t55 * t56 + t40 * t41 * t54)
-                - 0.125 * m * sin_gamma * cos_gamma * t42 * t43
-                + 0.08333333333333333 * m * sin_gamma * cos_gamma * t42 * t44
-                - 0.5 * m * gammadot
-                    * (2.0 * gammadot * t39 * t53 + 2.0 * gammadot * t41 * t54),
+                + T::from_f64(0.5) * m
+                    * (t39 * t40 * t53
+                        + T::from_f64(0.5) * sin_gamma * cos_gamma * t42 * t46
+                        + T::from_f64(0.25) * t12 * t42 * t55 * t56 + t40 * t41 * t54)
+                - T::from_f64(0.125) * m * sin_gamma * cos_gamma * t42 * t43
+                + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t42
+                    * t44
+                - T::from_f64(0.5) * m * gammadot
+                    * (T::from_f64(2.0) * gammadot * t39 * t53
+                        + T::from_f64(2.0) * gammadot * t41 * t54),
             m_psi + sin_gamma * t19 * (t49 + t50)
                 - gammadot
-                    * (0.5 * m * psidot * sin_gamma * cos_gamma * t46
-                        + 0.25 * m * psidot * t12 * t55 * t56
-                        - 0.25 * m * psidot * sin_gamma * cos_gamma * t43
-                        + 0.16666666666666666 * m * psidot * sin_gamma * cos_gamma
-                            * t44),
+                    * (T::from_f64(0.5) * m * psidot * sin_gamma * cos_gamma * t46
+                        + T::from_f64(0.25) * m * psidot * t12 * t55 * t56
+                        - T::from_f64(0.25) * m * psidot * sin_gamma * cos_gamma * t43
+                        + T::from_f64(0.16666666666666666) * m * psidot * sin_gamma
+                            * cos_gamma * t44),
             t47 + t48 - m * (t39 * t40 - sin_gamma * t19 * t42),
             t49 + t50
                 - m
@@ -219,13 +233,13 @@ pub mod rigid_peg {
     /// # Cost
     /// 103 add/sub, 300 mul, 4 div, 1 sqrt, 11 transcendental, 0 branches; 63 `let`s.
     #[inline]
-    pub fn prescribed(
-        x: &SVector<f64, 4>,
-        qdd: &SVector<f64, 2>,
-        p: &SVector<f64, 7>,
-        loads: &SVector<f64, 5>,
-        t: &SVector<f64, 9>,
-    ) -> (SMatrix<f64, 5, 5>, SVector<f64, 5>) {
+    pub fn prescribed<T: Real>(
+        x: &SVector<T, 4>,
+        qdd: &SVector<T, 2>,
+        p: &SVector<T, 7>,
+        loads: &SVector<T, 5>,
+        t: &SVector<T, 9>,
+    ) -> (SMatrix<T, 5, 5>, SVector<T, 5>) {
         let gamma = x[0];
         let psi = x[1];
         let gammadot = x[2];
@@ -253,60 +267,67 @@ pub mod rigid_peg {
         let t_b2_z = t[8];
         let sin_gamma = gamma.sin();
         let cos_gamma = gamma.cos();
-        let t0 = 0.5 * gamma0;
-        let t1 = 0.5 * gamma;
+        let t0 = T::from_f64(0.5) * gamma0;
+        let t1 = T::from_f64(0.5) * gamma;
         let t2 = t0 + t1;
         let t3 = t2.sin();
-        let t4 = t0 - 0.5 * gamma;
+        let t4 = t0 - T::from_f64(0.5) * gamma;
         let t5 = t4.sin();
         let t6 = t1.sin();
         let t7 = t6 * t6;
-        let t8 = d_hole - d_peg + 2.0 * d_peg * t7;
-        let t9 = 1.0 / sin_gamma;
-        let t10 = 0.5 * t8 * t9;
+        let t8 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t7;
+        let t9 = T::from_f64(1.0) / sin_gamma;
+        let t10 = T::from_f64(0.5) * t8 * t9;
         let t11 = t10 + d_hole * cos_gamma * t3 * t5 * t9;
         let t12 = sin_gamma * sin_gamma;
-        let t13 = 1.0 / (sin_gamma * sin_gamma);
-        let t14 = 2.0 * d_hole * cos_gamma * t3 * t5 * t13;
+        let t13 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t14 = T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t13;
         let t15 = d_hole * cos_gamma * t3 * t5 * t13;
-        let t16 = (-2.0 * d_hole * cos_gamma * t3 * t5 * t13 * (d_hole + t14)).sqrt();
-        let t17 = -0.5 * t8 * t9;
-        let t18 = 0.5 * h + t17;
-        let t19 = t10 - 0.5 * h;
-        let t20 = (d_hole * t3 * t5 * t9).hypot(0.5 * d_hole);
-        let t21 = 1.0 / t20;
+        let t16 = (-T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t13
+            * (d_hole + t14))
+            .sqrt();
+        let t17 = -T::from_f64(0.5) * t8 * t9;
+        let t18 = T::from_f64(0.5) * h + t17;
+        let t19 = -(T::from_f64(0.5) * h) + t10;
+        let t20 = (d_hole * t3 * t5 * t9).hypot(T::from_f64(0.5) * d_hole);
+        let t21 = T::from_f64(1.0) / t20;
         let t22 = cos_gamma * t19;
         let t23 = t1.cos();
-        let t24 = d_peg * t6 * t9 * t23 - 0.5 * cos_gamma * t8 * t13;
+        let t24 = d_peg * t6 * t9 * t23 - T::from_f64(0.5) * cos_gamma * t8 * t13;
         let t25 = sin_gamma * t24;
         let t26 = t22 + t25;
         let t27 = t2.cos();
-        let t28 = -0.5 * d_hole * t5 * t9 * t27;
+        let t28 = -T::from_f64(0.5) * d_hole * t5 * t9 * t27;
         let t29 = t4.cos();
-        let t30 = 0.5 * d_hole * t3 * t9 * t29;
+        let t30 = T::from_f64(0.5) * d_hole * t3 * t9 * t29;
         let t31 = -sin_gamma * t18;
-        let t32 = -(d_peg * t6 * t9 * t23) + 0.5 * cos_gamma * t8 * t13;
+        let t32 = -(d_peg * t6 * t9 * t23) + T::from_f64(0.5) * cos_gamma * t8 * t13;
         let t33 = cos_gamma * t32;
         let t34 = t15 + t28 + t30 + t31 + t33;
         let t35 = -sin_gamma * t19;
         let t36 = t23 * t23;
-        let t37 = 1.0 / (sin_gamma * sin_gamma * sin_gamma);
+        let t37 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
         let t38 = cos_gamma * cos_gamma;
         let t39 = t35
             + sin_gamma
-                * (t10 + 0.5 * d_peg * t9 * t36 - 0.5 * d_peg * t7 * t9 + t8 * t37 * t38
-                    - 2.0 * d_peg * cos_gamma * t6 * t13 * t23) + 2.0 * cos_gamma * t24;
+                * (t10 + T::from_f64(0.5) * d_peg * t9 * t36
+                    - T::from_f64(0.5) * d_peg * t7 * t9 + t8 * t37 * t38
+                    - T::from_f64(2.0) * d_peg * cos_gamma * t6 * t13 * t23)
+            + T::from_f64(2.0) * cos_gamma * t24;
         let t40 = gammadot * gammadot;
-        let t41 = -(2.0 * d_hole * t3 * t5 * t37 * t38)
+        let t41 = -(T::from_f64(2.0) * d_hole * t3 * t5 * t37 * t38)
             + d_hole * cos_gamma * t5 * t13 * t27 - cos_gamma * t18
             + cos_gamma
-                * (t17 - 0.5 * d_peg * t9 * t36 + 0.5 * d_peg * t7 * t9 - t8 * t37 * t38
-                    + 2.0 * d_peg * cos_gamma * t6 * t13 * t23)
-            - 0.5 * d_hole * t3 * t5 * t9 - d_hole * cos_gamma * t3 * t13 * t29
-            + 0.5 * d_hole * t9 * t27 * t29 - 2.0 * sin_gamma * t32;
+                * (t17 - T::from_f64(0.5) * d_peg * t9 * t36
+                    + T::from_f64(0.5) * d_peg * t7 * t9 - t8 * t37 * t38
+                    + T::from_f64(2.0) * d_peg * cos_gamma * t6 * t13 * t23)
+            - T::from_f64(0.5) * d_hole * t3 * t5 * t9
+            - d_hole * cos_gamma * t3 * t13 * t29
+            + T::from_f64(0.5) * d_hole * t9 * t27 * t29
+            - T::from_f64(2.0) * sin_gamma * t32;
         let t42 = psidot * psidot;
         let t43 = d_peg * d_peg;
-        let t44 = 0.75 * t43 + h * h;
+        let t44 = T::from_f64(0.75) * t43 + h * h;
         let t45 = h - t8 * t9;
         let t46 = t45 * t45;
         let sin_psi = psi.sin();
@@ -317,62 +338,71 @@ pub mod rigid_peg {
         let t50 = -f_x * sin_psi;
         let t51 = -(d_hole * t3 * t5 * t9) + cos_gamma * t18 + t22 + t25;
         let t52 = t9 * t11 + t15 + t28 + t30 + t31 + t33 + t35;
-        let t53 = 2.0 * cos_gamma * t19 + 2.0 * sin_gamma * t24;
+        let t53 = T::from_f64(2.0) * cos_gamma * t19
+            + T::from_f64(2.0) * sin_gamma * t24;
         let t54 = t14 + d_hole * t3 * t9 * t29 - d_hole * t5 * t9 * t27
-            - 2.0 * sin_gamma * t18 + 2.0 * cos_gamma * t32;
-        let t55 = cos_gamma * t8 * t13 - 2.0 * d_peg * t6 * t9 * t23;
-        let t56 = 2.0 * h - 2.0 * t8 * t9;
+            - T::from_f64(2.0) * sin_gamma * t18 + T::from_f64(2.0) * cos_gamma * t32;
+        let t55 = cos_gamma * t8 * t13 - T::from_f64(2.0) * d_peg * t6 * t9 * t23;
+        let t56 = T::from_f64(2.0) * h - T::from_f64(2.0) * t8 * t9;
         let t57 = t9 * t11 * t21;
         let t58 = d_hole * t3 * t5 * t9 * t21;
         let a = Matrix5::new(
-            -1.0,
-            0.0,
+            -T::from_f64(1.0),
+            T::from_f64(0.0),
             -(f * t_k_eta * t51)
-                - f * t_k_z * (t15 - 0.5 * d_hole + t28 + t30 + t31 + t33 + t35),
+                - f * t_k_z
+                    * (-(T::from_f64(0.5) * d_hole) + t15 + t28 + t30 + t31 + t33 + t35),
             -(f * t_b1_eta * t51) - f * t_b1_z * t52,
             -(f * t_b2_eta * t51) - f * t_b2_z * t52,
-            0.0,
-            -1.0,
-            0.5 * d_hole * f * t_k_n,
+            T::from_f64(0.0),
+            -T::from_f64(1.0),
+            T::from_f64(0.5) * d_hole * f * t_k_n,
             f * t_b1_eta * t16 - f * t_b1_n * t9 * t11,
             -(f * t_b2_eta * t16) - f * t_b2_n * t9 * t11,
-            0.0,
-            0.0,
-            -cos_gamma - f * t_k_eta,
-            t57 - f * t_b1_eta,
-            t57 - f * t_b2_eta,
-            0.0,
-            0.0,
+            T::from_f64(0.0),
+            T::from_f64(0.0),
+            -(f * t_k_eta) - cos_gamma,
+            -(f * t_b1_eta) + t57,
+            -(f * t_b2_eta) + t57,
+            T::from_f64(0.0),
+            T::from_f64(0.0),
             -f * t_k_n,
-            t16 * t21 - f * t_b1_n,
-            -(t16 * t21) - f * t_b2_n,
-            0.0,
-            0.0,
-            -sin_gamma - f * t_k_z,
-            t58 - f * t_b1_z,
-            t58 - f * t_b2_z,
+            -(f * t_b1_n) + t16 * t21,
+            -(f * t_b2_n) - t16 * t21,
+            T::from_f64(0.0),
+            T::from_f64(0.0),
+            -(f * t_k_z) - sin_gamma,
+            -(f * t_b1_z) + t58,
+            -(f * t_b2_z) + t58,
         );
         let b = Vector5::new(
             t26 * (t47 + t48) + f_z * t34 - m * g * t34
-                + 0.5 * m
-                    * (t39 * t40 * t53 + 0.5 * sin_gamma * cos_gamma * t42 * t46
-                        + 0.25 * t12 * t42 * t55 * t56 + t40 * t41 * t54)
-                - 0.125 * m * sin_gamma * cos_gamma * t42 * t43
-                + 0.08333333333333333 * m * sin_gamma * cos_gamma * t42 * t44
-                - 0.5 * m * gammadot
-                    * (2.0 * gammadot * t39 * t53 + 2.0 * gammadot * t41 * t54)
+                + T::from_f64(0.5) * m
+                    * (t39 * t40 * t53
+                        + T::from_f64(0.5) * sin_gamma * cos_gamma * t42 * t46
+                        + T::from_f64(0.25) * t12 * t42 * t55 * t56 + t40 * t41 * t54)
+                - T::from_f64(0.125) * m * sin_gamma * cos_gamma * t42 * t43
+                + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t42
+                    * t44
+                - T::from_f64(0.5) * m * gammadot
+                    * (T::from_f64(2.0) * gammadot * t39 * t53
+                        + T::from_f64(2.0) * gammadot * t41 * t54)
                 - gammaddot
-                    * (0.08333333333333333 * m * t44
-                        + 0.5 * m * (2.0 * (t26 * t26) + 2.0 * (t34 * t34))),
+                    * (T::from_f64(0.08333333333333333) * m * t44
+                        + T::from_f64(0.5) * m
+                            * (T::from_f64(2.0) * (t26 * t26)
+                                + T::from_f64(2.0) * (t34 * t34))),
             sin_gamma * t19 * (t49 + t50)
                 - gammadot
-                    * (0.5 * m * psidot * sin_gamma * cos_gamma * t46
-                        + 0.25 * m * psidot * t12 * t55 * t56
-                        - 0.25 * m * psidot * sin_gamma * cos_gamma * t43
-                        + 0.16666666666666666 * m * psidot * sin_gamma * cos_gamma * t44)
+                    * (T::from_f64(0.5) * m * psidot * sin_gamma * cos_gamma * t46
+                        + T::from_f64(0.25) * m * psidot * t12 * t55 * t56
+                        - T::from_f64(0.25) * m * psidot * sin_gamma * cos_gamma * t43
+                        + T::from_f64(0.16666666666666666) * m * psidot * sin_gamma
+                            * cos_gamma * t44)
                 - psiddot
-                    * (0.25 * m * t12 * t46 + 0.125 * m * t38 * t43
-                        + 0.08333333333333333 * m * t12 * t44),
+                    * (T::from_f64(0.25) * m * t12 * t46
+                        + T::from_f64(0.125) * m * t38 * t43
+                        + T::from_f64(0.08333333333333333) * m * t12 * t44),
             t47 + t48 - m * (t39 * t40 + gammaddot * t26 - sin_gamma * t19 * t42),
             t49 + t50
                 - m
@@ -394,10 +424,10 @@ pub mod rigid_peg {
     /// # Cost
     /// 27 add/sub, 74 mul, 2 div, 1 sqrt, 8 transcendental, 0 branches; 28 `let`s.
     #[inline]
-    pub fn contact_velocities(
-        x: &SVector<f64, 4>,
-        p: &SVector<f64, 7>,
-    ) -> SMatrix<f64, 3, 3> {
+    pub fn contact_velocities<T: Real>(
+        x: &SVector<T, 4>,
+        p: &SVector<T, 7>,
+    ) -> SMatrix<T, 3, 3> {
         let gamma = x[0];
         let gammadot = x[2];
         let psidot = x[3];
@@ -407,35 +437,39 @@ pub mod rigid_peg {
         let gamma0 = p[6];
         let sin_gamma = gamma.sin();
         let cos_gamma = gamma.cos();
-        let t0 = 0.5 * gamma0;
-        let t1 = 0.5 * gamma;
+        let t0 = T::from_f64(0.5) * gamma0;
+        let t1 = T::from_f64(0.5) * gamma;
         let t2 = t0 + t1;
         let t3 = t2.sin();
-        let t4 = t0 - 0.5 * gamma;
+        let t4 = t0 - T::from_f64(0.5) * gamma;
         let t5 = t4.sin();
         let t6 = t1.sin();
-        let t7 = d_hole - d_peg + 2.0 * d_peg * (t6 * t6);
-        let t8 = 1.0 / sin_gamma;
-        let t9 = 0.5 * t7 * t8;
-        let t10 = 1.0 / (sin_gamma * sin_gamma);
-        let t11 = (-2.0 * d_hole * cos_gamma * t3 * t5 * t10
-            * (d_hole + 2.0 * d_hole * cos_gamma * t3 * t5 * t10))
+        let t7 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t6 * t6);
+        let t8 = T::from_f64(1.0) / sin_gamma;
+        let t9 = T::from_f64(0.5) * t7 * t8;
+        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t11 = (-T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t10
+            * (d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t10))
             .sqrt();
-        let t12 = 0.5 * h - 0.5 * t7 * t8;
-        let t13 = t9 - 0.5 * h;
+        let t12 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7 * t8;
+        let t13 = -(T::from_f64(0.5) * h) + t9;
         let t14 = t1.cos();
         let t15 = gammadot
             * (cos_gamma * t13
-                + sin_gamma * (d_peg * t6 * t8 * t14 - 0.5 * cos_gamma * t7 * t10));
+                + sin_gamma
+                    * (d_peg * t6 * t8 * t14 - T::from_f64(0.5) * cos_gamma * t7 * t10));
         let t16 = t2.cos();
         let t17 = t4.cos();
         let t18 = gammadot
-            * (d_hole * cos_gamma * t3 * t5 * t10 - 0.5 * d_hole * t5 * t8 * t16
-                + 0.5 * d_hole * t3 * t8 * t17 - sin_gamma * t12
-                + cos_gamma * (-(d_peg * t6 * t8 * t14) + 0.5 * cos_gamma * t7 * t10));
+            * (d_hole * cos_gamma * t3 * t5 * t10
+                - T::from_f64(0.5) * d_hole * t5 * t8 * t16
+                + T::from_f64(0.5) * d_hole * t3 * t8 * t17 - sin_gamma * t12
+                + cos_gamma
+                    * (-(d_peg * t6 * t8 * t14)
+                        + T::from_f64(0.5) * cos_gamma * t7 * t10));
         let t19 = psidot * sin_gamma * t13;
         let t20 = -sin_gamma * t13;
-        let t21 = -(0.5 * d_hole) + t20;
+        let t21 = -(T::from_f64(0.5) * d_hole) + t20;
         let t22 = -gammadot * (d_hole * t3 * t5 * t8 - cos_gamma * t12);
         let t23 = t8 * (t9 + d_hole * cos_gamma * t3 * t5 * t8) + t20;
         let t24 = t19 + psidot * t23;
@@ -465,7 +499,7 @@ pub mod rigid_peg {
     /// # Cost
     /// 24 add/sub, 73 mul, 2 div, 0 sqrt, 8 transcendental, 0 branches; 26 `let`s.
     #[inline]
-    pub fn energy(x: &SVector<f64, 4>, p: &SVector<f64, 7>) -> (f64, f64) {
+    pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
         let gammadot = x[2];
         let psidot = x[3];
@@ -477,34 +511,39 @@ pub mod rigid_peg {
         let gamma0 = p[6];
         let sin_gamma = gamma.sin();
         let cos_gamma = gamma.cos();
-        let t0 = 0.5 * gamma0;
-        let t1 = 0.5 * gamma;
+        let t0 = T::from_f64(0.5) * gamma0;
+        let t1 = T::from_f64(0.5) * gamma;
         let t2 = t0 + t1;
         let t3 = t2.sin();
-        let t4 = t0 - 0.5 * gamma;
+        let t4 = t0 - T::from_f64(0.5) * gamma;
         let t5 = t4.sin();
         let t6 = t1.sin();
-        let t7 = d_hole - d_peg + 2.0 * d_peg * (t6 * t6);
-        let t8 = 1.0 / sin_gamma;
+        let t7 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t6 * t6);
+        let t8 = T::from_f64(1.0) / sin_gamma;
         let t9 = sin_gamma * sin_gamma;
-        let t10 = 1.0 / (sin_gamma * sin_gamma);
-        let t11 = 0.5 * h - 0.5 * t7 * t8;
+        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t11 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7 * t8;
         let t12 = t1.cos();
-        let t13 = cos_gamma * (0.5 * t7 * t8 - 0.5 * h)
-            + sin_gamma * (d_peg * t6 * t8 * t12 - 0.5 * cos_gamma * t7 * t10);
+        let t13 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7 * t8)
+            + sin_gamma
+                * (d_peg * t6 * t8 * t12 - T::from_f64(0.5) * cos_gamma * t7 * t10);
         let t14 = t2.cos();
         let t15 = t4.cos();
-        let t16 = d_hole * cos_gamma * t3 * t5 * t10 - 0.5 * d_hole * t5 * t8 * t14
-            + 0.5 * d_hole * t3 * t8 * t15 - sin_gamma * t11
-            + cos_gamma * (-(d_peg * t6 * t8 * t12) + 0.5 * cos_gamma * t7 * t10);
+        let t16 = d_hole * cos_gamma * t3 * t5 * t10
+            - T::from_f64(0.5) * d_hole * t5 * t8 * t14
+            + T::from_f64(0.5) * d_hole * t3 * t8 * t15 - sin_gamma * t11
+            + cos_gamma
+                * (-(d_peg * t6 * t8 * t12) + T::from_f64(0.5) * cos_gamma * t7 * t10);
         let t17 = gammadot * gammadot;
         let t18 = psidot * psidot;
         let t19 = d_peg * d_peg;
         let t20 = h - t7 * t8;
-        let t21 = 0.5 * m
-            * (t17 * (t13 * t13) + 0.25 * t9 * t18 * (t20 * t20) + t17 * (t16 * t16));
-        let t22 = 0.0625 * m * (cos_gamma * cos_gamma) * t18 * t19;
-        let t23 = 0.041666666666666664 * m * (0.75 * t19 + h * h) * (t17 + t9 * t18);
+        let t21 = T::from_f64(0.5) * m
+            * (t17 * (t13 * t13) + T::from_f64(0.25) * t9 * t18 * (t20 * t20)
+                + t17 * (t16 * t16));
+        let t22 = T::from_f64(0.0625) * m * (cos_gamma * cos_gamma) * t18 * t19;
+        let t23 = T::from_f64(0.041666666666666664) * m
+            * (T::from_f64(0.75) * t19 + h * h) * (t17 + t9 * t18);
         let kinetic = t21 + t22 + t23;
         let total = t21 + t22 + t23
             + m * g * (-(d_hole * t3 * t5 * t8) + cos_gamma * t11);
@@ -522,7 +561,7 @@ pub mod rigid_peg {
     /// # Cost
     /// 10 add/sub, 56 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 18 `let`s.
     #[inline]
-    pub fn geometry(x: &SVector<f64, 4>, p: &SVector<f64, 7>) -> SVector<f64, 13> {
+    pub fn geometry<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> SVector<T, 13> {
         let gamma = x[0];
         let d_hole = p[0];
         let d_peg = p[1];
@@ -530,26 +569,26 @@ pub mod rigid_peg {
         let gamma0 = p[6];
         let sin_gamma = gamma.sin();
         let cos_gamma = gamma.cos();
-        let t0 = 0.5 * gamma0;
-        let t1 = 0.5 * gamma;
+        let t0 = T::from_f64(0.5) * gamma0;
+        let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
-        let t3 = (t0 - 0.5 * gamma).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
         let t4 = t1.sin();
-        let t5 = d_hole - d_peg + 2.0 * d_peg * (t4 * t4);
-        let t6 = 1.0 / sin_gamma;
+        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
+        let t6 = T::from_f64(1.0) / sin_gamma;
         let t7 = -d_hole * t2 * t3 * t6;
-        let t8 = 0.5 * t5 * t6;
+        let t8 = T::from_f64(0.5) * t5 * t6;
         let t9 = t8 + d_hole * cos_gamma * t2 * t3 * t6;
         let t10 = t6 * t9;
         let t11 = d_hole * t2 * t3 * t6;
-        let t12 = 1.0 / (sin_gamma * sin_gamma);
-        let t13 = (-2.0 * d_hole * cos_gamma * t2 * t3 * t12
-            * (d_hole + 2.0 * d_hole * cos_gamma * t2 * t3 * t12))
+        let t12 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t13 = (-T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t12
+            * (d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t12))
             .sqrt();
-        let t14 = 1.0 / d_hole;
+        let t14 = T::from_f64(1.0) / d_hole;
         let t15 = t10.hypot(t11);
         SMatrix::<
-            f64,
+            T,
             13,
             1,
         >::from_row_slice(
@@ -557,16 +596,16 @@ pub mod rigid_peg {
                 t7,
                 t8,
                 t10,
-                t6 * (0.5 * cos_gamma * t5 * t6 + t11),
+                t6 * (T::from_f64(0.5) * cos_gamma * t5 * t6 + t11),
                 t13,
-                2.0 * t13 * t14,
-                2.0 * t6 * t9 * t14,
-                sin_gamma * (t8 - 0.5 * h),
-                t7 + cos_gamma * (0.5 * h - 0.5 * t5 * t6),
-                -2.0 * d_hole * t2 * t3 * t12,
-                2.0 * t15,
+                T::from_f64(2.0) * t13 * t14,
+                T::from_f64(2.0) * t6 * t9 * t14,
+                sin_gamma * (-(T::from_f64(0.5) * h) + t8),
+                t7 + cos_gamma * (T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6),
+                -T::from_f64(2.0) * d_hole * t2 * t3 * t12,
+                T::from_f64(2.0) * t15,
                 -t6 * t9,
-                -2.0 * d_hole * t2 * t3 * t6,
+                -T::from_f64(2.0) * d_hole * t2 * t3 * t6,
             ],
         )
     }

@@ -6,6 +6,7 @@
 /// Vectors in rotating components (e_η, e_n, e_z); ψ ≡ 0, so `F_x` is the in-plane horizontal force (along e_η) and N_B = N_B1 = N_B2. SI units.
 pub mod rigid_peg_planar {
     use nalgebra::{Matrix3, SMatrix, SVector, Vector3};
+    use pegdyn::scalar::Real;
     /// Symbol names of the components of `x`, in order.
     pub const X_NAMES: [&str; 2] = ["gamma", "gammadot"];
     /// Symbol names of the components of `p`, in order.
@@ -31,14 +32,14 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 70 add/sub, 195 mul, 4 div, 0 sqrt, 9 transcendental, 0 branches; 44 `let`s.
+    /// 71 add/sub, 196 mul, 4 div, 0 sqrt, 9 transcendental, 0 branches; 44 `let`s.
     #[inline]
-    pub fn forward(
-        x: &SVector<f64, 2>,
-        p: &SVector<f64, 7>,
-        loads: &SVector<f64, 3>,
-        t: &SVector<f64, 4>,
-    ) -> (SMatrix<f64, 3, 3>, SVector<f64, 3>) {
+    pub fn forward<T: Real>(
+        x: &SVector<T, 2>,
+        p: &SVector<T, 7>,
+        loads: &SVector<T, 3>,
+        t: &SVector<T, 4>,
+    ) -> (SMatrix<T, 3, 3>, SVector<T, 3>) {
         let gamma = x[0];
         let gammadot = x[1];
         let d_hole = p[0];
@@ -57,77 +58,90 @@ pub mod rigid_peg_planar {
         let t_b_z = t[3];
         let sin_gamma = gamma.sin();
         let cos_gamma = gamma.cos();
-        let t0 = 0.5 * gamma0;
-        let t1 = 0.5 * gamma;
+        let t0 = T::from_f64(0.5) * gamma0;
+        let t1 = T::from_f64(0.5) * gamma;
         let t2 = t0 + t1;
         let t3 = t2.sin();
-        let t4 = t0 - 0.5 * gamma;
+        let t4 = t0 - T::from_f64(0.5) * gamma;
         let t5 = t4.sin();
         let t6 = t1.sin();
         let t7 = t6 * t6;
-        let t8 = d_hole - d_peg + 2.0 * d_peg * t7;
-        let t9 = 1.0 / sin_gamma;
-        let t10 = 0.5 * t8 * t9;
+        let t8 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t7;
+        let t9 = T::from_f64(1.0) / sin_gamma;
+        let t10 = T::from_f64(0.5) * t8 * t9;
         let t11 = t10 + d_hole * cos_gamma * t3 * t5 * t9;
-        let t12 = 1.0 / (sin_gamma * sin_gamma);
+        let t12 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
         let t13 = d_hole * cos_gamma * t3 * t5 * t12;
-        let t14 = -0.5 * t8 * t9;
-        let t15 = 0.5 * h + t14;
-        let t16 = t10 - 0.5 * h;
-        let t17 = (d_hole * t3 * t5 * t9).hypot(0.5 * d_hole);
-        let t18 = 1.0 / t17;
+        let t14 = -T::from_f64(0.5) * t8 * t9;
+        let t15 = T::from_f64(0.5) * h + t14;
+        let t16 = -(T::from_f64(0.5) * h) + t10;
+        let t17 = (d_hole * t3 * t5 * t9).hypot(T::from_f64(0.5) * d_hole);
+        let t18 = T::from_f64(1.0) / t17;
         let t19 = cos_gamma * t16;
         let t20 = t1.cos();
-        let t21 = d_peg * t6 * t9 * t20 - 0.5 * cos_gamma * t8 * t12;
+        let t21 = d_peg * t6 * t9 * t20 - T::from_f64(0.5) * cos_gamma * t8 * t12;
         let t22 = sin_gamma * t21;
         let t23 = t19 + t22;
         let t24 = t2.cos();
-        let t25 = -0.5 * d_hole * t5 * t9 * t24;
+        let t25 = -T::from_f64(0.5) * d_hole * t5 * t9 * t24;
         let t26 = t4.cos();
-        let t27 = 0.5 * d_hole * t3 * t9 * t26;
+        let t27 = T::from_f64(0.5) * d_hole * t3 * t9 * t26;
         let t28 = -sin_gamma * t15;
-        let t29 = -(d_peg * t6 * t9 * t20) + 0.5 * cos_gamma * t8 * t12;
+        let t29 = -(d_peg * t6 * t9 * t20) + T::from_f64(0.5) * cos_gamma * t8 * t12;
         let t30 = cos_gamma * t29;
         let t31 = t13 + t25 + t27 + t28 + t30;
         let t32 = -sin_gamma * t16;
         let t33 = t20 * t20;
-        let t34 = 1.0 / (sin_gamma * sin_gamma * sin_gamma);
+        let t34 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
         let t35 = cos_gamma * cos_gamma;
         let t36 = t32
             + sin_gamma
-                * (t10 + 0.5 * d_peg * t9 * t33 - 0.5 * d_peg * t7 * t9 + t8 * t34 * t35
-                    - 2.0 * d_peg * cos_gamma * t6 * t12 * t20) + 2.0 * cos_gamma * t21;
+                * (t10 + T::from_f64(0.5) * d_peg * t9 * t33
+                    - T::from_f64(0.5) * d_peg * t7 * t9 + t8 * t34 * t35
+                    - T::from_f64(2.0) * d_peg * cos_gamma * t6 * t12 * t20)
+            + T::from_f64(2.0) * cos_gamma * t21;
         let t37 = gammadot * gammadot;
-        let t38 = -(2.0 * d_hole * t3 * t5 * t34 * t35)
+        let t38 = -(T::from_f64(2.0) * d_hole * t3 * t5 * t34 * t35)
             + d_hole * cos_gamma * t5 * t12 * t24 - cos_gamma * t15
             + cos_gamma
-                * (t14 - 0.5 * d_peg * t9 * t33 + 0.5 * d_peg * t7 * t9 - t8 * t34 * t35
-                    + 2.0 * d_peg * cos_gamma * t6 * t12 * t20)
-            - 0.5 * d_hole * t3 * t5 * t9 - d_hole * cos_gamma * t3 * t12 * t26
-            + 0.5 * d_hole * t9 * t24 * t26 - 2.0 * sin_gamma * t29;
+                * (t14 - T::from_f64(0.5) * d_peg * t9 * t33
+                    + T::from_f64(0.5) * d_peg * t7 * t9 - t8 * t34 * t35
+                    + T::from_f64(2.0) * d_peg * cos_gamma * t6 * t12 * t20)
+            - T::from_f64(0.5) * d_hole * t3 * t5 * t9
+            - d_hole * cos_gamma * t3 * t12 * t26
+            + T::from_f64(0.5) * d_hole * t9 * t24 * t26
+            - T::from_f64(2.0) * sin_gamma * t29;
         let t39 = -(d_hole * t3 * t5 * t9) + cos_gamma * t15 + t19 + t22;
-        let t40 = 2.0 * cos_gamma * t16 + 2.0 * sin_gamma * t21;
-        let t41 = 2.0 * d_hole * cos_gamma * t3 * t5 * t12 + d_hole * t3 * t9 * t26
-            - d_hole * t5 * t9 * t24 - 2.0 * sin_gamma * t15 + 2.0 * cos_gamma * t29;
+        let t40 = T::from_f64(2.0) * cos_gamma * t16
+            + T::from_f64(2.0) * sin_gamma * t21;
+        let t41 = T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t12
+            + d_hole * t3 * t9 * t26 - d_hole * t5 * t9 * t24
+            - T::from_f64(2.0) * sin_gamma * t15 + T::from_f64(2.0) * cos_gamma * t29;
         let a = Matrix3::new(
-            0.08333333333333333 * m * (0.75 * (d_peg * d_peg) + h * h)
-                + 0.5 * m * (2.0 * (t23 * t23) + 2.0 * (t31 * t31)),
+            T::from_f64(0.08333333333333333) * m
+                * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
+                + T::from_f64(0.5) * m
+                    * (T::from_f64(2.0) * (t23 * t23) + T::from_f64(2.0) * (t31 * t31)),
             -(f * t_k_eta * t39)
-                - f * t_k_z * (t13 - 0.5 * d_hole + t25 + t27 + t28 + t30 + t32),
-            -(2.0 * f * t39 * t_b_eta)
-                - 2.0 * f * (t9 * t11 + t13 + t25 + t27 + t28 + t30 + t32) * t_b_z,
+                - f * t_k_z
+                    * (-(T::from_f64(0.5) * d_hole) + t13 + t25 + t27 + t28 + t30 + t32),
+            -(T::from_f64(2.0) * f * t39 * t_b_eta)
+                - T::from_f64(2.0) * f * (t9 * t11 + t13 + t25 + t27 + t28 + t30 + t32)
+                    * t_b_z,
             m * t23,
-            -cos_gamma - f * t_k_eta,
-            2.0 * t9 * t11 * t18 - 2.0 * f * t_b_eta,
+            -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t7,
+            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t9 * t11 * t18,
             m * t31,
-            -sin_gamma - f * t_k_z,
-            2.0 * d_hole * t3 * t5 * t9 * t18 - 2.0 * f * t_b_z,
+            -(f * t_k_z) - sin_gamma,
+            -(T::from_f64(2.0) * f * t_b_z)
+                + T::from_f64(2.0) * d_hole * t3 * t5 * t9 * t18,
         );
         let b = Vector3::new(
             m_gamma + f_z * t31 - m * g * t31
-                - 0.5 * m * gammadot
-                    * (2.0 * gammadot * t36 * t40 + 2.0 * gammadot * t38 * t41)
-                + f_x * t23 + 0.5 * m * (t36 * t37 * t40 + t37 * t38 * t41),
+                - T::from_f64(0.5) * m * gammadot
+                    * (T::from_f64(2.0) * gammadot * t36 * t40
+                        + T::from_f64(2.0) * gammadot * t38 * t41) + f_x * t23
+                + T::from_f64(0.5) * m * (t36 * t37 * t40 + t37 * t38 * t41),
             f_x - m * t36 * t37,
             f_z - m * g - m * t37 * t38,
         );
@@ -148,15 +162,15 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 72 add/sub, 196 mul, 4 div, 0 sqrt, 9 transcendental, 0 branches; 44 `let`s.
+    /// 73 add/sub, 197 mul, 4 div, 0 sqrt, 9 transcendental, 0 branches; 44 `let`s.
     #[inline]
-    pub fn prescribed(
-        x: &SVector<f64, 2>,
-        qdd: &SVector<f64, 1>,
-        p: &SVector<f64, 7>,
-        loads: &SVector<f64, 3>,
-        t: &SVector<f64, 4>,
-    ) -> (SMatrix<f64, 3, 3>, SVector<f64, 3>) {
+    pub fn prescribed<T: Real>(
+        x: &SVector<T, 2>,
+        qdd: &SVector<T, 1>,
+        p: &SVector<T, 7>,
+        loads: &SVector<T, 3>,
+        t: &SVector<T, 4>,
+    ) -> (SMatrix<T, 3, 3>, SVector<T, 3>) {
         let gamma = x[0];
         let gammadot = x[1];
         let gammaddot = qdd[0];
@@ -175,79 +189,93 @@ pub mod rigid_peg_planar {
         let t_b_z = t[3];
         let sin_gamma = gamma.sin();
         let cos_gamma = gamma.cos();
-        let t0 = 0.5 * gamma0;
-        let t1 = 0.5 * gamma;
+        let t0 = T::from_f64(0.5) * gamma0;
+        let t1 = T::from_f64(0.5) * gamma;
         let t2 = t0 + t1;
         let t3 = t2.sin();
-        let t4 = t0 - 0.5 * gamma;
+        let t4 = t0 - T::from_f64(0.5) * gamma;
         let t5 = t4.sin();
         let t6 = t1.sin();
         let t7 = t6 * t6;
-        let t8 = d_hole - d_peg + 2.0 * d_peg * t7;
-        let t9 = 1.0 / sin_gamma;
-        let t10 = 0.5 * t8 * t9;
+        let t8 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t7;
+        let t9 = T::from_f64(1.0) / sin_gamma;
+        let t10 = T::from_f64(0.5) * t8 * t9;
         let t11 = t10 + d_hole * cos_gamma * t3 * t5 * t9;
-        let t12 = 1.0 / (sin_gamma * sin_gamma);
+        let t12 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
         let t13 = d_hole * cos_gamma * t3 * t5 * t12;
-        let t14 = -0.5 * t8 * t9;
-        let t15 = 0.5 * h + t14;
-        let t16 = t10 - 0.5 * h;
-        let t17 = (d_hole * t3 * t5 * t9).hypot(0.5 * d_hole);
-        let t18 = 1.0 / t17;
+        let t14 = -T::from_f64(0.5) * t8 * t9;
+        let t15 = T::from_f64(0.5) * h + t14;
+        let t16 = -(T::from_f64(0.5) * h) + t10;
+        let t17 = (d_hole * t3 * t5 * t9).hypot(T::from_f64(0.5) * d_hole);
+        let t18 = T::from_f64(1.0) / t17;
         let t19 = cos_gamma * t16;
         let t20 = t1.cos();
-        let t21 = d_peg * t6 * t9 * t20 - 0.5 * cos_gamma * t8 * t12;
+        let t21 = d_peg * t6 * t9 * t20 - T::from_f64(0.5) * cos_gamma * t8 * t12;
         let t22 = sin_gamma * t21;
         let t23 = t19 + t22;
         let t24 = t2.cos();
-        let t25 = -0.5 * d_hole * t5 * t9 * t24;
+        let t25 = -T::from_f64(0.5) * d_hole * t5 * t9 * t24;
         let t26 = t4.cos();
-        let t27 = 0.5 * d_hole * t3 * t9 * t26;
+        let t27 = T::from_f64(0.5) * d_hole * t3 * t9 * t26;
         let t28 = -sin_gamma * t15;
-        let t29 = -(d_peg * t6 * t9 * t20) + 0.5 * cos_gamma * t8 * t12;
+        let t29 = -(d_peg * t6 * t9 * t20) + T::from_f64(0.5) * cos_gamma * t8 * t12;
         let t30 = cos_gamma * t29;
         let t31 = t13 + t25 + t27 + t28 + t30;
         let t32 = -sin_gamma * t16;
         let t33 = t20 * t20;
-        let t34 = 1.0 / (sin_gamma * sin_gamma * sin_gamma);
+        let t34 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
         let t35 = cos_gamma * cos_gamma;
         let t36 = t32
             + sin_gamma
-                * (t10 + 0.5 * d_peg * t9 * t33 - 0.5 * d_peg * t7 * t9 + t8 * t34 * t35
-                    - 2.0 * d_peg * cos_gamma * t6 * t12 * t20) + 2.0 * cos_gamma * t21;
+                * (t10 + T::from_f64(0.5) * d_peg * t9 * t33
+                    - T::from_f64(0.5) * d_peg * t7 * t9 + t8 * t34 * t35
+                    - T::from_f64(2.0) * d_peg * cos_gamma * t6 * t12 * t20)
+            + T::from_f64(2.0) * cos_gamma * t21;
         let t37 = gammadot * gammadot;
-        let t38 = -(2.0 * d_hole * t3 * t5 * t34 * t35)
+        let t38 = -(T::from_f64(2.0) * d_hole * t3 * t5 * t34 * t35)
             + d_hole * cos_gamma * t5 * t12 * t24 - cos_gamma * t15
             + cos_gamma
-                * (t14 - 0.5 * d_peg * t9 * t33 + 0.5 * d_peg * t7 * t9 - t8 * t34 * t35
-                    + 2.0 * d_peg * cos_gamma * t6 * t12 * t20)
-            - 0.5 * d_hole * t3 * t5 * t9 - d_hole * cos_gamma * t3 * t12 * t26
-            + 0.5 * d_hole * t9 * t24 * t26 - 2.0 * sin_gamma * t29;
+                * (t14 - T::from_f64(0.5) * d_peg * t9 * t33
+                    + T::from_f64(0.5) * d_peg * t7 * t9 - t8 * t34 * t35
+                    + T::from_f64(2.0) * d_peg * cos_gamma * t6 * t12 * t20)
+            - T::from_f64(0.5) * d_hole * t3 * t5 * t9
+            - d_hole * cos_gamma * t3 * t12 * t26
+            + T::from_f64(0.5) * d_hole * t9 * t24 * t26
+            - T::from_f64(2.0) * sin_gamma * t29;
         let t39 = -(d_hole * t3 * t5 * t9) + cos_gamma * t15 + t19 + t22;
-        let t40 = 2.0 * cos_gamma * t16 + 2.0 * sin_gamma * t21;
-        let t41 = 2.0 * d_hole * cos_gamma * t3 * t5 * t12 + d_hole * t3 * t9 * t26
-            - d_hole * t5 * t9 * t24 - 2.0 * sin_gamma * t15 + 2.0 * cos_gamma * t29;
+        let t40 = T::from_f64(2.0) * cos_gamma * t16
+            + T::from_f64(2.0) * sin_gamma * t21;
+        let t41 = T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t12
+            + d_hole * t3 * t9 * t26 - d_hole * t5 * t9 * t24
+            - T::from_f64(2.0) * sin_gamma * t15 + T::from_f64(2.0) * cos_gamma * t29;
         let a = Matrix3::new(
-            -1.0,
+            -T::from_f64(1.0),
             -(f * t_k_eta * t39)
-                - f * t_k_z * (t13 - 0.5 * d_hole + t25 + t27 + t28 + t30 + t32),
-            -(2.0 * f * t39 * t_b_eta)
-                - 2.0 * f * (t9 * t11 + t13 + t25 + t27 + t28 + t30 + t32) * t_b_z,
-            0.0,
-            -cos_gamma - f * t_k_eta,
-            2.0 * t9 * t11 * t18 - 2.0 * f * t_b_eta,
-            0.0,
-            -sin_gamma - f * t_k_z,
-            2.0 * d_hole * t3 * t5 * t9 * t18 - 2.0 * f * t_b_z,
+                - f * t_k_z
+                    * (-(T::from_f64(0.5) * d_hole) + t13 + t25 + t27 + t28 + t30 + t32),
+            -(T::from_f64(2.0) * f * t39 * t_b_eta)
+                - T::from_f64(2.0) * f * (t9 * t11 + t13 + t25 + t27 + t28 + t30 + t32)
+                    * t_b_z,
+            T::from_f64(0.0),
+            -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t7,
+            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t9 * t11 * t18,
+            T::from_f64(0.0),
+            -(f * t_k_z) - sin_gamma,
+            -(T::from_f64(2.0) * f * t_b_z)
+                + T::from_f64(2.0) * d_hole * t3 * t5 * t9 * t18,
         );
         let b = Vector3::new(
             f_z * t31 - m * g * t31
-                - 0.5 * m * gammadot
-                    * (2.0 * gammadot * t36 * t40 + 2.0 * gammadot * t38 * t41)
-                + f_x * t23 + 0.5 * m * (t36 * t37 * t40 + t37 * t38 * t41)
+                - T::from_f64(0.5) * m * gammadot
+                    * (T::from_f64(2.0) * gammadot * t36 * t40
+                        + T::from_f64(2.0) * gammadot * t38 * t41) + f_x * t23
+                + T::from_f64(0.5) * m * (t36 * t37 * t40 + t37 * t38 * t41)
                 - gammaddot
-                    * (0.08333333333333333 * m * (0.75 * (d_peg * d_peg) + h * h)
-                        + 0.5 * m * (2.0 * (t23 * t23) + 2.0 * (t31 * t31))),
+                    * (T::from_f64(0.08333333333333333) * m
+                        * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
+                        + T::from_f64(0.5) * m
+                            * (T::from_f64(2.0) * (t23 * t23)
+                                + T::from_f64(2.0) * (t31 * t31))),
             f_x - m * (t36 * t37 + gammaddot * t23),
             f_z - m * g - m * (t37 * t38 + gammaddot * t31),
         );
@@ -265,10 +293,10 @@ pub mod rigid_peg_planar {
     /// # Cost
     /// 20 add/sub, 57 mul, 2 div, 0 sqrt, 8 transcendental, 0 branches; 22 `let`s.
     #[inline]
-    pub fn contact_velocities(
-        x: &SVector<f64, 2>,
-        p: &SVector<f64, 7>,
-    ) -> SMatrix<f64, 3, 3> {
+    pub fn contact_velocities<T: Real>(
+        x: &SVector<T, 2>,
+        p: &SVector<T, 7>,
+    ) -> SMatrix<T, 3, 3> {
         let gamma = x[0];
         let gammadot = x[1];
         let d_hole = p[0];
@@ -277,41 +305,45 @@ pub mod rigid_peg_planar {
         let gamma0 = p[6];
         let sin_gamma = gamma.sin();
         let cos_gamma = gamma.cos();
-        let t0 = 0.5 * gamma0;
-        let t1 = 0.5 * gamma;
+        let t0 = T::from_f64(0.5) * gamma0;
+        let t1 = T::from_f64(0.5) * gamma;
         let t2 = t0 + t1;
         let t3 = t2.sin();
-        let t4 = t0 - 0.5 * gamma;
+        let t4 = t0 - T::from_f64(0.5) * gamma;
         let t5 = t4.sin();
         let t6 = t1.sin();
-        let t7 = d_hole - d_peg + 2.0 * d_peg * (t6 * t6);
-        let t8 = 1.0 / sin_gamma;
-        let t9 = 0.5 * t7 * t8;
-        let t10 = 1.0 / (sin_gamma * sin_gamma);
-        let t11 = 0.5 * h - 0.5 * t7 * t8;
-        let t12 = t9 - 0.5 * h;
+        let t7 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t6 * t6);
+        let t8 = T::from_f64(1.0) / sin_gamma;
+        let t9 = T::from_f64(0.5) * t7 * t8;
+        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t11 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7 * t8;
+        let t12 = -(T::from_f64(0.5) * h) + t9;
         let t13 = t1.cos();
         let t14 = t2.cos();
         let t15 = t4.cos();
         let t16 = gammadot
-            * (d_hole * cos_gamma * t3 * t5 * t10 - 0.5 * d_hole * t5 * t8 * t14
-                + 0.5 * d_hole * t3 * t8 * t15 - sin_gamma * t11
-                + cos_gamma * (-(d_peg * t6 * t8 * t13) + 0.5 * cos_gamma * t7 * t10));
+            * (d_hole * cos_gamma * t3 * t5 * t10
+                - T::from_f64(0.5) * d_hole * t5 * t8 * t14
+                + T::from_f64(0.5) * d_hole * t3 * t8 * t15 - sin_gamma * t11
+                + cos_gamma
+                    * (-(d_peg * t6 * t8 * t13)
+                        + T::from_f64(0.5) * cos_gamma * t7 * t10));
         let t17 = -sin_gamma * t12;
         let t18 = gammadot
             * (cos_gamma * t12
-                + sin_gamma * (d_peg * t6 * t8 * t13 - 0.5 * cos_gamma * t7 * t10))
+                + sin_gamma
+                    * (d_peg * t6 * t8 * t13 - T::from_f64(0.5) * cos_gamma * t7 * t10))
             - gammadot * (d_hole * t3 * t5 * t8 - cos_gamma * t11);
         let t19 = t16 + gammadot * (t8 * (t9 + d_hole * cos_gamma * t3 * t5 * t8) + t17);
         Matrix3::new(
             t18,
-            0.0,
-            t16 + gammadot * (-(0.5 * d_hole) + t17),
+            T::from_f64(0.0),
+            t16 + gammadot * (-(T::from_f64(0.5) * d_hole) + t17),
             t18,
-            0.0,
+            T::from_f64(0.0),
             t19,
             t18,
-            0.0,
+            T::from_f64(0.0),
             t19,
         )
     }
@@ -328,7 +360,7 @@ pub mod rigid_peg_planar {
     /// # Cost
     /// 19 add/sub, 60 mul, 2 div, 0 sqrt, 8 transcendental, 0 branches; 21 `let`s.
     #[inline]
-    pub fn energy(x: &SVector<f64, 2>, p: &SVector<f64, 7>) -> (f64, f64) {
+    pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
         let gammadot = x[1];
         let d_hole = p[0];
@@ -339,28 +371,32 @@ pub mod rigid_peg_planar {
         let gamma0 = p[6];
         let sin_gamma = gamma.sin();
         let cos_gamma = gamma.cos();
-        let t0 = 0.5 * gamma0;
-        let t1 = 0.5 * gamma;
+        let t0 = T::from_f64(0.5) * gamma0;
+        let t1 = T::from_f64(0.5) * gamma;
         let t2 = t0 + t1;
         let t3 = t2.sin();
-        let t4 = t0 - 0.5 * gamma;
+        let t4 = t0 - T::from_f64(0.5) * gamma;
         let t5 = t4.sin();
         let t6 = t1.sin();
-        let t7 = d_hole - d_peg + 2.0 * d_peg * (t6 * t6);
-        let t8 = 1.0 / sin_gamma;
-        let t9 = 1.0 / (sin_gamma * sin_gamma);
-        let t10 = 0.5 * h - 0.5 * t7 * t8;
+        let t7 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t6 * t6);
+        let t8 = T::from_f64(1.0) / sin_gamma;
+        let t9 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7 * t8;
         let t11 = t1.cos();
-        let t12 = cos_gamma * (0.5 * t7 * t8 - 0.5 * h)
-            + sin_gamma * (d_peg * t6 * t8 * t11 - 0.5 * cos_gamma * t7 * t9);
+        let t12 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7 * t8)
+            + sin_gamma
+                * (d_peg * t6 * t8 * t11 - T::from_f64(0.5) * cos_gamma * t7 * t9);
         let t13 = t2.cos();
         let t14 = t4.cos();
-        let t15 = d_hole * cos_gamma * t3 * t5 * t9 - 0.5 * d_hole * t5 * t8 * t13
-            + 0.5 * d_hole * t3 * t8 * t14 - sin_gamma * t10
-            + cos_gamma * (-(d_peg * t6 * t8 * t11) + 0.5 * cos_gamma * t7 * t9);
+        let t15 = d_hole * cos_gamma * t3 * t5 * t9
+            - T::from_f64(0.5) * d_hole * t5 * t8 * t13
+            + T::from_f64(0.5) * d_hole * t3 * t8 * t14 - sin_gamma * t10
+            + cos_gamma
+                * (-(d_peg * t6 * t8 * t11) + T::from_f64(0.5) * cos_gamma * t7 * t9);
         let t16 = gammadot * gammadot;
-        let t17 = 0.5 * m * (t16 * (t12 * t12) + t16 * (t15 * t15));
-        let t18 = 0.041666666666666664 * m * t16 * (0.75 * (d_peg * d_peg) + h * h);
+        let t17 = T::from_f64(0.5) * m * (t16 * (t12 * t12) + t16 * (t15 * t15));
+        let t18 = T::from_f64(0.041666666666666664) * m * t16
+            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h);
         let kinetic = t17 + t18;
         let total = m * g * (-(d_hole * t3 * t5 * t8) + cos_gamma * t10) + t17 + t18;
         (kinetic, total)

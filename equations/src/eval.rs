@@ -79,6 +79,26 @@ pub fn pow(b: f64, e: f64) -> f64 {
     }
 }
 
+/// The order in which the terms of a sum are added (left to right), by the
+/// interpreter and by the emitted code alike: terms that are products of
+/// parameters (with a constant coefficient) first, then the others, each
+/// group in canonical order. Alike parameters (`r` and `−D/2`) then meet
+/// before a small state-dependent term is added, so their difference is
+/// exact when they are close (Sterbenz) instead of rounded at their size.
+pub fn sum_order(g: &Graph, xs: &[Id]) -> Vec<Id> {
+    let is_param = |t: Id| {
+        let (_, fs) = crate::simplify::term_parts(g, t);
+        !fs.is_empty()
+            && fs.iter().all(|&f| match g.node(f) {
+                Node::Sym(s) => g.sym_info(s).kind == crate::graph::SymKind::Param,
+                _ => false,
+            })
+    };
+    let (mut first, rest): (Vec<Id>, Vec<Id>) = xs.iter().partition(|&&t| is_param(t));
+    first.extend(rest);
+    first
+}
+
 /// One instruction: the operands are slots of earlier instructions.
 #[derive(Clone, Copy, Debug)]
 enum Op {
@@ -144,7 +164,7 @@ impl Tape {
                     Node::Const(c) => Op::Const(c.value()),
                     Node::Sym(sym) => Op::Sym(sym.index() as u32),
                     Node::Add(xs) => {
-                        let (start, len) = list(xs);
+                        let (start, len) = list(&sum_order(g, xs));
                         Op::Add { start, len }
                     }
                     Node::Mul(xs) => {

@@ -2,15 +2,15 @@
 //! named vector inputs and named outputs.
 //!
 //! A [`Module`] is emitted as `pub mod name { .. }`; each [`FnSpec`] as one
-//! straight-line `pub fn` taking `&SVector<f64, N>` per [`Input`] and
-//! returning `f64`, `SVector` or `SMatrix` per [`Output`] (a tuple when there
+//! straight-line `pub fn f<T: Real>` taking `&SVector<T, N>` per [`Input`] and
+//! returning `T`, `SVector` or `SMatrix` per [`Output`] (a tuple when there
 //! are several). The ids refer to the [`Graph`] the model was built in.
 
 use crate::eval::Tape;
 use crate::expr::Expr;
 use crate::graph::{Graph, Id, Node, Sym};
 
-/// A vector input: `name: &SVector<f64, syms.len()>`, component `k` bound to
+/// A vector input: `name: &SVector<T, syms.len()>`, component `k` bound to
 /// symbol `syms[k]`. The module exports `<NAME>_NAMES` with the symbol names.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Input {
@@ -21,17 +21,17 @@ pub struct Input {
 /// One output of a function. Matrices are stored row-major.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Output {
-    /// Returned as `f64`.
+    /// Returned as the scalar `T`.
     Scalar(Id),
-    /// Returned as `SVector<f64, n>`.
+    /// Returned as `SVector<T, n>`.
     Vector(Vec<Id>),
-    /// Returned as `SMatrix<f64, rows, cols>`; `entries` row-major.
+    /// Returned as `SMatrix<T, rows, cols>`; `entries` row-major.
     Matrix {
         rows: usize,
         cols: usize,
         entries: Vec<Id>,
     },
-    /// Returned as `SMatrix<f64, n, n>`; `entries` row-major, and the
+    /// Returned as `SMatrix<T, n, n>`; `entries` row-major, and the
     /// generator verifies that entry (i, j) is the same expression as (j, i).
     Symmetric { n: usize, entries: Vec<Id> },
 }

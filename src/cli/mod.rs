@@ -1,7 +1,7 @@
 //! Command-line interface: argument definitions (clap derive) and dispatch.
 //!
 //! Exit codes: 0 success, 1 a scene or run failed, 2 usage error.
-//! One file per subcommand; `bench` and `accuracy` will join them.
+//! One file per subcommand; `bench` will join them.
 
 /// `println!` that does not panic when stdout is closed early (`| head`):
 /// output is best effort, a failed write is dropped.
@@ -20,6 +20,7 @@ macro_rules! errln {
     }};
 }
 
+mod accuracy;
 mod check;
 mod codegen;
 mod run;
@@ -64,6 +65,16 @@ enum Command {
     },
     /// List the scene kinds this build knows.
     Kinds,
+    /// Rounding error of every generated function: f64 against double-double
+    /// on a grid of hard points (see docs/ACCURACY.md).
+    Accuracy {
+        /// Also write the table as CSV to this file.
+        #[arg(long)]
+        csv: Option<PathBuf>,
+        /// Only the grid points whose label contains this text (e.g. "theta=0e0").
+        #[arg(long)]
+        only: Option<String>,
+    },
 }
 
 /// Parses the arguments and runs the subcommand.
@@ -83,6 +94,7 @@ pub fn main() -> ExitCode {
         Command::Run { scene, out, quiet } => run::run(&scene, &out, quiet),
         Command::Check { scenes } => check::check(&scenes),
         Command::Codegen { report_only } => codegen::codegen(report_only),
+        Command::Accuracy { csv, only } => accuracy::accuracy(csv.as_deref(), only.as_deref()),
         Command::Kinds => {
             for k in pegdyn::scene::KINDS {
                 outln!("{:<20} {}", k.name, k.about);

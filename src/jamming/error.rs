@@ -42,3 +42,18 @@ pub(crate) fn check(
         })
     }
 }
+
+/// Two-point sliding is indeterminate: the factor `k3 = k2 + μ k1 =
+/// (1 − μ²) sin θ + 2μ cos θ` of the paper's Eq. 52 is zero to rounding
+/// (at θ = −2 atan μ), so the contact forces `(k1 f_z − k2 f_x)/k3` and
+/// `(f_z + μ f_x)/k3` are not determined by statics.
+#[derive(Debug, Clone, Copy, PartialEq, Error)]
+#[error(
+    "two-point sliding is indeterminate at theta = {theta} rad: k3 = {k3} (Eq. 52) is zero to rounding"
+)]
+pub struct SlidingIndeterminate {
+    /// The tilt θ (rad).
+    pub theta: f64,
+    /// The computed `k3` (within its rounding error of 0).
+    pub k3: f64,
+}

@@ -25,6 +25,7 @@
 //! Eqs. 51–52 with accelerations zero, mirrored and with the moment taken
 //! about the tip instead of the centre of mass (see [`super::quasi_static`]).
 
+use super::error::SlidingIndeterminate;
 use super::params::PegHole;
 
 /// A planar load applied to the peg, reduced to the tip centre: forces
@@ -67,6 +68,26 @@ pub fn sliding_contact_forces(p: &PegHole, theta: f64, fx: f64, fz: f64) -> Cont
         tip: (k1 * fz - k2 * fx) / k3,
         edge: (fz + p.mu() * fx) / k3,
     }
+}
+
+/// [`sliding_contact_forces`], or why they are not determined.
+///
+/// # Errors
+/// [`SlidingIndeterminate`] when `|k3|` is within its rounding error
+/// `8 u (1 + μ)²` of 0 (u = 2⁻⁵³): there the forces would be ±∞ or NaN,
+/// or finite but all rounding.
+pub fn try_sliding_contact_forces(
+    p: &PegHole,
+    theta: f64,
+    fx: f64,
+    fz: f64,
+) -> Result<ContactForces, SlidingIndeterminate> {
+    let mu = p.mu();
+    let (_, _, k3) = k_factors(mu, theta);
+    if k3.abs() <= 4.0 * f64::EPSILON * (1.0 + mu).powi(2) {
+        return Err(SlidingIndeterminate { theta, k3 });
+    }
+    Ok(sliding_contact_forces(p, theta, fx, fz))
 }
 
 /// The applied wrench that holds the peg in equilibrium sliding for given

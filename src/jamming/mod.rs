@@ -29,5 +29,5 @@ pub mod sweep;
 pub mod table;
 pub mod wedging;
 
-pub use error::ParamError;
+pub use error::{ParamError, SlidingIndeterminate};
 pub use params::PegHole;

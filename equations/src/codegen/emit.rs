@@ -3,8 +3,10 @@
 //!
 //! Canonical forms are turned back into what a person would write: a sum
 //! term with a negative coefficient becomes `a - b`, a factor `b^-n` becomes
-//! a division, `x^0.5` becomes `x.sqrt()`, `x²` becomes `x * x`. The
-//! semantics of `max0`, `step` and `sign` are exactly those of
+//! a division, `x^0.5` becomes `x.sqrt()`, `x²` becomes `x * x`. Code is
+//! generic over the scalar `T: Real` of the runtime crate: constants are
+//! `T::from_f64(c)`, functions are `Real` methods. The semantics of
+//! `max0`, `step` and `sign` (methods of `Real`) are exactly those of
 //! [`crate::eval::unary`] (NaN propagates). Operations are counted as they
 //! are emitted, so the counts are those of the code.
 
@@ -13,7 +15,7 @@ use quote::quote;
 
 use super::ops::OpCounts;
 use super::schedule::{Names, Schedule, as_integer, const_exponent, is_repeated_mul};
-use super::tokens::{constant, ident, let_base, lit_signed, method};
+use super::tokens::{constant, ident, let_base, lit_signed, method, one};
 use crate::graph::{Binary, Graph, Id, Node, Sym, Unary};
 
 /// Binding strength of an emitted fragment, loosest first.
@@ -127,7 +129,7 @@ impl<'a> Emitter<'a> {
                 let name = self.name(id);
                 Frag::new(quote!(#name), Prec::Atom)
             }
-            Node::Add(xs) => self.sum(&xs),
+            Node::Add(xs) => self.sum(&crate::eval::sum_order(g, &xs)),
             Node::Mul(xs) => self.product(&xs, None),
             Node::Pow(b, e) => self.power(b, e),
             Node::Unary(op, a) => self.unary(op, a),
@@ -144,7 +146,8 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    /// A sum, terms in node order; negative-coefficient terms subtracted.
+    /// A sum, terms in [`crate::eval::sum_order`]; negative-coefficient
+    /// terms subtracted.
     fn sum(&mut self, xs: &[Id]) -> Frag {
         let mut ts = TokenStream::new();
         for (k, &x) in xs.iter().enumerate() {
@@ -297,7 +300,8 @@ impl<'a> Emitter<'a> {
             }
             self.ops.div += 1;
             let d = self.int_power(b, -k).at(Prec::Atom);
-            return Frag::new(quote!(1.0 / #d), Prec::Product);
+            let one = one();
+            return Frag::new(quote!(#one / #d), Prec::Product);
         }
         let base = self.frag(b).at(Prec::Atom);
         if n == 0.5 {
@@ -306,7 +310,8 @@ impl<'a> Emitter<'a> {
         } else if n == -0.5 {
             self.ops.sqrt += 1;
             self.ops.div += 1;
-            Frag::new(quote!(1.0 / #base.sqrt()), Prec::Product)
+            let one = one();
+            Frag::new(quote!(#one / #base.sqrt()), Prec::Product)
         } else if n == 1.5 {
             self.ops.sqrt += 1;
             self.ops.mul += 1;
@@ -330,24 +335,11 @@ impl<'a> Emitter<'a> {
             Unary::Abs => call("abs"),
             Unary::Max0 => {
                 self.ops.branch += 1;
-                Frag::new(
-                    quote!(if #x > 0.0 || #x.is_nan() { #x } else { 0.0 }),
-                    Prec::Atom,
-                )
+                call("max0")
             }
-            Unary::Step => {
+            Unary::Step | Unary::Sign => {
                 self.ops.branch += 2;
-                Frag::new(
-                    quote!(if #x > 0.0 { 1.0 } else if #x.is_nan() { #x } else { 0.0 }),
-                    Prec::Atom,
-                )
-            }
-            Unary::Sign => {
-                self.ops.branch += 2;
-                Frag::new(
-                    quote!(if #x > 0.0 { 1.0 } else if #x < 0.0 { -1.0 } else { #x * 0.0 }),
-                    Prec::Atom,
-                )
+                call(method(op))
             }
             _ => {
                 self.ops.transcendental += 1;

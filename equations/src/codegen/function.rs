@@ -42,24 +42,24 @@ impl Uses {
 /// The Rust type of an output.
 fn output_type(out: &Output, uses: &mut Uses) -> TokenStream {
     match out {
-        Output::Scalar(_) => quote!(f64),
+        Output::Scalar(_) => quote!(T),
         Output::Vector(v) => {
             uses.ty("SVector");
             let n = ulit(v.len());
-            quote!(SVector<f64, #n>)
+            quote!(SVector<T, #n>)
         }
         Output::Matrix { .. } | Output::Symmetric { .. } => {
             uses.ty("SMatrix");
             let (r, c) = out.shape();
             let (r, c) = (ulit(r), ulit(c));
-            quote!(SMatrix<f64, #r, #c>)
+            quote!(SMatrix<T, #r, #c>)
         }
     }
 }
 
 /// The expression that builds an output from its entries (row-major):
 /// nalgebra's `Vector3::new(..)` / `Matrix2x3::new(..)` up to 6×6,
-/// `SMatrix::<f64, R, C>::from_row_slice(&[..])` beyond; no allocation.
+/// `SMatrix::<T, R, C>::from_row_slice(&[..])` beyond; no allocation.
 fn output_value(out: &Output, entries: Vec<TokenStream>, uses: &mut Uses) -> TokenStream {
     let (r, c) = out.shape();
     if let Output::Scalar(_) = out {
@@ -76,7 +76,7 @@ fn output_value(out: &Output, entries: Vec<TokenStream>, uses: &mut Uses) -> Tok
     }
     uses.ty("SMatrix");
     let (rl, cl) = (ulit(r), ulit(c));
-    quote!(SMatrix::<f64, #rl, #cl>::from_row_slice(&[#(#entries),*]))
+    quote!(SMatrix::<T, #rl, #cl>::from_row_slice(&[#(#entries),*]))
 }
 
 pub(crate) fn doc_lines(text: &str) -> Vec<TokenStream> {
@@ -135,7 +135,7 @@ pub fn function(
             input.name.clone()
         });
         uses.ty("SVector");
-        params.push(quote!(#arg: &SVector<f64, #n>));
+        params.push(quote!(#arg: &SVector<T, #n>));
         for (k, s) in used {
             let local = names.fresh(&snake_case(&g.sym_info(s).name));
             let (li, kl) = (ident(&local), ulit(k));
@@ -179,7 +179,7 @@ pub fn function(
     let ts = quote! {
         #(#docs)*
         #[inline]
-        pub fn #name(#(#params),*) -> #ret {
+        pub fn #name<T: Real>(#(#params),*) -> #ret {
             #(#binds)*
             #(#lets)*
             #tail

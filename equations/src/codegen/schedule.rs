@@ -5,7 +5,7 @@
 //! topological order (children first, see [`crate::graph`]). A node gets a
 //! `let` when it is used more than once, when it is expensive (a function
 //! call, a square root, a branch), or when its emitted form mentions its
-//! operand more than once (`x * x` for `x²`, the branches of `max0`). Every
+//! operand more than once (`x * x` for `x²`). Every
 //! other node is inlined into its single user. Each node is computed once.
 
 use std::collections::BTreeSet;
@@ -40,7 +40,6 @@ fn expensive(g: &Graph, node: &Node) -> bool {
 /// Operands that must be a name because the emitted form repeats them.
 fn repeated_operand(g: &Graph, node: &Node) -> Option<Id> {
     match node {
-        Node::Unary(Unary::Max0 | Unary::Step | Unary::Sign, a) => Some(*a),
         Node::Pow(b, e) => match const_exponent(g, *e) {
             Some(n) if is_repeated_mul(n) || n == 1.5 => Some(*b),
             _ => None,

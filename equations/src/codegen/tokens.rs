@@ -23,7 +23,7 @@ pub(crate) fn ident(s: &str) -> Ident {
     Ident::new(s, Span::call_site())
 }
 
-/// The `f64` method implementing a transcendental function.
+/// The `pegdyn::scalar::Real` method implementing a transcendental function.
 pub(crate) fn method(op: Unary) -> &'static str {
     match op {
         Unary::Sin => "sin",
@@ -60,14 +60,20 @@ pub(crate) fn let_base(g: &Graph, node: &Node, sym_name: &dyn Fn(Sym) -> String)
     }
 }
 
-/// A constant; negative ones as `-c`.
+/// A constant of the scalar type `T`: `T::from_f64(c)`, negative ones as
+/// `-T::from_f64(c)`.
 pub(crate) fn constant(v: f64) -> Frag {
     let l = lit(v.abs());
     if v < 0.0 {
-        Frag::new(quote!(-#l), Prec::Prefix)
+        Frag::new(quote!(-T::from_f64(#l)), Prec::Prefix)
     } else {
-        Frag::new(quote!(#l), Prec::Atom)
+        Frag::new(quote!(T::from_f64(#l)), Prec::Atom)
     }
+}
+
+/// The constant 1 of the scalar type (numerator of a reciprocal).
+pub(crate) fn one() -> TokenStream {
+    quote!(T::from_f64(1.0))
 }
 
 /// A literal that may be negative, as tokens.

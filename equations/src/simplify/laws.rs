@@ -22,7 +22,7 @@ fn square_of(g: &Graph, f: Id, op: Unary) -> Option<Id> {
 }
 
 /// The terms of `terms` other than those at `i` and `j`.
-fn without(terms: &[Id], i: usize, j: usize) -> Vec<Id> {
+pub(super) fn without(terms: &[Id], i: usize, j: usize) -> Vec<Id> {
     terms
         .iter()
         .enumerate()
@@ -42,7 +42,7 @@ fn has_factor(g: &Graph, t: Id, pred: &impl Fn(&Node) -> bool) -> bool {
 
 /// The id of the term `c·f₁·…·fₙ` (factors non-constant, in canonical
 /// order) if it is stored; never interns.
-fn find_term(g: &Graph, c: f64, fs: &[Id]) -> Option<Id> {
+pub(super) fn find_term(g: &Graph, c: f64, fs: &[Id]) -> Option<Id> {
     let k = || g.find(&Node::Const(Const::new(c)?));
     match (fs, c == 1.0) {
         ([], _) => k(),
@@ -62,7 +62,7 @@ fn find_term(g: &Graph, c: f64, fs: &[Id]) -> Option<Id> {
 /// the sum; returns `(i, j, c, factors, k)`. Linear in the number of terms:
 /// only terms with a matching factor are split, partners are looked up by
 /// id.
-fn find_pair(
+pub(super) fn find_pair(
     g: &Graph,
     terms: &[Id],
     pred: impl Fn(&Node) -> bool,
@@ -92,7 +92,7 @@ fn find_pair(
 }
 
 /// `fs` without the element at `k`.
-fn remove(fs: &[Id], k: usize) -> Vec<Id> {
+pub(super) fn remove(fs: &[Id], k: usize) -> Vec<Id> {
     let mut v = fs.to_vec();
     v.remove(k);
     v

@@ -26,6 +26,7 @@
 
 mod laws;
 pub mod rules;
+mod stable;
 
 use std::collections::BTreeMap;
 

@@ -14,9 +14,10 @@
 //! measure that proves the sum rules terminate, and [`rewrite_sum`] refuses
 //! (and in debug builds reports) a rewrite that does not decrease it.
 
+use std::cell::Cell;
 use std::collections::HashMap;
 
-use super::laws;
+use super::{laws, stable};
 use crate::graph::{Binary, Graph, Id, Node, Unary};
 
 /// Rewrites a sum whose like terms are already collected (the constant, if
@@ -60,6 +61,10 @@ pub struct Rule {
     pub terminates: &'static str,
     /// Where it applies.
     pub site: Site,
+    /// A stable numerical form (a rewrite for accuracy, not for size):
+    /// switched off by [`with_stable_forms`]`(false, ..)` so that its
+    /// effect can be measured.
+    pub stable: bool,
 }
 
 const fn core(name: &'static str, law: &'static str, domain: &'static str) -> Rule {
@@ -69,6 +74,7 @@ const fn core(name: &'static str, law: &'static str, domain: &'static str) -> Ru
         domain,
         terminates: "applied once by the constructor",
         site: Site::Core,
+        stable: false,
     }
 }
 
@@ -115,6 +121,7 @@ pub static RULES: &[Rule] = &[
         domain: "all u, F",
         terminates: "removes a cos",
         site: Site::Sum(laws::pythagorean),
+        stable: false,
     },
     Rule {
         name: "one_minus_cos",
@@ -122,6 +129,7 @@ pub static RULES: &[Rule] = &[
         domain: "all u, F",
         terminates: "removes a cos",
         site: Site::Sum(laws::one_minus_cos),
+        stable: true,
     },
     Rule {
         name: "one_minus_cos_squared",
@@ -129,6 +137,23 @@ pub static RULES: &[Rule] = &[
         domain: "all u, F",
         terminates: "removes a cos",
         site: Site::Sum(laws::one_minus_cos_squared),
+        stable: true,
+    },
+    Rule {
+        name: "cos_near_equal",
+        law: "a − b·cos(u) = (a − b) + 2b·sin²(u/2) for alike parameter products a, b (d − D cos γ)",
+        domain: "all u, a, b",
+        terminates: "removes every cos(u) of the sum",
+        site: Site::Sum(stable::cos_near_equal),
+        stable: true,
+    },
+    Rule {
+        name: "exp_minus_one",
+        law: "c·F·exp(u) − c·F = c·F·exp_m1(u)",
+        domain: "all u, F",
+        terminates: "removes an exp",
+        site: Site::Sum(stable::exp_minus_one),
+        stable: true,
     },
     // ---- products ----
     Rule {
@@ -137,6 +162,7 @@ pub static RULES: &[Rule] = &[
         domain: "all (rounding changes)",
         terminates: "the sum constructor scales terms without building products",
         site: Site::Product(laws::distribute_scalar),
+        stable: false,
     },
     // ---- powers ----
     Rule {
@@ -145,6 +171,7 @@ pub static RULES: &[Rule] = &[
         domain: "where x^a is defined",
         terminates: SMALLER,
         site: Site::Pow(laws::pow_of_pow_int),
+        stable: false,
     },
     Rule {
         name: "even_root",
@@ -152,6 +179,7 @@ pub static RULES: &[Rule] = &[
         domain: "all x",
         terminates: SMALLER,
         site: Site::Pow(laws::even_root),
+        stable: false,
     },
     Rule {
         name: "abs_even_pow",
@@ -159,6 +187,7 @@ pub static RULES: &[Rule] = &[
         domain: "all x",
         terminates: SMALLER,
         site: Site::Pow(laws::abs_even_pow),
+        stable: false,
     },
     Rule {
         name: "pow_of_product_int",
@@ -166,6 +195,7 @@ pub static RULES: &[Rule] = &[
         domain: "all x, y",
         terminates: SMALLER,
         site: Site::Pow(laws::pow_of_product_int),
+        stable: false,
     },
     Rule {
         name: "pow_sum_content",
@@ -173,6 +203,15 @@ pub static RULES: &[Rule] = &[
         domain: "integer e: all; other e: c > 0, where s^e is defined",
         terminates: "the new sum's leading coefficient is 1",
         site: Site::Pow(laws::pow_sum_content),
+        stable: false,
+    },
+    Rule {
+        name: "hypot_of_squares",
+        law: "(x² + y² + …)^e = hypot(hypot(x, y), …)^(2e) for non-integer e (sqrt(x² + y²) = hypot(x, y))",
+        domain: "all x, y",
+        terminates: "the result's base is not a sum",
+        site: Site::Pow(stable::hypot_of_squares),
+        stable: true,
     },
     // ---- odd and even functions ----
     Rule {
@@ -181,6 +220,7 @@ pub static RULES: &[Rule] = &[
         domain: "all u",
         terminates: ODD_T,
         site: Site::Unary(Unary::Sin, laws::odd),
+        stable: false,
     },
     Rule {
         name: "tan_odd",
@@ -188,6 +228,7 @@ pub static RULES: &[Rule] = &[
         domain: "all u",
         terminates: ODD_T,
         site: Site::Unary(Unary::Tan, laws::odd),
+        stable: false,
     },
     Rule {
         name: "asin_odd",
@@ -195,6 +236,7 @@ pub static RULES: &[Rule] = &[
         domain: "|u| <= 1",
         terminates: ODD_T,
         site: Site::Unary(Unary::Asin, laws::odd),
+        stable: false,
     },
     Rule {
         name: "atan_odd",
@@ -202,6 +244,7 @@ pub static RULES: &[Rule] = &[
         domain: "all u",
         terminates: ODD_T,
         site: Site::Unary(Unary::Atan, laws::odd),
+        stable: false,
     },
     Rule {
         name: "tanh_odd",
@@ -209,6 +252,7 @@ pub static RULES: &[Rule] = &[
         domain: "all u",
         terminates: ODD_T,
         site: Site::Unary(Unary::Tanh, laws::odd),
+        stable: false,
     },
     Rule {
         name: "sign_odd",
@@ -216,6 +260,7 @@ pub static RULES: &[Rule] = &[
         domain: "all u",
         terminates: ODD_T,
         site: Site::Unary(Unary::Sign, laws::odd),
+        stable: false,
     },
     Rule {
         name: "cos_even",
@@ -223,6 +268,7 @@ pub static RULES: &[Rule] = &[
         domain: "all u",
         terminates: ODD_T,
         site: Site::Unary(Unary::Cos, laws::even),
+        stable: false,
     },
     Rule {
         name: "abs_scale",
@@ -230,6 +276,7 @@ pub static RULES: &[Rule] = &[
         domain: "all u",
         terminates: "the argument of the result has coefficient 1 and is not negative",
         site: Site::Unary(Unary::Abs, laws::abs_scale),
+        stable: false,
     },
     Rule {
         name: "abs_idempotent",
@@ -237,6 +284,23 @@ pub static RULES: &[Rule] = &[
         domain: "all u",
         terminates: "returns the argument",
         site: Site::Unary(Unary::Abs, laws::abs_of_nonneg),
+        stable: false,
+    },
+    Rule {
+        name: "ln_one_plus",
+        law: "ln(1 + x) = ln_1p(x)",
+        domain: "x > −1",
+        terminates: "the result is not a ln",
+        site: Site::Unary(Unary::Ln, stable::ln_one_plus),
+        stable: true,
+    },
+    Rule {
+        name: "atan_of_ratio",
+        law: "atan(n/d) = atan2(n, d) for d never negative (|x|, hypot, exp, even powers, sqrt)",
+        domain: "d > 0 (at d = 0 the left side is ±π/2 by IEEE rules, as the right)",
+        terminates: "the result is not an atan",
+        site: Site::Unary(Unary::Atan, stable::atan_of_ratio),
+        stable: true,
     },
     Rule {
         name: "hypot_canonical",
@@ -244,14 +308,51 @@ pub static RULES: &[Rule] = &[
         domain: "all a, b",
         terminates: "the result's operands are sorted and not negative",
         site: Site::Binary(Binary::Hypot, laws::hypot_canonical),
+        stable: false,
     },
     // Not a rule, on purpose: atan2(-y, x) = -atan2(y, x) fails on the branch
     // cut (y = ±0, x < 0), where the sign of a computed zero picks ±π.
 ];
 
+thread_local! {
+    static STABLE_FORMS: Cell<bool> = const { Cell::new(true) };
+}
+
+/// Whether the stable numerical forms (rows with `stable: true`) are
+/// applied on this thread (the default).
+pub fn stable_forms() -> bool {
+    STABLE_FORMS.with(Cell::get)
+}
+
+/// Runs `f` with the stable numerical forms switched on or off on this
+/// thread, then restores the previous setting. Build a graph entirely
+/// inside one call: hash-consing does not know the setting, so a graph
+/// built half with and half without them mixes forms.
+///
+/// ```
+/// use pegdyn_equations::{Graph, simplify::rules::with_stable_forms};
+/// let naive = with_stable_forms(false, || {
+///     let g = Graph::new();
+///     (1.0 - g.var("x").cos()).to_string()
+/// });
+/// assert_eq!(naive, "1 - cos(x)");
+/// ```
+pub fn with_stable_forms<R>(on: bool, f: impl FnOnce() -> R) -> R {
+    let before = STABLE_FORMS.with(|c| c.replace(on));
+    let r = f();
+    STABLE_FORMS.with(|c| c.set(before));
+    r
+}
+
+/// The rules applied now: all, or all but the stable forms.
+fn active() -> impl Iterator<Item = &'static Rule> {
+    let stable = stable_forms();
+    RULES.iter().filter(move |r| stable || !r.stable)
+}
+
 /// Applies the first sum rule that fires and decreases the measure.
 pub(crate) fn rewrite_sum(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
-    for rule in RULES {
+    for rule in active() {
         let Site::Sum(f) = rule.site else { continue };
         if let Some(next) = f(g, terms) {
             if cos_count(g, &next) < cos_count(g, terms) {
@@ -267,15 +368,15 @@ pub(crate) fn rewrite_sum(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
     None
 }
 
-/// The termination measure of the sum rules: occurrences of `cos` in the
-/// terms, counted as a tree (saturating).
+/// The termination measure of the sum rules: occurrences of `cos` and
+/// `exp` in the terms, counted as a tree (saturating).
 pub(crate) fn cos_count(g: &Graph, terms: &[Id]) -> u64 {
     fn count(g: &Graph, id: Id, memo: &mut HashMap<Id, u64>) -> u64 {
         if let Some(&n) = memo.get(&id) {
             return n;
         }
         let node = g.node(id);
-        let mut n = u64::from(matches!(node, Node::Unary(Unary::Cos, _)));
+        let mut n = u64::from(matches!(node, Node::Unary(Unary::Cos | Unary::Exp, _)));
         node.for_each_child(|c| n = n.saturating_add(count(g, c, memo)));
         memo.insert(id, n);
         n
@@ -288,7 +389,7 @@ pub(crate) fn cos_count(g: &Graph, terms: &[Id]) -> u64 {
 
 /// Applies the first product rule that fires.
 pub(crate) fn rewrite_product(g: &Graph, c: f64, factors: &[Id]) -> Option<Id> {
-    RULES.iter().find_map(|r| match r.site {
+    active().find_map(|r| match r.site {
         Site::Product(f) => f(g, c, factors),
         _ => None,
     })
@@ -296,7 +397,7 @@ pub(crate) fn rewrite_product(g: &Graph, c: f64, factors: &[Id]) -> Option<Id> {
 
 /// Applies the first power rule that fires.
 pub(crate) fn rewrite_pow(g: &Graph, base: Id, exponent: Id) -> Option<Id> {
-    RULES.iter().find_map(|r| match r.site {
+    active().find_map(|r| match r.site {
         Site::Pow(f) => f(g, base, exponent),
         _ => None,
     })
@@ -304,7 +405,7 @@ pub(crate) fn rewrite_pow(g: &Graph, base: Id, exponent: Id) -> Option<Id> {
 
 /// Applies the first rule for `op` that fires.
 pub(crate) fn rewrite_unary(g: &Graph, op: Unary, x: Id) -> Option<Id> {
-    RULES.iter().find_map(|r| match r.site {
+    active().find_map(|r| match r.site {
         Site::Unary(o, f) if o == op => f(g, op, x),
         _ => None,
     })
@@ -312,7 +413,7 @@ pub(crate) fn rewrite_unary(g: &Graph, op: Unary, x: Id) -> Option<Id> {
 
 /// Applies the first rule for `op` that fires.
 pub(crate) fn rewrite_binary(g: &Graph, op: Binary, a: Id, b: Id) -> Option<Id> {
-    RULES.iter().find_map(|r| match r.site {
+    active().find_map(|r| match r.site {
         Site::Binary(o, f) if o == op => f(g, op, a, b),
         _ => None,
     })
