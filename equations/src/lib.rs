@@ -13,6 +13,7 @@ pub mod eval;
 pub mod expr;
 pub mod graph;
 pub mod simplify;
+pub mod subst;
 
 pub use expr::Expr;
 pub use graph::{Graph, Id, Node, Sym, SymKind};

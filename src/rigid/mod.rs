@@ -3,10 +3,16 @@
 //!
 //! - [`params`]: dimensions, mass, friction and loads;
 //! - [`hand`]: hand-derived geometry and kinematics (corrected paper forms);
-//! - [`hand_dynamics`]: hand-derived equations of motion and reactions.
+//! - [`hand_dynamics`]: hand-derived equations of motion and reactions;
+//! - [`generated_model`]: the same model derived by the generator
+//!   (`pegdyn::generated::rigid_peg*`), in four variants;
+//! - [`prescribed`]: reactions of prescribed motions (Fig. 9), through the
+//!   generated model.
 //!
-//! Derivation and findings: `docs/rigid-peg.md`.
+//! Derivation and findings: `docs/rigid-peg.md`; the generated model:
+//! `docs/rigid-model.md`.
 
+pub mod generated_model;
 pub mod hand;
 pub mod hand_dynamics;
 pub mod params;
@@ -42,6 +48,15 @@ pub enum RigidError {
     Singular {
         /// γ (rad).
         gamma: f64,
+    },
+    /// The chosen generated-model variant cannot represent the request
+    /// (e.g. a planar variant with ψ̇ ≠ 0, a frictionless one with f > 0).
+    #[error("variant `{variant}` cannot represent this request: {reason}")]
+    Unrepresentable {
+        /// The variant's module name.
+        variant: &'static str,
+        /// What it cannot represent.
+        reason: &'static str,
     },
     /// Friction direction undefined: a contact does not slide.
     #[error("contact {contact} has zero sliding speed; Coulomb friction has no direction")]

@@ -1,9 +1,15 @@
 //! Prescribed motion (paper's cases (i) and (ii), Fig. 9): given γ(t), ψ(t)
 //! and their derivatives, the normal reactions N_K, N_B1, N_B2 and the
 //! moments M_γ, M_ψ that drive the motion.
+//!
+//! [`reactions`] uses the generated model in the smallest variant that
+//! represents the state ([`Variant::smallest_at`]); [`reactions_hand`] is
+//! the same computation with the hand-derived model, kept for tests and
+//! benches.
 
-use nalgebra::Vector2;
+use nalgebra::{Vector2, Vector3};
 
+use crate::rigid::generated_model::{self, Variant};
 use crate::rigid::hand::Pose;
 use crate::rigid::hand_dynamics::{friction_directions, prescribed_system, solve};
 use crate::rigid::{Loads, PegParams, RigidError};
@@ -30,13 +36,44 @@ impl Reactions {
 
 /// Reactions for the state (γ, ψ, γ̇, ψ̇) and accelerations (γ̈, ψ̈), with
 /// the assembly force `loads.force` (its moments are ignored: they are the
-/// unknowns). Friction opposes each contact's sliding velocity.
+/// unknowns). Friction opposes each contact's sliding velocity. Computed
+/// with the generated model: planar when ψ̇ = ψ̈ = 0 and the loads lie in
+/// the symmetry plane, frictionless when f = 0.
 ///
 /// # Errors
+/// [`RigidError::Param`] for invalid parameters or a non-finite state,
 /// [`RigidError::NotThreePoint`] outside γ0 < γ < π/2,
-/// [`RigidError::NoSliding`] when a contact does not slide (no friction
-/// direction), [`RigidError::Singular`] when the reactions are indeterminate.
+/// [`RigidError::NoSliding`] when friction acts and a contact does not
+/// slide (no friction direction), [`RigidError::Singular`] when the
+/// reactions are indeterminate.
 pub fn reactions(
+    p: &PegParams,
+    loads: &Loads,
+    q: Vector2<f64>,
+    qdot: Vector2<f64>,
+    qddot: Vector2<f64>,
+) -> Result<Reactions, RigidError> {
+    let loads = Loads {
+        m_psi: 0.0,
+        ..*loads
+    };
+    let planar_now = qdot[1] == 0.0 && qddot[1] == 0.0;
+    let variant = Variant::smallest_at(p, &loads, q[1], planar_now);
+    let t = if variant.has_friction() {
+        let v = generated_model::contact_velocities(variant, p, q, qdot)?;
+        generated_model::friction_directions(&v)?
+    } else {
+        [Vector3::zeros(); 3]
+    };
+    generated_model::prescribed(variant, p, &loads, q, qdot, qddot, &t)
+}
+
+/// [`reactions`] computed with the hand-derived model
+/// ([`crate::rigid::hand_dynamics`]), always in the full 2-DOF form.
+///
+/// # Errors
+/// As [`reactions`] (without the parameter checks).
+pub fn reactions_hand(
     p: &PegParams,
     loads: &Loads,
     q: Vector2<f64>,

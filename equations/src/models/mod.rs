@@ -13,6 +13,9 @@ pub mod planar_peg;
 pub mod planar_peg_geometry;
 pub mod planar_peg_module;
 pub mod quasi_static;
+pub mod rigid_peg;
+pub mod rigid_peg_geometry;
+pub mod rigid_peg_module;
 
 /// Builds one model's module in the given graph.
 pub type ModelFn = fn(&Graph) -> Module;
@@ -28,4 +31,8 @@ pub const ALL: &[ModelFn] = &[
     planar_peg_module::module,
     planar_peg_module::module_lean,
     quasi_static::module,
+    rigid_peg_module::module,
+    rigid_peg_module::module_frictionless,
+    rigid_peg_module::module_planar,
+    rigid_peg_module::module_planar_frictionless,
 ];

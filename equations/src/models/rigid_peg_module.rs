@@ -1,0 +1,336 @@
+//! The generated modules of the rigid peg (seed 000): four variants of one
+//! derivation ([`super::rigid_peg::derive`]), specialized by substitution
+//! at generation time.
+//!
+//! | module | coordinates | unknowns (forward) | friction input |
+//! |---|---|---|---|
+//! | `rigid_peg` | γ, ψ | γ̈, ψ̈, N_K, N_B1, N_B2 | t (9) |
+//! | `rigid_peg_frictionless` | γ, ψ | γ̈, ψ̈, N_K, N_B1, N_B2 | — (f = 0) |
+//! | `rigid_peg_planar` | γ (ψ ≡ 0) | γ̈, N_K, N_B (= N_B1 = N_B2) | t (4) |
+//! | `rigid_peg_planar_frictionless` | γ (ψ ≡ 0) | γ̈, N_K, N_B | — |
+//!
+//! Planar: ψ = ψ̇ = ψ̈ = 0, M_ψ = 0, no lateral force (F_y = 0 at ψ = 0),
+//! N_B1 = N_B2 = N_B, and friction in the symmetry plane with B1 and B2
+//! sliding alike (t_B1 = t_B2 = t_B, no e_n components; the planar motion
+//! gives v_B1 = v_B2 exactly). The builder then checks that the ψ Lagrange
+//! row and the lateral centre-of-mass row have become the constant 0 — the
+//! planar motion is a solution of the 2-DOF equations — and drops them.
+//!
+//! Each variant's systems are derivatives of the residual R (linear in its
+//! unknowns u): A = ∂R/∂u, b = −R|_{u=0}. For the Lagrange rows this is
+//! A = [M | −∂f/∂N], b = f|_{N=0}.
+
+use super::rigid_peg::{self, Derivation};
+use crate::expr::Expr;
+use crate::graph::Graph;
+use crate::model::{FnSpec, Input, Module, Output};
+use crate::subst::Substitution;
+
+/// Which specialization of the rigid-peg model to generate.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Variant {
+    /// 2 DOF with Coulomb friction.
+    Full,
+    /// 2 DOF, f = 0.
+    Frictionless,
+    /// ψ ≡ 0, one unknown N_B, friction in the symmetry plane.
+    Planar,
+    /// ψ ≡ 0, f = 0.
+    PlanarFrictionless,
+}
+
+impl Variant {
+    /// The generated module's name.
+    pub fn module_name(self) -> &'static str {
+        match self {
+            Variant::Full => "rigid_peg",
+            Variant::Frictionless => "rigid_peg_frictionless",
+            Variant::Planar => "rigid_peg_planar",
+            Variant::PlanarFrictionless => "rigid_peg_planar_frictionless",
+        }
+    }
+
+    /// ψ ≡ 0.
+    pub fn is_planar(self) -> bool {
+        matches!(self, Variant::Planar | Variant::PlanarFrictionless)
+    }
+
+    /// f is kept (not eliminated).
+    pub fn has_friction(self) -> bool {
+        matches!(self, Variant::Full | Variant::Planar)
+    }
+}
+
+/// `rigid_peg`.
+pub fn module(g: &Graph) -> Module {
+    build(g, Variant::Full)
+}
+/// `rigid_peg_frictionless`.
+pub fn module_frictionless(g: &Graph) -> Module {
+    build(g, Variant::Frictionless)
+}
+/// `rigid_peg_planar`.
+pub fn module_planar(g: &Graph) -> Module {
+    build(g, Variant::Planar)
+}
+/// `rigid_peg_planar_frictionless`.
+pub fn module_planar_frictionless(g: &Graph) -> Module {
+    build(g, Variant::PlanarFrictionless)
+}
+
+/// A variant's symbols and specialized expressions.
+pub struct Specialized<'g> {
+    /// The state x.
+    pub state: Vec<Expr<'g>>,
+    /// The accelerations q̈.
+    pub accel: Vec<Expr<'g>>,
+    /// The loads input.
+    pub loads: Vec<Expr<'g>>,
+    /// The friction-direction input (empty without friction).
+    pub friction_dir: Vec<Expr<'g>>,
+    /// The normal-force unknowns.
+    pub normal: Vec<Expr<'g>>,
+    /// The generalized moments M (unknowns of the prescribed problem).
+    pub moments: Vec<Expr<'g>>,
+    /// The retained residual rows.
+    pub rows: Vec<Expr<'g>>,
+    /// The rows the specialization made vanish identically (dropped).
+    pub vanished: Vec<Expr<'g>>,
+    /// Contact velocities, rows K, B1, B2.
+    pub contact_velocities: Vec<Vec<Expr<'g>>>,
+    /// T + V.
+    pub energy: Expr<'g>,
+    /// T.
+    pub kinetic: Expr<'g>,
+}
+
+/// Specializes the derivation `d` to `variant`.
+pub fn specialize<'g>(g: &'g Graph, d: &Derivation<'g>, variant: Variant) -> Specialized<'g> {
+    let zero = g.constant(0.0);
+    let [gamma, psi, gd, pd] = d.state;
+    let [gdd, pdd] = d.accel;
+    let [m_gamma, m_psi, fx, fy, fz] = d.loads;
+    let [n_k, n_b1, n_b2] = d.normal;
+    let t = d.friction_dir;
+    let mut pairs = Vec::new();
+    if !variant.has_friction() {
+        pairs.push((d.p.friction, zero));
+    }
+    let (state, accel, loads, normal, moments, keep, drop);
+    let mut friction_dir: Vec<Expr<'g>> = Vec::new();
+    if variant.is_planar() {
+        let n_b = g.param("N_B");
+        let (tb_eta, tb_z) = (g.param("t_B_eta"), g.param("t_B_z"));
+        pairs.extend([
+            (psi, zero),
+            (pd, zero),
+            (pdd, zero),
+            (m_psi, zero),
+            (fy, zero),
+        ]);
+        pairs.extend([(n_b1, n_b), (n_b2, n_b)]);
+        pairs.extend(t.iter().map(|ti| (ti[1], zero)));
+        pairs.extend([(t[1][0], tb_eta), (t[2][0], tb_eta)]);
+        pairs.extend([(t[1][2], tb_z), (t[2][2], tb_z)]);
+        state = vec![gamma, gd];
+        accel = vec![gdd];
+        loads = vec![m_gamma, fx, fz];
+        normal = vec![n_k, n_b];
+        moments = vec![m_gamma];
+        friction_dir.extend([t[0][0], t[0][2], tb_eta, tb_z]);
+        (keep, drop) = (vec![0, 2, 4], vec![1, 3]);
+    } else {
+        state = d.state.to_vec();
+        accel = d.accel.to_vec();
+        loads = d.loads.to_vec();
+        normal = vec![n_k, n_b1, n_b2];
+        moments = vec![m_gamma, m_psi];
+        friction_dir.extend(t.iter().flatten());
+        (keep, drop) = (vec![0, 1, 2, 3, 4], vec![]);
+    }
+    if !variant.has_friction() {
+        friction_dir.clear();
+    }
+    let mut s = Substitution::new(&pairs);
+    let rows = keep.iter().map(|&i| s.apply(d.residual[i])).collect();
+    let vanished = drop.iter().map(|&i| s.apply(d.residual[i])).collect();
+    let contact_velocities = d
+        .contact_velocities
+        .iter()
+        .map(|v| v.iter().map(|&c| s.apply(c)).collect())
+        .collect();
+    Specialized {
+        state,
+        accel,
+        loads,
+        friction_dir,
+        normal,
+        moments,
+        rows,
+        vanished,
+        contact_velocities,
+        energy: s.apply(d.energy),
+        kinetic: s.apply(d.kinetic),
+    }
+}
+
+/// A linear system A u = b from residual rows linear in `unknowns`:
+/// A = ∂R/∂u, b = −R|_{u=0}.
+pub fn linear_system<'g>(
+    g: &'g Graph,
+    rows: &[Expr<'g>],
+    unknowns: &[Expr<'g>],
+) -> (Vec<Vec<Expr<'g>>>, Vec<Expr<'g>>) {
+    let zero = g.constant(0.0);
+    let a = rows
+        .iter()
+        .map(|r| unknowns.iter().map(|&u| r.diff(u)).collect())
+        .collect();
+    let pairs: Vec<(Expr<'g>, Expr<'g>)> = unknowns.iter().map(|&u| (u, zero)).collect();
+    let mut s = Substitution::new(&pairs);
+    let b = rows.iter().map(|&r| -s.apply(r)).collect();
+    (a, b)
+}
+
+/// Builds the module of `variant`.
+///
+/// # Panics
+/// If a row the planar specialization must make vanish does not (a bug in
+/// the derivation: the planar motion would not solve the 2-DOF equations).
+pub fn build(g: &Graph, variant: Variant) -> Module {
+    let d = rigid_peg::derive(g);
+    let sp = specialize(g, &d, variant);
+    for (k, r) in sp.vanished.iter().enumerate() {
+        assert!(
+            r.as_const() == Some(0.0),
+            "{}: dropped row {k} does not vanish identically: {r}",
+            variant.module_name()
+        );
+    }
+    let forward_unknowns: Vec<Expr<'_>> = sp.accel.iter().chain(&sp.normal).copied().collect();
+    let prescribed_unknowns: Vec<Expr<'_>> = sp.moments.iter().chain(&sp.normal).copied().collect();
+    let (fa, fb) = linear_system(g, &sp.rows, &forward_unknowns);
+    let (pa, pb) = linear_system(g, &sp.rows, &prescribed_unknowns);
+
+    let x = Input::new("x", &sp.state);
+    let p = Input::new("p", &d.p.all());
+    let loads = Input::new("loads", &sp.loads);
+    let qdd = Input::new("qdd", &sp.accel);
+    let mut dyn_inputs = vec![loads];
+    if !sp.friction_dir.is_empty() {
+        dyn_inputs.push(Input::new("t", &sp.friction_dir));
+    }
+    let inputs = |first: Vec<Input>| first.into_iter().chain(dyn_inputs.clone()).collect();
+    let names = |es: &[Expr<'_>]| {
+        es.iter()
+            .map(|e| format!("`{e}`"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
+    let rows_doc = if variant.is_planar() {
+        "Rows: the Lagrange equation of γ (paper (26)/(32)), then the centre-of-mass equations along \
+         e_η and e_z ((29), (31)/(33), (34)); the ψ row and the lateral row vanish identically."
+    } else {
+        "Rows: the Lagrange equations of γ and ψ (paper (26), (27)), then the centre-of-mass \
+         equations (28)–(31) along e_η, e_n, e_z (the fixed-frame (29)–(31) rotated by −ψ)."
+    };
+    let fns = vec![
+        spec(
+            "forward",
+            format!(
+                "Forward dynamics (replaces paper (24)–(31)): A u = b for u = ({}) (rad/s², N), \
+                 the applied loads and friction directions given.\n{rows_doc}\n\
+                 A = ∂R/∂u, b = −R at u = 0, R the residual derived from T, V and the generalized forces.",
+                names(&forward_unknowns)
+            ),
+            inputs(vec![x.clone(), p.clone()]),
+            vec![("a", Output::matrix(&fa)), ("b", Output::vector(&fb))],
+        ),
+        spec(
+            "prescribed",
+            format!(
+                "Prescribed motion (paper (26)–(31), Fig. 9): A u = b for u = ({}) (N·m, N) given \
+                 q̈ (the moment components of `loads` are unused: they are the unknowns).\n{rows_doc}",
+                names(&prescribed_unknowns)
+            ),
+            inputs(vec![x.clone(), qdd, p.clone()]),
+            vec![("a", Output::matrix(&pa)), ("b", Output::vector(&pb))],
+        ),
+        spec(
+            "contact_velocities",
+            "Material velocity of the peg at K, B1, B2 (rows) in rotating components (e_η, e_n, e_z) \
+             (m/s); replaces paper (10)–(13). The friction directions are −v/|v|."
+                .into(),
+            vec![x.clone(), p.clone()],
+            vec![("v", Output::matrix(&sp.contact_velocities))],
+        ),
+        spec(
+            "energy",
+            "Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with \
+             V = m g z_C (J)."
+                .into(),
+            vec![x.clone(), p.clone()],
+            vec![
+                ("kinetic", Output::scalar(sp.kinetic)),
+                ("total", Output::scalar(sp.energy)),
+            ],
+        ),
+    ];
+    let mut functions = fns;
+    if variant == Variant::Full {
+        let geo = &d.geo;
+        let outs = [
+            geo.a1,
+            geo.a2,
+            geo.s1,
+            geo.s2,
+            geo.b,
+            geo.sin_tau,
+            geo.cos_tau,
+            geo.eta_c,
+            geo.z_c,
+            geo.kl,
+            geo.bl,
+        ];
+        functions.push(spec(
+            "geometry",
+            "Planar geometry at γ (m): a1, a2 (paper (1)), S1, S2 (2), b = BB1, sin τ, cos τ, η_C, z_C \
+             (3), KL, BL (5)."
+                .into(),
+            vec![x, p],
+            vec![("geo", Output::vector(&outs))],
+        ));
+    }
+    Module {
+        name: variant.module_name().to_owned(),
+        doc: format!(
+            "Rigid peg leaning on the hole edge at K, B1, B2 (seed 000), variant `{variant:?}`, derived \
+             by the generator (equations/src/models/rigid_peg.rs).\n\
+             State x = ({}); parameters p = (D_hole, d_peg, H, m, g, f, gamma0); loads = ({}){}.\n\
+             Vectors in rotating components (e_η, e_n, e_z). SI units.",
+            names(&sp.state),
+            names(&sp.loads),
+            if sp.friction_dir.is_empty() {
+                String::new()
+            } else {
+                format!(
+                    "; friction directions t = ({}) (unit, force on the peg)",
+                    names(&sp.friction_dir)
+                )
+            }
+        ),
+        functions,
+    }
+}
+
+fn spec(name: &str, doc: String, inputs: Vec<Input>, outputs: Vec<(&str, Output)>) -> FnSpec {
+    FnSpec {
+        name: name.to_owned(),
+        doc,
+        inputs,
+        outputs: outputs
+            .into_iter()
+            .map(|(n, o)| (n.to_owned(), o))
+            .collect(),
+    }
+}
