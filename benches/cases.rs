@@ -174,8 +174,40 @@ pub fn physical_inputs(module: &str, input: &str) -> Option<Vec<f64>> {
             Some(params.vector(&load).as_slice().to_vec())
         }
         ("hertz", "load") => Some(vec![12.5]),
+        (m, input) if m.starts_with("rigid_peg") => rigid_inputs(m.contains("planar"), input),
         _ => None,
     }
+}
+
+/// The rigid peg of Fig. 9 at γ = 0.3 rad, ψ = 0, (γ̇, ψ̇) = (−2, 10) 1/s
+/// (planar: ψ̇ = 0), small applied loads, friction opposing the sliding.
+fn rigid_inputs(planar: bool, input: &str) -> Option<Vec<f64>> {
+    use nalgebra::Vector2;
+    use pegdyn::rigid::hand::Pose;
+    use pegdyn::rigid::hand_dynamics::friction_directions;
+    use pegdyn::rigid::{Loads, PegParams};
+    let p = PegParams::fig9();
+    let (gamma, qd) = (0.3, Vector2::new(-2.0, if planar { 0.0 } else { 10.0 }));
+    let loads = Loads {
+        m_gamma: 0.02,
+        m_psi: 0.0,
+        force: [0.3, 0.0, 1.5],
+    };
+    let pose = Pose::try_new(&p, gamma, 0.0).ok()?;
+    let t = friction_directions(&pose.kinematics(qd)).ok()?;
+    let v = match (planar, input) {
+        (_, "p") => p.to_vector().as_slice().to_vec(),
+        (false, "x") => vec![gamma, 0.0, qd[0], qd[1]],
+        (true, "x") => vec![gamma, qd[0]],
+        (false, "loads") => loads.to_vector().as_slice().to_vec(),
+        (true, "loads") => vec![loads.m_gamma, loads.force[0], loads.force[2]],
+        (false, "t") => t.iter().flat_map(|v| v.iter().copied()).collect(),
+        (true, "t") => vec![t[0][0], t[0][2], t[1][0], t[1][2]],
+        (false, "qdd") => vec![3.0, -40.0],
+        (true, "qdd") => vec![3.0],
+        _ => return None,
+    };
+    Some(v)
 }
 
 /// Outputs of a generated function flattened like `FnSpec::interpret`

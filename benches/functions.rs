@@ -91,6 +91,35 @@ pub fn bench(c: &mut Criterion) {
     compare!(c, cases, quasi_static::edge_only(pose, load, acc, p) => hand::quasi_static::edge_only);
     compare!(c, cases, quasi_static::tip_only(pose, load, acc, p) => hand::quasi_static::tip_only);
     compare!(c, cases, quasi_static::whitney_tip(pose, w, q) => hand::quasi_static::whitney_tip);
+    compare!(c, cases, rigid_peg::forward(x, p, loads, t) => hand::rigid_peg::forward);
+    compare!(c, cases, rigid_peg::prescribed(x, qdd, p, loads, t) => hand::rigid_peg::prescribed);
+    compare!(c, cases, rigid_peg::contact_velocities(x, p) => hand::rigid_peg::contact_velocities);
+    compare!(c, cases, rigid_peg::energy(x, p) => hand::rigid_peg::energy);
+    compare!(c, cases, rigid_peg::geometry(x, p));
+    compare!(c, cases, rigid_peg_frictionless::forward(x, p, loads) => hand::rigid_peg_frictionless::forward);
+    compare!(c, cases, rigid_peg_frictionless::prescribed(x, qdd, p, loads) => hand::rigid_peg_frictionless::prescribed);
+    compare!(c, cases, rigid_peg_frictionless::contact_velocities(x, p) => hand::rigid_peg_frictionless::contact_velocities);
+    compare!(c, cases, rigid_peg_frictionless::energy(x, p) => hand::rigid_peg_frictionless::energy);
+    compare!(c, cases, rigid_peg_planar::forward(x, p, loads, t));
+    compare!(c, cases, rigid_peg_planar::prescribed(x, qdd, p, loads, t));
+    compare!(c, cases, rigid_peg_planar::contact_velocities(x, p));
+    compare!(c, cases, rigid_peg_planar::energy(x, p));
+    compare!(
+        c,
+        cases,
+        rigid_peg_planar_frictionless::forward(x, p, loads)
+    );
+    compare!(
+        c,
+        cases,
+        rigid_peg_planar_frictionless::prescribed(x, qdd, p, loads)
+    );
+    compare!(
+        c,
+        cases,
+        rigid_peg_planar_frictionless::contact_velocities(x, p)
+    );
+    compare!(c, cases, rigid_peg_planar_frictionless::energy(x, p));
     let missing = cases.remaining();
     assert!(
         missing.is_empty(),

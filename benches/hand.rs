@@ -260,3 +260,124 @@ pub mod quasi_static {
         (f.tip, f.edge, m)
     }
 }
+
+/// The rigid peg on three points (seed 000): `pegdyn::rigid::hand` and
+/// `hand_dynamics` (hand-derived) from the generated functions' inputs
+/// `x = (γ, ψ, γ̇, ψ̇)`, `p = (D, d, H, m, g, f, γ0)`,
+/// `loads = (M_γ, M_ψ, F_x, F_y, F_z)`, `t` = friction directions at K, B1,
+/// B2 (local components). The hand path includes building the pose from γ,
+/// ψ (its geometry), as the generated code does. NaN outside the
+/// three-point range.
+pub mod rigid_peg {
+    use super::*;
+    use nalgebra::{Matrix3, Vector3};
+    use pegdyn::rigid::hand::Pose;
+    use pegdyn::rigid::hand_dynamics::{
+        forward_system, kinetic_energy, potential_energy, prescribed_system,
+    };
+    use pegdyn::rigid::{Loads, PegParams};
+
+    pub(crate) fn params(p: &V<7>) -> PegParams {
+        PegParams {
+            hole_diameter: p[0],
+            peg_diameter: p[1],
+            height: p[2],
+            mass: p[3],
+            gravity: p[4],
+            friction: p[5],
+        }
+    }
+
+    fn loads(l: &V<5>) -> Loads {
+        Loads {
+            m_gamma: l[0],
+            m_psi: l[1],
+            force: [l[2], l[3], l[4]],
+        }
+    }
+
+    fn directions(t: &V<9>) -> [Vector3<f64>; 3] {
+        [0, 3, 6].map(|k| Vector3::new(t[k], t[k + 1], t[k + 2]))
+    }
+
+    type System = (SMatrix<f64, 5, 5>, V<5>);
+
+    fn nan_system() -> System {
+        (SMatrix::repeat(f64::NAN), V::repeat(f64::NAN))
+    }
+
+    /// `forward_system`: `A u = b` for `u = (γ̈, ψ̈, N_K, N_B1, N_B2)`.
+    pub fn forward(x: &V<4>, p: &V<7>, l: &V<5>, t: &V<9>) -> System {
+        let pp = params(p);
+        let Ok(pose) = Pose::try_new(&pp, x[0], x[1]) else {
+            return nan_system();
+        };
+        forward_system(
+            &pp,
+            &loads(l),
+            &pose,
+            Vector2::new(x[2], x[3]),
+            &directions(t),
+        )
+    }
+
+    /// `prescribed_system`: `A u = b` for `u = (M_γ, M_ψ, N_K, N_B1, N_B2)`.
+    pub fn prescribed(x: &V<4>, qdd: &V<2>, p: &V<7>, l: &V<5>, t: &V<9>) -> System {
+        let pp = params(p);
+        let Ok(pose) = Pose::try_new(&pp, x[0], x[1]) else {
+            return nan_system();
+        };
+        let qd = Vector2::new(x[2], x[3]);
+        prescribed_system(&pp, &loads(l), &pose, qd, *qdd, &directions(t))
+    }
+
+    /// Contact-point velocities in local components (rows K, B1, B2).
+    pub fn contact_velocities(x: &V<4>, p: &V<7>) -> SMatrix<f64, 3, 3> {
+        let Ok(pose) = Pose::try_new(&params(p), x[0], x[1]) else {
+            return Matrix3::repeat(f64::NAN);
+        };
+        let kin = pose.kinematics(Vector2::new(x[2], x[3]));
+        Matrix3::from_fn(|i, k| kin.v_contacts_local[i][k])
+    }
+
+    /// `(T, T + V)`.
+    pub fn energy(x: &V<4>, p: &V<7>) -> (f64, f64) {
+        let pp = params(p);
+        let Ok(pose) = Pose::try_new(&pp, x[0], x[1]) else {
+            return (f64::NAN, f64::NAN);
+        };
+        let t = kinetic_energy(&pp, &pose, &pose.kinematics(Vector2::new(x[2], x[3])));
+        (t, t + potential_energy(&pp, &pose))
+    }
+}
+
+/// The frictionless rigid peg: the hand forms of [`rigid_peg`] with `f = 0`.
+pub mod rigid_peg_frictionless {
+    use super::*;
+
+    fn frictionless(p: &V<7>) -> V<7> {
+        let mut q = *p;
+        q[5] = 0.0;
+        q
+    }
+
+    /// [`rigid_peg::forward`] at `f = 0` (no friction directions).
+    pub fn forward(x: &V<4>, p: &V<7>, l: &V<5>) -> (SMatrix<f64, 5, 5>, V<5>) {
+        super::rigid_peg::forward(x, &frictionless(p), l, &V::zeros())
+    }
+
+    /// [`rigid_peg::prescribed`] at `f = 0` (no friction directions).
+    pub fn prescribed(x: &V<4>, qdd: &V<2>, p: &V<7>, l: &V<5>) -> (SMatrix<f64, 5, 5>, V<5>) {
+        super::rigid_peg::prescribed(x, qdd, &frictionless(p), l, &V::zeros())
+    }
+
+    /// [`rigid_peg::contact_velocities`].
+    pub fn contact_velocities(x: &V<4>, p: &V<7>) -> SMatrix<f64, 3, 3> {
+        super::rigid_peg::contact_velocities(x, p)
+    }
+
+    /// [`rigid_peg::energy`].
+    pub fn energy(x: &V<4>, p: &V<7>) -> (f64, f64) {
+        super::rigid_peg::energy(x, p)
+    }
+}

@@ -9,12 +9,21 @@ use nalgebra::{SVector, Vector2};
 use pegdyn::compliant::CompliantSystem;
 use pegdyn::integrate::{Direction, Event, Method, Options, Solution, Solver};
 use pegdyn::reference_problems::{Pendulum, StiffLinear, VanDerPol};
-use pegdyn::rigid::PegParams;
-use pegdyn::rigid::prescribed::{fig9_rows, gamma_grid};
+use pegdyn::rigid::prescribed::{fig9_rows, gamma_grid, reactions, reactions_hand};
+use pegdyn::rigid::{Loads, PegParams, RigidError};
 use pegdyn::system::OdeSystem;
 use std::hint::black_box;
 
 use super::cases::insertion_scene;
+
+/// The signature of `reactions` and `reactions_hand`.
+type Reactions = fn(
+    &PegParams,
+    &Loads,
+    Vector2<f64>,
+    Vector2<f64>,
+    Vector2<f64>,
+) -> Result<pegdyn::rigid::prescribed::Reactions, RigidError>;
 
 /// Integrates without storing the trajectory; `events` are made by
 /// `event` (a fresh terminal event per run, if any).
@@ -77,6 +86,31 @@ pub fn bench(c: &mut Criterion) {
     let gammas = gamma_grid(g0, g0 * 1.000_001, 0.5, 400);
     c.bench_function("fig9/rows/400x2", |b| {
         b.iter(|| fig9_rows(black_box(&peg), &gammas, -2.0, &[0.0, 10.0]).expect("fig9"))
+    });
+    // The same 800 reactions through the generated model (what fig9_rows
+    // uses) and through the hand-derived one.
+    let all_reactions = |f: Reactions| {
+        let mut sum = 0.0;
+        for psidot in [0.0, 10.0] {
+            for &gamma in &gammas {
+                let q = Vector2::new(black_box(gamma), 0.0);
+                let r = f(
+                    &peg,
+                    &Loads::default(),
+                    q,
+                    Vector2::new(-2.0, psidot),
+                    Vector2::zeros(),
+                );
+                sum += r.expect("three-point range").normal[1];
+            }
+        }
+        sum
+    };
+    c.bench_function("fig9/reactions/generated/400x2", |b| {
+        b.iter(|| all_reactions(reactions))
+    });
+    c.bench_function("fig9/reactions/hand/400x2", |b| {
+        b.iter(|| all_reactions(reactions_hand))
     });
 
     // The compliant insertion scene, to the target depth 0.03 m (event).

@@ -1,7 +1,7 @@
 //! The hand-derived closed forms the benches time against the generated
 //! code (`benches/hand.rs`: textbook pendulum, double pendulum and cart-pole
 //! from their closed-form mass matrices and forcing, Hertz (9)–(13), the
-//! quasi-static Eqs. 51–54) agree with the generated functions on seeded
+//! quasi-static Eqs. 51–54, the rigid peg's `rigid::hand_dynamics`) agree with the generated functions on seeded
 //! inputs. Two independent derivations of the same physics; a bench that
 //! timed a wrong hand form would compare nothing.
 
@@ -52,6 +52,12 @@ fn hand_forms_match_generated_code() {
             diff!(c, quasi_static::edge_only(pose, load, acc, p)),
             diff!(c, quasi_static::tip_only(pose, load, acc, p)),
             diff!(c, quasi_static::whitney_tip(pose, w, q)),
+            diff!(c, rigid_peg::forward(x, p, loads, t)),
+            diff!(c, rigid_peg::prescribed(x, qdd, p, loads, t)),
+            diff!(c, rigid_peg::contact_velocities(x, p)),
+            diff!(c, rigid_peg::energy(x, p)),
+            diff!(c, rigid_peg_frictionless::forward(x, p, loads)),
+            diff!(c, rigid_peg_frictionless::prescribed(x, qdd, p, loads)),
         ];
         for (k, d) in diffs.iter().enumerate() {
             assert!(
