@@ -6,8 +6,8 @@
 //! outside the timed loop). Before timing, the hand form is checked against
 //! the generated code (relative difference ≤ 1e-9).
 //!
-//! Adding a model: one `compare!` line per function (with `=> hand::…` when
-//! a hand form exists). Every registered generated function must appear:
+//! Adding a model: one line per function in `benches/list.rs` (with
+//! `=> hand::…` when a hand form exists). Every registered generated function must appear:
 //! the bench panics naming any it does not time.
 
 use criterion::{BenchmarkGroup, Criterion, measurement::WallTime};
@@ -65,61 +65,7 @@ macro_rules! compare {
 /// Registers the per-function groups.
 pub fn bench(c: &mut Criterion) {
     let mut cases = Cases::new(0);
-    compare!(c, cases, pendulum::dynamics(x, p) => hand::pendulum::dynamics);
-    compare!(c, cases, pendulum::rhs(x, p) => hand::pendulum::rhs);
-    compare!(c, cases, pendulum::jacobian_terms(x, qdd, p) => hand::pendulum::jacobian_terms);
-    compare!(c, cases, pendulum::energy(x, p) => hand::pendulum::energy);
-    compare!(c, cases, double_pendulum::dynamics(x, p) => hand::double_pendulum::dynamics);
-    compare!(c, cases, double_pendulum::rhs(x, p) => hand::double_pendulum::rhs);
-    compare!(c, cases, double_pendulum::jacobian_terms(x, qdd, p) => hand::double_pendulum::jacobian_terms);
-    compare!(c, cases, double_pendulum::energy(x, p) => hand::double_pendulum::energy);
-    compare!(c, cases, cart_pole::dynamics(x, p) => hand::cart_pole::dynamics);
-    compare!(c, cases, cart_pole::rhs(x, p) => hand::cart_pole::rhs);
-    compare!(c, cases, cart_pole::jacobian_terms(x, qdd, p) => hand::cart_pole::jacobian_terms);
-    compare!(c, cases, cart_pole::energy(x, p) => hand::cart_pole::energy);
-    compare!(c, cases, hertz::ellipse(load, k) => hand::hertz::ellipse);
-    compare!(c, cases, hertz::stiffness(k) => hand::hertz::stiffness);
-    compare!(c, cases, compliant_peg::rhs(y, p));
-    compare!(c, cases, compliant_peg::jacobian(y, p));
-    compare!(c, cases, compliant_peg::contacts(y, p));
-    compare!(c, cases, compliant_peg::energy(y, p));
-    compare!(c, cases, compliant_peg_lean::rhs(y, p));
-    compare!(c, cases, compliant_peg_lean::jacobian(y, p));
-    compare!(c, cases, compliant_peg_lean::contacts(y, p));
-    compare!(c, cases, compliant_peg_lean::energy(y, p));
-    compare!(c, cases, quasi_static::two_point(pose, load, acc, p) => hand::quasi_static::two_point);
-    compare!(c, cases, quasi_static::edge_only(pose, load, acc, p) => hand::quasi_static::edge_only);
-    compare!(c, cases, quasi_static::tip_only(pose, load, acc, p) => hand::quasi_static::tip_only);
-    compare!(c, cases, quasi_static::whitney_tip(pose, w, q) => hand::quasi_static::whitney_tip);
-    compare!(c, cases, rigid_peg::forward(x, p, loads, t) => hand::rigid_peg::forward);
-    compare!(c, cases, rigid_peg::prescribed(x, qdd, p, loads, t) => hand::rigid_peg::prescribed);
-    compare!(c, cases, rigid_peg::contact_velocities(x, p) => hand::rigid_peg::contact_velocities);
-    compare!(c, cases, rigid_peg::energy(x, p) => hand::rigid_peg::energy);
-    compare!(c, cases, rigid_peg::geometry(x, p));
-    compare!(c, cases, rigid_peg_frictionless::forward(x, p, loads) => hand::rigid_peg_frictionless::forward);
-    compare!(c, cases, rigid_peg_frictionless::prescribed(x, qdd, p, loads) => hand::rigid_peg_frictionless::prescribed);
-    compare!(c, cases, rigid_peg_frictionless::contact_velocities(x, p) => hand::rigid_peg_frictionless::contact_velocities);
-    compare!(c, cases, rigid_peg_frictionless::energy(x, p) => hand::rigid_peg_frictionless::energy);
-    compare!(c, cases, rigid_peg_planar::forward(x, p, loads, t));
-    compare!(c, cases, rigid_peg_planar::prescribed(x, qdd, p, loads, t));
-    compare!(c, cases, rigid_peg_planar::contact_velocities(x, p));
-    compare!(c, cases, rigid_peg_planar::energy(x, p));
-    compare!(
-        c,
-        cases,
-        rigid_peg_planar_frictionless::forward(x, p, loads)
-    );
-    compare!(
-        c,
-        cases,
-        rigid_peg_planar_frictionless::prescribed(x, qdd, p, loads)
-    );
-    compare!(
-        c,
-        cases,
-        rigid_peg_planar_frictionless::contact_velocities(x, p)
-    );
-    compare!(c, cases, rigid_peg_planar_frictionless::energy(x, p));
+    for_each_function!(compare!(c, cases));
     let missing = cases.remaining();
     assert!(
         missing.is_empty(),

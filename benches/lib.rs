@@ -10,6 +10,8 @@
 use criterion::{criterion_group, criterion_main};
 use std::time::Duration;
 
+#[macro_use]
+mod list;
 mod cases;
 mod functions;
 mod hand;
