@@ -6,7 +6,7 @@
 
 use criterion::Criterion;
 use nalgebra::{SVector, Vector2};
-use pegdyn::compliant::CompliantSystem;
+use pegdyn::compliant::{CompliantSystem, Load, PegState};
 use pegdyn::integrate::{Direction, Event, Method, Options, Solution, Solver};
 use pegdyn::reference_problems::{Pendulum, StiffLinear, VanDerPol};
 use pegdyn::rigid::prescribed::{fig9_rows, gamma_grid, reactions, reactions_hand};
@@ -133,6 +133,27 @@ pub fn bench(c: &mut Criterion) {
             (Method::Rodas3, 1e-6),
         ],
         Some(&inserted),
+    );
+
+    // A jammed peg (stiff: the peg rests on its contacts, μ·f_B balancing
+    // the load): pushed sideways against the wall with 50 N, 2 N down.
+    let jam = CompliantSystem::new(
+        &params,
+        &Load {
+            axial: 2.0,
+            radial: 50.0,
+            torque: 0.0,
+        },
+    );
+    let mut side = PegState::centred(&params, 0.02);
+    side.x = 0.025 - params.spec.geometry.peg_radius + 2e-7;
+    integrations(
+        c,
+        "jammed",
+        &jam,
+        (side.to_vector(), 0.5),
+        &[(Method::Dopri5, 1e-6), (Method::Rodas3, 1e-6)],
+        None,
     );
 
     // Reference problems: the pendulum over ~5 periods (non-stiff), the

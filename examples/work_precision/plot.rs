@@ -27,18 +27,18 @@ fn panel(title: &str, unit: &str, points: &[Point], err: fn(&Point) -> f64, ref_
                 .styled(Style::LineMarkers)
                 .colored(color),
         );
-        let flagged: Vec<(f64, f64)> = points
-            .iter()
-            .filter(|p| p.method == *method && !p.resolved && err(p).is_finite())
-            .map(|p| (p.wall_s, err(p)))
-            .collect();
-        if !flagged.is_empty() {
-            panel = panel.with(
-                Series::line(format!("{method}: below 2x reference error"), flagged)
-                    .styled(Style::Markers)
-                    .colored(7),
-            );
-        }
+    }
+    let flagged: Vec<(f64, f64)> = points
+        .iter()
+        .filter(|p| !p.resolved && err(p).is_finite())
+        .map(|p| (p.wall_s, err(p)))
+        .collect();
+    if !flagged.is_empty() {
+        panel = panel.with(
+            Series::line("below 2x the reference error (not judged)", flagged)
+                .styled(Style::Markers)
+                .colored(7),
+        );
     }
     if ref_err > 0.0 && t_hi > 0.0 {
         panel = panel.with(
