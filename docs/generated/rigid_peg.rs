@@ -510,19 +510,19 @@ pub mod rigid_peg {
             + m * g * (-(d_hole * t3 * t5 * t8) + cos_gamma * t11);
         (kinetic, total)
     }
-    /// Planar geometry at γ (m): a1, a2 (paper (1)), S1, S2 (2), b = BB1, sin τ, cos τ, η_C, z_C (3), KL, BL (5).
+    /// Planar geometry at γ (m): a1, a2 (paper (1)), S1, S2 (2), b = BB1, sin τ, cos τ, η_C, z_C (3), KL, BL (5), η_L, z_L (4b).
     ///
     /// # Inputs
     /// - `x` = (`gamma`, `psi`, `gammadot`, `psidot`)
     /// - `p` = (`D_hole`, `d_peg`, `H`, `m`, `g`, `f`, `gamma0`)
     ///
     /// # Outputs
-    /// - `geo`: vector of 11
+    /// - `geo`: vector of 13
     ///
     /// # Cost
-    /// 10 add/sub, 51 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 18 `let`s.
+    /// 10 add/sub, 56 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 18 `let`s.
     #[inline]
-    pub fn geometry(x: &SVector<f64, 4>, p: &SVector<f64, 7>) -> SVector<f64, 11> {
+    pub fn geometry(x: &SVector<f64, 4>, p: &SVector<f64, 7>) -> SVector<f64, 13> {
         let gamma = x[0];
         let d_hole = p[0];
         let d_peg = p[1];
@@ -550,7 +550,7 @@ pub mod rigid_peg {
         let t15 = t10.hypot(t11);
         SMatrix::<
             f64,
-            11,
+            13,
             1,
         >::from_row_slice(
             &[
@@ -565,6 +565,8 @@ pub mod rigid_peg {
                 t7 + cos_gamma * (0.5 * h - 0.5 * t5 * t6),
                 -2.0 * d_hole * t2 * t3 * t12,
                 2.0 * t15,
+                -t6 * t9,
+                -2.0 * d_hole * t2 * t3 * t6,
             ],
         )
     }

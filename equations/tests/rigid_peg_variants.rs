@@ -3,7 +3,9 @@
 //! row vanish identically (the planar motion solves the 2-DOF equations);
 //! every variant's residual is linear in its unknowns, so A = ∂R/∂u and
 //! b = −R(0) are exact; the mass matrix is diagonal; the normal forces do
-//! no virtual work; and substitution is simultaneous and simplifying.
+//! no virtual work; the transport-theorem v_C and a_C equal the fixed-frame
+//! derivatives rotated by −ψ; and substitution is simultaneous and
+//! simplifying.
 
 use pegdyn_equations::models::rigid_peg::{self, Derivation};
 use pegdyn_equations::models::rigid_peg_module::{Variant, specialize};
@@ -117,4 +119,57 @@ fn substitution_is_simultaneous_and_simplifies() {
     assert_eq!((x * z + y * z).subs(&[(y, -x)]), g.constant(0.0));
     assert_eq!((x.cos() * z).subs(&[(x, g.constant(0.0))]), z);
     assert_eq!(e.subs(&[(z, x)]), e, "untouched expressions keep their id");
+}
+
+#[test]
+fn transport_theorem_equals_the_fixed_frame_derivatives() {
+    // C in fixed components, differentiated twice by the generator, then
+    // rotated by −ψ with numbers: the transport-theorem v_C and a_C.
+    let g = Graph::new();
+    let d = rigid_peg::derive(&g);
+    let [gamma, psi, gd, pd] = d.state;
+    let [gdd, pdd] = d.accel;
+    let (eta, z) = (d.geo.eta_c, d.geo.z_c);
+    let fixed = [eta * psi.cos(), eta * psi.sin(), z];
+    let pairs = [(gamma, gd), (psi, pd), (gd, gdd), (pd, pdd)];
+    let v = fixed.map(|c| c.dt(&pairs[..2]));
+    let a = v.map(|c| c.dt(&pairs));
+    let names: Vec<String> = g.symbols().iter().map(|(_, i)| i.name.clone()).collect();
+    let index = |n: &str| names.iter().position(|x| x == n).expect(n);
+    let mut vals = vec![0.0; names.len()];
+    for (n, x) in [("D_hole", 0.05), ("d_peg", 0.04995), ("H", 0.07)] {
+        vals[index(n)] = x;
+    }
+    vals[index("gamma0")] = 2.0 * (0.00005f64 / 0.1).sqrt().asin();
+    let states = [
+        [0.05, 0.3, -2.0, 10.0, 1.0, -3.0],
+        [0.4, -2.0, 1.5, -3.0, -20.0, 4.0],
+        [1.2, 2.5, -0.3, 0.7, 0.5, 0.5],
+    ];
+    for st in states {
+        for (n, x) in ["gamma", "psi", "gammadot", "psidot", "gammaddot", "psiddot"]
+            .iter()
+            .zip(st)
+        {
+            vals[index(n)] = x;
+        }
+        let (s, c) = st[1].sin_cos();
+        let local = |w: [Expr<'_>; 3]| {
+            let w = w.map(|e| eval_at(&g, e, &vals));
+            [c * w[0] + s * w[1], -s * w[0] + c * w[1], w[2]]
+        };
+        for (fixed, rotating) in [(v, d.com_velocity), (a, d.com_acceleration)] {
+            let want = local(fixed);
+            let got = rotating.map(|e| eval_at(&g, e, &vals));
+            let scale = want.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+            for k in 0..3 {
+                assert!(
+                    (got[k] - want[k]).abs() < 1e-13 * scale,
+                    "component {k} at {st:?}: {} vs {}",
+                    got[k],
+                    want[k]
+                );
+            }
+        }
+    }
 }

@@ -68,6 +68,10 @@ pub struct Derivation<'g> {
     /// Residual rows, zero on solutions: `[M q̈ − f]_γ`, `[M q̈ − f]_ψ`, then
     /// `m a_C − F − m g − Σ N_i (n_i + f t_i)` along e_η, e_n, e_z.
     pub residual: [Expr<'g>; 5],
+    /// Velocity v_C of the centre of mass, rotating components (m/s).
+    pub com_velocity: Vec3<'g>,
+    /// Acceleration a_C of the centre of mass, rotating components (m/s²).
+    pub com_acceleration: Vec3<'g>,
     /// Material velocity of the peg at K, B1, B2 (m/s).
     pub contact_velocities: [Vec3<'g>; 3],
     /// Kinetic energy T (J).
@@ -164,6 +168,8 @@ pub fn derive(g: &Graph) -> Derivation<'_> {
         normal,
         friction_dir,
         residual: [rows[0], rows[1], rows[2], rows[3], rows[4]],
+        com_velocity: v_c,
+        com_acceleration: a_c,
         contact_velocities,
         kinetic,
         energy: lag.energy,

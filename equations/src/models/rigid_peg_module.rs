@@ -291,11 +291,13 @@ pub fn build(g: &Graph, variant: Variant) -> Module {
             geo.z_c,
             geo.kl,
             geo.bl,
+            geo.centre_l[0],
+            geo.centre_l[1],
         ];
         functions.push(spec(
             "geometry",
             "Planar geometry at γ (m): a1, a2 (paper (1)), S1, S2 (2), b = BB1, sin τ, cos τ, η_C, z_C \
-             (3), KL, BL (5)."
+             (3), KL, BL (5), η_L, z_L (4b)."
                 .into(),
             vec![x, p],
             vec![("geo", Output::vector(&outs))],
@@ -307,7 +309,7 @@ pub fn build(g: &Graph, variant: Variant) -> Module {
             "Rigid peg leaning on the hole edge at K, B1, B2 (seed 000), variant `{variant:?}`, derived \
              by the generator (equations/src/models/rigid_peg.rs).\n\
              State x = ({}); parameters p = (D_hole, d_peg, H, m, g, f, gamma0); loads = ({}){}.\n\
-             Vectors in rotating components (e_η, e_n, e_z). SI units.",
+             Vectors in rotating components (e_η, e_n, e_z){}. SI units.",
             names(&sp.state),
             names(&sp.loads),
             if sp.friction_dir.is_empty() {
@@ -317,6 +319,11 @@ pub fn build(g: &Graph, variant: Variant) -> Module {
                     "; friction directions t = ({}) (unit, force on the peg)",
                     names(&sp.friction_dir)
                 )
+            },
+            if variant.is_planar() {
+                "; ψ ≡ 0, so `F_x` is the in-plane horizontal force (along e_η) and N_B = N_B1 = N_B2"
+            } else {
+                ""
             }
         ),
         functions,
