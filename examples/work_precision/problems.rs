@@ -1,0 +1,123 @@
+//! The dynamic systems of the study, each with its start, end time, the
+//! state components whose error is reported, and the method settings.
+
+use nalgebra::SVector;
+use pegdyn::compliant::{CompliantParams, CompliantSpec, CompliantSystem, Load, PegState};
+use pegdyn::scene::double_pendulum::{DoublePendulumParams, DoublePendulumSystem};
+use pegdyn::scene::pendulum::{PendulumParams, PendulumSystem};
+
+/// One problem: a system from `y0` at t = 0 to `t_end`.
+pub struct Problem<const N: usize, S> {
+    /// Name used in file names and tables.
+    pub name: &'static str,
+    /// What it is and why `t_end` is what it is.
+    pub about: &'static str,
+    /// The system.
+    pub system: S,
+    /// Initial state.
+    pub y0: SVector<f64, N>,
+    /// End time (s).
+    pub t_end: f64,
+    /// State components whose error is reported (the coordinates), and
+    /// their unit.
+    pub coords: (&'static [usize], &'static str),
+    /// `atol = atol_scale · rtol` (the state's scale).
+    pub atol_scale: f64,
+    /// RK4 steps (s).
+    pub rk4_steps: &'static [f64],
+    /// DOPRI5 relative tolerances.
+    pub dopri5_rtols: &'static [f64],
+    /// RODAS3 relative tolerances.
+    pub rodas3_rtols: &'static [f64],
+    /// Reference: DOPRI5 at this rtol; its error is estimated against a run
+    /// at 10× this rtol.
+    pub reference_rtol: f64,
+}
+
+const DOPRI5_RTOLS: &[f64] = &[
+    1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12,
+];
+const RODAS3_RTOLS: &[f64] = &[1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8];
+
+/// `scenes/pendulum.toml`: released from rest at 60°, five periods.
+pub fn pendulum() -> Problem<2, PendulumSystem> {
+    let p = PendulumParams {
+        length: 1.0,
+        mass: 1.0,
+        gravity: 9.80665,
+        theta0_deg: 60.0,
+        omega0: 0.0,
+    };
+    Problem {
+        name: "pendulum",
+        about: "simple pendulum from rest at 60 deg (scenes/pendulum.toml), 10 s (about 4.7 periods)",
+        system: PendulumSystem::new(&p),
+        y0: SVector::<f64, 2>::new(60f64.to_radians(), 0.0),
+        t_end: 10.0,
+        coords: (&[0], "rad"),
+        atol_scale: 1.0,
+        rk4_steps: &[0.1, 0.05, 0.02, 0.01, 0.005, 0.002, 0.001],
+        dopri5_rtols: DOPRI5_RTOLS,
+        rodas3_rtols: RODAS3_RTOLS,
+        reference_rtol: 1e-14,
+    }
+}
+
+/// `scenes/double_pendulum.toml` (from rest at (120°, −10°)), cut at the
+/// horizon where a reference is still meaningful (see `t_end`).
+pub fn double_pendulum(t_end: f64) -> Problem<4, DoublePendulumSystem> {
+    let p = DoublePendulumParams {
+        mass1: 1.0,
+        mass2: 1.0,
+        length1: 1.0,
+        length2: 1.0,
+        gravity: 9.80665,
+        theta1_deg: 120.0,
+        theta2_deg: -10.0,
+        omega1: 0.0,
+        omega2: 0.0,
+    };
+    Problem {
+        name: "double_pendulum",
+        about: "double pendulum from rest at (120, -10) deg (scenes/double_pendulum.toml), cut at 5 s: it is \
+                chaotic, and the reference's own error estimate grows from 1e-13 rad at 5 s to 1e-9 at 12 s \
+                and 1.5e-6 at the scene's 20 s, where DOPRI5 at rtol 1e-6 is off by over 1 rad",
+        system: DoublePendulumSystem::new(&p),
+        y0: SVector::<f64, 4>::new(120f64.to_radians(), (-10f64).to_radians(), 0.0, 0.0),
+        t_end,
+        coords: (&[0, 1], "rad"),
+        atol_scale: 1.0,
+        rk4_steps: &[0.02, 0.01, 0.005, 0.002, 0.001, 0.0005],
+        dopri5_rtols: DOPRI5_RTOLS,
+        rodas3_rtols: RODAS3_RTOLS,
+        reference_rtol: 1e-14,
+    }
+}
+
+/// `scenes/insert_compliant.toml` (steel peg, D = 50 mm, c = 0.002,
+/// μ = 0.1, tilted 0.01 rad in two-point contact, f₁ = 5 N,
+/// M = −0.002 N·m), to 0.1 s (the peg reaches the 30 mm target at 0.11 s).
+pub fn insertion() -> Problem<8, CompliantSystem> {
+    let params = CompliantParams::try_new(CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, 0.1))
+        .expect("reference spec is valid");
+    let load = Load {
+        axial: 5.0,
+        radial: 0.0,
+        torque: -0.002,
+    };
+    let start = PegState::two_point(&params, 0.01, 0.0).expect("two-point start exists");
+    Problem {
+        name: "insert_compliant",
+        about: "compliant insertion (scenes/insert_compliant.toml) over 0.1 s: two-point contact, sliding, \
+                righting; stiff Hertz contacts (contact periods of microseconds)",
+        system: CompliantSystem::new(&params, &load),
+        y0: start.to_vector(),
+        t_end: 0.1,
+        coords: (&[0, 1, 2], "m or rad"),
+        atol_scale: 1e-4,
+        rk4_steps: &[4e-6, 2e-6, 1e-6, 5e-7],
+        dopri5_rtols: DOPRI5_RTOLS,
+        rodas3_rtols: RODAS3_RTOLS,
+        reference_rtol: 1e-14,
+    }
+}

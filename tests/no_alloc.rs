@@ -1,0 +1,188 @@
+//! The hot path allocates nothing: every generated right-hand side and
+//! Jacobian, and the `OdeSystem` adapters the integrators call (the
+//! compliant model's `rhs` / `jacobian` / `time_derivative`, the pendulum
+//! scenes' systems), are measured with a counting global allocator.
+//!
+//! The counter is per thread (the test harness allocates on other threads),
+//! and each measured closure is first called once outside the window so
+//! that lazy one-time initialisation cannot count.
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+use std::hint::black_box;
+
+use nalgebra::{SVector, Vector2, Vector4};
+use pegdyn::compliant::{
+    CompliantParams, CompliantSpec, CompliantSystem, ContactSet, Load, PegState,
+};
+use pegdyn::generated::{cart_pole, compliant_peg, compliant_peg_lean, double_pendulum, pendulum};
+use pegdyn::scene::double_pendulum::{DoublePendulumParams, DoublePendulumSystem};
+use pegdyn::scene::pendulum::{PendulumParams, PendulumSystem};
+use pegdyn::system::OdeSystem;
+
+struct Counting;
+
+thread_local! {
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+}
+
+// SAFETY: forwards every call to the system allocator unchanged; only
+// counts allocations of the current thread.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
+        // SAFETY: same contract as the caller's.
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: same contract as the caller's.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        let _ = ALLOCATIONS.try_with(|c| c.set(c.get() + 1));
+        // SAFETY: same contract as the caller's.
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+fn allocations() -> usize {
+    ALLOCATIONS.with(Cell::get)
+}
+
+/// Allocations made by 100 calls of `f` (after one warm-up call).
+fn allocs_of<R>(mut f: impl FnMut() -> R) -> usize {
+    black_box(f());
+    let before = allocations();
+    for _ in 0..100 {
+        black_box(f());
+    }
+    allocations() - before
+}
+
+#[test]
+fn the_counter_sees_allocations() {
+    assert_eq!(allocs_of(|| vec![1.0_f64; 8]), 100);
+}
+
+fn scene(contacts: ContactSet) -> (CompliantSystem, SVector<f64, 24>, SVector<f64, 8>) {
+    let mut spec = CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, 0.1);
+    spec.contacts = contacts;
+    let params = CompliantParams::try_new(spec).expect("reference spec");
+    let load = Load {
+        axial: 5.0,
+        radial: 0.0,
+        torque: -0.002,
+    };
+    let y = PegState::two_point(&params, 0.01, 0.0)
+        .expect("two-point start")
+        .to_vector();
+    (
+        CompliantSystem::new(&params, &load),
+        params.vector(&load),
+        y,
+    )
+}
+
+#[test]
+fn generated_compliant_rhs_and_jacobian_allocate_nothing() {
+    let (_, p, y) = scene(ContactSet::All);
+    assert_eq!(allocs_of(|| compliant_peg::rhs(black_box(&y), &p)), 0);
+    assert_eq!(allocs_of(|| compliant_peg::jacobian(black_box(&y), &p)), 0);
+    assert_eq!(allocs_of(|| compliant_peg_lean::rhs(black_box(&y), &p)), 0);
+    assert_eq!(
+        allocs_of(|| compliant_peg_lean::jacobian(black_box(&y), &p)),
+        0
+    );
+}
+
+#[test]
+fn compliant_ode_adapters_allocate_nothing() {
+    for contacts in [ContactSet::All, ContactSet::Lean] {
+        let (sys, _, y) = scene(contacts);
+        assert_eq!(allocs_of(|| sys.rhs(0.0, black_box(&y))), 0);
+        assert_eq!(allocs_of(|| sys.jacobian(0.0, black_box(&y))), 0);
+        assert_eq!(allocs_of(|| sys.time_derivative(0.0, black_box(&y))), 0);
+    }
+}
+
+#[test]
+fn generated_textbook_rhs_and_jacobian_terms_allocate_nothing() {
+    let x2 = Vector2::new(0.3, -0.2);
+    let p3 = SVector::<f64, 3>::from([1.0, 0.8, 9.81]);
+    let x4 = Vector4::new(0.3, -0.2, 0.5, 0.1);
+    let p5 = SVector::<f64, 5>::from([1.0, 0.7, 0.8, 0.6, 9.81]);
+    let q1 = SVector::<f64, 1>::new(0.4);
+    let q2 = Vector2::new(0.4, -0.3);
+    assert_eq!(allocs_of(|| pendulum::rhs(black_box(&x2), &p3)), 0);
+    assert_eq!(
+        allocs_of(|| pendulum::jacobian_terms(black_box(&x2), &q1, &p3)),
+        0
+    );
+    assert_eq!(allocs_of(|| double_pendulum::rhs(black_box(&x4), &p5)), 0);
+    assert_eq!(
+        allocs_of(|| double_pendulum::jacobian_terms(black_box(&x4), &q2, &p5)),
+        0
+    );
+    assert_eq!(allocs_of(|| cart_pole::rhs(black_box(&x4), &p5)), 0);
+    assert_eq!(
+        allocs_of(|| cart_pole::jacobian_terms(black_box(&x4), &q2, &p5)),
+        0
+    );
+}
+
+#[test]
+fn pendulum_ode_adapters_allocate_nothing() {
+    let single = PendulumSystem::new(&PendulumParams {
+        length: 1.0,
+        mass: 1.0,
+        gravity: 9.81,
+        theta0_deg: 60.0,
+        omega0: 0.0,
+    });
+    let x2 = Vector2::new(0.3, -0.2);
+    assert_eq!(allocs_of(|| single.rhs(0.0, black_box(&x2))), 0);
+    assert_eq!(allocs_of(|| single.jacobian(0.0, black_box(&x2))), 0);
+    let double = DoublePendulumSystem::new(&DoublePendulumParams {
+        mass1: 1.0,
+        mass2: 1.0,
+        length1: 1.0,
+        length2: 1.0,
+        gravity: 9.81,
+        theta1_deg: 120.0,
+        theta2_deg: -10.0,
+        omega1: 0.0,
+        omega2: 0.0,
+    });
+    let x4 = Vector4::new(0.3, -0.2, 0.5, 0.1);
+    assert_eq!(allocs_of(|| double.rhs(0.0, black_box(&x4))), 0);
+    assert_eq!(allocs_of(|| double.jacobian(0.0, black_box(&x4))), 0);
+}
+
+#[test]
+fn integration_steps_allocate_nothing() {
+    use pegdyn::integrate::{Method, Options, Solver};
+    // Allocations of a whole solve without stored output do not grow with
+    // the number of steps: the per-step path allocates nothing.
+    let (sys, _, y) = scene(ContactSet::All);
+    for method in [Method::Dopri5, Method::Rodas3, Method::Rk4 { h: 1e-5 }] {
+        let count = |t_end: f64| {
+            let mut o = Options::with_tolerances(1e-8, 1e-12);
+            o.store = false;
+            let before = allocations();
+            let sol = Solver::new(method, o)
+                .solve(&sys, 0.0, y, t_end)
+                .expect("valid options");
+            (allocations() - before, sol.stats.steps)
+        };
+        let (short, short_steps) = count(1e-3);
+        let (long, long_steps) = count(4e-3);
+        assert!(
+            long_steps > short_steps + 10,
+            "{method:?}: {short_steps} vs {long_steps} steps"
+        );
+        assert_eq!(short, long, "{method:?}: allocations grow with the steps");
+    }
+}
