@@ -1,4 +1,4 @@
-//! pegdyn
+#![doc = include_str!("../README.md")]
 
 // Generated code names the crate as `pegdyn::…` so that it reads the same
 // inside this crate and in the test harness that includes it.

@@ -2,9 +2,10 @@
 //! x = (γ, ψ, γ̇, ψ̇) (rad, rad, 1/s, 1/s), given loads, as an
 //! [`OdeSystem`] for the project's integrators.
 //!
-//! Every evaluation of the accelerations and reactions goes through the one
-//! private function [`accelerations`]; switching the integrator to the
-//! generated model (`rigid::generated_model::forward`) is a change there.
+//! Every evaluation of the accelerations and reactions goes through one
+//! private function, `accelerations`, which calls the generated model
+//! ([`super::generated_model::forward`]) in the smallest variant that
+//! represents the state.
 //!
 //! Friction ([`FrictionLaw`]): exact Coulomb, t_i = −v_i/|v_i| (sliding
 //! only; rest is handled by the stop event and [`super::stick`]), or
