@@ -8,10 +8,10 @@
 //! function that applies it, and is tried, in table order, each time a node
 //! of its site is built.
 //!
-//! To add a law, write its function (in [`super::laws`] or a new sibling
+//! To add a law, write its function (in `super::laws` or a new sibling
 //! module) and add a row. A [`Site::Sum`] rule must strictly decrease the
 //! number of `cos` occurrences in the sum (counted as a tree): that is the
-//! measure that proves the sum rules terminate, and [`rewrite_sum`] refuses
+//! measure that proves the sum rules terminate, and `rewrite_sum` refuses
 //! (and in debug builds reports) a rewrite that does not decrease it.
 
 use std::cell::Cell;
