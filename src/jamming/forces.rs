@@ -89,7 +89,8 @@ fn check_k3(
     theta: f64,
     (k1, k2, k3): (f64, f64, f64),
 ) -> Result<(f64, f64, f64), SlidingIndeterminate> {
-    if !(k3.abs() > 4.0 * f64::EPSILON * (1.0 + mu).powi(2)) {
+    let bound = 4.0 * f64::EPSILON * (1.0 + mu).powi(2);
+    if k3.is_nan() || k3.abs() <= bound {
         return Err(SlidingIndeterminate { theta, k3 });
     }
     Ok((k1, k2, k3))

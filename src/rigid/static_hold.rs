@@ -92,7 +92,8 @@ pub fn hold_at_rest(model: &ForwardModel, q: Vector2<f64>) -> Result<Option<Hold
         return Ok(None);
     };
     let residual = (&g * &lambda - &b).norm();
-    if !(residual <= RESIDUAL_TOL * (p.mass * p.gravity + b.norm())) {
+    let tol = RESIDUAL_TOL * (p.mass * p.gravity + b.norm());
+    if residual.is_nan() || residual > tol {
         return Ok(None);
     }
     let mut hold = Hold {
