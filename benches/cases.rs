@@ -161,6 +161,21 @@ pub fn insertion_scene() -> (CompliantParams, Load, PegState) {
     (params, load, start)
 }
 
+/// `scenes/align_forward.toml` (the shipped rigid forward scene, read from
+/// the file so that the benches follow it) and its forward model.
+pub fn align_forward_scene() -> (
+    pegdyn::scene::align_forward::AlignForwardScene,
+    pegdyn::rigid::forward::ForwardModel,
+) {
+    let text = include_str!("../scenes/align_forward.toml");
+    let scene: pegdyn::scene::align_forward::AlignForwardScene =
+        pegdyn::scene::document::Document::parse(text)
+            .and_then(|d| d.body())
+            .expect("shipped scene parses");
+    let model = scene.forward_model().expect("shipped scene is valid");
+    (scene, model)
+}
+
 /// Physical values for inputs whose random values would be meaningless:
 /// the compliant models at the insertion scene's start (contacts active),
 /// positive Hertz loads.

@@ -1,4 +1,5 @@
-//! Whole runs: the Fig. 9 table (seed 000), the compliant insertion scene
+//! Whole runs: the Fig. 9 table and the rigid forward alignment
+//! (`scenes/align_forward.toml`; seed 000), the compliant insertion scene
 //! (seed 001) and each integrator on a reference problem. Bench ids:
 //! `<scene>/<method>/<tolerance or step>`. Each integration prints its
 //! achieved error against a tight reference once, before timing, so that
@@ -14,7 +15,12 @@ use pegdyn::rigid::{Loads, PegParams, RigidError};
 use pegdyn::system::OdeSystem;
 use std::hint::black_box;
 
-use super::cases::insertion_scene;
+use super::cases::{align_forward_scene, insertion_scene};
+use pegdyn::integrate::OutputMode;
+use pegdyn::rigid::forward::ForwardModel;
+use pegdyn::rigid::stop::ForwardStop;
+use pegdyn::rigid::trajectory::{Trajectory, simulate};
+use pegdyn::scene::integrator::IntegratorSpec;
 
 /// The signature of `reactions` and `reactions_hand`.
 type Reactions = fn(
@@ -78,8 +84,81 @@ fn integrations<const N: usize, S: OdeSystem<N>>(
     }
 }
 
+/// The time and state of a rigid run's stop, if it has them.
+fn stop_point(stop: &ForwardStop) -> Option<(f64, Option<nalgebra::Vector4<f64>>)> {
+    match stop {
+        ForwardStop::TwoPointContact { t, state }
+        | ForwardStop::LiftOff { t, state, .. }
+        | ForwardStop::Painleve { t, state, .. } => Some((*t, Some(*state))),
+        ForwardStop::ReachedEnd { t } | ForwardStop::Stuck { t, .. } => Some((*t, None)),
+        _ => None,
+    }
+}
+
+/// The rigid forward alignment as the scene runs it: `simulate` with the
+/// scene's output times and span, `atol / rtol` as in the scene (1e-2).
+fn rigid_run(
+    model: &ForwardModel,
+    x0: nalgebra::Vector4<f64>,
+    spec: &IntegratorSpec,
+    method: Method,
+    rtol: f64,
+) -> Trajectory {
+    let mut o = Options::with_tolerances(rtol, rtol * spec.atol / spec.rtol);
+    o.output = OutputMode::AtTimes(spec.output_times());
+    simulate(model, x0, spec.t0, spec.t_end, method, &o).expect("valid scene")
+}
+
+/// `scenes/align_forward.toml` (Fig. 9 peg, f = 0.2, released at γ = 0.3
+/// rad with ψ̇ = 10 1/s under M_γ = −0.15 N·m; it stops at the lift-off of
+/// K at t ≈ 0.013 s). Prints, before timing, the stop event, the error of
+/// its time and of the state there against DOPRI5 at rtol 1e-13, and the
+/// work (the rigid `PegSystem` has no analytic Jacobian: each RODAS3
+/// Jacobian is a forward difference costing 5 right-hand sides, not
+/// counted in `rhs`).
+fn rigid_forward(c: &mut Criterion) {
+    let (scene, model) = align_forward_scene();
+    let x0 = scene.initial_state();
+    let spec = &scene.integrator;
+    let reference = rigid_run(&model, x0, spec, Method::Dopri5, 1e-13);
+    let (t_ref, x_ref) = stop_point(&reference.stop).expect("reference stops at an event");
+    for (method, rtol) in [
+        (Method::Dopri5, 1e-6),
+        (Method::Dopri5, 1e-10),
+        (Method::Rk4 { h: 1e-4 }, 1e-6),
+        (Method::Rodas3, 1e-6),
+    ] {
+        let id = format!("align_forward/{}", label(method, rtol));
+        let tr = rigid_run(&model, x0, spec, method, rtol);
+        let same = tr.stop.name() == reference.stop.name();
+        let (dt, dx) = match (stop_point(&tr.stop), same) {
+            (Some((t, x)), true) => (
+                (t - t_ref).abs(),
+                x.zip(x_ref).map_or(f64::NAN, |(x, y)| (x - y).amax()),
+            ),
+            _ => (f64::NAN, f64::NAN),
+        };
+        println!(
+            "{id}: stop `{}` (reference `{}`{}), event time error {dt:.2e} s, state error there {dx:.2e}, \
+             {} steps, {} rhs, {} jacobian, {} event calls",
+            tr.stop.name(),
+            reference.stop.name(),
+            if same { "" } else { ": DIFFERENT EVENT" },
+            tr.stats.steps,
+            tr.stats.rhs_calls,
+            tr.stats.jacobian_calls,
+            tr.stats.event_calls
+        );
+        c.bench_function(&id, |b| {
+            b.iter(|| rigid_run(&model, black_box(x0), spec, method, rtol))
+        });
+    }
+}
+
 /// Registers the whole-run benches.
 pub fn bench(c: &mut Criterion) {
+    rigid_forward(c);
+
     // Fig. 9: 400 γ (geometric from γ0(1 + 1e-6) to 0.5 rad) × ψ̇ ∈ {0, 10}.
     let peg = PegParams::fig9();
     let g0 = peg.gamma0();

@@ -196,3 +196,41 @@ fn two_point_segment_in_the_paper_plane_is_eqs_75_and_78() {
         assert!((q[1] - (c2 * q[0] + c1) / p.r).abs() < 1e-12, "{q:?}");
     }
 }
+
+/// With μ = 2 the factor k3 = (1 − μ²) sin θ + 2μ cos θ of Eq. 52 vanishes
+/// inside the physical range, at θ* = π − 2 atan μ ≈ 0.927 rad, where it
+/// rounds to 0 exactly. Every checked entry point (Whitney frame, moment,
+/// paper frame) returns the typed `SlidingIndeterminate` there, not ±∞ or
+/// NaN; one ulp-scale step away the unchecked forms agree with them.
+#[test]
+fn k3_exactly_zero_is_refused_by_every_checked_form() {
+    use pegdyn::jamming::SlidingIndeterminate;
+    use pegdyn::jamming::forces::{k_factors, try_sliding_contact_forces, try_sliding_moment};
+    let mu: f64 = 2.0;
+    let theta = std::f64::consts::PI - 2.0 * mu.atan();
+    assert_eq!(k_factors(mu, theta).2, 0.0, "k3 rounds to 0 at θ*");
+    let hp = PegHole::try_new(0.0125, 0.002, mu).expect("valid peg");
+    let refused = |e: SlidingIndeterminate| e.theta == theta && e.k3 == 0.0;
+    assert!(try_sliding_contact_forces(&hp, theta, 0.2, 1.0).is_err_and(refused));
+    assert!(try_sliding_moment(&hp, 0.01, theta, 0.2, 1.0).is_err_and(refused));
+    let p = PaperPeg { theta, mu, ..peg() };
+    let u = PegLoad { f1: 1.0, f2: 0.2 };
+    assert!(p.try_two_point(u, PegAcc::default()).is_err_and(refused));
+    // The unchecked forms divide by zero here.
+    assert!(
+        !sliding_contact_forces(&hp, theta, 0.2, 1.0)
+            .edge
+            .is_finite()
+    );
+    // Away from θ* (k3 ≈ −0.1) the checked forms return the closed forms.
+    let th = theta + 0.02;
+    let f = try_sliding_contact_forces(&hp, th, 0.2, 1.0).expect("determinate");
+    assert_eq!(f, sliding_contact_forces(&hp, th, 0.2, 1.0));
+    let m = try_sliding_moment(&hp, 0.01, th, 0.2, 1.0).expect("determinate");
+    assert_eq!(m, sliding_moment(&hp, 0.01, th, 0.2, 1.0));
+    let q = PaperPeg { theta: th, ..p };
+    assert_eq!(
+        q.try_two_point(u, PegAcc::default()),
+        Ok(q.two_point(u, PegAcc::default()))
+    );
+}

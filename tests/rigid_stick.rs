@@ -335,3 +335,118 @@ fn friction_halts_a_spinning_peg_which_then_sticks() {
     assert!((m.speed(&before) - m.v_stop).abs() < 1e-3 * m.v_stop);
     assert!(static_margin(&p, &Loads::default(), Vector2::new(gamma, psi)) < 0.0);
 }
+
+/// The static residual of a contact force system (N_i along the inward
+/// normals, friction F_i) against gravity and the loads, written as in
+/// [`static_margin`] (force balance and the moments about −e_n and e_z
+/// through C, frame components), scaled by m g.
+fn static_residual(
+    p: &PegParams,
+    loads: &Loads,
+    q: Vector2<f64>,
+    normal: &[f64; 3],
+    friction: &[Vector3<f64>; 3],
+) -> f64 {
+    let pose = Pose::try_new(p, q[0], q[1]).unwrap();
+    let w = p.mass * p.gravity;
+    let mut force = pose.frame.matrix().transpose() * Vector3::from(loads.force);
+    force[2] -= w;
+    let (mut m_gamma, mut m_psi) = (loads.m_gamma, loads.m_psi);
+    for i in 0..3 {
+        let f = pose.local.normals[i] * normal[i] + friction[i];
+        let rho = pose.local.contacts[i] - pose.local.c;
+        force += f;
+        let m = rho.cross(&f);
+        m_gamma -= m[1];
+        m_psi += m[2];
+    }
+    (force.norm() + (m_gamma.abs() + m_psi.abs()) / p.height) / w
+}
+
+/// Static friction before a lift-off from rest: loaded sideways and pulled
+/// up a little, the peg at rest at (γ, ψ) = (1.08, 1.02) rad has no
+/// consistent three-point sliding start, only one that needs a pulling
+/// contact (`LeavesContact`), yet its three contacts can hold it. The
+/// static equilibrium found (`hold_at_rest`) balances the loads in the
+/// independent force/moment rows of `static_margin` with every friction
+/// force inside its cone and tangent to the surface, and the independent
+/// cone search agrees that one exists; the simulation from rest reports
+/// `Stuck`, not `LiftOff`. Pulled straight up with 40 N (4× its weight)
+/// nothing holds it and the lift-off is reported.
+#[test]
+fn static_friction_is_checked_before_a_lift_off_from_rest() {
+    use pegdyn::rigid::static_hold::hold_at_rest;
+    let p = PegParams {
+        friction: 0.4,
+        ..PegParams::fig9()
+    };
+    let q = Vector2::new(1.08, 1.02);
+    let loads = Loads {
+        m_gamma: -0.15,
+        m_psi: -0.024,
+        force: [18.0, -16.0, -17.7],
+    };
+    let m = ForwardModel::new(p, loads).unwrap();
+    assert!(matches!(
+        start_from_rest(&m, q).unwrap(),
+        RestOutcome::LeavesContact { .. }
+    ));
+    let hold = hold_at_rest(&m, q).unwrap().expect("static friction holds");
+    let pose = Pose::try_new(&p, q[0], q[1]).unwrap();
+    for i in 0..3 {
+        let (n, f) = (hold.normal[i], hold.friction[i]);
+        assert!(n >= 0.0, "N_{i} = {n}");
+        assert!(
+            f.norm() <= p.friction * n * (1.0 + 1e-12),
+            "F_{i} outside the cone"
+        );
+        assert!(f.dot(&pose.local.normals[i]).abs() <= 1e-9 * (1.0 + f.norm()));
+    }
+    let res = static_residual(&p, &loads, q, &hold.normal, &hold.friction);
+    assert!(res < 1e-9, "equilibrium residual {res:e}");
+    assert!(static_margin(&p, &loads, q) < 0.0);
+    let x0 = Vector4::new(q[0], q[1], 0.0, 0.0);
+    let tr = simulate(&m, x0, 0.0, 0.1, Method::Dopri5, &Options::default()).unwrap();
+    assert_eq!(
+        tr.stop,
+        ForwardStop::Stuck {
+            t: 0.0,
+            gamma: q[0],
+            psi: q[1]
+        }
+    );
+
+    // Pulled out of the hole (40 N up against 9.81 N of weight): no static
+    // equilibrium in the cones, by either search; the lift-off stands.
+    let pulled = Loads {
+        force: [0.0, 0.0, 40.0],
+        ..Loads::default()
+    };
+    let m = ForwardModel::new(p, pulled).unwrap();
+    assert_eq!(hold_at_rest(&m, q).unwrap(), None);
+    assert!(static_margin(&p, &pulled, q) > 0.0);
+    let tr = simulate(&m, x0, 0.0, 0.1, Method::Dopri5, &Options::default()).unwrap();
+    assert!(
+        matches!(tr.stop, ForwardStop::LiftOff { t: 0.0, .. }),
+        "{:?}",
+        tr.stop
+    );
+}
+
+/// Wedging: the Fig. 9 peg with f = 0.2 at γ = 0.1 has a self-equilibrated
+/// contact force system inside the cones (any load is "held" by a large
+/// enough pre-stress, which a peg arriving at rest need not have), so
+/// `hold_at_rest` claims nothing there, even without loads, although the
+/// independent cone search finds an equilibrium.
+#[test]
+fn wedged_configurations_are_not_claimed_as_held() {
+    use pegdyn::rigid::static_hold::hold_at_rest;
+    let p = PegParams {
+        friction: 0.2,
+        ..PegParams::fig9()
+    };
+    let m = ForwardModel::new(p, Loads::default()).unwrap();
+    let q = Vector2::new(0.1, 0.0);
+    assert_eq!(hold_at_rest(&m, q).unwrap(), None);
+    assert!(static_margin(&p, &Loads::default(), q) < 0.0);
+}

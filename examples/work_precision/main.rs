@@ -1,5 +1,7 @@
 //! Work-precision study: error against cost for every integrator on each
-//! dynamic system (pendulum, double pendulum, compliant insertion).
+//! dynamic system (pendulum, double pendulum, compliant insertion, rigid
+//! peg sliding and rocking on three points), and the event accuracy of the
+//! rigid forward scene (`rigid_events.rs`).
 //!
 //! ```sh
 //! cargo run --release --example work_precision -- --out target/work_precision
@@ -16,10 +18,12 @@
 //! is not at least 2× that estimate are flagged `!` (the reference cannot
 //! judge them) in the table and drawn as grey markers. Writes `<out>/work_precision.csv` and one SVG diagram per
 //! problem (`<out>/wp_<problem>.svg`), and prints markdown tables.
+//! `--only rigid_forward,rigid_rocking,rigid_events` runs a subset.
 
 mod measure;
 mod plot;
 mod problems;
+mod rigid_events;
 
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -45,6 +49,11 @@ struct Args {
     /// End time of the double pendulum (s): chaotic, keep it short.
     #[arg(long, default_value_t = 5.0)]
     double_pendulum_t_end: f64,
+    /// Comma-separated problems to run (`pendulum`, `double_pendulum`,
+    /// `insert_compliant`, `rigid_forward`, `rigid_rocking`,
+    /// `rigid_events`); all when absent.
+    #[arg(long, value_delimiter = ',')]
+    only: Vec<String>,
 }
 
 /// The results of one problem.
@@ -206,14 +215,32 @@ fn main() -> ExitCode {
         eprintln!("error: cannot create {}: {e}", args.out.display());
         return ExitCode::FAILURE;
     }
-    let studies = vec![
-        study(&problems::pendulum(), args.repeats),
-        study(
+    let wanted = |name: &str| args.only.is_empty() || args.only.iter().any(|o| o == name);
+    let mut studies = Vec::new();
+    if wanted("pendulum") {
+        studies.push(study(&problems::pendulum(), args.repeats));
+    }
+    if wanted("double_pendulum") {
+        studies.push(study(
             &problems::double_pendulum(args.double_pendulum_t_end),
             args.repeats,
-        ),
-        study(&problems::insertion(), args.repeats),
-    ];
+        ));
+    }
+    if wanted("insert_compliant") {
+        studies.push(study(&problems::insertion(), args.repeats));
+    }
+    if wanted("rigid_forward") {
+        studies.push(study(&problems::rigid_forward(), args.repeats));
+    }
+    if wanted("rigid_rocking") {
+        studies.push(study(&problems::rigid_rocking(), args.repeats));
+    }
+    if wanted("rigid_events")
+        && let Err(e) = rigid_events::study(&args.out, args.repeats)
+    {
+        eprintln!("error: {e}");
+        return ExitCode::FAILURE;
+    }
     let csv = args.out.join("work_precision.csv");
     if let Err(e) = write_csv(&csv, &studies) {
         eprintln!("error: {e}");

@@ -62,12 +62,53 @@ pub fn k_factors(mu: f64, theta: f64) -> (f64, f64, f64) {
 /// peg slides in two-point contact at tilt `theta` (rad).
 ///
 /// Both must be non-negative for two-point sliding to be possible.
+///
+/// Unchecked: divides by k3 (Eq. 52), so it returns ±∞ or NaN where k3 = 0
+/// (θ = −2 atan μ mod π, which lies in (0, π/2) when μ > 1). Inputs that
+/// come from a user go through [`try_sliding_contact_forces`]. No scene or
+/// CLI path calls this form (the jamming diagram, sweep and wedging use
+/// k1/k2 only, and k2 = sin θ + μ cos θ > 0 for 0 < θ < π/2, μ > 0); it is
+/// kept as the plain closed form that tests and benches compare against.
 pub fn sliding_contact_forces(p: &PegHole, theta: f64, fx: f64, fz: f64) -> ContactForces {
     let (k1, k2, k3) = k_factors(p.mu(), theta);
     ContactForces {
         tip: (k1 * fz - k2 * fx) / k3,
         edge: (fz + p.mu() * fx) / k3,
     }
+}
+
+/// The k-factors of Eq. 52 at `theta`, or [`SlidingIndeterminate`] when
+/// `|k3|` is within its rounding error `8 u (1 + μ)²` of 0 (u = 2⁻⁵³).
+pub fn checked_k_factors(mu: f64, theta: f64) -> Result<(f64, f64, f64), SlidingIndeterminate> {
+    check_k3(mu, theta, k_factors(mu, theta))
+}
+
+/// The check of [`checked_k_factors`] on given factors (also NaN k3).
+fn check_k3(
+    mu: f64,
+    theta: f64,
+    (k1, k2, k3): (f64, f64, f64),
+) -> Result<(f64, f64, f64), SlidingIndeterminate> {
+    let bound = 4.0 * f64::EPSILON * (1.0 + mu).powi(2);
+    if k3.is_nan() || k3.abs() <= bound {
+        return Err(SlidingIndeterminate { theta, k3 });
+    }
+    Ok((k1, k2, k3))
+}
+
+/// Eq. 52's division for given factors, checked.
+fn forces_from_factors(
+    mu: f64,
+    theta: f64,
+    k: (f64, f64, f64),
+    fx: f64,
+    fz: f64,
+) -> Result<ContactForces, SlidingIndeterminate> {
+    let (k1, k2, k3) = check_k3(mu, theta, k)?;
+    Ok(ContactForces {
+        tip: (k1 * fz - k2 * fx) / k3,
+        edge: (fz + mu * fx) / k3,
+    })
 }
 
 /// [`sliding_contact_forces`], or why they are not determined.
@@ -83,11 +124,21 @@ pub fn try_sliding_contact_forces(
     fz: f64,
 ) -> Result<ContactForces, SlidingIndeterminate> {
     let mu = p.mu();
-    let (_, _, k3) = k_factors(mu, theta);
-    if k3.abs() <= 4.0 * f64::EPSILON * (1.0 + mu).powi(2) {
-        return Err(SlidingIndeterminate { theta, k3 });
-    }
-    Ok(sliding_contact_forces(p, theta, fx, fz))
+    forces_from_factors(mu, theta, k_factors(mu, theta), fx, fz)
+}
+
+/// [`sliding_moment`], or why it is not determined.
+///
+/// # Errors
+/// [`SlidingIndeterminate`] as [`try_sliding_contact_forces`].
+pub fn try_sliding_moment(
+    p: &PegHole,
+    l: f64,
+    theta: f64,
+    fx: f64,
+    fz: f64,
+) -> Result<f64, SlidingIndeterminate> {
+    Ok(sliding_wrench(p, l, theta, try_sliding_contact_forces(p, theta, fx, fz)?).m)
 }
 
 /// The applied wrench that holds the peg in equilibrium sliding for given
@@ -103,7 +154,9 @@ pub fn sliding_wrench(p: &PegHole, l: f64, theta: f64, f: ContactForces) -> Wren
 }
 
 /// Moment about the tip (N·m) needed for equilibrium sliding under `fx`,
-/// `fz` (N): the two-point contact line of the jamming diagram.
+/// `fz` (N): the two-point contact line of the jamming diagram. Unchecked
+/// (±∞ or NaN at k3 = 0, see [`sliding_contact_forces`]); the checked form
+/// is [`try_sliding_moment`].
 pub fn sliding_moment(p: &PegHole, l: f64, theta: f64, fx: f64, fz: f64) -> f64 {
     sliding_wrench(p, l, theta, sliding_contact_forces(p, theta, fx, fz)).m
 }
@@ -132,4 +185,33 @@ pub fn to_paper_frame(w: &Wrench, theta: f64, l_c: f64) -> (f64, f64, f64) {
         x * c - y * s,
         w.m - l_c * (w.fz * s + w.fx * c),
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// k3 = 0 exactly and k3 = 1e-300 (far below the rounding bound
+    /// 8 u (1 + μ)², and the size at which the unchecked division gives
+    /// forces of 1e300 N or ±∞): the typed refusal, not a number.
+    #[test]
+    fn k3_zero_and_tiny_are_refused_with_a_type() {
+        let mu = 0.3;
+        let k = k_factors(mu, 0.1);
+        for k3 in [0.0, -0.0, 1e-300, -1e-300, f64::MIN_POSITIVE, f64::NAN] {
+            match forces_from_factors(mu, 0.1, (k.0, k.1, k3), 0.2, 1.0) {
+                Err(e) => {
+                    assert_eq!(e.theta, 0.1);
+                    assert!(e.k3 == k3 || (k3.is_nan() && e.k3.is_nan()));
+                }
+                Ok(f) => panic!("k3 = {k3:e} accepted: {f:?}"),
+            }
+        }
+        // Just above the bound it is accepted and finite, and equals the
+        // unchecked closed form.
+        let k3 = 8.0 * f64::EPSILON * (1.0 + mu).powi(2);
+        let f = forces_from_factors(mu, 0.1, (k.0, k.1, k3), 0.2, 1.0).expect("above the bound");
+        assert!(f.tip.is_finite() && f.edge.is_finite());
+        assert_eq!(f.edge, (1.0 + mu * 0.2) / k3);
+    }
 }

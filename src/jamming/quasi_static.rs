@@ -26,7 +26,8 @@
 //! on the accelerations. Eq. 53 as printed has sign errors (see
 //! `docs/formula-departures.md`); here it is Eq. 51 with f_B = 0.
 
-use super::forces::k_factors;
+use super::error::SlidingIndeterminate;
+use super::forces::{checked_k_factors, k_factors};
 
 /// Geometry, friction and inertia of the paper's planar peg (SI units).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -93,8 +94,33 @@ impl PaperPeg {
 
     /// Two-point contact, Eq. 52: f_A = a₁f₁ + a₂f₂ + a₃, f_B = b₁f₁ + b₂f₂
     /// + b₃, M = c₁f₁ + c₂f₂ + c₃ + Jθ̈.
+    ///
+    /// Unchecked: ±∞ or NaN where k3 = 0 (as the generated
+    /// `pegdyn::generated::quasi_static::two_point`, which has no runtime
+    /// caller: tests and benches only); [`PaperPeg::try_two_point`] checks.
     pub fn two_point(&self, u: PegLoad, acc: PegAcc) -> PaperSolution {
-        let (k1, k2, k3) = k_factors(self.mu, self.theta);
+        self.two_point_with(k_factors(self.mu, self.theta), u, acc)
+    }
+
+    /// [`PaperPeg::two_point`], or why it is not determined.
+    ///
+    /// # Errors
+    /// [`SlidingIndeterminate`] when k3 is zero to rounding (see
+    /// [`checked_k_factors`]).
+    pub fn try_two_point(
+        &self,
+        u: PegLoad,
+        acc: PegAcc,
+    ) -> Result<PaperSolution, SlidingIndeterminate> {
+        Ok(self.two_point_with(checked_k_factors(self.mu, self.theta)?, u, acc))
+    }
+
+    fn two_point_with(
+        &self,
+        (k1, k2, k3): (f64, f64, f64),
+        u: PegLoad,
+        acc: PegAcc,
+    ) -> PaperSolution {
         let (mu, m) = (self.mu, self.m);
         let f_a = (k1 * u.f1 - k2 * u.f2 + mu * m * acc.xdd - m * acc.ydd) / k3;
         let f_b = (u.f1 + mu * u.f2 - k1 * m * acc.ydd - k2 * m * acc.xdd) / k3;

@@ -24,6 +24,7 @@ pub mod hand_dynamics;
 pub mod modes;
 pub mod params;
 pub mod prescribed;
+pub mod static_hold;
 pub mod stick;
 pub mod stop;
 pub mod trajectory;

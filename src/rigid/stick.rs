@@ -45,8 +45,10 @@ pub enum RestOutcome {
     },
     /// No three-point start is consistent, but a start with q̈ = λ û,
     /// λ > 0, exists that needs contact `contact` to pull: the peg does not
-    /// stay on three points (it leaves the model; static friction is not
-    /// checked).
+    /// stay on three points (it leaves the model). Static friction is not
+    /// checked here: [`crate::rigid::trajectory::simulate`] asks
+    /// [`crate::rigid::static_hold::hold_at_rest`] before reporting a
+    /// lift-off.
     LeavesContact {
         /// The start with the largest |q̈| among these (`normal` has the
         /// negative entry).

@@ -9,6 +9,7 @@ use crate::rigid::RigidError;
 use crate::rigid::forward::{ForwardModel, FrictionLaw, PegSystem, split};
 use crate::rigid::forward_events::{EventKind, events};
 use crate::rigid::modes::{Verdict, classify};
+use crate::rigid::static_hold::hold_at_rest;
 use crate::rigid::stick::{RestOutcome, start_from_rest};
 use crate::rigid::stop::{ForwardStop, PainleveCase};
 
@@ -147,6 +148,18 @@ pub fn simulate_with_progress(
             let (q, _) = split(&x);
             match start_from_rest(model, q)? {
                 RestOutcome::Sticks => {
+                    push_row(model, &mut out.rows, t, x, None);
+                    out.stop = ForwardStop::Stuck {
+                        t,
+                        gamma: x[0],
+                        psi: x[1],
+                    };
+                    return Ok(out);
+                }
+                // A start needs a pulling contact: before reporting the
+                // lift-off, check whether static friction holds the peg at
+                // rest on its three contacts (without wedging pre-stress).
+                RestOutcome::LeavesContact { .. } if hold_at_rest(model, q)?.is_some() => {
                     push_row(model, &mut out.rows, t, x, None);
                     out.stop = ForwardStop::Stuck {
                         t,

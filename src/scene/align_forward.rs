@@ -41,9 +41,9 @@ use crate::error::{RunError, SceneError, SceneErrors};
 use crate::integrate::{Options, OutputMode};
 use crate::output::csv::CsvWriter;
 use crate::output::plot::{Figure, Panel, Series};
-use crate::rigid::Loads;
 use crate::rigid::forward::{ForwardModel, FrictionLaw};
 use crate::rigid::trajectory::simulate_with_progress;
+use crate::rigid::{Loads, RigidError};
 use crate::scene::fig9::PegTable;
 use crate::scene::simulate::solver_config;
 use crate::scene::validate::Checker;
@@ -197,7 +197,12 @@ impl AlignForwardScene {
         c.finish()
     }
 
-    fn model(&self) -> Result<ForwardModel, RunError> {
+    /// The forward model of the scene: peg, loads and friction law.
+    ///
+    /// # Errors
+    /// [`RigidError::Param`] for invalid parameters, loads or friction
+    /// settings (a scene that passed [`AlignForwardScene::check`] has none).
+    pub fn forward_model(&self) -> Result<ForwardModel, RigidError> {
         let l = &self.loads;
         let loads = Loads {
             m_gamma: l.m_gamma,
@@ -210,9 +215,15 @@ impl AlignForwardScene {
                 v_s: self.friction.v_s,
             },
         };
-        Ok(ForwardModel::new(self.peg.params(), loads)?
+        ForwardModel::new(self.peg.params(), loads)?
             .with_friction(law)?
-            .with_v_stop(self.friction.v_stop)?)
+            .with_v_stop(self.friction.v_stop)
+    }
+
+    /// The initial state x(0) = (γ, ψ, γ̇, ψ̇) (rad, rad, 1/s, 1/s).
+    pub fn initial_state(&self) -> Vector4<f64> {
+        let i = &self.initial;
+        Vector4::new(i.gamma, i.psi, i.gammadot, i.psidot)
     }
 }
 
@@ -234,12 +245,11 @@ impl Scene for AlignForwardScene {
     }
 
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
-        let model = self.model()?;
+        let model = self.forward_model()?;
         let spec = &self.integrator;
         let (method, mut options): (_, Options) = solver_config(spec)?;
         options.output = OutputMode::AtTimes(spec.output_times());
-        let i = &self.initial;
-        let x0 = Vector4::new(i.gamma, i.psi, i.gammadot, i.psidot);
+        let x0 = self.initial_state();
         ctx.progress.set_span(spec.t0, spec.t_end);
         let progress = &mut ctx.progress;
         let tr = simulate_with_progress(
