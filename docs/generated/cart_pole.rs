@@ -26,7 +26,7 @@ pub mod cart_pole {
     /// - `forcing`: vector of 2
     ///
     /// # Cost
-    /// 2 add/sub, 11 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 3 `let`s.
+    /// 2 add/sub, 11 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 3 `let`s.
     #[inline]
     pub fn dynamics<T: Real>(
         x: &SVector<T, 4>,
@@ -39,8 +39,7 @@ pub mod cart_pole {
         let l = p[2];
         let g = p[3];
         let u = p[4];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = m * l * cos_theta;
         let mass = Matrix2::new(mc + m, t0, t0, m * (l * l));
         let forcing = Vector2::new(
@@ -61,7 +60,7 @@ pub mod cart_pole {
     /// - `xdot`: vector of 4
     ///
     /// # Cost
-    /// 5 add/sub, 26 mul, 1 div, 0 sqrt, 2 transcendental, 0 branches; 7 `let`s.
+    /// 5 add/sub, 26 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 7 `let`s.
     #[inline]
     pub fn rhs<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> SVector<T, 4> {
         let theta = x[1];
@@ -72,8 +71,7 @@ pub mod cart_pole {
         let l = p[2];
         let g = p[3];
         let u = p[4];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = l * l;
         let t1 = mc + m;
         let t2 = u + m * l * sin_theta * (thetadot * thetadot);
@@ -100,7 +98,7 @@ pub mod cart_pole {
     /// - `terms`: 2×4 matrix
     ///
     /// # Cost
-    /// 2 add/sub, 17 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 2 `let`s.
+    /// 2 add/sub, 17 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 2 `let`s.
     #[inline]
     pub fn jacobian_terms<T: Real>(
         x: &SVector<T, 4>,
@@ -114,8 +112,7 @@ pub mod cart_pole {
         let m = p[1];
         let l = p[2];
         let g = p[3];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         Matrix2x4::new(
             T::from_f64(0.0),
             thetaddot * m * l * sin_theta + m * l * cos_theta * (thetadot * thetadot),

@@ -53,7 +53,7 @@ pub mod compliant_peg {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 113 add/sub, 230 mul, 6 div, 4 sqrt, 8 transcendental, 16 branches; 78 `let`s.
+    /// 113 add/sub, 230 mul, 6 div, 4 sqrt, 6 transcendental, 16 branches; 78 `let`s.
     #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
@@ -77,8 +77,7 @@ pub mod compliant_peg {
         let f2 = p[12];
         let m_2 = p[13];
         let hc_alpha = p[23];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = f1 * sin_theta;
         let t1 = f2 * cos_theta;
         let t2 = f1 * cos_theta;
@@ -88,7 +87,7 @@ pub mod compliant_peg {
         let t6 = -rho_h + t4 + t5;
         let t7 = rho_h - z;
         let t8 = T::from_f64(0.5) * theta;
-        let t9 = t8.sin();
+        let (t9, t21) = t8.sin_cos();
         let t10 = t9 * t9;
         let t11 = r + t4 + t5 - sin_theta * t7 - T::from_f64(2.0) * t6 * t10;
         let t12 = cos_theta * t7;
@@ -101,7 +100,6 @@ pub mod compliant_peg {
         let t18 = t11.max0();
         let t19 = t18 * t18.sqrt();
         let t20 = -T::from_f64(1.0) + T::from_f64(2.0) * t10;
-        let t21 = t8.cos();
         let t22 = -(cos_theta * t7) - T::from_f64(2.0) * t6 * t9 * t21;
         let t23 = xdot * t20 + zdot * sin_theta + thetadot * t22;
         let t24 = (T::from_f64(1.0) + hc_alpha * t23).max0();
@@ -205,7 +203,7 @@ pub mod compliant_peg {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 474 add/sub, 2078 mul, 10 div, 8 sqrt, 8 transcendental, 24 branches; 219 `let`s.
+    /// 474 add/sub, 2078 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 219 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -229,8 +227,7 @@ pub mod compliant_peg {
         let f2 = p[12];
         let m_2 = p[13];
         let hc_alpha = p[23];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = f1 * cos_theta;
         let t1 = -f2 * sin_theta;
         let t2 = t0 + t1;
@@ -242,7 +239,7 @@ pub mod compliant_peg {
         let t8 = sin_theta * t6;
         let t9 = cos_theta * t5 + t7;
         let t10 = T::from_f64(0.5) * theta;
-        let t11 = t10.sin();
+        let (t11, t30) = t10.sin_cos();
         let t12 = t11 * t11;
         let t13 = r + t3 + t4 + t7 - T::from_f64(2.0) * t5 * t12;
         let t14 = cos_theta * t6;
@@ -261,7 +258,6 @@ pub mod compliant_peg {
         let t27 = t13.max0();
         let t28 = t27 * t27.sqrt();
         let t29 = -T::from_f64(1.0) + T::from_f64(2.0) * t12;
-        let t30 = t10.cos();
         let t31 = -(cos_theta * t6) - T::from_f64(2.0) * t5 * t11 * t30;
         let t32 = xdot * t29 + zdot * sin_theta + thetadot * t31;
         let t33 = T::from_f64(1.0) + hc_alpha * t32;
@@ -863,7 +859,7 @@ pub mod compliant_peg {
     /// - `p0`: vector of 4
     ///
     /// # Cost
-    /// 62 add/sub, 162 mul, 11 div, 4 sqrt, 18 transcendental, 8 branches; 60 `let`s.
+    /// 62 add/sub, 164 mul, 11 div, 4 sqrt, 16 transcendental, 8 branches; 60 `let`s.
     #[inline]
     pub fn contacts<T: Real>(
         y: &SVector<T, 8>,
@@ -900,14 +896,13 @@ pub mod compliant_peg {
         let wall_ma = p[20];
         let wall_mb = p[21];
         let hc_alpha = p[23];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = -T::from_f64(0.5) * d;
         let t1 = -x;
         let t2 = -rho_h + t0 + t1;
         let t3 = rho_h - z;
         let t4 = T::from_f64(0.5) * theta;
-        let t5 = t4.sin();
+        let (t5, t14) = t4.sin_cos();
         let t6 = t5 * t5;
         let t7 = r + t0 + t1 - sin_theta * t3 - T::from_f64(2.0) * t2 * t6;
         let t8 = cos_theta * t3;
@@ -917,7 +912,6 @@ pub mod compliant_peg {
             + cos_theta * (zdot + thetadot * (-(sin_theta * t9) + r * cos_theta));
         let t12 = t7.max0();
         let t13 = t12 * t12.sqrt();
-        let t14 = t4.cos();
         let t15 = (T::from_f64(1.0)
             + hc_alpha
                 * (xdot * (-T::from_f64(1.0) + T::from_f64(2.0) * t6) + zdot * sin_theta
@@ -926,11 +920,9 @@ pub mod compliant_peg {
         let t16 = v_s.hypot(t11);
         let t17 = T::from_f64(1.0) / e_star;
         let t18 = T::from_f64(1.0) / edge_sum;
-        let t19 = (T::from_f64(1.5) * k_edge * t13 * t15 * t17 * t18)
-            .powf(T::from_f64(0.3333333333333333));
-        let t20 = (T::from_f64(1.5) * k_edge * t13 * t15)
-            .powf(T::from_f64(0.3333333333333333));
-        let t21 = (e_star * edge_sum).powf(T::from_f64(0.6666666666666666));
+        let t19 = (T::from_f64(1.5) * k_edge * t13 * t15 * t17 * t18).cbrt();
+        let t20 = (T::from_f64(1.5) * k_edge * t13 * t15).cbrt();
+        let t21 = (e_star * edge_sum).cbrt().powi(2);
         let t22 = T::from_f64(1.0) / edge_ma;
         let t23 = T::from_f64(1.0) / edge_mb;
         let t24 = -rho_p;
@@ -950,11 +942,9 @@ pub mod compliant_peg {
             .max0();
         let t32 = v_s.hypot(t28);
         let t33 = T::from_f64(1.0) / wall_sum;
-        let t34 = (T::from_f64(1.5) * k_wall * t17 * t30 * t31 * t33)
-            .powf(T::from_f64(0.3333333333333333));
-        let t35 = (T::from_f64(1.5) * k_wall * t30 * t31)
-            .powf(T::from_f64(0.3333333333333333));
-        let t36 = (e_star * wall_sum).powf(T::from_f64(0.6666666666666666));
+        let t34 = (T::from_f64(1.5) * k_wall * t17 * t30 * t31 * t33).cbrt();
+        let t35 = (T::from_f64(1.5) * k_wall * t30 * t31).cbrt();
+        let t36 = (e_star * wall_sum).cbrt().powi(2);
         let t37 = T::from_f64(1.0) / wall_ma;
         let t38 = T::from_f64(1.0) / wall_mb;
         let t39 = rho_h + T::from_f64(0.5) * d + t1;
@@ -970,10 +960,8 @@ pub mod compliant_peg {
                     + thetadot * (t8 + T::from_f64(2.0) * t5 * t14 * t39)))
             .max0();
         let t46 = v_s.hypot(t42);
-        let t47 = (T::from_f64(1.5) * k_edge * t17 * t18 * t44 * t45)
-            .powf(T::from_f64(0.3333333333333333));
-        let t48 = (T::from_f64(1.5) * k_edge * t44 * t45)
-            .powf(T::from_f64(0.3333333333333333));
+        let t47 = (T::from_f64(1.5) * k_edge * t17 * t18 * t44 * t45).cbrt();
+        let t48 = (T::from_f64(1.5) * k_edge * t44 * t45).cbrt();
         let t49 = rho_p + t10;
         let t50 = r + t0 + t1 - sin_theta * t25 + T::from_f64(2.0) * t6 * t49;
         let t51 = zdot
@@ -989,10 +977,8 @@ pub mod compliant_peg {
                         * (-(cos_theta * t25) + T::from_f64(2.0) * t5 * t14 * t49)))
             .max0();
         let t55 = v_s.hypot(t51);
-        let t56 = (T::from_f64(1.5) * k_wall * t17 * t33 * t53 * t54)
-            .powf(T::from_f64(0.3333333333333333));
-        let t57 = (T::from_f64(1.5) * k_wall * t53 * t54)
-            .powf(T::from_f64(0.3333333333333333));
+        let t56 = (T::from_f64(1.5) * k_wall * t17 * t33 * t53 * t54).cbrt();
+        let t57 = (T::from_f64(1.5) * k_wall * t53 * t54).cbrt();
         let normal = Vector4::new(
             k_edge * t13 * t15,
             k_wall * t30 * t31,
@@ -1029,7 +1015,7 @@ pub mod compliant_peg {
     /// - `depth`: scalar
     ///
     /// # Cost
-    /// 30 add/sub, 32 mul, 0 div, 0 sqrt, 7 transcendental, 4 branches; 17 `let`s.
+    /// 30 add/sub, 32 mul, 0 div, 0 sqrt, 6 transcendental, 4 branches; 17 `let`s.
     #[inline]
     pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> (T, T, T) {
         let x = y[0];
@@ -1047,8 +1033,7 @@ pub mod compliant_peg {
         let rho_h = p[6];
         let k_edge = p[9];
         let k_wall = p[10];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = -T::from_f64(0.5) * d;
         let t1 = -x;
         let t2 = rho_h - z;

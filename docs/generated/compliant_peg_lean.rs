@@ -53,7 +53,7 @@ pub mod compliant_peg_lean {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 60 add/sub, 123 mul, 4 div, 2 sqrt, 6 transcendental, 8 branches; 45 `let`s.
+    /// 60 add/sub, 123 mul, 4 div, 2 sqrt, 4 transcendental, 8 branches; 45 `let`s.
     #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
@@ -77,8 +77,7 @@ pub mod compliant_peg_lean {
         let f2 = p[12];
         let m_2 = p[13];
         let hc_alpha = p[23];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = f1 * sin_theta;
         let t1 = f2 * cos_theta;
         let t2 = f1 * cos_theta;
@@ -88,7 +87,7 @@ pub mod compliant_peg_lean {
         let t6 = -rho_h + t4 + t5;
         let t7 = rho_h - z;
         let t8 = T::from_f64(0.5) * theta;
-        let t9 = t8.sin();
+        let (t9, t19) = t8.sin_cos();
         let t10 = t9 * t9;
         let t11 = r + t4 + t5 - sin_theta * t7 - T::from_f64(2.0) * t6 * t10;
         let t12 = sin_theta * t6 + cos_theta * t7;
@@ -99,7 +98,6 @@ pub mod compliant_peg_lean {
         let t16 = t11.max0();
         let t17 = t16 * t16.sqrt();
         let t18 = -T::from_f64(1.0) + T::from_f64(2.0) * t10;
-        let t19 = t8.cos();
         let t20 = -(cos_theta * t7) - T::from_f64(2.0) * t6 * t9 * t19;
         let t21 = xdot * t18 + zdot * sin_theta + thetadot * t20;
         let t22 = (T::from_f64(1.0) + hc_alpha * t21).max0();
@@ -159,7 +157,7 @@ pub mod compliant_peg_lean {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 230 add/sub, 1068 mul, 6 div, 4 sqrt, 6 transcendental, 12 branches; 115 `let`s.
+    /// 230 add/sub, 1068 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 115 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -183,8 +181,7 @@ pub mod compliant_peg_lean {
         let f2 = p[12];
         let m_2 = p[13];
         let hc_alpha = p[23];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = f1 * cos_theta;
         let t1 = -f2 * sin_theta;
         let t2 = t0 + t1;
@@ -195,7 +192,7 @@ pub mod compliant_peg_lean {
         let t7 = -sin_theta * t6;
         let t8 = cos_theta * t5 + t7;
         let t9 = T::from_f64(0.5) * theta;
-        let t10 = t9.sin();
+        let (t10, t24) = t9.sin_cos();
         let t11 = t10 * t10;
         let t12 = r + t3 + t4 + t7 - T::from_f64(2.0) * t5 * t11;
         let t13 = sin_theta * t5 + cos_theta * t6;
@@ -209,7 +206,6 @@ pub mod compliant_peg_lean {
         let t21 = t12.max0();
         let t22 = t21 * t21.sqrt();
         let t23 = -T::from_f64(1.0) + T::from_f64(2.0) * t11;
-        let t24 = t9.cos();
         let t25 = -(cos_theta * t6) - T::from_f64(2.0) * t5 * t10 * t24;
         let t26 = xdot * t23 + zdot * sin_theta + thetadot * t25;
         let t27 = T::from_f64(1.0) + hc_alpha * t26;
@@ -549,7 +545,7 @@ pub mod compliant_peg_lean {
     /// - `p0`: vector of 2
     ///
     /// # Cost
-    /// 32 add/sub, 80 mul, 7 div, 2 sqrt, 12 transcendental, 4 branches; 33 `let`s.
+    /// 32 add/sub, 82 mul, 7 div, 2 sqrt, 10 transcendental, 4 branches; 33 `let`s.
     #[inline]
     pub fn contacts<T: Real>(
         y: &SVector<T, 8>,
@@ -586,14 +582,13 @@ pub mod compliant_peg_lean {
         let wall_ma = p[20];
         let wall_mb = p[21];
         let hc_alpha = p[23];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = -T::from_f64(0.5) * d;
         let t1 = -x;
         let t2 = -rho_h + t0 + t1;
         let t3 = rho_h - z;
         let t4 = T::from_f64(0.5) * theta;
-        let t5 = t4.sin();
+        let (t5, t12) = t4.sin_cos();
         let t6 = t5 * t5;
         let t7 = r + t0 + t1 - sin_theta * t3 - T::from_f64(2.0) * t2 * t6;
         let t8 = sin_theta * t2 + cos_theta * t3;
@@ -601,7 +596,6 @@ pub mod compliant_peg_lean {
             + cos_theta * (zdot + thetadot * (-(sin_theta * t8) + r * cos_theta));
         let t10 = t7.max0();
         let t11 = t10 * t10.sqrt();
-        let t12 = t4.cos();
         let t13 = (T::from_f64(1.0)
             + hc_alpha
                 * (xdot * (-T::from_f64(1.0) + T::from_f64(2.0) * t6) + zdot * sin_theta
@@ -609,11 +603,9 @@ pub mod compliant_peg_lean {
             .max0();
         let t14 = v_s.hypot(t9);
         let t15 = T::from_f64(1.0) / e_star;
-        let t16 = (T::from_f64(1.5) * k_edge * t11 * t13 * t15 / edge_sum)
-            .powf(T::from_f64(0.3333333333333333));
-        let t17 = (T::from_f64(1.5) * k_edge * t11 * t13)
-            .powf(T::from_f64(0.3333333333333333));
-        let t18 = (e_star * edge_sum).powf(T::from_f64(0.6666666666666666));
+        let t16 = (T::from_f64(1.5) * k_edge * t11 * t13 * t15 / edge_sum).cbrt();
+        let t17 = (T::from_f64(1.5) * k_edge * t11 * t13).cbrt();
+        let t18 = (e_star * edge_sum).cbrt().powi(2);
         let t19 = -rho_p;
         let t20 = l_c + t19;
         let t21 = r + t19;
@@ -630,11 +622,9 @@ pub mod compliant_peg_lean {
                     + thetadot * (cos_theta * t20 - T::from_f64(2.0) * t5 * t12 * t21)))
             .max0();
         let t27 = v_s.hypot(t23);
-        let t28 = (T::from_f64(1.5) * k_wall * t15 * t25 * t26 / wall_sum)
-            .powf(T::from_f64(0.3333333333333333));
-        let t29 = (T::from_f64(1.5) * k_wall * t25 * t26)
-            .powf(T::from_f64(0.3333333333333333));
-        let t30 = (e_star * wall_sum).powf(T::from_f64(0.6666666666666666));
+        let t28 = (T::from_f64(1.5) * k_wall * t15 * t25 * t26 / wall_sum).cbrt();
+        let t29 = (T::from_f64(1.5) * k_wall * t25 * t26).cbrt();
+        let t30 = (e_star * wall_sum).cbrt().powi(2);
         let normal = Vector2::new(k_edge * t11 * t13, k_wall * t25 * t26);
         let friction = Vector2::new(
             -mu * k_edge * t9 * t11 * t13 / t14,
@@ -662,7 +652,7 @@ pub mod compliant_peg_lean {
     /// - `depth`: scalar
     ///
     /// # Cost
-    /// 17 add/sub, 21 mul, 0 div, 0 sqrt, 5 transcendental, 2 branches; 11 `let`s.
+    /// 17 add/sub, 21 mul, 0 div, 0 sqrt, 4 transcendental, 2 branches; 11 `let`s.
     #[inline]
     pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> (T, T, T) {
         let x = y[0];
@@ -680,8 +670,7 @@ pub mod compliant_peg_lean {
         let rho_h = p[6];
         let k_edge = p[9];
         let k_wall = p[10];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = -T::from_f64(0.5) * d;
         let t1 = -x;
         let t2 = (T::from_f64(0.5) * theta).sin();

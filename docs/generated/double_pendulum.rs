@@ -26,7 +26,7 @@ pub mod double_pendulum {
     /// - `forcing`: vector of 2
     ///
     /// # Cost
-    /// 5 add/sub, 26 mul, 0 div, 0 sqrt, 4 transcendental, 0 branches; 7 `let`s.
+    /// 5 add/sub, 26 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 7 `let`s.
     #[inline]
     pub fn dynamics<T: Real>(
         x: &SVector<T, 4>,
@@ -45,9 +45,8 @@ pub mod double_pendulum {
         let sin_theta2 = theta2.sin();
         let t0 = l1 * l1;
         let t1 = theta1 - theta2;
-        let t2 = t1.cos();
+        let (t4, t2) = t1.sin_cos();
         let t3 = m2 * l1 * l2 * t2;
-        let t4 = t1.sin();
         let mass = Matrix2::new(m1 * t0 + m2 * t0, t3, t3, m2 * (l2 * l2));
         let forcing = Vector2::new(
             -(g * (m1 * l1 * sin_theta1 + m2 * l1 * sin_theta1))
@@ -68,7 +67,7 @@ pub mod double_pendulum {
     /// - `xdot`: vector of 4
     ///
     /// # Cost
-    /// 8 add/sub, 42 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 11 `let`s.
+    /// 8 add/sub, 42 mul, 1 div, 0 sqrt, 3 transcendental, 0 branches; 11 `let`s.
     #[inline]
     pub fn rhs<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> SVector<T, 4> {
         let theta1 = x[0];
@@ -85,9 +84,8 @@ pub mod double_pendulum {
         let t0 = l1 * l1;
         let t1 = l2 * l2;
         let t2 = theta1 - theta2;
-        let t3 = t2.cos();
+        let (t5, t3) = t2.sin_cos();
         let t4 = m1 * t0 + m2 * t0;
-        let t5 = t2.sin();
         let t6 = -(g * (m1 * l1 * sin_theta1 + m2 * l1 * sin_theta1))
             - m2 * l1 * l2 * (theta2dot * theta2dot) * t5;
         let t7 = m2 * l1 * l2 * (theta1dot * theta1dot) * t5 - m2 * l2 * g * sin_theta2;
@@ -113,7 +111,7 @@ pub mod double_pendulum {
     /// - `terms`: 2×4 matrix
     ///
     /// # Cost
-    /// 8 add/sub, 52 mul, 0 div, 0 sqrt, 4 transcendental, 0 branches; 7 `let`s.
+    /// 8 add/sub, 52 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 7 `let`s.
     #[inline]
     pub fn jacobian_terms<T: Real>(
         x: &SVector<T, 4>,
@@ -136,8 +134,7 @@ pub mod double_pendulum {
         let t0 = theta1dot * theta1dot;
         let t1 = theta2dot * theta2dot;
         let t2 = theta1 - theta2;
-        let t3 = t2.cos();
-        let t4 = t2.sin();
+        let (t4, t3) = t2.sin_cos();
         Matrix2x4::new(
             theta2ddot * m2 * l1 * l2 * t4
                 - g * (m1 * l1 * cos_theta1 + m2 * l1 * cos_theta1)

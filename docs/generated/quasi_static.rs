@@ -31,7 +31,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 21 add/sub, 35 mul, 1 div, 0 sqrt, 2 transcendental, 0 branches; 12 `let`s.
+    /// 21 add/sub, 35 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 12 `let`s.
     #[inline]
     pub fn two_point<T: Real>(
         pose: &SVector<T, 2>,
@@ -51,8 +51,7 @@ pub mod quasi_static {
         let l_c = p[2];
         let m = p[3];
         let j = p[4];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = cos_theta - mu * sin_theta;
         let t1 = -sin_theta - mu * cos_theta;
         let t2 = l_c - l;
@@ -84,7 +83,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 12 add/sub, 19 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 4 `let`s.
+    /// 12 add/sub, 19 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 4 `let`s.
     #[inline]
     pub fn edge_only<T: Real>(
         pose: &SVector<T, 2>,
@@ -104,8 +103,7 @@ pub mod quasi_static {
         let l_c = p[2];
         let m = p[3];
         let j = p[4];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = l_c - l;
         let t1 = cos_theta * (xdd * m - f1 * sin_theta - f2 * cos_theta)
             - sin_theta * (f2 * sin_theta + ydd * m - f1 * cos_theta);
@@ -128,7 +126,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 8 add/sub, 14 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 3 `let`s.
+    /// 8 add/sub, 14 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 3 `let`s.
     #[inline]
     pub fn tip_only<T: Real>(
         pose: &SVector<T, 2>,
@@ -146,8 +144,7 @@ pub mod quasi_static {
         let l_c = p[2];
         let m = p[3];
         let j = p[4];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = f1 * sin_theta + f2 * cos_theta - xdd * m;
         let f_b = t0;
         let moment = thdd * j - mu * (r * cos_theta + l_c * sin_theta) * t0
@@ -168,7 +165,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 11 add/sub, 26 mul, 1 div, 0 sqrt, 2 transcendental, 0 branches; 7 `let`s.
+    /// 11 add/sub, 26 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 7 `let`s.
     #[inline]
     pub fn whitney_tip<T: Real>(
         pose: &SVector<T, 2>,
@@ -181,8 +178,7 @@ pub mod quasi_static {
         let fz = w[1];
         let mu = q[0];
         let r = q[1];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = -sin_theta - mu * cos_theta;
         let t1 = mu * sin_theta - cos_theta;
         let t2 = -(t0 * fx) + fz * t1;

@@ -42,7 +42,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 92 add/sub, 270 mul, 4 div, 1 sqrt, 9 transcendental, 0 branches; 59 `let`s.
+    /// 92 add/sub, 270 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -75,13 +75,12 @@ pub mod rigid_peg {
         let t_b2_eta = t[6];
         let t_b2_n = t[7];
         let t_b2_z = t[8];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t23) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
@@ -102,7 +101,6 @@ pub mod rigid_peg {
         let t20 = (d_hole * t2 * t3 * t7).hypot(t16);
         let t21 = T::from_f64(1.0) / t20;
         let t22 = cos_gamma * t19;
-        let t23 = t1.cos();
         let t24 = d_peg * t4 * t7 * t23 - T::from_f64(0.5) * cos_gamma * t6 * t12;
         let t25 = sin_gamma * t24;
         let t26 = t22 + t25;
@@ -133,8 +131,7 @@ pub mod rigid_peg {
         let t40 = T::from_f64(0.75) * t39 + h * h;
         let t41 = h - t6 * t7;
         let t42 = t41 * t41;
-        let sin_psi = psi.sin();
-        let cos_psi = psi.cos();
+        let (sin_psi, cos_psi) = psi.sin_cos();
         let t43 = f_x * cos_psi;
         let t44 = f_y * sin_psi;
         let t45 = f_y * cos_psi;
@@ -222,7 +219,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 95 add/sub, 272 mul, 4 div, 1 sqrt, 9 transcendental, 0 branches; 59 `let`s.
+    /// 95 add/sub, 272 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -256,13 +253,12 @@ pub mod rigid_peg {
         let t_b2_eta = t[6];
         let t_b2_n = t[7];
         let t_b2_z = t[8];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t23) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
@@ -283,7 +279,6 @@ pub mod rigid_peg {
         let t20 = (d_hole * t2 * t3 * t7).hypot(t16);
         let t21 = T::from_f64(1.0) / t20;
         let t22 = cos_gamma * t19;
-        let t23 = t1.cos();
         let t24 = d_peg * t4 * t7 * t23 - T::from_f64(0.5) * cos_gamma * t6 * t12;
         let t25 = sin_gamma * t24;
         let t26 = t22 + t25;
@@ -314,8 +309,7 @@ pub mod rigid_peg {
         let t40 = T::from_f64(0.75) * t39 + h * h;
         let t41 = h - t6 * t7;
         let t42 = t41 * t41;
-        let sin_psi = psi.sin();
-        let cos_psi = psi.cos();
+        let (sin_psi, cos_psi) = psi.sin_cos();
         let t43 = f_x * cos_psi;
         let t44 = f_y * sin_psi;
         let t45 = f_y * cos_psi;
@@ -404,7 +398,7 @@ pub mod rigid_peg {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 26 add/sub, 67 mul, 2 div, 1 sqrt, 6 transcendental, 0 branches; 24 `let`s.
+    /// 26 add/sub, 67 mul, 2 div, 1 sqrt, 4 transcendental, 0 branches; 24 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 4>,
@@ -417,13 +411,12 @@ pub mod rigid_peg {
         let d_peg = p[1];
         let h = p[2];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t12) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
         let t7 = T::from_f64(0.5) * t5 * t6;
@@ -433,7 +426,6 @@ pub mod rigid_peg {
             .sqrt();
         let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
         let t11 = -(T::from_f64(0.5) * h) + t7;
-        let t12 = t1.cos();
         let t13 = gammadot
             * (cos_gamma * t11
                 + sin_gamma
@@ -474,7 +466,7 @@ pub mod rigid_peg {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 23 add/sub, 66 mul, 2 div, 0 sqrt, 6 transcendental, 0 branches; 22 `let`s.
+    /// 23 add/sub, 66 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 22 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -486,19 +478,17 @@ pub mod rigid_peg {
         let m = p[3];
         let g = p[4];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t10) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
         let t7 = sin_gamma * sin_gamma;
         let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
         let t9 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
-        let t10 = t1.cos();
         let t11 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t5 * t6)
             + sin_gamma
                 * (d_peg * t4 * t6 * t10 - T::from_f64(0.5) * cos_gamma * t5 * t8);
@@ -531,7 +521,7 @@ pub mod rigid_peg {
     /// - `geo`: vector of 13
     ///
     /// # Cost
-    /// 10 add/sub, 56 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 18 `let`s.
+    /// 10 add/sub, 56 mul, 3 div, 1 sqrt, 5 transcendental, 0 branches; 18 `let`s.
     #[inline]
     pub fn geometry<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> SVector<T, 13> {
         let gamma = x[0];
@@ -539,8 +529,7 @@ pub mod rigid_peg {
         let d_peg = p[1];
         let h = p[2];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();

@@ -29,7 +29,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 68 add/sub, 234 mul, 4 div, 1 sqrt, 9 transcendental, 0 branches; 49 `let`s.
+    /// 68 add/sub, 234 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 49 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -51,13 +51,12 @@ pub mod rigid_peg_frictionless {
         let f_x = loads[2];
         let f_y = loads[3];
         let f_z = loads[4];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t19) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
@@ -74,7 +73,6 @@ pub mod rigid_peg_frictionless {
         let t16 = -(T::from_f64(0.5) * h) + t8;
         let t17 = (d_hole * t2 * t3 * t7).hypot(t13);
         let t18 = T::from_f64(1.0) / t17;
-        let t19 = t1.cos();
         let t20 = d_peg * t4 * t7 * t19 - T::from_f64(0.5) * cos_gamma * t6 * t10;
         let t21 = cos_gamma * t16 + sin_gamma * t20;
         let t22 = -(d_peg * t4 * t7 * t19) + T::from_f64(0.5) * cos_gamma * t6 * t10;
@@ -103,8 +101,7 @@ pub mod rigid_peg_frictionless {
         let t32 = T::from_f64(0.75) * t31 + h * h;
         let t33 = h - t6 * t7;
         let t34 = t33 * t33;
-        let sin_psi = psi.sin();
-        let cos_psi = psi.cos();
+        let (sin_psi, cos_psi) = psi.sin_cos();
         let t35 = f_x * cos_psi;
         let t36 = f_y * sin_psi;
         let t37 = f_y * cos_psi;
@@ -189,7 +186,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 71 add/sub, 236 mul, 4 div, 1 sqrt, 9 transcendental, 0 branches; 49 `let`s.
+    /// 71 add/sub, 236 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 49 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -212,13 +209,12 @@ pub mod rigid_peg_frictionless {
         let f_x = loads[2];
         let f_y = loads[3];
         let f_z = loads[4];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t19) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
@@ -235,7 +231,6 @@ pub mod rigid_peg_frictionless {
         let t16 = -(T::from_f64(0.5) * h) + t8;
         let t17 = (d_hole * t2 * t3 * t7).hypot(t13);
         let t18 = T::from_f64(1.0) / t17;
-        let t19 = t1.cos();
         let t20 = d_peg * t4 * t7 * t19 - T::from_f64(0.5) * cos_gamma * t6 * t10;
         let t21 = cos_gamma * t16 + sin_gamma * t20;
         let t22 = -(d_peg * t4 * t7 * t19) + T::from_f64(0.5) * cos_gamma * t6 * t10;
@@ -264,8 +259,7 @@ pub mod rigid_peg_frictionless {
         let t32 = T::from_f64(0.75) * t31 + h * h;
         let t33 = h - t6 * t7;
         let t34 = t33 * t33;
-        let sin_psi = psi.sin();
-        let cos_psi = psi.cos();
+        let (sin_psi, cos_psi) = psi.sin_cos();
         let t35 = f_x * cos_psi;
         let t36 = f_y * sin_psi;
         let t37 = f_y * cos_psi;
@@ -352,7 +346,7 @@ pub mod rigid_peg_frictionless {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 26 add/sub, 67 mul, 2 div, 1 sqrt, 6 transcendental, 0 branches; 24 `let`s.
+    /// 26 add/sub, 67 mul, 2 div, 1 sqrt, 4 transcendental, 0 branches; 24 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 4>,
@@ -365,13 +359,12 @@ pub mod rigid_peg_frictionless {
         let d_peg = p[1];
         let h = p[2];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t12) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
         let t7 = T::from_f64(0.5) * t5 * t6;
@@ -381,7 +374,6 @@ pub mod rigid_peg_frictionless {
             .sqrt();
         let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
         let t11 = -(T::from_f64(0.5) * h) + t7;
-        let t12 = t1.cos();
         let t13 = gammadot
             * (cos_gamma * t11
                 + sin_gamma
@@ -422,7 +414,7 @@ pub mod rigid_peg_frictionless {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 23 add/sub, 66 mul, 2 div, 0 sqrt, 6 transcendental, 0 branches; 22 `let`s.
+    /// 23 add/sub, 66 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 22 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -434,19 +426,17 @@ pub mod rigid_peg_frictionless {
         let m = p[3];
         let g = p[4];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t10) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
         let t7 = sin_gamma * sin_gamma;
         let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
         let t9 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
-        let t10 = t1.cos();
         let t11 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t5 * t6)
             + sin_gamma
                 * (d_peg * t4 * t6 * t10 - T::from_f64(0.5) * cos_gamma * t5 * t8);

@@ -32,7 +32,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 63 add/sub, 168 mul, 4 div, 0 sqrt, 7 transcendental, 0 branches; 40 `let`s.
+    /// 63 add/sub, 168 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 40 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -56,13 +56,12 @@ pub mod rigid_peg_planar {
         let t_k_z = t[1];
         let t_b_eta = t[2];
         let t_b_z = t[3];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t20) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
@@ -78,7 +77,6 @@ pub mod rigid_peg_planar {
         let t17 = (d_hole * t2 * t3 * t7).hypot(t13);
         let t18 = T::from_f64(1.0) / t17;
         let t19 = cos_gamma * t16;
-        let t20 = t1.cos();
         let t21 = d_peg * t4 * t7 * t20 - T::from_f64(0.5) * cos_gamma * t6 * t11;
         let t22 = sin_gamma * t21;
         let t23 = t19 + t22;
@@ -152,7 +150,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 65 add/sub, 169 mul, 4 div, 0 sqrt, 7 transcendental, 0 branches; 40 `let`s.
+    /// 65 add/sub, 169 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 40 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -177,13 +175,12 @@ pub mod rigid_peg_planar {
         let t_k_z = t[1];
         let t_b_eta = t[2];
         let t_b_z = t[3];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t20) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
@@ -199,7 +196,6 @@ pub mod rigid_peg_planar {
         let t17 = (d_hole * t2 * t3 * t7).hypot(t13);
         let t18 = T::from_f64(1.0) / t17;
         let t19 = cos_gamma * t16;
-        let t20 = t1.cos();
         let t21 = d_peg * t4 * t7 * t20 - T::from_f64(0.5) * cos_gamma * t6 * t11;
         let t22 = sin_gamma * t21;
         let t23 = t19 + t22;
@@ -271,7 +267,7 @@ pub mod rigid_peg_planar {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 19 add/sub, 50 mul, 2 div, 0 sqrt, 6 transcendental, 0 branches; 18 `let`s.
+    /// 19 add/sub, 50 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 18 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 2>,
@@ -283,20 +279,18 @@ pub mod rigid_peg_planar {
         let d_peg = p[1];
         let h = p[2];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t11) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
         let t7 = T::from_f64(0.5) * t5 * t6;
         let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
         let t9 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
         let t10 = -(T::from_f64(0.5) * h) + t7;
-        let t11 = t1.cos();
         let t12 = gammadot
             * (T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t8
                 - sin_gamma * t9
@@ -333,7 +327,7 @@ pub mod rigid_peg_planar {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 18 add/sub, 53 mul, 2 div, 0 sqrt, 6 transcendental, 0 branches; 17 `let`s.
+    /// 18 add/sub, 53 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 17 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -344,18 +338,16 @@ pub mod rigid_peg_planar {
         let m = p[3];
         let g = p[4];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t9) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
         let t7 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
         let t8 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
-        let t9 = t1.cos();
         let t10 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t5 * t6)
             + sin_gamma
                 * (d_peg * t4 * t6 * t9 - T::from_f64(0.5) * cos_gamma * t5 * t7);

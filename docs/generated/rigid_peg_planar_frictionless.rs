@@ -29,7 +29,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 46 add/sub, 150 mul, 4 div, 0 sqrt, 7 transcendental, 0 branches; 31 `let`s.
+    /// 46 add/sub, 150 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 31 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -47,13 +47,12 @@ pub mod rigid_peg_planar_frictionless {
         let m_gamma = loads[0];
         let f_x = loads[1];
         let f_z = loads[2];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t16) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
@@ -65,7 +64,6 @@ pub mod rigid_peg_planar_frictionless {
         let t13 = -(T::from_f64(0.5) * h) + t8;
         let t14 = (d_hole * t2 * t3 * t7).hypot(t10);
         let t15 = T::from_f64(1.0) / t14;
-        let t16 = t1.cos();
         let t17 = d_peg * t4 * t7 * t16 - T::from_f64(0.5) * cos_gamma * t6 * t9;
         let t18 = cos_gamma * t13 + sin_gamma * t17;
         let t19 = -(d_peg * t4 * t7 * t16) + T::from_f64(0.5) * cos_gamma * t6 * t9;
@@ -132,7 +130,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 48 add/sub, 151 mul, 4 div, 0 sqrt, 7 transcendental, 0 branches; 31 `let`s.
+    /// 48 add/sub, 151 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 31 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -151,13 +149,12 @@ pub mod rigid_peg_planar_frictionless {
         let gamma0 = p[6];
         let f_x = loads[1];
         let f_z = loads[2];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t16) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
@@ -169,7 +166,6 @@ pub mod rigid_peg_planar_frictionless {
         let t13 = -(T::from_f64(0.5) * h) + t8;
         let t14 = (d_hole * t2 * t3 * t7).hypot(t10);
         let t15 = T::from_f64(1.0) / t14;
-        let t16 = t1.cos();
         let t17 = d_peg * t4 * t7 * t16 - T::from_f64(0.5) * cos_gamma * t6 * t9;
         let t18 = cos_gamma * t13 + sin_gamma * t17;
         let t19 = -(d_peg * t4 * t7 * t16) + T::from_f64(0.5) * cos_gamma * t6 * t9;
@@ -235,7 +231,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 19 add/sub, 50 mul, 2 div, 0 sqrt, 6 transcendental, 0 branches; 18 `let`s.
+    /// 19 add/sub, 50 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 18 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 2>,
@@ -247,20 +243,18 @@ pub mod rigid_peg_planar_frictionless {
         let d_peg = p[1];
         let h = p[2];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t11) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
         let t7 = T::from_f64(0.5) * t5 * t6;
         let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
         let t9 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
         let t10 = -(T::from_f64(0.5) * h) + t7;
-        let t11 = t1.cos();
         let t12 = gammadot
             * (T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t8
                 - sin_gamma * t9
@@ -297,7 +291,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 18 add/sub, 53 mul, 2 div, 0 sqrt, 6 transcendental, 0 branches; 17 `let`s.
+    /// 18 add/sub, 53 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 17 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -308,18 +302,16 @@ pub mod rigid_peg_planar_frictionless {
         let m = p[3];
         let g = p[4];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
+        let (t4, t9) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
         let t7 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
         let t8 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
-        let t9 = t1.cos();
         let t10 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t5 * t6)
             + sin_gamma
                 * (d_peg * t4 * t6 * t9 - T::from_f64(0.5) * cos_gamma * t5 * t7);

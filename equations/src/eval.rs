@@ -59,12 +59,19 @@ pub fn binary(op: Binary, a: f64, b: f64) -> f64 {
     }
 }
 
+/// The exponent emitted as `cbrt` (the `f64` nearest 1/3).
+pub const ONE_THIRD: f64 = 1.0 / 3.0;
+/// The exponent emitted as `cbrt(x)²` (the `f64` nearest 2/3).
+pub const TWO_THIRDS: f64 = 2.0 / 3.0;
+
 /// Value of `base ^ exponent` as the emitter computes it: exponent `0.5` is
-/// `b.sqrt()`, `-0.5` is `1.0 / b.sqrt()`, `1.5` is `b * b.sqrt()`, an
-/// integer exponent `n` with `|n| <= 64` is `b.powi(n)` (which the emitter
-/// writes as `b * b`, `b * b * b` for `n = 2, 3`: the same bits), anything
-/// else `b.powf(e)`. The generated code must make the same choices, or
-/// generated and interpreted values differ in the last bits.
+/// `b.sqrt()`, `-0.5` is `1.0 / b.sqrt()`, `1.5` is `b * b.sqrt()`, `1/3`
+/// is `b.cbrt()` and `2/3` is `c * c` with `c = b.cbrt()` (the real cube
+/// root: defined for `b < 0`, where `powf` is NaN, and about 4× cheaper),
+/// an integer exponent `n` with `|n| <= 64` is `b.powi(n)` (which the
+/// emitter writes as `b * b`, `b * b * b` for `n = 2, 3`: the same bits),
+/// anything else `b.powf(e)`. The generated code must make the same
+/// choices, or generated and interpreted values differ in the last bits.
 pub fn pow(b: f64, e: f64) -> f64 {
     if e == 0.5 {
         b.sqrt()
@@ -72,6 +79,11 @@ pub fn pow(b: f64, e: f64) -> f64 {
         1.0 / b.sqrt()
     } else if e == 1.5 {
         b * b.sqrt()
+    } else if e == ONE_THIRD {
+        b.cbrt()
+    } else if e == TWO_THIRDS {
+        let c = b.cbrt();
+        c * c
     } else if e.fract() == 0.0 && e.abs() <= 64.0 {
         b.powi(e as i32)
     } else {

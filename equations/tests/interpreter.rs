@@ -19,10 +19,15 @@ fn pow_special_cases_match_the_emitter() {
         assert!(same(eval::pow(b, 1.5), b * b.sqrt()), "b sqrt(b) {b}");
         assert!(same(eval::pow(b, 2.0), b * b), "b*b {b}");
         assert!(same(eval::pow(b, 3.0), b * b * b), "b*b*b {b}");
+        assert!(same(eval::pow(b, 1.0 / 3.0), b.cbrt()), "cbrt {b}");
+        assert!(
+            same(eval::pow(b, 2.0 / 3.0), b.cbrt().powi(2)),
+            "cbrt^2 {b}"
+        );
         for n in [-64, -3, -1, 2, 3, 17, 64] {
             assert!(same(eval::pow(b, f64::from(n)), b.powi(n)), "powi {b} {n}");
         }
-        for e in [2.5, -1.5, 1.0 / 3.0, 0.25, 65.0, -65.0, 100.0] {
+        for e in [2.5, -1.5, -1.0 / 3.0, 0.25, 65.0, -65.0, 100.0] {
             assert!(same(eval::pow(b, e), b.powf(e)), "powf {b} {e}");
         }
     }
@@ -32,11 +37,27 @@ fn pow_special_cases_match_the_emitter() {
 fn tape_powers_use_the_same_special_cases() {
     let g = Graph::new();
     let x = g.var("x");
-    let roots = [x.sqrt(), x.powf(-0.5), x.powi(3), x.powf(2.5), x.powi(-2)];
+    let roots = [
+        x.sqrt(),
+        x.powf(-0.5),
+        x.powi(3),
+        x.powf(2.5),
+        x.powi(-2),
+        x.powf(1.0 / 3.0),
+        x.powf(2.0 / 3.0),
+    ];
     let tape = Tape::new(&g, &roots.map(|e| e.id()));
     let v = 1.7f64;
     let out = tape.eval(&[v]);
-    let want = [v.sqrt(), 1.0 / v.sqrt(), v.powi(3), v.powf(2.5), v.powi(-2)];
+    let want = [
+        v.sqrt(),
+        1.0 / v.sqrt(),
+        v.powi(3),
+        v.powf(2.5),
+        v.powi(-2),
+        v.cbrt(),
+        v.cbrt() * v.cbrt(),
+    ];
     for (o, w) in out.iter().zip(want) {
         assert!(same(*o, w), "{o} vs {w}");
     }
