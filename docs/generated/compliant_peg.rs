@@ -859,7 +859,7 @@ pub mod compliant_peg {
     /// - `p0`: vector of 4
     ///
     /// # Cost
-    /// 62 add/sub, 164 mul, 11 div, 4 sqrt, 16 transcendental, 8 branches; 60 `let`s.
+    /// 62 add/sub, 152 mul, 11 div, 4 sqrt, 10 transcendental, 8 branches; 54 `let`s.
     #[inline]
     pub fn contacts<T: Real>(
         y: &SVector<T, 8>,
@@ -921,85 +921,79 @@ pub mod compliant_peg {
         let t17 = T::from_f64(1.0) / e_star;
         let t18 = T::from_f64(1.0) / edge_sum;
         let t19 = (T::from_f64(1.5) * k_edge * t13 * t15 * t17 * t18).cbrt();
-        let t20 = (T::from_f64(1.5) * k_edge * t13 * t15).cbrt();
-        let t21 = (e_star * edge_sum).cbrt().powi(2);
-        let t22 = T::from_f64(1.0) / edge_ma;
-        let t23 = T::from_f64(1.0) / edge_mb;
-        let t24 = -rho_p;
-        let t25 = l_c + t24;
-        let t26 = r + t24;
-        let t27 = r + t0 + x + sin_theta * t25 - T::from_f64(2.0) * t6 * t26;
-        let t28 = zdot
+        let t20 = T::from_f64(1.0) / edge_ma;
+        let t21 = T::from_f64(1.0) / edge_mb;
+        let t22 = -rho_p;
+        let t23 = l_c + t22;
+        let t24 = r + t22;
+        let t25 = r + t0 + x + sin_theta * t23 - T::from_f64(2.0) * t6 * t24;
+        let t26 = zdot
             + thetadot
-                * (-(sin_theta * (l_c + t24 + rho_p * sin_theta))
+                * (-(sin_theta * (l_c + t22 + rho_p * sin_theta))
                     - cos_theta * (r - T::from_f64(2.0) * rho_p * t6));
-        let t29 = t27.max0();
-        let t30 = t29 * t29.sqrt();
-        let t31 = (T::from_f64(1.0)
+        let t27 = t25.max0();
+        let t28 = t27 * t27.sqrt();
+        let t29 = (T::from_f64(1.0)
             + hc_alpha
                 * (xdot
-                    + thetadot * (cos_theta * t25 - T::from_f64(2.0) * t5 * t14 * t26)))
+                    + thetadot * (cos_theta * t23 - T::from_f64(2.0) * t5 * t14 * t24)))
             .max0();
-        let t32 = v_s.hypot(t28);
-        let t33 = T::from_f64(1.0) / wall_sum;
-        let t34 = (T::from_f64(1.5) * k_wall * t17 * t30 * t31 * t33).cbrt();
-        let t35 = (T::from_f64(1.5) * k_wall * t30 * t31).cbrt();
-        let t36 = (e_star * wall_sum).cbrt().powi(2);
-        let t37 = T::from_f64(1.0) / wall_ma;
-        let t38 = T::from_f64(1.0) / wall_mb;
-        let t39 = rho_h + T::from_f64(0.5) * d + t1;
-        let t40 = r + t0 + x + sin_theta * t3 + T::from_f64(2.0) * t6 * t39;
-        let t41 = t8 + sin_theta * t39;
-        let t42 = sin_theta * (xdot + thetadot * (-(r * sin_theta) + cos_theta * t41))
-            + cos_theta * (zdot + thetadot * (-(r * cos_theta) - sin_theta * t41));
-        let t43 = t40.max0();
-        let t44 = t43 * t43.sqrt();
-        let t45 = (T::from_f64(1.0)
+        let t30 = v_s.hypot(t26);
+        let t31 = T::from_f64(1.0) / wall_sum;
+        let t32 = (T::from_f64(1.5) * k_wall * t17 * t28 * t29 * t31).cbrt();
+        let t33 = T::from_f64(1.0) / wall_ma;
+        let t34 = T::from_f64(1.0) / wall_mb;
+        let t35 = rho_h + T::from_f64(0.5) * d + t1;
+        let t36 = r + t0 + x + sin_theta * t3 + T::from_f64(2.0) * t6 * t35;
+        let t37 = t8 + sin_theta * t35;
+        let t38 = sin_theta * (xdot + thetadot * (-(r * sin_theta) + cos_theta * t37))
+            + cos_theta * (zdot + thetadot * (-(r * cos_theta) - sin_theta * t37));
+        let t39 = t36.max0();
+        let t40 = t39 * t39.sqrt();
+        let t41 = (T::from_f64(1.0)
             + hc_alpha
                 * (xdot * (T::from_f64(1.0) - T::from_f64(2.0) * t6) - zdot * sin_theta
-                    + thetadot * (t8 + T::from_f64(2.0) * t5 * t14 * t39)))
+                    + thetadot * (t8 + T::from_f64(2.0) * t5 * t14 * t35)))
             .max0();
-        let t46 = v_s.hypot(t42);
-        let t47 = (T::from_f64(1.5) * k_edge * t17 * t18 * t44 * t45).cbrt();
-        let t48 = (T::from_f64(1.5) * k_edge * t44 * t45).cbrt();
-        let t49 = rho_p + t10;
-        let t50 = r + t0 + t1 - sin_theta * t25 + T::from_f64(2.0) * t6 * t49;
-        let t51 = zdot
+        let t42 = v_s.hypot(t38);
+        let t43 = (T::from_f64(1.5) * k_edge * t17 * t18 * t40 * t41).cbrt();
+        let t44 = rho_p + t10;
+        let t45 = r + t0 + t1 - sin_theta * t23 + T::from_f64(2.0) * t6 * t44;
+        let t46 = zdot
             + thetadot
-                * (-(sin_theta * (l_c + t24 - rho_p * sin_theta))
+                * (-(sin_theta * (l_c + t22 - rho_p * sin_theta))
                     - cos_theta * (t10 + T::from_f64(2.0) * rho_p * t6));
-        let t52 = t50.max0();
-        let t53 = t52 * t52.sqrt();
-        let t54 = (T::from_f64(1.0)
+        let t47 = t45.max0();
+        let t48 = t47 * t47.sqrt();
+        let t49 = (T::from_f64(1.0)
             + hc_alpha
                 * (-xdot
                     + thetadot
-                        * (-(cos_theta * t25) + T::from_f64(2.0) * t5 * t14 * t49)))
+                        * (-(cos_theta * t23) + T::from_f64(2.0) * t5 * t14 * t44)))
             .max0();
-        let t55 = v_s.hypot(t51);
-        let t56 = (T::from_f64(1.5) * k_wall * t17 * t33 * t53 * t54).cbrt();
-        let t57 = (T::from_f64(1.5) * k_wall * t53 * t54).cbrt();
+        let t50 = v_s.hypot(t46);
+        let t51 = (T::from_f64(1.5) * k_wall * t17 * t31 * t48 * t49).cbrt();
         let normal = Vector4::new(
             k_edge * t13 * t15,
-            k_wall * t30 * t31,
-            k_edge * t44 * t45,
-            k_wall * t53 * t54,
+            k_wall * t28 * t29,
+            k_edge * t40 * t41,
+            k_wall * t48 * t49,
         );
         let friction = Vector4::new(
             -mu * k_edge * t11 * t13 * t15 / t16,
-            -mu * k_wall * t28 * t30 * t31 / t32,
-            -mu * k_edge * t42 * t44 * t45 / t46,
-            -mu * k_wall * t51 * t53 * t54 / t55,
+            -mu * k_wall * t26 * t28 * t29 / t30,
+            -mu * k_edge * t38 * t40 * t41 / t42,
+            -mu * k_wall * t46 * t48 * t49 / t50,
         );
-        let delta = Vector4::new(t7, t27, t40, t50);
-        let slip = Vector4::new(t11, t28, t42, t51);
-        let a = Vector4::new(edge_ma * t19, wall_ma * t34, edge_ma * t47, wall_ma * t56);
-        let b = Vector4::new(edge_mb * t19, wall_mb * t34, edge_mb * t47, wall_mb * t56);
+        let delta = Vector4::new(t7, t25, t36, t45);
+        let slip = Vector4::new(t11, t26, t38, t46);
+        let a = Vector4::new(edge_ma * t19, wall_ma * t32, edge_ma * t43, wall_ma * t51);
+        let b = Vector4::new(edge_mb * t19, wall_mb * t32, edge_mb * t43, wall_mb * t51);
         let p0 = Vector4::new(
-            T::from_f64(0.3183098861837907) * t20 * t21 * t22 * t23,
-            T::from_f64(0.3183098861837907) * t35 * t36 * t37 * t38,
-            T::from_f64(0.3183098861837907) * t21 * t22 * t23 * t48,
-            T::from_f64(0.3183098861837907) * t36 * t37 * t38 * t57,
+            T::from_f64(0.3183098861837907) * e_star * edge_sum * t19 * t20 * t21,
+            T::from_f64(0.3183098861837907) * e_star * wall_sum * t32 * t33 * t34,
+            T::from_f64(0.3183098861837907) * e_star * edge_sum * t20 * t21 * t43,
+            T::from_f64(0.3183098861837907) * e_star * wall_sum * t33 * t34 * t51,
         );
         (normal, friction, delta, slip, a, b, p0)
     }

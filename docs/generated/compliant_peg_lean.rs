@@ -545,7 +545,7 @@ pub mod compliant_peg_lean {
     /// - `p0`: vector of 2
     ///
     /// # Cost
-    /// 32 add/sub, 82 mul, 7 div, 2 sqrt, 10 transcendental, 4 branches; 33 `let`s.
+    /// 32 add/sub, 74 mul, 7 div, 2 sqrt, 6 transcendental, 4 branches; 29 `let`s.
     #[inline]
     pub fn contacts<T: Real>(
         y: &SVector<T, 8>,
@@ -604,39 +604,37 @@ pub mod compliant_peg_lean {
         let t14 = v_s.hypot(t9);
         let t15 = T::from_f64(1.0) / e_star;
         let t16 = (T::from_f64(1.5) * k_edge * t11 * t13 * t15 / edge_sum).cbrt();
-        let t17 = (T::from_f64(1.5) * k_edge * t11 * t13).cbrt();
-        let t18 = (e_star * edge_sum).cbrt().powi(2);
-        let t19 = -rho_p;
-        let t20 = l_c + t19;
-        let t21 = r + t19;
-        let t22 = r + t0 + x + sin_theta * t20 - T::from_f64(2.0) * t6 * t21;
-        let t23 = zdot
+        let t17 = -rho_p;
+        let t18 = l_c + t17;
+        let t19 = r + t17;
+        let t20 = r + t0 + x + sin_theta * t18 - T::from_f64(2.0) * t6 * t19;
+        let t21 = zdot
             + thetadot
-                * (-(sin_theta * (l_c + t19 + rho_p * sin_theta))
+                * (-(sin_theta * (l_c + t17 + rho_p * sin_theta))
                     - cos_theta * (r - T::from_f64(2.0) * rho_p * t6));
-        let t24 = t22.max0();
-        let t25 = t24 * t24.sqrt();
-        let t26 = (T::from_f64(1.0)
+        let t22 = t20.max0();
+        let t23 = t22 * t22.sqrt();
+        let t24 = (T::from_f64(1.0)
             + hc_alpha
                 * (xdot
-                    + thetadot * (cos_theta * t20 - T::from_f64(2.0) * t5 * t12 * t21)))
+                    + thetadot * (cos_theta * t18 - T::from_f64(2.0) * t5 * t12 * t19)))
             .max0();
-        let t27 = v_s.hypot(t23);
-        let t28 = (T::from_f64(1.5) * k_wall * t15 * t25 * t26 / wall_sum).cbrt();
-        let t29 = (T::from_f64(1.5) * k_wall * t25 * t26).cbrt();
-        let t30 = (e_star * wall_sum).cbrt().powi(2);
-        let normal = Vector2::new(k_edge * t11 * t13, k_wall * t25 * t26);
+        let t25 = v_s.hypot(t21);
+        let t26 = (T::from_f64(1.5) * k_wall * t15 * t23 * t24 / wall_sum).cbrt();
+        let normal = Vector2::new(k_edge * t11 * t13, k_wall * t23 * t24);
         let friction = Vector2::new(
             -mu * k_edge * t9 * t11 * t13 / t14,
-            -mu * k_wall * t23 * t25 * t26 / t27,
+            -mu * k_wall * t21 * t23 * t24 / t25,
         );
-        let delta = Vector2::new(t7, t22);
-        let slip = Vector2::new(t9, t23);
-        let a = Vector2::new(edge_ma * t16, wall_ma * t28);
-        let b = Vector2::new(edge_mb * t16, wall_mb * t28);
+        let delta = Vector2::new(t7, t20);
+        let slip = Vector2::new(t9, t21);
+        let a = Vector2::new(edge_ma * t16, wall_ma * t26);
+        let b = Vector2::new(edge_mb * t16, wall_mb * t26);
         let p0 = Vector2::new(
-            T::from_f64(0.3183098861837907) * t17 * t18 / (edge_ma * edge_mb),
-            T::from_f64(0.3183098861837907) * t29 * t30 / (wall_ma * wall_mb),
+            T::from_f64(0.3183098861837907) * e_star * edge_sum * t16
+                / (edge_ma * edge_mb),
+            T::from_f64(0.3183098861837907) * e_star * wall_sum * t26
+                / (wall_ma * wall_mb),
         );
         (normal, friction, delta, slip, a, b, p0)
     }
