@@ -53,7 +53,7 @@ pub mod compliant_peg {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 113 add/sub, 230 mul, 6 div, 4 sqrt, 6 transcendental, 16 branches; 78 `let`s.
+    /// 113 add/sub, 227 mul, 6 div, 4 sqrt, 6 transcendental, 16 branches; 78 `let`s.
     #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
@@ -103,7 +103,7 @@ pub mod compliant_peg {
         let t22 = -(cos_theta * t7) - T::from_f64(2.0) * t6 * t9 * t21;
         let t23 = xdot * t20 + zdot * sin_theta + thetadot * t22;
         let t24 = (T::from_f64(1.0) + hc_alpha * t23).max0();
-        let t25 = k_edge * t19 * t24 - k_edge * t19;
+        let t25 = k_edge * t19 * (t24 - T::from_f64(1.0));
         let t26 = v_s.hypot(t17);
         let t27 = T::from_f64(1.0) / t26;
         let t28 = t11.step();
@@ -119,7 +119,7 @@ pub mod compliant_peg {
         let t37 = cos_theta * t30 - T::from_f64(2.0) * t9 * t21 * t31;
         let t38 = xdot + thetadot * t37;
         let t39 = (T::from_f64(1.0) + hc_alpha * t38).max0();
-        let t40 = k_wall * t36 * t39 - k_wall * t36;
+        let t40 = k_wall * t36 * (t39 - T::from_f64(1.0));
         let t41 = v_s.hypot(t34);
         let t42 = T::from_f64(1.0) / t41;
         let t43 = t32.step();
@@ -136,7 +136,7 @@ pub mod compliant_peg {
         let t53 = t12 + T::from_f64(2.0) * t9 * t21 * t44;
         let t54 = xdot * t52 - zdot * sin_theta + thetadot * t53;
         let t55 = (T::from_f64(1.0) + hc_alpha * t54).max0();
-        let t56 = k_edge * t51 * t55 - k_edge * t51;
+        let t56 = k_edge * t51 * (t55 - T::from_f64(1.0));
         let t57 = v_s.hypot(t49);
         let t58 = T::from_f64(1.0) / t57;
         let t59 = t45.step();
@@ -203,7 +203,7 @@ pub mod compliant_peg {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 474 add/sub, 2078 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 219 `let`s.
+    /// 474 add/sub, 2058 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 219 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -262,7 +262,7 @@ pub mod compliant_peg {
         let t32 = xdot * t29 + zdot * sin_theta + thetadot * t31;
         let t33 = T::from_f64(1.0) + hc_alpha * t32;
         let t34 = t33.max0();
-        let t35 = k_edge * t28 * t34 - k_edge * t28;
+        let t35 = k_edge * t28 * (t34 - T::from_f64(1.0));
         let t36 = v_s.hypot(t26);
         let t37 = T::from_f64(1.0) / t36;
         let t38 = t13.step();
@@ -307,7 +307,7 @@ pub mod compliant_peg {
         let t77 = xdot * t75 - zdot * sin_theta + thetadot * t76;
         let t78 = T::from_f64(1.0) + hc_alpha * t77;
         let t79 = t78.max0();
-        let t80 = k_edge * t74 * t79 - k_edge * t74;
+        let t80 = k_edge * t74 * (t79 - T::from_f64(1.0));
         let t81 = v_s.hypot(t72);
         let t82 = T::from_f64(1.0) / t81;
         let t83 = t65.step();
@@ -326,7 +326,7 @@ pub mod compliant_peg {
         let t96 = -xdot + thetadot * t95;
         let t97 = T::from_f64(1.0) + hc_alpha * t96;
         let t98 = t97.max0();
-        let t99 = k_wall * t94 * t98 - k_wall * t94;
+        let t99 = k_wall * t94 * (t98 - T::from_f64(1.0));
         let t100 = v_s.hypot(t92);
         let t101 = T::from_f64(1.0) / t100;
         let t102 = t88.step();
@@ -337,9 +337,10 @@ pub mod compliant_peg {
         let t107 = t29 * t29;
         let t108 = t38 * t38;
         let t109 = t33.step();
-        let t110 = T::from_f64(1.5) * k_edge * t29 * t34 * t38 * t106
-            + T::from_f64(2.0) * thetadot * k_edge * hc_alpha * t11 * t28 * t30 * t109
-            - T::from_f64(1.5) * k_edge * t29 * t38 * t106;
+        let t110 = k_edge
+            * (T::from_f64(1.5) * t29 * t34 * t38 * t106
+                + T::from_f64(2.0) * thetadot * hc_alpha * t11 * t28 * t30 * t109
+                - T::from_f64(1.5) * t29 * t38 * t106);
         let t111 = sin_theta * sin_theta;
         let t112 = t50.sqrt();
         let t113 = t61 * t61;
@@ -347,22 +348,25 @@ pub mod compliant_peg {
         let t115 = t75 * t75;
         let t116 = t83 * t83;
         let t117 = t78.step();
-        let t118 = T::from_f64(1.5) * k_edge * t75 * t79 * t83 * t114
-            - T::from_f64(2.0) * thetadot * k_edge * hc_alpha * t11 * t30 * t74 * t117
-            - T::from_f64(1.5) * k_edge * t75 * t83 * t114;
+        let t118 = k_edge
+            * (T::from_f64(1.5) * t75 * t79 * t83 * t114
+                - T::from_f64(2.0) * thetadot * hc_alpha * t11 * t30 * t74 * t117
+                - T::from_f64(1.5) * t75 * t83 * t114);
         let t119 = t93.sqrt();
         let t120 = -T::from_f64(1.5) * k_wall * t98 * t102 * t119;
         let t121 = T::from_f64(1.5) * k_wall * t102 * t119;
         let t122 = t102 * t102;
         let t123 = -T::from_f64(1.5) * k_edge * sin_theta * t29 * t106 * t108;
-        let t124 = T::from_f64(1.5) * k_edge * sin_theta * t34 * t38 * t106
-            + thetadot * k_edge * hc_alpha * cos_theta * t28 * t109
-            - T::from_f64(1.5) * k_edge * sin_theta * t38 * t106;
+        let t124 = k_edge
+            * (T::from_f64(1.5) * sin_theta * t34 * t38 * t106
+                + thetadot * hc_alpha * cos_theta * t28 * t109
+                - T::from_f64(1.5) * sin_theta * t38 * t106);
         let t125 = cos_theta * cos_theta;
         let t126 = T::from_f64(1.5) * k_edge * sin_theta * t75 * t114 * t116;
-        let t127 = -(T::from_f64(1.5) * k_edge * sin_theta * t79 * t83 * t114)
-            - thetadot * k_edge * hc_alpha * cos_theta * t74 * t117
-            + T::from_f64(1.5) * k_edge * sin_theta * t83 * t114;
+        let t127 = k_edge
+            * (-(T::from_f64(1.5) * sin_theta * t79 * t83 * t114)
+                - thetadot * hc_alpha * cos_theta * t74 * t117
+                + T::from_f64(1.5) * sin_theta * t83 * t114);
         let t128 = -T::from_f64(1.5) * k_edge * t29 * t31 * t106 * t108;
         let t129 = -T::from_f64(2.0) * k_edge * t11 * t28 * t30 * t38;
         let t130 = -T::from_f64(2.0) * t11 * t30 * t35;
@@ -370,9 +374,9 @@ pub mod compliant_peg {
         let t132 = t8 + t5 * t12 - t5 * t131;
         let t133 = T::from_f64(2.0) * xdot * t11 * t30 + zdot * cos_theta
             + thetadot * t132;
-        let t134 = T::from_f64(1.5) * k_edge * t31 * t34 * t38 * t106
-            + k_edge * hc_alpha * t28 * t109 * t133
-            - T::from_f64(1.5) * k_edge * t31 * t38 * t106;
+        let t134 = k_edge
+            * (T::from_f64(1.5) * t31 * t34 * t38 * t106 + hc_alpha * t28 * t109 * t133
+                - T::from_f64(1.5) * t31 * t38 * t106);
         let t135 = t21 + t23 + cos_theta * t9;
         let t136 = t17 - cos_theta * t15 - sin_theta * t9;
         let t137 = cos_theta * t20 + thetadot * sin_theta * t135 - sin_theta * t25
@@ -387,9 +391,9 @@ pub mod compliant_peg {
         let t145 = t7 + t63 * t131 - t12 * t63;
         let t146 = -(T::from_f64(2.0) * xdot * t11 * t30) - zdot * cos_theta
             + thetadot * t145;
-        let t147 = T::from_f64(1.5) * k_edge * t76 * t79 * t83 * t114
-            + k_edge * hc_alpha * t74 * t117 * t146
-            - T::from_f64(1.5) * k_edge * t76 * t83 * t114;
+        let t147 = k_edge
+            * (T::from_f64(1.5) * t76 * t79 * t83 * t114 + hc_alpha * t74 * t117 * t146
+                - T::from_f64(1.5) * t76 * t83 * t114);
         let t148 = t22 + t69 + cos_theta * t64;
         let t149 = t18 - cos_theta * t66 - sin_theta * t64;
         let t150 = cos_theta * t68 + thetadot * sin_theta * t148 - sin_theta * t71
@@ -439,14 +443,14 @@ pub mod compliant_peg {
         let t191 = mu * k_edge * cos_theta * t74 * t79 * t84 * t85 * t151;
         let t192 = -mu * k_wall * t91 * t94 * t98 * t101;
         let t193 = mu * k_wall * t91 * t94 * t98 * t103 * t183;
-        let t194 = T::from_f64(1.5) * k_wall * t55 * t61 * t112
-            - T::from_f64(1.5) * k_wall * t61 * t112;
+        let t194 = k_wall * t61 * t112 * (T::from_f64(1.5) * t55 - T::from_f64(1.5));
         let t195 = t120 + t121;
         let t196 = t31 * t31;
         let t197 = t52 * t52;
-        let t198 = thetadot * k_wall * hc_alpha * t51 * t140 * t141
-            + T::from_f64(1.5) * k_wall * t52 * t55 * t61 * t112
-            - T::from_f64(1.5) * k_wall * t52 * t61 * t112;
+        let t198 = k_wall
+            * (thetadot * hc_alpha * t51 * t140 * t141
+                + T::from_f64(1.5) * t52 * t55 * t61 * t112
+                - T::from_f64(1.5) * t52 * t61 * t112);
         let t199 = t76 * t76;
         let t200 = t95 * t95;
         let t201 = t152 + t155 + t156;

@@ -53,7 +53,7 @@ pub mod compliant_peg_lean {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 60 add/sub, 123 mul, 4 div, 2 sqrt, 4 transcendental, 8 branches; 45 `let`s.
+    /// 60 add/sub, 121 mul, 4 div, 2 sqrt, 4 transcendental, 8 branches; 45 `let`s.
     #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
@@ -101,7 +101,7 @@ pub mod compliant_peg_lean {
         let t20 = -(cos_theta * t7) - T::from_f64(2.0) * t6 * t9 * t19;
         let t21 = xdot * t18 + zdot * sin_theta + thetadot * t20;
         let t22 = (T::from_f64(1.0) + hc_alpha * t21).max0();
-        let t23 = k_edge * t17 * t22 - k_edge * t17;
+        let t23 = k_edge * t17 * (t22 - T::from_f64(1.0));
         let t24 = v_s.hypot(t15);
         let t25 = T::from_f64(1.0) / t24;
         let t26 = t11.step();
@@ -117,7 +117,7 @@ pub mod compliant_peg_lean {
         let t35 = cos_theta * t28 - T::from_f64(2.0) * t9 * t19 * t29;
         let t36 = xdot + thetadot * t35;
         let t37 = (T::from_f64(1.0) + hc_alpha * t36).max0();
-        let t38 = k_wall * t34 * t37 - k_wall * t34;
+        let t38 = k_wall * t34 * (t37 - T::from_f64(1.0));
         let t39 = v_s.hypot(t32);
         let t40 = T::from_f64(1.0) / t39;
         let t41 = t30.step();
@@ -157,7 +157,7 @@ pub mod compliant_peg_lean {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 230 add/sub, 1068 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 115 `let`s.
+    /// 230 add/sub, 1056 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 115 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -210,7 +210,7 @@ pub mod compliant_peg_lean {
         let t26 = xdot * t23 + zdot * sin_theta + thetadot * t25;
         let t27 = T::from_f64(1.0) + hc_alpha * t26;
         let t28 = t27.max0();
-        let t29 = k_edge * t22 * t28 - k_edge * t22;
+        let t29 = k_edge * t22 * (t28 - T::from_f64(1.0));
         let t30 = v_s.hypot(t20);
         let t31 = T::from_f64(1.0) / t30;
         let t32 = t12.step();
@@ -243,16 +243,18 @@ pub mod compliant_peg_lean {
         let t59 = t23 * t23;
         let t60 = t32 * t32;
         let t61 = t27.step();
-        let t62 = T::from_f64(1.5) * k_edge * t23 * t28 * t32 * t58
-            + T::from_f64(2.0) * thetadot * k_edge * hc_alpha * t10 * t22 * t24 * t61
-            - T::from_f64(1.5) * k_edge * t23 * t32 * t58;
+        let t62 = k_edge
+            * (T::from_f64(1.5) * t23 * t28 * t32 * t58
+                + T::from_f64(2.0) * thetadot * hc_alpha * t10 * t22 * t24 * t61
+                - T::from_f64(1.5) * t23 * t32 * t58);
         let t63 = sin_theta * sin_theta;
         let t64 = t43.sqrt();
         let t65 = t54 * t54;
         let t66 = -T::from_f64(1.5) * k_edge * sin_theta * t23 * t58 * t60;
-        let t67 = T::from_f64(1.5) * k_edge * sin_theta * t28 * t32 * t58
-            + thetadot * k_edge * hc_alpha * cos_theta * t22 * t61
-            - T::from_f64(1.5) * k_edge * sin_theta * t32 * t58;
+        let t67 = k_edge
+            * (T::from_f64(1.5) * sin_theta * t28 * t32 * t58
+                + thetadot * hc_alpha * cos_theta * t22 * t61
+                - T::from_f64(1.5) * sin_theta * t32 * t58);
         let t68 = cos_theta * cos_theta;
         let t69 = -T::from_f64(1.5) * k_edge * t23 * t25 * t58 * t60;
         let t70 = -T::from_f64(2.0) * k_edge * t10 * t22 * t24 * t32;
@@ -261,9 +263,9 @@ pub mod compliant_peg_lean {
         let t73 = sin_theta * t6 + t5 * t11 - t5 * t72;
         let t74 = T::from_f64(2.0) * xdot * t10 * t24 + zdot * cos_theta
             + thetadot * t73;
-        let t75 = T::from_f64(1.5) * k_edge * t25 * t28 * t32 * t58
-            + k_edge * hc_alpha * t22 * t61 * t74
-            - T::from_f64(1.5) * k_edge * t25 * t32 * t58;
+        let t75 = k_edge
+            * (T::from_f64(1.5) * t25 * t28 * t32 * t58 + hc_alpha * t22 * t61 * t74
+                - T::from_f64(1.5) * t25 * t32 * t58);
         let t76 = t16 + t17 + cos_theta * t8;
         let t77 = -(r * sin_theta) - cos_theta * t13 - sin_theta * t8;
         let t78 = cos_theta * t15 + thetadot * sin_theta * t76 - sin_theta * t19
@@ -292,13 +294,13 @@ pub mod compliant_peg_lean {
         let t99 = mu * k_edge * cos_theta * t22 * t28 * t33 * t34 * t79;
         let t100 = -mu * k_wall * t41 * t44 * t48 * t53;
         let t101 = mu * k_wall * t41 * t44 * t48 * t55 * t96;
-        let t102 = T::from_f64(1.5) * k_wall * t48 * t54 * t64
-            - T::from_f64(1.5) * k_wall * t54 * t64;
+        let t102 = k_wall * t54 * t64 * (T::from_f64(1.5) * t48 - T::from_f64(1.5));
         let t103 = t25 * t25;
         let t104 = t45 * t45;
-        let t105 = thetadot * k_wall * hc_alpha * t44 * t81 * t82
-            + T::from_f64(1.5) * k_wall * t45 * t48 * t54 * t64
-            - T::from_f64(1.5) * k_wall * t45 * t54 * t64;
+        let t105 = k_wall
+            * (thetadot * hc_alpha * t44 * t81 * t82
+                + T::from_f64(1.5) * t45 * t48 * t54 * t64
+                - T::from_f64(1.5) * t45 * t54 * t64);
         let t106 = t33 * t33;
         let t107 = cos_theta * t40 + sin_theta * t39;
         let t108 = t107 * t107;

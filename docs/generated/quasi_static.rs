@@ -158,7 +158,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 9 add/sub, 17 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 6 `let`s.
+    /// 9 add/sub, 15 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 6 `let`s.
     #[inline]
     pub fn whitney_tip<T: Real>(
         pose: &SVector<T, 2>,
@@ -178,8 +178,8 @@ pub mod quasi_static {
         let t3 = -fz - mu * fx;
         let f_tip = -t1 * t2;
         let f_edge = -t2 * t3;
-        let moment = t1 * t2 * (r * sin_theta + mu * r * cos_theta)
-            + t2 * t3 * (-(mu * r) - l);
+        let moment = t2
+            * (t1 * (r * (sin_theta + mu * cos_theta)) + t3 * (-(mu * r) - l));
         (f_tip, f_edge, moment)
     }
 }

@@ -42,7 +42,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 92 add/sub, 270 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
+    /// 92 add/sub, 253 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -147,19 +147,22 @@ pub mod rigid_peg {
         let t53 = t7 * t10 * t21;
         let t54 = d_hole * t2 * t3 * t7 * t21;
         let a = Matrix5::new(
-            T::from_f64(0.08333333333333333) * m * t40
-                + T::from_f64(0.5) * m
-                    * (T::from_f64(2.0) * (t26 * t26) + T::from_f64(2.0) * (t30 * t30)),
+            m
+                * (T::from_f64(0.08333333333333333) * t40
+                    + T::from_f64(0.5)
+                        * (T::from_f64(2.0) * (t26 * t26)
+                            + T::from_f64(2.0) * (t30 * t30))),
             T::from_f64(0.0),
-            -(f * t_k_eta * t47) - f * t_k_z * (t14 + t27 + t29 + t31),
-            -(f * t_b1_eta * t47) - f * t_b1_z * t48,
-            -(f * t_b2_eta * t47) - f * t_b2_z * t48,
+            f * (-(t_k_eta * t47) - t_k_z * (t14 + t27 + t29 + t31)),
+            f * (-(t_b1_eta * t47) - t_b1_z * t48),
+            f * (-(t_b2_eta * t47) - t_b2_z * t48),
             T::from_f64(0.0),
-            T::from_f64(0.25) * m * t11 * t42 + T::from_f64(0.125) * m * t34 * t39
-                + T::from_f64(0.08333333333333333) * m * t11 * t40,
+            m
+                * (T::from_f64(0.25) * t11 * t42 + T::from_f64(0.125) * t34 * t39
+                    + T::from_f64(0.08333333333333333) * t11 * t40),
             T::from_f64(0.5) * d_hole * f * t_k_n,
-            f * t_b1_eta * t15 - f * t_b1_n * t7 * t10,
-            -(f * t_b2_eta * t15) - f * t_b2_n * t7 * t10,
+            f * (t_b1_eta * t15 - t_b1_n * t7 * t10),
+            f * (-(t_b2_eta * t15) - t_b2_n * t7 * t10),
             m * t26,
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
@@ -186,20 +189,21 @@ pub mod rigid_peg {
                 + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t38
                     * t40
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t35 * t49
-                        + T::from_f64(2.0) * gammadot * t37 * t50),
+                    * (gammadot
+                        * (T::from_f64(2.0) * t35 * t49 + T::from_f64(2.0) * t37 * t50)),
             m_psi + sin_gamma * t19 * (t45 + t46)
                 - gammadot
-                    * (T::from_f64(0.5) * m * psidot * sin_gamma * cos_gamma * t42
-                        + T::from_f64(0.25) * m * psidot * t11 * t51 * t52
-                        - T::from_f64(0.25) * m * psidot * sin_gamma * cos_gamma * t39
-                        + T::from_f64(0.16666666666666666) * m * psidot * sin_gamma
-                            * cos_gamma * t40),
+                    * (m * psidot
+                        * (T::from_f64(0.5) * sin_gamma * cos_gamma * t42
+                            + T::from_f64(0.25) * t11 * t51 * t52
+                            - T::from_f64(0.25) * sin_gamma * cos_gamma * t39
+                            + T::from_f64(0.16666666666666666) * sin_gamma * cos_gamma
+                                * t40)),
             t43 + t44 - m * (t35 * t36 - sin_gamma * t19 * t38),
             t45 + t46
                 - m
-                    * (gammadot * (psidot * cos_gamma * t19 + psidot * sin_gamma * t24)
-                        + gammadot * psidot * t26),
+                    * (gammadot
+                        * (psidot * (cos_gamma * t19 + sin_gamma * t24) + psidot * t26)),
             f_z - m * g - m * t36 * t37,
         );
         (a, b)
@@ -219,7 +223,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 95 add/sub, 272 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
+    /// 95 add/sub, 256 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -327,14 +331,14 @@ pub mod rigid_peg {
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
-            -(f * t_k_eta * t47) - f * t_k_z * (t14 + t27 + t29 + t31),
-            -(f * t_b1_eta * t47) - f * t_b1_z * t48,
-            -(f * t_b2_eta * t47) - f * t_b2_z * t48,
+            f * (-(t_k_eta * t47) - t_k_z * (t14 + t27 + t29 + t31)),
+            f * (-(t_b1_eta * t47) - t_b1_z * t48),
+            f * (-(t_b2_eta * t47) - t_b2_z * t48),
             T::from_f64(0.0),
             -T::from_f64(1.0),
             T::from_f64(0.5) * d_hole * f * t_k_n,
-            f * t_b1_eta * t15 - f * t_b1_n * t7 * t10,
-            -(f * t_b2_eta * t15) - f * t_b2_n * t7 * t10,
+            f * (t_b1_eta * t15 - t_b1_n * t7 * t10),
+            f * (-(t_b2_eta * t15) - t_b2_n * t7 * t10),
             T::from_f64(0.0),
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
@@ -361,28 +365,30 @@ pub mod rigid_peg {
                 + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t38
                     * t40
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t35 * t49
-                        + T::from_f64(2.0) * gammadot * t37 * t50)
+                    * (gammadot
+                        * (T::from_f64(2.0) * t35 * t49 + T::from_f64(2.0) * t37 * t50))
                 - gammaddot
-                    * (T::from_f64(0.08333333333333333) * m * t40
-                        + T::from_f64(0.5) * m
-                            * (T::from_f64(2.0) * (t26 * t26)
-                                + T::from_f64(2.0) * (t30 * t30))),
+                    * (m
+                        * (T::from_f64(0.08333333333333333) * t40
+                            + T::from_f64(0.5)
+                                * (T::from_f64(2.0) * (t26 * t26)
+                                    + T::from_f64(2.0) * (t30 * t30)))),
             sin_gamma * t19 * (t45 + t46)
                 - gammadot
-                    * (T::from_f64(0.5) * m * psidot * sin_gamma * cos_gamma * t42
-                        + T::from_f64(0.25) * m * psidot * t11 * t51 * t52
-                        - T::from_f64(0.25) * m * psidot * sin_gamma * cos_gamma * t39
-                        + T::from_f64(0.16666666666666666) * m * psidot * sin_gamma
-                            * cos_gamma * t40)
+                    * (m * psidot
+                        * (T::from_f64(0.5) * sin_gamma * cos_gamma * t42
+                            + T::from_f64(0.25) * t11 * t51 * t52
+                            - T::from_f64(0.25) * sin_gamma * cos_gamma * t39
+                            + T::from_f64(0.16666666666666666) * sin_gamma * cos_gamma
+                                * t40))
                 - psiddot
-                    * (T::from_f64(0.25) * m * t11 * t42
-                        + T::from_f64(0.125) * m * t34 * t39
-                        + T::from_f64(0.08333333333333333) * m * t11 * t40),
+                    * (m
+                        * (T::from_f64(0.25) * t11 * t42 + T::from_f64(0.125) * t34 * t39
+                            + T::from_f64(0.08333333333333333) * t11 * t40)),
             t43 + t44 - m * (t35 * t36 + gammaddot * t26 - sin_gamma * t19 * t38),
             t45 + t46
                 - m
-                    * (gammadot * (psidot * cos_gamma * t19 + psidot * sin_gamma * t24)
+                    * (gammadot * (psidot * (cos_gamma * t19 + sin_gamma * t24))
                         + psiddot * sin_gamma * t19 + gammadot * psidot * t26),
             f_z - m * g - m * (t36 * t37 + gammaddot * t30),
         );

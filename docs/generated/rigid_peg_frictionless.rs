@@ -29,7 +29,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 68 add/sub, 234 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 49 `let`s.
+    /// 68 add/sub, 222 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 49 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -115,16 +115,19 @@ pub mod rigid_peg_frictionless {
         let t43 = t7 * (t8 + d_hole * cos_gamma * t2 * t3 * t7) * t18;
         let t44 = d_hole * t2 * t3 * t7 * t18;
         let a = Matrix5::new(
-            T::from_f64(0.08333333333333333) * m * t32
-                + T::from_f64(0.5) * m
-                    * (T::from_f64(2.0) * (t21 * t21) + T::from_f64(2.0) * (t23 * t23)),
+            m
+                * (T::from_f64(0.08333333333333333) * t32
+                    + T::from_f64(0.5)
+                        * (T::from_f64(2.0) * (t21 * t21)
+                            + T::from_f64(2.0) * (t23 * t23))),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            T::from_f64(0.25) * m * t9 * t34 + T::from_f64(0.125) * m * t26 * t31
-                + T::from_f64(0.08333333333333333) * m * t9 * t32,
+            m
+                * (T::from_f64(0.25) * t9 * t34 + T::from_f64(0.125) * t26 * t31
+                    + T::from_f64(0.08333333333333333) * t9 * t32),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
@@ -154,20 +157,21 @@ pub mod rigid_peg_frictionless {
                 + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t30
                     * t32
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t27 * t39
-                        + T::from_f64(2.0) * gammadot * t29 * t40),
+                    * (gammadot
+                        * (T::from_f64(2.0) * t27 * t39 + T::from_f64(2.0) * t29 * t40)),
             m_psi + sin_gamma * t16 * (t37 + t38)
                 - gammadot
-                    * (T::from_f64(0.5) * m * psidot * sin_gamma * cos_gamma * t34
-                        + T::from_f64(0.25) * m * psidot * t9 * t41 * t42
-                        - T::from_f64(0.25) * m * psidot * sin_gamma * cos_gamma * t31
-                        + T::from_f64(0.16666666666666666) * m * psidot * sin_gamma
-                            * cos_gamma * t32),
+                    * (m * psidot
+                        * (T::from_f64(0.5) * sin_gamma * cos_gamma * t34
+                            + T::from_f64(0.25) * t9 * t41 * t42
+                            - T::from_f64(0.25) * sin_gamma * cos_gamma * t31
+                            + T::from_f64(0.16666666666666666) * sin_gamma * cos_gamma
+                                * t32)),
             t35 + t36 - m * (t27 * t28 - sin_gamma * t16 * t30),
             t37 + t38
                 - m
-                    * (gammadot * (psidot * cos_gamma * t16 + psidot * sin_gamma * t20)
-                        + gammadot * psidot * t21),
+                    * (gammadot
+                        * (psidot * (cos_gamma * t16 + sin_gamma * t20) + psidot * t21)),
             f_z - m * g - m * t28 * t29,
         );
         (a, b)
@@ -186,7 +190,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 71 add/sub, 236 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 49 `let`s.
+    /// 71 add/sub, 225 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 49 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -309,28 +313,30 @@ pub mod rigid_peg_frictionless {
                 + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t30
                     * t32
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t27 * t39
-                        + T::from_f64(2.0) * gammadot * t29 * t40)
+                    * (gammadot
+                        * (T::from_f64(2.0) * t27 * t39 + T::from_f64(2.0) * t29 * t40))
                 - gammaddot
-                    * (T::from_f64(0.08333333333333333) * m * t32
-                        + T::from_f64(0.5) * m
-                            * (T::from_f64(2.0) * (t21 * t21)
-                                + T::from_f64(2.0) * (t23 * t23))),
+                    * (m
+                        * (T::from_f64(0.08333333333333333) * t32
+                            + T::from_f64(0.5)
+                                * (T::from_f64(2.0) * (t21 * t21)
+                                    + T::from_f64(2.0) * (t23 * t23)))),
             sin_gamma * t16 * (t37 + t38)
                 - gammadot
-                    * (T::from_f64(0.5) * m * psidot * sin_gamma * cos_gamma * t34
-                        + T::from_f64(0.25) * m * psidot * t9 * t41 * t42
-                        - T::from_f64(0.25) * m * psidot * sin_gamma * cos_gamma * t31
-                        + T::from_f64(0.16666666666666666) * m * psidot * sin_gamma
-                            * cos_gamma * t32)
+                    * (m * psidot
+                        * (T::from_f64(0.5) * sin_gamma * cos_gamma * t34
+                            + T::from_f64(0.25) * t9 * t41 * t42
+                            - T::from_f64(0.25) * sin_gamma * cos_gamma * t31
+                            + T::from_f64(0.16666666666666666) * sin_gamma * cos_gamma
+                                * t32))
                 - psiddot
-                    * (T::from_f64(0.25) * m * t9 * t34
-                        + T::from_f64(0.125) * m * t26 * t31
-                        + T::from_f64(0.08333333333333333) * m * t9 * t32),
+                    * (m
+                        * (T::from_f64(0.25) * t9 * t34 + T::from_f64(0.125) * t26 * t31
+                            + T::from_f64(0.08333333333333333) * t9 * t32)),
             t35 + t36 - m * (t27 * t28 + gammaddot * t21 - sin_gamma * t16 * t30),
             t37 + t38
                 - m
-                    * (gammadot * (psidot * cos_gamma * t16 + psidot * sin_gamma * t20)
+                    * (gammadot * (psidot * (cos_gamma * t16 + sin_gamma * t20))
                         + psiddot * sin_gamma * t16 + gammadot * psidot * t21),
             f_z - m * g - m * (t28 * t29 + gammaddot * t23),
         );

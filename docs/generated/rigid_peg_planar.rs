@@ -32,7 +32,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 63 add/sub, 168 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 40 `let`s.
+    /// 63 add/sub, 163 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 40 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -108,14 +108,17 @@ pub mod rigid_peg_planar {
         let t37 = d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t11
             - T::from_f64(2.0) * sin_gamma * t15 + T::from_f64(2.0) * cos_gamma * t25;
         let a = Matrix3::new(
-            T::from_f64(0.08333333333333333) * m
-                * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
-                + T::from_f64(0.5) * m
-                    * (T::from_f64(2.0) * (t23 * t23) + T::from_f64(2.0) * (t27 * t27)),
-            -(f * t_k_eta * t35) - f * t_k_z * (t12 + t24 + t26 + t28),
-            -(T::from_f64(2.0) * f * t35 * t_b_eta)
-                - T::from_f64(2.0) * f * (t13 + t7 * t10 + t12 + t24 + t26 + t28)
-                    * t_b_z,
+            m
+                * (T::from_f64(0.08333333333333333)
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
+                    + T::from_f64(0.5)
+                        * (T::from_f64(2.0) * (t23 * t23)
+                            + T::from_f64(2.0) * (t27 * t27))),
+            f * (-(t_k_eta * t35) - t_k_z * (t12 + t24 + t26 + t28)),
+            f
+                * (-(T::from_f64(2.0) * t35 * t_b_eta)
+                    - T::from_f64(2.0) * (t13 + t7 * t10 + t12 + t24 + t26 + t28)
+                        * t_b_z),
             m * t23,
             -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t5,
             -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t7 * t10 * t18,
@@ -127,9 +130,9 @@ pub mod rigid_peg_planar {
         let b = Vector3::new(
             m_gamma + f_z * t27 - m * g * t27
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t32 * t36
-                        + T::from_f64(2.0) * gammadot * t34 * t37) + f_x * t23
-                + T::from_f64(0.5) * m * (t32 * t33 * t36 + t33 * t34 * t37),
+                    * (gammadot
+                        * (T::from_f64(2.0) * t32 * t36 + T::from_f64(2.0) * t34 * t37))
+                + f_x * t23 + T::from_f64(0.5) * m * (t33 * (t32 * t36 + t34 * t37)),
             f_x - m * t32 * t33,
             f_z - m * g - m * t33 * t34,
         );
@@ -150,7 +153,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 65 add/sub, 169 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 40 `let`s.
+    /// 65 add/sub, 164 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 40 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -228,10 +231,11 @@ pub mod rigid_peg_planar {
             - T::from_f64(2.0) * sin_gamma * t15 + T::from_f64(2.0) * cos_gamma * t25;
         let a = Matrix3::new(
             -T::from_f64(1.0),
-            -(f * t_k_eta * t35) - f * t_k_z * (t12 + t24 + t26 + t28),
-            -(T::from_f64(2.0) * f * t35 * t_b_eta)
-                - T::from_f64(2.0) * f * (t13 + t7 * t10 + t12 + t24 + t26 + t28)
-                    * t_b_z,
+            f * (-(t_k_eta * t35) - t_k_z * (t12 + t24 + t26 + t28)),
+            f
+                * (-(T::from_f64(2.0) * t35 * t_b_eta)
+                    - T::from_f64(2.0) * (t13 + t7 * t10 + t12 + t24 + t26 + t28)
+                        * t_b_z),
             T::from_f64(0.0),
             -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t5,
             -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t7 * t10 * t18,
@@ -243,15 +247,16 @@ pub mod rigid_peg_planar {
         let b = Vector3::new(
             f_z * t27 - m * g * t27
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t32 * t36
-                        + T::from_f64(2.0) * gammadot * t34 * t37) + f_x * t23
-                + T::from_f64(0.5) * m * (t32 * t33 * t36 + t33 * t34 * t37)
+                    * (gammadot
+                        * (T::from_f64(2.0) * t32 * t36 + T::from_f64(2.0) * t34 * t37))
+                + f_x * t23 + T::from_f64(0.5) * m * (t33 * (t32 * t36 + t34 * t37))
                 - gammaddot
-                    * (T::from_f64(0.08333333333333333) * m
-                        * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
-                        + T::from_f64(0.5) * m
-                            * (T::from_f64(2.0) * (t23 * t23)
-                                + T::from_f64(2.0) * (t27 * t27))),
+                    * (m
+                        * (T::from_f64(0.08333333333333333)
+                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
+                            + T::from_f64(0.5)
+                                * (T::from_f64(2.0) * (t23 * t23)
+                                    + T::from_f64(2.0) * (t27 * t27)))),
             f_x - m * (t32 * t33 + gammaddot * t23),
             f_z - m * g - m * (t33 * t34 + gammaddot * t27),
         );
@@ -267,7 +272,7 @@ pub mod rigid_peg_planar {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 19 add/sub, 50 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 18 `let`s.
+    /// 19 add/sub, 49 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 18 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 2>,
@@ -299,10 +304,10 @@ pub mod rigid_peg_planar {
                         + T::from_f64(0.5) * cos_gamma * t5 * t8));
         let t13 = -sin_gamma * t10;
         let t14 = gammadot
-            * (cos_gamma * t10
+            * ((cos_gamma * t10
                 + sin_gamma
                     * (d_peg * t4 * t6 * t11 - T::from_f64(0.5) * cos_gamma * t5 * t8))
-            - gammadot * (d_hole * t2 * t3 * t6 - cos_gamma * t9);
+                - (d_hole * t2 * t3 * t6 - cos_gamma * t9));
         let t15 = t12 + gammadot * (t6 * (t7 + d_hole * cos_gamma * t2 * t3 * t6) + t13);
         Matrix3::new(
             t14,
@@ -327,7 +332,7 @@ pub mod rigid_peg_planar {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 18 add/sub, 53 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 17 `let`s.
+    /// 18 add/sub, 52 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 17 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -356,7 +361,7 @@ pub mod rigid_peg_planar {
             + cos_gamma
                 * (-(d_peg * t4 * t6 * t9) + T::from_f64(0.5) * cos_gamma * t5 * t7);
         let t12 = gammadot * gammadot;
-        let t13 = T::from_f64(0.5) * m * (t12 * (t10 * t10) + t12 * (t11 * t11));
+        let t13 = T::from_f64(0.5) * m * (t12 * (t10 * t10 + t11 * t11));
         let t14 = T::from_f64(0.041666666666666664) * m * t12
             * (T::from_f64(0.75) * (d_peg * d_peg) + h * h);
         let kinetic = t13 + t14;

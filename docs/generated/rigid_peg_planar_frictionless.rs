@@ -29,7 +29,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 46 add/sub, 150 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 31 `let`s.
+    /// 46 add/sub, 147 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 31 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -92,10 +92,12 @@ pub mod rigid_peg_planar_frictionless {
         let t28 = d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t9
             - T::from_f64(2.0) * sin_gamma * t12 + T::from_f64(2.0) * cos_gamma * t19;
         let a = Matrix3::new(
-            T::from_f64(0.08333333333333333) * m
-                * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
-                + T::from_f64(0.5) * m
-                    * (T::from_f64(2.0) * (t18 * t18) + T::from_f64(2.0) * (t20 * t20)),
+            m
+                * (T::from_f64(0.08333333333333333)
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
+                    + T::from_f64(0.5)
+                        * (T::from_f64(2.0) * (t18 * t18)
+                            + T::from_f64(2.0) * (t20 * t20))),
             T::from_f64(0.0),
             T::from_f64(0.0),
             m * t18,
@@ -108,9 +110,9 @@ pub mod rigid_peg_planar_frictionless {
         let b = Vector3::new(
             m_gamma + f_z * t20 - m * g * t20
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t24 * t27
-                        + T::from_f64(2.0) * gammadot * t26 * t28) + f_x * t18
-                + T::from_f64(0.5) * m * (t24 * t25 * t27 + t25 * t26 * t28),
+                    * (gammadot
+                        * (T::from_f64(2.0) * t24 * t27 + T::from_f64(2.0) * t26 * t28))
+                + f_x * t18 + T::from_f64(0.5) * m * (t25 * (t24 * t27 + t26 * t28)),
             f_x - m * t24 * t25,
             f_z - m * g - m * t25 * t26,
         );
@@ -130,7 +132,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 48 add/sub, 151 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 31 `let`s.
+    /// 48 add/sub, 148 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 31 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -207,15 +209,16 @@ pub mod rigid_peg_planar_frictionless {
         let b = Vector3::new(
             f_z * t20 - m * g * t20
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t24 * t27
-                        + T::from_f64(2.0) * gammadot * t26 * t28) + f_x * t18
-                + T::from_f64(0.5) * m * (t24 * t25 * t27 + t25 * t26 * t28)
+                    * (gammadot
+                        * (T::from_f64(2.0) * t24 * t27 + T::from_f64(2.0) * t26 * t28))
+                + f_x * t18 + T::from_f64(0.5) * m * (t25 * (t24 * t27 + t26 * t28))
                 - gammaddot
-                    * (T::from_f64(0.08333333333333333) * m
-                        * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
-                        + T::from_f64(0.5) * m
-                            * (T::from_f64(2.0) * (t18 * t18)
-                                + T::from_f64(2.0) * (t20 * t20))),
+                    * (m
+                        * (T::from_f64(0.08333333333333333)
+                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
+                            + T::from_f64(0.5)
+                                * (T::from_f64(2.0) * (t18 * t18)
+                                    + T::from_f64(2.0) * (t20 * t20)))),
             f_x - m * (t24 * t25 + gammaddot * t18),
             f_z - m * g - m * (t25 * t26 + gammaddot * t20),
         );
@@ -231,7 +234,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 19 add/sub, 50 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 18 `let`s.
+    /// 19 add/sub, 49 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 18 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 2>,
@@ -263,10 +266,10 @@ pub mod rigid_peg_planar_frictionless {
                         + T::from_f64(0.5) * cos_gamma * t5 * t8));
         let t13 = -sin_gamma * t10;
         let t14 = gammadot
-            * (cos_gamma * t10
+            * ((cos_gamma * t10
                 + sin_gamma
                     * (d_peg * t4 * t6 * t11 - T::from_f64(0.5) * cos_gamma * t5 * t8))
-            - gammadot * (d_hole * t2 * t3 * t6 - cos_gamma * t9);
+                - (d_hole * t2 * t3 * t6 - cos_gamma * t9));
         let t15 = t12 + gammadot * (t6 * (t7 + d_hole * cos_gamma * t2 * t3 * t6) + t13);
         Matrix3::new(
             t14,
@@ -291,7 +294,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 18 add/sub, 53 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 17 `let`s.
+    /// 18 add/sub, 52 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 17 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -320,7 +323,7 @@ pub mod rigid_peg_planar_frictionless {
             + cos_gamma
                 * (-(d_peg * t4 * t6 * t9) + T::from_f64(0.5) * cos_gamma * t5 * t7);
         let t12 = gammadot * gammadot;
-        let t13 = T::from_f64(0.5) * m * (t12 * (t10 * t10) + t12 * (t11 * t11));
+        let t13 = T::from_f64(0.5) * m * (t12 * (t10 * t10 + t11 * t11));
         let t14 = T::from_f64(0.041666666666666664) * m * t12
             * (T::from_f64(0.75) * (d_peg * d_peg) + h * h);
         let kinetic = t13 + t14;

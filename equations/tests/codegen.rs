@@ -65,6 +65,10 @@ fn canonical_forms_are_emitted_as_written_by_hand() {
         (emitted(|_, a, _, _| a.ln_1p()), "a.ln_1p()"),
         (emitted(|_, a, b, _| (a + b).sin()), "(a + b).sin()"),
         (emitted(|_, a, _, _| a.powf(1.0 / 3.0)), "a.cbrt()"),
+        (
+            emitted(|_, a, b, c| a * c + 2.0 * b * c),
+            "c * (a + T::from_f64(2.0) * b)",
+        ),
         (emitted(|_, a, _, _| a.powf(2.0 / 3.0)), "a.cbrt().powi(2)"),
         (emitted(|_, a, _, _| a.max0()), "let max0_a = a.max0();"),
         (emitted(|_, a, b, c| (a - b) * (b - c)), "(a - b) * (b - c)"),

@@ -34,6 +34,25 @@ fn pow_special_cases_match_the_emitter() {
 }
 
 #[test]
+fn tape_factors_sums_as_the_emitter_does() {
+    // a·c + b·c is emitted as c·(a + b); at a = 0, b = 1, c = ∞ that is ∞,
+    // where the unfactored sum would be 0·∞ + ∞ = NaN.
+    let g = Graph::new();
+    let (a, b, c) = (g.var("a"), g.var("b"), g.var("c"));
+    let tape = Tape::new(&g, &[(a * c + b * c).id()]);
+    let out = tape.eval(&[0.0, 1.0, f64::INFINITY]);
+    assert_eq!(out[0], f64::INFINITY);
+    let out = tape.eval(&[0.1, 0.7, 3.0]);
+    assert!(same(out[0], 3.0 * (0.1 + 0.7)), "{out:?}");
+    // A product that is also an output (a `let`) is not split: a·c + b·c
+    // then adds the two products, 0·∞ + ∞ = NaN, as the emitted code does.
+    let ac = a * c;
+    let tape = Tape::new(&g, &[(ac + b * c).id(), ac.id()]);
+    let out = tape.eval(&[0.0, 1.0, f64::INFINITY]);
+    assert!(out[0].is_nan(), "{out:?}");
+}
+
+#[test]
 fn tape_powers_use_the_same_special_cases() {
     let g = Graph::new();
     let x = g.var("x");

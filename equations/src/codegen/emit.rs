@@ -182,14 +182,36 @@ impl<'a> Emitter<'a> {
     }
 
     /// A sum, terms in [`crate::eval::sum_order`]; negative-coefficient
-    /// terms subtracted.
+    /// terms subtracted; common factors taken out as
+    /// [`crate::eval::factor_sum`] says (as the interpreter does).
     fn sum(&mut self, xs: &[Id]) -> Frag {
+        let sched = self.sched;
+        let Some(f) = crate::eval::factor_sum(self.g, xs, |t| sched.is_named(t)) else {
+            let terms: Vec<(bool, Frag)> = xs.iter().map(|&x| self.signed_term(x)).collect();
+            return self.signed_sum(terms);
+        };
+        let terms: Vec<(bool, Frag)> = f
+            .rest
+            .iter()
+            .map(|(c, rest)| (*c < 0.0, self.product(rest, Some(c.abs()))))
+            .collect();
+        let inner = self.signed_sum(terms).at(Prec::Atom);
         let mut ts = TokenStream::new();
-        for (k, &x) in xs.iter().enumerate() {
+        for (k, &c) in f.common.iter().enumerate() {
+            let c = self.frag(c).at(Prec::Prefix);
+            ts = if k == 0 { c } else { quote!(#ts * #c) };
+        }
+        self.ops.mul += f.common.len();
+        Frag::new(quote!(#ts * #inner), Prec::Product)
+    }
+
+    /// `t₁ ± t₂ ± …` from (is negative, magnitude) pairs.
+    fn signed_sum(&mut self, terms: Vec<(bool, Frag)>) -> Frag {
+        let mut ts = TokenStream::new();
+        for (k, (negative, term)) in terms.into_iter().enumerate() {
             if k > 0 {
                 self.ops.add += 1;
             }
-            let (negative, term) = self.signed_term(x);
             ts = match (k, negative) {
                 (0, false) => term.at(Prec::Sum),
                 (0, true) => {
