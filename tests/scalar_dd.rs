@@ -13,6 +13,18 @@ use pegdyn::scalar::{Dd, Real};
 /// (function, arguments, reference hi, reference lo), from
 /// `mpmath` with `mp.prec = 300`.
 const REFERENCE: &[(&str, &[f64], f64, f64)] = &[
+    ("cbrt", &[2.0], 1.2599210498948732, -2.589933375300507e-17),
+    ("cbrt", &[0.1], 0.4641588833612779, -2.074809740501457e-17),
+    ("cbrt", &[3.0], 1.4422495703074083, 8.054912676113687e-17),
+    ("cbrt", &[1e-09], 0.001, -5.615122579506676e-23),
+    (
+        "cbrt",
+        &[12345.678],
+        23.112041846625313,
+        -1.7216547662239573e-15,
+    ),
+    ("cbrt", &[-5.0], -1.709975946676697, 6.679487771389464e-17),
+    ("cbrt", &[0.75], 0.9085602964160698, -5.267308265729074e-18),
     ("sin", &[1e-08], 1e-08, -1.6666666666666668e-25),
     ("cos", &[1e-08], 1.0, -5e-17),
     ("sin", &[0.1], 0.09983341664682815, 3.08001512929492e-18),
@@ -279,6 +291,7 @@ fn eval(name: &str, a: &[f64]) -> Dd {
         "ln" => x.ln(),
         "ln_1p" => x.ln_1p(),
         "sqrt" => x.sqrt(),
+        "cbrt" => Real::cbrt(x),
         "tanh" => Real::tanh(x),
         "powf" => x.powf(Dd::from(a[1])),
         "hypot" => x.hypot(Dd::from(a[1])),
@@ -343,10 +356,16 @@ fn identities_on_a_grid() {
     for k in -40..=40 {
         let x = Dd::from(f64::from(k) * 0.173 + 1e-3);
         let (s, c) = x.sin_cos();
+        assert_eq!((s, c), (Real::sin(x), Real::cos(x)), "sin_cos at {x}");
+        assert_eq!(Real::sin_cos(x.hi()), (x.hi().sin(), x.hi().cos()));
         let one = s.square() + c.square();
         assert!((one - Dd::ONE).hi().abs() < 1e-31, "sin²+cos² at {x}");
         // Newton inverses.
         let y = Dd::from(f64::from(k).abs() * 0.37 + 0.01);
+        assert!(
+            rel(Real::cbrt(y).square() * Real::cbrt(y), y) < 1e-31,
+            "cbrt({y})³"
+        );
         assert!(rel(y.ln().exp(), y) < 1e-30, "exp(ln {y})");
         assert!(rel(y.exp().ln(), y) < 1e-30, "ln(exp {y})");
         let t = Dd::from(f64::from(k) / 41.0);

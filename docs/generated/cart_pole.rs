@@ -26,36 +26,25 @@ pub mod cart_pole {
     /// - `forcing`: vector of 2
     ///
     /// # Cost
-    /// 7 add/sub, 33 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 6 `let`s.
+    /// 2 add/sub, 11 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 3 `let`s.
     #[inline]
     pub fn dynamics<T: Real>(
         x: &SVector<T, 4>,
         p: &SVector<T, 5>,
     ) -> (SMatrix<T, 2, 2>, SVector<T, 2>) {
         let theta = x[1];
-        let xcdot = x[2];
         let thetadot = x[3];
         let mc = p[0];
         let m = p[1];
         let l = p[2];
         let g = p[3];
         let u = p[4];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
-        let t0 = thetadot * thetadot;
-        let t1 = l * l;
-        let t2 = T::from_f64(2.0) * xcdot + T::from_f64(2.0) * thetadot * l * cos_theta;
-        let t3 = m * l * cos_theta;
-        let mass = Matrix2::new(mc + m, t3, t3, m * t1);
+        let (sin_theta, cos_theta) = theta.sin_cos();
+        let t0 = m * l * cos_theta;
+        let mass = Matrix2::new(mc + m, t0, t0, m * (l * l));
         let forcing = Vector2::new(
-            u + m * l * sin_theta * t0,
-            -(m * l * g * sin_theta)
-                + T::from_f64(0.5) * m
-                    * (-(thetadot * l * sin_theta * t2)
-                        + T::from_f64(2.0) * sin_theta * cos_theta * t0 * t1)
-                - T::from_f64(0.5) * thetadot * m
-                    * (-(l * sin_theta * t2)
-                        + T::from_f64(2.0) * thetadot * sin_theta * cos_theta * t1),
+            u + m * l * sin_theta * (thetadot * thetadot),
+            -m * l * g * sin_theta,
         );
         (mass, forcing)
     }
@@ -71,7 +60,7 @@ pub mod cart_pole {
     /// - `xdot`: vector of 4
     ///
     /// # Cost
-    /// 10 add/sub, 47 mul, 1 div, 0 sqrt, 2 transcendental, 0 branches; 9 `let`s.
+    /// 5 add/sub, 22 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 7 `let`s.
     #[inline]
     pub fn rhs<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> SVector<T, 4> {
         let theta = x[1];
@@ -82,27 +71,17 @@ pub mod cart_pole {
         let l = p[2];
         let g = p[3];
         let u = p[4];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
-        let t0 = thetadot * thetadot;
-        let t1 = l * l;
-        let t2 = T::from_f64(2.0) * xcdot + T::from_f64(2.0) * thetadot * l * cos_theta;
-        let t3 = mc + m;
-        let t4 = u + m * l * sin_theta * t0;
-        let t5 = -(m * l * g * sin_theta)
-            + T::from_f64(0.5) * m
-                * (-(thetadot * l * sin_theta * t2)
-                    + T::from_f64(2.0) * sin_theta * cos_theta * t0 * t1)
-            - T::from_f64(0.5) * thetadot * m
-                * (-(l * sin_theta * t2)
-                    + T::from_f64(2.0) * thetadot * sin_theta * cos_theta * t1);
-        let t6 = T::from_f64(1.0)
-            / (m * t1 * t3 - t1 * (cos_theta * cos_theta) * (m * m));
+        let (sin_theta, cos_theta) = theta.sin_cos();
+        let t0 = l * l;
+        let t1 = mc + m;
+        let t2 = u + m * l * sin_theta * (thetadot * thetadot);
+        let t3 = m * m;
+        let t4 = T::from_f64(1.0) / (t0 * (m * t1 - cos_theta * cos_theta * t3));
         Vector4::new(
             xcdot,
             thetadot,
-            (m * t1 * t4 - m * l * cos_theta * t5) * t6,
-            t6 * (t3 * t5 - m * l * cos_theta * t4),
+            t0 * (m * t2 + g * sin_theta * cos_theta * t3) * t4,
+            t4 * (m * l * (-(g * sin_theta * t1) - cos_theta * t2)),
         )
     }
     /// G = ∂f/∂x − Σ_j (∂M_{·j}/∂x) q̈_j (n × 2n) at the accelerations `qdd`;
@@ -119,7 +98,7 @@ pub mod cart_pole {
     /// - `terms`: 2×4 matrix
     ///
     /// # Cost
-    /// 7 add/sub, 39 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 6 `let`s.
+    /// 2 add/sub, 13 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 2 `let`s.
     #[inline]
     pub fn jacobian_terms<T: Real>(
         x: &SVector<T, 4>,
@@ -127,31 +106,20 @@ pub mod cart_pole {
         p: &SVector<T, 5>,
     ) -> SMatrix<T, 2, 4> {
         let theta = x[1];
-        let xcdot = x[2];
         let thetadot = x[3];
         let xcddot = qdd[0];
         let thetaddot = qdd[1];
         let m = p[1];
         let l = p[2];
         let g = p[3];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
-        let t0 = thetadot * thetadot;
-        let t1 = l * l;
-        let t2 = T::from_f64(2.0) * xcdot + T::from_f64(2.0) * thetadot * l * cos_theta;
-        let t3 = cos_theta * cos_theta;
+        let (sin_theta, cos_theta) = theta.sin_cos();
         Matrix2x4::new(
             T::from_f64(0.0),
-            thetaddot * m * l * sin_theta + m * l * cos_theta * t0,
+            m * l * (thetaddot * sin_theta + cos_theta * (thetadot * thetadot)),
             T::from_f64(0.0),
             T::from_f64(2.0) * thetadot * m * l * sin_theta,
             T::from_f64(0.0),
-            -(m * l * g * cos_theta) + xcddot * m * l * sin_theta
-                + T::from_f64(0.5) * m
-                    * (-(thetadot * l * cos_theta * t2)
-                        + T::from_f64(2.0) * t0 * t1 * t3)
-                - T::from_f64(0.5) * thetadot * m
-                    * (-(l * cos_theta * t2) + T::from_f64(2.0) * thetadot * t1 * t3),
+            m * l * (-(g * cos_theta) + xcddot * sin_theta),
             T::from_f64(0.0),
             T::from_f64(0.0),
         )
@@ -168,7 +136,7 @@ pub mod cart_pole {
     /// - `energy`: scalar
     ///
     /// # Cost
-    /// 4 add/sub, 16 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 3 `let`s.
+    /// 4 add/sub, 17 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 2 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> T {
         let theta = x[1];
@@ -178,12 +146,11 @@ pub mod cart_pole {
         let m = p[1];
         let l = p[2];
         let g = p[3];
-        let sin_theta = theta.sin();
         let cos_theta = theta.cos();
-        let t0 = xcdot + thetadot * l * cos_theta;
-        T::from_f64(0.5) * mc * (xcdot * xcdot)
-            + T::from_f64(0.5) * m
-                * (t0 * t0 + thetadot * thetadot * (l * l) * (sin_theta * sin_theta))
+        let t0 = xcdot * xcdot;
+        T::from_f64(0.5) * mc * t0 + T::from_f64(0.5) * m * t0
+            + xcdot * thetadot * m * l * cos_theta
+            + T::from_f64(0.5) * m * (thetadot * thetadot) * (l * l)
             - m * l * g * cos_theta
     }
 }

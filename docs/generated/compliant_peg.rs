@@ -53,7 +53,7 @@ pub mod compliant_peg {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 113 add/sub, 230 mul, 6 div, 4 sqrt, 8 transcendental, 16 branches; 78 `let`s.
+    /// 113 add/sub, 227 mul, 6 div, 4 sqrt, 6 transcendental, 16 branches; 78 `let`s.
     #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
@@ -77,8 +77,7 @@ pub mod compliant_peg {
         let f2 = p[12];
         let m_2 = p[13];
         let hc_alpha = p[23];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = f1 * sin_theta;
         let t1 = f2 * cos_theta;
         let t2 = f1 * cos_theta;
@@ -88,7 +87,7 @@ pub mod compliant_peg {
         let t6 = -rho_h + t4 + t5;
         let t7 = rho_h - z;
         let t8 = T::from_f64(0.5) * theta;
-        let t9 = t8.sin();
+        let (t9, t21) = t8.sin_cos();
         let t10 = t9 * t9;
         let t11 = r + t4 + t5 - sin_theta * t7 - T::from_f64(2.0) * t6 * t10;
         let t12 = cos_theta * t7;
@@ -101,11 +100,10 @@ pub mod compliant_peg {
         let t18 = t11.max0();
         let t19 = t18 * t18.sqrt();
         let t20 = -T::from_f64(1.0) + T::from_f64(2.0) * t10;
-        let t21 = t8.cos();
         let t22 = -(cos_theta * t7) - T::from_f64(2.0) * t6 * t9 * t21;
         let t23 = xdot * t20 + zdot * sin_theta + thetadot * t22;
         let t24 = (T::from_f64(1.0) + hc_alpha * t23).max0();
-        let t25 = k_edge * t19 * t24 - k_edge * t19;
+        let t25 = k_edge * t19 * (t24 - T::from_f64(1.0));
         let t26 = v_s.hypot(t17);
         let t27 = T::from_f64(1.0) / t26;
         let t28 = t11.step();
@@ -121,7 +119,7 @@ pub mod compliant_peg {
         let t37 = cos_theta * t30 - T::from_f64(2.0) * t9 * t21 * t31;
         let t38 = xdot + thetadot * t37;
         let t39 = (T::from_f64(1.0) + hc_alpha * t38).max0();
-        let t40 = k_wall * t36 * t39 - k_wall * t36;
+        let t40 = k_wall * t36 * (t39 - T::from_f64(1.0));
         let t41 = v_s.hypot(t34);
         let t42 = T::from_f64(1.0) / t41;
         let t43 = t32.step();
@@ -138,7 +136,7 @@ pub mod compliant_peg {
         let t53 = t12 + T::from_f64(2.0) * t9 * t21 * t44;
         let t54 = xdot * t52 - zdot * sin_theta + thetadot * t53;
         let t55 = (T::from_f64(1.0) + hc_alpha * t54).max0();
-        let t56 = k_edge * t51 * t55 - k_edge * t51;
+        let t56 = k_edge * t51 * (t55 - T::from_f64(1.0));
         let t57 = v_s.hypot(t49);
         let t58 = T::from_f64(1.0) / t57;
         let t59 = t45.step();
@@ -205,7 +203,7 @@ pub mod compliant_peg {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 474 add/sub, 2078 mul, 10 div, 8 sqrt, 8 transcendental, 24 branches; 219 `let`s.
+    /// 474 add/sub, 2058 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 219 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -229,8 +227,7 @@ pub mod compliant_peg {
         let f2 = p[12];
         let m_2 = p[13];
         let hc_alpha = p[23];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = f1 * cos_theta;
         let t1 = -f2 * sin_theta;
         let t2 = t0 + t1;
@@ -242,7 +239,7 @@ pub mod compliant_peg {
         let t8 = sin_theta * t6;
         let t9 = cos_theta * t5 + t7;
         let t10 = T::from_f64(0.5) * theta;
-        let t11 = t10.sin();
+        let (t11, t30) = t10.sin_cos();
         let t12 = t11 * t11;
         let t13 = r + t3 + t4 + t7 - T::from_f64(2.0) * t5 * t12;
         let t14 = cos_theta * t6;
@@ -261,12 +258,11 @@ pub mod compliant_peg {
         let t27 = t13.max0();
         let t28 = t27 * t27.sqrt();
         let t29 = -T::from_f64(1.0) + T::from_f64(2.0) * t12;
-        let t30 = t10.cos();
         let t31 = -(cos_theta * t6) - T::from_f64(2.0) * t5 * t11 * t30;
         let t32 = xdot * t29 + zdot * sin_theta + thetadot * t31;
         let t33 = T::from_f64(1.0) + hc_alpha * t32;
         let t34 = t33.max0();
-        let t35 = k_edge * t28 * t34 - k_edge * t28;
+        let t35 = k_edge * t28 * (t34 - T::from_f64(1.0));
         let t36 = v_s.hypot(t26);
         let t37 = T::from_f64(1.0) / t36;
         let t38 = t13.step();
@@ -311,7 +307,7 @@ pub mod compliant_peg {
         let t77 = xdot * t75 - zdot * sin_theta + thetadot * t76;
         let t78 = T::from_f64(1.0) + hc_alpha * t77;
         let t79 = t78.max0();
-        let t80 = k_edge * t74 * t79 - k_edge * t74;
+        let t80 = k_edge * t74 * (t79 - T::from_f64(1.0));
         let t81 = v_s.hypot(t72);
         let t82 = T::from_f64(1.0) / t81;
         let t83 = t65.step();
@@ -330,7 +326,7 @@ pub mod compliant_peg {
         let t96 = -xdot + thetadot * t95;
         let t97 = T::from_f64(1.0) + hc_alpha * t96;
         let t98 = t97.max0();
-        let t99 = k_wall * t94 * t98 - k_wall * t94;
+        let t99 = k_wall * t94 * (t98 - T::from_f64(1.0));
         let t100 = v_s.hypot(t92);
         let t101 = T::from_f64(1.0) / t100;
         let t102 = t88.step();
@@ -341,9 +337,10 @@ pub mod compliant_peg {
         let t107 = t29 * t29;
         let t108 = t38 * t38;
         let t109 = t33.step();
-        let t110 = T::from_f64(1.5) * k_edge * t29 * t34 * t38 * t106
-            + T::from_f64(2.0) * thetadot * k_edge * hc_alpha * t11 * t28 * t30 * t109
-            - T::from_f64(1.5) * k_edge * t29 * t38 * t106;
+        let t110 = k_edge
+            * (T::from_f64(1.5) * t29 * t34 * t38 * t106
+                + T::from_f64(2.0) * thetadot * hc_alpha * t11 * t28 * t30 * t109
+                - T::from_f64(1.5) * t29 * t38 * t106);
         let t111 = sin_theta * sin_theta;
         let t112 = t50.sqrt();
         let t113 = t61 * t61;
@@ -351,22 +348,25 @@ pub mod compliant_peg {
         let t115 = t75 * t75;
         let t116 = t83 * t83;
         let t117 = t78.step();
-        let t118 = T::from_f64(1.5) * k_edge * t75 * t79 * t83 * t114
-            - T::from_f64(2.0) * thetadot * k_edge * hc_alpha * t11 * t30 * t74 * t117
-            - T::from_f64(1.5) * k_edge * t75 * t83 * t114;
+        let t118 = k_edge
+            * (T::from_f64(1.5) * t75 * t79 * t83 * t114
+                - T::from_f64(2.0) * thetadot * hc_alpha * t11 * t30 * t74 * t117
+                - T::from_f64(1.5) * t75 * t83 * t114);
         let t119 = t93.sqrt();
         let t120 = -T::from_f64(1.5) * k_wall * t98 * t102 * t119;
         let t121 = T::from_f64(1.5) * k_wall * t102 * t119;
         let t122 = t102 * t102;
         let t123 = -T::from_f64(1.5) * k_edge * sin_theta * t29 * t106 * t108;
-        let t124 = T::from_f64(1.5) * k_edge * sin_theta * t34 * t38 * t106
-            + thetadot * k_edge * hc_alpha * cos_theta * t28 * t109
-            - T::from_f64(1.5) * k_edge * sin_theta * t38 * t106;
+        let t124 = k_edge
+            * (T::from_f64(1.5) * sin_theta * t34 * t38 * t106
+                + thetadot * hc_alpha * cos_theta * t28 * t109
+                - T::from_f64(1.5) * sin_theta * t38 * t106);
         let t125 = cos_theta * cos_theta;
         let t126 = T::from_f64(1.5) * k_edge * sin_theta * t75 * t114 * t116;
-        let t127 = -(T::from_f64(1.5) * k_edge * sin_theta * t79 * t83 * t114)
-            - thetadot * k_edge * hc_alpha * cos_theta * t74 * t117
-            + T::from_f64(1.5) * k_edge * sin_theta * t83 * t114;
+        let t127 = k_edge
+            * (-(T::from_f64(1.5) * sin_theta * t79 * t83 * t114)
+                - thetadot * hc_alpha * cos_theta * t74 * t117
+                + T::from_f64(1.5) * sin_theta * t83 * t114);
         let t128 = -T::from_f64(1.5) * k_edge * t29 * t31 * t106 * t108;
         let t129 = -T::from_f64(2.0) * k_edge * t11 * t28 * t30 * t38;
         let t130 = -T::from_f64(2.0) * t11 * t30 * t35;
@@ -374,9 +374,9 @@ pub mod compliant_peg {
         let t132 = t8 + t5 * t12 - t5 * t131;
         let t133 = T::from_f64(2.0) * xdot * t11 * t30 + zdot * cos_theta
             + thetadot * t132;
-        let t134 = T::from_f64(1.5) * k_edge * t31 * t34 * t38 * t106
-            + k_edge * hc_alpha * t28 * t109 * t133
-            - T::from_f64(1.5) * k_edge * t31 * t38 * t106;
+        let t134 = k_edge
+            * (T::from_f64(1.5) * t31 * t34 * t38 * t106 + hc_alpha * t28 * t109 * t133
+                - T::from_f64(1.5) * t31 * t38 * t106);
         let t135 = t21 + t23 + cos_theta * t9;
         let t136 = t17 - cos_theta * t15 - sin_theta * t9;
         let t137 = cos_theta * t20 + thetadot * sin_theta * t135 - sin_theta * t25
@@ -391,9 +391,9 @@ pub mod compliant_peg {
         let t145 = t7 + t63 * t131 - t12 * t63;
         let t146 = -(T::from_f64(2.0) * xdot * t11 * t30) - zdot * cos_theta
             + thetadot * t145;
-        let t147 = T::from_f64(1.5) * k_edge * t76 * t79 * t83 * t114
-            + k_edge * hc_alpha * t74 * t117 * t146
-            - T::from_f64(1.5) * k_edge * t76 * t83 * t114;
+        let t147 = k_edge
+            * (T::from_f64(1.5) * t76 * t79 * t83 * t114 + hc_alpha * t74 * t117 * t146
+                - T::from_f64(1.5) * t76 * t83 * t114);
         let t148 = t22 + t69 + cos_theta * t64;
         let t149 = t18 - cos_theta * t66 - sin_theta * t64;
         let t150 = cos_theta * t68 + thetadot * sin_theta * t148 - sin_theta * t71
@@ -443,14 +443,14 @@ pub mod compliant_peg {
         let t191 = mu * k_edge * cos_theta * t74 * t79 * t84 * t85 * t151;
         let t192 = -mu * k_wall * t91 * t94 * t98 * t101;
         let t193 = mu * k_wall * t91 * t94 * t98 * t103 * t183;
-        let t194 = T::from_f64(1.5) * k_wall * t55 * t61 * t112
-            - T::from_f64(1.5) * k_wall * t61 * t112;
+        let t194 = k_wall * t61 * t112 * (T::from_f64(1.5) * t55 - T::from_f64(1.5));
         let t195 = t120 + t121;
         let t196 = t31 * t31;
         let t197 = t52 * t52;
-        let t198 = thetadot * k_wall * hc_alpha * t51 * t140 * t141
-            + T::from_f64(1.5) * k_wall * t52 * t55 * t61 * t112
-            - T::from_f64(1.5) * k_wall * t52 * t61 * t112;
+        let t198 = k_wall
+            * (thetadot * hc_alpha * t51 * t140 * t141
+                + T::from_f64(1.5) * t52 * t55 * t61 * t112
+                - T::from_f64(1.5) * t52 * t61 * t112);
         let t199 = t76 * t76;
         let t200 = t95 * t95;
         let t201 = t152 + t155 + t156;
@@ -863,7 +863,7 @@ pub mod compliant_peg {
     /// - `p0`: vector of 4
     ///
     /// # Cost
-    /// 62 add/sub, 162 mul, 11 div, 4 sqrt, 18 transcendental, 8 branches; 60 `let`s.
+    /// 62 add/sub, 152 mul, 11 div, 4 sqrt, 10 transcendental, 8 branches; 54 `let`s.
     #[inline]
     pub fn contacts<T: Real>(
         y: &SVector<T, 8>,
@@ -900,14 +900,13 @@ pub mod compliant_peg {
         let wall_ma = p[20];
         let wall_mb = p[21];
         let hc_alpha = p[23];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = -T::from_f64(0.5) * d;
         let t1 = -x;
         let t2 = -rho_h + t0 + t1;
         let t3 = rho_h - z;
         let t4 = T::from_f64(0.5) * theta;
-        let t5 = t4.sin();
+        let (t5, t14) = t4.sin_cos();
         let t6 = t5 * t5;
         let t7 = r + t0 + t1 - sin_theta * t3 - T::from_f64(2.0) * t2 * t6;
         let t8 = cos_theta * t3;
@@ -917,7 +916,6 @@ pub mod compliant_peg {
             + cos_theta * (zdot + thetadot * (-(sin_theta * t9) + r * cos_theta));
         let t12 = t7.max0();
         let t13 = t12 * t12.sqrt();
-        let t14 = t4.cos();
         let t15 = (T::from_f64(1.0)
             + hc_alpha
                 * (xdot * (-T::from_f64(1.0) + T::from_f64(2.0) * t6) + zdot * sin_theta
@@ -926,94 +924,80 @@ pub mod compliant_peg {
         let t16 = v_s.hypot(t11);
         let t17 = T::from_f64(1.0) / e_star;
         let t18 = T::from_f64(1.0) / edge_sum;
-        let t19 = (T::from_f64(1.5) * k_edge * t13 * t15 * t17 * t18)
-            .powf(T::from_f64(0.3333333333333333));
-        let t20 = (T::from_f64(1.5) * k_edge * t13 * t15)
-            .powf(T::from_f64(0.3333333333333333));
-        let t21 = (e_star * edge_sum).powf(T::from_f64(0.6666666666666666));
-        let t22 = T::from_f64(1.0) / edge_ma;
-        let t23 = T::from_f64(1.0) / edge_mb;
-        let t24 = -rho_p;
-        let t25 = l_c + t24;
-        let t26 = r + t24;
-        let t27 = r + t0 + x + sin_theta * t25 - T::from_f64(2.0) * t6 * t26;
-        let t28 = zdot
+        let t19 = (T::from_f64(1.5) * k_edge * t13 * t15 * t17 * t18).cbrt();
+        let t20 = T::from_f64(1.0) / edge_ma;
+        let t21 = T::from_f64(1.0) / edge_mb;
+        let t22 = -rho_p;
+        let t23 = l_c + t22;
+        let t24 = r + t22;
+        let t25 = r + t0 + x + sin_theta * t23 - T::from_f64(2.0) * t6 * t24;
+        let t26 = zdot
             + thetadot
-                * (-(sin_theta * (l_c + t24 + rho_p * sin_theta))
+                * (-(sin_theta * (l_c + t22 + rho_p * sin_theta))
                     - cos_theta * (r - T::from_f64(2.0) * rho_p * t6));
-        let t29 = t27.max0();
-        let t30 = t29 * t29.sqrt();
-        let t31 = (T::from_f64(1.0)
+        let t27 = t25.max0();
+        let t28 = t27 * t27.sqrt();
+        let t29 = (T::from_f64(1.0)
             + hc_alpha
                 * (xdot
-                    + thetadot * (cos_theta * t25 - T::from_f64(2.0) * t5 * t14 * t26)))
+                    + thetadot * (cos_theta * t23 - T::from_f64(2.0) * t5 * t14 * t24)))
             .max0();
-        let t32 = v_s.hypot(t28);
-        let t33 = T::from_f64(1.0) / wall_sum;
-        let t34 = (T::from_f64(1.5) * k_wall * t17 * t30 * t31 * t33)
-            .powf(T::from_f64(0.3333333333333333));
-        let t35 = (T::from_f64(1.5) * k_wall * t30 * t31)
-            .powf(T::from_f64(0.3333333333333333));
-        let t36 = (e_star * wall_sum).powf(T::from_f64(0.6666666666666666));
-        let t37 = T::from_f64(1.0) / wall_ma;
-        let t38 = T::from_f64(1.0) / wall_mb;
-        let t39 = rho_h + T::from_f64(0.5) * d + t1;
-        let t40 = r + t0 + x + sin_theta * t3 + T::from_f64(2.0) * t6 * t39;
-        let t41 = t8 + sin_theta * t39;
-        let t42 = sin_theta * (xdot + thetadot * (-(r * sin_theta) + cos_theta * t41))
-            + cos_theta * (zdot + thetadot * (-(r * cos_theta) - sin_theta * t41));
-        let t43 = t40.max0();
-        let t44 = t43 * t43.sqrt();
-        let t45 = (T::from_f64(1.0)
+        let t30 = v_s.hypot(t26);
+        let t31 = T::from_f64(1.0) / wall_sum;
+        let t32 = (T::from_f64(1.5) * k_wall * t17 * t28 * t29 * t31).cbrt();
+        let t33 = T::from_f64(1.0) / wall_ma;
+        let t34 = T::from_f64(1.0) / wall_mb;
+        let t35 = rho_h + T::from_f64(0.5) * d + t1;
+        let t36 = r + t0 + x + sin_theta * t3 + T::from_f64(2.0) * t6 * t35;
+        let t37 = t8 + sin_theta * t35;
+        let t38 = sin_theta * (xdot + thetadot * (-(r * sin_theta) + cos_theta * t37))
+            + cos_theta * (zdot + thetadot * (-(r * cos_theta) - sin_theta * t37));
+        let t39 = t36.max0();
+        let t40 = t39 * t39.sqrt();
+        let t41 = (T::from_f64(1.0)
             + hc_alpha
                 * (xdot * (T::from_f64(1.0) - T::from_f64(2.0) * t6) - zdot * sin_theta
-                    + thetadot * (t8 + T::from_f64(2.0) * t5 * t14 * t39)))
+                    + thetadot * (t8 + T::from_f64(2.0) * t5 * t14 * t35)))
             .max0();
-        let t46 = v_s.hypot(t42);
-        let t47 = (T::from_f64(1.5) * k_edge * t17 * t18 * t44 * t45)
-            .powf(T::from_f64(0.3333333333333333));
-        let t48 = (T::from_f64(1.5) * k_edge * t44 * t45)
-            .powf(T::from_f64(0.3333333333333333));
-        let t49 = rho_p + t10;
-        let t50 = r + t0 + t1 - sin_theta * t25 + T::from_f64(2.0) * t6 * t49;
-        let t51 = zdot
+        let t42 = v_s.hypot(t38);
+        let t43 = (T::from_f64(1.5) * k_edge * t17 * t18 * t40 * t41).cbrt();
+        let t44 = rho_p + t10;
+        let t45 = r + t0 + t1 - sin_theta * t23 + T::from_f64(2.0) * t6 * t44;
+        let t46 = zdot
             + thetadot
-                * (-(sin_theta * (l_c + t24 - rho_p * sin_theta))
+                * (-(sin_theta * (l_c + t22 - rho_p * sin_theta))
                     - cos_theta * (t10 + T::from_f64(2.0) * rho_p * t6));
-        let t52 = t50.max0();
-        let t53 = t52 * t52.sqrt();
-        let t54 = (T::from_f64(1.0)
+        let t47 = t45.max0();
+        let t48 = t47 * t47.sqrt();
+        let t49 = (T::from_f64(1.0)
             + hc_alpha
                 * (-xdot
                     + thetadot
-                        * (-(cos_theta * t25) + T::from_f64(2.0) * t5 * t14 * t49)))
+                        * (-(cos_theta * t23) + T::from_f64(2.0) * t5 * t14 * t44)))
             .max0();
-        let t55 = v_s.hypot(t51);
-        let t56 = (T::from_f64(1.5) * k_wall * t17 * t33 * t53 * t54)
-            .powf(T::from_f64(0.3333333333333333));
-        let t57 = (T::from_f64(1.5) * k_wall * t53 * t54)
-            .powf(T::from_f64(0.3333333333333333));
+        let t50 = v_s.hypot(t46);
+        let t51 = (T::from_f64(1.5) * k_wall * t17 * t31 * t48 * t49).cbrt();
         let normal = Vector4::new(
             k_edge * t13 * t15,
-            k_wall * t30 * t31,
-            k_edge * t44 * t45,
-            k_wall * t53 * t54,
+            k_wall * t28 * t29,
+            k_edge * t40 * t41,
+            k_wall * t48 * t49,
         );
         let friction = Vector4::new(
             -mu * k_edge * t11 * t13 * t15 / t16,
-            -mu * k_wall * t28 * t30 * t31 / t32,
-            -mu * k_edge * t42 * t44 * t45 / t46,
-            -mu * k_wall * t51 * t53 * t54 / t55,
+            -mu * k_wall * t26 * t28 * t29 / t30,
+            -mu * k_edge * t38 * t40 * t41 / t42,
+            -mu * k_wall * t46 * t48 * t49 / t50,
         );
-        let delta = Vector4::new(t7, t27, t40, t50);
-        let slip = Vector4::new(t11, t28, t42, t51);
-        let a = Vector4::new(edge_ma * t19, wall_ma * t34, edge_ma * t47, wall_ma * t56);
-        let b = Vector4::new(edge_mb * t19, wall_mb * t34, edge_mb * t47, wall_mb * t56);
+        let delta = Vector4::new(t7, t25, t36, t45);
+        let slip = Vector4::new(t11, t26, t38, t46);
+        let a = Vector4::new(edge_ma * t19, wall_ma * t32, edge_ma * t43, wall_ma * t51);
+        let b = Vector4::new(edge_mb * t19, wall_mb * t32, edge_mb * t43, wall_mb * t51);
         let p0 = Vector4::new(
-            T::from_f64(0.3183098861837907) * t20 * t21 * t22 * t23,
-            T::from_f64(0.3183098861837907) * t35 * t36 * t37 * t38,
-            T::from_f64(0.3183098861837907) * t21 * t22 * t23 * t48,
-            T::from_f64(0.3183098861837907) * t36 * t37 * t38 * t57,
+            T::from_f64(0.3183098861837907) * e_star * edge_sum * t19 * t20 * t21,
+            T::from_f64(0.3183098861837907) * e_star * wall_sum * t32 * t33 * t34,
+            T::from_f64(0.3183098861837907) * e_star * edge_sum * t20 * t21 * t43,
+            T::from_f64(0.3183098861837907) * e_star * wall_sum * t33 * t34 * t51,
         );
         (normal, friction, delta, slip, a, b, p0)
     }
@@ -1029,7 +1013,7 @@ pub mod compliant_peg {
     /// - `depth`: scalar
     ///
     /// # Cost
-    /// 30 add/sub, 32 mul, 0 div, 0 sqrt, 7 transcendental, 4 branches; 17 `let`s.
+    /// 30 add/sub, 32 mul, 0 div, 0 sqrt, 6 transcendental, 4 branches; 17 `let`s.
     #[inline]
     pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> (T, T, T) {
         let x = y[0];
@@ -1047,8 +1031,7 @@ pub mod compliant_peg {
         let rho_h = p[6];
         let k_edge = p[9];
         let k_wall = p[10];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = -T::from_f64(0.5) * d;
         let t1 = -x;
         let t2 = rho_h - z;

@@ -53,7 +53,7 @@ pub mod compliant_peg_lean {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 60 add/sub, 123 mul, 4 div, 2 sqrt, 6 transcendental, 8 branches; 45 `let`s.
+    /// 60 add/sub, 121 mul, 4 div, 2 sqrt, 4 transcendental, 8 branches; 45 `let`s.
     #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
@@ -77,8 +77,7 @@ pub mod compliant_peg_lean {
         let f2 = p[12];
         let m_2 = p[13];
         let hc_alpha = p[23];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = f1 * sin_theta;
         let t1 = f2 * cos_theta;
         let t2 = f1 * cos_theta;
@@ -88,7 +87,7 @@ pub mod compliant_peg_lean {
         let t6 = -rho_h + t4 + t5;
         let t7 = rho_h - z;
         let t8 = T::from_f64(0.5) * theta;
-        let t9 = t8.sin();
+        let (t9, t19) = t8.sin_cos();
         let t10 = t9 * t9;
         let t11 = r + t4 + t5 - sin_theta * t7 - T::from_f64(2.0) * t6 * t10;
         let t12 = sin_theta * t6 + cos_theta * t7;
@@ -99,11 +98,10 @@ pub mod compliant_peg_lean {
         let t16 = t11.max0();
         let t17 = t16 * t16.sqrt();
         let t18 = -T::from_f64(1.0) + T::from_f64(2.0) * t10;
-        let t19 = t8.cos();
         let t20 = -(cos_theta * t7) - T::from_f64(2.0) * t6 * t9 * t19;
         let t21 = xdot * t18 + zdot * sin_theta + thetadot * t20;
         let t22 = (T::from_f64(1.0) + hc_alpha * t21).max0();
-        let t23 = k_edge * t17 * t22 - k_edge * t17;
+        let t23 = k_edge * t17 * (t22 - T::from_f64(1.0));
         let t24 = v_s.hypot(t15);
         let t25 = T::from_f64(1.0) / t24;
         let t26 = t11.step();
@@ -119,7 +117,7 @@ pub mod compliant_peg_lean {
         let t35 = cos_theta * t28 - T::from_f64(2.0) * t9 * t19 * t29;
         let t36 = xdot + thetadot * t35;
         let t37 = (T::from_f64(1.0) + hc_alpha * t36).max0();
-        let t38 = k_wall * t34 * t37 - k_wall * t34;
+        let t38 = k_wall * t34 * (t37 - T::from_f64(1.0));
         let t39 = v_s.hypot(t32);
         let t40 = T::from_f64(1.0) / t39;
         let t41 = t30.step();
@@ -159,7 +157,7 @@ pub mod compliant_peg_lean {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 230 add/sub, 1068 mul, 6 div, 4 sqrt, 6 transcendental, 12 branches; 115 `let`s.
+    /// 230 add/sub, 1056 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 115 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -183,8 +181,7 @@ pub mod compliant_peg_lean {
         let f2 = p[12];
         let m_2 = p[13];
         let hc_alpha = p[23];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = f1 * cos_theta;
         let t1 = -f2 * sin_theta;
         let t2 = t0 + t1;
@@ -195,7 +192,7 @@ pub mod compliant_peg_lean {
         let t7 = -sin_theta * t6;
         let t8 = cos_theta * t5 + t7;
         let t9 = T::from_f64(0.5) * theta;
-        let t10 = t9.sin();
+        let (t10, t24) = t9.sin_cos();
         let t11 = t10 * t10;
         let t12 = r + t3 + t4 + t7 - T::from_f64(2.0) * t5 * t11;
         let t13 = sin_theta * t5 + cos_theta * t6;
@@ -209,12 +206,11 @@ pub mod compliant_peg_lean {
         let t21 = t12.max0();
         let t22 = t21 * t21.sqrt();
         let t23 = -T::from_f64(1.0) + T::from_f64(2.0) * t11;
-        let t24 = t9.cos();
         let t25 = -(cos_theta * t6) - T::from_f64(2.0) * t5 * t10 * t24;
         let t26 = xdot * t23 + zdot * sin_theta + thetadot * t25;
         let t27 = T::from_f64(1.0) + hc_alpha * t26;
         let t28 = t27.max0();
-        let t29 = k_edge * t22 * t28 - k_edge * t22;
+        let t29 = k_edge * t22 * (t28 - T::from_f64(1.0));
         let t30 = v_s.hypot(t20);
         let t31 = T::from_f64(1.0) / t30;
         let t32 = t12.step();
@@ -247,16 +243,18 @@ pub mod compliant_peg_lean {
         let t59 = t23 * t23;
         let t60 = t32 * t32;
         let t61 = t27.step();
-        let t62 = T::from_f64(1.5) * k_edge * t23 * t28 * t32 * t58
-            + T::from_f64(2.0) * thetadot * k_edge * hc_alpha * t10 * t22 * t24 * t61
-            - T::from_f64(1.5) * k_edge * t23 * t32 * t58;
+        let t62 = k_edge
+            * (T::from_f64(1.5) * t23 * t28 * t32 * t58
+                + T::from_f64(2.0) * thetadot * hc_alpha * t10 * t22 * t24 * t61
+                - T::from_f64(1.5) * t23 * t32 * t58);
         let t63 = sin_theta * sin_theta;
         let t64 = t43.sqrt();
         let t65 = t54 * t54;
         let t66 = -T::from_f64(1.5) * k_edge * sin_theta * t23 * t58 * t60;
-        let t67 = T::from_f64(1.5) * k_edge * sin_theta * t28 * t32 * t58
-            + thetadot * k_edge * hc_alpha * cos_theta * t22 * t61
-            - T::from_f64(1.5) * k_edge * sin_theta * t32 * t58;
+        let t67 = k_edge
+            * (T::from_f64(1.5) * sin_theta * t28 * t32 * t58
+                + thetadot * hc_alpha * cos_theta * t22 * t61
+                - T::from_f64(1.5) * sin_theta * t32 * t58);
         let t68 = cos_theta * cos_theta;
         let t69 = -T::from_f64(1.5) * k_edge * t23 * t25 * t58 * t60;
         let t70 = -T::from_f64(2.0) * k_edge * t10 * t22 * t24 * t32;
@@ -265,9 +263,9 @@ pub mod compliant_peg_lean {
         let t73 = sin_theta * t6 + t5 * t11 - t5 * t72;
         let t74 = T::from_f64(2.0) * xdot * t10 * t24 + zdot * cos_theta
             + thetadot * t73;
-        let t75 = T::from_f64(1.5) * k_edge * t25 * t28 * t32 * t58
-            + k_edge * hc_alpha * t22 * t61 * t74
-            - T::from_f64(1.5) * k_edge * t25 * t32 * t58;
+        let t75 = k_edge
+            * (T::from_f64(1.5) * t25 * t28 * t32 * t58 + hc_alpha * t22 * t61 * t74
+                - T::from_f64(1.5) * t25 * t32 * t58);
         let t76 = t16 + t17 + cos_theta * t8;
         let t77 = -(r * sin_theta) - cos_theta * t13 - sin_theta * t8;
         let t78 = cos_theta * t15 + thetadot * sin_theta * t76 - sin_theta * t19
@@ -296,13 +294,13 @@ pub mod compliant_peg_lean {
         let t99 = mu * k_edge * cos_theta * t22 * t28 * t33 * t34 * t79;
         let t100 = -mu * k_wall * t41 * t44 * t48 * t53;
         let t101 = mu * k_wall * t41 * t44 * t48 * t55 * t96;
-        let t102 = T::from_f64(1.5) * k_wall * t48 * t54 * t64
-            - T::from_f64(1.5) * k_wall * t54 * t64;
+        let t102 = k_wall * t54 * t64 * (T::from_f64(1.5) * t48 - T::from_f64(1.5));
         let t103 = t25 * t25;
         let t104 = t45 * t45;
-        let t105 = thetadot * k_wall * hc_alpha * t44 * t81 * t82
-            + T::from_f64(1.5) * k_wall * t45 * t48 * t54 * t64
-            - T::from_f64(1.5) * k_wall * t45 * t54 * t64;
+        let t105 = k_wall
+            * (thetadot * hc_alpha * t44 * t81 * t82
+                + T::from_f64(1.5) * t45 * t48 * t54 * t64
+                - T::from_f64(1.5) * t45 * t54 * t64);
         let t106 = t33 * t33;
         let t107 = cos_theta * t40 + sin_theta * t39;
         let t108 = t107 * t107;
@@ -549,7 +547,7 @@ pub mod compliant_peg_lean {
     /// - `p0`: vector of 2
     ///
     /// # Cost
-    /// 32 add/sub, 80 mul, 7 div, 2 sqrt, 12 transcendental, 4 branches; 33 `let`s.
+    /// 32 add/sub, 74 mul, 7 div, 2 sqrt, 6 transcendental, 4 branches; 29 `let`s.
     #[inline]
     pub fn contacts<T: Real>(
         y: &SVector<T, 8>,
@@ -586,14 +584,13 @@ pub mod compliant_peg_lean {
         let wall_ma = p[20];
         let wall_mb = p[21];
         let hc_alpha = p[23];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = -T::from_f64(0.5) * d;
         let t1 = -x;
         let t2 = -rho_h + t0 + t1;
         let t3 = rho_h - z;
         let t4 = T::from_f64(0.5) * theta;
-        let t5 = t4.sin();
+        let (t5, t12) = t4.sin_cos();
         let t6 = t5 * t5;
         let t7 = r + t0 + t1 - sin_theta * t3 - T::from_f64(2.0) * t2 * t6;
         let t8 = sin_theta * t2 + cos_theta * t3;
@@ -601,7 +598,6 @@ pub mod compliant_peg_lean {
             + cos_theta * (zdot + thetadot * (-(sin_theta * t8) + r * cos_theta));
         let t10 = t7.max0();
         let t11 = t10 * t10.sqrt();
-        let t12 = t4.cos();
         let t13 = (T::from_f64(1.0)
             + hc_alpha
                 * (xdot * (-T::from_f64(1.0) + T::from_f64(2.0) * t6) + zdot * sin_theta
@@ -609,44 +605,38 @@ pub mod compliant_peg_lean {
             .max0();
         let t14 = v_s.hypot(t9);
         let t15 = T::from_f64(1.0) / e_star;
-        let t16 = (T::from_f64(1.5) * k_edge * t11 * t13 * t15 / edge_sum)
-            .powf(T::from_f64(0.3333333333333333));
-        let t17 = (T::from_f64(1.5) * k_edge * t11 * t13)
-            .powf(T::from_f64(0.3333333333333333));
-        let t18 = (e_star * edge_sum).powf(T::from_f64(0.6666666666666666));
-        let t19 = -rho_p;
-        let t20 = l_c + t19;
-        let t21 = r + t19;
-        let t22 = r + t0 + x + sin_theta * t20 - T::from_f64(2.0) * t6 * t21;
-        let t23 = zdot
+        let t16 = (T::from_f64(1.5) * k_edge * t11 * t13 * t15 / edge_sum).cbrt();
+        let t17 = -rho_p;
+        let t18 = l_c + t17;
+        let t19 = r + t17;
+        let t20 = r + t0 + x + sin_theta * t18 - T::from_f64(2.0) * t6 * t19;
+        let t21 = zdot
             + thetadot
-                * (-(sin_theta * (l_c + t19 + rho_p * sin_theta))
+                * (-(sin_theta * (l_c + t17 + rho_p * sin_theta))
                     - cos_theta * (r - T::from_f64(2.0) * rho_p * t6));
-        let t24 = t22.max0();
-        let t25 = t24 * t24.sqrt();
-        let t26 = (T::from_f64(1.0)
+        let t22 = t20.max0();
+        let t23 = t22 * t22.sqrt();
+        let t24 = (T::from_f64(1.0)
             + hc_alpha
                 * (xdot
-                    + thetadot * (cos_theta * t20 - T::from_f64(2.0) * t5 * t12 * t21)))
+                    + thetadot * (cos_theta * t18 - T::from_f64(2.0) * t5 * t12 * t19)))
             .max0();
-        let t27 = v_s.hypot(t23);
-        let t28 = (T::from_f64(1.5) * k_wall * t15 * t25 * t26 / wall_sum)
-            .powf(T::from_f64(0.3333333333333333));
-        let t29 = (T::from_f64(1.5) * k_wall * t25 * t26)
-            .powf(T::from_f64(0.3333333333333333));
-        let t30 = (e_star * wall_sum).powf(T::from_f64(0.6666666666666666));
-        let normal = Vector2::new(k_edge * t11 * t13, k_wall * t25 * t26);
+        let t25 = v_s.hypot(t21);
+        let t26 = (T::from_f64(1.5) * k_wall * t15 * t23 * t24 / wall_sum).cbrt();
+        let normal = Vector2::new(k_edge * t11 * t13, k_wall * t23 * t24);
         let friction = Vector2::new(
             -mu * k_edge * t9 * t11 * t13 / t14,
-            -mu * k_wall * t23 * t25 * t26 / t27,
+            -mu * k_wall * t21 * t23 * t24 / t25,
         );
-        let delta = Vector2::new(t7, t22);
-        let slip = Vector2::new(t9, t23);
-        let a = Vector2::new(edge_ma * t16, wall_ma * t28);
-        let b = Vector2::new(edge_mb * t16, wall_mb * t28);
+        let delta = Vector2::new(t7, t20);
+        let slip = Vector2::new(t9, t21);
+        let a = Vector2::new(edge_ma * t16, wall_ma * t26);
+        let b = Vector2::new(edge_mb * t16, wall_mb * t26);
         let p0 = Vector2::new(
-            T::from_f64(0.3183098861837907) * t17 * t18 / (edge_ma * edge_mb),
-            T::from_f64(0.3183098861837907) * t29 * t30 / (wall_ma * wall_mb),
+            T::from_f64(0.3183098861837907) * e_star * edge_sum * t16
+                / (edge_ma * edge_mb),
+            T::from_f64(0.3183098861837907) * e_star * wall_sum * t26
+                / (wall_ma * wall_mb),
         );
         (normal, friction, delta, slip, a, b, p0)
     }
@@ -662,7 +652,7 @@ pub mod compliant_peg_lean {
     /// - `depth`: scalar
     ///
     /// # Cost
-    /// 17 add/sub, 21 mul, 0 div, 0 sqrt, 5 transcendental, 2 branches; 11 `let`s.
+    /// 17 add/sub, 21 mul, 0 div, 0 sqrt, 4 transcendental, 2 branches; 11 `let`s.
     #[inline]
     pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> (T, T, T) {
         let x = y[0];
@@ -680,8 +670,7 @@ pub mod compliant_peg_lean {
         let rho_h = p[6];
         let k_edge = p[9];
         let k_wall = p[10];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = -T::from_f64(0.5) * d;
         let t1 = -x;
         let t2 = (T::from_f64(0.5) * theta).sin();

@@ -26,7 +26,7 @@ pub mod double_pendulum {
     /// - `forcing`: vector of 2
     ///
     /// # Cost
-    /// 17 add/sub, 91 mul, 0 div, 0 sqrt, 4 transcendental, 0 branches; 8 `let`s.
+    /// 5 add/sub, 21 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 7 `let`s.
     #[inline]
     pub fn dynamics<T: Real>(
         x: &SVector<T, 4>,
@@ -42,41 +42,16 @@ pub mod double_pendulum {
         let l2 = p[3];
         let g = p[4];
         let sin_theta1 = theta1.sin();
-        let cos_theta1 = theta1.cos();
         let sin_theta2 = theta2.sin();
-        let cos_theta2 = theta2.cos();
         let t0 = l1 * l1;
-        let t1 = T::from_f64(2.0) * theta1dot * l1 * cos_theta1
-            + T::from_f64(2.0) * theta2dot * l2 * cos_theta2;
-        let t2 = T::from_f64(2.0) * theta1dot * l1 * sin_theta1
-            + T::from_f64(2.0) * theta2dot * l2 * sin_theta2;
-        let t3 = T::from_f64(0.5) * m2
-            * (T::from_f64(2.0) * l1 * l2 * cos_theta1 * cos_theta2
-                + T::from_f64(2.0) * l1 * l2 * sin_theta1 * sin_theta2);
-        let mass = Matrix2::new(m1 * t0 + m2 * t0, t3, t3, m2 * (l2 * l2));
+        let t1 = theta1 - theta2;
+        let (t4, t2) = t1.sin_cos();
+        let t3 = m2 * l1 * l2 * t2;
+        let mass = Matrix2::new(t0 * (m1 + m2), t3, t3, m2 * (l2 * l2));
         let forcing = Vector2::new(
-            -(g * (m1 * l1 * sin_theta1 + m2 * l1 * sin_theta1))
-                + T::from_f64(0.5) * m2
-                    * (-(theta1dot * l1 * sin_theta1 * t1)
-                        + theta1dot * l1 * cos_theta1 * t2)
-                - T::from_f64(0.5) * theta1dot * m2
-                    * (-(l1 * sin_theta1 * t1) + l1 * cos_theta1 * t2)
-                - T::from_f64(0.5) * theta2dot * m2
-                    * (-(T::from_f64(2.0) * theta2dot * l1 * l2 * cos_theta1
-                        * sin_theta2)
-                        + T::from_f64(2.0) * theta2dot * l1 * l2 * sin_theta1
-                            * cos_theta2),
-            -(m2 * l2 * g * sin_theta2)
-                + T::from_f64(0.5) * m2
-                    * (-(theta2dot * l2 * sin_theta2 * t1)
-                        + theta2dot * l2 * cos_theta2 * t2)
-                - T::from_f64(0.5) * theta1dot * m2
-                    * (-(T::from_f64(2.0) * theta1dot * l1 * l2 * sin_theta1
-                        * cos_theta2)
-                        + T::from_f64(2.0) * theta1dot * l1 * l2 * cos_theta1
-                            * sin_theta2)
-                - T::from_f64(0.5) * theta2dot * m2
-                    * (-(l2 * sin_theta2 * t1) + l2 * cos_theta2 * t2),
+            -(g * (l1 * sin_theta1 * (m1 + m2)))
+                - m2 * l1 * l2 * (theta2dot * theta2dot) * t4,
+            m2 * l2 * (l1 * (theta1dot * theta1dot) * t4 - g * sin_theta2),
         );
         (mass, forcing)
     }
@@ -92,7 +67,7 @@ pub mod double_pendulum {
     /// - `xdot`: vector of 4
     ///
     /// # Cost
-    /// 21 add/sub, 110 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 14 `let`s.
+    /// 8 add/sub, 35 mul, 1 div, 0 sqrt, 3 transcendental, 0 branches; 11 `let`s.
     #[inline]
     pub fn rhs<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> SVector<T, 4> {
         let theta1 = x[0];
@@ -105,43 +80,21 @@ pub mod double_pendulum {
         let l2 = p[3];
         let g = p[4];
         let sin_theta1 = theta1.sin();
-        let cos_theta1 = theta1.cos();
         let sin_theta2 = theta2.sin();
-        let cos_theta2 = theta2.cos();
         let t0 = l1 * l1;
-        let t1 = T::from_f64(2.0) * theta1dot * l1 * cos_theta1
-            + T::from_f64(2.0) * theta2dot * l2 * cos_theta2;
-        let t2 = T::from_f64(2.0) * theta1dot * l1 * sin_theta1
-            + T::from_f64(2.0) * theta2dot * l2 * sin_theta2;
-        let t3 = m1 * t0 + m2 * t0;
-        let t4 = T::from_f64(2.0) * l1 * l2 * cos_theta1 * cos_theta2
-            + T::from_f64(2.0) * l1 * l2 * sin_theta1 * sin_theta2;
-        let t5 = -(g * (m1 * l1 * sin_theta1 + m2 * l1 * sin_theta1))
-            + T::from_f64(0.5) * m2
-                * (-(theta1dot * l1 * sin_theta1 * t1)
-                    + theta1dot * l1 * cos_theta1 * t2)
-            - T::from_f64(0.5) * theta1dot * m2
-                * (-(l1 * sin_theta1 * t1) + l1 * cos_theta1 * t2)
-            - T::from_f64(0.5) * theta2dot * m2
-                * (-(T::from_f64(2.0) * theta2dot * l1 * l2 * cos_theta1 * sin_theta2)
-                    + T::from_f64(2.0) * theta2dot * l1 * l2 * sin_theta1 * cos_theta2);
-        let t6 = l2 * l2;
-        let t7 = -(m2 * l2 * g * sin_theta2)
-            + T::from_f64(0.5) * m2
-                * (-(theta2dot * l2 * sin_theta2 * t1)
-                    + theta2dot * l2 * cos_theta2 * t2)
-            - T::from_f64(0.5) * theta1dot * m2
-                * (-(T::from_f64(2.0) * theta1dot * l1 * l2 * sin_theta1 * cos_theta2)
-                    + T::from_f64(2.0) * theta1dot * l1 * l2 * cos_theta1 * sin_theta2)
-            - T::from_f64(0.5) * theta2dot * m2
-                * (-(l2 * sin_theta2 * t1) + l2 * cos_theta2 * t2);
-        let t8 = l1 * l2 * cos_theta1 * cos_theta2 + l1 * l2 * sin_theta1 * sin_theta2;
-        let t9 = T::from_f64(1.0) / (m2 * t3 * t6 - m2 * m2 * (t8 * t8));
+        let t1 = l2 * l2;
+        let t2 = theta1 - theta2;
+        let (t5, t3) = t2.sin_cos();
+        let t4 = t0 * (m1 + m2);
+        let t6 = -(g * (l1 * sin_theta1 * (m1 + m2)))
+            - m2 * l1 * l2 * (theta2dot * theta2dot) * t5;
+        let t7 = m2 * l2 * (l1 * (theta1dot * theta1dot) * t5 - g * sin_theta2);
+        let t8 = T::from_f64(1.0) / (t1 * (m2 * t4 - t0 * (m2 * m2) * (t3 * t3)));
         Vector4::new(
             theta1dot,
             theta2dot,
-            (m2 * t5 * t6 - T::from_f64(0.5) * m2 * t4 * t7) * t9,
-            t9 * (t3 * t7 - T::from_f64(0.5) * m2 * t4 * t5),
+            m2 * (t1 * t6 - l1 * l2 * t3 * t7) * t8,
+            t8 * (t4 * t7 - m2 * l1 * l2 * t3 * t6),
         )
     }
     /// G = ∂f/∂x − Σ_j (∂M_{·j}/∂x) q̈_j (n × 2n) at the accelerations `qdd`;
@@ -158,7 +111,7 @@ pub mod double_pendulum {
     /// - `terms`: 2×4 matrix
     ///
     /// # Cost
-    /// 40 add/sub, 196 mul, 0 div, 0 sqrt, 4 transcendental, 0 branches; 17 `let`s.
+    /// 8 add/sub, 40 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 7 `let`s.
     #[inline]
     pub fn jacobian_terms<T: Real>(
         x: &SVector<T, 4>,
@@ -176,72 +129,21 @@ pub mod double_pendulum {
         let l1 = p[2];
         let l2 = p[3];
         let g = p[4];
-        let sin_theta1 = theta1.sin();
         let cos_theta1 = theta1.cos();
-        let sin_theta2 = theta2.sin();
         let cos_theta2 = theta2.cos();
-        let t0 = l1 * l1;
-        let t1 = T::from_f64(2.0) * theta1dot * l1 * cos_theta1
-            + T::from_f64(2.0) * theta2dot * l2 * cos_theta2;
-        let t2 = T::from_f64(2.0) * theta1dot * l1 * sin_theta1
-            + T::from_f64(2.0) * theta2dot * l2 * sin_theta2;
-        let t3 = -(T::from_f64(2.0) * theta2dot * l1 * l2 * cos_theta1 * sin_theta2)
-            + T::from_f64(2.0) * theta2dot * l1 * l2 * sin_theta1 * cos_theta2;
-        let t4 = l2 * l2;
-        let t5 = -(T::from_f64(2.0) * theta1dot * l1 * l2 * sin_theta1 * cos_theta2)
-            + T::from_f64(2.0) * theta1dot * l1 * l2 * cos_theta1 * sin_theta2;
-        let t6 = -(T::from_f64(2.0) * l1 * l2 * sin_theta1 * cos_theta2)
-            + T::from_f64(2.0) * l1 * l2 * cos_theta1 * sin_theta2;
-        let t7 = T::from_f64(2.0) * theta2dot * l1 * l2 * sin_theta1 * sin_theta2
-            + T::from_f64(2.0) * theta2dot * l1 * l2 * cos_theta1 * cos_theta2;
-        let t8 = -(T::from_f64(2.0) * l1 * l2 * cos_theta1 * sin_theta2)
-            + T::from_f64(2.0) * l1 * l2 * sin_theta1 * cos_theta2;
-        let t9 = T::from_f64(0.5) * m2
-            * (T::from_f64(2.0) * theta1dot * theta2dot * l1 * l2 * sin_theta1
-                * sin_theta2
-                + T::from_f64(2.0) * theta1dot * theta2dot * l1 * l2 * cos_theta1
-                    * cos_theta2);
-        let t10 = -T::from_f64(0.5) * theta1dot * m2 * t6;
-        let t11 = -T::from_f64(0.5) * theta2dot * m2 * t8;
-        let t12 = T::from_f64(2.0) * theta1dot * l1 * l2 * sin_theta1 * sin_theta2
-            + T::from_f64(2.0) * theta1dot * l1 * l2 * cos_theta1 * cos_theta2;
+        let t0 = theta1dot * theta1dot;
+        let t1 = theta2dot * theta2dot;
+        let t2 = theta1 - theta2;
+        let (t4, t3) = t2.sin_cos();
         Matrix2x4::new(
-            -(g * (m1 * l1 * cos_theta1 + m2 * l1 * cos_theta1))
-                + T::from_f64(0.5) * m2
-                    * (-(theta1dot * l1 * cos_theta1 * t1)
-                        - theta1dot * l1 * sin_theta1 * t2
-                        + T::from_f64(2.0) * (theta1dot * theta1dot) * t0)
-                - T::from_f64(0.5) * theta1dot * m2
-                    * (-(l1 * cos_theta1 * t1) - l1 * sin_theta1 * t2
-                        + T::from_f64(2.0) * theta1dot * t0)
-                - T::from_f64(0.5) * theta2dot * m2 * t7
-                - T::from_f64(0.5) * theta2ddot * m2 * t6,
-            t9 - T::from_f64(0.5) * theta1dot * m2 * t7
-                - T::from_f64(0.5) * theta2dot * m2
-                    * (-(T::from_f64(2.0) * theta2dot * l1 * l2 * cos_theta1
-                        * cos_theta2)
-                        - T::from_f64(2.0) * theta2dot * l1 * l2 * sin_theta1
-                            * sin_theta2) - T::from_f64(0.5) * theta2ddot * m2 * t8,
+            theta2ddot * m2 * l1 * l2 * t4 - g * (l1 * cos_theta1 * (m1 + m2))
+                - m2 * l1 * l2 * t1 * t3,
+            m2 * l1 * l2 * (-(theta2ddot * t4) + t1 * t3),
             T::from_f64(0.0),
-            T::from_f64(0.5) * m2 * t5 + t10 - T::from_f64(0.5) * m2 * t3 + t11,
-            t9
-                - T::from_f64(0.5) * theta1dot * m2
-                    * (-(T::from_f64(2.0) * theta1dot * l1 * l2 * cos_theta1
-                        * cos_theta2)
-                        - T::from_f64(2.0) * theta1dot * l1 * l2 * sin_theta1
-                            * sin_theta2) - T::from_f64(0.5) * theta2dot * m2 * t12
-                - T::from_f64(0.5) * theta1ddot * m2 * t6,
-            -(m2 * l2 * g * cos_theta2)
-                + T::from_f64(0.5) * m2
-                    * (-(theta2dot * l2 * cos_theta2 * t1)
-                        - theta2dot * l2 * sin_theta2 * t2
-                        + T::from_f64(2.0) * t4 * (theta2dot * theta2dot))
-                - T::from_f64(0.5) * theta1dot * m2 * t12
-                - T::from_f64(0.5) * theta2dot * m2
-                    * (-(l2 * cos_theta2 * t1) - l2 * sin_theta2 * t2
-                        + T::from_f64(2.0) * theta2dot * t4)
-                - T::from_f64(0.5) * theta1ddot * m2 * t8,
-            T::from_f64(0.5) * m2 * t3 + t10 + t11 - T::from_f64(0.5) * m2 * t5,
+            -T::from_f64(2.0) * theta2dot * m2 * l1 * l2 * t4,
+            m2 * l1 * l2 * (theta1ddot * t4 + t0 * t3),
+            m2 * l2 * (-(theta1ddot * l1 * t4) - l1 * t0 * t3 - g * cos_theta2),
+            T::from_f64(2.0) * theta1dot * m2 * l1 * l2 * t4,
             T::from_f64(0.0),
         )
     }
@@ -257,7 +159,7 @@ pub mod double_pendulum {
     /// - `energy`: scalar
     ///
     /// # Cost
-    /// 7 add/sub, 23 mul, 0 div, 0 sqrt, 4 transcendental, 0 branches; 6 `let`s.
+    /// 7 add/sub, 24 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 5 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> T {
         let theta1 = x[0];
@@ -269,14 +171,14 @@ pub mod double_pendulum {
         let l1 = p[2];
         let l2 = p[3];
         let g = p[4];
-        let sin_theta1 = theta1.sin();
         let cos_theta1 = theta1.cos();
-        let sin_theta2 = theta2.sin();
         let cos_theta2 = theta2.cos();
-        let t0 = theta1dot * l1 * cos_theta1 + theta2dot * l2 * cos_theta2;
-        let t1 = theta1dot * l1 * sin_theta1 + theta2dot * l2 * sin_theta2;
-        T::from_f64(0.5) * m1 * (theta1dot * theta1dot) * (l1 * l1)
-            + T::from_f64(0.5) * m2 * (t0 * t0 + t1 * t1)
+        let t0 = theta1dot * theta1dot;
+        let t1 = l1 * l1;
+        let t2 = (theta1 - theta2).cos();
+        T::from_f64(0.5) * m1 * t0 * t1 + T::from_f64(0.5) * m2 * t0 * t1
+            + T::from_f64(0.5) * m2 * (theta2dot * theta2dot) * (l2 * l2)
+            + theta1dot * theta2dot * m2 * l1 * l2 * t2
             + g * (-(m1 * l1 * cos_theta1) + m2 * (-(l1 * cos_theta1) - l2 * cos_theta2))
     }
 }

@@ -22,7 +22,7 @@ pub mod hertz {
     /// - `delta`: scalar
     ///
     /// # Cost
-    /// 0 add/sub, 14 mul, 3 div, 0 sqrt, 4 transcendental, 1 branches; 5 `let`s.
+    /// 0 add/sub, 13 mul, 3 div, 0 sqrt, 2 transcendental, 1 branches; 3 `let`s.
     #[inline]
     pub fn ellipse<T: Real>(load: &SVector<T, 1>, c: &SVector<T, 5>) -> (T, T, T, T) {
         let load_2 = load[0];
@@ -32,17 +32,14 @@ pub mod hertz {
         let c_mb = c[3];
         let c_dstar = c[4];
         let max0_load_2 = load_2.max0();
-        let t0 = (T::from_f64(1.5) * max0_load_2 / (c_sum * e_star))
-            .powf(T::from_f64(0.3333333333333333));
-        let t1 = (T::from_f64(1.5) * max0_load_2).powf(T::from_f64(0.3333333333333333));
-        let t2 = (c_sum * e_star).powf(T::from_f64(0.6666666666666666));
-        let t3 = (T::from_f64(0.28125) * c_sum * (max0_load_2 * max0_load_2)
+        let t0 = (T::from_f64(1.5) * max0_load_2 / (c_sum * e_star)).cbrt();
+        let t1 = (T::from_f64(0.28125) * c_sum * (max0_load_2 * max0_load_2)
             / (e_star * e_star))
-            .powf(T::from_f64(0.3333333333333333));
+            .cbrt();
         let a = c_ma * t0;
         let b = c_mb * t0;
-        let p0 = T::from_f64(0.3183098861837907) * t1 * t2 / (c_ma * c_mb);
-        let delta = c_dstar * t3;
+        let p0 = T::from_f64(0.3183098861837907) * c_sum * e_star * t0 / (c_ma * c_mb);
+        let delta = c_dstar * t1;
         (a, b, p0, delta)
     }
     /// Stiffness k (N/m^1.5) of Q = k delta^1.5 ((13) inverted).

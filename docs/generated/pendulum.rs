@@ -102,7 +102,7 @@ pub mod pendulum {
     /// - `energy`: scalar
     ///
     /// # Cost
-    /// 1 add/sub, 8 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 1 `let`s.
+    /// 1 add/sub, 7 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 1 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 3>) -> T {
         let theta = x[0];
@@ -111,6 +111,6 @@ pub mod pendulum {
         let l = p[1];
         let g = p[2];
         let cos_theta = theta.cos();
-        T::from_f64(0.5) * m * (thetadot * thetadot) * (l * l) - m * l * g * cos_theta
+        m * (T::from_f64(0.5) * (thetadot * thetadot) * (l * l) - l * g * cos_theta)
     }
 }

@@ -31,7 +31,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 21 add/sub, 35 mul, 1 div, 0 sqrt, 2 transcendental, 0 branches; 12 `let`s.
+    /// 19 add/sub, 27 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 10 `let`s.
     #[inline]
     pub fn two_point<T: Real>(
         pose: &SVector<T, 2>,
@@ -51,24 +51,21 @@ pub mod quasi_static {
         let l_c = p[2];
         let m = p[3];
         let j = p[4];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = cos_theta - mu * sin_theta;
-        let t1 = -sin_theta - mu * cos_theta;
-        let t2 = l_c - l;
-        let t3 = f2 * sin_theta;
-        let t4 = xdd * m - f1 * sin_theta - f2 * cos_theta;
-        let t5 = ydd * m;
-        let t6 = -f1 * cos_theta;
-        let t7 = t3 + t5 + t6 - mu * t4;
-        let t8 = T::from_f64(1.0) / (sin_theta + mu * cos_theta + mu * t0);
-        let t9 = t0 * (t3 + t5 + t6) - t1 * t4;
-        let f_a = -t7 * t8;
-        let f_b = -t8 * t9;
-        let moment = thdd * j - t1 * (-(r * cos_theta) + sin_theta * t2) * t7 * t8
-            + t0 * (r * sin_theta + cos_theta * t2) * t7 * t8
-            + mu * (r * cos_theta + l_c * sin_theta) * t8 * t9
-            - (-(r * sin_theta) + l_c * cos_theta) * t8 * t9;
+        let t1 = f2 * sin_theta;
+        let t2 = xdd * m - f1 * sin_theta - f2 * cos_theta;
+        let t3 = ydd * m;
+        let t4 = -f1 * cos_theta;
+        let t5 = t1 + t3 + t4 - mu * t2;
+        let t6 = T::from_f64(1.0) / (sin_theta + mu * cos_theta + mu * t0);
+        let t7 = t0 * (t1 + t3 + t4) - (-sin_theta - mu * cos_theta) * t2;
+        let f_a = -t5 * t6;
+        let f_b = -t6 * t7;
+        let moment = thdd * j - t5 * t6 * (-l_c + mu * r + l)
+            - t6 * t7
+                * (-(r * sin_theta) + l_c * cos_theta - mu * r * cos_theta
+                    - mu * l_c * sin_theta);
         (f_a, f_b, moment)
     }
     /// Eq. 53 (signs corrected): edge force f_a (N) from the normal balance and input moment about C (N m), one-point contact at the edge A.
@@ -84,7 +81,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 12 add/sub, 19 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 4 `let`s.
+    /// 5 add/sub, 7 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 3 `let`s.
     #[inline]
     pub fn edge_only<T: Real>(
         pose: &SVector<T, 2>,
@@ -94,7 +91,6 @@ pub mod quasi_static {
     ) -> (T, T) {
         let theta = pose[0];
         let l = pose[1];
-        let f1 = load[0];
         let f2 = load[1];
         let xdd = acc[0];
         let ydd = acc[1];
@@ -104,15 +100,10 @@ pub mod quasi_static {
         let l_c = p[2];
         let m = p[3];
         let j = p[4];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
-        let t0 = l_c - l;
-        let t1 = cos_theta * (xdd * m - f1 * sin_theta - f2 * cos_theta)
-            - sin_theta * (f2 * sin_theta + ydd * m - f1 * cos_theta);
-        let f_a = t1;
-        let moment = thdd * j
-            + (-sin_theta - mu * cos_theta) * (-(r * cos_theta) + sin_theta * t0) * t1
-            - (cos_theta - mu * sin_theta) * (r * sin_theta + cos_theta * t0) * t1;
+        let (sin_theta, cos_theta) = theta.sin_cos();
+        let t0 = -f2 + xdd * m * cos_theta - ydd * m * sin_theta;
+        let f_a = t0;
+        let moment = thdd * j + (-l_c + mu * r + l) * t0;
         (f_a, moment)
     }
     /// Eq. 54: tip force f_b (N) from the normal balance and input moment about C (N m), one-point contact at the tip corner B.
@@ -128,7 +119,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 8 add/sub, 14 mul, 0 div, 0 sqrt, 2 transcendental, 0 branches; 3 `let`s.
+    /// 6 add/sub, 11 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 3 `let`s.
     #[inline]
     pub fn tip_only<T: Real>(
         pose: &SVector<T, 2>,
@@ -146,13 +137,12 @@ pub mod quasi_static {
         let l_c = p[2];
         let m = p[3];
         let j = p[4];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
+        let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = f1 * sin_theta + f2 * cos_theta - xdd * m;
         let f_b = t0;
-        let moment = thdd * j - mu * (r * cos_theta + l_c * sin_theta) * t0
-            - (-(r * sin_theta) + l_c * cos_theta)
-                * (xdd * m - f1 * sin_theta - f2 * cos_theta);
+        let moment = thdd * j
+            + (-(r * sin_theta) + l_c * cos_theta - mu * r * cos_theta
+                - mu * l_c * sin_theta) * t0;
         (f_b, moment)
     }
     /// Whitney's frame (x lateral, z into the hole, moment about the tip): tip force f_tip (N), edge force f_edge (N) and the moment M (N m) holding the peg in two-point sliding under applied (F_x, F_z) (N); pose = (theta rad, l m), w = (F_x, F_z), q = (mu, r m).
@@ -168,7 +158,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 11 add/sub, 26 mul, 1 div, 0 sqrt, 2 transcendental, 0 branches; 7 `let`s.
+    /// 9 add/sub, 15 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 6 `let`s.
     #[inline]
     pub fn whitney_tip<T: Real>(
         pose: &SVector<T, 2>,
@@ -181,18 +171,15 @@ pub mod quasi_static {
         let fz = w[1];
         let mu = q[0];
         let r = q[1];
-        let sin_theta = theta.sin();
-        let cos_theta = theta.cos();
-        let t0 = -sin_theta - mu * cos_theta;
-        let t1 = mu * sin_theta - cos_theta;
-        let t2 = -(t0 * fx) + fz * t1;
-        let t3 = T::from_f64(1.0) / (sin_theta + mu * cos_theta - mu * t1);
-        let t4 = -fz - mu * fx;
-        let f_tip = -t2 * t3;
-        let f_edge = -t3 * t4;
-        let moment = r * sin_theta * t2 * t3 + mu * r * cos_theta * t2 * t3
-            - (r * sin_theta - l * cos_theta) * t1 * t3 * t4
-            + t0 * (r * cos_theta + l * sin_theta) * t3 * t4;
+        let (sin_theta, cos_theta) = theta.sin_cos();
+        let t0 = mu * sin_theta - cos_theta;
+        let t1 = -((-sin_theta - mu * cos_theta) * fx) + fz * t0;
+        let t2 = T::from_f64(1.0) / (sin_theta + mu * cos_theta - mu * t0);
+        let t3 = -fz - mu * fx;
+        let f_tip = -t1 * t2;
+        let f_edge = -t2 * t3;
+        let moment = t2
+            * (t1 * (r * (sin_theta + mu * cos_theta)) + t3 * (-(mu * r) - l));
         (f_tip, f_edge, moment)
     }
 }

@@ -42,7 +42,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 100 add/sub, 298 mul, 4 div, 1 sqrt, 11 transcendental, 0 branches; 63 `let`s.
+    /// 92 add/sub, 253 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -75,144 +75,136 @@ pub mod rigid_peg {
         let t_b2_eta = t[6];
         let t_b2_n = t[7];
         let t_b2_z = t[8];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = t6 * t6;
-        let t8 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t7;
-        let t9 = T::from_f64(1.0) / sin_gamma;
-        let t10 = T::from_f64(0.5) * t8 * t9;
-        let t11 = t10 + d_hole * cos_gamma * t3 * t5 * t9;
-        let t12 = sin_gamma * sin_gamma;
-        let t13 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t14 = T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t13;
-        let t15 = d_hole * cos_gamma * t3 * t5 * t13;
-        let t16 = (-T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t13
-            * (d_hole + t14))
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t23) = t1.sin_cos();
+        let t5 = t4 * t4;
+        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
+        let t7 = T::from_f64(1.0) / sin_gamma;
+        let t8 = -d_hole * t2 * t3 * t7;
+        let t9 = T::from_f64(0.5) * t6 * t7;
+        let t10 = t9 + d_hole * cos_gamma * t2 * t3 * t7;
+        let t11 = sin_gamma * sin_gamma;
+        let t12 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t13 = T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t12;
+        let t14 = d_hole * cos_gamma * t2 * t3 * t12;
+        let t15 = (-T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t12
+            * (d_hole + t13))
             .sqrt();
-        let t17 = -T::from_f64(0.5) * t8 * t9;
+        let t16 = T::from_f64(0.5) * d_hole;
+        let t17 = -T::from_f64(0.5) * t6 * t7;
         let t18 = T::from_f64(0.5) * h + t17;
-        let t19 = -(T::from_f64(0.5) * h) + t10;
-        let t20 = (d_hole * t3 * t5 * t9).hypot(T::from_f64(0.5) * d_hole);
+        let t19 = -(T::from_f64(0.5) * h) + t9;
+        let t20 = (d_hole * t2 * t3 * t7).hypot(t16);
         let t21 = T::from_f64(1.0) / t20;
         let t22 = cos_gamma * t19;
-        let t23 = t1.cos();
-        let t24 = d_peg * t6 * t9 * t23 - T::from_f64(0.5) * cos_gamma * t8 * t13;
+        let t24 = d_peg * t4 * t7 * t23 - T::from_f64(0.5) * cos_gamma * t6 * t12;
         let t25 = sin_gamma * t24;
         let t26 = t22 + t25;
-        let t27 = t2.cos();
-        let t28 = -T::from_f64(0.5) * d_hole * t5 * t9 * t27;
-        let t29 = t4.cos();
-        let t30 = T::from_f64(0.5) * d_hole * t3 * t9 * t29;
-        let t31 = -sin_gamma * t18;
-        let t32 = -(d_peg * t6 * t9 * t23) + T::from_f64(0.5) * cos_gamma * t8 * t13;
-        let t33 = cos_gamma * t32;
-        let t34 = t15 + t28 + t30 + t31 + t33;
-        let t35 = -sin_gamma * t19;
-        let t36 = t23 * t23;
-        let t37 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t38 = cos_gamma * cos_gamma;
-        let t39 = t35
+        let t27 = -sin_gamma * t18;
+        let t28 = -(d_peg * t4 * t7 * t23) + T::from_f64(0.5) * cos_gamma * t6 * t12;
+        let t29 = cos_gamma * t28;
+        let t30 = t16 + t14 + t27 + t29;
+        let t31 = -sin_gamma * t19;
+        let t32 = t23 * t23;
+        let t33 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
+        let t34 = cos_gamma * cos_gamma;
+        let t35 = t31
             + sin_gamma
-                * (t10 + T::from_f64(0.5) * d_peg * t9 * t36
-                    - T::from_f64(0.5) * d_peg * t7 * t9 + t8 * t37 * t38
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t6 * t13 * t23)
+                * (t9 + T::from_f64(0.5) * d_peg * t7 * t32
+                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t33 * t34
+                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t12 * t23)
             + T::from_f64(2.0) * cos_gamma * t24;
-        let t40 = gammadot * gammadot;
-        let t41 = -(T::from_f64(2.0) * d_hole * t3 * t5 * t37 * t38)
-            + d_hole * cos_gamma * t5 * t13 * t27 - cos_gamma * t18
+        let t36 = gammadot * gammadot;
+        let t37 = t8 - T::from_f64(2.0) * d_hole * t2 * t3 * t33 * t34
+            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t18
             + cos_gamma
-                * (t17 - T::from_f64(0.5) * d_peg * t9 * t36
-                    + T::from_f64(0.5) * d_peg * t7 * t9 - t8 * t37 * t38
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t6 * t13 * t23)
-            - T::from_f64(0.5) * d_hole * t3 * t5 * t9
-            - d_hole * cos_gamma * t3 * t13 * t29
-            + T::from_f64(0.5) * d_hole * t9 * t27 * t29
-            - T::from_f64(2.0) * sin_gamma * t32;
-        let t42 = psidot * psidot;
-        let t43 = d_peg * d_peg;
-        let t44 = T::from_f64(0.75) * t43 + h * h;
-        let t45 = h - t8 * t9;
-        let t46 = t45 * t45;
-        let sin_psi = psi.sin();
-        let cos_psi = psi.cos();
-        let t47 = f_x * cos_psi;
-        let t48 = f_y * sin_psi;
-        let t49 = f_y * cos_psi;
-        let t50 = -f_x * sin_psi;
-        let t51 = -(d_hole * t3 * t5 * t9) + cos_gamma * t18 + t22 + t25;
-        let t52 = t9 * t11 + t15 + t28 + t30 + t31 + t33 + t35;
-        let t53 = T::from_f64(2.0) * cos_gamma * t19
+                * (t17 - T::from_f64(0.5) * d_peg * t7 * t32
+                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t33 * t34
+                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t12 * t23)
+            - T::from_f64(2.0) * sin_gamma * t28;
+        let t38 = psidot * psidot;
+        let t39 = d_peg * d_peg;
+        let t40 = T::from_f64(0.75) * t39 + h * h;
+        let t41 = h - t6 * t7;
+        let t42 = t41 * t41;
+        let (sin_psi, cos_psi) = psi.sin_cos();
+        let t43 = f_x * cos_psi;
+        let t44 = f_y * sin_psi;
+        let t45 = f_y * cos_psi;
+        let t46 = -f_x * sin_psi;
+        let t47 = t8 + cos_gamma * t18 + t22 + t25;
+        let t48 = t16 + t7 * t10 + t14 + t27 + t29 + t31;
+        let t49 = T::from_f64(2.0) * cos_gamma * t19
             + T::from_f64(2.0) * sin_gamma * t24;
-        let t54 = t14 + d_hole * t3 * t9 * t29 - d_hole * t5 * t9 * t27
-            - T::from_f64(2.0) * sin_gamma * t18 + T::from_f64(2.0) * cos_gamma * t32;
-        let t55 = cos_gamma * t8 * t13 - T::from_f64(2.0) * d_peg * t6 * t9 * t23;
-        let t56 = T::from_f64(2.0) * h - T::from_f64(2.0) * t8 * t9;
-        let t57 = t9 * t11 * t21;
-        let t58 = d_hole * t3 * t5 * t9 * t21;
+        let t50 = d_hole + t13 - T::from_f64(2.0) * sin_gamma * t18
+            + T::from_f64(2.0) * cos_gamma * t28;
+        let t51 = cos_gamma * t6 * t12 - T::from_f64(2.0) * d_peg * t4 * t7 * t23;
+        let t52 = T::from_f64(2.0) * h - T::from_f64(2.0) * t6 * t7;
+        let t53 = t7 * t10 * t21;
+        let t54 = d_hole * t2 * t3 * t7 * t21;
         let a = Matrix5::new(
-            T::from_f64(0.08333333333333333) * m * t44
-                + T::from_f64(0.5) * m
-                    * (T::from_f64(2.0) * (t26 * t26) + T::from_f64(2.0) * (t34 * t34)),
+            m
+                * (T::from_f64(0.08333333333333333) * t40
+                    + T::from_f64(0.5)
+                        * (T::from_f64(2.0) * (t26 * t26)
+                            + T::from_f64(2.0) * (t30 * t30))),
             T::from_f64(0.0),
-            -(f * t_k_eta * t51)
-                - f * t_k_z
-                    * (-(T::from_f64(0.5) * d_hole) + t15 + t28 + t30 + t31 + t33 + t35),
-            -(f * t_b1_eta * t51) - f * t_b1_z * t52,
-            -(f * t_b2_eta * t51) - f * t_b2_z * t52,
+            f * (-(t_k_eta * t47) - t_k_z * (t14 + t27 + t29 + t31)),
+            f * (-(t_b1_eta * t47) - t_b1_z * t48),
+            f * (-(t_b2_eta * t47) - t_b2_z * t48),
             T::from_f64(0.0),
-            T::from_f64(0.25) * m * t12 * t46 + T::from_f64(0.125) * m * t38 * t43
-                + T::from_f64(0.08333333333333333) * m * t12 * t44,
+            m
+                * (T::from_f64(0.25) * t11 * t42 + T::from_f64(0.125) * t34 * t39
+                    + T::from_f64(0.08333333333333333) * t11 * t40),
             T::from_f64(0.5) * d_hole * f * t_k_n,
-            f * t_b1_eta * t16 - f * t_b1_n * t9 * t11,
-            -(f * t_b2_eta * t16) - f * t_b2_n * t9 * t11,
+            f * (t_b1_eta * t15 - t_b1_n * t7 * t10),
+            f * (-(t_b2_eta * t15) - t_b2_n * t7 * t10),
             m * t26,
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) + t57,
-            -(f * t_b2_eta) + t57,
+            -(f * t_b1_eta) + t53,
+            -(f * t_b2_eta) + t53,
             T::from_f64(0.0),
             m * sin_gamma * t19,
             -f * t_k_n,
-            -(f * t_b1_n) + t16 * t21,
-            -(f * t_b2_n) - t16 * t21,
-            m * t34,
+            -(f * t_b1_n) + t15 * t21,
+            -(f * t_b2_n) - t15 * t21,
+            m * t30,
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            -(f * t_b1_z) + t58,
-            -(f * t_b2_z) + t58,
+            -(f * t_b1_z) + t54,
+            -(f * t_b2_z) + t54,
         );
         let b = Vector5::new(
-            m_gamma + t26 * (t47 + t48) + f_z * t34 - m * g * t34
+            m_gamma + t26 * (t43 + t44) + f_z * t30 - m * g * t30
                 + T::from_f64(0.5) * m
-                    * (t39 * t40 * t53
-                        + T::from_f64(0.5) * sin_gamma * cos_gamma * t42 * t46
-                        + T::from_f64(0.25) * t12 * t42 * t55 * t56 + t40 * t41 * t54)
-                - T::from_f64(0.125) * m * sin_gamma * cos_gamma * t42 * t43
-                + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t42
-                    * t44
+                    * (t35 * t36 * t49
+                        + T::from_f64(0.5) * sin_gamma * cos_gamma * t38 * t42
+                        + T::from_f64(0.25) * t11 * t38 * t51 * t52 + t36 * t37 * t50)
+                - T::from_f64(0.125) * m * sin_gamma * cos_gamma * t38 * t39
+                + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t38
+                    * t40
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t39 * t53
-                        + T::from_f64(2.0) * gammadot * t41 * t54),
-            m_psi + sin_gamma * t19 * (t49 + t50)
+                    * (gammadot
+                        * (T::from_f64(2.0) * t35 * t49 + T::from_f64(2.0) * t37 * t50)),
+            m_psi + sin_gamma * t19 * (t45 + t46)
                 - gammadot
-                    * (T::from_f64(0.5) * m * psidot * sin_gamma * cos_gamma * t46
-                        + T::from_f64(0.25) * m * psidot * t12 * t55 * t56
-                        - T::from_f64(0.25) * m * psidot * sin_gamma * cos_gamma * t43
-                        + T::from_f64(0.16666666666666666) * m * psidot * sin_gamma
-                            * cos_gamma * t44),
-            t47 + t48 - m * (t39 * t40 - sin_gamma * t19 * t42),
-            t49 + t50
+                    * (m * psidot
+                        * (T::from_f64(0.5) * sin_gamma * cos_gamma * t42
+                            + T::from_f64(0.25) * t11 * t51 * t52
+                            - T::from_f64(0.25) * sin_gamma * cos_gamma * t39
+                            + T::from_f64(0.16666666666666666) * sin_gamma * cos_gamma
+                                * t40)),
+            t43 + t44 - m * (t35 * t36 - sin_gamma * t19 * t38),
+            t45 + t46
                 - m
-                    * (gammadot * (psidot * cos_gamma * t19 + psidot * sin_gamma * t24)
-                        + gammadot * psidot * t26),
-            f_z - m * g - m * t40 * t41,
+                    * (gammadot
+                        * (psidot * (cos_gamma * t19 + sin_gamma * t24) + psidot * t26)),
+            f_z - m * g - m * t36 * t37,
         );
         (a, b)
     }
@@ -231,7 +223,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 103 add/sub, 300 mul, 4 div, 1 sqrt, 11 transcendental, 0 branches; 63 `let`s.
+    /// 95 add/sub, 256 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -265,150 +257,140 @@ pub mod rigid_peg {
         let t_b2_eta = t[6];
         let t_b2_n = t[7];
         let t_b2_z = t[8];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = t6 * t6;
-        let t8 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t7;
-        let t9 = T::from_f64(1.0) / sin_gamma;
-        let t10 = T::from_f64(0.5) * t8 * t9;
-        let t11 = t10 + d_hole * cos_gamma * t3 * t5 * t9;
-        let t12 = sin_gamma * sin_gamma;
-        let t13 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t14 = T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t13;
-        let t15 = d_hole * cos_gamma * t3 * t5 * t13;
-        let t16 = (-T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t13
-            * (d_hole + t14))
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t23) = t1.sin_cos();
+        let t5 = t4 * t4;
+        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
+        let t7 = T::from_f64(1.0) / sin_gamma;
+        let t8 = -d_hole * t2 * t3 * t7;
+        let t9 = T::from_f64(0.5) * t6 * t7;
+        let t10 = t9 + d_hole * cos_gamma * t2 * t3 * t7;
+        let t11 = sin_gamma * sin_gamma;
+        let t12 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t13 = T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t12;
+        let t14 = d_hole * cos_gamma * t2 * t3 * t12;
+        let t15 = (-T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t12
+            * (d_hole + t13))
             .sqrt();
-        let t17 = -T::from_f64(0.5) * t8 * t9;
+        let t16 = T::from_f64(0.5) * d_hole;
+        let t17 = -T::from_f64(0.5) * t6 * t7;
         let t18 = T::from_f64(0.5) * h + t17;
-        let t19 = -(T::from_f64(0.5) * h) + t10;
-        let t20 = (d_hole * t3 * t5 * t9).hypot(T::from_f64(0.5) * d_hole);
+        let t19 = -(T::from_f64(0.5) * h) + t9;
+        let t20 = (d_hole * t2 * t3 * t7).hypot(t16);
         let t21 = T::from_f64(1.0) / t20;
         let t22 = cos_gamma * t19;
-        let t23 = t1.cos();
-        let t24 = d_peg * t6 * t9 * t23 - T::from_f64(0.5) * cos_gamma * t8 * t13;
+        let t24 = d_peg * t4 * t7 * t23 - T::from_f64(0.5) * cos_gamma * t6 * t12;
         let t25 = sin_gamma * t24;
         let t26 = t22 + t25;
-        let t27 = t2.cos();
-        let t28 = -T::from_f64(0.5) * d_hole * t5 * t9 * t27;
-        let t29 = t4.cos();
-        let t30 = T::from_f64(0.5) * d_hole * t3 * t9 * t29;
-        let t31 = -sin_gamma * t18;
-        let t32 = -(d_peg * t6 * t9 * t23) + T::from_f64(0.5) * cos_gamma * t8 * t13;
-        let t33 = cos_gamma * t32;
-        let t34 = t15 + t28 + t30 + t31 + t33;
-        let t35 = -sin_gamma * t19;
-        let t36 = t23 * t23;
-        let t37 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t38 = cos_gamma * cos_gamma;
-        let t39 = t35
+        let t27 = -sin_gamma * t18;
+        let t28 = -(d_peg * t4 * t7 * t23) + T::from_f64(0.5) * cos_gamma * t6 * t12;
+        let t29 = cos_gamma * t28;
+        let t30 = t16 + t14 + t27 + t29;
+        let t31 = -sin_gamma * t19;
+        let t32 = t23 * t23;
+        let t33 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
+        let t34 = cos_gamma * cos_gamma;
+        let t35 = t31
             + sin_gamma
-                * (t10 + T::from_f64(0.5) * d_peg * t9 * t36
-                    - T::from_f64(0.5) * d_peg * t7 * t9 + t8 * t37 * t38
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t6 * t13 * t23)
+                * (t9 + T::from_f64(0.5) * d_peg * t7 * t32
+                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t33 * t34
+                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t12 * t23)
             + T::from_f64(2.0) * cos_gamma * t24;
-        let t40 = gammadot * gammadot;
-        let t41 = -(T::from_f64(2.0) * d_hole * t3 * t5 * t37 * t38)
-            + d_hole * cos_gamma * t5 * t13 * t27 - cos_gamma * t18
+        let t36 = gammadot * gammadot;
+        let t37 = t8 - T::from_f64(2.0) * d_hole * t2 * t3 * t33 * t34
+            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t18
             + cos_gamma
-                * (t17 - T::from_f64(0.5) * d_peg * t9 * t36
-                    + T::from_f64(0.5) * d_peg * t7 * t9 - t8 * t37 * t38
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t6 * t13 * t23)
-            - T::from_f64(0.5) * d_hole * t3 * t5 * t9
-            - d_hole * cos_gamma * t3 * t13 * t29
-            + T::from_f64(0.5) * d_hole * t9 * t27 * t29
-            - T::from_f64(2.0) * sin_gamma * t32;
-        let t42 = psidot * psidot;
-        let t43 = d_peg * d_peg;
-        let t44 = T::from_f64(0.75) * t43 + h * h;
-        let t45 = h - t8 * t9;
-        let t46 = t45 * t45;
-        let sin_psi = psi.sin();
-        let cos_psi = psi.cos();
-        let t47 = f_x * cos_psi;
-        let t48 = f_y * sin_psi;
-        let t49 = f_y * cos_psi;
-        let t50 = -f_x * sin_psi;
-        let t51 = -(d_hole * t3 * t5 * t9) + cos_gamma * t18 + t22 + t25;
-        let t52 = t9 * t11 + t15 + t28 + t30 + t31 + t33 + t35;
-        let t53 = T::from_f64(2.0) * cos_gamma * t19
+                * (t17 - T::from_f64(0.5) * d_peg * t7 * t32
+                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t33 * t34
+                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t12 * t23)
+            - T::from_f64(2.0) * sin_gamma * t28;
+        let t38 = psidot * psidot;
+        let t39 = d_peg * d_peg;
+        let t40 = T::from_f64(0.75) * t39 + h * h;
+        let t41 = h - t6 * t7;
+        let t42 = t41 * t41;
+        let (sin_psi, cos_psi) = psi.sin_cos();
+        let t43 = f_x * cos_psi;
+        let t44 = f_y * sin_psi;
+        let t45 = f_y * cos_psi;
+        let t46 = -f_x * sin_psi;
+        let t47 = t8 + cos_gamma * t18 + t22 + t25;
+        let t48 = t16 + t7 * t10 + t14 + t27 + t29 + t31;
+        let t49 = T::from_f64(2.0) * cos_gamma * t19
             + T::from_f64(2.0) * sin_gamma * t24;
-        let t54 = t14 + d_hole * t3 * t9 * t29 - d_hole * t5 * t9 * t27
-            - T::from_f64(2.0) * sin_gamma * t18 + T::from_f64(2.0) * cos_gamma * t32;
-        let t55 = cos_gamma * t8 * t13 - T::from_f64(2.0) * d_peg * t6 * t9 * t23;
-        let t56 = T::from_f64(2.0) * h - T::from_f64(2.0) * t8 * t9;
-        let t57 = t9 * t11 * t21;
-        let t58 = d_hole * t3 * t5 * t9 * t21;
+        let t50 = d_hole + t13 - T::from_f64(2.0) * sin_gamma * t18
+            + T::from_f64(2.0) * cos_gamma * t28;
+        let t51 = cos_gamma * t6 * t12 - T::from_f64(2.0) * d_peg * t4 * t7 * t23;
+        let t52 = T::from_f64(2.0) * h - T::from_f64(2.0) * t6 * t7;
+        let t53 = t7 * t10 * t21;
+        let t54 = d_hole * t2 * t3 * t7 * t21;
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
-            -(f * t_k_eta * t51)
-                - f * t_k_z
-                    * (-(T::from_f64(0.5) * d_hole) + t15 + t28 + t30 + t31 + t33 + t35),
-            -(f * t_b1_eta * t51) - f * t_b1_z * t52,
-            -(f * t_b2_eta * t51) - f * t_b2_z * t52,
+            f * (-(t_k_eta * t47) - t_k_z * (t14 + t27 + t29 + t31)),
+            f * (-(t_b1_eta * t47) - t_b1_z * t48),
+            f * (-(t_b2_eta * t47) - t_b2_z * t48),
             T::from_f64(0.0),
             -T::from_f64(1.0),
             T::from_f64(0.5) * d_hole * f * t_k_n,
-            f * t_b1_eta * t16 - f * t_b1_n * t9 * t11,
-            -(f * t_b2_eta * t16) - f * t_b2_n * t9 * t11,
+            f * (t_b1_eta * t15 - t_b1_n * t7 * t10),
+            f * (-(t_b2_eta * t15) - t_b2_n * t7 * t10),
             T::from_f64(0.0),
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) + t57,
-            -(f * t_b2_eta) + t57,
+            -(f * t_b1_eta) + t53,
+            -(f * t_b2_eta) + t53,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -f * t_k_n,
-            -(f * t_b1_n) + t16 * t21,
-            -(f * t_b2_n) - t16 * t21,
+            -(f * t_b1_n) + t15 * t21,
+            -(f * t_b2_n) - t15 * t21,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            -(f * t_b1_z) + t58,
-            -(f * t_b2_z) + t58,
+            -(f * t_b1_z) + t54,
+            -(f * t_b2_z) + t54,
         );
         let b = Vector5::new(
-            t26 * (t47 + t48) + f_z * t34 - m * g * t34
+            t26 * (t43 + t44) + f_z * t30 - m * g * t30
                 + T::from_f64(0.5) * m
-                    * (t39 * t40 * t53
-                        + T::from_f64(0.5) * sin_gamma * cos_gamma * t42 * t46
-                        + T::from_f64(0.25) * t12 * t42 * t55 * t56 + t40 * t41 * t54)
-                - T::from_f64(0.125) * m * sin_gamma * cos_gamma * t42 * t43
-                + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t42
-                    * t44
+                    * (t35 * t36 * t49
+                        + T::from_f64(0.5) * sin_gamma * cos_gamma * t38 * t42
+                        + T::from_f64(0.25) * t11 * t38 * t51 * t52 + t36 * t37 * t50)
+                - T::from_f64(0.125) * m * sin_gamma * cos_gamma * t38 * t39
+                + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t38
+                    * t40
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t39 * t53
-                        + T::from_f64(2.0) * gammadot * t41 * t54)
+                    * (gammadot
+                        * (T::from_f64(2.0) * t35 * t49 + T::from_f64(2.0) * t37 * t50))
                 - gammaddot
-                    * (T::from_f64(0.08333333333333333) * m * t44
-                        + T::from_f64(0.5) * m
-                            * (T::from_f64(2.0) * (t26 * t26)
-                                + T::from_f64(2.0) * (t34 * t34))),
-            sin_gamma * t19 * (t49 + t50)
+                    * (m
+                        * (T::from_f64(0.08333333333333333) * t40
+                            + T::from_f64(0.5)
+                                * (T::from_f64(2.0) * (t26 * t26)
+                                    + T::from_f64(2.0) * (t30 * t30)))),
+            sin_gamma * t19 * (t45 + t46)
                 - gammadot
-                    * (T::from_f64(0.5) * m * psidot * sin_gamma * cos_gamma * t46
-                        + T::from_f64(0.25) * m * psidot * t12 * t55 * t56
-                        - T::from_f64(0.25) * m * psidot * sin_gamma * cos_gamma * t43
-                        + T::from_f64(0.16666666666666666) * m * psidot * sin_gamma
-                            * cos_gamma * t44)
+                    * (m * psidot
+                        * (T::from_f64(0.5) * sin_gamma * cos_gamma * t42
+                            + T::from_f64(0.25) * t11 * t51 * t52
+                            - T::from_f64(0.25) * sin_gamma * cos_gamma * t39
+                            + T::from_f64(0.16666666666666666) * sin_gamma * cos_gamma
+                                * t40))
                 - psiddot
-                    * (T::from_f64(0.25) * m * t12 * t46
-                        + T::from_f64(0.125) * m * t38 * t43
-                        + T::from_f64(0.08333333333333333) * m * t12 * t44),
-            t47 + t48 - m * (t39 * t40 + gammaddot * t26 - sin_gamma * t19 * t42),
-            t49 + t50
+                    * (m
+                        * (T::from_f64(0.25) * t11 * t42 + T::from_f64(0.125) * t34 * t39
+                            + T::from_f64(0.08333333333333333) * t11 * t40)),
+            t43 + t44 - m * (t35 * t36 + gammaddot * t26 - sin_gamma * t19 * t38),
+            t45 + t46
                 - m
-                    * (gammadot * (psidot * cos_gamma * t19 + psidot * sin_gamma * t24)
+                    * (gammadot * (psidot * (cos_gamma * t19 + sin_gamma * t24))
                         + psiddot * sin_gamma * t19 + gammadot * psidot * t26),
-            f_z - m * g - m * (t40 * t41 + gammaddot * t34),
+            f_z - m * g - m * (t36 * t37 + gammaddot * t30),
         );
         (a, b)
     }
@@ -422,7 +404,7 @@ pub mod rigid_peg {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 27 add/sub, 74 mul, 2 div, 1 sqrt, 8 transcendental, 0 branches; 28 `let`s.
+    /// 26 add/sub, 67 mul, 2 div, 1 sqrt, 4 transcendental, 0 branches; 24 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 4>,
@@ -435,55 +417,48 @@ pub mod rigid_peg {
         let d_peg = p[1];
         let h = p[2];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t6 * t6);
-        let t8 = T::from_f64(1.0) / sin_gamma;
-        let t9 = T::from_f64(0.5) * t7 * t8;
-        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t11 = (-T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t10
-            * (d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t10))
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t12) = t1.sin_cos();
+        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
+        let t6 = T::from_f64(1.0) / sin_gamma;
+        let t7 = T::from_f64(0.5) * t5 * t6;
+        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t9 = (-T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t8
+            * (d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t8))
             .sqrt();
-        let t12 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7 * t8;
-        let t13 = -(T::from_f64(0.5) * h) + t9;
-        let t14 = t1.cos();
-        let t15 = gammadot
-            * (cos_gamma * t13
+        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
+        let t11 = -(T::from_f64(0.5) * h) + t7;
+        let t13 = gammadot
+            * (cos_gamma * t11
                 + sin_gamma
-                    * (d_peg * t6 * t8 * t14 - T::from_f64(0.5) * cos_gamma * t7 * t10));
-        let t16 = t2.cos();
-        let t17 = t4.cos();
-        let t18 = gammadot
-            * (d_hole * cos_gamma * t3 * t5 * t10
-                - T::from_f64(0.5) * d_hole * t5 * t8 * t16
-                + T::from_f64(0.5) * d_hole * t3 * t8 * t17 - sin_gamma * t12
+                    * (d_peg * t4 * t6 * t12 - T::from_f64(0.5) * cos_gamma * t5 * t8));
+        let t14 = gammadot
+            * (T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t8
+                - sin_gamma * t10
                 + cos_gamma
-                    * (-(d_peg * t6 * t8 * t14)
-                        + T::from_f64(0.5) * cos_gamma * t7 * t10));
-        let t19 = psidot * sin_gamma * t13;
-        let t20 = -sin_gamma * t13;
-        let t21 = -(T::from_f64(0.5) * d_hole) + t20;
-        let t22 = -gammadot * (d_hole * t3 * t5 * t8 - cos_gamma * t12);
-        let t23 = t8 * (t9 + d_hole * cos_gamma * t3 * t5 * t8) + t20;
-        let t24 = t19 + psidot * t23;
-        let t25 = t18 + gammadot * t23;
+                    * (-(d_peg * t4 * t6 * t12)
+                        + T::from_f64(0.5) * cos_gamma * t5 * t8));
+        let t15 = psidot * sin_gamma * t11;
+        let t16 = -sin_gamma * t11;
+        let t17 = -(T::from_f64(0.5) * d_hole) + t16;
+        let t18 = -gammadot * (d_hole * t2 * t3 * t6 - cos_gamma * t10);
+        let t19 = t6 * (t7 + d_hole * cos_gamma * t2 * t3 * t6) + t16;
+        let t20 = t15 + psidot * t19;
+        let t21 = t14 + gammadot * t19;
         Matrix3::new(
-            t15 + t22,
-            t19 + psidot * t21,
-            t18 + gammadot * t21,
-            t15 + t22 - psidot * t11,
-            t24,
-            t25,
-            t15 + t22 + psidot * t11,
-            t24,
-            t25,
+            t13 + t18,
+            t15 + psidot * t17,
+            t14 + gammadot * t17,
+            t13 + t18 - psidot * t9,
+            t20,
+            t21,
+            t13 + t18 + psidot * t9,
+            t20,
+            t21,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -497,7 +472,7 @@ pub mod rigid_peg {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 24 add/sub, 73 mul, 2 div, 0 sqrt, 8 transcendental, 0 branches; 26 `let`s.
+    /// 23 add/sub, 66 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 22 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -509,44 +484,37 @@ pub mod rigid_peg {
         let m = p[3];
         let g = p[4];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t6 * t6);
-        let t8 = T::from_f64(1.0) / sin_gamma;
-        let t9 = sin_gamma * sin_gamma;
-        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t11 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7 * t8;
-        let t12 = t1.cos();
-        let t13 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7 * t8)
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t10) = t1.sin_cos();
+        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
+        let t6 = T::from_f64(1.0) / sin_gamma;
+        let t7 = sin_gamma * sin_gamma;
+        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t9 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
+        let t11 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t5 * t6)
             + sin_gamma
-                * (d_peg * t6 * t8 * t12 - T::from_f64(0.5) * cos_gamma * t7 * t10);
-        let t14 = t2.cos();
-        let t15 = t4.cos();
-        let t16 = d_hole * cos_gamma * t3 * t5 * t10
-            - T::from_f64(0.5) * d_hole * t5 * t8 * t14
-            + T::from_f64(0.5) * d_hole * t3 * t8 * t15 - sin_gamma * t11
+                * (d_peg * t4 * t6 * t10 - T::from_f64(0.5) * cos_gamma * t5 * t8);
+        let t12 = T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t8
+            - sin_gamma * t9
             + cos_gamma
-                * (-(d_peg * t6 * t8 * t12) + T::from_f64(0.5) * cos_gamma * t7 * t10);
-        let t17 = gammadot * gammadot;
-        let t18 = psidot * psidot;
-        let t19 = d_peg * d_peg;
-        let t20 = h - t7 * t8;
-        let t21 = T::from_f64(0.5) * m
-            * (t17 * (t13 * t13) + T::from_f64(0.25) * t9 * t18 * (t20 * t20)
-                + t17 * (t16 * t16));
-        let t22 = T::from_f64(0.0625) * m * (cos_gamma * cos_gamma) * t18 * t19;
-        let t23 = T::from_f64(0.041666666666666664) * m
-            * (T::from_f64(0.75) * t19 + h * h) * (t17 + t9 * t18);
-        let kinetic = t21 + t22 + t23;
-        let total = t21 + t22 + t23
-            + m * g * (-(d_hole * t3 * t5 * t8) + cos_gamma * t11);
+                * (-(d_peg * t4 * t6 * t10) + T::from_f64(0.5) * cos_gamma * t5 * t8);
+        let t13 = gammadot * gammadot;
+        let t14 = psidot * psidot;
+        let t15 = d_peg * d_peg;
+        let t16 = h - t5 * t6;
+        let t17 = T::from_f64(0.5) * m
+            * (t13 * (t11 * t11) + T::from_f64(0.25) * t7 * t14 * (t16 * t16)
+                + t13 * (t12 * t12));
+        let t18 = T::from_f64(0.0625) * m * (cos_gamma * cos_gamma) * t14 * t15;
+        let t19 = T::from_f64(0.041666666666666664) * m
+            * (T::from_f64(0.75) * t15 + h * h) * (t13 + t7 * t14);
+        let kinetic = t17 + t18 + t19;
+        let total = t17 + t18 + t19
+            + m * g * (-(d_hole * t2 * t3 * t6) + cos_gamma * t9);
         (kinetic, total)
     }
     /// Planar geometry at γ (m): a1, a2 (paper (1)), S1, S2 (2), b = BB1, sin τ, cos τ, η_C, z_C (3), KL, BL (5), η_L, z_L (4b).
@@ -559,7 +527,7 @@ pub mod rigid_peg {
     /// - `geo`: vector of 13
     ///
     /// # Cost
-    /// 10 add/sub, 56 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 18 `let`s.
+    /// 10 add/sub, 56 mul, 3 div, 1 sqrt, 5 transcendental, 0 branches; 18 `let`s.
     #[inline]
     pub fn geometry<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> SVector<T, 13> {
         let gamma = x[0];
@@ -567,8 +535,7 @@ pub mod rigid_peg {
         let d_peg = p[1];
         let h = p[2];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();

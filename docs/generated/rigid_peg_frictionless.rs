@@ -29,7 +29,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 72 add/sub, 258 mul, 4 div, 1 sqrt, 11 transcendental, 0 branches; 52 `let`s.
+    /// 68 add/sub, 222 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 49 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -51,134 +51,128 @@ pub mod rigid_peg_frictionless {
         let f_x = loads[2];
         let f_y = loads[3];
         let f_z = loads[4];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = t6 * t6;
-        let t8 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t7;
-        let t9 = T::from_f64(1.0) / sin_gamma;
-        let t10 = T::from_f64(0.5) * t8 * t9;
-        let t11 = sin_gamma * sin_gamma;
-        let t12 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t13 = T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t12;
-        let t14 = (-T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t12
-            * (d_hole + t13))
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t19) = t1.sin_cos();
+        let t5 = t4 * t4;
+        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
+        let t7 = T::from_f64(1.0) / sin_gamma;
+        let t8 = T::from_f64(0.5) * t6 * t7;
+        let t9 = sin_gamma * sin_gamma;
+        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t11 = T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t10;
+        let t12 = (-T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t10
+            * (d_hole + t11))
             .sqrt();
-        let t15 = -T::from_f64(0.5) * t8 * t9;
-        let t16 = T::from_f64(0.5) * h + t15;
-        let t17 = -(T::from_f64(0.5) * h) + t10;
-        let t18 = (d_hole * t3 * t5 * t9).hypot(T::from_f64(0.5) * d_hole);
-        let t19 = T::from_f64(1.0) / t18;
-        let t20 = t1.cos();
-        let t21 = d_peg * t6 * t9 * t20 - T::from_f64(0.5) * cos_gamma * t8 * t12;
-        let t22 = cos_gamma * t17 + sin_gamma * t21;
-        let t23 = t2.cos();
-        let t24 = t4.cos();
-        let t25 = -(d_peg * t6 * t9 * t20) + T::from_f64(0.5) * cos_gamma * t8 * t12;
-        let t26 = d_hole * cos_gamma * t3 * t5 * t12
-            - T::from_f64(0.5) * d_hole * t5 * t9 * t23
-            + T::from_f64(0.5) * d_hole * t3 * t9 * t24 - sin_gamma * t16
-            + cos_gamma * t25;
-        let t27 = t20 * t20;
-        let t28 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t29 = cos_gamma * cos_gamma;
-        let t30 = -(sin_gamma * t17)
+        let t13 = T::from_f64(0.5) * d_hole;
+        let t14 = -T::from_f64(0.5) * t6 * t7;
+        let t15 = T::from_f64(0.5) * h + t14;
+        let t16 = -(T::from_f64(0.5) * h) + t8;
+        let t17 = (d_hole * t2 * t3 * t7).hypot(t13);
+        let t18 = T::from_f64(1.0) / t17;
+        let t20 = d_peg * t4 * t7 * t19 - T::from_f64(0.5) * cos_gamma * t6 * t10;
+        let t21 = cos_gamma * t16 + sin_gamma * t20;
+        let t22 = -(d_peg * t4 * t7 * t19) + T::from_f64(0.5) * cos_gamma * t6 * t10;
+        let t23 = t13 + d_hole * cos_gamma * t2 * t3 * t10 - sin_gamma * t15
+            + cos_gamma * t22;
+        let t24 = t19 * t19;
+        let t25 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
+        let t26 = cos_gamma * cos_gamma;
+        let t27 = -(sin_gamma * t16)
             + sin_gamma
-                * (t10 + T::from_f64(0.5) * d_peg * t9 * t27
-                    - T::from_f64(0.5) * d_peg * t7 * t9 + t8 * t28 * t29
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t6 * t12 * t20)
-            + T::from_f64(2.0) * cos_gamma * t21;
-        let t31 = gammadot * gammadot;
-        let t32 = -(T::from_f64(2.0) * d_hole * t3 * t5 * t28 * t29)
-            + d_hole * cos_gamma * t5 * t12 * t23 - cos_gamma * t16
+                * (t8 + T::from_f64(0.5) * d_peg * t7 * t24
+                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t25 * t26
+                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t10 * t19)
+            + T::from_f64(2.0) * cos_gamma * t20;
+        let t28 = gammadot * gammadot;
+        let t29 = -(d_hole * t2 * t3 * t7)
+            - T::from_f64(2.0) * d_hole * t2 * t3 * t25 * t26
+            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t15
             + cos_gamma
-                * (t15 - T::from_f64(0.5) * d_peg * t9 * t27
-                    + T::from_f64(0.5) * d_peg * t7 * t9 - t8 * t28 * t29
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t6 * t12 * t20)
-            - T::from_f64(0.5) * d_hole * t3 * t5 * t9
-            - d_hole * cos_gamma * t3 * t12 * t24
-            + T::from_f64(0.5) * d_hole * t9 * t23 * t24
-            - T::from_f64(2.0) * sin_gamma * t25;
-        let t33 = psidot * psidot;
-        let t34 = d_peg * d_peg;
-        let t35 = T::from_f64(0.75) * t34 + h * h;
-        let t36 = h - t8 * t9;
-        let t37 = t36 * t36;
-        let sin_psi = psi.sin();
-        let cos_psi = psi.cos();
-        let t38 = f_x * cos_psi;
-        let t39 = f_y * sin_psi;
-        let t40 = f_y * cos_psi;
-        let t41 = -f_x * sin_psi;
-        let t42 = T::from_f64(2.0) * cos_gamma * t17
-            + T::from_f64(2.0) * sin_gamma * t21;
-        let t43 = t13 + d_hole * t3 * t9 * t24 - d_hole * t5 * t9 * t23
-            - T::from_f64(2.0) * sin_gamma * t16 + T::from_f64(2.0) * cos_gamma * t25;
-        let t44 = cos_gamma * t8 * t12 - T::from_f64(2.0) * d_peg * t6 * t9 * t20;
-        let t45 = T::from_f64(2.0) * h - T::from_f64(2.0) * t8 * t9;
-        let t46 = t9 * (t10 + d_hole * cos_gamma * t3 * t5 * t9) * t19;
-        let t47 = d_hole * t3 * t5 * t9 * t19;
+                * (t14 - T::from_f64(0.5) * d_peg * t7 * t24
+                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t25 * t26
+                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t10 * t19)
+            - T::from_f64(2.0) * sin_gamma * t22;
+        let t30 = psidot * psidot;
+        let t31 = d_peg * d_peg;
+        let t32 = T::from_f64(0.75) * t31 + h * h;
+        let t33 = h - t6 * t7;
+        let t34 = t33 * t33;
+        let (sin_psi, cos_psi) = psi.sin_cos();
+        let t35 = f_x * cos_psi;
+        let t36 = f_y * sin_psi;
+        let t37 = f_y * cos_psi;
+        let t38 = -f_x * sin_psi;
+        let t39 = T::from_f64(2.0) * cos_gamma * t16
+            + T::from_f64(2.0) * sin_gamma * t20;
+        let t40 = d_hole + t11 - T::from_f64(2.0) * sin_gamma * t15
+            + T::from_f64(2.0) * cos_gamma * t22;
+        let t41 = cos_gamma * t6 * t10 - T::from_f64(2.0) * d_peg * t4 * t7 * t19;
+        let t42 = T::from_f64(2.0) * h - T::from_f64(2.0) * t6 * t7;
+        let t43 = t7 * (t8 + d_hole * cos_gamma * t2 * t3 * t7) * t18;
+        let t44 = d_hole * t2 * t3 * t7 * t18;
         let a = Matrix5::new(
-            T::from_f64(0.08333333333333333) * m * t35
-                + T::from_f64(0.5) * m
-                    * (T::from_f64(2.0) * (t22 * t22) + T::from_f64(2.0) * (t26 * t26)),
+            m
+                * (T::from_f64(0.08333333333333333) * t32
+                    + T::from_f64(0.5)
+                        * (T::from_f64(2.0) * (t21 * t21)
+                            + T::from_f64(2.0) * (t23 * t23))),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            T::from_f64(0.25) * m * t11 * t37 + T::from_f64(0.125) * m * t29 * t34
-                + T::from_f64(0.08333333333333333) * m * t11 * t35,
+            m
+                * (T::from_f64(0.25) * t9 * t34 + T::from_f64(0.125) * t26 * t31
+                    + T::from_f64(0.08333333333333333) * t9 * t32),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * t22,
+            m * t21,
             T::from_f64(0.0),
             -cos_gamma,
-            t46,
-            t46,
+            t43,
+            t43,
             T::from_f64(0.0),
-            m * sin_gamma * t17,
+            m * sin_gamma * t16,
             T::from_f64(0.0),
-            t14 * t19,
-            -t14 * t19,
-            m * t26,
+            t12 * t18,
+            -t12 * t18,
+            m * t23,
             T::from_f64(0.0),
             -sin_gamma,
-            t47,
-            t47,
+            t44,
+            t44,
         );
         let b = Vector5::new(
-            m_gamma + t22 * (t38 + t39) + f_z * t26 - m * g * t26
+            m_gamma + t21 * (t35 + t36) + f_z * t23 - m * g * t23
                 + T::from_f64(0.5) * m
-                    * (t30 * t31 * t42
-                        + T::from_f64(0.5) * sin_gamma * cos_gamma * t33 * t37
-                        + T::from_f64(0.25) * t11 * t33 * t44 * t45 + t31 * t32 * t43)
-                - T::from_f64(0.125) * m * sin_gamma * cos_gamma * t33 * t34
-                + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t33
-                    * t35
+                    * (t27 * t28 * t39
+                        + T::from_f64(0.5) * sin_gamma * cos_gamma * t30 * t34
+                        + T::from_f64(0.25) * t9 * t30 * t41 * t42 + t28 * t29 * t40)
+                - T::from_f64(0.125) * m * sin_gamma * cos_gamma * t30 * t31
+                + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t30
+                    * t32
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t30 * t42
-                        + T::from_f64(2.0) * gammadot * t32 * t43),
-            m_psi + sin_gamma * t17 * (t40 + t41)
+                    * (gammadot
+                        * (T::from_f64(2.0) * t27 * t39 + T::from_f64(2.0) * t29 * t40)),
+            m_psi + sin_gamma * t16 * (t37 + t38)
                 - gammadot
-                    * (T::from_f64(0.5) * m * psidot * sin_gamma * cos_gamma * t37
-                        + T::from_f64(0.25) * m * psidot * t11 * t44 * t45
-                        - T::from_f64(0.25) * m * psidot * sin_gamma * cos_gamma * t34
-                        + T::from_f64(0.16666666666666666) * m * psidot * sin_gamma
-                            * cos_gamma * t35),
-            t38 + t39 - m * (t30 * t31 - sin_gamma * t17 * t33),
-            t40 + t41
+                    * (m * psidot
+                        * (T::from_f64(0.5) * sin_gamma * cos_gamma * t34
+                            + T::from_f64(0.25) * t9 * t41 * t42
+                            - T::from_f64(0.25) * sin_gamma * cos_gamma * t31
+                            + T::from_f64(0.16666666666666666) * sin_gamma * cos_gamma
+                                * t32)),
+            t35 + t36 - m * (t27 * t28 - sin_gamma * t16 * t30),
+            t37 + t38
                 - m
-                    * (gammadot * (psidot * cos_gamma * t17 + psidot * sin_gamma * t21)
-                        + gammadot * psidot * t22),
-            f_z - m * g - m * t31 * t32,
+                    * (gammadot
+                        * (psidot * (cos_gamma * t16 + sin_gamma * t20) + psidot * t21)),
+            f_z - m * g - m * t28 * t29,
         );
         (a, b)
     }
@@ -196,7 +190,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 75 add/sub, 260 mul, 4 div, 1 sqrt, 11 transcendental, 0 branches; 52 `let`s.
+    /// 71 add/sub, 225 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 49 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -219,79 +213,69 @@ pub mod rigid_peg_frictionless {
         let f_x = loads[2];
         let f_y = loads[3];
         let f_z = loads[4];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = t6 * t6;
-        let t8 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t7;
-        let t9 = T::from_f64(1.0) / sin_gamma;
-        let t10 = T::from_f64(0.5) * t8 * t9;
-        let t11 = sin_gamma * sin_gamma;
-        let t12 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t13 = T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t12;
-        let t14 = (-T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t12
-            * (d_hole + t13))
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t19) = t1.sin_cos();
+        let t5 = t4 * t4;
+        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
+        let t7 = T::from_f64(1.0) / sin_gamma;
+        let t8 = T::from_f64(0.5) * t6 * t7;
+        let t9 = sin_gamma * sin_gamma;
+        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t11 = T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t10;
+        let t12 = (-T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t10
+            * (d_hole + t11))
             .sqrt();
-        let t15 = -T::from_f64(0.5) * t8 * t9;
-        let t16 = T::from_f64(0.5) * h + t15;
-        let t17 = -(T::from_f64(0.5) * h) + t10;
-        let t18 = (d_hole * t3 * t5 * t9).hypot(T::from_f64(0.5) * d_hole);
-        let t19 = T::from_f64(1.0) / t18;
-        let t20 = t1.cos();
-        let t21 = d_peg * t6 * t9 * t20 - T::from_f64(0.5) * cos_gamma * t8 * t12;
-        let t22 = cos_gamma * t17 + sin_gamma * t21;
-        let t23 = t2.cos();
-        let t24 = t4.cos();
-        let t25 = -(d_peg * t6 * t9 * t20) + T::from_f64(0.5) * cos_gamma * t8 * t12;
-        let t26 = d_hole * cos_gamma * t3 * t5 * t12
-            - T::from_f64(0.5) * d_hole * t5 * t9 * t23
-            + T::from_f64(0.5) * d_hole * t3 * t9 * t24 - sin_gamma * t16
-            + cos_gamma * t25;
-        let t27 = t20 * t20;
-        let t28 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t29 = cos_gamma * cos_gamma;
-        let t30 = -(sin_gamma * t17)
+        let t13 = T::from_f64(0.5) * d_hole;
+        let t14 = -T::from_f64(0.5) * t6 * t7;
+        let t15 = T::from_f64(0.5) * h + t14;
+        let t16 = -(T::from_f64(0.5) * h) + t8;
+        let t17 = (d_hole * t2 * t3 * t7).hypot(t13);
+        let t18 = T::from_f64(1.0) / t17;
+        let t20 = d_peg * t4 * t7 * t19 - T::from_f64(0.5) * cos_gamma * t6 * t10;
+        let t21 = cos_gamma * t16 + sin_gamma * t20;
+        let t22 = -(d_peg * t4 * t7 * t19) + T::from_f64(0.5) * cos_gamma * t6 * t10;
+        let t23 = t13 + d_hole * cos_gamma * t2 * t3 * t10 - sin_gamma * t15
+            + cos_gamma * t22;
+        let t24 = t19 * t19;
+        let t25 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
+        let t26 = cos_gamma * cos_gamma;
+        let t27 = -(sin_gamma * t16)
             + sin_gamma
-                * (t10 + T::from_f64(0.5) * d_peg * t9 * t27
-                    - T::from_f64(0.5) * d_peg * t7 * t9 + t8 * t28 * t29
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t6 * t12 * t20)
-            + T::from_f64(2.0) * cos_gamma * t21;
-        let t31 = gammadot * gammadot;
-        let t32 = -(T::from_f64(2.0) * d_hole * t3 * t5 * t28 * t29)
-            + d_hole * cos_gamma * t5 * t12 * t23 - cos_gamma * t16
+                * (t8 + T::from_f64(0.5) * d_peg * t7 * t24
+                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t25 * t26
+                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t10 * t19)
+            + T::from_f64(2.0) * cos_gamma * t20;
+        let t28 = gammadot * gammadot;
+        let t29 = -(d_hole * t2 * t3 * t7)
+            - T::from_f64(2.0) * d_hole * t2 * t3 * t25 * t26
+            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t15
             + cos_gamma
-                * (t15 - T::from_f64(0.5) * d_peg * t9 * t27
-                    + T::from_f64(0.5) * d_peg * t7 * t9 - t8 * t28 * t29
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t6 * t12 * t20)
-            - T::from_f64(0.5) * d_hole * t3 * t5 * t9
-            - d_hole * cos_gamma * t3 * t12 * t24
-            + T::from_f64(0.5) * d_hole * t9 * t23 * t24
-            - T::from_f64(2.0) * sin_gamma * t25;
-        let t33 = psidot * psidot;
-        let t34 = d_peg * d_peg;
-        let t35 = T::from_f64(0.75) * t34 + h * h;
-        let t36 = h - t8 * t9;
-        let t37 = t36 * t36;
-        let sin_psi = psi.sin();
-        let cos_psi = psi.cos();
-        let t38 = f_x * cos_psi;
-        let t39 = f_y * sin_psi;
-        let t40 = f_y * cos_psi;
-        let t41 = -f_x * sin_psi;
-        let t42 = T::from_f64(2.0) * cos_gamma * t17
-            + T::from_f64(2.0) * sin_gamma * t21;
-        let t43 = t13 + d_hole * t3 * t9 * t24 - d_hole * t5 * t9 * t23
-            - T::from_f64(2.0) * sin_gamma * t16 + T::from_f64(2.0) * cos_gamma * t25;
-        let t44 = cos_gamma * t8 * t12 - T::from_f64(2.0) * d_peg * t6 * t9 * t20;
-        let t45 = T::from_f64(2.0) * h - T::from_f64(2.0) * t8 * t9;
-        let t46 = t9 * (t10 + d_hole * cos_gamma * t3 * t5 * t9) * t19;
-        let t47 = d_hole * t3 * t5 * t9 * t19;
+                * (t14 - T::from_f64(0.5) * d_peg * t7 * t24
+                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t25 * t26
+                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t10 * t19)
+            - T::from_f64(2.0) * sin_gamma * t22;
+        let t30 = psidot * psidot;
+        let t31 = d_peg * d_peg;
+        let t32 = T::from_f64(0.75) * t31 + h * h;
+        let t33 = h - t6 * t7;
+        let t34 = t33 * t33;
+        let (sin_psi, cos_psi) = psi.sin_cos();
+        let t35 = f_x * cos_psi;
+        let t36 = f_y * sin_psi;
+        let t37 = f_y * cos_psi;
+        let t38 = -f_x * sin_psi;
+        let t39 = T::from_f64(2.0) * cos_gamma * t16
+            + T::from_f64(2.0) * sin_gamma * t20;
+        let t40 = d_hole + t11 - T::from_f64(2.0) * sin_gamma * t15
+            + T::from_f64(2.0) * cos_gamma * t22;
+        let t41 = cos_gamma * t6 * t10 - T::from_f64(2.0) * d_peg * t4 * t7 * t19;
+        let t42 = T::from_f64(2.0) * h - T::from_f64(2.0) * t6 * t7;
+        let t43 = t7 * (t8 + d_hole * cos_gamma * t2 * t3 * t7) * t18;
+        let t44 = d_hole * t2 * t3 * t7 * t18;
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
@@ -306,53 +290,55 @@ pub mod rigid_peg_frictionless {
             T::from_f64(0.0),
             T::from_f64(0.0),
             -cos_gamma,
-            t46,
-            t46,
+            t43,
+            t43,
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            t14 * t19,
-            -t14 * t19,
+            t12 * t18,
+            -t12 * t18,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -sin_gamma,
-            t47,
-            t47,
+            t44,
+            t44,
         );
         let b = Vector5::new(
-            t22 * (t38 + t39) + f_z * t26 - m * g * t26
+            t21 * (t35 + t36) + f_z * t23 - m * g * t23
                 + T::from_f64(0.5) * m
-                    * (t30 * t31 * t42
-                        + T::from_f64(0.5) * sin_gamma * cos_gamma * t33 * t37
-                        + T::from_f64(0.25) * t11 * t33 * t44 * t45 + t31 * t32 * t43)
-                - T::from_f64(0.125) * m * sin_gamma * cos_gamma * t33 * t34
-                + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t33
-                    * t35
+                    * (t27 * t28 * t39
+                        + T::from_f64(0.5) * sin_gamma * cos_gamma * t30 * t34
+                        + T::from_f64(0.25) * t9 * t30 * t41 * t42 + t28 * t29 * t40)
+                - T::from_f64(0.125) * m * sin_gamma * cos_gamma * t30 * t31
+                + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t30
+                    * t32
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t30 * t42
-                        + T::from_f64(2.0) * gammadot * t32 * t43)
+                    * (gammadot
+                        * (T::from_f64(2.0) * t27 * t39 + T::from_f64(2.0) * t29 * t40))
                 - gammaddot
-                    * (T::from_f64(0.08333333333333333) * m * t35
-                        + T::from_f64(0.5) * m
-                            * (T::from_f64(2.0) * (t22 * t22)
-                                + T::from_f64(2.0) * (t26 * t26))),
-            sin_gamma * t17 * (t40 + t41)
+                    * (m
+                        * (T::from_f64(0.08333333333333333) * t32
+                            + T::from_f64(0.5)
+                                * (T::from_f64(2.0) * (t21 * t21)
+                                    + T::from_f64(2.0) * (t23 * t23)))),
+            sin_gamma * t16 * (t37 + t38)
                 - gammadot
-                    * (T::from_f64(0.5) * m * psidot * sin_gamma * cos_gamma * t37
-                        + T::from_f64(0.25) * m * psidot * t11 * t44 * t45
-                        - T::from_f64(0.25) * m * psidot * sin_gamma * cos_gamma * t34
-                        + T::from_f64(0.16666666666666666) * m * psidot * sin_gamma
-                            * cos_gamma * t35)
+                    * (m * psidot
+                        * (T::from_f64(0.5) * sin_gamma * cos_gamma * t34
+                            + T::from_f64(0.25) * t9 * t41 * t42
+                            - T::from_f64(0.25) * sin_gamma * cos_gamma * t31
+                            + T::from_f64(0.16666666666666666) * sin_gamma * cos_gamma
+                                * t32))
                 - psiddot
-                    * (T::from_f64(0.25) * m * t11 * t37
-                        + T::from_f64(0.125) * m * t29 * t34
-                        + T::from_f64(0.08333333333333333) * m * t11 * t35),
-            t38 + t39 - m * (t30 * t31 + gammaddot * t22 - sin_gamma * t17 * t33),
-            t40 + t41
+                    * (m
+                        * (T::from_f64(0.25) * t9 * t34 + T::from_f64(0.125) * t26 * t31
+                            + T::from_f64(0.08333333333333333) * t9 * t32)),
+            t35 + t36 - m * (t27 * t28 + gammaddot * t21 - sin_gamma * t16 * t30),
+            t37 + t38
                 - m
-                    * (gammadot * (psidot * cos_gamma * t17 + psidot * sin_gamma * t21)
-                        + psiddot * sin_gamma * t17 + gammadot * psidot * t22),
-            f_z - m * g - m * (t31 * t32 + gammaddot * t26),
+                    * (gammadot * (psidot * (cos_gamma * t16 + sin_gamma * t20))
+                        + psiddot * sin_gamma * t16 + gammadot * psidot * t21),
+            f_z - m * g - m * (t28 * t29 + gammaddot * t23),
         );
         (a, b)
     }
@@ -366,7 +352,7 @@ pub mod rigid_peg_frictionless {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 27 add/sub, 74 mul, 2 div, 1 sqrt, 8 transcendental, 0 branches; 28 `let`s.
+    /// 26 add/sub, 67 mul, 2 div, 1 sqrt, 4 transcendental, 0 branches; 24 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 4>,
@@ -379,55 +365,48 @@ pub mod rigid_peg_frictionless {
         let d_peg = p[1];
         let h = p[2];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t6 * t6);
-        let t8 = T::from_f64(1.0) / sin_gamma;
-        let t9 = T::from_f64(0.5) * t7 * t8;
-        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t11 = (-T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t10
-            * (d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t10))
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t12) = t1.sin_cos();
+        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
+        let t6 = T::from_f64(1.0) / sin_gamma;
+        let t7 = T::from_f64(0.5) * t5 * t6;
+        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t9 = (-T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t8
+            * (d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t8))
             .sqrt();
-        let t12 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7 * t8;
-        let t13 = -(T::from_f64(0.5) * h) + t9;
-        let t14 = t1.cos();
-        let t15 = gammadot
-            * (cos_gamma * t13
+        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
+        let t11 = -(T::from_f64(0.5) * h) + t7;
+        let t13 = gammadot
+            * (cos_gamma * t11
                 + sin_gamma
-                    * (d_peg * t6 * t8 * t14 - T::from_f64(0.5) * cos_gamma * t7 * t10));
-        let t16 = t2.cos();
-        let t17 = t4.cos();
-        let t18 = gammadot
-            * (d_hole * cos_gamma * t3 * t5 * t10
-                - T::from_f64(0.5) * d_hole * t5 * t8 * t16
-                + T::from_f64(0.5) * d_hole * t3 * t8 * t17 - sin_gamma * t12
+                    * (d_peg * t4 * t6 * t12 - T::from_f64(0.5) * cos_gamma * t5 * t8));
+        let t14 = gammadot
+            * (T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t8
+                - sin_gamma * t10
                 + cos_gamma
-                    * (-(d_peg * t6 * t8 * t14)
-                        + T::from_f64(0.5) * cos_gamma * t7 * t10));
-        let t19 = psidot * sin_gamma * t13;
-        let t20 = -sin_gamma * t13;
-        let t21 = -(T::from_f64(0.5) * d_hole) + t20;
-        let t22 = -gammadot * (d_hole * t3 * t5 * t8 - cos_gamma * t12);
-        let t23 = t8 * (t9 + d_hole * cos_gamma * t3 * t5 * t8) + t20;
-        let t24 = t19 + psidot * t23;
-        let t25 = t18 + gammadot * t23;
+                    * (-(d_peg * t4 * t6 * t12)
+                        + T::from_f64(0.5) * cos_gamma * t5 * t8));
+        let t15 = psidot * sin_gamma * t11;
+        let t16 = -sin_gamma * t11;
+        let t17 = -(T::from_f64(0.5) * d_hole) + t16;
+        let t18 = -gammadot * (d_hole * t2 * t3 * t6 - cos_gamma * t10);
+        let t19 = t6 * (t7 + d_hole * cos_gamma * t2 * t3 * t6) + t16;
+        let t20 = t15 + psidot * t19;
+        let t21 = t14 + gammadot * t19;
         Matrix3::new(
-            t15 + t22,
-            t19 + psidot * t21,
-            t18 + gammadot * t21,
-            t15 + t22 - psidot * t11,
-            t24,
-            t25,
-            t15 + t22 + psidot * t11,
-            t24,
-            t25,
+            t13 + t18,
+            t15 + psidot * t17,
+            t14 + gammadot * t17,
+            t13 + t18 - psidot * t9,
+            t20,
+            t21,
+            t13 + t18 + psidot * t9,
+            t20,
+            t21,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -441,7 +420,7 @@ pub mod rigid_peg_frictionless {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 24 add/sub, 73 mul, 2 div, 0 sqrt, 8 transcendental, 0 branches; 26 `let`s.
+    /// 23 add/sub, 66 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 22 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -453,44 +432,37 @@ pub mod rigid_peg_frictionless {
         let m = p[3];
         let g = p[4];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t6 * t6);
-        let t8 = T::from_f64(1.0) / sin_gamma;
-        let t9 = sin_gamma * sin_gamma;
-        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t11 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7 * t8;
-        let t12 = t1.cos();
-        let t13 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7 * t8)
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t10) = t1.sin_cos();
+        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
+        let t6 = T::from_f64(1.0) / sin_gamma;
+        let t7 = sin_gamma * sin_gamma;
+        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t9 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
+        let t11 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t5 * t6)
             + sin_gamma
-                * (d_peg * t6 * t8 * t12 - T::from_f64(0.5) * cos_gamma * t7 * t10);
-        let t14 = t2.cos();
-        let t15 = t4.cos();
-        let t16 = d_hole * cos_gamma * t3 * t5 * t10
-            - T::from_f64(0.5) * d_hole * t5 * t8 * t14
-            + T::from_f64(0.5) * d_hole * t3 * t8 * t15 - sin_gamma * t11
+                * (d_peg * t4 * t6 * t10 - T::from_f64(0.5) * cos_gamma * t5 * t8);
+        let t12 = T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t8
+            - sin_gamma * t9
             + cos_gamma
-                * (-(d_peg * t6 * t8 * t12) + T::from_f64(0.5) * cos_gamma * t7 * t10);
-        let t17 = gammadot * gammadot;
-        let t18 = psidot * psidot;
-        let t19 = d_peg * d_peg;
-        let t20 = h - t7 * t8;
-        let t21 = T::from_f64(0.5) * m
-            * (t17 * (t13 * t13) + T::from_f64(0.25) * t9 * t18 * (t20 * t20)
-                + t17 * (t16 * t16));
-        let t22 = T::from_f64(0.0625) * m * (cos_gamma * cos_gamma) * t18 * t19;
-        let t23 = T::from_f64(0.041666666666666664) * m
-            * (T::from_f64(0.75) * t19 + h * h) * (t17 + t9 * t18);
-        let kinetic = t21 + t22 + t23;
-        let total = t21 + t22 + t23
-            + m * g * (-(d_hole * t3 * t5 * t8) + cos_gamma * t11);
+                * (-(d_peg * t4 * t6 * t10) + T::from_f64(0.5) * cos_gamma * t5 * t8);
+        let t13 = gammadot * gammadot;
+        let t14 = psidot * psidot;
+        let t15 = d_peg * d_peg;
+        let t16 = h - t5 * t6;
+        let t17 = T::from_f64(0.5) * m
+            * (t13 * (t11 * t11) + T::from_f64(0.25) * t7 * t14 * (t16 * t16)
+                + t13 * (t12 * t12));
+        let t18 = T::from_f64(0.0625) * m * (cos_gamma * cos_gamma) * t14 * t15;
+        let t19 = T::from_f64(0.041666666666666664) * m
+            * (T::from_f64(0.75) * t15 + h * h) * (t13 + t7 * t14);
+        let kinetic = t17 + t18 + t19;
+        let total = t17 + t18 + t19
+            + m * g * (-(d_hole * t2 * t3 * t6) + cos_gamma * t9);
         (kinetic, total)
     }
 }

@@ -32,7 +32,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 71 add/sub, 196 mul, 4 div, 0 sqrt, 9 transcendental, 0 branches; 44 `let`s.
+    /// 63 add/sub, 163 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 40 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -56,94 +56,85 @@ pub mod rigid_peg_planar {
         let t_k_z = t[1];
         let t_b_eta = t[2];
         let t_b_z = t[3];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = t6 * t6;
-        let t8 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t7;
-        let t9 = T::from_f64(1.0) / sin_gamma;
-        let t10 = T::from_f64(0.5) * t8 * t9;
-        let t11 = t10 + d_hole * cos_gamma * t3 * t5 * t9;
-        let t12 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t13 = d_hole * cos_gamma * t3 * t5 * t12;
-        let t14 = -T::from_f64(0.5) * t8 * t9;
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t20) = t1.sin_cos();
+        let t5 = t4 * t4;
+        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
+        let t7 = T::from_f64(1.0) / sin_gamma;
+        let t8 = -d_hole * t2 * t3 * t7;
+        let t9 = T::from_f64(0.5) * t6 * t7;
+        let t10 = t9 + d_hole * cos_gamma * t2 * t3 * t7;
+        let t11 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t12 = d_hole * cos_gamma * t2 * t3 * t11;
+        let t13 = T::from_f64(0.5) * d_hole;
+        let t14 = -T::from_f64(0.5) * t6 * t7;
         let t15 = T::from_f64(0.5) * h + t14;
-        let t16 = -(T::from_f64(0.5) * h) + t10;
-        let t17 = (d_hole * t3 * t5 * t9).hypot(T::from_f64(0.5) * d_hole);
+        let t16 = -(T::from_f64(0.5) * h) + t9;
+        let t17 = (d_hole * t2 * t3 * t7).hypot(t13);
         let t18 = T::from_f64(1.0) / t17;
         let t19 = cos_gamma * t16;
-        let t20 = t1.cos();
-        let t21 = d_peg * t6 * t9 * t20 - T::from_f64(0.5) * cos_gamma * t8 * t12;
+        let t21 = d_peg * t4 * t7 * t20 - T::from_f64(0.5) * cos_gamma * t6 * t11;
         let t22 = sin_gamma * t21;
         let t23 = t19 + t22;
-        let t24 = t2.cos();
-        let t25 = -T::from_f64(0.5) * d_hole * t5 * t9 * t24;
-        let t26 = t4.cos();
-        let t27 = T::from_f64(0.5) * d_hole * t3 * t9 * t26;
-        let t28 = -sin_gamma * t15;
-        let t29 = -(d_peg * t6 * t9 * t20) + T::from_f64(0.5) * cos_gamma * t8 * t12;
-        let t30 = cos_gamma * t29;
-        let t31 = t13 + t25 + t27 + t28 + t30;
-        let t32 = -sin_gamma * t16;
-        let t33 = t20 * t20;
-        let t34 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t35 = cos_gamma * cos_gamma;
-        let t36 = t32
+        let t24 = -sin_gamma * t15;
+        let t25 = -(d_peg * t4 * t7 * t20) + T::from_f64(0.5) * cos_gamma * t6 * t11;
+        let t26 = cos_gamma * t25;
+        let t27 = t13 + t12 + t24 + t26;
+        let t28 = -sin_gamma * t16;
+        let t29 = t20 * t20;
+        let t30 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
+        let t31 = cos_gamma * cos_gamma;
+        let t32 = t28
             + sin_gamma
-                * (t10 + T::from_f64(0.5) * d_peg * t9 * t33
-                    - T::from_f64(0.5) * d_peg * t7 * t9 + t8 * t34 * t35
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t6 * t12 * t20)
+                * (t9 + T::from_f64(0.5) * d_peg * t7 * t29
+                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t30 * t31
+                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t11 * t20)
             + T::from_f64(2.0) * cos_gamma * t21;
-        let t37 = gammadot * gammadot;
-        let t38 = -(T::from_f64(2.0) * d_hole * t3 * t5 * t34 * t35)
-            + d_hole * cos_gamma * t5 * t12 * t24 - cos_gamma * t15
+        let t33 = gammadot * gammadot;
+        let t34 = t8 - T::from_f64(2.0) * d_hole * t2 * t3 * t30 * t31
+            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t15
             + cos_gamma
-                * (t14 - T::from_f64(0.5) * d_peg * t9 * t33
-                    + T::from_f64(0.5) * d_peg * t7 * t9 - t8 * t34 * t35
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t6 * t12 * t20)
-            - T::from_f64(0.5) * d_hole * t3 * t5 * t9
-            - d_hole * cos_gamma * t3 * t12 * t26
-            + T::from_f64(0.5) * d_hole * t9 * t24 * t26
-            - T::from_f64(2.0) * sin_gamma * t29;
-        let t39 = -(d_hole * t3 * t5 * t9) + cos_gamma * t15 + t19 + t22;
-        let t40 = T::from_f64(2.0) * cos_gamma * t16
+                * (t14 - T::from_f64(0.5) * d_peg * t7 * t29
+                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t30 * t31
+                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t11 * t20)
+            - T::from_f64(2.0) * sin_gamma * t25;
+        let t35 = t8 + cos_gamma * t15 + t19 + t22;
+        let t36 = T::from_f64(2.0) * cos_gamma * t16
             + T::from_f64(2.0) * sin_gamma * t21;
-        let t41 = T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t12
-            + d_hole * t3 * t9 * t26 - d_hole * t5 * t9 * t24
-            - T::from_f64(2.0) * sin_gamma * t15 + T::from_f64(2.0) * cos_gamma * t29;
+        let t37 = d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t11
+            - T::from_f64(2.0) * sin_gamma * t15 + T::from_f64(2.0) * cos_gamma * t25;
         let a = Matrix3::new(
-            T::from_f64(0.08333333333333333) * m
-                * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
-                + T::from_f64(0.5) * m
-                    * (T::from_f64(2.0) * (t23 * t23) + T::from_f64(2.0) * (t31 * t31)),
-            -(f * t_k_eta * t39)
-                - f * t_k_z
-                    * (-(T::from_f64(0.5) * d_hole) + t13 + t25 + t27 + t28 + t30 + t32),
-            -(T::from_f64(2.0) * f * t39 * t_b_eta)
-                - T::from_f64(2.0) * f * (t9 * t11 + t13 + t25 + t27 + t28 + t30 + t32)
-                    * t_b_z,
+            m
+                * (T::from_f64(0.08333333333333333)
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
+                    + T::from_f64(0.5)
+                        * (T::from_f64(2.0) * (t23 * t23)
+                            + T::from_f64(2.0) * (t27 * t27))),
+            f * (-(t_k_eta * t35) - t_k_z * (t12 + t24 + t26 + t28)),
+            f
+                * (-(T::from_f64(2.0) * t35 * t_b_eta)
+                    - T::from_f64(2.0) * (t13 + t7 * t10 + t12 + t24 + t26 + t28)
+                        * t_b_z),
             m * t23,
-            -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t7,
-            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t9 * t11 * t18,
-            m * t31,
+            -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t5,
+            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t7 * t10 * t18,
+            m * t27,
             -(f * t_k_z) - sin_gamma,
             -(T::from_f64(2.0) * f * t_b_z)
-                + T::from_f64(2.0) * d_hole * t3 * t5 * t9 * t18,
+                + T::from_f64(2.0) * d_hole * t2 * t3 * t7 * t18,
         );
         let b = Vector3::new(
-            m_gamma + f_z * t31 - m * g * t31
+            m_gamma + f_z * t27 - m * g * t27
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t36 * t40
-                        + T::from_f64(2.0) * gammadot * t38 * t41) + f_x * t23
-                + T::from_f64(0.5) * m * (t36 * t37 * t40 + t37 * t38 * t41),
-            f_x - m * t36 * t37,
-            f_z - m * g - m * t37 * t38,
+                    * (gammadot
+                        * (T::from_f64(2.0) * t32 * t36 + T::from_f64(2.0) * t34 * t37))
+                + f_x * t23 + T::from_f64(0.5) * m * (t33 * (t32 * t36 + t34 * t37)),
+            f_x - m * t32 * t33,
+            f_z - m * g - m * t33 * t34,
         );
         (a, b)
     }
@@ -162,7 +153,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 73 add/sub, 197 mul, 4 div, 0 sqrt, 9 transcendental, 0 branches; 44 `let`s.
+    /// 65 add/sub, 164 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 40 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -187,97 +178,87 @@ pub mod rigid_peg_planar {
         let t_k_z = t[1];
         let t_b_eta = t[2];
         let t_b_z = t[3];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = t6 * t6;
-        let t8 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t7;
-        let t9 = T::from_f64(1.0) / sin_gamma;
-        let t10 = T::from_f64(0.5) * t8 * t9;
-        let t11 = t10 + d_hole * cos_gamma * t3 * t5 * t9;
-        let t12 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t13 = d_hole * cos_gamma * t3 * t5 * t12;
-        let t14 = -T::from_f64(0.5) * t8 * t9;
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t20) = t1.sin_cos();
+        let t5 = t4 * t4;
+        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
+        let t7 = T::from_f64(1.0) / sin_gamma;
+        let t8 = -d_hole * t2 * t3 * t7;
+        let t9 = T::from_f64(0.5) * t6 * t7;
+        let t10 = t9 + d_hole * cos_gamma * t2 * t3 * t7;
+        let t11 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t12 = d_hole * cos_gamma * t2 * t3 * t11;
+        let t13 = T::from_f64(0.5) * d_hole;
+        let t14 = -T::from_f64(0.5) * t6 * t7;
         let t15 = T::from_f64(0.5) * h + t14;
-        let t16 = -(T::from_f64(0.5) * h) + t10;
-        let t17 = (d_hole * t3 * t5 * t9).hypot(T::from_f64(0.5) * d_hole);
+        let t16 = -(T::from_f64(0.5) * h) + t9;
+        let t17 = (d_hole * t2 * t3 * t7).hypot(t13);
         let t18 = T::from_f64(1.0) / t17;
         let t19 = cos_gamma * t16;
-        let t20 = t1.cos();
-        let t21 = d_peg * t6 * t9 * t20 - T::from_f64(0.5) * cos_gamma * t8 * t12;
+        let t21 = d_peg * t4 * t7 * t20 - T::from_f64(0.5) * cos_gamma * t6 * t11;
         let t22 = sin_gamma * t21;
         let t23 = t19 + t22;
-        let t24 = t2.cos();
-        let t25 = -T::from_f64(0.5) * d_hole * t5 * t9 * t24;
-        let t26 = t4.cos();
-        let t27 = T::from_f64(0.5) * d_hole * t3 * t9 * t26;
-        let t28 = -sin_gamma * t15;
-        let t29 = -(d_peg * t6 * t9 * t20) + T::from_f64(0.5) * cos_gamma * t8 * t12;
-        let t30 = cos_gamma * t29;
-        let t31 = t13 + t25 + t27 + t28 + t30;
-        let t32 = -sin_gamma * t16;
-        let t33 = t20 * t20;
-        let t34 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t35 = cos_gamma * cos_gamma;
-        let t36 = t32
+        let t24 = -sin_gamma * t15;
+        let t25 = -(d_peg * t4 * t7 * t20) + T::from_f64(0.5) * cos_gamma * t6 * t11;
+        let t26 = cos_gamma * t25;
+        let t27 = t13 + t12 + t24 + t26;
+        let t28 = -sin_gamma * t16;
+        let t29 = t20 * t20;
+        let t30 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
+        let t31 = cos_gamma * cos_gamma;
+        let t32 = t28
             + sin_gamma
-                * (t10 + T::from_f64(0.5) * d_peg * t9 * t33
-                    - T::from_f64(0.5) * d_peg * t7 * t9 + t8 * t34 * t35
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t6 * t12 * t20)
+                * (t9 + T::from_f64(0.5) * d_peg * t7 * t29
+                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t30 * t31
+                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t11 * t20)
             + T::from_f64(2.0) * cos_gamma * t21;
-        let t37 = gammadot * gammadot;
-        let t38 = -(T::from_f64(2.0) * d_hole * t3 * t5 * t34 * t35)
-            + d_hole * cos_gamma * t5 * t12 * t24 - cos_gamma * t15
+        let t33 = gammadot * gammadot;
+        let t34 = t8 - T::from_f64(2.0) * d_hole * t2 * t3 * t30 * t31
+            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t15
             + cos_gamma
-                * (t14 - T::from_f64(0.5) * d_peg * t9 * t33
-                    + T::from_f64(0.5) * d_peg * t7 * t9 - t8 * t34 * t35
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t6 * t12 * t20)
-            - T::from_f64(0.5) * d_hole * t3 * t5 * t9
-            - d_hole * cos_gamma * t3 * t12 * t26
-            + T::from_f64(0.5) * d_hole * t9 * t24 * t26
-            - T::from_f64(2.0) * sin_gamma * t29;
-        let t39 = -(d_hole * t3 * t5 * t9) + cos_gamma * t15 + t19 + t22;
-        let t40 = T::from_f64(2.0) * cos_gamma * t16
+                * (t14 - T::from_f64(0.5) * d_peg * t7 * t29
+                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t30 * t31
+                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t11 * t20)
+            - T::from_f64(2.0) * sin_gamma * t25;
+        let t35 = t8 + cos_gamma * t15 + t19 + t22;
+        let t36 = T::from_f64(2.0) * cos_gamma * t16
             + T::from_f64(2.0) * sin_gamma * t21;
-        let t41 = T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t12
-            + d_hole * t3 * t9 * t26 - d_hole * t5 * t9 * t24
-            - T::from_f64(2.0) * sin_gamma * t15 + T::from_f64(2.0) * cos_gamma * t29;
+        let t37 = d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t11
+            - T::from_f64(2.0) * sin_gamma * t15 + T::from_f64(2.0) * cos_gamma * t25;
         let a = Matrix3::new(
             -T::from_f64(1.0),
-            -(f * t_k_eta * t39)
-                - f * t_k_z
-                    * (-(T::from_f64(0.5) * d_hole) + t13 + t25 + t27 + t28 + t30 + t32),
-            -(T::from_f64(2.0) * f * t39 * t_b_eta)
-                - T::from_f64(2.0) * f * (t9 * t11 + t13 + t25 + t27 + t28 + t30 + t32)
-                    * t_b_z,
+            f * (-(t_k_eta * t35) - t_k_z * (t12 + t24 + t26 + t28)),
+            f
+                * (-(T::from_f64(2.0) * t35 * t_b_eta)
+                    - T::from_f64(2.0) * (t13 + t7 * t10 + t12 + t24 + t26 + t28)
+                        * t_b_z),
             T::from_f64(0.0),
-            -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t7,
-            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t9 * t11 * t18,
+            -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t5,
+            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t7 * t10 * t18,
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
             -(T::from_f64(2.0) * f * t_b_z)
-                + T::from_f64(2.0) * d_hole * t3 * t5 * t9 * t18,
+                + T::from_f64(2.0) * d_hole * t2 * t3 * t7 * t18,
         );
         let b = Vector3::new(
-            f_z * t31 - m * g * t31
+            f_z * t27 - m * g * t27
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t36 * t40
-                        + T::from_f64(2.0) * gammadot * t38 * t41) + f_x * t23
-                + T::from_f64(0.5) * m * (t36 * t37 * t40 + t37 * t38 * t41)
+                    * (gammadot
+                        * (T::from_f64(2.0) * t32 * t36 + T::from_f64(2.0) * t34 * t37))
+                + f_x * t23 + T::from_f64(0.5) * m * (t33 * (t32 * t36 + t34 * t37))
                 - gammaddot
-                    * (T::from_f64(0.08333333333333333) * m
-                        * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
-                        + T::from_f64(0.5) * m
-                            * (T::from_f64(2.0) * (t23 * t23)
-                                + T::from_f64(2.0) * (t31 * t31))),
-            f_x - m * (t36 * t37 + gammaddot * t23),
-            f_z - m * g - m * (t37 * t38 + gammaddot * t31),
+                    * (m
+                        * (T::from_f64(0.08333333333333333)
+                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
+                            + T::from_f64(0.5)
+                                * (T::from_f64(2.0) * (t23 * t23)
+                                    + T::from_f64(2.0) * (t27 * t27)))),
+            f_x - m * (t32 * t33 + gammaddot * t23),
+            f_z - m * g - m * (t33 * t34 + gammaddot * t27),
         );
         (a, b)
     }
@@ -291,7 +272,7 @@ pub mod rigid_peg_planar {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 20 add/sub, 57 mul, 2 div, 0 sqrt, 8 transcendental, 0 branches; 22 `let`s.
+    /// 19 add/sub, 49 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 18 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 2>,
@@ -303,48 +284,41 @@ pub mod rigid_peg_planar {
         let d_peg = p[1];
         let h = p[2];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t6 * t6);
-        let t8 = T::from_f64(1.0) / sin_gamma;
-        let t9 = T::from_f64(0.5) * t7 * t8;
-        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t11 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7 * t8;
-        let t12 = -(T::from_f64(0.5) * h) + t9;
-        let t13 = t1.cos();
-        let t14 = t2.cos();
-        let t15 = t4.cos();
-        let t16 = gammadot
-            * (d_hole * cos_gamma * t3 * t5 * t10
-                - T::from_f64(0.5) * d_hole * t5 * t8 * t14
-                + T::from_f64(0.5) * d_hole * t3 * t8 * t15 - sin_gamma * t11
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t11) = t1.sin_cos();
+        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
+        let t6 = T::from_f64(1.0) / sin_gamma;
+        let t7 = T::from_f64(0.5) * t5 * t6;
+        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t9 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
+        let t10 = -(T::from_f64(0.5) * h) + t7;
+        let t12 = gammadot
+            * (T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t8
+                - sin_gamma * t9
                 + cos_gamma
-                    * (-(d_peg * t6 * t8 * t13)
-                        + T::from_f64(0.5) * cos_gamma * t7 * t10));
-        let t17 = -sin_gamma * t12;
-        let t18 = gammadot
-            * (cos_gamma * t12
+                    * (-(d_peg * t4 * t6 * t11)
+                        + T::from_f64(0.5) * cos_gamma * t5 * t8));
+        let t13 = -sin_gamma * t10;
+        let t14 = gammadot
+            * ((cos_gamma * t10
                 + sin_gamma
-                    * (d_peg * t6 * t8 * t13 - T::from_f64(0.5) * cos_gamma * t7 * t10))
-            - gammadot * (d_hole * t3 * t5 * t8 - cos_gamma * t11);
-        let t19 = t16 + gammadot * (t8 * (t9 + d_hole * cos_gamma * t3 * t5 * t8) + t17);
+                    * (d_peg * t4 * t6 * t11 - T::from_f64(0.5) * cos_gamma * t5 * t8))
+                - (d_hole * t2 * t3 * t6 - cos_gamma * t9));
+        let t15 = t12 + gammadot * (t6 * (t7 + d_hole * cos_gamma * t2 * t3 * t6) + t13);
         Matrix3::new(
-            t18,
+            t14,
             T::from_f64(0.0),
-            t16 + gammadot * (-(T::from_f64(0.5) * d_hole) + t17),
-            t18,
+            t12 + gammadot * (-(T::from_f64(0.5) * d_hole) + t13),
+            t14,
             T::from_f64(0.0),
-            t19,
-            t18,
+            t15,
+            t14,
             T::from_f64(0.0),
-            t19,
+            t15,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -358,7 +332,7 @@ pub mod rigid_peg_planar {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 19 add/sub, 60 mul, 2 div, 0 sqrt, 8 transcendental, 0 branches; 21 `let`s.
+    /// 18 add/sub, 52 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 17 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -369,36 +343,29 @@ pub mod rigid_peg_planar {
         let m = p[3];
         let g = p[4];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t6 * t6);
-        let t8 = T::from_f64(1.0) / sin_gamma;
-        let t9 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7 * t8;
-        let t11 = t1.cos();
-        let t12 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7 * t8)
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t9) = t1.sin_cos();
+        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
+        let t6 = T::from_f64(1.0) / sin_gamma;
+        let t7 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t8 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
+        let t10 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t5 * t6)
             + sin_gamma
-                * (d_peg * t6 * t8 * t11 - T::from_f64(0.5) * cos_gamma * t7 * t9);
-        let t13 = t2.cos();
-        let t14 = t4.cos();
-        let t15 = d_hole * cos_gamma * t3 * t5 * t9
-            - T::from_f64(0.5) * d_hole * t5 * t8 * t13
-            + T::from_f64(0.5) * d_hole * t3 * t8 * t14 - sin_gamma * t10
+                * (d_peg * t4 * t6 * t9 - T::from_f64(0.5) * cos_gamma * t5 * t7);
+        let t11 = T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t7
+            - sin_gamma * t8
             + cos_gamma
-                * (-(d_peg * t6 * t8 * t11) + T::from_f64(0.5) * cos_gamma * t7 * t9);
-        let t16 = gammadot * gammadot;
-        let t17 = T::from_f64(0.5) * m * (t16 * (t12 * t12) + t16 * (t15 * t15));
-        let t18 = T::from_f64(0.041666666666666664) * m * t16
+                * (-(d_peg * t4 * t6 * t9) + T::from_f64(0.5) * cos_gamma * t5 * t7);
+        let t12 = gammadot * gammadot;
+        let t13 = T::from_f64(0.5) * m * (t12 * (t10 * t10 + t11 * t11));
+        let t14 = T::from_f64(0.041666666666666664) * m * t12
             * (T::from_f64(0.75) * (d_peg * d_peg) + h * h);
-        let kinetic = t17 + t18;
-        let total = m * g * (-(d_hole * t3 * t5 * t8) + cos_gamma * t10) + t17 + t18;
+        let kinetic = t13 + t14;
+        let total = m * g * (-(d_hole * t2 * t3 * t6) + cos_gamma * t8) + t13 + t14;
         (kinetic, total)
     }
 }

@@ -29,7 +29,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 50 add/sub, 174 mul, 4 div, 0 sqrt, 9 transcendental, 0 branches; 34 `let`s.
+    /// 46 add/sub, 147 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 31 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -47,82 +47,74 @@ pub mod rigid_peg_planar_frictionless {
         let m_gamma = loads[0];
         let f_x = loads[1];
         let f_z = loads[2];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = t6 * t6;
-        let t8 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t7;
-        let t9 = T::from_f64(1.0) / sin_gamma;
-        let t10 = T::from_f64(0.5) * t8 * t9;
-        let t11 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t12 = -T::from_f64(0.5) * t8 * t9;
-        let t13 = T::from_f64(0.5) * h + t12;
-        let t14 = -(T::from_f64(0.5) * h) + t10;
-        let t15 = (d_hole * t3 * t5 * t9).hypot(T::from_f64(0.5) * d_hole);
-        let t16 = T::from_f64(1.0) / t15;
-        let t17 = t1.cos();
-        let t18 = d_peg * t6 * t9 * t17 - T::from_f64(0.5) * cos_gamma * t8 * t11;
-        let t19 = cos_gamma * t14 + sin_gamma * t18;
-        let t20 = t2.cos();
-        let t21 = t4.cos();
-        let t22 = -(d_peg * t6 * t9 * t17) + T::from_f64(0.5) * cos_gamma * t8 * t11;
-        let t23 = d_hole * cos_gamma * t3 * t5 * t11
-            - T::from_f64(0.5) * d_hole * t5 * t9 * t20
-            + T::from_f64(0.5) * d_hole * t3 * t9 * t21 - sin_gamma * t13
-            + cos_gamma * t22;
-        let t24 = t17 * t17;
-        let t25 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t26 = cos_gamma * cos_gamma;
-        let t27 = -(sin_gamma * t14)
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t16) = t1.sin_cos();
+        let t5 = t4 * t4;
+        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
+        let t7 = T::from_f64(1.0) / sin_gamma;
+        let t8 = T::from_f64(0.5) * t6 * t7;
+        let t9 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t10 = T::from_f64(0.5) * d_hole;
+        let t11 = -T::from_f64(0.5) * t6 * t7;
+        let t12 = T::from_f64(0.5) * h + t11;
+        let t13 = -(T::from_f64(0.5) * h) + t8;
+        let t14 = (d_hole * t2 * t3 * t7).hypot(t10);
+        let t15 = T::from_f64(1.0) / t14;
+        let t17 = d_peg * t4 * t7 * t16 - T::from_f64(0.5) * cos_gamma * t6 * t9;
+        let t18 = cos_gamma * t13 + sin_gamma * t17;
+        let t19 = -(d_peg * t4 * t7 * t16) + T::from_f64(0.5) * cos_gamma * t6 * t9;
+        let t20 = t10 + d_hole * cos_gamma * t2 * t3 * t9 - sin_gamma * t12
+            + cos_gamma * t19;
+        let t21 = t16 * t16;
+        let t22 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
+        let t23 = cos_gamma * cos_gamma;
+        let t24 = -(sin_gamma * t13)
             + sin_gamma
-                * (t10 + T::from_f64(0.5) * d_peg * t9 * t24
-                    - T::from_f64(0.5) * d_peg * t7 * t9 + t8 * t25 * t26
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t6 * t11 * t17)
-            + T::from_f64(2.0) * cos_gamma * t18;
-        let t28 = gammadot * gammadot;
-        let t29 = -(T::from_f64(2.0) * d_hole * t3 * t5 * t25 * t26)
-            + d_hole * cos_gamma * t5 * t11 * t20 - cos_gamma * t13
+                * (t8 + T::from_f64(0.5) * d_peg * t7 * t21
+                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t22 * t23
+                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t9 * t16)
+            + T::from_f64(2.0) * cos_gamma * t17;
+        let t25 = gammadot * gammadot;
+        let t26 = -(d_hole * t2 * t3 * t7)
+            - T::from_f64(2.0) * d_hole * t2 * t3 * t22 * t23
+            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t12
             + cos_gamma
-                * (t12 - T::from_f64(0.5) * d_peg * t9 * t24
-                    + T::from_f64(0.5) * d_peg * t7 * t9 - t8 * t25 * t26
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t6 * t11 * t17)
-            - T::from_f64(0.5) * d_hole * t3 * t5 * t9
-            - d_hole * cos_gamma * t3 * t11 * t21
-            + T::from_f64(0.5) * d_hole * t9 * t20 * t21
-            - T::from_f64(2.0) * sin_gamma * t22;
-        let t30 = T::from_f64(2.0) * cos_gamma * t14
-            + T::from_f64(2.0) * sin_gamma * t18;
-        let t31 = T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t11
-            + d_hole * t3 * t9 * t21 - d_hole * t5 * t9 * t20
-            - T::from_f64(2.0) * sin_gamma * t13 + T::from_f64(2.0) * cos_gamma * t22;
+                * (t11 - T::from_f64(0.5) * d_peg * t7 * t21
+                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t22 * t23
+                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t9 * t16)
+            - T::from_f64(2.0) * sin_gamma * t19;
+        let t27 = T::from_f64(2.0) * cos_gamma * t13
+            + T::from_f64(2.0) * sin_gamma * t17;
+        let t28 = d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t9
+            - T::from_f64(2.0) * sin_gamma * t12 + T::from_f64(2.0) * cos_gamma * t19;
         let a = Matrix3::new(
-            T::from_f64(0.08333333333333333) * m
-                * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
-                + T::from_f64(0.5) * m
-                    * (T::from_f64(2.0) * (t19 * t19) + T::from_f64(2.0) * (t23 * t23)),
+            m
+                * (T::from_f64(0.08333333333333333)
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
+                    + T::from_f64(0.5)
+                        * (T::from_f64(2.0) * (t18 * t18)
+                            + T::from_f64(2.0) * (t20 * t20))),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * t19,
-            -T::from_f64(1.0) + T::from_f64(2.0) * t7,
-            T::from_f64(2.0) * t9 * (t10 + d_hole * cos_gamma * t3 * t5 * t9) * t16,
-            m * t23,
+            m * t18,
+            -T::from_f64(1.0) + T::from_f64(2.0) * t5,
+            T::from_f64(2.0) * t7 * (t8 + d_hole * cos_gamma * t2 * t3 * t7) * t15,
+            m * t20,
             -sin_gamma,
-            T::from_f64(2.0) * d_hole * t3 * t5 * t9 * t16,
+            T::from_f64(2.0) * d_hole * t2 * t3 * t7 * t15,
         );
         let b = Vector3::new(
-            m_gamma + f_z * t23 - m * g * t23
+            m_gamma + f_z * t20 - m * g * t20
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t27 * t30
-                        + T::from_f64(2.0) * gammadot * t29 * t31) + f_x * t19
-                + T::from_f64(0.5) * m * (t27 * t28 * t30 + t28 * t29 * t31),
-            f_x - m * t27 * t28,
-            f_z - m * g - m * t28 * t29,
+                    * (gammadot
+                        * (T::from_f64(2.0) * t24 * t27 + T::from_f64(2.0) * t26 * t28))
+                + f_x * t18 + T::from_f64(0.5) * m * (t25 * (t24 * t27 + t26 * t28)),
+            f_x - m * t24 * t25,
+            f_z - m * g - m * t25 * t26,
         );
         (a, b)
     }
@@ -140,7 +132,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 52 add/sub, 175 mul, 4 div, 0 sqrt, 9 transcendental, 0 branches; 34 `let`s.
+    /// 48 add/sub, 148 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 31 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -159,85 +151,76 @@ pub mod rigid_peg_planar_frictionless {
         let gamma0 = p[6];
         let f_x = loads[1];
         let f_z = loads[2];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = t6 * t6;
-        let t8 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t7;
-        let t9 = T::from_f64(1.0) / sin_gamma;
-        let t10 = T::from_f64(0.5) * t8 * t9;
-        let t11 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t12 = -T::from_f64(0.5) * t8 * t9;
-        let t13 = T::from_f64(0.5) * h + t12;
-        let t14 = -(T::from_f64(0.5) * h) + t10;
-        let t15 = (d_hole * t3 * t5 * t9).hypot(T::from_f64(0.5) * d_hole);
-        let t16 = T::from_f64(1.0) / t15;
-        let t17 = t1.cos();
-        let t18 = d_peg * t6 * t9 * t17 - T::from_f64(0.5) * cos_gamma * t8 * t11;
-        let t19 = cos_gamma * t14 + sin_gamma * t18;
-        let t20 = t2.cos();
-        let t21 = t4.cos();
-        let t22 = -(d_peg * t6 * t9 * t17) + T::from_f64(0.5) * cos_gamma * t8 * t11;
-        let t23 = d_hole * cos_gamma * t3 * t5 * t11
-            - T::from_f64(0.5) * d_hole * t5 * t9 * t20
-            + T::from_f64(0.5) * d_hole * t3 * t9 * t21 - sin_gamma * t13
-            + cos_gamma * t22;
-        let t24 = t17 * t17;
-        let t25 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t26 = cos_gamma * cos_gamma;
-        let t27 = -(sin_gamma * t14)
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t16) = t1.sin_cos();
+        let t5 = t4 * t4;
+        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
+        let t7 = T::from_f64(1.0) / sin_gamma;
+        let t8 = T::from_f64(0.5) * t6 * t7;
+        let t9 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t10 = T::from_f64(0.5) * d_hole;
+        let t11 = -T::from_f64(0.5) * t6 * t7;
+        let t12 = T::from_f64(0.5) * h + t11;
+        let t13 = -(T::from_f64(0.5) * h) + t8;
+        let t14 = (d_hole * t2 * t3 * t7).hypot(t10);
+        let t15 = T::from_f64(1.0) / t14;
+        let t17 = d_peg * t4 * t7 * t16 - T::from_f64(0.5) * cos_gamma * t6 * t9;
+        let t18 = cos_gamma * t13 + sin_gamma * t17;
+        let t19 = -(d_peg * t4 * t7 * t16) + T::from_f64(0.5) * cos_gamma * t6 * t9;
+        let t20 = t10 + d_hole * cos_gamma * t2 * t3 * t9 - sin_gamma * t12
+            + cos_gamma * t19;
+        let t21 = t16 * t16;
+        let t22 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
+        let t23 = cos_gamma * cos_gamma;
+        let t24 = -(sin_gamma * t13)
             + sin_gamma
-                * (t10 + T::from_f64(0.5) * d_peg * t9 * t24
-                    - T::from_f64(0.5) * d_peg * t7 * t9 + t8 * t25 * t26
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t6 * t11 * t17)
-            + T::from_f64(2.0) * cos_gamma * t18;
-        let t28 = gammadot * gammadot;
-        let t29 = -(T::from_f64(2.0) * d_hole * t3 * t5 * t25 * t26)
-            + d_hole * cos_gamma * t5 * t11 * t20 - cos_gamma * t13
+                * (t8 + T::from_f64(0.5) * d_peg * t7 * t21
+                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t22 * t23
+                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t9 * t16)
+            + T::from_f64(2.0) * cos_gamma * t17;
+        let t25 = gammadot * gammadot;
+        let t26 = -(d_hole * t2 * t3 * t7)
+            - T::from_f64(2.0) * d_hole * t2 * t3 * t22 * t23
+            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t12
             + cos_gamma
-                * (t12 - T::from_f64(0.5) * d_peg * t9 * t24
-                    + T::from_f64(0.5) * d_peg * t7 * t9 - t8 * t25 * t26
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t6 * t11 * t17)
-            - T::from_f64(0.5) * d_hole * t3 * t5 * t9
-            - d_hole * cos_gamma * t3 * t11 * t21
-            + T::from_f64(0.5) * d_hole * t9 * t20 * t21
-            - T::from_f64(2.0) * sin_gamma * t22;
-        let t30 = T::from_f64(2.0) * cos_gamma * t14
-            + T::from_f64(2.0) * sin_gamma * t18;
-        let t31 = T::from_f64(2.0) * d_hole * cos_gamma * t3 * t5 * t11
-            + d_hole * t3 * t9 * t21 - d_hole * t5 * t9 * t20
-            - T::from_f64(2.0) * sin_gamma * t13 + T::from_f64(2.0) * cos_gamma * t22;
+                * (t11 - T::from_f64(0.5) * d_peg * t7 * t21
+                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t22 * t23
+                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t9 * t16)
+            - T::from_f64(2.0) * sin_gamma * t19;
+        let t27 = T::from_f64(2.0) * cos_gamma * t13
+            + T::from_f64(2.0) * sin_gamma * t17;
+        let t28 = d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t9
+            - T::from_f64(2.0) * sin_gamma * t12 + T::from_f64(2.0) * cos_gamma * t19;
         let a = Matrix3::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            -T::from_f64(1.0) + T::from_f64(2.0) * t7,
-            T::from_f64(2.0) * t9 * (t10 + d_hole * cos_gamma * t3 * t5 * t9) * t16,
+            -T::from_f64(1.0) + T::from_f64(2.0) * t5,
+            T::from_f64(2.0) * t7 * (t8 + d_hole * cos_gamma * t2 * t3 * t7) * t15,
             T::from_f64(0.0),
             -sin_gamma,
-            T::from_f64(2.0) * d_hole * t3 * t5 * t9 * t16,
+            T::from_f64(2.0) * d_hole * t2 * t3 * t7 * t15,
         );
         let b = Vector3::new(
-            f_z * t23 - m * g * t23
+            f_z * t20 - m * g * t20
                 - T::from_f64(0.5) * m * gammadot
-                    * (T::from_f64(2.0) * gammadot * t27 * t30
-                        + T::from_f64(2.0) * gammadot * t29 * t31) + f_x * t19
-                + T::from_f64(0.5) * m * (t27 * t28 * t30 + t28 * t29 * t31)
+                    * (gammadot
+                        * (T::from_f64(2.0) * t24 * t27 + T::from_f64(2.0) * t26 * t28))
+                + f_x * t18 + T::from_f64(0.5) * m * (t25 * (t24 * t27 + t26 * t28))
                 - gammaddot
-                    * (T::from_f64(0.08333333333333333) * m
-                        * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
-                        + T::from_f64(0.5) * m
-                            * (T::from_f64(2.0) * (t19 * t19)
-                                + T::from_f64(2.0) * (t23 * t23))),
-            f_x - m * (t27 * t28 + gammaddot * t19),
-            f_z - m * g - m * (t28 * t29 + gammaddot * t23),
+                    * (m
+                        * (T::from_f64(0.08333333333333333)
+                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
+                            + T::from_f64(0.5)
+                                * (T::from_f64(2.0) * (t18 * t18)
+                                    + T::from_f64(2.0) * (t20 * t20)))),
+            f_x - m * (t24 * t25 + gammaddot * t18),
+            f_z - m * g - m * (t25 * t26 + gammaddot * t20),
         );
         (a, b)
     }
@@ -251,7 +234,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 20 add/sub, 57 mul, 2 div, 0 sqrt, 8 transcendental, 0 branches; 22 `let`s.
+    /// 19 add/sub, 49 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 18 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 2>,
@@ -263,48 +246,41 @@ pub mod rigid_peg_planar_frictionless {
         let d_peg = p[1];
         let h = p[2];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t6 * t6);
-        let t8 = T::from_f64(1.0) / sin_gamma;
-        let t9 = T::from_f64(0.5) * t7 * t8;
-        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t11 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7 * t8;
-        let t12 = -(T::from_f64(0.5) * h) + t9;
-        let t13 = t1.cos();
-        let t14 = t2.cos();
-        let t15 = t4.cos();
-        let t16 = gammadot
-            * (d_hole * cos_gamma * t3 * t5 * t10
-                - T::from_f64(0.5) * d_hole * t5 * t8 * t14
-                + T::from_f64(0.5) * d_hole * t3 * t8 * t15 - sin_gamma * t11
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t11) = t1.sin_cos();
+        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
+        let t6 = T::from_f64(1.0) / sin_gamma;
+        let t7 = T::from_f64(0.5) * t5 * t6;
+        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t9 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
+        let t10 = -(T::from_f64(0.5) * h) + t7;
+        let t12 = gammadot
+            * (T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t8
+                - sin_gamma * t9
                 + cos_gamma
-                    * (-(d_peg * t6 * t8 * t13)
-                        + T::from_f64(0.5) * cos_gamma * t7 * t10));
-        let t17 = -sin_gamma * t12;
-        let t18 = gammadot
-            * (cos_gamma * t12
+                    * (-(d_peg * t4 * t6 * t11)
+                        + T::from_f64(0.5) * cos_gamma * t5 * t8));
+        let t13 = -sin_gamma * t10;
+        let t14 = gammadot
+            * ((cos_gamma * t10
                 + sin_gamma
-                    * (d_peg * t6 * t8 * t13 - T::from_f64(0.5) * cos_gamma * t7 * t10))
-            - gammadot * (d_hole * t3 * t5 * t8 - cos_gamma * t11);
-        let t19 = t16 + gammadot * (t8 * (t9 + d_hole * cos_gamma * t3 * t5 * t8) + t17);
+                    * (d_peg * t4 * t6 * t11 - T::from_f64(0.5) * cos_gamma * t5 * t8))
+                - (d_hole * t2 * t3 * t6 - cos_gamma * t9));
+        let t15 = t12 + gammadot * (t6 * (t7 + d_hole * cos_gamma * t2 * t3 * t6) + t13);
         Matrix3::new(
-            t18,
+            t14,
             T::from_f64(0.0),
-            t16 + gammadot * (-(T::from_f64(0.5) * d_hole) + t17),
-            t18,
+            t12 + gammadot * (-(T::from_f64(0.5) * d_hole) + t13),
+            t14,
             T::from_f64(0.0),
-            t19,
-            t18,
+            t15,
+            t14,
             T::from_f64(0.0),
-            t19,
+            t15,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -318,7 +294,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 19 add/sub, 60 mul, 2 div, 0 sqrt, 8 transcendental, 0 branches; 21 `let`s.
+    /// 18 add/sub, 52 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 17 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -329,36 +305,29 @@ pub mod rigid_peg_planar_frictionless {
         let m = p[3];
         let g = p[4];
         let gamma0 = p[6];
-        let sin_gamma = gamma.sin();
-        let cos_gamma = gamma.cos();
+        let (sin_gamma, cos_gamma) = gamma.sin_cos();
         let t0 = T::from_f64(0.5) * gamma0;
         let t1 = T::from_f64(0.5) * gamma;
-        let t2 = t0 + t1;
-        let t3 = t2.sin();
-        let t4 = t0 - T::from_f64(0.5) * gamma;
-        let t5 = t4.sin();
-        let t6 = t1.sin();
-        let t7 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t6 * t6);
-        let t8 = T::from_f64(1.0) / sin_gamma;
-        let t9 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7 * t8;
-        let t11 = t1.cos();
-        let t12 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7 * t8)
+        let t2 = (t0 + t1).sin();
+        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
+        let (t4, t9) = t1.sin_cos();
+        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
+        let t6 = T::from_f64(1.0) / sin_gamma;
+        let t7 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t8 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
+        let t10 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t5 * t6)
             + sin_gamma
-                * (d_peg * t6 * t8 * t11 - T::from_f64(0.5) * cos_gamma * t7 * t9);
-        let t13 = t2.cos();
-        let t14 = t4.cos();
-        let t15 = d_hole * cos_gamma * t3 * t5 * t9
-            - T::from_f64(0.5) * d_hole * t5 * t8 * t13
-            + T::from_f64(0.5) * d_hole * t3 * t8 * t14 - sin_gamma * t10
+                * (d_peg * t4 * t6 * t9 - T::from_f64(0.5) * cos_gamma * t5 * t7);
+        let t11 = T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t7
+            - sin_gamma * t8
             + cos_gamma
-                * (-(d_peg * t6 * t8 * t11) + T::from_f64(0.5) * cos_gamma * t7 * t9);
-        let t16 = gammadot * gammadot;
-        let t17 = T::from_f64(0.5) * m * (t16 * (t12 * t12) + t16 * (t15 * t15));
-        let t18 = T::from_f64(0.041666666666666664) * m * t16
+                * (-(d_peg * t4 * t6 * t9) + T::from_f64(0.5) * cos_gamma * t5 * t7);
+        let t12 = gammadot * gammadot;
+        let t13 = T::from_f64(0.5) * m * (t12 * (t10 * t10 + t11 * t11));
+        let t14 = T::from_f64(0.041666666666666664) * m * t12
             * (T::from_f64(0.75) * (d_peg * d_peg) + h * h);
-        let kinetic = t17 + t18;
-        let total = m * g * (-(d_hole * t3 * t5 * t8) + cos_gamma * t10) + t17 + t18;
+        let kinetic = t13 + t14;
+        let total = m * g * (-(d_hole * t2 * t3 * t6) + cos_gamma * t8) + t13 + t14;
         (kinetic, total)
     }
 }

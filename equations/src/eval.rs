@@ -59,12 +59,19 @@ pub fn binary(op: Binary, a: f64, b: f64) -> f64 {
     }
 }
 
+/// The exponent emitted as `cbrt` (the `f64` nearest 1/3).
+pub const ONE_THIRD: f64 = 1.0 / 3.0;
+/// The exponent emitted as `cbrt(x)²` (the `f64` nearest 2/3).
+pub const TWO_THIRDS: f64 = 2.0 / 3.0;
+
 /// Value of `base ^ exponent` as the emitter computes it: exponent `0.5` is
-/// `b.sqrt()`, `-0.5` is `1.0 / b.sqrt()`, `1.5` is `b * b.sqrt()`, an
-/// integer exponent `n` with `|n| <= 64` is `b.powi(n)` (which the emitter
-/// writes as `b * b`, `b * b * b` for `n = 2, 3`: the same bits), anything
-/// else `b.powf(e)`. The generated code must make the same choices, or
-/// generated and interpreted values differ in the last bits.
+/// `b.sqrt()`, `-0.5` is `1.0 / b.sqrt()`, `1.5` is `b * b.sqrt()`, `1/3`
+/// is `b.cbrt()` and `2/3` is `c * c` with `c = b.cbrt()` (the real cube
+/// root: defined for `b < 0`, where `powf` is NaN, and about 4× cheaper),
+/// an integer exponent `n` with `|n| <= 64` is `b.powi(n)` (which the
+/// emitter writes as `b * b`, `b * b * b` for `n = 2, 3`: the same bits),
+/// anything else `b.powf(e)`. The generated code must make the same
+/// choices, or generated and interpreted values differ in the last bits.
 pub fn pow(b: f64, e: f64) -> f64 {
     if e == 0.5 {
         b.sqrt()
@@ -72,6 +79,11 @@ pub fn pow(b: f64, e: f64) -> f64 {
         1.0 / b.sqrt()
     } else if e == 1.5 {
         b * b.sqrt()
+    } else if e == ONE_THIRD {
+        b.cbrt()
+    } else if e == TWO_THIRDS {
+        let c = b.cbrt();
+        c * c
     } else if e.fract() == 0.0 && e.abs() <= 64.0 {
         b.powi(e as i32)
     } else {
@@ -97,6 +109,50 @@ pub fn sum_order(g: &Graph, xs: &[Id]) -> Vec<Id> {
     let (mut first, rest): (Vec<Id>, Vec<Id>) = xs.iter().partition(|&&t| is_param(t));
     first.extend(rest);
     first
+}
+
+/// A sum evaluated as `common₁ · common₂ · … · (Σ cₖ · restₖ)`: every term
+/// is a product holding all the `common` factors (`m1 l1 s + m2 l1 s` is
+/// `l1 · s · (m1 + m2)`), which saves a multiplication per common factor
+/// and term. The interpreter and the emitter evaluate sums this way alike.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FactoredSum {
+    /// The shared non-constant factors, in canonical order.
+    pub common: Vec<Id>,
+    /// Each term's coefficient and remaining factors, in
+    /// [`sum_order`] of the terms.
+    pub rest: Vec<(f64, Vec<Id>)>,
+}
+
+/// The factored form of the sum of `xs` (in [`sum_order`]), when every term
+/// is a product that is not bound to a name (`named`: a `let` of the
+/// emitter's [`Schedule`](crate::codegen::schedule::Schedule), whose value
+/// is reused rather than recomputed) and they share at least one
+/// non-constant factor.
+pub fn factor_sum(g: &Graph, xs: &[Id], named: impl Fn(Id) -> bool) -> Option<FactoredSum> {
+    if xs.len() < 2
+        || !xs
+            .iter()
+            .all(|&t| !named(t) && matches!(g.node(t), Node::Mul(_)))
+    {
+        return None;
+    }
+    let parts: Vec<(f64, Vec<Id>)> = xs
+        .iter()
+        .map(|&t| crate::simplify::term_parts(g, t))
+        .collect();
+    let mut common = parts[0].1.clone();
+    for (_, fs) in &parts[1..] {
+        common.retain(|f| fs.contains(f));
+    }
+    if common.is_empty() {
+        return None;
+    }
+    let rest = parts
+        .into_iter()
+        .map(|(c, fs)| (c, fs.into_iter().filter(|f| !common.contains(f)).collect()))
+        .collect();
+    Some(FactoredSum { common, rest })
 }
 
 /// One instruction: the operands are slots of earlier instructions.
@@ -146,6 +202,8 @@ impl Tape {
                 });
             }
         }
+        // The emitter's plan: sums are factored only where it factors them.
+        let sched = crate::codegen::schedule::Schedule::new(g, roots);
         let mut slot = vec![u32::MAX; n];
         let mut ops = Vec::new();
         let mut args = Vec::new();
@@ -155,7 +213,7 @@ impl Tape {
             }
             let op = g.with_node(Id(i as u32), |node| {
                 let s = |id: &Id| slot[id.index()];
-                let mut list = |xs: &[Id]| {
+                let list = |args: &mut Vec<u32>, xs: &[Id]| {
                     let start = args.len() as u32;
                     args.extend(xs.iter().map(s));
                     (start, xs.len() as u32)
@@ -164,11 +222,50 @@ impl Tape {
                     Node::Const(c) => Op::Const(c.value()),
                     Node::Sym(sym) => Op::Sym(sym.index() as u32),
                     Node::Add(xs) => {
-                        let (start, len) = list(&sum_order(g, xs));
-                        Op::Add { start, len }
+                        let order = sum_order(g, xs);
+                        match factor_sum(g, &order, |t| sched.is_named(t)) {
+                            Some(f) => {
+                                // common · (Σ c·rest): the extra values get
+                                // slots of their own before this node's.
+                                let mut terms = Vec::with_capacity(f.rest.len());
+                                for (c, rest) in &f.rest {
+                                    let mut xs: Vec<u32> = Vec::with_capacity(rest.len() + 1);
+                                    if *c != 1.0 || rest.is_empty() {
+                                        xs.push(ops.len() as u32);
+                                        ops.push(Op::Const(*c));
+                                    }
+                                    xs.extend(rest.iter().map(s));
+                                    let start = args.len() as u32;
+                                    args.extend(&xs);
+                                    terms.push(ops.len() as u32);
+                                    ops.push(Op::Mul {
+                                        start,
+                                        len: xs.len() as u32,
+                                    });
+                                }
+                                let start = args.len() as u32;
+                                args.extend(&terms);
+                                let sum = ops.len() as u32;
+                                ops.push(Op::Add {
+                                    start,
+                                    len: terms.len() as u32,
+                                });
+                                let start = args.len() as u32;
+                                args.extend(f.common.iter().map(s));
+                                args.push(sum);
+                                Op::Mul {
+                                    start,
+                                    len: f.common.len() as u32 + 1,
+                                }
+                            }
+                            None => {
+                                let (start, len) = list(&mut args, &order);
+                                Op::Add { start, len }
+                            }
+                        }
                     }
                     Node::Mul(xs) => {
-                        let (start, len) = list(xs);
+                        let (start, len) = list(&mut args, xs);
                         Op::Mul { start, len }
                     }
                     Node::Pow(a, b) => Op::Pow(s(a), s(b)),
@@ -187,7 +284,8 @@ impl Tape {
         }
     }
 
-    /// Number of operations (reachable nodes).
+    /// Number of operations (reachable nodes, plus the products and sums
+    /// of factored sums, see [`factor_sum`]).
     pub fn len(&self) -> usize {
         self.ops.len()
     }

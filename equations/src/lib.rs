@@ -10,6 +10,7 @@
 pub mod diff;
 pub mod display;
 pub mod eval;
+pub mod expand;
 pub mod expr;
 pub mod graph;
 pub mod simplify;

@@ -64,6 +64,12 @@ fn canonical_forms_are_emitted_as_written_by_hand() {
         (emitted(|_, a, _, _| a.exp_m1()), "a.exp_m1()"),
         (emitted(|_, a, _, _| a.ln_1p()), "a.ln_1p()"),
         (emitted(|_, a, b, _| (a + b).sin()), "(a + b).sin()"),
+        (emitted(|_, a, _, _| a.powf(1.0 / 3.0)), "a.cbrt()"),
+        (
+            emitted(|_, a, b, c| a * c + 2.0 * b * c),
+            "c * (a + T::from_f64(2.0) * b)",
+        ),
+        (emitted(|_, a, _, _| a.powf(2.0 / 3.0)), "a.cbrt().powi(2)"),
         (emitted(|_, a, _, _| a.max0()), "let max0_a = a.max0();"),
         (emitted(|_, a, b, c| (a - b) * (b - c)), "(a - b) * (b - c)"),
     ];
@@ -74,11 +80,30 @@ fn canonical_forms_are_emitted_as_written_by_hand() {
 
 #[test]
 fn shared_and_expensive_nodes_get_a_let_and_are_computed_once() {
-    let code = emitted(|_, a, b, _| (a + b).sin() * (a + b).cos() + (a + b).sin());
+    let code = emitted(|_, a, b, _| (a + b).sin() * (a + b).tan() + (a + b).sin());
     assert_eq!(code.matches(".sin()").count(), 1, "{code}");
     assert!(code.contains("let t0 = a + b;"), "{code}");
-    let code = emitted(|_, a, _, _| a.sin() + a.cos());
+    let code = emitted(|_, a, _, _| a.sin() + a.tan());
     assert!(code.contains("let sin_a = a.sin();"), "{code}");
+}
+
+#[test]
+fn sine_and_cosine_of_one_argument_are_one_sin_cos_call() {
+    let code = emitted(|_, a, b, _| a.sin() * b + a.cos() + (a - b).cos() * (a - b).sin());
+    assert!(code.contains("let (sin_a, cos_a) = a.sin_cos();"), "{code}");
+    assert_eq!(code.matches(".sin_cos()").count(), 2, "{code}");
+    assert!(
+        !code.contains(".sin()") && !code.contains(".cos()"),
+        "{code}"
+    );
+    assert!(code.contains("2 transcendental"), "{code}");
+    // Different arguments: two calls.
+    let code = emitted(|_, a, b, _| a.sin() * b.cos());
+    assert!(
+        code.contains("a.sin()") && code.contains("b.cos()"),
+        "{code}"
+    );
+    assert!(!code.contains("sin_cos"), "{code}");
 }
 
 #[test]

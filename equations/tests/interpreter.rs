@@ -19,24 +19,64 @@ fn pow_special_cases_match_the_emitter() {
         assert!(same(eval::pow(b, 1.5), b * b.sqrt()), "b sqrt(b) {b}");
         assert!(same(eval::pow(b, 2.0), b * b), "b*b {b}");
         assert!(same(eval::pow(b, 3.0), b * b * b), "b*b*b {b}");
+        assert!(same(eval::pow(b, 1.0 / 3.0), b.cbrt()), "cbrt {b}");
+        assert!(
+            same(eval::pow(b, 2.0 / 3.0), b.cbrt().powi(2)),
+            "cbrt^2 {b}"
+        );
         for n in [-64, -3, -1, 2, 3, 17, 64] {
             assert!(same(eval::pow(b, f64::from(n)), b.powi(n)), "powi {b} {n}");
         }
-        for e in [2.5, -1.5, 1.0 / 3.0, 0.25, 65.0, -65.0, 100.0] {
+        for e in [2.5, -1.5, -1.0 / 3.0, 0.25, 65.0, -65.0, 100.0] {
             assert!(same(eval::pow(b, e), b.powf(e)), "powf {b} {e}");
         }
     }
 }
 
 #[test]
+fn tape_factors_sums_as_the_emitter_does() {
+    // a·c + b·c is emitted as c·(a + b); at a = 0, b = 1, c = ∞ that is ∞,
+    // where the unfactored sum would be 0·∞ + ∞ = NaN.
+    let g = Graph::new();
+    let (a, b, c) = (g.var("a"), g.var("b"), g.var("c"));
+    let tape = Tape::new(&g, &[(a * c + b * c).id()]);
+    let out = tape.eval(&[0.0, 1.0, f64::INFINITY]);
+    assert_eq!(out[0], f64::INFINITY);
+    let out = tape.eval(&[0.1, 0.7, 3.0]);
+    assert!(same(out[0], 3.0 * (0.1 + 0.7)), "{out:?}");
+    // A product that is also an output (a `let`) is not split: a·c + b·c
+    // then adds the two products, 0·∞ + ∞ = NaN, as the emitted code does.
+    let ac = a * c;
+    let tape = Tape::new(&g, &[(ac + b * c).id(), ac.id()]);
+    let out = tape.eval(&[0.0, 1.0, f64::INFINITY]);
+    assert!(out[0].is_nan(), "{out:?}");
+}
+
+#[test]
 fn tape_powers_use_the_same_special_cases() {
     let g = Graph::new();
     let x = g.var("x");
-    let roots = [x.sqrt(), x.powf(-0.5), x.powi(3), x.powf(2.5), x.powi(-2)];
+    let roots = [
+        x.sqrt(),
+        x.powf(-0.5),
+        x.powi(3),
+        x.powf(2.5),
+        x.powi(-2),
+        x.powf(1.0 / 3.0),
+        x.powf(2.0 / 3.0),
+    ];
     let tape = Tape::new(&g, &roots.map(|e| e.id()));
     let v = 1.7f64;
     let out = tape.eval(&[v]);
-    let want = [v.sqrt(), 1.0 / v.sqrt(), v.powi(3), v.powf(2.5), v.powi(-2)];
+    let want = [
+        v.sqrt(),
+        1.0 / v.sqrt(),
+        v.powi(3),
+        v.powf(2.5),
+        v.powi(-2),
+        v.cbrt(),
+        v.cbrt() * v.cbrt(),
+    ];
     for (o, w) in out.iter().zip(want) {
         assert!(same(*o, w), "{o} vs {w}");
     }

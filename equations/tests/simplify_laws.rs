@@ -98,6 +98,18 @@ laws! {
     cos_minus_one: |l| l.x.cos() - 1.0 => -2.0 * (l.x / 2.0).sin().square();
     one_minus_cos_squared: |l| 1.0 - l.x.cos().square() => l.x.sin().square();
     a_minus_a_cos_squared: |l| l.a * l.b - l.a * l.b * l.x.cos().square() => l.a * l.b * l.x.sin().square();
+    cos_difference: |l| l.x.cos() * l.y.cos() + l.x.sin() * l.y.sin() => (l.x - l.y).cos();
+    cos_sum: |l| l.x.cos() * l.y.cos() - l.x.sin() * l.y.sin() => (l.x + l.y).cos();
+    sin_difference: |l| l.x.sin() * l.y.cos() - l.x.cos() * l.y.sin() => (l.x - l.y).sin();
+    sin_sum: |l| l.x.sin() * l.y.cos() + l.x.cos() * l.y.sin() => (l.x + l.y).sin();
+    cos_difference_with_factor: |l| 2.0 * l.a * l.b * l.x.cos() * l.y.cos() + 2.0 * l.a * l.b * l.x.sin() * l.y.sin() + l.b
+        => 2.0 * l.a * l.b * (l.x - l.y).cos() + l.b;
+    sin_difference_with_factor: |l| 3.0 * l.a * l.x.cos() * l.y.sin() - 3.0 * l.a * l.x.sin() * l.y.cos()
+        => 3.0 * l.a * (l.y - l.x).sin();
+    double_pendulum_speed_expanded: |l| (l.a * l.x.cos() + l.b * l.y.cos()).square().expand() + (l.a * l.x.sin() + l.b * l.y.sin()).square().expand()
+        => l.a.square() + l.b.square() + 2.0 * l.a * l.b * (l.x - l.y).cos();
+    expand_product_of_sums: |l| ((l.x + l.a) * (l.y - l.b)).expand() => l.x * l.y - l.x * l.b + l.a * l.y - l.a * l.b;
+    expand_cube: |l| (l.x + 1.0).powi(3).expand() => l.x.powi(3) + 3.0 * l.x.square() + 3.0 * l.x + 1.0;
     sin_odd: |l| (-l.x).sin() => -l.x.sin();
     sin_odd_difference: |l| (l.y - l.x).sin() + (l.x - l.y).sin() => l.g.constant(0.0);
     tan_odd: |l| (-2.0 * l.x).tan() => -(2.0 * l.x).tan();
@@ -125,6 +137,7 @@ not_laws! {
     atan2_not_odd: |l| (-l.y).atan2(l.x) => -l.y.atan2(l.x);
     sqrt_of_negated_sum_not_split: |l| (-l.x - l.y).sqrt() => -(l.x + l.y).sqrt();
     ln_exp_kept: |l| l.x.exp().ln() => l.x;
+    angle_sum_needs_like_coefficients: |l| 2.0 * l.x.cos() * l.y.cos() + l.x.sin() * l.y.sin() => (l.x - l.y).cos() + l.x.cos() * l.y.cos();
 }
 
 #[test]

@@ -119,6 +119,17 @@ impl Dd {
         let r = (self - Dd { hi: p, lo: e }).hi;
         Dd::renorm(y, r / (2.0 * y))
     }
+
+    /// Cube root (real, odd: `cbrt(−x) = −cbrt(x)`), Newton-corrected from
+    /// the `f64` root: one step `y + (x − y³)/(3y²)` doubles the 53 bits.
+    pub fn cbrt(self) -> Dd {
+        if self.hi == 0.0 || !self.hi.is_finite() {
+            return Dd::from(self.hi.cbrt());
+        }
+        let y = Dd::from(self.hi.cbrt());
+        let r = self - y.square() * y;
+        y + r / (y.square() * Dd::from(3.0))
+    }
 }
 
 impl From<f64> for Dd {

@@ -289,6 +289,12 @@ impl Real for Dd {
     fn sqrt(self) -> Dd {
         Dd::sqrt(self)
     }
+    fn cbrt(self) -> Dd {
+        Dd::cbrt(self)
+    }
+    fn sin_cos(self) -> (Dd, Dd) {
+        Dd::sin_cos(self)
+    }
     fn powi(self, n: i32) -> Dd {
         Dd::powi(self, n)
     }

@@ -60,6 +60,12 @@ pub trait Real:
     /// `ln(1 + self)`, accurate near 0.
     fn ln_1p(self) -> Self;
     fn sqrt(self) -> Self;
+    /// Real cube root (`cbrt(−x) = −cbrt(x)`); the generator emits it for
+    /// the exponent 1/3.
+    fn cbrt(self) -> Self;
+    /// `(sin self, cos self)` in one call; the generator emits it when both
+    /// are used.
+    fn sin_cos(self) -> (Self, Self);
     fn powi(self, n: i32) -> Self;
     fn powf(self, e: Self) -> Self;
     /// `sqrt(self² + y²)` without overflow.

@@ -61,6 +61,14 @@ impl Real for f64 {
         f64::sqrt(self)
     }
     #[inline(always)]
+    fn cbrt(self) -> f64 {
+        f64::cbrt(self)
+    }
+    #[inline(always)]
+    fn sin_cos(self) -> (f64, f64) {
+        f64::sin_cos(self)
+    }
+    #[inline(always)]
     fn powi(self, n: i32) -> f64 {
         f64::powi(self, n)
     }

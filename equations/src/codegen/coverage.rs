@@ -1,6 +1,6 @@
 //! A model that exercises every emission path: every function kind, the
 //! branchy `max0` / `step` / `sign`, every power form (`x²`, `x³`, `powi`,
-//! reciprocal powers, `sqrt`, `1/sqrt`, `x^1.5`, `powf`, variable exponent),
+//! reciprocal powers, `sqrt`, `1/sqrt`, `x^1.5`, `cbrt`, `powf`, variable exponent),
 //! multi-factor denominators, negative coefficients, constant and symbol
 //! outputs, shared subexpressions.
 //!
@@ -66,7 +66,13 @@ pub fn module(g: &Graph) -> Module {
                 Output::vector(&[
                     a.square() + b.powi(3) + c.powi(5),
                     a.powi(-1) + b.powi(-2) - 2.0 * c.powi(-3) + a.powi(-7),
-                    pos.sqrt() + pos.powf(-0.5) + pos.powf(1.5) + pos.powf(0.3) + pos.pow(k),
+                    pos.sqrt()
+                        + pos.powf(-0.5)
+                        + pos.powf(1.5)
+                        + pos.powf(0.3)
+                        + pos.pow(k)
+                        + pos.powf(1.0 / 3.0)
+                        + a.powf(2.0 / 3.0),
                     (shared + 1.0).square() * (shared - 2.0).powi(-2),
                 ]),
             ),

@@ -3,7 +3,8 @@
 //!
 //! Canonical forms are turned back into what a person would write: a sum
 //! term with a negative coefficient becomes `a - b`, a factor `b^-n` becomes
-//! a division, `x^0.5` becomes `x.sqrt()`, `x²` becomes `x * x`. Code is
+//! a division, `x^0.5` becomes `x.sqrt()`, `x^(1/3)` becomes `x.cbrt()`, `x²` becomes
+//! `x * x`. Code is
 //! generic over the scalar `T: Real` of the runtime crate: constants are
 //! `T::from_f64(c)`, functions are `Real` methods. The semantics of
 //! `max0`, `step` and `sign` (methods of `Real`) are exactly those of
@@ -94,18 +95,52 @@ impl<'a> Emitter<'a> {
         self.names[id.index()].as_ref().expect("node is not named")
     }
 
-    /// `let name = value;` for every scheduled `let`, in order.
+    /// `let name = value;` for every scheduled `let`, in order. A `sin u`
+    /// and a `cos u` that are both bound become one
+    /// `let (sin_u, cos_u) = u.sin_cos();` at the place of the first (both
+    /// depend only on `u`, bound earlier), counted as one transcendental
+    /// call.
     pub fn lets(&mut self) -> Vec<TokenStream> {
         let sched = self.sched;
-        sched
-            .lets
-            .iter()
-            .map(|&id| {
+        let g = self.g;
+        let mut partner: std::collections::HashMap<Id, Id> = std::collections::HashMap::new();
+        for &id in &sched.lets {
+            let Node::Unary(Unary::Sin, u) = g.node(id) else {
+                continue;
+            };
+            if let Some(c) = g.find(&Node::Unary(Unary::Cos, u))
+                && c.index() < sched.live.len()
+                && sched.live[c.index()]
+                && sched.is_named(c)
+            {
+                partner.insert(id, c);
+                partner.insert(c, id);
+            }
+        }
+        let mut out = Vec::with_capacity(sched.lets.len());
+        for &id in &sched.lets {
+            let Some(&other) = partner.get(&id) else {
                 let value = self.node(id).ts;
                 let name = self.name(id);
-                quote!(let #name = #value;)
-            })
-            .collect()
+                out.push(quote!(let #name = #value;));
+                continue;
+            };
+            if other < id {
+                continue; // emitted with its partner
+            }
+            let (sin, cos) = match g.node(id) {
+                Node::Unary(Unary::Sin, _) => (id, other),
+                _ => (other, id),
+            };
+            let Node::Unary(_, u) = g.node(sin) else {
+                unreachable!("paired node is a sine");
+            };
+            self.ops.transcendental += 1;
+            let x = self.frag(u).at(Prec::Atom);
+            let (s, c) = (self.name(sin), self.name(cos));
+            out.push(quote!(let (#s, #c) = #x.sin_cos();));
+        }
+        out
     }
 
     /// The expression for `id`: its name if named, else the node inlined.
@@ -147,14 +182,36 @@ impl<'a> Emitter<'a> {
     }
 
     /// A sum, terms in [`crate::eval::sum_order`]; negative-coefficient
-    /// terms subtracted.
+    /// terms subtracted; common factors taken out as
+    /// [`crate::eval::factor_sum`] says (as the interpreter does).
     fn sum(&mut self, xs: &[Id]) -> Frag {
+        let sched = self.sched;
+        let Some(f) = crate::eval::factor_sum(self.g, xs, |t| sched.is_named(t)) else {
+            let terms: Vec<(bool, Frag)> = xs.iter().map(|&x| self.signed_term(x)).collect();
+            return self.signed_sum(terms);
+        };
+        let terms: Vec<(bool, Frag)> = f
+            .rest
+            .iter()
+            .map(|(c, rest)| (*c < 0.0, self.product(rest, Some(c.abs()))))
+            .collect();
+        let inner = self.signed_sum(terms).at(Prec::Atom);
         let mut ts = TokenStream::new();
-        for (k, &x) in xs.iter().enumerate() {
+        for (k, &c) in f.common.iter().enumerate() {
+            let c = self.frag(c).at(Prec::Prefix);
+            ts = if k == 0 { c } else { quote!(#ts * #c) };
+        }
+        self.ops.mul += f.common.len();
+        Frag::new(quote!(#ts * #inner), Prec::Product)
+    }
+
+    /// `t₁ ± t₂ ± …` from (is negative, magnitude) pairs.
+    fn signed_sum(&mut self, terms: Vec<(bool, Frag)>) -> Frag {
+        let mut ts = TokenStream::new();
+        for (k, (negative, term)) in terms.into_iter().enumerate() {
             if k > 0 {
                 self.ops.add += 1;
             }
-            let (negative, term) = self.signed_term(x);
             ts = match (k, negative) {
                 (0, false) => term.at(Prec::Sum),
                 (0, true) => {
@@ -316,6 +373,13 @@ impl<'a> Emitter<'a> {
             self.ops.sqrt += 1;
             self.ops.mul += 1;
             Frag::new(quote!(#base * #base.sqrt()), Prec::Product)
+        } else if n == crate::eval::ONE_THIRD {
+            self.ops.transcendental += 1;
+            Frag::new(quote!(#base.cbrt()), Prec::Atom)
+        } else if n == crate::eval::TWO_THIRDS {
+            self.ops.transcendental += 1;
+            self.ops.mul += 1;
+            Frag::new(quote!(#base.cbrt().powi(2)), Prec::Atom)
         } else {
             self.ops.transcendental += 1;
             let n = lit_signed(n);

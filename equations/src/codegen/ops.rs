@@ -7,8 +7,10 @@ use std::ops::AddAssign;
 /// emitted (each `let` counted once, inlined expressions once).
 ///
 /// `abs` and negation are not counted (sign-bit operations); `powi(n)` counts
-/// as the multiplications of square-and-multiply; `powf`, `exp`, `ln`,
-/// trigonometric functions, `atan2` and `hypot` are transcendental calls;
+/// as the multiplications of square-and-multiply; `powf`, `cbrt`, `exp`,
+/// `ln`, trigonometric functions, `atan2` and `hypot` are transcendental
+/// calls, and `sin_cos` (emitted when a sine and a cosine of the same
+/// argument are both used) is one call, not two;
 /// each `if` is a branch (`max0`, `step` and `sign` contain them).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct OpCounts {

@@ -29,7 +29,8 @@ pub fn module(g: &Graph) -> Module {
     let pairs = [(xc, vc), (th, w)];
     let (bx, by) = (xc + l * th.sin(), -l * th.cos());
     let v2 = bx.dt(&pairs).square() + by.dt(&pairs).square();
-    let t = 0.5 * mc * vc.square() + 0.5 * m * v2;
+    // Expanded, so that sin² θ + cos² θ folds (the closed form's m l² θ̇²).
+    let t = (0.5 * mc * vc.square() + 0.5 * m * v2).expand();
     let v = m * grav * by;
     let lag = lagrange::derive(g, &coords, t, v, &[u, g.constant(0.0)]);
     Module {

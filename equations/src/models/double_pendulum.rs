@@ -32,7 +32,9 @@ pub fn module(g: &Graph) -> Module {
     let (x1, y1) = (l1 * th1.sin(), -l1 * th1.cos());
     let (x2, y2) = (x1 + l2 * th2.sin(), y1 - l2 * th2.cos());
     let pairs = [(th1, w1), (th2, w2)];
-    let t = 0.5 * m1 * speed2(x1, y1, &pairs) + 0.5 * m2 * speed2(x2, y2, &pairs);
+    // Expanded, so that the simplifier folds sin² + cos² and the cross terms
+    // cos θ1 cos θ2 + sin θ1 sin θ2 into cos(θ1 − θ2) (the closed form).
+    let t = (0.5 * m1 * speed2(x1, y1, &pairs) + 0.5 * m2 * speed2(x2, y2, &pairs)).expand();
     let v = grav * (m1 * y1 + m2 * y2);
     let zero = g.constant(0.0);
     let lag = lagrange::derive(g, &coords, t, v, &[zero, zero]);

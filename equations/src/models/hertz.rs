@@ -56,13 +56,15 @@ pub struct HertzState<'g> {
 /// The paper's (9)–(11) and (13) at load `q` (which must be `≥ 0`, e.g. a
 /// `max0` contact force).
 ///
-/// `p₀ = 3Q/(2πab)` is written as `(1.5 Q)^{1/3} (Σρ E*)^{2/3} / (π m_a m_b)`,
-/// which is the same quantity but stays finite (zero) at `Q = 0`.
+/// `p₀ = 3Q/(2πab)` is written as `s Σρ E* / (π m_a m_b)` with
+/// `s = (3Q/(2ΣρE*))^{1/3}` the scale of `a` and `b` (so
+/// `s ΣρE* = (1.5 Q)^{1/3} (Σρ E*)^{2/3}`): the same quantity, finite (zero)
+/// at `Q = 0`, and one cube root for `a`, `b` and `p₀` together.
 pub fn state<'g>(q: Expr<'g>, c: &HertzCoefficients<'g>) -> HertzState<'g> {
     let third = 1.0 / 3.0;
     let se = c.sum_curvature * c.contact_modulus;
     let scale = (1.5 * q / se).powf(third);
-    let p0 = (1.5 * q).powf(third) * se.powf(2.0 * third) / (PI * c.m_a * c.m_b);
+    let p0 = scale * se / (PI * c.m_a * c.m_b);
     let comp = 1.5 / c.contact_modulus;
     let delta = c.delta_star * (0.125 * comp.square() * q.square() * c.sum_curvature).powf(third);
     HertzState {

@@ -66,13 +66,17 @@ pub fn module(g: &Graph) -> Module {
     let rhs = (m * xdd - force.0, m * ydd - force.1);
 
     let (fa, fb) = cramer(u_a, u_b, rhs);
-    let moment_two =
-        j * thdd + torque(at_a, (fa * u_a.0, fa * u_a.1)) + torque(at_b, (fb * u_b.0, fb * u_b.1));
+    // Lever arms of unit contact forces, expanded: torque(at, f u) =
+    // f torque(at, u), and sin² θ + cos² θ folds (torque(at_A, u_A) = μ r − (l_c − l)).
+    let arm_a = torque(at_a, u_a).expand();
+    let arm_b = torque(at_b, u_b).expand();
+    let moment_two = j * thdd + fa * arm_a + fb * arm_b;
     // one-point: normal balance (u_A·n_A = 1, u_B·(−1, 0) = 1)
-    let fa_only = rhs.0 * n_a.0 + rhs.1 * n_a.1;
-    let moment_a = j * thdd + torque(at_a, (fa_only * u_a.0, fa_only * u_a.1));
+    // Expanded: f1 s c − f1 c s cancels and f2 (s² + c²) folds to f2.
+    let fa_only = (rhs.0 * n_a.0 + rhs.1 * n_a.1).expand();
+    let moment_a = j * thdd + fa_only * arm_a;
     let fb_only = -rhs.0;
-    let moment_b = j * thdd + torque(at_b, (fb_only * u_b.0, fb_only * u_b.1));
+    let moment_b = j * thdd + fb_only * arm_b;
 
     let pose = Input::new("pose", &[theta, l]);
     let load = Input::new("load", &[f1, f2]);
@@ -96,8 +100,7 @@ pub fn module(g: &Graph) -> Module {
     let u_t = (g.constant(1.0), -mu);
     let u_e = (-c + mu * s, -s - mu * c);
     let (ft, fe) = cramer(u_t, u_e, (-fx, -fz));
-    let m_tip =
-        -(torque(tip_at, (ft * u_t.0, ft * u_t.1)) + torque(edge_at, (fe * u_e.0, fe * u_e.1)));
+    let m_tip = -(ft * torque(tip_at, u_t).expand() + fe * torque(edge_at, u_e).expand());
 
     Module {
         name: "quasi_static".to_owned(),

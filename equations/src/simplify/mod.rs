@@ -27,6 +27,7 @@
 mod laws;
 pub mod rules;
 mod stable;
+mod trig;
 
 use std::collections::BTreeMap;
 

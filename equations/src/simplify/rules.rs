@@ -17,7 +17,7 @@
 use std::cell::Cell;
 use std::collections::HashMap;
 
-use super::{laws, stable};
+use super::{laws, stable, trig};
 use crate::graph::{Binary, Graph, Id, Node, Unary};
 
 /// Rewrites a sum whose like terms are already collected (the constant, if
@@ -121,6 +121,22 @@ pub static RULES: &[Rule] = &[
         domain: "all u, F",
         terminates: "removes a cos",
         site: Site::Sum(laws::pythagorean),
+        stable: false,
+    },
+    Rule {
+        name: "cos_angle_sum",
+        law: "c·F·cos a·cos b ± c·F·sin a·sin b = c·F·cos(a ∓ b) (a ≠ b)",
+        domain: "all a, b, F",
+        terminates: "removes a cos (a and b once instead of twice)",
+        site: Site::Sum(trig::cos_angle_sum),
+        stable: false,
+    },
+    Rule {
+        name: "sin_angle_sum",
+        law: "c·F·sin a·cos b ± c·F·cos a·sin b = c·F·sin(a ± b) (a ≠ b)",
+        domain: "all a, b, F",
+        terminates: "removes both cos (a and b once instead of twice)",
+        site: Site::Sum(trig::sin_angle_sum),
         stable: false,
     },
     Rule {

@@ -119,6 +119,18 @@ pub fn tree() -> impl Strategy<Value = Tree> {
                 b(c.clone()),
                 b(Mul(b(c), b(Powi(b(Un(Unary::Cos, b(x))), 2)))),
             )),
+            1 => (inner.clone(), inner.clone(), inner.clone(), any::<bool>()).prop_map(move |(x, y, c, minus)| {
+                let cc = Mul(b(Un(Unary::Cos, b(x.clone()))), b(Un(Unary::Cos, b(y.clone()))));
+                let ss = Mul(b(Un(Unary::Sin, b(x))), b(Un(Unary::Sin, b(y))));
+                let (l, r) = (Mul(b(c.clone()), b(cc)), Mul(b(c), b(ss)));
+                if minus { Sub(b(l), b(r)) } else { Add(b(l), b(r)) }
+            }),
+            1 => (inner.clone(), inner.clone(), inner.clone(), any::<bool>()).prop_map(move |(x, y, c, minus)| {
+                let sc = Mul(b(Un(Unary::Sin, b(x.clone()))), b(Un(Unary::Cos, b(y.clone()))));
+                let cs = Mul(b(Un(Unary::Cos, b(x))), b(Un(Unary::Sin, b(y))));
+                let (l, r) = (Mul(b(c.clone()), b(sc)), Mul(b(c), b(cs)));
+                if minus { Sub(b(l), b(r)) } else { Add(b(l), b(r)) }
+            }),
             1 => inner.clone().prop_map(move |x| Sqrt(b(Powi(b(x), 2)))),
             1 => (prop::sample::select(UNARY.to_vec()), inner.clone())
                 .prop_map(move |(f, x)| Un(f, b(Neg(b(x))))),
