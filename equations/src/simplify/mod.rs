@@ -213,6 +213,14 @@ pub fn mul(g: &Graph, factors: &[Id]) -> Id {
     if c == 0.0 {
         return konst(g, 0.0);
     }
+    if !nested {
+        // A power may also rewrite to a power of another base (|x|^2 → x^2)
+        // that collides with a factor collected separately (x^2): collect
+        // again. Terminates: merging two factors leaves strictly fewer.
+        let mut bases: Vec<Id> = out.iter().map(|&f| split_pow(g, f).0).collect();
+        bases.sort_unstable();
+        nested = bases.windows(2).any(|w| w[0] == w[1]);
+    }
     if nested {
         // Terminates: the nested products are factors of strictly smaller
         // expressions (a power's base), so this recursion descends.
