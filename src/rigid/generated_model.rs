@@ -18,7 +18,6 @@ use nalgebra::{SMatrix, SVector, Vector2, Vector3};
 use crate::generated::{
     rigid_peg, rigid_peg_frictionless, rigid_peg_planar, rigid_peg_planar_frictionless,
 };
-use crate::rigid::hand_dynamics::CONTACTS;
 use crate::rigid::prescribed::Reactions;
 use crate::rigid::{Loads, PegParams, RigidError};
 
@@ -366,15 +365,5 @@ pub fn contact_velocities(
 /// [`RigidError::NoSliding`] when a contact's sliding speed is zero or not
 /// finite.
 pub fn friction_directions(v: &[Vector3<f64>; 3]) -> Result<[Vector3<f64>; 3], RigidError> {
-    let mut t = [Vector3::zeros(); 3];
-    for (i, vi) in v.iter().enumerate() {
-        let speed = vi.norm();
-        if speed == 0.0 || !speed.is_finite() {
-            return Err(RigidError::NoSliding {
-                contact: CONTACTS[i],
-            });
-        }
-        t[i] = -vi / speed;
-    }
-    Ok(t)
+    crate::rigid::hand_dynamics::directions_opposing(v)
 }

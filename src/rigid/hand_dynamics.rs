@@ -81,8 +81,18 @@ pub fn com_bias(pose: &Pose, qdot: Vector2<f64>) -> Vector3<f64> {
 /// # Errors
 /// [`RigidError::NoSliding`] when a contact's sliding speed is zero.
 pub fn friction_directions(kin: &Kinematics) -> Result<[Vector3<f64>; 3], RigidError> {
+    directions_opposing(&kin.v_contacts_local)
+}
+
+/// t_i = −v_i/|v_i| for the sliding velocities `v` of K, B1, B2 (any
+/// components; the directions come out in the same ones).
+///
+/// # Errors
+/// [`RigidError::NoSliding`] when a contact's sliding speed is zero or not
+/// finite.
+pub fn directions_opposing(v: &[Vector3<f64>; 3]) -> Result<[Vector3<f64>; 3], RigidError> {
     let mut t = [Vector3::zeros(); 3];
-    for (i, v) in kin.v_contacts_local.iter().enumerate() {
+    for (i, v) in v.iter().enumerate() {
         let speed = v.norm();
         if speed == 0.0 || !speed.is_finite() {
             return Err(RigidError::NoSliding {
