@@ -199,3 +199,48 @@ fn jamming_k3_to_zero_is_refused_with_a_type() {
         assert!(k_factors(mu, theta).2.is_finite());
     }
 }
+
+/// Force ratio on the edge of the jamming parallelogram: the jam/no-jam
+/// verdict flips there, so the margin must be zero to rounding on every
+/// edge, finite everywhere, and a step of 1e-9 (in ratio units) inwards or
+/// outwards must classify as inside or outside — for small and large
+/// clearances, both friction levels and shallow to deep insertions, with
+/// the exact (finite-angle) and Whitney's parallelograms alike.
+#[test]
+fn force_ratio_on_the_parallelogram_edge() {
+    use pegdyn::jamming::diagram::{exact_parallelogram, whitney_parallelogram};
+    for (c, mu) in [(1e-6, 0.1), (0.002, 0.1), (0.01, 0.3)] {
+        let peg = PegHole::try_new(0.0125, c, mu).unwrap();
+        for l in [0.001, 0.005, 0.05] {
+            let mut shapes = vec![whitney_parallelogram(&peg, l).unwrap()];
+            shapes.extend(exact_parallelogram(&peg, l).unwrap());
+            for g in shapes {
+                let centre = g
+                    .corners
+                    .iter()
+                    .fold([0.0, 0.0], |s, q| [s[0] + 0.25 * q[0], s[1] + 0.25 * q[1]]);
+                for (a, b) in g.edges() {
+                    let scale = a[0].abs().max(a[1].abs()).max(b[0].abs()).max(b[1].abs());
+                    for s in [0.0, 0.25, 0.5, 1.0] {
+                        let on = [a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])];
+                        let m = g.margin(on);
+                        assert!(
+                            m.is_finite() && m.abs() <= 1e-14 * scale,
+                            "c = {c}, mu = {mu}, l = {l}: margin {m:e} on an edge"
+                        );
+                        let (dx, dy) = (centre[0] - on[0], centre[1] - on[1]);
+                        let n = dx.hypot(dy);
+                        let step = |k: f64| [on[0] + k * 1e-9 * dx / n, on[1] + k * 1e-9 * dy / n];
+                        if s > 0.0 && s < 1.0 {
+                            assert!(g.avoids_jamming(step(1.0)), "inward step must be inside");
+                        }
+                        assert!(
+                            !g.avoids_jamming(step(-1.0)),
+                            "outward step must be outside"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}

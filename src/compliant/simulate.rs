@@ -132,16 +132,6 @@ pub struct InsertionRun {
     pub stats: Stats,
 }
 
-fn add(total: &mut Stats, s: &Stats) {
-    total.steps += s.steps;
-    total.rejected += s.rejected;
-    total.rhs_calls += s.rhs_calls;
-    total.jacobian_calls += s.jacobian_calls;
-    total.time_derivative_calls += s.time_derivative_calls;
-    total.lu_factorizations += s.lu_factorizations;
-    total.event_calls += s.event_calls;
-}
-
 /// Whether the segment between the two contact points of a two-point state
 /// lies inside both friction cones (see the module documentation).
 pub fn contact_line_in_cones(params: &CompliantParams, y: &SVector<f64, N_STATE>) -> bool {
@@ -219,7 +209,7 @@ pub fn simulate_insertion(
                     .terminal(),
             );
         let sol = solver.solve(&sys, t, y, t_end)?;
-        add(&mut stats, &sol.stats);
+        stats += &sol.stats;
         let d0 = depth(&y);
         (t, y) = (sol.t_final, sol.x_final);
         match sol.stop {

@@ -70,6 +70,20 @@ pub struct Stats {
     pub event_calls: usize,
 }
 
+impl std::ops::AddAssign<&Stats> for Stats {
+    /// Adds the counters of a later integration (e.g. the next phase or
+    /// window of a run made of several).
+    fn add_assign(&mut self, s: &Stats) {
+        self.steps += s.steps;
+        self.rejected += s.rejected;
+        self.rhs_calls += s.rhs_calls;
+        self.jacobian_calls += s.jacobian_calls;
+        self.time_derivative_calls += s.time_derivative_calls;
+        self.lu_factorizations += s.lu_factorizations;
+        self.event_calls += s.event_calls;
+    }
+}
+
 /// An event that fired (terminal or not).
 #[derive(Debug, Clone, PartialEq)]
 pub struct EventHit<const N: usize> {

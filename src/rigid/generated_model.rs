@@ -153,7 +153,9 @@ fn lateral(loads: &Loads, psi: f64) -> f64 {
 }
 
 /// Checks parameters, finiteness and the three-point range.
-fn check_state(p: &PegParams, q: Vector2<f64>, qdot: Vector2<f64>) -> Result<(), RigidError> {
+/// Checks the parameters and the state; returns γ0 = arccos(d/D), computed
+/// once per call and handed to [`args`].
+fn check_state(p: &PegParams, q: Vector2<f64>, qdot: Vector2<f64>) -> Result<f64, RigidError> {
     p.validate()?;
     let values = [
         ("q", q[0]),
@@ -174,7 +176,7 @@ fn check_state(p: &PegParams, q: Vector2<f64>, qdot: Vector2<f64>) -> Result<(),
     if !(gamma > gamma0 && gamma < std::f64::consts::FRAC_PI_2) {
         return Err(RigidError::NotThreePoint { gamma, gamma0 });
     }
-    Ok(())
+    Ok(gamma0)
 }
 
 /// Inputs in the generated functions' order.
@@ -190,6 +192,7 @@ struct Args {
 
 fn args(
     p: &PegParams,
+    gamma0: f64,
     loads: &Loads,
     q: Vector2<f64>,
     qdot: Vector2<f64>,
@@ -201,7 +204,7 @@ fn args(
     Args {
         x2: SVector::<f64, 4>::new(q[0], q[1], qdot[0], qdot[1]),
         x1: SVector::<f64, 2>::new(q[0], qdot[0]),
-        p: p.to_vector(),
+        p: p.to_vector_with_gamma0(gamma0),
         loads2: loads.to_vector(),
         loads1: SVector::<f64, 3>::new(loads.m_gamma, in_plane, fz),
         t2: SVector::<f64, 9>::from_iterator(t.iter().flat_map(|v| v.iter().copied())),
@@ -244,9 +247,9 @@ pub fn forward(
     qdot: Vector2<f64>,
     t: &[Vector3<f64>; 3],
 ) -> Result<Accelerations, RigidError> {
-    check_state(p, q, qdot)?;
+    let gamma0 = check_state(p, q, qdot)?;
     variant.check(p, loads, q[1], qdot[1], t)?;
-    let a = args(p, loads, q, qdot, t);
+    let a = args(p, gamma0, loads, q, qdot, t);
     let gamma = q[0];
     let two = |system| solve5(system, gamma);
     let one = |system| solve3(system, gamma);
@@ -280,7 +283,7 @@ pub fn prescribed(
     qdd: Vector2<f64>,
     t: &[Vector3<f64>; 3],
 ) -> Result<Reactions, RigidError> {
-    check_state(p, q, qdot)?;
+    let gamma0 = check_state(p, q, qdot)?;
     let loads = Loads {
         m_gamma: 0.0,
         m_psi: 0.0,
@@ -297,7 +300,7 @@ pub fn prescribed(
             reason: "must be finite",
         });
     }
-    let a = args(p, &loads, q, qdot, t);
+    let a = args(p, gamma0, &loads, q, qdot, t);
     let (qdd2, qdd1) = (qdd, SVector::<f64, 1>::new(qdd[0]));
     let gamma = q[0];
     let two = |system| solve5(system, gamma);
@@ -345,8 +348,15 @@ pub fn contact_velocities(
     q: Vector2<f64>,
     qdot: Vector2<f64>,
 ) -> Result<[Vector3<f64>; 3], RigidError> {
-    check_state(p, q, qdot)?;
-    let a = args(p, &Loads::default(), q, qdot, &[Vector3::zeros(); 3]);
+    let gamma0 = check_state(p, q, qdot)?;
+    let a = args(
+        p,
+        gamma0,
+        &Loads::default(),
+        q,
+        qdot,
+        &[Vector3::zeros(); 3],
+    );
     let v = match variant {
         Variant::Full => rigid_peg::contact_velocities(&a.x2, &a.p),
         Variant::Frictionless => rigid_peg_frictionless::contact_velocities(&a.x2, &a.p),

@@ -121,6 +121,12 @@ impl PegParams {
     /// The parameter vector in the order the generated code takes it:
     /// `[D, d, H, m, g, f, γ0]`.
     pub fn to_vector(&self) -> nalgebra::SVector<f64, 7> {
+        self.to_vector_with_gamma0(self.gamma0())
+    }
+
+    /// As [`PegParams::to_vector`] with γ0 already computed (it must be
+    /// [`PegParams::gamma0`]: the generated code trusts it).
+    pub fn to_vector_with_gamma0(&self, gamma0: f64) -> nalgebra::SVector<f64, 7> {
         nalgebra::SVector::<f64, 7>::from([
             self.hole_diameter,
             self.peg_diameter,
@@ -128,7 +134,7 @@ impl PegParams {
             self.mass,
             self.gravity,
             self.friction,
-            self.gamma0(),
+            gamma0,
         ])
     }
 }

@@ -61,16 +61,6 @@ pub enum ForwardError {
     Rigid(#[from] RigidError),
 }
 
-fn add(total: &mut Stats, s: &Stats) {
-    total.steps += s.steps;
-    total.rejected += s.rejected;
-    total.rhs_calls += s.rhs_calls;
-    total.event_calls += s.event_calls;
-    total.jacobian_calls += s.jacobian_calls;
-    total.lu_factorizations += s.lu_factorizations;
-    total.time_derivative_calls += s.time_derivative_calls;
-}
-
 fn painleve(t: f64, x: Vector4<f64>, case: PainleveCase) -> ForwardStop {
     ForwardStop::Painleve { t, state: x, case }
 }
@@ -207,7 +197,7 @@ pub fn simulate_with_progress(
         let mut solver = solver.with_progress(&mut *progress);
         let system = PegSystem { model, start };
         let sol = solver.solve(&system, t, x, t_end)?;
-        add(&mut out.stats, &sol.stats);
+        out.stats += &sol.stats;
         for (ts, xs) in sol.t.iter().zip(&sol.x) {
             push_row(model, &mut out.rows, *ts, *xs, start);
         }
