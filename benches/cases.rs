@@ -9,7 +9,7 @@
 //! timed loop; only [`Case::interpret`] is timed.
 
 use nalgebra::{Dim, Matrix, RawStorage, SVector};
-use pegdyn::compliant::{CompliantParams, CompliantSpec, Load, PegState};
+use pegdyn::compliant::{CompliantParams, Load, PegState};
 use pegdyn_equations::eval::Tape;
 use pegdyn_equations::graph::SymKind;
 use pegdyn_equations::{Graph, models};
@@ -146,19 +146,17 @@ impl Cases {
     }
 }
 
-/// The compliant insertion scene (`scenes/insert_compliant.toml`): steel
-/// peg, D = 50 mm, c = 0.002, μ = 0.1, f₁ = 5 N, M = −0.002 N·m, tilted
-/// 0.01 rad in two-point contact (both contacts active).
+/// The compliant insertion scene, read from `scenes/insert_compliant.toml`
+/// so that the benches follow it (steel peg, D = 50 mm, c = 0.002,
+/// μ = 0.1, f₁ = 5 N, M = −0.002 N·m, tilted 0.01 rad in two-point contact).
 pub fn insertion_scene() -> (CompliantParams, Load, PegState) {
-    let params = CompliantParams::try_new(CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, 0.1))
-        .expect("reference spec is valid");
-    let load = Load {
-        axial: 5.0,
-        radial: 0.0,
-        torque: -0.002,
-    };
-    let start = PegState::two_point(&params, 0.01, 0.0).expect("two-point start exists");
-    (params, load, start)
+    let text = include_str!("../scenes/insert_compliant.toml");
+    let scene: pegdyn::compliant::scene::InsertCompliantScene =
+        pegdyn::scene::document::Document::parse(text)
+            .and_then(|d| d.body())
+            .expect("shipped scene parses");
+    let built = scene.build().expect("shipped scene is valid");
+    (built.params, built.load, built.initial)
 }
 
 /// `scenes/align_forward.toml` (the shipped rigid forward scene, read from

@@ -2,7 +2,7 @@
 //! state components whose error is reported, and the method settings.
 
 use nalgebra::SVector;
-use pegdyn::compliant::{CompliantParams, CompliantSpec, CompliantSystem, Load, PegState};
+use pegdyn::compliant::CompliantSystem;
 use pegdyn::rigid::forward::{ForwardModel, PegSystem};
 use pegdyn::rigid::{Loads, PegParams};
 use pegdyn::scene::align_forward::AlignForwardScene;
@@ -103,14 +103,14 @@ pub fn double_pendulum(t_end: f64) -> Problem<4, DoublePendulumSystem> {
 /// μ = 0.1, tilted 0.01 rad in two-point contact, f₁ = 5 N,
 /// M = −0.002 N·m), to 0.1 s (the peg reaches the 30 mm target at 0.11 s).
 pub fn insertion() -> Problem<8, CompliantSystem> {
-    let params = CompliantParams::try_new(CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, 0.1))
-        .expect("reference spec is valid");
-    let load = Load {
-        axial: 5.0,
-        radial: 0.0,
-        torque: -0.002,
-    };
-    let start = PegState::two_point(&params, 0.01, 0.0).expect("two-point start exists");
+    // Read from the shipped scene file, so that the diagram follows it.
+    let text = include_str!("../../scenes/insert_compliant.toml");
+    let scene: pegdyn::compliant::scene::InsertCompliantScene =
+        pegdyn::scene::document::Document::parse(text)
+            .and_then(|d| d.body())
+            .expect("shipped scene parses");
+    let built = scene.build().expect("shipped scene is valid");
+    let (params, load, start) = (built.params, built.load, built.initial);
     Problem {
         name: "insert_compliant",
         about: "compliant insertion (scenes/insert_compliant.toml) over 0.1 s: two-point contact, sliding, \
