@@ -209,6 +209,19 @@ fn reactions_over_weight_do_not_depend_on_mass() {
     }
 }
 
+/// Entries within 1e-13 of the larger of 1 and the largest entry.
+fn assert_close<const R: usize, const C: usize>(
+    u: &nalgebra::SMatrix<f64, R, C>,
+    v: &nalgebra::SMatrix<f64, R, C>,
+    gamma: f64,
+) {
+    let scale = u.abs().max().max(1.0);
+    assert!(
+        (u - v).abs().max() <= 1e-13 * scale,
+        "γ = {gamma}: {u} vs {v}"
+    );
+}
+
 #[test]
 fn frictionless_variant_is_the_full_variant_with_f_zero() {
     let p = PegParams {
@@ -222,12 +235,15 @@ fn frictionless_variant_is_the_full_variant_with_f_zero() {
             let t = nalgebra::SVector::<f64, 9>::from_fn(|k, _| (k as f64 * 0.37).sin());
             let (a, b) = rigid_peg::forward(&x, &pv, &lv, &t);
             let (af, bf) = rigid_peg_frictionless::forward(&x, &pv, &lv);
-            assert_eq!((a, b), (af, bf), "γ = {gamma}");
+            // Same values; the two modules are lowered apart (the full one
+            // factors its friction terms), so they round differently.
+            assert_close(&a, &af, gamma);
+            assert_close(&b, &bf, gamma);
             let qdd = Vector2::new(1.0, -2.0);
-            assert_eq!(
-                rigid_peg::prescribed(&x, &qdd, &pv, &lv, &t),
-                rigid_peg_frictionless::prescribed(&x, &qdd, &pv, &lv)
-            );
+            let full = rigid_peg::prescribed(&x, &qdd, &pv, &lv, &t);
+            let frictionless = rigid_peg_frictionless::prescribed(&x, &qdd, &pv, &lv);
+            assert_close(&full.0, &frictionless.0, gamma);
+            assert_close(&full.1, &frictionless.1, gamma);
         }
     }
 }

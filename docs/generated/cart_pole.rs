@@ -26,7 +26,7 @@ pub mod cart_pole {
     /// - `forcing`: vector of 2
     ///
     /// # Cost
-    /// 2 add/sub, 11 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 3 `let`s.
+    /// 2 add/sub, 8 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 5 `let`s.
     #[inline]
     pub fn dynamics<T: Real>(
         x: &SVector<T, 4>,
@@ -40,12 +40,11 @@ pub mod cart_pole {
         let g = p[3];
         let u = p[4];
         let (sin_theta, cos_theta) = theta.sin_cos();
-        let t0 = m * l * cos_theta;
-        let mass = Matrix2::new(mc + m, t0, t0, m * (l * l));
-        let forcing = Vector2::new(
-            u + m * l * sin_theta * (thetadot * thetadot),
-            -m * l * g * sin_theta,
-        );
+        let t0 = m * l;
+        let t1 = t0 * cos_theta;
+        let t2 = t0 * sin_theta;
+        let mass = Matrix2::new(mc + m, t1, t1, m * (l * l));
+        let forcing = Vector2::new(u + t2 * (thetadot * thetadot), -t2 * g);
         (mass, forcing)
     }
     /// First-order right-hand side ẋ = (q̇, M⁻¹f), M⁻¹f by Cramer's rule.
@@ -60,7 +59,7 @@ pub mod cart_pole {
     /// - `xdot`: vector of 4
     ///
     /// # Cost
-    /// 5 add/sub, 22 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 7 `let`s.
+    /// 5 add/sub, 20 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 9 `let`s.
     #[inline]
     pub fn rhs<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> SVector<T, 4> {
         let theta = x[1];
@@ -74,14 +73,16 @@ pub mod cart_pole {
         let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = l * l;
         let t1 = mc + m;
-        let t2 = u + m * l * sin_theta * (thetadot * thetadot);
-        let t3 = m * m;
-        let t4 = T::from_f64(1.0) / (t0 * (m * t1 - cos_theta * cos_theta * t3));
+        let t2 = m * m;
+        let t3 = m * l;
+        let t4 = T::from_f64(1.0) / (t0 * (m * t1 - cos_theta * cos_theta * t2));
+        let t5 = u + t3 * sin_theta * (thetadot * thetadot);
+        let t6 = g * sin_theta;
         Vector4::new(
             xcdot,
             thetadot,
-            t0 * (m * t2 + g * sin_theta * cos_theta * t3) * t4,
-            t4 * (m * l * (-(g * sin_theta * t1) - cos_theta * t2)),
+            t0 * (m * t5 + t6 * cos_theta * t2) * t4,
+            t3 * (-(t6 * t1) - cos_theta * t5) * t4,
         )
     }
     /// G = ∂f/∂x − Σ_j (∂M_{·j}/∂x) q̈_j (n × 2n) at the accelerations `qdd`;
@@ -98,7 +99,7 @@ pub mod cart_pole {
     /// - `terms`: 2×4 matrix
     ///
     /// # Cost
-    /// 2 add/sub, 13 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 2 `let`s.
+    /// 2 add/sub, 11 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 3 `let`s.
     #[inline]
     pub fn jacobian_terms<T: Real>(
         x: &SVector<T, 4>,
@@ -113,13 +114,14 @@ pub mod cart_pole {
         let l = p[2];
         let g = p[3];
         let (sin_theta, cos_theta) = theta.sin_cos();
+        let t0 = m * l;
         Matrix2x4::new(
             T::from_f64(0.0),
-            m * l * (thetaddot * sin_theta + cos_theta * (thetadot * thetadot)),
+            t0 * (thetaddot * sin_theta + cos_theta * (thetadot * thetadot)),
             T::from_f64(0.0),
-            T::from_f64(2.0) * thetadot * m * l * sin_theta,
+            T::from_f64(2.0) * t0 * thetadot * sin_theta,
             T::from_f64(0.0),
-            m * l * (-(g * cos_theta) + xcddot * sin_theta),
+            t0 * (-(g * cos_theta) + xcddot * sin_theta),
             T::from_f64(0.0),
             T::from_f64(0.0),
         )
@@ -136,7 +138,7 @@ pub mod cart_pole {
     /// - `energy`: scalar
     ///
     /// # Cost
-    /// 4 add/sub, 17 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 2 `let`s.
+    /// 4 add/sub, 12 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 2 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> T {
         let theta = x[1];
@@ -148,9 +150,9 @@ pub mod cart_pole {
         let g = p[3];
         let cos_theta = theta.cos();
         let t0 = xcdot * xcdot;
-        T::from_f64(0.5) * mc * t0 + T::from_f64(0.5) * m * t0
-            + xcdot * thetadot * m * l * cos_theta
-            + T::from_f64(0.5) * m * (thetadot * thetadot) * (l * l)
-            - m * l * g * cos_theta
+        m
+            * (cos_theta * (xcdot * thetadot - g) * l + T::from_f64(0.5) * t0
+                + T::from_f64(0.5) * (thetadot * thetadot) * (l * l))
+            + T::from_f64(0.5) * mc * t0
     }
 }

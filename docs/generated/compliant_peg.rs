@@ -53,7 +53,7 @@ pub mod compliant_peg {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 113 add/sub, 227 mul, 6 div, 4 sqrt, 6 transcendental, 16 branches; 78 `let`s.
+    /// 110 add/sub, 151 mul, 6 div, 4 sqrt, 6 transcendental, 16 branches; 93 `let`s.
     #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
@@ -86,77 +86,92 @@ pub mod compliant_peg {
         let t5 = -x;
         let t6 = -rho_h + t4 + t5;
         let t7 = rho_h - z;
-        let t8 = T::from_f64(0.5) * theta;
-        let (t9, t21) = t8.sin_cos();
-        let t10 = t9 * t9;
-        let t11 = r + t4 + t5 - sin_theta * t7 - T::from_f64(2.0) * t6 * t10;
+        let t8 = sin_theta * t7;
+        let t9 = T::from_f64(0.5) * theta;
+        let (t10, t22) = t9.sin_cos();
+        let t11 = t10 * t10;
         let t12 = cos_theta * t7;
         let t13 = sin_theta * t6 + t12;
         let t14 = -r;
-        let t15 = cos_theta * t13 + r * sin_theta;
-        let t16 = -(sin_theta * t13) + r * cos_theta;
-        let t17 = sin_theta * (xdot + thetadot * t15)
-            + cos_theta * (zdot + thetadot * t16);
-        let t18 = t11.max0();
-        let t19 = t18 * t18.sqrt();
-        let t20 = -T::from_f64(1.0) + T::from_f64(2.0) * t10;
-        let t22 = -(cos_theta * t7) - T::from_f64(2.0) * t6 * t9 * t21;
-        let t23 = xdot * t20 + zdot * sin_theta + thetadot * t22;
-        let t24 = (T::from_f64(1.0) + hc_alpha * t23).max0();
-        let t25 = k_edge * t19 * (t24 - T::from_f64(1.0));
-        let t26 = v_s.hypot(t17);
-        let t27 = T::from_f64(1.0) / t26;
-        let t28 = t11.step();
-        let t29 = -rho_p;
-        let t30 = l_c + t29;
-        let t31 = r + t29;
-        let t32 = r + t4 + x + sin_theta * t30 - T::from_f64(2.0) * t10 * t31;
-        let t33 = -(sin_theta * (l_c + t29 + rho_p * sin_theta))
-            - cos_theta * (r - T::from_f64(2.0) * rho_p * t10);
-        let t34 = zdot + thetadot * t33;
-        let t35 = t32.max0();
-        let t36 = t35 * t35.sqrt();
-        let t37 = cos_theta * t30 - T::from_f64(2.0) * t9 * t21 * t31;
-        let t38 = xdot + thetadot * t37;
-        let t39 = (T::from_f64(1.0) + hc_alpha * t38).max0();
-        let t40 = k_wall * t36 * (t39 - T::from_f64(1.0));
-        let t41 = v_s.hypot(t34);
-        let t42 = T::from_f64(1.0) / t41;
-        let t43 = t32.step();
-        let t44 = rho_h + T::from_f64(0.5) * d + t5;
-        let t45 = r + t4 + x + sin_theta * t7 + T::from_f64(2.0) * t10 * t44;
-        let t46 = t12 + sin_theta * t44;
-        let t47 = -(r * sin_theta) + cos_theta * t46;
-        let t48 = -(r * cos_theta) - sin_theta * t46;
-        let t49 = sin_theta * (xdot + thetadot * t47)
-            + cos_theta * (zdot + thetadot * t48);
-        let t50 = t45.max0();
-        let t51 = t50 * t50.sqrt();
-        let t52 = T::from_f64(1.0) - T::from_f64(2.0) * t10;
-        let t53 = t12 + T::from_f64(2.0) * t9 * t21 * t44;
-        let t54 = xdot * t52 - zdot * sin_theta + thetadot * t53;
-        let t55 = (T::from_f64(1.0) + hc_alpha * t54).max0();
-        let t56 = k_edge * t51 * (t55 - T::from_f64(1.0));
-        let t57 = v_s.hypot(t49);
-        let t58 = T::from_f64(1.0) / t57;
-        let t59 = t45.step();
-        let t60 = rho_p + t14;
-        let t61 = r + t4 + t5 - sin_theta * t30 + T::from_f64(2.0) * t10 * t60;
-        let t62 = -(sin_theta * (l_c + t29 - rho_p * sin_theta))
-            - cos_theta * (t14 + T::from_f64(2.0) * rho_p * t10);
-        let t63 = zdot + thetadot * t62;
-        let t64 = t61.max0();
-        let t65 = t64 * t64.sqrt();
-        let t66 = -(cos_theta * t30) + T::from_f64(2.0) * t9 * t21 * t60;
-        let t67 = -xdot + thetadot * t66;
-        let t68 = (T::from_f64(1.0) + hc_alpha * t67).max0();
-        let t69 = k_wall * t65 * t68;
-        let t70 = -k_wall * t65;
-        let t71 = t69 + t70;
-        let t72 = v_s.hypot(t63);
-        let t73 = T::from_f64(1.0) / t72;
-        let t74 = t61.step();
-        let t75 = T::from_f64(1.0) / m;
+        let t15 = r * sin_theta;
+        let t16 = cos_theta * t13 + t15;
+        let t17 = r * cos_theta;
+        let t18 = -(sin_theta * t13) + t17;
+        let t19 = sin_theta * (xdot + thetadot * t16)
+            + cos_theta * (zdot + thetadot * t18);
+        let t20 = -T::from_f64(1.0) + T::from_f64(2.0) * t11;
+        let t21 = zdot * sin_theta;
+        let t23 = t10 * t22;
+        let t24 = v_s.hypot(t19);
+        let t25 = -rho_p;
+        let t26 = l_c + t25;
+        let t27 = r + t25;
+        let t28 = sin_theta * t26;
+        let t29 = rho_p * sin_theta;
+        let t30 = rho_p * t11;
+        let t31 = cos_theta * t26;
+        let t32 = rho_h + T::from_f64(0.5) * d + t5;
+        let t33 = t12 + sin_theta * t32;
+        let t34 = T::from_f64(1.0) - T::from_f64(2.0) * t11;
+        let t35 = rho_p + t14;
+        let t36 = T::from_f64(1.0) / m;
+        let t37 = r + t4 + x + t28 - T::from_f64(2.0) * t11 * t27;
+        let t38 = t37.max0();
+        let t39 = t38 * t38.sqrt();
+        let t40 = t37.step();
+        let t41 = r + t4 + x + t8 + T::from_f64(2.0) * t11 * t32;
+        let t42 = t41.max0();
+        let t43 = t42 * t42.sqrt();
+        let t44 = t41.step();
+        let t45 = -t40;
+        let t46 = r + t4 + t5 - t8 - T::from_f64(2.0) * t6 * t11;
+        let t47 = t46.max0();
+        let t48 = t47 * t47.sqrt();
+        let t49 = -t12 - T::from_f64(2.0) * t23 * t6;
+        let t50 = xdot * t20 + t21 + thetadot * t49;
+        let t51 = (T::from_f64(1.0) + hc_alpha * t50).max0();
+        let t52 = t46.step();
+        let t53 = -(sin_theta * (l_c + t25 + t29))
+            - cos_theta * (r - T::from_f64(2.0) * t30);
+        let t54 = zdot + thetadot * t53;
+        let t55 = t31 - T::from_f64(2.0) * t23 * t27;
+        let t56 = xdot + thetadot * t55;
+        let t57 = (T::from_f64(1.0) + hc_alpha * t56).max0();
+        let t58 = v_s.hypot(t54);
+        let t59 = -t15 + cos_theta * t33;
+        let t60 = -t17 - sin_theta * t33;
+        let t61 = sin_theta * (xdot + thetadot * t59)
+            + cos_theta * (zdot + thetadot * t60);
+        let t62 = t12 + T::from_f64(2.0) * t23 * t32;
+        let t63 = xdot * t34 - t21 + thetadot * t62;
+        let t64 = (T::from_f64(1.0) + hc_alpha * t63).max0();
+        let t65 = v_s.hypot(t61);
+        let t66 = r + t4 + t5 - t28 + T::from_f64(2.0) * t11 * t35;
+        let t67 = -(sin_theta * (l_c + t25 - t29))
+            - cos_theta * (t14 + T::from_f64(2.0) * t30);
+        let t68 = zdot + thetadot * t67;
+        let t69 = t66.max0();
+        let t70 = t69 * t69.sqrt();
+        let t71 = -t31 + T::from_f64(2.0) * t23 * t35;
+        let t72 = -xdot + thetadot * t71;
+        let t73 = (T::from_f64(1.0) + hc_alpha * t72).max0();
+        let t74 = v_s.hypot(t68);
+        let t75 = t66.step();
+        let t76 = t51 - T::from_f64(1.0);
+        let t77 = t57 - T::from_f64(1.0);
+        let t78 = t64 - T::from_f64(1.0);
+        let t79 = t73 - T::from_f64(1.0);
+        let t80 = -t52 - t76;
+        let t81 = mu * sin_theta;
+        let t82 = t51 / t24;
+        let t83 = t82 * t19;
+        let t84 = -t44 - t78;
+        let t85 = t64 / t65;
+        let t86 = t85 * t61;
+        let t87 = t57 / t58;
+        let t88 = t87 * t54;
+        let t89 = t73 / t74;
+        let t90 = t89 * t68;
         SMatrix::<
             T,
             8,
@@ -166,30 +181,31 @@ pub mod compliant_peg {
                 xdot,
                 zdot,
                 thetadot,
-                (t0 + t1 - k_edge * t19 * t20 * t28 - t20 * t25
-                    - mu * k_edge * sin_theta * t17 * t19 * t24 * t27 + k_wall * t36
-                    - k_wall * t36 * t43 - k_wall * t36 * t39 - k_edge * t51 * t52 * t59
-                    - t52 * t56 - mu * k_edge * sin_theta * t49 * t51 * t55 * t58 + t69
-                    + t70 + k_wall * t65 * t74) * t75,
-                (t2 + t3 - k_edge * sin_theta * t19 * t28 - sin_theta * t25
-                    - mu * k_edge * cos_theta * t17 * t19 * t24 * t27
-                    - mu * k_wall * t34 * t36 * t39 * t42
-                    + k_edge * sin_theta * t51 * t59 + sin_theta * t56
-                    - mu * k_edge * cos_theta * t49 * t51 * t55 * t58
-                    - mu * k_wall * t63 * t65 * t68 * t73) * t75,
-                (m_2 - k_edge * t19 * t22 * t28 - t22 * t25
-                    - mu * k_edge * t17 * t19 * t24 * t27
-                        * (sin_theta * t15 + cos_theta * t16) - k_wall * t36 * t37 * t43
-                    - t37 * t40 - mu * k_wall * t33 * t34 * t36 * t39 * t42
-                    - k_edge * t51 * t53 * t59 - t53 * t56
-                    - mu * k_edge * t49 * t51 * t55 * t58
-                        * (sin_theta * t47 + cos_theta * t48) - k_wall * t65 * t66 * t74
-                    - t66 * t71 - mu * k_wall * t62 * t63 * t65 * t68 * t73) / j,
+                (k_edge * (t48 * (t20 * t80 - t81 * t83) + t43 * (t34 * t84 - t81 * t86))
+                    + k_wall
+                        * (t39 * (T::from_f64(1.0) + t45 - t57)
+                            + t70 * (t73 - T::from_f64(1.0) + t75)) + t0 + t1) * t36,
+                (k_edge
+                    * (sin_theta * (t48 * t80 + t43 * (t44 + t78))
+                        + cos_theta * (-(t83 * t48) - t86 * t43) * mu)
+                    + k_wall * (-(t88 * t39) - t90 * t70) * mu + t2 + t3) * t36,
+                (m_2
+                    + k_edge
+                        * (t48
+                            * (t49 * t80
+                                - t83 * mu * (sin_theta * t16 + cos_theta * t18))
+                            + t43
+                                * (t62 * t84
+                                    - t86 * mu * (sin_theta * t59 + cos_theta * t60)))
+                    + k_wall
+                        * (t39 * (t55 * (t45 - t77) - t88 * mu * t53)
+                            + t70 * (t71 * (-t75 - t79) - t90 * mu * t67))) / j,
                 xdot * (t0 + t1) + zdot * (t2 + t3) + thetadot * m_2,
-                mu * k_edge * t19 * t24 * t27 * (t17 * t17) + t23 * t25
-                    + mu * k_wall * t36 * t39 * t42 * (t34 * t34) + t38 * t40
-                    + mu * k_edge * t51 * t55 * t58 * (t49 * t49) + t54 * t56
-                    + mu * k_wall * t65 * t68 * t73 * (t63 * t63) + t67 * t71,
+                mu
+                    * (k_edge * (t82 * t48 * (t19 * t19) + t85 * t43 * (t61 * t61))
+                        + k_wall * (t87 * t39 * (t54 * t54) + t89 * t70 * (t68 * t68)))
+                    + k_edge * (t50 * t48 * t76 + t63 * t43 * t78)
+                    + k_wall * (t56 * t39 * t77 + t72 * t70 * t79),
             ],
         )
     }
@@ -203,7 +219,7 @@ pub mod compliant_peg {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 474 add/sub, 2058 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 219 `let`s.
+    /// 400 add/sub, 777 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 320 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -228,249 +244,332 @@ pub mod compliant_peg {
         let m_2 = p[13];
         let hc_alpha = p[23];
         let (sin_theta, cos_theta) = theta.sin_cos();
-        let t0 = f1 * cos_theta;
-        let t1 = -f2 * sin_theta;
-        let t2 = t0 + t1;
-        let t3 = -T::from_f64(0.5) * d;
-        let t4 = -x;
-        let t5 = -rho_h + t3 + t4;
-        let t6 = rho_h - z;
-        let t7 = -sin_theta * t6;
-        let t8 = sin_theta * t6;
-        let t9 = cos_theta * t5 + t7;
+        let t0 = f1 * sin_theta;
+        let t1 = f2 * cos_theta;
+        let t2 = f1 * cos_theta;
+        let t3 = -f2 * sin_theta;
+        let t4 = t2 + t3;
+        let t5 = -T::from_f64(0.5) * d;
+        let t6 = -x;
+        let t7 = -rho_h + t5 + t6;
+        let t8 = rho_h - z;
+        let t9 = sin_theta * t8;
         let t10 = T::from_f64(0.5) * theta;
-        let (t11, t30) = t10.sin_cos();
+        let (t11, t29) = t10.sin_cos();
         let t12 = t11 * t11;
-        let t13 = r + t3 + t4 + t7 - T::from_f64(2.0) * t5 * t12;
-        let t14 = cos_theta * t6;
-        let t15 = sin_theta * t5 + t14;
-        let t16 = -r;
-        let t17 = -r * sin_theta;
-        let t18 = r * sin_theta;
-        let t19 = cos_theta * t15 + t18;
-        let t20 = xdot + thetadot * t19;
-        let t21 = -sin_theta * t15;
-        let t22 = -r * cos_theta;
-        let t23 = r * cos_theta;
-        let t24 = t21 + t23;
-        let t25 = zdot + thetadot * t24;
-        let t26 = sin_theta * t20 + cos_theta * t25;
-        let t27 = t13.max0();
-        let t28 = t27 * t27.sqrt();
-        let t29 = -T::from_f64(1.0) + T::from_f64(2.0) * t12;
-        let t31 = -(cos_theta * t6) - T::from_f64(2.0) * t5 * t11 * t30;
-        let t32 = xdot * t29 + zdot * sin_theta + thetadot * t31;
-        let t33 = T::from_f64(1.0) + hc_alpha * t32;
-        let t34 = t33.max0();
-        let t35 = k_edge * t28 * (t34 - T::from_f64(1.0));
-        let t36 = v_s.hypot(t26);
-        let t37 = T::from_f64(1.0) / t36;
-        let t38 = t13.step();
-        let t39 = sin_theta * t19 + cos_theta * t24;
-        let t40 = t26 * t26;
-        let t41 = -rho_p;
-        let t42 = l_c + t41;
-        let t43 = r + t41;
-        let t44 = sin_theta * t42;
-        let t45 = r + t3 + x + t44 - T::from_f64(2.0) * t12 * t43;
-        let t46 = l_c + t41 + rho_p * sin_theta;
-        let t47 = r - T::from_f64(2.0) * rho_p * t12;
-        let t48 = -(sin_theta * t46) - cos_theta * t47;
-        let t49 = zdot + thetadot * t48;
-        let t50 = t45.max0();
-        let t51 = t50 * t50.sqrt();
-        let t52 = cos_theta * t42 - T::from_f64(2.0) * t11 * t30 * t43;
-        let t53 = xdot + thetadot * t52;
-        let t54 = T::from_f64(1.0) + hc_alpha * t53;
-        let t55 = t54.max0();
-        let t56 = k_wall * t51 * t55;
-        let t57 = -k_wall * t51;
-        let t58 = t56 + t57;
-        let t59 = v_s.hypot(t49);
-        let t60 = T::from_f64(1.0) / t59;
-        let t61 = t45.step();
-        let t62 = t49 * t49;
-        let t63 = rho_h + T::from_f64(0.5) * d + t4;
-        let t64 = t7 + cos_theta * t63;
-        let t65 = r + t3 + x + t8 + T::from_f64(2.0) * t12 * t63;
-        let t66 = t14 + sin_theta * t63;
-        let t67 = t17 + cos_theta * t66;
-        let t68 = xdot + thetadot * t67;
-        let t69 = -sin_theta * t66;
-        let t70 = t22 + t69;
-        let t71 = zdot + thetadot * t70;
-        let t72 = sin_theta * t68 + cos_theta * t71;
-        let t73 = t65.max0();
-        let t74 = t73 * t73.sqrt();
-        let t75 = T::from_f64(1.0) - T::from_f64(2.0) * t12;
-        let t76 = t14 + T::from_f64(2.0) * t11 * t30 * t63;
-        let t77 = xdot * t75 - zdot * sin_theta + thetadot * t76;
-        let t78 = T::from_f64(1.0) + hc_alpha * t77;
-        let t79 = t78.max0();
-        let t80 = k_edge * t74 * (t79 - T::from_f64(1.0));
-        let t81 = v_s.hypot(t72);
-        let t82 = T::from_f64(1.0) / t81;
-        let t83 = t65.step();
-        let t84 = sin_theta * t67 + cos_theta * t70;
-        let t85 = t72 * t72;
-        let t86 = rho_p + t16;
-        let t87 = -sin_theta * t42;
-        let t88 = r + t3 + t4 + t87 + T::from_f64(2.0) * t12 * t86;
-        let t89 = l_c + t41 - rho_p * sin_theta;
-        let t90 = t16 + T::from_f64(2.0) * rho_p * t12;
-        let t91 = -(sin_theta * t89) - cos_theta * t90;
-        let t92 = zdot + thetadot * t91;
-        let t93 = t88.max0();
-        let t94 = t93 * t93.sqrt();
-        let t95 = -(cos_theta * t42) + T::from_f64(2.0) * t11 * t30 * t86;
-        let t96 = -xdot + thetadot * t95;
-        let t97 = T::from_f64(1.0) + hc_alpha * t96;
-        let t98 = t97.max0();
-        let t99 = k_wall * t94 * (t98 - T::from_f64(1.0));
-        let t100 = v_s.hypot(t92);
-        let t101 = T::from_f64(1.0) / t100;
-        let t102 = t88.step();
-        let t103 = t92 * t92;
-        let t104 = T::from_f64(1.0) / m;
-        let t105 = T::from_f64(1.0) / j;
-        let t106 = t27.sqrt();
-        let t107 = t29 * t29;
-        let t108 = t38 * t38;
-        let t109 = t33.step();
-        let t110 = k_edge
-            * (T::from_f64(1.5) * t29 * t34 * t38 * t106
-                + T::from_f64(2.0) * thetadot * hc_alpha * t11 * t28 * t30 * t109
-                - T::from_f64(1.5) * t29 * t38 * t106);
-        let t111 = sin_theta * sin_theta;
-        let t112 = t50.sqrt();
-        let t113 = t61 * t61;
-        let t114 = t73.sqrt();
-        let t115 = t75 * t75;
-        let t116 = t83 * t83;
-        let t117 = t78.step();
-        let t118 = k_edge
-            * (T::from_f64(1.5) * t75 * t79 * t83 * t114
-                - T::from_f64(2.0) * thetadot * hc_alpha * t11 * t30 * t74 * t117
-                - T::from_f64(1.5) * t75 * t83 * t114);
-        let t119 = t93.sqrt();
-        let t120 = -T::from_f64(1.5) * k_wall * t98 * t102 * t119;
-        let t121 = T::from_f64(1.5) * k_wall * t102 * t119;
-        let t122 = t102 * t102;
-        let t123 = -T::from_f64(1.5) * k_edge * sin_theta * t29 * t106 * t108;
-        let t124 = k_edge
-            * (T::from_f64(1.5) * sin_theta * t34 * t38 * t106
-                + thetadot * hc_alpha * cos_theta * t28 * t109
-                - T::from_f64(1.5) * sin_theta * t38 * t106);
-        let t125 = cos_theta * cos_theta;
-        let t126 = T::from_f64(1.5) * k_edge * sin_theta * t75 * t114 * t116;
-        let t127 = k_edge
-            * (-(T::from_f64(1.5) * sin_theta * t79 * t83 * t114)
-                - thetadot * hc_alpha * cos_theta * t74 * t117
-                + T::from_f64(1.5) * sin_theta * t83 * t114);
-        let t128 = -T::from_f64(1.5) * k_edge * t29 * t31 * t106 * t108;
-        let t129 = -T::from_f64(2.0) * k_edge * t11 * t28 * t30 * t38;
-        let t130 = -T::from_f64(2.0) * t11 * t30 * t35;
-        let t131 = t30 * t30;
-        let t132 = t8 + t5 * t12 - t5 * t131;
-        let t133 = T::from_f64(2.0) * xdot * t11 * t30 + zdot * cos_theta
-            + thetadot * t132;
-        let t134 = k_edge
-            * (T::from_f64(1.5) * t31 * t34 * t38 * t106 + hc_alpha * t28 * t109 * t133
-                - T::from_f64(1.5) * t31 * t38 * t106);
-        let t135 = t21 + t23 + cos_theta * t9;
-        let t136 = t17 - cos_theta * t15 - sin_theta * t9;
-        let t137 = cos_theta * t20 + thetadot * sin_theta * t135 - sin_theta * t25
-            + thetadot * cos_theta * t136;
-        let t138 = T::from_f64(1.0) / (t36 * t36 * t36);
-        let t139 = -T::from_f64(1.5) * k_wall * t52 * t112 * t113;
-        let t140 = t12 * t43 + t87 - t43 * t131;
-        let t141 = t54.step();
-        let t142 = -T::from_f64(1.5) * k_edge * t75 * t76 * t114 * t116;
-        let t143 = T::from_f64(2.0) * k_edge * t11 * t30 * t74 * t83;
-        let t144 = T::from_f64(2.0) * t11 * t30 * t80;
-        let t145 = t7 + t63 * t131 - t12 * t63;
-        let t146 = -(T::from_f64(2.0) * xdot * t11 * t30) - zdot * cos_theta
-            + thetadot * t145;
-        let t147 = k_edge
-            * (T::from_f64(1.5) * t76 * t79 * t83 * t114 + hc_alpha * t74 * t117 * t146
-                - T::from_f64(1.5) * t76 * t83 * t114);
-        let t148 = t22 + t69 + cos_theta * t64;
-        let t149 = t18 - cos_theta * t66 - sin_theta * t64;
-        let t150 = cos_theta * t68 + thetadot * sin_theta * t148 - sin_theta * t71
-            + thetadot * cos_theta * t149;
-        let t151 = T::from_f64(1.0) / (t81 * t81 * t81);
-        let t152 = T::from_f64(1.5) * k_wall * t95 * t98 * t102 * t119;
-        let t153 = t44 + t86 * t131 - t12 * t86;
-        let t154 = t97.step();
-        let t155 = thetadot * k_wall * hc_alpha * t94 * t153 * t154;
-        let t156 = -T::from_f64(1.5) * k_wall * t95 * t102 * t119;
-        let t157 = T::from_f64(1.5) * k_wall * t95 * t119 * t122;
-        let t158 = -k_edge * hc_alpha * sin_theta * t28 * t29 * t109;
-        let t159 = -mu * k_edge * sin_theta * cos_theta * t28 * t34 * t37;
-        let t160 = mu * k_edge * sin_theta * cos_theta * t28 * t34 * t40 * t138;
-        let t161 = k_edge * hc_alpha * sin_theta * t74 * t75 * t117;
-        let t162 = -mu * k_edge * sin_theta * cos_theta * t74 * t79 * t82;
-        let t163 = mu * k_edge * sin_theta * cos_theta * t74 * t79 * t85 * t151;
-        let t164 = -k_edge * hc_alpha * t28 * t29 * t31 * t109;
-        let t165 = -mu * k_edge * sin_theta * t28 * t34 * t37 * t39;
-        let t166 = mu * k_edge * sin_theta * t28 * t34 * t39 * t40 * t138;
-        let t167 = -k_wall * hc_alpha * t51 * t52 * t141;
-        let t168 = -k_edge * hc_alpha * t74 * t75 * t76 * t117;
-        let t169 = -mu * k_edge * sin_theta * t74 * t79 * t82 * t84;
-        let t170 = mu * k_edge * sin_theta * t74 * t79 * t84 * t85 * t151;
-        let t171 = k_wall * hc_alpha * t94 * t95 * t154;
-        let t172 = -f1 * sin_theta;
-        let t173 = -f2 * cos_theta;
-        let t174 = -k_edge * cos_theta * t28 * t38;
-        let t175 = -T::from_f64(1.5) * k_edge * sin_theta * t31 * t106 * t108;
-        let t176 = -cos_theta * t35;
-        let t177 = sin_theta * t47 - cos_theta * t46 - rho_p * sin_theta * cos_theta
-            + T::from_f64(2.0) * rho_p * cos_theta * t11 * t30;
-        let t178 = T::from_f64(1.0) / (t59 * t59 * t59);
-        let t179 = k_edge * cos_theta * t74 * t83;
-        let t180 = T::from_f64(1.5) * k_edge * sin_theta * t76 * t114 * t116;
-        let t181 = cos_theta * t80;
-        let t182 = sin_theta * t90 + rho_p * sin_theta * cos_theta - cos_theta * t89
-            - T::from_f64(2.0) * rho_p * cos_theta * t11 * t30;
-        let t183 = T::from_f64(1.0) / (t100 * t100 * t100);
-        let t184 = -k_edge * hc_alpha * sin_theta * t28 * t31 * t109;
-        let t185 = -mu * k_edge * cos_theta * t28 * t34 * t37 * t39;
-        let t186 = mu * k_edge * cos_theta * t28 * t34 * t39 * t40 * t138;
-        let t187 = -mu * k_wall * t48 * t51 * t55 * t60;
-        let t188 = mu * k_wall * t48 * t51 * t55 * t62 * t178;
-        let t189 = k_edge * hc_alpha * sin_theta * t74 * t76 * t117;
-        let t190 = -mu * k_edge * cos_theta * t74 * t79 * t82 * t84;
-        let t191 = mu * k_edge * cos_theta * t74 * t79 * t84 * t85 * t151;
-        let t192 = -mu * k_wall * t91 * t94 * t98 * t101;
-        let t193 = mu * k_wall * t91 * t94 * t98 * t103 * t183;
-        let t194 = k_wall * t61 * t112 * (T::from_f64(1.5) * t55 - T::from_f64(1.5));
-        let t195 = t120 + t121;
-        let t196 = t31 * t31;
-        let t197 = t52 * t52;
-        let t198 = k_wall
-            * (thetadot * hc_alpha * t51 * t140 * t141
-                + T::from_f64(1.5) * t52 * t55 * t61 * t112
-                - T::from_f64(1.5) * t52 * t61 * t112);
-        let t199 = t76 * t76;
-        let t200 = t95 * t95;
-        let t201 = t152 + t155 + t156;
-        let t202 = t39 * t39;
-        let t203 = cos_theta * t47 + sin_theta * t46;
-        let t204 = t203 * t203;
-        let t205 = t84 * t84;
-        let t206 = cos_theta * t90 + sin_theta * t89;
-        let t207 = t206 * t206;
-        let t208 = t26 * t26 * t26;
-        let t209 = T::from_f64(2.0) * sin_theta * t20
-            + T::from_f64(2.0) * cos_theta * t25;
-        let t210 = t49 * t49 * t49;
-        let t211 = T::from_f64(2.0) * zdot;
-        let t212 = t211 + T::from_f64(2.0) * thetadot * t48;
-        let t213 = t72 * t72 * t72;
-        let t214 = T::from_f64(2.0) * sin_theta * t68
-            + T::from_f64(2.0) * cos_theta * t71;
-        let t215 = t92 * t92 * t92;
-        let t216 = t211 + T::from_f64(2.0) * thetadot * t91;
+        let t13 = cos_theta * t8;
+        let t14 = sin_theta * t7 + t13;
+        let t15 = -r;
+        let t16 = cos_theta * t14;
+        let t17 = r * sin_theta;
+        let t18 = t16 + t17;
+        let t19 = xdot + thetadot * t18;
+        let t20 = -sin_theta * t14;
+        let t21 = r * cos_theta;
+        let t22 = t20 + t21;
+        let t23 = zdot + thetadot * t22;
+        let t24 = sin_theta * t19;
+        let t25 = cos_theta * t23;
+        let t26 = t24 + t25;
+        let t27 = -T::from_f64(1.0) + T::from_f64(2.0) * t12;
+        let t28 = zdot * sin_theta;
+        let t30 = t11 * t29;
+        let t31 = v_s.hypot(t26);
+        let t32 = T::from_f64(1.0) / t31;
+        let t33 = sin_theta * t18 + cos_theta * t22;
+        let t34 = t26 * t26;
+        let t35 = -rho_p;
+        let t36 = l_c + t35;
+        let t37 = r + t35;
+        let t38 = sin_theta * t36;
+        let t39 = rho_p * sin_theta;
+        let t40 = l_c + t35 + t39;
+        let t41 = rho_p * t12;
+        let t42 = sin_theta * t40;
+        let t43 = cos_theta * t36;
+        let t44 = rho_h + T::from_f64(0.5) * d + t6;
+        let t45 = t13 + sin_theta * t44;
+        let t46 = cos_theta * t45;
+        let t47 = -sin_theta * t45;
+        let t48 = T::from_f64(1.0) - T::from_f64(2.0) * t12;
+        let t49 = rho_p + t15;
+        let t50 = T::from_f64(1.0) / m;
+        let t51 = T::from_f64(1.0) / j;
+        let t52 = t27 * t27;
+        let t53 = sin_theta * sin_theta;
+        let t54 = t48 * t48;
+        let t55 = cos_theta * cos_theta;
+        let t56 = zdot * cos_theta;
+        let t57 = t29 * t29;
+        let t58 = T::from_f64(1.0) / (t31 * t31 * t31);
+        let t59 = T::from_f64(2.0) * zdot;
+        let t60 = r + t5 + x + t38 - T::from_f64(2.0) * t12 * t37;
+        let t61 = t60.max0();
+        let t62 = t61 * t61.sqrt();
+        let t63 = t60.step();
+        let t64 = r + t5 + x + t9 + T::from_f64(2.0) * t12 * t44;
+        let t65 = t64.max0();
+        let t66 = t65 * t65.sqrt();
+        let t67 = t64.step();
+        let t68 = -t9;
+        let t69 = r + t5 + t6 + t68 - T::from_f64(2.0) * t7 * t12;
+        let t70 = t69.max0();
+        let t71 = t70 * t70.sqrt();
+        let t72 = -t13 - T::from_f64(2.0) * t30 * t7;
+        let t73 = xdot * t27 + t28 + thetadot * t72;
+        let t74 = T::from_f64(1.0) + hc_alpha * t73;
+        let t75 = t74.max0();
+        let t76 = t69.step();
+        let t77 = r - T::from_f64(2.0) * t41;
+        let t78 = t43 - T::from_f64(2.0) * t30 * t37;
+        let t79 = xdot + thetadot * t78;
+        let t80 = T::from_f64(1.0) + hc_alpha * t79;
+        let t81 = t80.max0();
+        let t82 = -t17 + t46;
+        let t83 = xdot + thetadot * t82;
+        let t84 = -t21 + t47;
+        let t85 = zdot + thetadot * t84;
+        let t86 = sin_theta * t83;
+        let t87 = cos_theta * t85;
+        let t88 = t86 + t87;
+        let t89 = t13 + T::from_f64(2.0) * t30 * t44;
+        let t90 = xdot * t48 - t28 + thetadot * t89;
+        let t91 = T::from_f64(1.0) + hc_alpha * t90;
+        let t92 = t91.max0();
+        let t93 = v_s.hypot(t88);
+        let t94 = T::from_f64(1.0) / t93;
+        let t95 = sin_theta * t82 + cos_theta * t84;
+        let t96 = t88 * t88;
+        let t97 = -t38;
+        let t98 = r + t5 + t6 + t97 + T::from_f64(2.0) * t12 * t49;
+        let t99 = l_c + t35 - t39;
+        let t100 = t15 + T::from_f64(2.0) * t41;
+        let t101 = t98.max0();
+        let t102 = t101 * t101.sqrt();
+        let t103 = -t43 + T::from_f64(2.0) * t30 * t49;
+        let t104 = -xdot + thetadot * t103;
+        let t105 = T::from_f64(1.0) + hc_alpha * t104;
+        let t106 = t105.max0();
+        let t107 = t98.step();
+        let t108 = t75 - T::from_f64(1.0);
+        let t109 = t81 - T::from_f64(1.0);
+        let t110 = t92 - T::from_f64(1.0);
+        let t111 = t106 - T::from_f64(1.0);
+        let t112 = -t76;
+        let t113 = -t108;
+        let t114 = mu * sin_theta;
+        let t115 = t71 * (t112 + t113);
+        let t116 = t61.sqrt();
+        let t117 = t63 * t63;
+        let t118 = t65.sqrt();
+        let t119 = t67 * t67;
+        let t120 = -T::from_f64(1.5) * t117;
+        let t121 = t12 - t57;
+        let t122 = t7 * t121 + t9;
+        let t123 = t57 - t12;
+        let t124 = t49 * t123 + t38;
+        let t125 = t34 * t58;
+        let t126 = T::from_f64(2.0) * t67;
+        let t127 = cos_theta * t7 + t68;
+        let t128 = cos_theta * t77;
+        let t129 = -t42 - t128;
+        let t130 = thetadot * t129;
+        let t131 = zdot + t130;
+        let t132 = v_s.hypot(t131);
+        let t133 = T::from_f64(1.0) / t132;
+        let t134 = t131 * t131;
+        let t135 = t68 + cos_theta * t44;
+        let t136 = sin_theta * t99;
+        let t137 = cos_theta * t100;
+        let t138 = -t136 - t137;
+        let t139 = thetadot * t138;
+        let t140 = zdot + t139;
+        let t141 = v_s.hypot(t140);
+        let t142 = T::from_f64(1.0) / t141;
+        let t143 = t140 * t140;
+        let t144 = t70.sqrt();
+        let t145 = t76 * t76;
+        let t146 = t74.step();
+        let t147 = t91.step();
+        let t148 = t101.sqrt();
+        let t149 = t107 * t107;
+        let t150 = t30 * xdot;
+        let t151 = t80.step();
+        let t152 = T::from_f64(1.0) / (t93 * t93 * t93);
+        let t153 = t105.step();
+        let t154 = -t0;
+        let t155 = -t1;
+        let t156 = T::from_f64(1.0) / (t132 * t132 * t132);
+        let t157 = T::from_f64(1.0) / (t141 * t141 * t141);
+        let t158 = t72 * t72;
+        let t159 = t78 * t78;
+        let t160 = t89 * t89;
+        let t161 = t103 * t103;
+        let t162 = t128 + t42;
+        let t163 = t137 + t136;
+        let t164 = T::from_f64(2.0) * t24 + T::from_f64(2.0) * t25;
+        let t165 = t59 + T::from_f64(2.0) * t130;
+        let t166 = T::from_f64(2.0) * t86 + T::from_f64(2.0) * t87;
+        let t167 = t59 + T::from_f64(2.0) * t139;
+        let t168 = t71 * t108;
+        let t169 = t26 * t32;
+        let t170 = t169 * t71 * t75;
+        let t171 = t88 * t94;
+        let t172 = t171 * t92 * t66;
+        let t173 = t76 * t144;
+        let t174 = t173 * (T::from_f64(1.5) * t75 - T::from_f64(1.5));
+        let t175 = t71 * t146;
+        let t176 = thetadot * hc_alpha;
+        let t177 = t176 * t30;
+        let t178 = t175 * t177;
+        let t179 = T::from_f64(2.0) * t178;
+        let t180 = t174 * t27 + t179;
+        let t181 = t67 * t118;
+        let t182 = t181 * (T::from_f64(1.5) * t92 - T::from_f64(1.5));
+        let t183 = t147 * t66;
+        let t184 = t183 * t177;
+        let t185 = -T::from_f64(2.0) * t184;
+        let t186 = t182 * t48 + t185;
+        let t187 = t173 * t75;
+        let t188 = t187 * t27;
+        let t189 = t181 * t92;
+        let t190 = t189 * t48;
+        let t191 = t169 * (-(T::from_f64(1.5) * t188) - T::from_f64(2.0) * t178)
+            + t171 * (-(T::from_f64(1.5) * t190) + T::from_f64(2.0) * t184);
+        let t192 = t144 * t145;
+        let t193 = t118 * t119;
+        let t194 = t116 * (t63 * (T::from_f64(1.5) - T::from_f64(1.5) * t81) + t120);
+        let t195 = -(T::from_f64(1.5) * t106) + T::from_f64(1.5);
+        let t196 = t176 * cos_theta;
+        let t197 = t174 * sin_theta + t196 * t175;
+        let t198 = t181 * (-(T::from_f64(1.5) * t92) + T::from_f64(1.5)) * sin_theta
+            - t196 * t183;
+        let t199 = -(t169 * t175) + t183 * t171;
+        let t200 = hc_alpha * t199;
+        let t201 = mu * cos_theta;
+        let t202 = -T::from_f64(1.5) * t192 * t27;
+        let t203 = T::from_f64(1.5) * t193 * t48;
+        let t204 = -(T::from_f64(1.5) * t187 * t169) + T::from_f64(1.5) * t189 * t171;
+        let t205 = mu * t53;
+        let t206 = k_edge * t50;
+        let t207 = T::from_f64(2.0) * t150 + t56 + thetadot * t122;
+        let t208 = t175 * t207;
+        let t209 = t174 * t72 + t208 * hc_alpha;
+        let t210 = cos_theta * (r + t127) + t20;
+        let t211 = sin_theta * (t15 - t127) - t16;
+        let t212 = cos_theta * (t19 + thetadot * t211)
+            + sin_theta * (thetadot * t210 - t23);
+        let t213 = t37 * t121 + t97;
+        let t214 = t44 * t123 + t68;
+        let t215 = -(T::from_f64(2.0) * t150) - t56 + thetadot * t214;
+        let t216 = t183 * t215;
+        let t217 = t182 * t89 + t216 * hc_alpha;
+        let t218 = cos_theta * (t15 + t135) + t47;
+        let t219 = sin_theta * (r - t135) - t46;
+        let t220 = cos_theta * (t83 + thetadot * t219)
+            + sin_theta * (thetadot * t218 - t85);
+        let t221 = t75 * (-t32 + t125);
+        let t222 = hc_alpha * t146;
+        let t223 = t222 * t207;
+        let t224 = t96 * t152;
+        let t225 = t92 * (-t94 + t224);
+        let t226 = hc_alpha * t147;
+        let t227 = t226 * t215;
+        let t228 = t187 * t72;
+        let t229 = t189 * t89;
+        let t230 = t71 * (t221 * t212 - t223 * t169) + t66 * (t225 * t220 - t227 * t171)
+            - T::from_f64(1.5) * t228 * t169 - T::from_f64(1.5) * t229 * t171;
+        let t231 = -T::from_f64(2.0) * t76;
+        let t232 = -T::from_f64(2.0) * t108;
+        let t233 = T::from_f64(2.0) * t110;
+        let t234 = -T::from_f64(1.5) * t192 * t72;
+        let t235 = -t209;
+        let t236 = t193 * t89;
+        let t237 = T::from_f64(1.5) * t106 - T::from_f64(1.5);
+        let t238 = T::from_f64(1.5) * t149;
+        let t239 = t151 * t62;
+        let t240 = t239 * t213;
+        let t241 = t102 * t153;
+        let t242 = t241 * t124;
+        let t243 = t221 * t71;
+        let t244 = t243 + t225 * t66;
+        let t245 = t175 * t27;
+        let t246 = t183 * t48;
+        let t247 = hc_alpha * (-(t245 * t169) - t246 * t171);
+        let t248 = k_wall * hc_alpha;
+        let t249 = sin_theta * (t201 * t244 + hc_alpha * (-t245 + t246));
+        let t250 = t222 * t72;
+        let t251 = t225 * t95;
+        let t252 = t226 * t89;
+        let t253 = t71 * (t221 * t33 - t250 * t169) + t66 * (t251 - t252 * t171);
+        let t254 = hc_alpha * (-(t245 * t72) - t246 * t89);
+        let t255 = t131 * t133;
+        let t256 = t255 * t81;
+        let t257 = t63 * t116;
+        let t258 = t140 * t142;
+        let t259 = t258 * t106;
+        let t260 = t107 * t148;
+        let t261 = t176 * mu;
+        let t262 = cos_theta * (rho_p * (-sin_theta + T::from_f64(2.0) * t30) - t40)
+            + sin_theta * t77;
+        let t263 = cos_theta * (rho_p * (sin_theta - T::from_f64(2.0) * t30) - t99)
+            + sin_theta * t100;
+        let t264 = t81 * (-t133 + t134 * t156);
+        let t265 = hc_alpha * t151;
+        let t266 = t265 * t213;
+        let t267 = t264 * t262 - t266 * t255;
+        let t268 = t106 * (-t142 + t143 * t157);
+        let t269 = hc_alpha * t153;
+        let t270 = t269 * t124;
+        let t271 = t268 * t263 - t270 * t258;
+        let t272 = t257 * t78;
+        let t273 = t260 * t103;
+        let t274 = k_edge * hc_alpha;
+        let t275 = t265 * t78;
+        let t276 = t255 * t275;
+        let t277 = t269 * t103;
+        let t278 = t258 * t277;
+        let t279 = t274 * (sin_theta * (-(t175 * t72) + t183 * t89));
+        let t280 = T::from_f64(1.5) * t81 - T::from_f64(1.5);
+        let t281 = t169 * t33;
+        let t282 = t261 * (t281 * t146);
+        let t283 = t171 * t95;
+        let t284 = t261 * (t283 * t147);
+        let t285 = t144
+            * (-(T::from_f64(1.5) * t72 * t145)
+                - T::from_f64(1.5) * t281 * mu * t75 * t76);
+        let t286 = mu * t92 * (t283 * t67);
+        let t287 = mu * t129;
+        let t288 = mu * t138;
+        let t289 = t272 * t280 + t240 * t176;
+        let t290 = t273 * t237 + t242 * t176;
+        let t291 = t33 * t212;
+        let t292 = t95 * t220;
+        let t293 = t129 * t62;
+        let t294 = t138 * t102;
+        let t295 = t243 * t33 + t251 * t66;
+        let t296 = t32 * t34;
+        let t297 = t94 * t96;
+        let t298 = t66 * t110;
+        let t299 = t81 * t133 * t134;
+        let t300 = t106 * t142 * t143;
+        let t301 = t296 * t175 - t297 * t183;
+        let t302 = -t298;
+        let t303 = t71 * t212;
+        let t304 = t58 * (t26 * t26 * t26);
+        let t305 = t66 * t220;
+        let t306 = t152 * (t88 * t88 * t88);
+        let t307 = t81 * t262;
+        let t308 = t156 * (t131 * t131 * t131);
+        let t309 = t106 * t263;
+        let t310 = t157 * (t140 * t140 * t140);
+        let t311 = t75 * (-t304 + t32 * t164) * t71 + t92 * (-t306 + t94 * t166) * t66;
+        let t312 = t71 * (t108 + t222 * t73);
+        let t313 = t66 * (t110 + t226 * t90);
+        let t314 = t75 * t33;
+        let t315 = t92 * t95;
+        let t316 = t129 * t81;
+        let t317 = t138 * t106;
         SMatrix::<
             T,
             8,
@@ -501,347 +600,226 @@ pub mod compliant_peg {
                 T::from_f64(1.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t104
-                    * (-(T::from_f64(1.5) * k_edge * t106 * t107 * t108) - t29 * t110
-                        - T::from_f64(1.5) * mu * k_edge * sin_theta * t26 * t29 * t34
-                            * t37 * t38 * t106
-                        - T::from_f64(2.0) * thetadot * mu * k_edge * hc_alpha
-                            * sin_theta * t11 * t26 * t28 * t30 * t37 * t109
-                        + T::from_f64(1.5) * k_wall * t61 * t112
-                        - T::from_f64(1.5) * k_wall * t112 * t113
-                        - T::from_f64(1.5) * k_wall * t55 * t61 * t112
-                        - T::from_f64(1.5) * k_edge * t114 * t115 * t116 - t75 * t118
-                        - T::from_f64(1.5) * mu * k_edge * sin_theta * t72 * t75 * t79
-                            * t82 * t83 * t114
-                        + T::from_f64(2.0) * thetadot * mu * k_edge * hc_alpha
-                            * sin_theta * t11 * t30 * t72 * t74 * t82 * t117 + t120
-                        + t121 - T::from_f64(1.5) * k_wall * t119 * t122),
-                t104
-                    * (t123 - t29 * t124
-                        - T::from_f64(1.5) * mu * k_edge * t26 * t34 * t37 * t38 * t106
-                            * t111
-                        - thetadot * mu * k_edge * hc_alpha * sin_theta * cos_theta * t26
-                            * t28 * t37 * t109 + t126 - t75 * t127
-                        + T::from_f64(1.5) * mu * k_edge * t72 * t79 * t82 * t83 * t111
-                            * t114
-                        + thetadot * mu * k_edge * hc_alpha * sin_theta * cos_theta * t72
-                            * t74 * t82 * t117),
-                t104
-                    * (t0 + t1 - mu * k_edge * cos_theta * t26 * t28 * t34 * t37
-                        - mu * k_edge * cos_theta * t72 * t74 * t79 * t82 + t128 + t129
-                        + t130 - t29 * t134
-                        - mu * k_edge * sin_theta * t28 * t34 * t37 * t137
-                        - T::from_f64(1.5) * mu * k_edge * sin_theta * t26 * t31 * t34
-                            * t37 * t38 * t106
-                        - mu * k_edge * hc_alpha * sin_theta * t26 * t28 * t37 * t109
-                            * t133
-                        + mu * k_edge * sin_theta * t28 * t34 * t40 * t137 * t138
-                        + T::from_f64(1.5) * k_wall * t52 * t61 * t112 + t139
-                        - T::from_f64(1.5) * k_wall * t52 * t55 * t61 * t112
-                        - thetadot * k_wall * hc_alpha * t51 * t140 * t141 + t142 + t143
-                        + t144 - t75 * t147
-                        - mu * k_edge * sin_theta * t74 * t79 * t82 * t150
-                        - T::from_f64(1.5) * mu * k_edge * sin_theta * t72 * t76 * t79
-                            * t82 * t83 * t114
-                        - mu * k_edge * hc_alpha * sin_theta * t72 * t74 * t82 * t117
-                            * t146
-                        + mu * k_edge * sin_theta * t74 * t79 * t85 * t150 * t151 + t152
-                        + t155 + t156 + t157),
-                t104
-                    * (-(k_edge * hc_alpha * t28 * t107 * t109)
-                        - mu * k_edge * t28 * t34 * t37 * t111
-                        - mu * k_edge * hc_alpha * sin_theta * t26 * t28 * t29 * t37
-                            * t109 + mu * k_edge * t28 * t34 * t40 * t111 * t138
-                        - k_wall * hc_alpha * t51 * t141
-                        - k_edge * hc_alpha * t74 * t115 * t117
-                        - mu * k_edge * t74 * t79 * t82 * t111
-                        - mu * k_edge * hc_alpha * sin_theta * t72 * t74 * t75 * t82
-                            * t117 + mu * k_edge * t74 * t79 * t85 * t111 * t151
-                        - k_wall * hc_alpha * t94 * t154),
-                t104
-                    * (t158 + t159
-                        - mu * k_edge * hc_alpha * t26 * t28 * t37 * t109 * t111 + t160
-                        + t161 + t162
-                        + mu * k_edge * hc_alpha * t72 * t74 * t82 * t111 * t117 + t163),
-                t104
-                    * (t164 + t165
-                        - mu * k_edge * hc_alpha * sin_theta * t26 * t28 * t31 * t37
-                            * t109 + t166 + t167 + t168 + t169
-                        - mu * k_edge * hc_alpha * sin_theta * t72 * t74 * t76 * t82
-                            * t117 + t170 + t171),
+                t50
+                    * (k_edge
+                        * (t114 * t191 - T::from_f64(1.5) * t192 * t52 - t27 * t180
+                            - T::from_f64(1.5) * t193 * t54 - t48 * t186)
+                        + k_wall
+                            * (t194 + t148 * (t107 * t195 - T::from_f64(1.5) * t149))),
+                t206
+                    * (sin_theta * (t201 * t176 * t199 + t202 + t203) + t205 * t204
+                        - t27 * t197 - t48 * t198),
+                t50
+                    * (k_edge
+                        * (mu * (sin_theta * t230 + cos_theta * (-t170 - t172))
+                            + t30 * (t71 * (t231 + t232) + t66 * (t126 + t233))
+                            + t27 * (t234 + t235)
+                            + t48 * (-(T::from_f64(1.5) * t236) - t217))
+                        + k_wall
+                            * (t194 * t78 + t148 * (t107 * t237 + t238) * t103
+                                + t176 * (-t240 + t242)) + t2 + t3),
+                t50
+                    * (k_edge
+                        * (mu * (t53 * t244 + t247 * sin_theta)
+                            + hc_alpha * (-(t175 * t52) - t183 * t54))
+                        + t248 * (-t239 - t241)),
+                t206 * (t249 + t205 * t200),
+                t50
+                    * (k_edge * (t114 * t253 + t254)
+                        + t248 * (-(t239 * t78) + t241 * t103)),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t104
-                    * (t123 + t126 - sin_theta * t110
-                        - T::from_f64(1.5) * mu * k_edge * cos_theta * t26 * t29 * t34
-                            * t37 * t38 * t106
-                        - T::from_f64(2.0) * thetadot * mu * k_edge * hc_alpha
-                            * cos_theta * t11 * t26 * t28 * t30 * t37 * t109
-                        - T::from_f64(1.5) * mu * k_wall * t49 * t55 * t60 * t61 * t112
-                        + sin_theta * t118
-                        - T::from_f64(1.5) * mu * k_edge * cos_theta * t72 * t75 * t79
-                            * t82 * t83 * t114
-                        + T::from_f64(2.0) * thetadot * mu * k_edge * hc_alpha
-                            * cos_theta * t11 * t30 * t72 * t74 * t82 * t117
-                        + T::from_f64(1.5) * mu * k_wall * t92 * t98 * t101 * t102
-                            * t119),
-                t104
-                    * (-(T::from_f64(1.5) * k_edge * t106 * t108 * t111)
-                        - sin_theta * t124
-                        - T::from_f64(1.5) * mu * k_edge * sin_theta * cos_theta * t26
-                            * t34 * t37 * t38 * t106
-                        - thetadot * mu * k_edge * hc_alpha * t26 * t28 * t37 * t109
-                            * t125 - T::from_f64(1.5) * k_edge * t111 * t114 * t116
-                        + sin_theta * t127
-                        + T::from_f64(1.5) * mu * k_edge * sin_theta * cos_theta * t72
-                            * t79 * t82 * t83 * t114
-                        + thetadot * mu * k_edge * hc_alpha * t72 * t74 * t82 * t117
-                            * t125),
-                t104
-                    * (mu * k_edge * sin_theta * t26 * t28 * t34 * t37
-                        + mu * k_edge * sin_theta * t72 * t74 * t79 * t82 + t172 + t173
-                        + t174 + t175 + t176 - sin_theta * t134
-                        - mu * k_edge * cos_theta * t28 * t34 * t37 * t137
-                        - T::from_f64(1.5) * mu * k_edge * cos_theta * t26 * t31 * t34
-                            * t37 * t38 * t106
-                        - mu * k_edge * hc_alpha * cos_theta * t26 * t28 * t37 * t109
-                            * t133
-                        + mu * k_edge * cos_theta * t28 * t34 * t40 * t137 * t138
-                        - thetadot * mu * k_wall * t51 * t55 * t60 * t177
-                        - T::from_f64(1.5) * mu * k_wall * t49 * t52 * t55 * t60 * t61
-                            * t112
-                        - thetadot * mu * k_wall * hc_alpha * t49 * t51 * t60 * t140
-                            * t141
-                        + thetadot * mu * k_wall * t51 * t55 * t62 * t177 * t178 + t179
-                        + t180 + t181 + sin_theta * t147
-                        - mu * k_edge * cos_theta * t74 * t79 * t82 * t150
-                        - T::from_f64(1.5) * mu * k_edge * cos_theta * t72 * t76 * t79
-                            * t82 * t83 * t114
-                        - mu * k_edge * hc_alpha * cos_theta * t72 * t74 * t82 * t117
-                            * t146
-                        + mu * k_edge * cos_theta * t74 * t79 * t85 * t150 * t151
-                        - thetadot * mu * k_wall * t94 * t98 * t101 * t182
-                        - T::from_f64(1.5) * mu * k_wall * t92 * t95 * t98 * t101 * t102
-                            * t119
-                        - thetadot * mu * k_wall * hc_alpha * t92 * t94 * t101 * t153
-                            * t154
-                        + thetadot * mu * k_wall * t94 * t98 * t103 * t182 * t183),
-                t104
-                    * (t158 + t159 + t160 + t161 + t162 + t163
-                        - mu * k_edge * hc_alpha * cos_theta * t26 * t28 * t29 * t37
-                            * t109 - mu * k_wall * hc_alpha * t49 * t51 * t60 * t141
-                        - mu * k_edge * hc_alpha * cos_theta * t72 * t74 * t75 * t82
-                            * t117 + mu * k_wall * hc_alpha * t92 * t94 * t101 * t154),
-                t104
-                    * (-(k_edge * hc_alpha * t28 * t109 * t111)
-                        - mu * k_edge * t28 * t34 * t37 * t125
-                        - mu * k_edge * hc_alpha * sin_theta * cos_theta * t26 * t28
-                            * t37 * t109 + mu * k_edge * t28 * t34 * t40 * t125 * t138
-                        - mu * k_wall * t51 * t55 * t60
-                        + mu * k_wall * t51 * t55 * t62 * t178
-                        - k_edge * hc_alpha * t74 * t111 * t117
-                        - mu * k_edge * t74 * t79 * t82 * t125
-                        + mu * k_edge * hc_alpha * sin_theta * cos_theta * t72 * t74
-                            * t82 * t117 + mu * k_edge * t74 * t79 * t85 * t125 * t151
-                        - mu * k_wall * t94 * t98 * t101
-                        + mu * k_wall * t94 * t98 * t103 * t183),
-                t104
-                    * (t184 + t185
-                        - mu * k_edge * hc_alpha * cos_theta * t26 * t28 * t31 * t37
-                            * t109 + t186 + t187
-                        - mu * k_wall * hc_alpha * t49 * t51 * t52 * t60 * t141 + t188
-                        + t189 + t190
-                        - mu * k_edge * hc_alpha * cos_theta * t72 * t74 * t76 * t82
-                            * t117 + t191 + t192
-                        - mu * k_wall * hc_alpha * t92 * t94 * t95 * t101 * t154 + t193),
+                t50
+                    * (k_edge * (sin_theta * (t202 + t203 - t180 + t186) + t201 * t191)
+                        + k_wall
+                            * (-(T::from_f64(1.5) * t256 * t257)
+                                + T::from_f64(1.5) * t259 * t260) * mu),
+                t206
+                    * (sin_theta * (t201 * t204 - t197 + t198)
+                        + t53 * (-(T::from_f64(1.5) * t192) - T::from_f64(1.5) * t193)
+                        + t55 * t199 * t261),
+                t50
+                    * (mu
+                        * (k_edge * (cos_theta * t230 + sin_theta * (t170 + t172))
+                            + k_wall
+                                * (thetadot * (t62 * t267 + t102 * t271)
+                                    - T::from_f64(1.5) * t256 * t272
+                                    - T::from_f64(1.5) * t259 * t273))
+                        + k_edge
+                            * (cos_theta * (t115 + t66 * (t67 + t110))
+                                + sin_theta
+                                    * (t234 + t235 + T::from_f64(1.5) * t236 + t217)) + t154
+                        + t155),
+                t50
+                    * (k_edge * (t249 + t247 * t201)
+                        + t248 * (-(t239 * t255) + t241 * t258) * mu),
+                t50
+                    * (mu
+                        * (k_edge * (t55 * t244 + sin_theta * cos_theta * t200)
+                            + k_wall * (t264 * t62 + t268 * t102))
+                        + t274 * (t53 * (-t175 - t183))),
+                t50
+                    * (mu
+                        * (cos_theta * t253 * k_edge
+                            + k_wall
+                                * (t62 * (t264 * t129 - t276)
+                                    + t102 * (t268 * t138 - t278))) + t279),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t105
-                    * (t128 + t129 + t130 + t139 + t142 + t143 + t144 + t157 - t31 * t110
-                        - T::from_f64(1.5) * mu * k_edge * t26 * t29 * t34 * t37 * t38
-                            * t39 * t106
-                        - T::from_f64(2.0) * thetadot * mu * k_edge * hc_alpha * t11
-                            * t26 * t28 * t30 * t37 * t39 * t109 - t52 * t194
-                        - T::from_f64(1.5) * mu * k_wall * t48 * t49 * t55 * t60 * t61
-                            * t112 - t76 * t118
-                        - T::from_f64(1.5) * mu * k_edge * t72 * t75 * t79 * t82 * t83
-                            * t84 * t114
-                        + T::from_f64(2.0) * thetadot * mu * k_edge * hc_alpha * t11
-                            * t30 * t72 * t74 * t82 * t84 * t117 - t95 * t195
-                        + T::from_f64(1.5) * mu * k_wall * t91 * t92 * t98 * t101 * t102
-                            * t119),
-                t105
-                    * (t174 + t175 + t176 + t179 + t180 + t181 - t31 * t124
-                        - T::from_f64(1.5) * mu * k_edge * sin_theta * t26 * t34 * t37
-                            * t38 * t39 * t106
-                        - thetadot * mu * k_edge * hc_alpha * cos_theta * t26 * t28 * t37
-                            * t39 * t109 - t76 * t127
-                        + T::from_f64(1.5) * mu * k_edge * sin_theta * t72 * t79 * t82
-                            * t83 * t84 * t114
-                        + thetadot * mu * k_edge * hc_alpha * cos_theta * t72 * t74 * t82
-                            * t84 * t117),
-                t105
-                    * (-(T::from_f64(1.5) * k_edge * t106 * t108 * t196)
-                        - k_edge * t28 * t38 * t132 - t35 * t132 - t31 * t134
-                        - mu * k_edge * t28 * t34 * t37 * t39 * t137
-                        - T::from_f64(1.5) * mu * k_edge * t26 * t31 * t34 * t37 * t38
-                            * t39 * t106
-                        - mu * k_edge * hc_alpha * t26 * t28 * t37 * t39 * t109 * t133
-                        + mu * k_edge * t28 * t34 * t39 * t40 * t137 * t138
-                        - mu * k_edge * t26 * t28 * t34 * t37
-                            * (cos_theta * t19 + sin_theta * t135 - sin_theta * t24
-                                + cos_theta * t136)
-                        - T::from_f64(1.5) * k_wall * t112 * t113 * t197
-                        - k_wall * t51 * t61 * t140 - t58 * t140 - t52 * t198
-                        - mu * k_wall * t49 * t51 * t55 * t60 * t177
-                        - thetadot * mu * k_wall * t48 * t51 * t55 * t60 * t177
-                        - T::from_f64(1.5) * mu * k_wall * t48 * t49 * t52 * t55 * t60
-                            * t61 * t112
-                        - thetadot * mu * k_wall * hc_alpha * t48 * t49 * t51 * t60
-                            * t140 * t141
-                        + thetadot * mu * k_wall * t48 * t51 * t55 * t62 * t177 * t178
-                        - T::from_f64(1.5) * k_edge * t114 * t116 * t199
-                        - k_edge * t74 * t83 * t145 - t80 * t145 - t76 * t147
-                        - mu * k_edge * t74 * t79 * t82 * t84 * t150
-                        - T::from_f64(1.5) * mu * k_edge * t72 * t76 * t79 * t82 * t83
-                            * t84 * t114
-                        - mu * k_edge * hc_alpha * t72 * t74 * t82 * t84 * t117 * t146
-                        + mu * k_edge * t74 * t79 * t84 * t85 * t150 * t151
-                        - mu * k_edge * t72 * t74 * t79 * t82
-                            * (cos_theta * t67 + sin_theta * t148 - sin_theta * t70
-                                + cos_theta * t149)
-                        - T::from_f64(1.5) * k_wall * t119 * t122 * t200
-                        - k_wall * t94 * t102 * t153 - t99 * t153 - t95 * t201
-                        - mu * k_wall * t92 * t94 * t98 * t101 * t182
-                        - thetadot * mu * k_wall * t91 * t94 * t98 * t101 * t182
-                        - T::from_f64(1.5) * mu * k_wall * t91 * t92 * t95 * t98 * t101
-                            * t102 * t119
-                        - thetadot * mu * k_wall * hc_alpha * t91 * t92 * t94 * t101
-                            * t153 * t154
-                        + thetadot * mu * k_wall * t91 * t94 * t98 * t103 * t182 * t183),
-                t105
-                    * (t164 + t165 + t166 + t167 + t168 + t169 + t170 + t171
-                        - mu * k_edge * hc_alpha * t26 * t28 * t29 * t37 * t39 * t109
-                        - mu * k_wall * hc_alpha * t48 * t49 * t51 * t60 * t141
-                        - mu * k_edge * hc_alpha * t72 * t74 * t75 * t82 * t84 * t117
-                        + mu * k_wall * hc_alpha * t91 * t92 * t94 * t101 * t154),
-                t105
-                    * (t184 + t185 + t186 + t187 + t188 + t189 + t190 + t191 + t192
-                        + t193
-                        - mu * k_edge * hc_alpha * sin_theta * t26 * t28 * t37 * t39
-                            * t109
-                        + mu * k_edge * hc_alpha * sin_theta * t72 * t74 * t82 * t84
-                            * t117),
-                t105
-                    * (-(k_edge * hc_alpha * t28 * t109 * t196)
-                        - mu * k_edge * t28 * t34 * t37 * t202
-                        - mu * k_edge * hc_alpha * t26 * t28 * t31 * t37 * t39 * t109
-                        + mu * k_edge * t28 * t34 * t40 * t138 * t202
-                        - k_wall * hc_alpha * t51 * t141 * t197
-                        - mu * k_wall * t51 * t55 * t60 * t204
-                        - mu * k_wall * hc_alpha * t48 * t49 * t51 * t52 * t60 * t141
-                        + mu * k_wall * t51 * t55 * t62 * t178 * t204
-                        - k_edge * hc_alpha * t74 * t117 * t199
-                        - mu * k_edge * t74 * t79 * t82 * t205
-                        - mu * k_edge * hc_alpha * t72 * t74 * t76 * t82 * t84 * t117
-                        + mu * k_edge * t74 * t79 * t85 * t151 * t205
-                        - k_wall * hc_alpha * t94 * t154 * t200
-                        - mu * k_wall * t94 * t98 * t101 * t207
-                        - mu * k_wall * hc_alpha * t91 * t92 * t94 * t95 * t101 * t154
-                        + mu * k_wall * t94 * t98 * t103 * t183 * t207),
+                t51
+                    * (k_edge
+                        * (t30
+                            * (t71 * (t231 + t232 - T::from_f64(2.0) * t282)
+                                + t66 * (t126 + t233 + T::from_f64(2.0) * t284))
+                            + t285 * t27
+                            + t118
+                                * (-(T::from_f64(1.5) * t89 * t119)
+                                    - T::from_f64(1.5) * t286) * t48 - t72 * t180 - t89 * t186)
+                        + k_wall
+                            * (t116
+                                * (t78 * (t120 - t280 * t63)
+                                    - T::from_f64(1.5) * t287 * t256 * t63)
+                                + t148
+                                    * (t103 * (t238 - t195 * t107)
+                                        + T::from_f64(1.5) * t288 * t259 * t107))),
+                k_edge
+                    * (cos_theta
+                        * (t71 * (t112 + t113 - t282) + t66 * (t67 + t110 + t284))
+                        + sin_theta
+                            * (t285
+                                + t118
+                                    * (T::from_f64(1.5) * t89 * t119 + T::from_f64(1.5) * t286))
+                        - t72 * t197 - t89 * t198) * t51,
+                t51
+                    * (mu
+                        * (k_edge
+                            * (t71
+                                * (t75
+                                    * (t32
+                                        * (-t291
+                                            - t26
+                                                * (cos_theta * (t18 + t211) + sin_theta * (t210 - t22)))
+                                        + t125 * t291) - t223 * t281)
+                                + t66
+                                    * (t92
+                                        * (t94
+                                            * (-t292
+                                                - t88
+                                                    * (cos_theta * (t82 + t219) + sin_theta * (t218 - t84)))
+                                            + t224 * t292) - t227 * t283)
+                                - T::from_f64(1.5) * t228 * t281
+                                - T::from_f64(1.5) * t229 * t283)
+                            + k_wall
+                                * (thetadot * (t293 * t267 + t294 * t271)
+                                    + t256 * (-(t62 * t262) - T::from_f64(1.5) * t272 * t129)
+                                    + t259 * (-(t102 * t263) - T::from_f64(1.5) * t273 * t138)))
+                        + k_edge
+                            * (t115 * t122 + (-t67 - t110) * t214 * t66
+                                - T::from_f64(1.5) * t192 * t158 - t72 * t209
+                                - T::from_f64(1.5) * t193 * t160 - t89 * t217)
+                        + k_wall
+                            * ((-t63 - t109) * t213 * t62 + (-t107 - t111) * t124 * t102
+                                - T::from_f64(1.5) * t116 * t117 * t159 - t78 * t289
+                                - T::from_f64(1.5) * t148 * t149 * t161 - t103 * t290)),
+                t51
+                    * (k_edge
+                        * (mu
+                            * (sin_theta * t295
+                                + hc_alpha * (-(t245 * t281) - t246 * t283)) + t254)
+                        + t248
+                            * (t239 * (-t78 - t287 * t255)
+                                + t241 * (t103 + t288 * t258))),
+                t51
+                    * (mu
+                        * (k_edge
+                            * (cos_theta * t295
+                                + sin_theta * (-(t281 * t175) + t283 * t183) * hc_alpha)
+                            + k_wall * (t293 * t264 + t294 * t268)) + t279),
+                t51
+                    * (mu
+                        * (k_edge
+                            * (t71 * (t221 * (t33 * t33) - t250 * t281)
+                                + t66 * (t225 * (t95 * t95) - t252 * t283))
+                            + k_wall
+                                * (t62 * (t264 * (t162 * t162) - t276 * t129)
+                                    + t102 * (t268 * (t163 * t163) - t278 * t138)))
+                        + hc_alpha
+                            * (k_edge * (-(t175 * t158) - t183 * t160)
+                                + k_wall * (-(t239 * t159) - t241 * t161))),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                xdot * t2 + zdot * (t172 + t173),
-                f1 * sin_theta + f2 * cos_theta,
-                t2,
+                xdot * t4 + zdot * (t154 + t155),
+                t0 + t1,
+                t4,
                 m_2,
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                T::from_f64(1.5) * mu * k_edge * t29 * t34 * t37 * t38 * t40 * t106
-                    + T::from_f64(2.0) * thetadot * mu * k_edge * hc_alpha * t11 * t28
-                        * t30 * t37 * t40 * t109
-                    + T::from_f64(2.0) * thetadot * t11 * t30 * t35 + t32 * t110
-                    + T::from_f64(1.5) * mu * k_wall * t55 * t60 * t61 * t62 * t112
-                    + t53 * t194
-                    + T::from_f64(1.5) * mu * k_edge * t75 * t79 * t82 * t83 * t85 * t114
-                    - T::from_f64(2.0) * thetadot * mu * k_edge * hc_alpha * t11 * t30
-                        * t74 * t82 * t85 * t117
-                    - T::from_f64(2.0) * thetadot * t11 * t30 * t80 + t77 * t118
-                    - T::from_f64(1.5) * mu * k_wall * t98 * t101 * t102 * t103 * t119
-                    + t96 * t195,
-                T::from_f64(1.5) * mu * k_edge * sin_theta * t34 * t37 * t38 * t40 * t106
-                    + thetadot * mu * k_edge * hc_alpha * cos_theta * t28 * t37 * t40
-                        * t109 + thetadot * cos_theta * t35 + t32 * t124
-                    - T::from_f64(1.5) * mu * k_edge * sin_theta * t79 * t82 * t83 * t85
-                        * t114
-                    - thetadot * mu * k_edge * hc_alpha * cos_theta * t74 * t82 * t85
-                        * t117 - thetadot * cos_theta * t80 + t77 * t127,
-                T::from_f64(1.5) * mu * k_edge * t31 * t34 * t37 * t38 * t40 * t106
-                    + mu * k_edge * hc_alpha * t28 * t37 * t40 * t109 * t133
-                    - mu * k_edge * t28 * t34 * t137 * t138 * t208
-                    + mu * k_edge * t28 * t34 * t37 * t137 * t209 + t35 * t133
-                    + t32 * t134
-                    + T::from_f64(1.5) * mu * k_wall * t52 * t55 * t60 * t61 * t62 * t112
-                    + thetadot * mu * k_wall * hc_alpha * t51 * t60 * t62 * t140 * t141
-                    - thetadot * mu * k_wall * t51 * t55 * t177 * t178 * t210
-                    + thetadot * mu * k_wall * t51 * t55 * t60 * t177 * t212
-                    + thetadot * t58 * t140 + t53 * t198
-                    + T::from_f64(1.5) * mu * k_edge * t76 * t79 * t82 * t83 * t85 * t114
-                    + mu * k_edge * hc_alpha * t74 * t82 * t85 * t117 * t146
-                    - mu * k_edge * t74 * t79 * t150 * t151 * t213
-                    + mu * k_edge * t74 * t79 * t82 * t150 * t214 + t80 * t146
-                    + t77 * t147
-                    + T::from_f64(1.5) * mu * k_wall * t95 * t98 * t101 * t102 * t103
-                        * t119
-                    + thetadot * mu * k_wall * hc_alpha * t94 * t101 * t103 * t153 * t154
-                    - thetadot * mu * k_wall * t94 * t98 * t182 * t183 * t215
-                    + thetadot * mu * k_wall * t94 * t98 * t101 * t182 * t216
-                    + thetadot * t99 * t153 + t96 * t201,
-                t29 * t35 + t56 + t57 + t75 * t80 + k_wall * t94 - k_wall * t94 * t98
-                    + mu * k_edge * hc_alpha * t28 * t29 * t37 * t40 * t109
-                    - mu * k_edge * sin_theta * t28 * t34 * t138 * t208
-                    + mu * k_edge * sin_theta * t28 * t34 * t37 * t209
-                    + k_edge * hc_alpha * t28 * t29 * t32 * t109
-                    + mu * k_wall * hc_alpha * t51 * t60 * t62 * t141
-                    + k_wall * hc_alpha * t51 * t53 * t141
-                    + mu * k_edge * hc_alpha * t74 * t75 * t82 * t85 * t117
-                    - mu * k_edge * sin_theta * t74 * t79 * t151 * t213
-                    + mu * k_edge * sin_theta * t74 * t79 * t82 * t214
-                    + k_edge * hc_alpha * t74 * t75 * t77 * t117
-                    - mu * k_wall * hc_alpha * t94 * t101 * t103 * t154
-                    - k_wall * hc_alpha * t94 * t96 * t154,
-                sin_theta * t35 - sin_theta * t80
-                    + mu * k_edge * hc_alpha * sin_theta * t28 * t37 * t40 * t109
-                    - mu * k_edge * cos_theta * t28 * t34 * t138 * t208
-                    + mu * k_edge * cos_theta * t28 * t34 * t37 * t209
-                    + k_edge * hc_alpha * sin_theta * t28 * t32 * t109
-                    - mu * k_wall * t51 * t55 * t178 * t210
-                    + mu * k_wall * t51 * t55 * t60 * t212
-                    - mu * k_edge * hc_alpha * sin_theta * t74 * t82 * t85 * t117
-                    - mu * k_edge * cos_theta * t74 * t79 * t151 * t213
-                    + mu * k_edge * cos_theta * t74 * t79 * t82 * t214
-                    - k_edge * hc_alpha * sin_theta * t74 * t77 * t117
-                    - mu * k_wall * t94 * t98 * t183 * t215
-                    + mu * k_wall * t94 * t98 * t101 * t216,
-                t31 * t35 + t52 * t58 + t76 * t80 + t95 * t99
-                    + mu * k_edge * hc_alpha * t28 * t31 * t37 * t40 * t109
-                    - mu * k_edge * t28 * t34 * t39 * t138 * t208
-                    + mu * k_edge * t28 * t34 * t37 * t39 * t209
-                    + k_edge * hc_alpha * t28 * t31 * t32 * t109
-                    + mu * k_wall * hc_alpha * t51 * t52 * t60 * t62 * t141
-                    - mu * k_wall * t48 * t51 * t55 * t178 * t210
-                    + mu * k_wall * t48 * t51 * t55 * t60 * t212
-                    + k_wall * hc_alpha * t51 * t52 * t53 * t141
-                    + mu * k_edge * hc_alpha * t74 * t76 * t82 * t85 * t117
-                    - mu * k_edge * t74 * t79 * t84 * t151 * t213
-                    + mu * k_edge * t74 * t79 * t82 * t84 * t214
-                    + k_edge * hc_alpha * t74 * t76 * t77 * t117
-                    + mu * k_wall * hc_alpha * t94 * t95 * t101 * t103 * t154
-                    - mu * k_wall * t91 * t94 * t98 * t183 * t215
-                    + mu * k_wall * t91 * t94 * t98 * t101 * t216
-                    + k_wall * hc_alpha * t94 * t95 * t96 * t154,
+                k_edge
+                    * (mu
+                        * (t296 * (T::from_f64(1.5) * t188 + t179)
+                            + t297 * (T::from_f64(1.5) * t190 + t185))
+                        + t30 * (T::from_f64(2.0) * t168 - T::from_f64(2.0) * t298)
+                            * thetadot + t73 * t180 + t90 * t186)
+                    + k_wall
+                        * (mu
+                            * (T::from_f64(1.5) * t299 * t257
+                                - T::from_f64(1.5) * t300 * t260) + t257 * t280 * t79
+                            + t260 * t104 * t195),
+                k_edge
+                    * (mu
+                        * (sin_theta
+                            * (T::from_f64(1.5) * t296 * t187
+                                - T::from_f64(1.5) * t297 * t189) + cos_theta * t301 * t176)
+                        + cos_theta * (t168 + t302) * thetadot + t73 * t197
+                        + t90 * t198),
+                mu
+                    * (k_edge
+                        * (t75
+                            * (t32 * (T::from_f64(1.5) * t173 * t72 * t34 + t303 * t164)
+                                - t303 * t304)
+                            + t92
+                                * (t94 * (T::from_f64(1.5) * t181 * t89 * t96 + t305 * t166)
+                                    - t305 * t306) + hc_alpha * (t208 * t296 + t216 * t297))
+                        + k_wall
+                            * (thetadot
+                                * (t62 * (t133 * (t266 * t134 + t307 * t165) - t307 * t308)
+                                    + t102 * (t142 * (t270 * t143 + t309 * t167) - t309 * t310))
+                                + T::from_f64(1.5) * t299 * t272
+                                + T::from_f64(1.5) * t300 * t273))
+                    + k_edge * (t168 * t207 + t73 * t209 + t298 * t215 + t90 * t217)
+                    + k_wall
+                        * (thetadot * (t62 * t109 * t213 + t102 * t111 * t124)
+                            + t79 * t289 + t104 * t290),
+                k_edge
+                    * (mu * (sin_theta * t311 + hc_alpha * (t296 * t245 + t297 * t246))
+                        + t312 * t27 + t313 * t48)
+                    + k_wall
+                        * (t62
+                            * (t265 * (mu * t133 * t134 + t79) + t81 - T::from_f64(1.0))
+                            + t102
+                                * (t269 * (-(mu * t142 * t143) - t104) + T::from_f64(1.0)
+                                    - t106)),
+                k_edge
+                    * (sin_theta
+                        * (hc_alpha * (mu * t301 + t175 * t73 - t183 * t90) + t168
+                            + t302) + t201 * t311)
+                    + k_wall
+                        * (t81 * (-t308 + t133 * t165) * t62
+                            + t106 * (-t310 + t142 * t167) * t102) * mu,
+                mu
+                    * (k_edge
+                        * (t71 * (t32 * (t250 * t34 + t314 * t164) - t314 * t304)
+                            + t66 * (t94 * (t252 * t96 + t315 * t166) - t315 * t306))
+                        + k_wall
+                            * (t62 * (t133 * (t275 * t134 + t316 * t165) - t316 * t308)
+                                + t102
+                                    * (t142 * (t277 * t143 + t317 * t167) - t317 * t310)))
+                    + k_edge * (t312 * t72 + t313 * t89)
+                    + k_wall
+                        * (t62 * (t109 + t265 * t79) * t78
+                            + t102 * (t111 + t269 * t104) * t103),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
             ],
@@ -863,7 +841,7 @@ pub mod compliant_peg {
     /// - `p0`: vector of 4
     ///
     /// # Cost
-    /// 62 add/sub, 152 mul, 11 div, 4 sqrt, 10 transcendental, 8 branches; 54 `let`s.
+    /// 62 add/sub, 114 mul, 9 div, 4 sqrt, 10 transcendental, 8 branches; 65 `let`s.
     #[inline]
     pub fn contacts<T: Real>(
         y: &SVector<T, 8>,
@@ -905,99 +883,100 @@ pub mod compliant_peg {
         let t1 = -x;
         let t2 = -rho_h + t0 + t1;
         let t3 = rho_h - z;
-        let t4 = T::from_f64(0.5) * theta;
-        let (t5, t14) = t4.sin_cos();
-        let t6 = t5 * t5;
-        let t7 = r + t0 + t1 - sin_theta * t3 - T::from_f64(2.0) * t2 * t6;
+        let t4 = sin_theta * t3;
+        let t5 = T::from_f64(0.5) * theta;
+        let (t6, t15) = t5.sin_cos();
+        let t7 = t6 * t6;
         let t8 = cos_theta * t3;
         let t9 = sin_theta * t2 + t8;
         let t10 = -r;
-        let t11 = sin_theta * (xdot + thetadot * (cos_theta * t9 + r * sin_theta))
-            + cos_theta * (zdot + thetadot * (-(sin_theta * t9) + r * cos_theta));
-        let t12 = t7.max0();
-        let t13 = t12 * t12.sqrt();
-        let t15 = (T::from_f64(1.0)
+        let t11 = r * sin_theta;
+        let t12 = r * cos_theta;
+        let t13 = sin_theta * (xdot + thetadot * (cos_theta * t9 + t11))
+            + cos_theta * (zdot + thetadot * (-(sin_theta * t9) + t12));
+        let t14 = zdot * sin_theta;
+        let t16 = t6 * t15;
+        let t17 = v_s.hypot(t13);
+        let t18 = T::from_f64(1.0) / e_star;
+        let t19 = t18 / edge_sum;
+        let t20 = -rho_p;
+        let t21 = l_c + t20;
+        let t22 = r + t20;
+        let t23 = sin_theta * t21;
+        let t24 = rho_p * sin_theta;
+        let t25 = rho_p * t7;
+        let t26 = cos_theta * t21;
+        let t27 = t18 / wall_sum;
+        let t28 = rho_h + T::from_f64(0.5) * d + t1;
+        let t29 = t8 + sin_theta * t28;
+        let t30 = rho_p + t10;
+        let t31 = r + t0 + x + t23 - T::from_f64(2.0) * t7 * t22;
+        let t32 = t31.max0();
+        let t33 = t32 * t32.sqrt();
+        let t34 = r + t0 + x + t4 + T::from_f64(2.0) * t7 * t28;
+        let t35 = t34.max0();
+        let t36 = t35 * t35.sqrt();
+        let t37 = r + t0 + t1 - t4 - T::from_f64(2.0) * t2 * t7;
+        let t38 = t37.max0();
+        let t39 = t38 * t38.sqrt();
+        let t40 = (T::from_f64(1.0)
             + hc_alpha
-                * (xdot * (-T::from_f64(1.0) + T::from_f64(2.0) * t6) + zdot * sin_theta
-                    + thetadot * (-(cos_theta * t3) - T::from_f64(2.0) * t2 * t5 * t14)))
+                * (xdot * (-T::from_f64(1.0) + T::from_f64(2.0) * t7) + t14
+                    + thetadot * (-t8 - T::from_f64(2.0) * t16 * t2)))
             .max0();
-        let t16 = v_s.hypot(t11);
-        let t17 = T::from_f64(1.0) / e_star;
-        let t18 = T::from_f64(1.0) / edge_sum;
-        let t19 = (T::from_f64(1.5) * k_edge * t13 * t15 * t17 * t18).cbrt();
-        let t20 = T::from_f64(1.0) / edge_ma;
-        let t21 = T::from_f64(1.0) / edge_mb;
-        let t22 = -rho_p;
-        let t23 = l_c + t22;
-        let t24 = r + t22;
-        let t25 = r + t0 + x + sin_theta * t23 - T::from_f64(2.0) * t6 * t24;
-        let t26 = zdot
+        let t41 = zdot
             + thetadot
-                * (-(sin_theta * (l_c + t22 + rho_p * sin_theta))
-                    - cos_theta * (r - T::from_f64(2.0) * rho_p * t6));
-        let t27 = t25.max0();
-        let t28 = t27 * t27.sqrt();
-        let t29 = (T::from_f64(1.0)
-            + hc_alpha
-                * (xdot
-                    + thetadot * (cos_theta * t23 - T::from_f64(2.0) * t5 * t14 * t24)))
+                * (-(sin_theta * (l_c + t20 + t24))
+                    - cos_theta * (r - T::from_f64(2.0) * t25));
+        let t42 = (T::from_f64(1.0)
+            + hc_alpha * (xdot + thetadot * (t26 - T::from_f64(2.0) * t16 * t22)))
             .max0();
-        let t30 = v_s.hypot(t26);
-        let t31 = T::from_f64(1.0) / wall_sum;
-        let t32 = (T::from_f64(1.5) * k_wall * t17 * t28 * t29 * t31).cbrt();
-        let t33 = T::from_f64(1.0) / wall_ma;
-        let t34 = T::from_f64(1.0) / wall_mb;
-        let t35 = rho_h + T::from_f64(0.5) * d + t1;
-        let t36 = r + t0 + x + sin_theta * t3 + T::from_f64(2.0) * t6 * t35;
-        let t37 = t8 + sin_theta * t35;
-        let t38 = sin_theta * (xdot + thetadot * (-(r * sin_theta) + cos_theta * t37))
-            + cos_theta * (zdot + thetadot * (-(r * cos_theta) - sin_theta * t37));
-        let t39 = t36.max0();
-        let t40 = t39 * t39.sqrt();
-        let t41 = (T::from_f64(1.0)
+        let t43 = v_s.hypot(t41);
+        let t44 = sin_theta * (xdot + thetadot * (-t11 + cos_theta * t29))
+            + cos_theta * (zdot + thetadot * (-t12 - sin_theta * t29));
+        let t45 = (T::from_f64(1.0)
             + hc_alpha
-                * (xdot * (T::from_f64(1.0) - T::from_f64(2.0) * t6) - zdot * sin_theta
-                    + thetadot * (t8 + T::from_f64(2.0) * t5 * t14 * t35)))
+                * (xdot * (T::from_f64(1.0) - T::from_f64(2.0) * t7) - t14
+                    + thetadot * (t8 + T::from_f64(2.0) * t16 * t28)))
             .max0();
-        let t42 = v_s.hypot(t38);
-        let t43 = (T::from_f64(1.5) * k_edge * t17 * t18 * t40 * t41).cbrt();
-        let t44 = rho_p + t10;
-        let t45 = r + t0 + t1 - sin_theta * t23 + T::from_f64(2.0) * t6 * t44;
-        let t46 = zdot
+        let t46 = v_s.hypot(t44);
+        let t47 = r + t0 + t1 - t23 + T::from_f64(2.0) * t7 * t30;
+        let t48 = zdot
             + thetadot
-                * (-(sin_theta * (l_c + t22 - rho_p * sin_theta))
-                    - cos_theta * (t10 + T::from_f64(2.0) * rho_p * t6));
-        let t47 = t45.max0();
-        let t48 = t47 * t47.sqrt();
-        let t49 = (T::from_f64(1.0)
-            + hc_alpha
-                * (-xdot
-                    + thetadot
-                        * (-(cos_theta * t23) + T::from_f64(2.0) * t5 * t14 * t44)))
+                * (-(sin_theta * (l_c + t20 - t24))
+                    - cos_theta * (t10 + T::from_f64(2.0) * t25));
+        let t49 = t47.max0();
+        let t50 = t49 * t49.sqrt();
+        let t51 = (T::from_f64(1.0)
+            + hc_alpha * (-xdot + thetadot * (-t26 + T::from_f64(2.0) * t16 * t30)))
             .max0();
-        let t50 = v_s.hypot(t46);
-        let t51 = (T::from_f64(1.5) * k_wall * t17 * t31 * t48 * t49).cbrt();
-        let normal = Vector4::new(
-            k_edge * t13 * t15,
-            k_wall * t28 * t29,
-            k_edge * t40 * t41,
-            k_wall * t48 * t49,
-        );
+        let t52 = v_s.hypot(t48);
+        let t53 = k_edge * t39 * t40;
+        let t54 = (T::from_f64(1.5) * t19 * t53).cbrt();
+        let t55 = e_star * edge_sum * (T::from_f64(1.0) / (edge_ma * edge_mb));
+        let t56 = k_wall * t50 * t51;
+        let t57 = (T::from_f64(1.5) * t27 * t56).cbrt();
+        let t58 = e_star * wall_sum * (T::from_f64(1.0) / (wall_ma * wall_mb));
+        let t59 = k_wall * t42 * t33;
+        let t60 = k_edge * t45 * t36;
+        let t61 = (T::from_f64(1.5) * t27 * t59).cbrt();
+        let t62 = (T::from_f64(1.5) * t19 * t60).cbrt();
+        let normal = Vector4::new(t53, t59, t60, t56);
         let friction = Vector4::new(
-            -mu * k_edge * t11 * t13 * t15 / t16,
-            -mu * k_wall * t26 * t28 * t29 / t30,
-            -mu * k_edge * t38 * t40 * t41 / t42,
-            -mu * k_wall * t46 * t48 * t49 / t50,
+            -t53 * mu * t13 / t17,
+            -t59 * mu * t41 / t43,
+            -t60 * mu * t44 / t46,
+            -t56 * mu * t48 / t52,
         );
-        let delta = Vector4::new(t7, t25, t36, t45);
-        let slip = Vector4::new(t11, t26, t38, t46);
-        let a = Vector4::new(edge_ma * t19, wall_ma * t32, edge_ma * t43, wall_ma * t51);
-        let b = Vector4::new(edge_mb * t19, wall_mb * t32, edge_mb * t43, wall_mb * t51);
+        let delta = Vector4::new(t37, t31, t34, t47);
+        let slip = Vector4::new(t13, t41, t44, t48);
+        let a = Vector4::new(edge_ma * t54, wall_ma * t61, edge_ma * t62, wall_ma * t57);
+        let b = Vector4::new(edge_mb * t54, wall_mb * t61, edge_mb * t62, wall_mb * t57);
         let p0 = Vector4::new(
-            T::from_f64(0.3183098861837907) * e_star * edge_sum * t19 * t20 * t21,
-            T::from_f64(0.3183098861837907) * e_star * wall_sum * t32 * t33 * t34,
-            T::from_f64(0.3183098861837907) * e_star * edge_sum * t20 * t21 * t43,
-            T::from_f64(0.3183098861837907) * e_star * wall_sum * t33 * t34 * t51,
+            T::from_f64(0.3183098861837907) * t55 * t54,
+            T::from_f64(0.3183098861837907) * t58 * t61,
+            T::from_f64(0.3183098861837907) * t55 * t62,
+            T::from_f64(0.3183098861837907) * t58 * t57,
         );
         (normal, friction, delta, slip, a, b, p0)
     }
@@ -1013,7 +992,7 @@ pub mod compliant_peg {
     /// - `depth`: scalar
     ///
     /// # Cost
-    /// 30 add/sub, 32 mul, 0 div, 0 sqrt, 6 transcendental, 4 branches; 17 `let`s.
+    /// 30 add/sub, 28 mul, 0 div, 0 sqrt, 6 transcendental, 4 branches; 17 `let`s.
     #[inline]
     pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> (T, T, T) {
         let x = y[0];
@@ -1034,28 +1013,25 @@ pub mod compliant_peg {
         let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = -T::from_f64(0.5) * d;
         let t1 = -x;
-        let t2 = rho_h - z;
+        let t2 = sin_theta * (rho_h - z);
         let t3 = (T::from_f64(0.5) * theta).sin();
         let t4 = t3 * t3;
-        let t5 = (r + t0 + t1 - sin_theta * t2
-            - T::from_f64(2.0) * (-rho_h + t0 + t1) * t4)
-            .max0();
-        let t6 = t5.powf(T::from_f64(2.5));
-        let t7 = -rho_p;
-        let t8 = l_c + t7;
-        let t9 = (r + t0 + x + sin_theta * t8 - T::from_f64(2.0) * t4 * (r + t7)).max0();
-        let t10 = t9.powf(T::from_f64(2.5));
-        let t11 = (r + t0 + x + sin_theta * t2
+        let t5 = -rho_p;
+        let t6 = sin_theta * (l_c + t5);
+        let t7 = (r + t0 + x + t6 - T::from_f64(2.0) * t4 * (r + t5)).max0();
+        let t8 = (r + t0 + x + t2
             + T::from_f64(2.0) * t4 * (rho_h + T::from_f64(0.5) * d + t1))
             .max0();
-        let t12 = t11.powf(T::from_f64(2.5));
-        let t13 = (r + t0 + t1 - sin_theta * t8 + T::from_f64(2.0) * t4 * (rho_p - r))
-            .max0();
-        let t14 = t13.powf(T::from_f64(2.5));
+        let t9 = (r + t0 + t1 - t2 - T::from_f64(2.0) * (-rho_h + t0 + t1) * t4).max0();
+        let t10 = (r + t0 + t1 - t6 + T::from_f64(2.0) * t4 * (rho_p - r)).max0();
+        let t11 = t7.powf(T::from_f64(2.5));
+        let t12 = t8.powf(T::from_f64(2.5));
+        let t13 = t9.powf(T::from_f64(2.5));
+        let t14 = t10.powf(T::from_f64(2.5));
         let kinetic = T::from_f64(0.5) * m * (xdot * xdot + zdot * zdot)
             + T::from_f64(0.5) * j * (thetadot * thetadot);
-        let potential = T::from_f64(0.4) * k_edge * t6 + T::from_f64(0.4) * k_wall * t10
-            + T::from_f64(0.4) * k_edge * t12 + T::from_f64(0.4) * k_wall * t14;
+        let potential = k_edge * (T::from_f64(0.4) * t13 + T::from_f64(0.4) * t12)
+            + k_wall * (T::from_f64(0.4) * t11 + T::from_f64(0.4) * t14);
         let depth = z + l_c * cos_theta;
         (kinetic, potential, depth)
     }

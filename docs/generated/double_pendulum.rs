@@ -26,7 +26,7 @@ pub mod double_pendulum {
     /// - `forcing`: vector of 2
     ///
     /// # Cost
-    /// 5 add/sub, 21 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 7 `let`s.
+    /// 4 add/sub, 18 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 8 `let`s.
     #[inline]
     pub fn dynamics<T: Real>(
         x: &SVector<T, 4>,
@@ -43,15 +43,15 @@ pub mod double_pendulum {
         let g = p[4];
         let sin_theta1 = theta1.sin();
         let sin_theta2 = theta2.sin();
-        let t0 = l1 * l1;
-        let t1 = theta1 - theta2;
-        let (t4, t2) = t1.sin_cos();
-        let t3 = m2 * l1 * l2 * t2;
-        let mass = Matrix2::new(t0 * (m1 + m2), t3, t3, m2 * (l2 * l2));
+        let t0 = theta1 - theta2;
+        let (t2, t1) = t0.sin_cos();
+        let t3 = m1 + m2;
+        let t4 = m2 * l2;
+        let t5 = t4 * l1 * t1;
+        let mass = Matrix2::new(l1 * l1 * t3, t5, t5, m2 * (l2 * l2));
         let forcing = Vector2::new(
-            -(g * (l1 * sin_theta1 * (m1 + m2)))
-                - m2 * l1 * l2 * (theta2dot * theta2dot) * t4,
-            m2 * l2 * (l1 * (theta1dot * theta1dot) * t4 - g * sin_theta2),
+            l1 * (-(g * sin_theta1 * t3) - t4 * (theta2dot * theta2dot) * t2),
+            t4 * (l1 * (theta1dot * theta1dot) * t2 - g * sin_theta2),
         );
         (mass, forcing)
     }
@@ -67,7 +67,7 @@ pub mod double_pendulum {
     /// - `xdot`: vector of 4
     ///
     /// # Cost
-    /// 8 add/sub, 35 mul, 1 div, 0 sqrt, 3 transcendental, 0 branches; 11 `let`s.
+    /// 7 add/sub, 32 mul, 1 div, 0 sqrt, 3 transcendental, 0 branches; 12 `let`s.
     #[inline]
     pub fn rhs<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> SVector<T, 4> {
         let theta1 = x[0];
@@ -84,17 +84,17 @@ pub mod double_pendulum {
         let t0 = l1 * l1;
         let t1 = l2 * l2;
         let t2 = theta1 - theta2;
-        let (t5, t3) = t2.sin_cos();
-        let t4 = t0 * (m1 + m2);
-        let t6 = -(g * (l1 * sin_theta1 * (m1 + m2)))
-            - m2 * l1 * l2 * (theta2dot * theta2dot) * t5;
-        let t7 = m2 * l2 * (l1 * (theta1dot * theta1dot) * t5 - g * sin_theta2);
-        let t8 = T::from_f64(1.0) / (t1 * (m2 * t4 - t0 * (m2 * m2) * (t3 * t3)));
+        let (t4, t3) = t2.sin_cos();
+        let t5 = m1 + m2;
+        let t6 = l1 * (theta1dot * theta1dot) * t4 - g * sin_theta2;
+        let t7 = m2 * l2;
+        let t8 = -(g * sin_theta1 * t5) - t7 * (theta2dot * theta2dot) * t4;
+        let t9 = T::from_f64(1.0) / (t0 * (m2 * t5 - m2 * m2 * (t3 * t3)) * t1);
         Vector4::new(
             theta1dot,
             theta2dot,
-            m2 * (t1 * t6 - l1 * l2 * t3 * t7) * t8,
-            t8 * (t4 * t7 - m2 * l1 * l2 * t3 * t6),
+            l1 * (t1 * t8 - t7 * t3 * l2 * t6) * m2 * t9,
+            t7 * (t0 * t5 * t6 - l1 * t3 * l1 * t8) * t9,
         )
     }
     /// G = ∂f/∂x − Σ_j (∂M_{·j}/∂x) q̈_j (n × 2n) at the accelerations `qdd`;
@@ -111,7 +111,7 @@ pub mod double_pendulum {
     /// - `terms`: 2×4 matrix
     ///
     /// # Cost
-    /// 8 add/sub, 40 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 7 `let`s.
+    /// 8 add/sub, 22 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 12 `let`s.
     #[inline]
     pub fn jacobian_terms<T: Real>(
         x: &SVector<T, 4>,
@@ -131,19 +131,23 @@ pub mod double_pendulum {
         let g = p[4];
         let cos_theta1 = theta1.cos();
         let cos_theta2 = theta2.cos();
-        let t0 = theta1dot * theta1dot;
-        let t1 = theta2dot * theta2dot;
-        let t2 = theta1 - theta2;
-        let (t4, t3) = t2.sin_cos();
+        let t0 = theta1 - theta2;
+        let (t2, t1) = t0.sin_cos();
+        let t3 = m2 * l2;
+        let t4 = theta2ddot * t2;
+        let t5 = theta2dot * theta2dot * t1;
+        let t6 = theta1ddot * t2;
+        let t7 = theta1dot * theta1dot * t1;
+        let t8 = t3 * l1;
+        let t9 = t8 * t2;
         Matrix2x4::new(
-            theta2ddot * m2 * l1 * l2 * t4 - g * (l1 * cos_theta1 * (m1 + m2))
-                - m2 * l1 * l2 * t1 * t3,
-            m2 * l1 * l2 * (-(theta2ddot * t4) + t1 * t3),
+            l1 * (t3 * (t4 - t5) - g * cos_theta1 * (m1 + m2)),
+            t8 * (-t4 + t5),
             T::from_f64(0.0),
-            -T::from_f64(2.0) * theta2dot * m2 * l1 * l2 * t4,
-            m2 * l1 * l2 * (theta1ddot * t4 + t0 * t3),
-            m2 * l2 * (-(theta1ddot * l1 * t4) - l1 * t0 * t3 - g * cos_theta2),
-            T::from_f64(2.0) * theta1dot * m2 * l1 * l2 * t4,
+            -T::from_f64(2.0) * t9 * theta2dot,
+            t8 * (t6 + t7),
+            t3 * (l1 * (-t6 - t7) - g * cos_theta2),
+            T::from_f64(2.0) * t9 * theta1dot,
             T::from_f64(0.0),
         )
     }
@@ -159,7 +163,7 @@ pub mod double_pendulum {
     /// - `energy`: scalar
     ///
     /// # Cost
-    /// 7 add/sub, 24 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 5 `let`s.
+    /// 7 add/sub, 20 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 5 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> T {
         let theta1 = x[0];
@@ -173,12 +177,13 @@ pub mod double_pendulum {
         let g = p[4];
         let cos_theta1 = theta1.cos();
         let cos_theta2 = theta2.cos();
-        let t0 = theta1dot * theta1dot;
-        let t1 = l1 * l1;
+        let t0 = l1 * cos_theta1;
+        let t1 = theta1dot * theta1dot * (l1 * l1);
         let t2 = (theta1 - theta2).cos();
-        T::from_f64(0.5) * m1 * t0 * t1 + T::from_f64(0.5) * m2 * t0 * t1
-            + T::from_f64(0.5) * m2 * (theta2dot * theta2dot) * (l2 * l2)
-            + theta1dot * theta2dot * m2 * l1 * l2 * t2
-            + g * (-(m1 * l1 * cos_theta1) + m2 * (-(l1 * cos_theta1) - l2 * cos_theta2))
+        m2
+            * (T::from_f64(0.5) * t1
+                + T::from_f64(0.5) * (theta2dot * theta2dot) * (l2 * l2)
+                + theta1dot * theta2dot * l1 * l2 * t2) + T::from_f64(0.5) * t1 * m1
+            + g * (-(t0 * m1) + m2 * (-t0 - l2 * cos_theta2))
     }
 }

@@ -31,7 +31,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 19 add/sub, 27 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 10 `let`s.
+    /// 17 add/sub, 21 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 11 `let`s.
     #[inline]
     pub fn two_point<T: Real>(
         pose: &SVector<T, 2>,
@@ -53,19 +53,18 @@ pub mod quasi_static {
         let j = p[4];
         let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = cos_theta - mu * sin_theta;
-        let t1 = f2 * sin_theta;
-        let t2 = xdd * m - f1 * sin_theta - f2 * cos_theta;
-        let t3 = ydd * m;
-        let t4 = -f1 * cos_theta;
-        let t5 = t1 + t3 + t4 - mu * t2;
-        let t6 = T::from_f64(1.0) / (sin_theta + mu * cos_theta + mu * t0);
-        let t7 = t0 * (t1 + t3 + t4) - (-sin_theta - mu * cos_theta) * t2;
-        let f_a = -t5 * t6;
-        let f_b = -t6 * t7;
-        let moment = thdd * j - t5 * t6 * (-l_c + mu * r + l)
-            - t6 * t7
-                * (-(r * sin_theta) + l_c * cos_theta - mu * r * cos_theta
-                    - mu * l_c * sin_theta);
+        let t1 = -sin_theta - mu * cos_theta;
+        let t2 = f2 * sin_theta;
+        let t3 = xdd * m - f1 * sin_theta - f2 * cos_theta;
+        let t4 = ydd * m;
+        let t5 = -f1 * cos_theta;
+        let t6 = t2 + t4 + t5 - mu * t3;
+        let t7 = t0 * (t2 + t4 + t5) - t1 * t3;
+        let t8 = T::from_f64(1.0) / (mu * (cos_theta + t0) + sin_theta);
+        let f_a = -t6 * t8;
+        let f_b = -t8 * t7;
+        let moment = t8 * (-(t6 * (-l_c + mu * r + l)) - t7 * (r * t1 + l_c * t0))
+            + thdd * j;
         (f_a, f_b, moment)
     }
     /// Eq. 53 (signs corrected): edge force f_a (N) from the normal balance and input moment about C (N m), one-point contact at the edge A.
@@ -81,7 +80,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 5 add/sub, 7 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 3 `let`s.
+    /// 5 add/sub, 6 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 3 `let`s.
     #[inline]
     pub fn edge_only<T: Real>(
         pose: &SVector<T, 2>,
@@ -101,7 +100,7 @@ pub mod quasi_static {
         let m = p[3];
         let j = p[4];
         let (sin_theta, cos_theta) = theta.sin_cos();
-        let t0 = -f2 + xdd * m * cos_theta - ydd * m * sin_theta;
+        let t0 = m * (xdd * cos_theta - ydd * sin_theta) - f2;
         let f_a = t0;
         let moment = thdd * j + (-l_c + mu * r + l) * t0;
         (f_a, moment)
@@ -119,7 +118,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 6 add/sub, 11 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 3 `let`s.
+    /// 6 add/sub, 9 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 3 `let`s.
     #[inline]
     pub fn tip_only<T: Real>(
         pose: &SVector<T, 2>,
@@ -141,8 +140,8 @@ pub mod quasi_static {
         let t0 = f1 * sin_theta + f2 * cos_theta - xdd * m;
         let f_b = t0;
         let moment = thdd * j
-            + (-(r * sin_theta) + l_c * cos_theta - mu * r * cos_theta
-                - mu * l_c * sin_theta) * t0;
+            + (r * (-sin_theta - mu * cos_theta) + l_c * (cos_theta - mu * sin_theta))
+                * t0;
         (f_b, moment)
     }
     /// Whitney's frame (x lateral, z into the hole, moment about the tip): tip force f_tip (N), edge force f_edge (N) and the moment M (N m) holding the peg in two-point sliding under applied (F_x, F_z) (N); pose = (theta rad, l m), w = (F_x, F_z), q = (mu, r m).
@@ -158,7 +157,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 9 add/sub, 15 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 6 `let`s.
+    /// 9 add/sub, 13 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 7 `let`s.
     #[inline]
     pub fn whitney_tip<T: Real>(
         pose: &SVector<T, 2>,
@@ -172,14 +171,14 @@ pub mod quasi_static {
         let mu = q[0];
         let r = q[1];
         let (sin_theta, cos_theta) = theta.sin_cos();
-        let t0 = mu * sin_theta - cos_theta;
-        let t1 = -((-sin_theta - mu * cos_theta) * fx) + fz * t0;
-        let t2 = T::from_f64(1.0) / (sin_theta + mu * cos_theta - mu * t0);
-        let t3 = -fz - mu * fx;
-        let f_tip = -t1 * t2;
-        let f_edge = -t2 * t3;
-        let moment = t2
-            * (t1 * (r * (sin_theta + mu * cos_theta)) + t3 * (-(mu * r) - l));
+        let t0 = mu * cos_theta;
+        let t1 = mu * sin_theta - cos_theta;
+        let t2 = -fz - mu * fx;
+        let t3 = T::from_f64(1.0) / (mu * (cos_theta - t1) + sin_theta);
+        let t4 = -((-sin_theta - t0) * fx) + fz * t1;
+        let f_tip = -t4 * t3;
+        let f_edge = -t3 * t2;
+        let moment = t3 * (t4 * r * (sin_theta + t0) + t2 * (-(mu * r) - l));
         (f_tip, f_edge, moment)
     }
 }

@@ -42,7 +42,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 92 add/sub, 253 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
+    /// 88 add/sub, 170 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 74 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -80,131 +80,134 @@ pub mod rigid_peg {
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t23) = t1.sin_cos();
+        let (t4, t12) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = -d_hole * t2 * t3 * t7;
-        let t9 = T::from_f64(0.5) * t6 * t7;
-        let t10 = t9 + d_hole * cos_gamma * t2 * t3 * t7;
-        let t11 = sin_gamma * sin_gamma;
-        let t12 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t13 = T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t12;
-        let t14 = d_hole * cos_gamma * t2 * t3 * t12;
-        let t15 = (-T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t12
-            * (d_hole + t13))
-            .sqrt();
-        let t16 = T::from_f64(0.5) * d_hole;
-        let t17 = -T::from_f64(0.5) * t6 * t7;
-        let t18 = T::from_f64(0.5) * h + t17;
-        let t19 = -(T::from_f64(0.5) * h) + t9;
-        let t20 = (d_hole * t2 * t3 * t7).hypot(t16);
-        let t21 = T::from_f64(1.0) / t20;
-        let t22 = cos_gamma * t19;
-        let t24 = d_peg * t4 * t7 * t23 - T::from_f64(0.5) * cos_gamma * t6 * t12;
-        let t25 = sin_gamma * t24;
-        let t26 = t22 + t25;
-        let t27 = -sin_gamma * t18;
-        let t28 = -(d_peg * t4 * t7 * t23) + T::from_f64(0.5) * cos_gamma * t6 * t12;
-        let t29 = cos_gamma * t28;
-        let t30 = t16 + t14 + t27 + t29;
-        let t31 = -sin_gamma * t19;
-        let t32 = t23 * t23;
-        let t33 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t34 = cos_gamma * cos_gamma;
-        let t35 = t31
-            + sin_gamma
-                * (t9 + T::from_f64(0.5) * d_peg * t7 * t32
-                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t33 * t34
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t12 * t23)
-            + T::from_f64(2.0) * cos_gamma * t24;
-        let t36 = gammadot * gammadot;
-        let t37 = t8 - T::from_f64(2.0) * d_hole * t2 * t3 * t33 * t34
-            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t18
-            + cos_gamma
-                * (t17 - T::from_f64(0.5) * d_peg * t7 * t32
-                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t33 * t34
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t12 * t23)
-            - T::from_f64(2.0) * sin_gamma * t28;
-        let t38 = psidot * psidot;
-        let t39 = d_peg * d_peg;
-        let t40 = T::from_f64(0.75) * t39 + h * h;
-        let t41 = h - t6 * t7;
-        let t42 = t41 * t41;
+        let t8 = t6 * t7;
+        let t9 = sin_gamma * sin_gamma;
+        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t11 = T::from_f64(0.5) * d_hole;
+        let t13 = cos_gamma * t10;
+        let t14 = t12 * t12;
+        let t15 = cos_gamma * cos_gamma;
+        let t16 = gammadot * gammadot;
+        let t17 = psidot * psidot;
+        let t18 = d_peg * d_peg;
+        let t19 = T::from_f64(0.75) * t18 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t43 = f_x * cos_psi;
-        let t44 = f_y * sin_psi;
-        let t45 = f_y * cos_psi;
-        let t46 = -f_x * sin_psi;
-        let t47 = t8 + cos_gamma * t18 + t22 + t25;
-        let t48 = t16 + t7 * t10 + t14 + t27 + t29 + t31;
-        let t49 = T::from_f64(2.0) * cos_gamma * t19
-            + T::from_f64(2.0) * sin_gamma * t24;
-        let t50 = d_hole + t13 - T::from_f64(2.0) * sin_gamma * t18
-            + T::from_f64(2.0) * cos_gamma * t28;
-        let t51 = cos_gamma * t6 * t12 - T::from_f64(2.0) * d_peg * t4 * t7 * t23;
-        let t52 = T::from_f64(2.0) * h - T::from_f64(2.0) * t6 * t7;
-        let t53 = t7 * t10 * t21;
-        let t54 = d_hole * t2 * t3 * t7 * t21;
+        let t20 = f_x * cos_psi;
+        let t21 = f_y * sin_psi;
+        let t22 = f_y * cos_psi;
+        let t23 = -f_x * sin_psi;
+        let t24 = sin_gamma * cos_gamma;
+        let t25 = f * t_k_n;
+        let t26 = T::from_f64(0.5) * t6;
+        let t27 = T::from_f64(0.08333333333333333) * t19;
+        let t28 = t2 * t3;
+        let t29 = t28 * d_hole;
+        let t30 = t29 * t7;
+        let t31 = t29 * t13;
+        let t32 = (-T::from_f64(2.0) * t31 * (d_hole + T::from_f64(2.0) * t31)).sqrt();
+        let t33 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
+        let t34 = t30.hypot(t11);
+        let t35 = T::from_f64(1.0) / t34;
+        let t36 = t32 * t35;
+        let t37 = d_peg * t4 * t12;
+        let t38 = t37 * t7;
+        let t39 = t13 * t6;
+        let t40 = t38 - T::from_f64(0.5) * t39;
+        let t41 = sin_gamma * t40;
+        let t42 = sin_gamma * t33;
+        let t43 = -t38 + T::from_f64(0.5) * t39;
+        let t44 = t15 / (sin_gamma * sin_gamma * sin_gamma);
+        let t45 = t44 * t6;
+        let t46 = t13 * t37;
+        let t47 = h - t8;
+        let t48 = t47 * t47;
+        let t49 = t30 * t35;
+        let t50 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t51 = cos_gamma * t50;
+        let t52 = t51 + t41;
+        let t53 = t29 * t10;
+        let t54 = cos_gamma * (t53 + t43);
+        let t55 = t11 + t54 - t42;
+        let t56 = -t50;
+        let t57 = sin_gamma
+            * (t56
+                + t7 * (d_peg * (T::from_f64(0.5) * t14 - T::from_f64(0.5) * t5) + t26)
+                + t45 - T::from_f64(2.0) * t46) + T::from_f64(2.0) * cos_gamma * t40;
+        let t58 = -t33;
+        let t59 = d_hole
+            * (t28 * (-t7 - T::from_f64(2.0) * t44) - T::from_f64(0.5) * cos_gamma * t7)
+            + cos_gamma
+                * (t58
+                    + t7
+                        * (d_peg * (-(T::from_f64(0.5) * t14) + T::from_f64(0.5) * t5)
+                            - T::from_f64(0.5) * t6) - t45 + T::from_f64(2.0) * t46)
+            - T::from_f64(2.0) * sin_gamma * t43;
+        let t60 = sin_gamma * t50;
+        let t61 = cos_gamma * (t33 + t50) - t30 + t41;
+        let t62 = sin_gamma * (t58 + t56);
+        let t63 = t7 * (t26 + t29 * cos_gamma) * t7;
+        let t64 = t11 + t54 + t62 + t63;
+        let t65 = t57 * (T::from_f64(2.0) * t51 + T::from_f64(2.0) * t41);
+        let t66 = t59
+            * (d_hole + cos_gamma * (T::from_f64(2.0) * t53 + T::from_f64(2.0) * t43)
+                - T::from_f64(2.0) * t42);
+        let t67 = T::from_f64(0.25) * t9 * (t39 - T::from_f64(2.0) * t38)
+            * (T::from_f64(2.0) * h - T::from_f64(2.0) * t8);
+        let t68 = t63 * t35;
+        let t69 = m * gammadot * psidot;
         let a = Matrix5::new(
             m
-                * (T::from_f64(0.08333333333333333) * t40
+                * (t27
                     + T::from_f64(0.5)
-                        * (T::from_f64(2.0) * (t26 * t26)
-                            + T::from_f64(2.0) * (t30 * t30))),
+                        * (T::from_f64(2.0) * (t52 * t52)
+                            + T::from_f64(2.0) * (t55 * t55))),
             T::from_f64(0.0),
-            f * (-(t_k_eta * t47) - t_k_z * (t14 + t27 + t29 + t31)),
-            f * (-(t_b1_eta * t47) - t_b1_z * t48),
-            f * (-(t_b2_eta * t47) - t_b2_z * t48),
+            f * (-(t_k_eta * t61) - t_k_z * (t54 + t62)),
+            f * (-(t_b1_eta * t61) - t_b1_z * t64),
+            f * (-(t_b2_eta * t61) - t_b2_z * t64),
             T::from_f64(0.0),
-            m
-                * (T::from_f64(0.25) * t11 * t42 + T::from_f64(0.125) * t34 * t39
-                    + T::from_f64(0.08333333333333333) * t11 * t40),
-            T::from_f64(0.5) * d_hole * f * t_k_n,
-            f * (t_b1_eta * t15 - t_b1_n * t7 * t10),
-            f * (-(t_b2_eta * t15) - t_b2_n * t7 * t10),
-            m * t26,
+            m * (t9 * (T::from_f64(0.25) * t48 + t27) + T::from_f64(0.125) * t15 * t18),
+            T::from_f64(0.5) * t25 * d_hole,
+            f * (t_b1_eta * t32 - t63 * t_b1_n),
+            f * (-(t_b2_eta * t32) - t63 * t_b2_n),
+            m * t52,
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) + t53,
-            -(f * t_b2_eta) + t53,
+            -(f * t_b1_eta) + t68,
+            -(f * t_b2_eta) + t68,
             T::from_f64(0.0),
-            m * sin_gamma * t19,
-            -f * t_k_n,
-            -(f * t_b1_n) + t15 * t21,
-            -(f * t_b2_n) - t15 * t21,
-            m * t30,
+            t60 * m,
+            -t25,
+            -(f * t_b1_n) + t36,
+            -(f * t_b2_n) - t36,
+            m * t55,
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            -(f * t_b1_z) + t54,
-            -(f * t_b2_z) + t54,
+            -(f * t_b1_z) + t49,
+            -(f * t_b2_z) + t49,
         );
         let b = Vector5::new(
-            m_gamma + t26 * (t43 + t44) + f_z * t30 - m * g * t30
-                + T::from_f64(0.5) * m
-                    * (t35 * t36 * t49
-                        + T::from_f64(0.5) * sin_gamma * cos_gamma * t38 * t42
-                        + T::from_f64(0.25) * t11 * t38 * t51 * t52 + t36 * t37 * t50)
-                - T::from_f64(0.125) * m * sin_gamma * cos_gamma * t38 * t39
-                + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t38
-                    * t40
-                - T::from_f64(0.5) * m * gammadot
-                    * (gammadot
-                        * (T::from_f64(2.0) * t35 * t49 + T::from_f64(2.0) * t37 * t50)),
-            m_psi + sin_gamma * t19 * (t45 + t46)
-                - gammadot
-                    * (m * psidot
-                        * (T::from_f64(0.5) * sin_gamma * cos_gamma * t42
-                            + T::from_f64(0.25) * t11 * t51 * t52
-                            - T::from_f64(0.25) * sin_gamma * cos_gamma * t39
-                            + T::from_f64(0.16666666666666666) * sin_gamma * cos_gamma
-                                * t40)),
-            t43 + t44 - m * (t35 * t36 - sin_gamma * t19 * t38),
-            t45 + t46
-                - m
-                    * (gammadot
-                        * (psidot * (cos_gamma * t19 + sin_gamma * t24) + psidot * t26)),
-            f_z - m * g - m * t36 * t37,
+            m_gamma
+                + m
+                    * (t17 * (-(T::from_f64(0.125) * t18) + t27) * t24 - g * t55
+                        + T::from_f64(0.5)
+                            * (t16 * (t65 + t66)
+                                + t17 * (T::from_f64(0.5) * t24 * t48 + t67))
+                        - T::from_f64(0.5) * gammadot * gammadot
+                            * (T::from_f64(2.0) * t65 + T::from_f64(2.0) * t66))
+                + t52 * (t20 + t21) + f_z * t55,
+            m_psi + t60 * (t22 + t23)
+                - t69
+                    * (t24
+                        * (T::from_f64(0.5) * t48 - T::from_f64(0.25) * t18
+                            + T::from_f64(0.16666666666666666) * t19) + t67),
+            t20 + t21 - m * (t57 * t16 - t60 * t17),
+            t22 + t23 - t69 * t52 * (T::from_f64(1.0) + T::from_f64(1.0)),
+            f_z - m * g - m * t16 * t59,
         );
         (a, b)
     }
@@ -223,7 +226,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 95 add/sub, 256 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
+    /// 91 add/sub, 171 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 74 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -262,135 +265,140 @@ pub mod rigid_peg {
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t23) = t1.sin_cos();
+        let (t4, t12) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = -d_hole * t2 * t3 * t7;
-        let t9 = T::from_f64(0.5) * t6 * t7;
-        let t10 = t9 + d_hole * cos_gamma * t2 * t3 * t7;
-        let t11 = sin_gamma * sin_gamma;
-        let t12 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t13 = T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t12;
-        let t14 = d_hole * cos_gamma * t2 * t3 * t12;
-        let t15 = (-T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t12
-            * (d_hole + t13))
-            .sqrt();
-        let t16 = T::from_f64(0.5) * d_hole;
-        let t17 = -T::from_f64(0.5) * t6 * t7;
-        let t18 = T::from_f64(0.5) * h + t17;
-        let t19 = -(T::from_f64(0.5) * h) + t9;
-        let t20 = (d_hole * t2 * t3 * t7).hypot(t16);
-        let t21 = T::from_f64(1.0) / t20;
-        let t22 = cos_gamma * t19;
-        let t24 = d_peg * t4 * t7 * t23 - T::from_f64(0.5) * cos_gamma * t6 * t12;
-        let t25 = sin_gamma * t24;
-        let t26 = t22 + t25;
-        let t27 = -sin_gamma * t18;
-        let t28 = -(d_peg * t4 * t7 * t23) + T::from_f64(0.5) * cos_gamma * t6 * t12;
-        let t29 = cos_gamma * t28;
-        let t30 = t16 + t14 + t27 + t29;
-        let t31 = -sin_gamma * t19;
-        let t32 = t23 * t23;
-        let t33 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t34 = cos_gamma * cos_gamma;
-        let t35 = t31
-            + sin_gamma
-                * (t9 + T::from_f64(0.5) * d_peg * t7 * t32
-                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t33 * t34
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t12 * t23)
-            + T::from_f64(2.0) * cos_gamma * t24;
-        let t36 = gammadot * gammadot;
-        let t37 = t8 - T::from_f64(2.0) * d_hole * t2 * t3 * t33 * t34
-            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t18
-            + cos_gamma
-                * (t17 - T::from_f64(0.5) * d_peg * t7 * t32
-                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t33 * t34
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t12 * t23)
-            - T::from_f64(2.0) * sin_gamma * t28;
-        let t38 = psidot * psidot;
-        let t39 = d_peg * d_peg;
-        let t40 = T::from_f64(0.75) * t39 + h * h;
-        let t41 = h - t6 * t7;
-        let t42 = t41 * t41;
+        let t8 = t6 * t7;
+        let t9 = sin_gamma * sin_gamma;
+        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t11 = T::from_f64(0.5) * d_hole;
+        let t13 = cos_gamma * t10;
+        let t14 = t12 * t12;
+        let t15 = cos_gamma * cos_gamma;
+        let t16 = gammadot * gammadot;
+        let t17 = psidot * psidot;
+        let t18 = d_peg * d_peg;
+        let t19 = T::from_f64(0.75) * t18 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t43 = f_x * cos_psi;
-        let t44 = f_y * sin_psi;
-        let t45 = f_y * cos_psi;
-        let t46 = -f_x * sin_psi;
-        let t47 = t8 + cos_gamma * t18 + t22 + t25;
-        let t48 = t16 + t7 * t10 + t14 + t27 + t29 + t31;
-        let t49 = T::from_f64(2.0) * cos_gamma * t19
-            + T::from_f64(2.0) * sin_gamma * t24;
-        let t50 = d_hole + t13 - T::from_f64(2.0) * sin_gamma * t18
-            + T::from_f64(2.0) * cos_gamma * t28;
-        let t51 = cos_gamma * t6 * t12 - T::from_f64(2.0) * d_peg * t4 * t7 * t23;
-        let t52 = T::from_f64(2.0) * h - T::from_f64(2.0) * t6 * t7;
-        let t53 = t7 * t10 * t21;
-        let t54 = d_hole * t2 * t3 * t7 * t21;
+        let t20 = f_x * cos_psi;
+        let t21 = f_y * sin_psi;
+        let t22 = f_y * cos_psi;
+        let t23 = -f_x * sin_psi;
+        let t24 = sin_gamma * cos_gamma;
+        let t25 = f * t_k_n;
+        let t26 = T::from_f64(0.5) * t6;
+        let t27 = T::from_f64(0.08333333333333333) * t19;
+        let t28 = t2 * t3;
+        let t29 = t28 * d_hole;
+        let t30 = t29 * t7;
+        let t31 = t29 * t13;
+        let t32 = (-T::from_f64(2.0) * t31 * (d_hole + T::from_f64(2.0) * t31)).sqrt();
+        let t33 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
+        let t34 = t30.hypot(t11);
+        let t35 = T::from_f64(1.0) / t34;
+        let t36 = t32 * t35;
+        let t37 = d_peg * t4 * t12;
+        let t38 = t37 * t7;
+        let t39 = t13 * t6;
+        let t40 = t38 - T::from_f64(0.5) * t39;
+        let t41 = sin_gamma * t40;
+        let t42 = sin_gamma * t33;
+        let t43 = -t38 + T::from_f64(0.5) * t39;
+        let t44 = t15 / (sin_gamma * sin_gamma * sin_gamma);
+        let t45 = t44 * t6;
+        let t46 = t13 * t37;
+        let t47 = h - t8;
+        let t48 = t47 * t47;
+        let t49 = t30 * t35;
+        let t50 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t51 = cos_gamma * t50;
+        let t52 = t51 + t41;
+        let t53 = t29 * t10;
+        let t54 = cos_gamma * (t53 + t43);
+        let t55 = t11 + t54 - t42;
+        let t56 = -t50;
+        let t57 = sin_gamma
+            * (t56
+                + t7 * (d_peg * (T::from_f64(0.5) * t14 - T::from_f64(0.5) * t5) + t26)
+                + t45 - T::from_f64(2.0) * t46) + T::from_f64(2.0) * cos_gamma * t40;
+        let t58 = -t33;
+        let t59 = d_hole
+            * (t28 * (-t7 - T::from_f64(2.0) * t44) - T::from_f64(0.5) * cos_gamma * t7)
+            + cos_gamma
+                * (t58
+                    + t7
+                        * (d_peg * (-(T::from_f64(0.5) * t14) + T::from_f64(0.5) * t5)
+                            - T::from_f64(0.5) * t6) - t45 + T::from_f64(2.0) * t46)
+            - T::from_f64(2.0) * sin_gamma * t43;
+        let t60 = sin_gamma * t50;
+        let t61 = cos_gamma * (t33 + t50) - t30 + t41;
+        let t62 = sin_gamma * (t58 + t56);
+        let t63 = t7 * (t26 + t29 * cos_gamma) * t7;
+        let t64 = t11 + t54 + t62 + t63;
+        let t65 = t57 * (T::from_f64(2.0) * t51 + T::from_f64(2.0) * t41);
+        let t66 = t59
+            * (d_hole + cos_gamma * (T::from_f64(2.0) * t53 + T::from_f64(2.0) * t43)
+                - T::from_f64(2.0) * t42);
+        let t67 = T::from_f64(0.25) * t9 * (t39 - T::from_f64(2.0) * t38)
+            * (T::from_f64(2.0) * h - T::from_f64(2.0) * t8);
+        let t68 = t63 * t35;
+        let t69 = gammadot * psidot;
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
-            f * (-(t_k_eta * t47) - t_k_z * (t14 + t27 + t29 + t31)),
-            f * (-(t_b1_eta * t47) - t_b1_z * t48),
-            f * (-(t_b2_eta * t47) - t_b2_z * t48),
+            f * (-(t_k_eta * t61) - t_k_z * (t54 + t62)),
+            f * (-(t_b1_eta * t61) - t_b1_z * t64),
+            f * (-(t_b2_eta * t61) - t_b2_z * t64),
             T::from_f64(0.0),
             -T::from_f64(1.0),
-            T::from_f64(0.5) * d_hole * f * t_k_n,
-            f * (t_b1_eta * t15 - t_b1_n * t7 * t10),
-            f * (-(t_b2_eta * t15) - t_b2_n * t7 * t10),
+            T::from_f64(0.5) * t25 * d_hole,
+            f * (t_b1_eta * t32 - t63 * t_b1_n),
+            f * (-(t_b2_eta * t32) - t63 * t_b2_n),
             T::from_f64(0.0),
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) + t53,
-            -(f * t_b2_eta) + t53,
+            -(f * t_b1_eta) + t68,
+            -(f * t_b2_eta) + t68,
             T::from_f64(0.0),
             T::from_f64(0.0),
-            -f * t_k_n,
-            -(f * t_b1_n) + t15 * t21,
-            -(f * t_b2_n) - t15 * t21,
+            -t25,
+            -(f * t_b1_n) + t36,
+            -(f * t_b2_n) - t36,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            -(f * t_b1_z) + t54,
-            -(f * t_b2_z) + t54,
+            -(f * t_b1_z) + t49,
+            -(f * t_b2_z) + t49,
         );
         let b = Vector5::new(
-            t26 * (t43 + t44) + f_z * t30 - m * g * t30
-                + T::from_f64(0.5) * m
-                    * (t35 * t36 * t49
-                        + T::from_f64(0.5) * sin_gamma * cos_gamma * t38 * t42
-                        + T::from_f64(0.25) * t11 * t38 * t51 * t52 + t36 * t37 * t50)
-                - T::from_f64(0.125) * m * sin_gamma * cos_gamma * t38 * t39
-                + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t38
-                    * t40
-                - T::from_f64(0.5) * m * gammadot
-                    * (gammadot
-                        * (T::from_f64(2.0) * t35 * t49 + T::from_f64(2.0) * t37 * t50))
-                - gammaddot
-                    * (m
-                        * (T::from_f64(0.08333333333333333) * t40
+            m
+                * (t17 * (-(T::from_f64(0.125) * t18) + t27) * t24 - g * t55
+                    + T::from_f64(0.5)
+                        * (t16 * (t65 + t66)
+                            + t17 * (T::from_f64(0.5) * t24 * t48 + t67))
+                    - T::from_f64(0.5) * gammadot * gammadot
+                        * (T::from_f64(2.0) * t65 + T::from_f64(2.0) * t66)
+                    - gammaddot
+                        * (t27
                             + T::from_f64(0.5)
-                                * (T::from_f64(2.0) * (t26 * t26)
-                                    + T::from_f64(2.0) * (t30 * t30)))),
-            sin_gamma * t19 * (t45 + t46)
-                - gammadot
-                    * (m * psidot
-                        * (T::from_f64(0.5) * sin_gamma * cos_gamma * t42
-                            + T::from_f64(0.25) * t11 * t51 * t52
-                            - T::from_f64(0.25) * sin_gamma * cos_gamma * t39
-                            + T::from_f64(0.16666666666666666) * sin_gamma * cos_gamma
-                                * t40))
-                - psiddot
-                    * (m
-                        * (T::from_f64(0.25) * t11 * t42 + T::from_f64(0.125) * t34 * t39
-                            + T::from_f64(0.08333333333333333) * t11 * t40)),
-            t43 + t44 - m * (t35 * t36 + gammaddot * t26 - sin_gamma * t19 * t38),
-            t45 + t46
+                                * (T::from_f64(2.0) * (t52 * t52)
+                                    + T::from_f64(2.0) * (t55 * t55)))) + t52 * (t20 + t21)
+                + f_z * t55,
+            m
+                * (-(t69
+                    * (t24
+                        * (T::from_f64(0.5) * t48 - T::from_f64(0.25) * t18
+                            + T::from_f64(0.16666666666666666) * t19) + t67))
+                    - psiddot
+                        * (t9 * (T::from_f64(0.25) * t48 + t27)
+                            + T::from_f64(0.125) * t15 * t18)) + t60 * (t22 + t23),
+            t20 + t21 - m * (t57 * t16 + gammaddot * t52 - t60 * t17),
+            t22 + t23
                 - m
-                    * (gammadot * (psidot * (cos_gamma * t19 + sin_gamma * t24))
-                        + psiddot * sin_gamma * t19 + gammadot * psidot * t26),
-            f_z - m * g - m * (t36 * t37 + gammaddot * t30),
+                    * (t69 * (t52 * (T::from_f64(1.0) + T::from_f64(1.0)))
+                        + t60 * psiddot),
+            f_z - m * g - m * (t16 * t59 + gammaddot * t55),
         );
         (a, b)
     }
@@ -404,7 +412,7 @@ pub mod rigid_peg {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 26 add/sub, 67 mul, 2 div, 1 sqrt, 4 transcendental, 0 branches; 24 `let`s.
+    /// 24 add/sub, 45 mul, 2 div, 1 sqrt, 4 transcendental, 0 branches; 29 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 4>,
@@ -422,43 +430,41 @@ pub mod rigid_peg {
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t12) = t1.sin_cos();
+        let (t4, t9) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = T::from_f64(0.5) * t5 * t6;
+        let t7 = t5 * t6;
         let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t9 = (-T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t8
-            * (d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t8))
-            .sqrt();
-        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
-        let t11 = -(T::from_f64(0.5) * h) + t7;
-        let t13 = gammadot
-            * (cos_gamma * t11
-                + sin_gamma
-                    * (d_peg * t4 * t6 * t12 - T::from_f64(0.5) * cos_gamma * t5 * t8));
-        let t14 = gammadot
-            * (T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t8
-                - sin_gamma * t10
-                + cos_gamma
-                    * (-(d_peg * t4 * t6 * t12)
-                        + T::from_f64(0.5) * cos_gamma * t5 * t8));
-        let t15 = psidot * sin_gamma * t11;
-        let t16 = -sin_gamma * t11;
-        let t17 = -(T::from_f64(0.5) * d_hole) + t16;
-        let t18 = -gammadot * (d_hole * t2 * t3 * t6 - cos_gamma * t10);
-        let t19 = t6 * (t7 + d_hole * cos_gamma * t2 * t3 * t6) + t16;
-        let t20 = t15 + psidot * t19;
-        let t21 = t14 + gammadot * t19;
+        let t10 = cos_gamma * t8;
+        let t11 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
+        let t12 = t10 * t5;
+        let t13 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7;
+        let t14 = sin_gamma * t13;
+        let t15 = d_hole * t2 * t3;
+        let t16 = t15 * t10;
+        let t17 = (-T::from_f64(2.0) * t16 * (d_hole + T::from_f64(2.0) * t16)).sqrt();
+        let t18 = d_peg * t4 * (t6 * t9);
+        let t19 = psidot * t17;
+        let t20 = T::from_f64(0.5) * d_hole
+            + cos_gamma * (t15 * t8 + -t18 + T::from_f64(0.5) * t12) - sin_gamma * t11;
+        let t21 = -t14;
+        let t22 = -(T::from_f64(0.5) * d_hole) + t21;
+        let t23 = gammadot
+            * (cos_gamma * t13 + sin_gamma * (t18 - T::from_f64(0.5) * t12)
+                - (t15 * t6 - cos_gamma * t11));
+        let t24 = t6 * t6 * (T::from_f64(0.5) * t5 + t15 * cos_gamma) + t21;
+        let t25 = psidot * (t14 + t24);
+        let t26 = gammadot * (t20 + t24);
         Matrix3::new(
-            t13 + t18,
-            t15 + psidot * t17,
-            t14 + gammadot * t17,
-            t13 + t18 - psidot * t9,
-            t20,
-            t21,
-            t13 + t18 + psidot * t9,
-            t20,
-            t21,
+            t23,
+            psidot * (t14 + t22),
+            gammadot * (t20 + t22),
+            t23 - t19,
+            t25,
+            t26,
+            t23 + t19,
+            t25,
+            t26,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -472,7 +478,7 @@ pub mod rigid_peg {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 23 add/sub, 66 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 22 `let`s.
+    /// 23 add/sub, 52 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 26 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -489,32 +495,31 @@ pub mod rigid_peg {
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t10) = t1.sin_cos();
+        let (t4, t9) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = sin_gamma * sin_gamma;
+        let t7 = t5 * t6;
         let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t9 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
-        let t11 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t5 * t6)
-            + sin_gamma
-                * (d_peg * t4 * t6 * t10 - T::from_f64(0.5) * cos_gamma * t5 * t8);
-        let t12 = T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t8
-            - sin_gamma * t9
-            + cos_gamma
-                * (-(d_peg * t4 * t6 * t10) + T::from_f64(0.5) * cos_gamma * t5 * t8);
-        let t13 = gammadot * gammadot;
-        let t14 = psidot * psidot;
-        let t15 = d_peg * d_peg;
-        let t16 = h - t5 * t6;
-        let t17 = T::from_f64(0.5) * m
-            * (t13 * (t11 * t11) + T::from_f64(0.25) * t7 * t14 * (t16 * t16)
-                + t13 * (t12 * t12));
-        let t18 = T::from_f64(0.0625) * m * (cos_gamma * cos_gamma) * t14 * t15;
-        let t19 = T::from_f64(0.041666666666666664) * m
-            * (T::from_f64(0.75) * t15 + h * h) * (t13 + t7 * t14);
-        let kinetic = t17 + t18 + t19;
-        let total = t17 + t18 + t19
-            + m * g * (-(d_hole * t2 * t3 * t6) + cos_gamma * t9);
+        let t10 = gammadot * gammadot;
+        let t11 = psidot * psidot;
+        let t12 = d_peg * d_peg;
+        let t13 = sin_gamma * sin_gamma * t11;
+        let t14 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
+        let t15 = h - t7;
+        let t16 = d_hole * t2 * t3;
+        let t17 = d_peg * t4 * (t6 * t9);
+        let t18 = T::from_f64(0.0625) * (cos_gamma * cos_gamma) * t11 * t12;
+        let t19 = T::from_f64(0.041666666666666664) * (T::from_f64(0.75) * t12 + h * h)
+            * (t10 + t13);
+        let t20 = cos_gamma * t5 * t8;
+        let t21 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7)
+            + sin_gamma * (t17 - T::from_f64(0.5) * t20);
+        let t22 = T::from_f64(0.5) * d_hole
+            + cos_gamma * (t16 * t8 + -t17 + T::from_f64(0.5) * t20) - sin_gamma * t14;
+        let t23 = T::from_f64(0.5)
+            * (t10 * (t21 * t21 + t22 * t22) + T::from_f64(0.25) * t13 * (t15 * t15));
+        let kinetic = m * (t23 + t18 + t19);
+        let total = m * (t23 + t18 + t19 + g * (-(t16 * t6) + cos_gamma * t14));
         (kinetic, total)
     }
     /// Planar geometry at γ (m): a1, a2 (paper (1)), S1, S2 (2), b = BB1, sin τ, cos τ, η_C, z_C (3), KL, BL (5), η_L, z_L (4b).
@@ -527,7 +532,7 @@ pub mod rigid_peg {
     /// - `geo`: vector of 13
     ///
     /// # Cost
-    /// 10 add/sub, 56 mul, 3 div, 1 sqrt, 5 transcendental, 0 branches; 18 `let`s.
+    /// 10 add/sub, 37 mul, 3 div, 1 sqrt, 5 transcendental, 0 branches; 21 `let`s.
     #[inline]
     pub fn geometry<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> SVector<T, 13> {
         let gamma = x[0];
@@ -543,36 +548,37 @@ pub mod rigid_peg {
         let t4 = t1.sin();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = -d_hole * t2 * t3 * t6;
-        let t8 = T::from_f64(0.5) * t5 * t6;
-        let t9 = t8 + d_hole * cos_gamma * t2 * t3 * t6;
-        let t10 = t6 * t9;
-        let t11 = d_hole * t2 * t3 * t6;
-        let t12 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t13 = (-T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t12
-            * (d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t12))
-            .sqrt();
-        let t14 = T::from_f64(1.0) / d_hole;
-        let t15 = t10.hypot(t11);
+        let t7 = t5 * t6;
+        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t9 = T::from_f64(1.0) / d_hole;
+        let t10 = T::from_f64(0.5) * t7;
+        let t11 = d_hole * t2 * t3;
+        let t12 = t11 * t6;
+        let t13 = t11 * cos_gamma;
+        let t14 = -t12;
+        let t15 = t13 * t8;
+        let t16 = (-T::from_f64(2.0) * t15 * (d_hole + T::from_f64(2.0) * t15)).sqrt();
+        let t17 = t6 * (T::from_f64(0.5) * t5 + t13) * t6;
+        let t18 = t17.hypot(t12);
         SMatrix::<
             T,
             13,
             1,
         >::from_row_slice(
             &[
-                t7,
-                t8,
+                t14,
                 t10,
-                t6 * (T::from_f64(0.5) * cos_gamma * t5 * t6 + t11),
-                t13,
-                T::from_f64(2.0) * t13 * t14,
-                T::from_f64(2.0) * t6 * t9 * t14,
-                sin_gamma * (-(T::from_f64(0.5) * h) + t8),
-                t7 + cos_gamma * (T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6),
-                -T::from_f64(2.0) * d_hole * t2 * t3 * t12,
-                T::from_f64(2.0) * t15,
-                -t6 * t9,
-                -T::from_f64(2.0) * d_hole * t2 * t3 * t6,
+                t17,
+                t6 * (T::from_f64(0.5) * cos_gamma * t5 + t11) * t6,
+                t16,
+                T::from_f64(2.0) * t16 * t9,
+                T::from_f64(2.0) * t17 * t9,
+                sin_gamma * (-(T::from_f64(0.5) * h) + t10),
+                t14 + cos_gamma * (T::from_f64(0.5) * h - T::from_f64(0.5) * t7),
+                -T::from_f64(2.0) * t11 * t8,
+                T::from_f64(2.0) * t18,
+                -t17,
+                -T::from_f64(2.0) * t12,
             ],
         )
     }

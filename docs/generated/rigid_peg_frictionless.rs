@@ -29,7 +29,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 68 add/sub, 222 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 49 `let`s.
+    /// 67 add/sub, 142 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 66 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -56,123 +56,126 @@ pub mod rigid_peg_frictionless {
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t19) = t1.sin_cos();
+        let (t4, t12) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = T::from_f64(0.5) * t6 * t7;
+        let t8 = t6 * t7;
         let t9 = sin_gamma * sin_gamma;
         let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t11 = T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t10;
-        let t12 = (-T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t10
-            * (d_hole + t11))
-            .sqrt();
-        let t13 = T::from_f64(0.5) * d_hole;
-        let t14 = -T::from_f64(0.5) * t6 * t7;
-        let t15 = T::from_f64(0.5) * h + t14;
-        let t16 = -(T::from_f64(0.5) * h) + t8;
-        let t17 = (d_hole * t2 * t3 * t7).hypot(t13);
-        let t18 = T::from_f64(1.0) / t17;
-        let t20 = d_peg * t4 * t7 * t19 - T::from_f64(0.5) * cos_gamma * t6 * t10;
-        let t21 = cos_gamma * t16 + sin_gamma * t20;
-        let t22 = -(d_peg * t4 * t7 * t19) + T::from_f64(0.5) * cos_gamma * t6 * t10;
-        let t23 = t13 + d_hole * cos_gamma * t2 * t3 * t10 - sin_gamma * t15
-            + cos_gamma * t22;
-        let t24 = t19 * t19;
-        let t25 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t26 = cos_gamma * cos_gamma;
-        let t27 = -(sin_gamma * t16)
-            + sin_gamma
-                * (t8 + T::from_f64(0.5) * d_peg * t7 * t24
-                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t25 * t26
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t10 * t19)
-            + T::from_f64(2.0) * cos_gamma * t20;
-        let t28 = gammadot * gammadot;
-        let t29 = -(d_hole * t2 * t3 * t7)
-            - T::from_f64(2.0) * d_hole * t2 * t3 * t25 * t26
-            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t15
-            + cos_gamma
-                * (t14 - T::from_f64(0.5) * d_peg * t7 * t24
-                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t25 * t26
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t10 * t19)
-            - T::from_f64(2.0) * sin_gamma * t22;
-        let t30 = psidot * psidot;
-        let t31 = d_peg * d_peg;
-        let t32 = T::from_f64(0.75) * t31 + h * h;
-        let t33 = h - t6 * t7;
-        let t34 = t33 * t33;
+        let t11 = T::from_f64(0.5) * d_hole;
+        let t13 = cos_gamma * t10;
+        let t14 = t12 * t12;
+        let t15 = cos_gamma * cos_gamma;
+        let t16 = gammadot * gammadot;
+        let t17 = psidot * psidot;
+        let t18 = d_peg * d_peg;
+        let t19 = T::from_f64(0.75) * t18 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t35 = f_x * cos_psi;
-        let t36 = f_y * sin_psi;
-        let t37 = f_y * cos_psi;
-        let t38 = -f_x * sin_psi;
-        let t39 = T::from_f64(2.0) * cos_gamma * t16
-            + T::from_f64(2.0) * sin_gamma * t20;
-        let t40 = d_hole + t11 - T::from_f64(2.0) * sin_gamma * t15
-            + T::from_f64(2.0) * cos_gamma * t22;
-        let t41 = cos_gamma * t6 * t10 - T::from_f64(2.0) * d_peg * t4 * t7 * t19;
-        let t42 = T::from_f64(2.0) * h - T::from_f64(2.0) * t6 * t7;
-        let t43 = t7 * (t8 + d_hole * cos_gamma * t2 * t3 * t7) * t18;
-        let t44 = d_hole * t2 * t3 * t7 * t18;
+        let t20 = f_x * cos_psi;
+        let t21 = f_y * sin_psi;
+        let t22 = f_y * cos_psi;
+        let t23 = -f_x * sin_psi;
+        let t24 = sin_gamma * cos_gamma;
+        let t25 = T::from_f64(0.5) * t6;
+        let t26 = T::from_f64(0.08333333333333333) * t19;
+        let t27 = t2 * t3;
+        let t28 = t27 * d_hole;
+        let t29 = t28 * t13;
+        let t30 = (-T::from_f64(2.0) * t29 * (d_hole + T::from_f64(2.0) * t29)).sqrt();
+        let t31 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
+        let t32 = (t28 * t7).hypot(t11);
+        let t33 = T::from_f64(1.0) / t32;
+        let t34 = t30 * t33;
+        let t35 = d_peg * t4 * t12;
+        let t36 = t35 * t7;
+        let t37 = t13 * t6;
+        let t38 = t36 - T::from_f64(0.5) * t37;
+        let t39 = sin_gamma * t38;
+        let t40 = sin_gamma * t31;
+        let t41 = -t36 + T::from_f64(0.5) * t37;
+        let t42 = t15 / (sin_gamma * sin_gamma * sin_gamma);
+        let t43 = t42 * t6;
+        let t44 = t13 * t35;
+        let t45 = h - t8;
+        let t46 = t45 * t45;
+        let t47 = t7 * t33;
+        let t48 = t47 * t28;
+        let t49 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t50 = cos_gamma * t49;
+        let t51 = t50 + t39;
+        let t52 = t28 * t10;
+        let t53 = t11 + cos_gamma * (t52 + t41) - t40;
+        let t54 = sin_gamma
+            * (-t49
+                + t7 * (d_peg * (T::from_f64(0.5) * t14 - T::from_f64(0.5) * t5) + t25)
+                + t43 - T::from_f64(2.0) * t44) + T::from_f64(2.0) * cos_gamma * t38;
+        let t55 = d_hole
+            * (t27 * (-t7 - T::from_f64(2.0) * t42) - T::from_f64(0.5) * cos_gamma * t7)
+            + cos_gamma
+                * (-t31
+                    + t7
+                        * (d_peg * (-(T::from_f64(0.5) * t14) + T::from_f64(0.5) * t5)
+                            - T::from_f64(0.5) * t6) - t43 + T::from_f64(2.0) * t44)
+            - T::from_f64(2.0) * sin_gamma * t41;
+        let t56 = sin_gamma * t49;
+        let t57 = t54 * (T::from_f64(2.0) * t50 + T::from_f64(2.0) * t39);
+        let t58 = t55
+            * (d_hole + cos_gamma * (T::from_f64(2.0) * t52 + T::from_f64(2.0) * t41)
+                - T::from_f64(2.0) * t40);
+        let t59 = T::from_f64(0.25) * t9 * (t37 - T::from_f64(2.0) * t36)
+            * (T::from_f64(2.0) * h - T::from_f64(2.0) * t8);
+        let t60 = t7 * (t25 + t28 * cos_gamma) * t47;
+        let t61 = m * gammadot * psidot;
         let a = Matrix5::new(
             m
-                * (T::from_f64(0.08333333333333333) * t32
+                * (t26
                     + T::from_f64(0.5)
-                        * (T::from_f64(2.0) * (t21 * t21)
-                            + T::from_f64(2.0) * (t23 * t23))),
+                        * (T::from_f64(2.0) * (t51 * t51)
+                            + T::from_f64(2.0) * (t53 * t53))),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m
-                * (T::from_f64(0.25) * t9 * t34 + T::from_f64(0.125) * t26 * t31
-                    + T::from_f64(0.08333333333333333) * t9 * t32),
+            m * (t9 * (T::from_f64(0.25) * t46 + t26) + T::from_f64(0.125) * t15 * t18),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * t21,
+            m * t51,
             T::from_f64(0.0),
             -cos_gamma,
-            t43,
-            t43,
+            t60,
+            t60,
             T::from_f64(0.0),
-            m * sin_gamma * t16,
+            t56 * m,
             T::from_f64(0.0),
-            t12 * t18,
-            -t12 * t18,
-            m * t23,
+            t34,
+            -t34,
+            m * t53,
             T::from_f64(0.0),
             -sin_gamma,
-            t44,
-            t44,
+            t48,
+            t48,
         );
         let b = Vector5::new(
-            m_gamma + t21 * (t35 + t36) + f_z * t23 - m * g * t23
-                + T::from_f64(0.5) * m
-                    * (t27 * t28 * t39
-                        + T::from_f64(0.5) * sin_gamma * cos_gamma * t30 * t34
-                        + T::from_f64(0.25) * t9 * t30 * t41 * t42 + t28 * t29 * t40)
-                - T::from_f64(0.125) * m * sin_gamma * cos_gamma * t30 * t31
-                + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t30
-                    * t32
-                - T::from_f64(0.5) * m * gammadot
-                    * (gammadot
-                        * (T::from_f64(2.0) * t27 * t39 + T::from_f64(2.0) * t29 * t40)),
-            m_psi + sin_gamma * t16 * (t37 + t38)
-                - gammadot
-                    * (m * psidot
-                        * (T::from_f64(0.5) * sin_gamma * cos_gamma * t34
-                            + T::from_f64(0.25) * t9 * t41 * t42
-                            - T::from_f64(0.25) * sin_gamma * cos_gamma * t31
-                            + T::from_f64(0.16666666666666666) * sin_gamma * cos_gamma
-                                * t32)),
-            t35 + t36 - m * (t27 * t28 - sin_gamma * t16 * t30),
-            t37 + t38
-                - m
-                    * (gammadot
-                        * (psidot * (cos_gamma * t16 + sin_gamma * t20) + psidot * t21)),
-            f_z - m * g - m * t28 * t29,
+            m_gamma
+                + m
+                    * (t17 * (-(T::from_f64(0.125) * t18) + t26) * t24 - g * t53
+                        + T::from_f64(0.5)
+                            * (t16 * (t57 + t58)
+                                + t17 * (T::from_f64(0.5) * t24 * t46 + t59))
+                        - T::from_f64(0.5) * gammadot * gammadot
+                            * (T::from_f64(2.0) * t57 + T::from_f64(2.0) * t58))
+                + t51 * (t20 + t21) + f_z * t53,
+            m_psi + t56 * (t22 + t23)
+                - t61
+                    * (t24
+                        * (T::from_f64(0.5) * t46 - T::from_f64(0.25) * t18
+                            + T::from_f64(0.16666666666666666) * t19) + t59),
+            t20 + t21 - m * (t54 * t16 - t56 * t17),
+            t22 + t23 - t61 * t51 * (T::from_f64(1.0) + T::from_f64(1.0)),
+            f_z - m * g - m * t16 * t55,
         );
         (a, b)
     }
@@ -190,7 +193,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 71 add/sub, 225 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 49 `let`s.
+    /// 70 add/sub, 143 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 66 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -218,64 +221,77 @@ pub mod rigid_peg_frictionless {
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t19) = t1.sin_cos();
+        let (t4, t12) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = T::from_f64(0.5) * t6 * t7;
+        let t8 = t6 * t7;
         let t9 = sin_gamma * sin_gamma;
         let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t11 = T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t10;
-        let t12 = (-T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t10
-            * (d_hole + t11))
-            .sqrt();
-        let t13 = T::from_f64(0.5) * d_hole;
-        let t14 = -T::from_f64(0.5) * t6 * t7;
-        let t15 = T::from_f64(0.5) * h + t14;
-        let t16 = -(T::from_f64(0.5) * h) + t8;
-        let t17 = (d_hole * t2 * t3 * t7).hypot(t13);
-        let t18 = T::from_f64(1.0) / t17;
-        let t20 = d_peg * t4 * t7 * t19 - T::from_f64(0.5) * cos_gamma * t6 * t10;
-        let t21 = cos_gamma * t16 + sin_gamma * t20;
-        let t22 = -(d_peg * t4 * t7 * t19) + T::from_f64(0.5) * cos_gamma * t6 * t10;
-        let t23 = t13 + d_hole * cos_gamma * t2 * t3 * t10 - sin_gamma * t15
-            + cos_gamma * t22;
-        let t24 = t19 * t19;
-        let t25 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t26 = cos_gamma * cos_gamma;
-        let t27 = -(sin_gamma * t16)
-            + sin_gamma
-                * (t8 + T::from_f64(0.5) * d_peg * t7 * t24
-                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t25 * t26
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t10 * t19)
-            + T::from_f64(2.0) * cos_gamma * t20;
-        let t28 = gammadot * gammadot;
-        let t29 = -(d_hole * t2 * t3 * t7)
-            - T::from_f64(2.0) * d_hole * t2 * t3 * t25 * t26
-            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t15
-            + cos_gamma
-                * (t14 - T::from_f64(0.5) * d_peg * t7 * t24
-                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t25 * t26
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t10 * t19)
-            - T::from_f64(2.0) * sin_gamma * t22;
-        let t30 = psidot * psidot;
-        let t31 = d_peg * d_peg;
-        let t32 = T::from_f64(0.75) * t31 + h * h;
-        let t33 = h - t6 * t7;
-        let t34 = t33 * t33;
+        let t11 = T::from_f64(0.5) * d_hole;
+        let t13 = cos_gamma * t10;
+        let t14 = t12 * t12;
+        let t15 = cos_gamma * cos_gamma;
+        let t16 = gammadot * gammadot;
+        let t17 = psidot * psidot;
+        let t18 = d_peg * d_peg;
+        let t19 = T::from_f64(0.75) * t18 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t35 = f_x * cos_psi;
-        let t36 = f_y * sin_psi;
-        let t37 = f_y * cos_psi;
-        let t38 = -f_x * sin_psi;
-        let t39 = T::from_f64(2.0) * cos_gamma * t16
-            + T::from_f64(2.0) * sin_gamma * t20;
-        let t40 = d_hole + t11 - T::from_f64(2.0) * sin_gamma * t15
-            + T::from_f64(2.0) * cos_gamma * t22;
-        let t41 = cos_gamma * t6 * t10 - T::from_f64(2.0) * d_peg * t4 * t7 * t19;
-        let t42 = T::from_f64(2.0) * h - T::from_f64(2.0) * t6 * t7;
-        let t43 = t7 * (t8 + d_hole * cos_gamma * t2 * t3 * t7) * t18;
-        let t44 = d_hole * t2 * t3 * t7 * t18;
+        let t20 = f_x * cos_psi;
+        let t21 = f_y * sin_psi;
+        let t22 = f_y * cos_psi;
+        let t23 = -f_x * sin_psi;
+        let t24 = sin_gamma * cos_gamma;
+        let t25 = T::from_f64(0.5) * t6;
+        let t26 = T::from_f64(0.08333333333333333) * t19;
+        let t27 = t2 * t3;
+        let t28 = t27 * d_hole;
+        let t29 = t28 * t13;
+        let t30 = (-T::from_f64(2.0) * t29 * (d_hole + T::from_f64(2.0) * t29)).sqrt();
+        let t31 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
+        let t32 = (t28 * t7).hypot(t11);
+        let t33 = T::from_f64(1.0) / t32;
+        let t34 = t30 * t33;
+        let t35 = d_peg * t4 * t12;
+        let t36 = t35 * t7;
+        let t37 = t13 * t6;
+        let t38 = t36 - T::from_f64(0.5) * t37;
+        let t39 = sin_gamma * t38;
+        let t40 = sin_gamma * t31;
+        let t41 = -t36 + T::from_f64(0.5) * t37;
+        let t42 = t15 / (sin_gamma * sin_gamma * sin_gamma);
+        let t43 = t42 * t6;
+        let t44 = t13 * t35;
+        let t45 = h - t8;
+        let t46 = t45 * t45;
+        let t47 = t7 * t33;
+        let t48 = t47 * t28;
+        let t49 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t50 = cos_gamma * t49;
+        let t51 = t50 + t39;
+        let t52 = t28 * t10;
+        let t53 = t11 + cos_gamma * (t52 + t41) - t40;
+        let t54 = sin_gamma
+            * (-t49
+                + t7 * (d_peg * (T::from_f64(0.5) * t14 - T::from_f64(0.5) * t5) + t25)
+                + t43 - T::from_f64(2.0) * t44) + T::from_f64(2.0) * cos_gamma * t38;
+        let t55 = d_hole
+            * (t27 * (-t7 - T::from_f64(2.0) * t42) - T::from_f64(0.5) * cos_gamma * t7)
+            + cos_gamma
+                * (-t31
+                    + t7
+                        * (d_peg * (-(T::from_f64(0.5) * t14) + T::from_f64(0.5) * t5)
+                            - T::from_f64(0.5) * t6) - t43 + T::from_f64(2.0) * t44)
+            - T::from_f64(2.0) * sin_gamma * t41;
+        let t56 = sin_gamma * t49;
+        let t57 = t54 * (T::from_f64(2.0) * t50 + T::from_f64(2.0) * t39);
+        let t58 = t55
+            * (d_hole + cos_gamma * (T::from_f64(2.0) * t52 + T::from_f64(2.0) * t41)
+                - T::from_f64(2.0) * t40);
+        let t59 = T::from_f64(0.25) * t9 * (t37 - T::from_f64(2.0) * t36)
+            * (T::from_f64(2.0) * h - T::from_f64(2.0) * t8);
+        let t60 = t7 * (t25 + t28 * cos_gamma) * t47;
+        let t61 = gammadot * psidot;
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
@@ -290,55 +306,47 @@ pub mod rigid_peg_frictionless {
             T::from_f64(0.0),
             T::from_f64(0.0),
             -cos_gamma,
-            t43,
-            t43,
+            t60,
+            t60,
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            t12 * t18,
-            -t12 * t18,
+            t34,
+            -t34,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -sin_gamma,
-            t44,
-            t44,
+            t48,
+            t48,
         );
         let b = Vector5::new(
-            t21 * (t35 + t36) + f_z * t23 - m * g * t23
-                + T::from_f64(0.5) * m
-                    * (t27 * t28 * t39
-                        + T::from_f64(0.5) * sin_gamma * cos_gamma * t30 * t34
-                        + T::from_f64(0.25) * t9 * t30 * t41 * t42 + t28 * t29 * t40)
-                - T::from_f64(0.125) * m * sin_gamma * cos_gamma * t30 * t31
-                + T::from_f64(0.08333333333333333) * m * sin_gamma * cos_gamma * t30
-                    * t32
-                - T::from_f64(0.5) * m * gammadot
-                    * (gammadot
-                        * (T::from_f64(2.0) * t27 * t39 + T::from_f64(2.0) * t29 * t40))
-                - gammaddot
-                    * (m
-                        * (T::from_f64(0.08333333333333333) * t32
+            m
+                * (t17 * (-(T::from_f64(0.125) * t18) + t26) * t24 - g * t53
+                    + T::from_f64(0.5)
+                        * (t16 * (t57 + t58)
+                            + t17 * (T::from_f64(0.5) * t24 * t46 + t59))
+                    - T::from_f64(0.5) * gammadot * gammadot
+                        * (T::from_f64(2.0) * t57 + T::from_f64(2.0) * t58)
+                    - gammaddot
+                        * (t26
                             + T::from_f64(0.5)
-                                * (T::from_f64(2.0) * (t21 * t21)
-                                    + T::from_f64(2.0) * (t23 * t23)))),
-            sin_gamma * t16 * (t37 + t38)
-                - gammadot
-                    * (m * psidot
-                        * (T::from_f64(0.5) * sin_gamma * cos_gamma * t34
-                            + T::from_f64(0.25) * t9 * t41 * t42
-                            - T::from_f64(0.25) * sin_gamma * cos_gamma * t31
-                            + T::from_f64(0.16666666666666666) * sin_gamma * cos_gamma
-                                * t32))
-                - psiddot
-                    * (m
-                        * (T::from_f64(0.25) * t9 * t34 + T::from_f64(0.125) * t26 * t31
-                            + T::from_f64(0.08333333333333333) * t9 * t32)),
-            t35 + t36 - m * (t27 * t28 + gammaddot * t21 - sin_gamma * t16 * t30),
-            t37 + t38
+                                * (T::from_f64(2.0) * (t51 * t51)
+                                    + T::from_f64(2.0) * (t53 * t53)))) + t51 * (t20 + t21)
+                + f_z * t53,
+            m
+                * (-(t61
+                    * (t24
+                        * (T::from_f64(0.5) * t46 - T::from_f64(0.25) * t18
+                            + T::from_f64(0.16666666666666666) * t19) + t59))
+                    - psiddot
+                        * (t9 * (T::from_f64(0.25) * t46 + t26)
+                            + T::from_f64(0.125) * t15 * t18)) + t56 * (t22 + t23),
+            t20 + t21 - m * (t54 * t16 + gammaddot * t51 - t56 * t17),
+            t22 + t23
                 - m
-                    * (gammadot * (psidot * (cos_gamma * t16 + sin_gamma * t20))
-                        + psiddot * sin_gamma * t16 + gammadot * psidot * t21),
-            f_z - m * g - m * (t28 * t29 + gammaddot * t23),
+                    * (t61 * (t51 * (T::from_f64(1.0) + T::from_f64(1.0)))
+                        + t56 * psiddot),
+            f_z - m * g - m * (t16 * t55 + gammaddot * t53),
         );
         (a, b)
     }
@@ -352,7 +360,7 @@ pub mod rigid_peg_frictionless {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 26 add/sub, 67 mul, 2 div, 1 sqrt, 4 transcendental, 0 branches; 24 `let`s.
+    /// 24 add/sub, 45 mul, 2 div, 1 sqrt, 4 transcendental, 0 branches; 29 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 4>,
@@ -370,43 +378,41 @@ pub mod rigid_peg_frictionless {
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t12) = t1.sin_cos();
+        let (t4, t9) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = T::from_f64(0.5) * t5 * t6;
+        let t7 = t5 * t6;
         let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t9 = (-T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t8
-            * (d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t8))
-            .sqrt();
-        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
-        let t11 = -(T::from_f64(0.5) * h) + t7;
-        let t13 = gammadot
-            * (cos_gamma * t11
-                + sin_gamma
-                    * (d_peg * t4 * t6 * t12 - T::from_f64(0.5) * cos_gamma * t5 * t8));
-        let t14 = gammadot
-            * (T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t8
-                - sin_gamma * t10
-                + cos_gamma
-                    * (-(d_peg * t4 * t6 * t12)
-                        + T::from_f64(0.5) * cos_gamma * t5 * t8));
-        let t15 = psidot * sin_gamma * t11;
-        let t16 = -sin_gamma * t11;
-        let t17 = -(T::from_f64(0.5) * d_hole) + t16;
-        let t18 = -gammadot * (d_hole * t2 * t3 * t6 - cos_gamma * t10);
-        let t19 = t6 * (t7 + d_hole * cos_gamma * t2 * t3 * t6) + t16;
-        let t20 = t15 + psidot * t19;
-        let t21 = t14 + gammadot * t19;
+        let t10 = cos_gamma * t8;
+        let t11 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
+        let t12 = t10 * t5;
+        let t13 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7;
+        let t14 = sin_gamma * t13;
+        let t15 = d_hole * t2 * t3;
+        let t16 = t15 * t10;
+        let t17 = (-T::from_f64(2.0) * t16 * (d_hole + T::from_f64(2.0) * t16)).sqrt();
+        let t18 = d_peg * t4 * (t6 * t9);
+        let t19 = psidot * t17;
+        let t20 = T::from_f64(0.5) * d_hole
+            + cos_gamma * (t15 * t8 + -t18 + T::from_f64(0.5) * t12) - sin_gamma * t11;
+        let t21 = -t14;
+        let t22 = -(T::from_f64(0.5) * d_hole) + t21;
+        let t23 = gammadot
+            * (cos_gamma * t13 + sin_gamma * (t18 - T::from_f64(0.5) * t12)
+                - (t15 * t6 - cos_gamma * t11));
+        let t24 = t6 * t6 * (T::from_f64(0.5) * t5 + t15 * cos_gamma) + t21;
+        let t25 = psidot * (t14 + t24);
+        let t26 = gammadot * (t20 + t24);
         Matrix3::new(
-            t13 + t18,
-            t15 + psidot * t17,
-            t14 + gammadot * t17,
-            t13 + t18 - psidot * t9,
-            t20,
-            t21,
-            t13 + t18 + psidot * t9,
-            t20,
-            t21,
+            t23,
+            psidot * (t14 + t22),
+            gammadot * (t20 + t22),
+            t23 - t19,
+            t25,
+            t26,
+            t23 + t19,
+            t25,
+            t26,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -420,7 +426,7 @@ pub mod rigid_peg_frictionless {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 23 add/sub, 66 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 22 `let`s.
+    /// 23 add/sub, 52 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 26 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -437,32 +443,31 @@ pub mod rigid_peg_frictionless {
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t10) = t1.sin_cos();
+        let (t4, t9) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = sin_gamma * sin_gamma;
+        let t7 = t5 * t6;
         let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t9 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
-        let t11 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t5 * t6)
-            + sin_gamma
-                * (d_peg * t4 * t6 * t10 - T::from_f64(0.5) * cos_gamma * t5 * t8);
-        let t12 = T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t8
-            - sin_gamma * t9
-            + cos_gamma
-                * (-(d_peg * t4 * t6 * t10) + T::from_f64(0.5) * cos_gamma * t5 * t8);
-        let t13 = gammadot * gammadot;
-        let t14 = psidot * psidot;
-        let t15 = d_peg * d_peg;
-        let t16 = h - t5 * t6;
-        let t17 = T::from_f64(0.5) * m
-            * (t13 * (t11 * t11) + T::from_f64(0.25) * t7 * t14 * (t16 * t16)
-                + t13 * (t12 * t12));
-        let t18 = T::from_f64(0.0625) * m * (cos_gamma * cos_gamma) * t14 * t15;
-        let t19 = T::from_f64(0.041666666666666664) * m
-            * (T::from_f64(0.75) * t15 + h * h) * (t13 + t7 * t14);
-        let kinetic = t17 + t18 + t19;
-        let total = t17 + t18 + t19
-            + m * g * (-(d_hole * t2 * t3 * t6) + cos_gamma * t9);
+        let t10 = gammadot * gammadot;
+        let t11 = psidot * psidot;
+        let t12 = d_peg * d_peg;
+        let t13 = sin_gamma * sin_gamma * t11;
+        let t14 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
+        let t15 = h - t7;
+        let t16 = d_hole * t2 * t3;
+        let t17 = d_peg * t4 * (t6 * t9);
+        let t18 = T::from_f64(0.0625) * (cos_gamma * cos_gamma) * t11 * t12;
+        let t19 = T::from_f64(0.041666666666666664) * (T::from_f64(0.75) * t12 + h * h)
+            * (t10 + t13);
+        let t20 = cos_gamma * t5 * t8;
+        let t21 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7)
+            + sin_gamma * (t17 - T::from_f64(0.5) * t20);
+        let t22 = T::from_f64(0.5) * d_hole
+            + cos_gamma * (t16 * t8 + -t17 + T::from_f64(0.5) * t20) - sin_gamma * t14;
+        let t23 = T::from_f64(0.5)
+            * (t10 * (t21 * t21 + t22 * t22) + T::from_f64(0.25) * t13 * (t15 * t15));
+        let kinetic = m * (t23 + t18 + t19);
+        let total = m * (t23 + t18 + t19 + g * (-(t16 * t6) + cos_gamma * t14));
         (kinetic, total)
     }
 }

@@ -32,7 +32,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 63 add/sub, 163 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 40 `let`s.
+    /// 60 add/sub, 117 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 50 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -61,80 +61,88 @@ pub mod rigid_peg_planar {
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t20) = t1.sin_cos();
+        let (t4, t11) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = -d_hole * t2 * t3 * t7;
-        let t9 = T::from_f64(0.5) * t6 * t7;
-        let t10 = t9 + d_hole * cos_gamma * t2 * t3 * t7;
-        let t11 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t12 = d_hole * cos_gamma * t2 * t3 * t11;
-        let t13 = T::from_f64(0.5) * d_hole;
-        let t14 = -T::from_f64(0.5) * t6 * t7;
-        let t15 = T::from_f64(0.5) * h + t14;
-        let t16 = -(T::from_f64(0.5) * h) + t9;
-        let t17 = (d_hole * t2 * t3 * t7).hypot(t13);
-        let t18 = T::from_f64(1.0) / t17;
-        let t19 = cos_gamma * t16;
-        let t21 = d_peg * t4 * t7 * t20 - T::from_f64(0.5) * cos_gamma * t6 * t11;
-        let t22 = sin_gamma * t21;
-        let t23 = t19 + t22;
-        let t24 = -sin_gamma * t15;
-        let t25 = -(d_peg * t4 * t7 * t20) + T::from_f64(0.5) * cos_gamma * t6 * t11;
-        let t26 = cos_gamma * t25;
-        let t27 = t13 + t12 + t24 + t26;
-        let t28 = -sin_gamma * t16;
-        let t29 = t20 * t20;
-        let t30 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t31 = cos_gamma * cos_gamma;
-        let t32 = t28
-            + sin_gamma
-                * (t9 + T::from_f64(0.5) * d_peg * t7 * t29
-                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t30 * t31
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t11 * t20)
-            + T::from_f64(2.0) * cos_gamma * t21;
-        let t33 = gammadot * gammadot;
-        let t34 = t8 - T::from_f64(2.0) * d_hole * t2 * t3 * t30 * t31
-            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t15
+        let t8 = t6 * t7;
+        let t9 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t10 = T::from_f64(0.5) * d_hole;
+        let t12 = cos_gamma * t9;
+        let t13 = t11 * t11;
+        let t14 = gammadot * gammadot;
+        let t15 = T::from_f64(0.5) * t6;
+        let t16 = t2 * t3;
+        let t17 = t16 * d_hole;
+        let t18 = t17 * t7;
+        let t19 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
+        let t20 = t18.hypot(t10);
+        let t21 = T::from_f64(1.0) / t20;
+        let t22 = d_peg * t4 * t11;
+        let t23 = t22 * t7;
+        let t24 = t12 * t6;
+        let t25 = t23 - T::from_f64(0.5) * t24;
+        let t26 = sin_gamma * t25;
+        let t27 = sin_gamma * t19;
+        let t28 = -t23 + T::from_f64(0.5) * t24;
+        let t29 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t30 = t29 * t6;
+        let t31 = t12 * t22;
+        let t32 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t33 = cos_gamma * t32;
+        let t34 = t33 + t26;
+        let t35 = t17 * t9;
+        let t36 = cos_gamma * (t35 + t28);
+        let t37 = t10 + t36 - t27;
+        let t38 = -t32;
+        let t39 = sin_gamma
+            * (t38
+                + t7 * (d_peg * (T::from_f64(0.5) * t13 - T::from_f64(0.5) * t5) + t15)
+                + t30 - T::from_f64(2.0) * t31) + T::from_f64(2.0) * cos_gamma * t25;
+        let t40 = -t19;
+        let t41 = d_hole
+            * (t16 * (-t7 - T::from_f64(2.0) * t29) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
-                * (t14 - T::from_f64(0.5) * d_peg * t7 * t29
-                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t30 * t31
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t11 * t20)
-            - T::from_f64(2.0) * sin_gamma * t25;
-        let t35 = t8 + cos_gamma * t15 + t19 + t22;
-        let t36 = T::from_f64(2.0) * cos_gamma * t16
-            + T::from_f64(2.0) * sin_gamma * t21;
-        let t37 = d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t11
-            - T::from_f64(2.0) * sin_gamma * t15 + T::from_f64(2.0) * cos_gamma * t25;
+                * (t40
+                    + t7
+                        * (d_peg * (-(T::from_f64(0.5) * t13) + T::from_f64(0.5) * t5)
+                            - T::from_f64(0.5) * t6) - t30 + T::from_f64(2.0) * t31)
+            - T::from_f64(2.0) * sin_gamma * t28;
+        let t42 = cos_gamma * (t19 + t32) - t18 + t26;
+        let t43 = sin_gamma * (t40 + t38);
+        let t44 = t7 * (t15 + t17 * cos_gamma) * t7;
+        let t45 = t39 * (T::from_f64(2.0) * t33 + T::from_f64(2.0) * t26);
+        let t46 = t41
+            * (d_hole + cos_gamma * (T::from_f64(2.0) * t35 + T::from_f64(2.0) * t28)
+                - T::from_f64(2.0) * t27);
+        let t47 = m * t14;
         let a = Matrix3::new(
             m
                 * (T::from_f64(0.08333333333333333)
                     * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
                     + T::from_f64(0.5)
-                        * (T::from_f64(2.0) * (t23 * t23)
-                            + T::from_f64(2.0) * (t27 * t27))),
-            f * (-(t_k_eta * t35) - t_k_z * (t12 + t24 + t26 + t28)),
+                        * (T::from_f64(2.0) * (t34 * t34)
+                            + T::from_f64(2.0) * (t37 * t37))),
+            f * (-(t_k_eta * t42) - t_k_z * (t36 + t43)),
             f
-                * (-(T::from_f64(2.0) * t35 * t_b_eta)
-                    - T::from_f64(2.0) * (t13 + t7 * t10 + t12 + t24 + t26 + t28)
-                        * t_b_z),
-            m * t23,
+                * (-(T::from_f64(2.0) * t42 * t_b_eta)
+                    - T::from_f64(2.0) * (t10 + t36 + t43 + t44) * t_b_z),
+            m * t34,
             -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t5,
-            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t7 * t10 * t18,
-            m * t27,
+            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t44 * t21,
+            m * t37,
             -(f * t_k_z) - sin_gamma,
-            -(T::from_f64(2.0) * f * t_b_z)
-                + T::from_f64(2.0) * d_hole * t2 * t3 * t7 * t18,
+            -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * t18 * t21,
         );
         let b = Vector3::new(
-            m_gamma + f_z * t27 - m * g * t27
-                - T::from_f64(0.5) * m * gammadot
-                    * (gammadot
-                        * (T::from_f64(2.0) * t32 * t36 + T::from_f64(2.0) * t34 * t37))
-                + f_x * t23 + T::from_f64(0.5) * m * (t33 * (t32 * t36 + t34 * t37)),
-            f_x - m * t32 * t33,
-            f_z - m * g - m * t33 * t34,
+            m_gamma
+                + m
+                    * (-(g * t37)
+                        - T::from_f64(0.5) * gammadot * gammadot
+                            * (T::from_f64(2.0) * t45 + T::from_f64(2.0) * t46)
+                        + T::from_f64(0.5) * t14 * (t45 + t46)) + f_z * t37 + f_x * t34,
+            f_x - t47 * t39,
+            f_z - m * g - t47 * t41,
         );
         (a, b)
     }
@@ -153,7 +161,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 65 add/sub, 164 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 40 `let`s.
+    /// 62 add/sub, 118 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 49 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -183,82 +191,87 @@ pub mod rigid_peg_planar {
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t20) = t1.sin_cos();
+        let (t4, t11) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = -d_hole * t2 * t3 * t7;
-        let t9 = T::from_f64(0.5) * t6 * t7;
-        let t10 = t9 + d_hole * cos_gamma * t2 * t3 * t7;
-        let t11 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t12 = d_hole * cos_gamma * t2 * t3 * t11;
-        let t13 = T::from_f64(0.5) * d_hole;
-        let t14 = -T::from_f64(0.5) * t6 * t7;
-        let t15 = T::from_f64(0.5) * h + t14;
-        let t16 = -(T::from_f64(0.5) * h) + t9;
-        let t17 = (d_hole * t2 * t3 * t7).hypot(t13);
-        let t18 = T::from_f64(1.0) / t17;
-        let t19 = cos_gamma * t16;
-        let t21 = d_peg * t4 * t7 * t20 - T::from_f64(0.5) * cos_gamma * t6 * t11;
-        let t22 = sin_gamma * t21;
-        let t23 = t19 + t22;
-        let t24 = -sin_gamma * t15;
-        let t25 = -(d_peg * t4 * t7 * t20) + T::from_f64(0.5) * cos_gamma * t6 * t11;
-        let t26 = cos_gamma * t25;
-        let t27 = t13 + t12 + t24 + t26;
-        let t28 = -sin_gamma * t16;
-        let t29 = t20 * t20;
-        let t30 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t31 = cos_gamma * cos_gamma;
-        let t32 = t28
-            + sin_gamma
-                * (t9 + T::from_f64(0.5) * d_peg * t7 * t29
-                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t30 * t31
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t11 * t20)
-            + T::from_f64(2.0) * cos_gamma * t21;
-        let t33 = gammadot * gammadot;
-        let t34 = t8 - T::from_f64(2.0) * d_hole * t2 * t3 * t30 * t31
-            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t15
+        let t8 = t6 * t7;
+        let t9 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t10 = T::from_f64(0.5) * d_hole;
+        let t12 = cos_gamma * t9;
+        let t13 = t11 * t11;
+        let t14 = gammadot * gammadot;
+        let t15 = T::from_f64(0.5) * t6;
+        let t16 = t2 * t3;
+        let t17 = t16 * d_hole;
+        let t18 = t17 * t7;
+        let t19 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
+        let t20 = t18.hypot(t10);
+        let t21 = T::from_f64(1.0) / t20;
+        let t22 = d_peg * t4 * t11;
+        let t23 = t22 * t7;
+        let t24 = t12 * t6;
+        let t25 = t23 - T::from_f64(0.5) * t24;
+        let t26 = sin_gamma * t25;
+        let t27 = sin_gamma * t19;
+        let t28 = -t23 + T::from_f64(0.5) * t24;
+        let t29 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t30 = t29 * t6;
+        let t31 = t12 * t22;
+        let t32 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t33 = cos_gamma * t32;
+        let t34 = t33 + t26;
+        let t35 = t17 * t9;
+        let t36 = cos_gamma * (t35 + t28);
+        let t37 = t10 + t36 - t27;
+        let t38 = -t32;
+        let t39 = sin_gamma
+            * (t38
+                + t7 * (d_peg * (T::from_f64(0.5) * t13 - T::from_f64(0.5) * t5) + t15)
+                + t30 - T::from_f64(2.0) * t31) + T::from_f64(2.0) * cos_gamma * t25;
+        let t40 = -t19;
+        let t41 = d_hole
+            * (t16 * (-t7 - T::from_f64(2.0) * t29) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
-                * (t14 - T::from_f64(0.5) * d_peg * t7 * t29
-                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t30 * t31
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t11 * t20)
-            - T::from_f64(2.0) * sin_gamma * t25;
-        let t35 = t8 + cos_gamma * t15 + t19 + t22;
-        let t36 = T::from_f64(2.0) * cos_gamma * t16
-            + T::from_f64(2.0) * sin_gamma * t21;
-        let t37 = d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t11
-            - T::from_f64(2.0) * sin_gamma * t15 + T::from_f64(2.0) * cos_gamma * t25;
+                * (t40
+                    + t7
+                        * (d_peg * (-(T::from_f64(0.5) * t13) + T::from_f64(0.5) * t5)
+                            - T::from_f64(0.5) * t6) - t30 + T::from_f64(2.0) * t31)
+            - T::from_f64(2.0) * sin_gamma * t28;
+        let t42 = cos_gamma * (t19 + t32) - t18 + t26;
+        let t43 = sin_gamma * (t40 + t38);
+        let t44 = t7 * (t15 + t17 * cos_gamma) * t7;
+        let t45 = t39 * (T::from_f64(2.0) * t33 + T::from_f64(2.0) * t26);
+        let t46 = t41
+            * (d_hole + cos_gamma * (T::from_f64(2.0) * t35 + T::from_f64(2.0) * t28)
+                - T::from_f64(2.0) * t27);
         let a = Matrix3::new(
             -T::from_f64(1.0),
-            f * (-(t_k_eta * t35) - t_k_z * (t12 + t24 + t26 + t28)),
+            f * (-(t_k_eta * t42) - t_k_z * (t36 + t43)),
             f
-                * (-(T::from_f64(2.0) * t35 * t_b_eta)
-                    - T::from_f64(2.0) * (t13 + t7 * t10 + t12 + t24 + t26 + t28)
-                        * t_b_z),
+                * (-(T::from_f64(2.0) * t42 * t_b_eta)
+                    - T::from_f64(2.0) * (t10 + t36 + t43 + t44) * t_b_z),
             T::from_f64(0.0),
             -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t5,
-            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t7 * t10 * t18,
+            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t44 * t21,
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            -(T::from_f64(2.0) * f * t_b_z)
-                + T::from_f64(2.0) * d_hole * t2 * t3 * t7 * t18,
+            -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * t18 * t21,
         );
         let b = Vector3::new(
-            f_z * t27 - m * g * t27
-                - T::from_f64(0.5) * m * gammadot
-                    * (gammadot
-                        * (T::from_f64(2.0) * t32 * t36 + T::from_f64(2.0) * t34 * t37))
-                + f_x * t23 + T::from_f64(0.5) * m * (t33 * (t32 * t36 + t34 * t37))
-                - gammaddot
-                    * (m
+            m
+                * (-(g * t37)
+                    - T::from_f64(0.5) * gammadot * gammadot
+                        * (T::from_f64(2.0) * t45 + T::from_f64(2.0) * t46)
+                    + T::from_f64(0.5) * t14 * (t45 + t46)
+                    - gammaddot
                         * (T::from_f64(0.08333333333333333)
                             * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
                             + T::from_f64(0.5)
-                                * (T::from_f64(2.0) * (t23 * t23)
-                                    + T::from_f64(2.0) * (t27 * t27)))),
-            f_x - m * (t32 * t33 + gammaddot * t23),
-            f_z - m * g - m * (t33 * t34 + gammaddot * t27),
+                                * (T::from_f64(2.0) * (t34 * t34)
+                                    + T::from_f64(2.0) * (t37 * t37)))) + f_z * t37 + f_x * t34,
+            f_x - m * (t39 * t14 + gammaddot * t34),
+            f_z - m * g - m * (t14 * t41 + gammaddot * t37),
         );
         (a, b)
     }
@@ -272,7 +285,7 @@ pub mod rigid_peg_planar {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 19 add/sub, 49 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 18 `let`s.
+    /// 19 add/sub, 38 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 21 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 2>,
@@ -289,36 +302,34 @@ pub mod rigid_peg_planar {
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t11) = t1.sin_cos();
+        let (t4, t9) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = T::from_f64(0.5) * t5 * t6;
+        let t7 = t5 * t6;
         let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t9 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
-        let t10 = -(T::from_f64(0.5) * h) + t7;
-        let t12 = gammadot
-            * (T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t8
-                - sin_gamma * t9
-                + cos_gamma
-                    * (-(d_peg * t4 * t6 * t11)
-                        + T::from_f64(0.5) * cos_gamma * t5 * t8));
-        let t13 = -sin_gamma * t10;
-        let t14 = gammadot
-            * ((cos_gamma * t10
-                + sin_gamma
-                    * (d_peg * t4 * t6 * t11 - T::from_f64(0.5) * cos_gamma * t5 * t8))
-                - (d_hole * t2 * t3 * t6 - cos_gamma * t9));
-        let t15 = t12 + gammadot * (t6 * (t7 + d_hole * cos_gamma * t2 * t3 * t6) + t13);
+        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
+        let t11 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7;
+        let t12 = d_hole * t2 * t3;
+        let t13 = d_peg * t4 * (t6 * t9);
+        let t14 = cos_gamma * t5 * t8;
+        let t15 = T::from_f64(0.5) * d_hole
+            + cos_gamma * (t12 * t8 + -t13 + T::from_f64(0.5) * t14) - sin_gamma * t10;
+        let t16 = -sin_gamma * t11;
+        let t17 = gammadot
+            * (cos_gamma * t11 + sin_gamma * (t13 - T::from_f64(0.5) * t14)
+                - (t12 * t6 - cos_gamma * t10));
+        let t18 = gammadot
+            * (t15 + t6 * t6 * (T::from_f64(0.5) * t5 + t12 * cos_gamma) + t16);
         Matrix3::new(
-            t14,
+            t17,
             T::from_f64(0.0),
-            t12 + gammadot * (-(T::from_f64(0.5) * d_hole) + t13),
-            t14,
+            gammadot * (t15 + -(T::from_f64(0.5) * d_hole) + t16),
+            t17,
             T::from_f64(0.0),
-            t15,
-            t14,
+            t18,
+            t17,
             T::from_f64(0.0),
-            t15,
+            t18,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -332,7 +343,7 @@ pub mod rigid_peg_planar {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 18 add/sub, 52 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 17 `let`s.
+    /// 17 add/sub, 41 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 19 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -351,21 +362,22 @@ pub mod rigid_peg_planar {
         let (t4, t9) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t8 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
-        let t10 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t5 * t6)
-            + sin_gamma
-                * (d_peg * t4 * t6 * t9 - T::from_f64(0.5) * cos_gamma * t5 * t7);
-        let t11 = T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t7
-            - sin_gamma * t8
-            + cos_gamma
-                * (-(d_peg * t4 * t6 * t9) + T::from_f64(0.5) * cos_gamma * t5 * t7);
-        let t12 = gammadot * gammadot;
-        let t13 = T::from_f64(0.5) * m * (t12 * (t10 * t10 + t11 * t11));
-        let t14 = T::from_f64(0.041666666666666664) * m * t12
-            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h);
-        let kinetic = t13 + t14;
-        let total = m * g * (-(d_hole * t2 * t3 * t6) + cos_gamma * t8) + t13 + t14;
+        let t7 = t5 * t6;
+        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
+        let t11 = d_hole * t2 * t3;
+        let t12 = d_peg * t4 * (t6 * t9);
+        let t13 = cos_gamma * t5 * t8;
+        let t14 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7)
+            + sin_gamma * (t12 - T::from_f64(0.5) * t13);
+        let t15 = T::from_f64(0.5) * d_hole
+            + cos_gamma * (t11 * t8 + -t12 + T::from_f64(0.5) * t13) - sin_gamma * t10;
+        let t16 = gammadot * gammadot
+            * (T::from_f64(0.5) * (t14 * t14 + t15 * t15)
+                + T::from_f64(0.041666666666666664)
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h));
+        let kinetic = t16 * m;
+        let total = m * (t16 + g * (-(t11 * t6) + cos_gamma * t10));
         (kinetic, total)
     }
 }

@@ -29,7 +29,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 46 add/sub, 147 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 31 `let`s.
+    /// 46 add/sub, 100 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 43 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -52,69 +52,79 @@ pub mod rigid_peg_planar_frictionless {
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t16) = t1.sin_cos();
+        let (t4, t11) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = T::from_f64(0.5) * t6 * t7;
+        let t8 = t6 * t7;
         let t9 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
         let t10 = T::from_f64(0.5) * d_hole;
-        let t11 = -T::from_f64(0.5) * t6 * t7;
-        let t12 = T::from_f64(0.5) * h + t11;
-        let t13 = -(T::from_f64(0.5) * h) + t8;
-        let t14 = (d_hole * t2 * t3 * t7).hypot(t10);
-        let t15 = T::from_f64(1.0) / t14;
-        let t17 = d_peg * t4 * t7 * t16 - T::from_f64(0.5) * cos_gamma * t6 * t9;
-        let t18 = cos_gamma * t13 + sin_gamma * t17;
-        let t19 = -(d_peg * t4 * t7 * t16) + T::from_f64(0.5) * cos_gamma * t6 * t9;
-        let t20 = t10 + d_hole * cos_gamma * t2 * t3 * t9 - sin_gamma * t12
-            + cos_gamma * t19;
-        let t21 = t16 * t16;
-        let t22 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t23 = cos_gamma * cos_gamma;
-        let t24 = -(sin_gamma * t13)
-            + sin_gamma
-                * (t8 + T::from_f64(0.5) * d_peg * t7 * t21
-                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t22 * t23
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t9 * t16)
-            + T::from_f64(2.0) * cos_gamma * t17;
-        let t25 = gammadot * gammadot;
-        let t26 = -(d_hole * t2 * t3 * t7)
-            - T::from_f64(2.0) * d_hole * t2 * t3 * t22 * t23
-            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t12
+        let t12 = cos_gamma * t9;
+        let t13 = t11 * t11;
+        let t14 = gammadot * gammadot;
+        let t15 = T::from_f64(0.5) * t6;
+        let t16 = t2 * t3;
+        let t17 = t16 * d_hole;
+        let t18 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
+        let t19 = (t17 * t7).hypot(t10);
+        let t20 = d_peg * t4 * t11;
+        let t21 = t20 * t7;
+        let t22 = t12 * t6;
+        let t23 = t21 - T::from_f64(0.5) * t22;
+        let t24 = sin_gamma * t23;
+        let t25 = sin_gamma * t18;
+        let t26 = -t21 + T::from_f64(0.5) * t22;
+        let t27 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t28 = t27 * t6;
+        let t29 = t12 * t20;
+        let t30 = t7 / t19;
+        let t31 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t32 = cos_gamma * t31;
+        let t33 = t32 + t24;
+        let t34 = t17 * t9;
+        let t35 = t10 + cos_gamma * (t34 + t26) - t25;
+        let t36 = sin_gamma
+            * (-t31
+                + t7 * (d_peg * (T::from_f64(0.5) * t13 - T::from_f64(0.5) * t5) + t15)
+                + t28 - T::from_f64(2.0) * t29) + T::from_f64(2.0) * cos_gamma * t23;
+        let t37 = d_hole
+            * (t16 * (-t7 - T::from_f64(2.0) * t27) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
-                * (t11 - T::from_f64(0.5) * d_peg * t7 * t21
-                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t22 * t23
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t9 * t16)
-            - T::from_f64(2.0) * sin_gamma * t19;
-        let t27 = T::from_f64(2.0) * cos_gamma * t13
-            + T::from_f64(2.0) * sin_gamma * t17;
-        let t28 = d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t9
-            - T::from_f64(2.0) * sin_gamma * t12 + T::from_f64(2.0) * cos_gamma * t19;
+                * (-t18
+                    + t7
+                        * (d_peg * (-(T::from_f64(0.5) * t13) + T::from_f64(0.5) * t5)
+                            - T::from_f64(0.5) * t6) - t28 + T::from_f64(2.0) * t29)
+            - T::from_f64(2.0) * sin_gamma * t26;
+        let t38 = t36 * (T::from_f64(2.0) * t32 + T::from_f64(2.0) * t24);
+        let t39 = t37
+            * (d_hole + cos_gamma * (T::from_f64(2.0) * t34 + T::from_f64(2.0) * t26)
+                - T::from_f64(2.0) * t25);
+        let t40 = m * t14;
         let a = Matrix3::new(
             m
                 * (T::from_f64(0.08333333333333333)
                     * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
                     + T::from_f64(0.5)
-                        * (T::from_f64(2.0) * (t18 * t18)
-                            + T::from_f64(2.0) * (t20 * t20))),
+                        * (T::from_f64(2.0) * (t33 * t33)
+                            + T::from_f64(2.0) * (t35 * t35))),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * t18,
+            m * t33,
             -T::from_f64(1.0) + T::from_f64(2.0) * t5,
-            T::from_f64(2.0) * t7 * (t8 + d_hole * cos_gamma * t2 * t3 * t7) * t15,
-            m * t20,
+            T::from_f64(2.0) * (t7 * (t15 + t17 * cos_gamma)) * t30,
+            m * t35,
             -sin_gamma,
-            T::from_f64(2.0) * d_hole * t2 * t3 * t7 * t15,
+            T::from_f64(2.0) * t30 * t17,
         );
         let b = Vector3::new(
-            m_gamma + f_z * t20 - m * g * t20
-                - T::from_f64(0.5) * m * gammadot
-                    * (gammadot
-                        * (T::from_f64(2.0) * t24 * t27 + T::from_f64(2.0) * t26 * t28))
-                + f_x * t18 + T::from_f64(0.5) * m * (t25 * (t24 * t27 + t26 * t28)),
-            f_x - m * t24 * t25,
-            f_z - m * g - m * t25 * t26,
+            m_gamma
+                + m
+                    * (-(g * t35)
+                        - T::from_f64(0.5) * gammadot * gammadot
+                            * (T::from_f64(2.0) * t38 + T::from_f64(2.0) * t39)
+                        + T::from_f64(0.5) * t14 * (t38 + t39)) + f_z * t35 + f_x * t33,
+            f_x - t40 * t36,
+            f_z - m * g - t40 * t37,
         );
         (a, b)
     }
@@ -132,7 +142,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 48 add/sub, 148 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 31 `let`s.
+    /// 48 add/sub, 101 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 42 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -156,71 +166,78 @@ pub mod rigid_peg_planar_frictionless {
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t16) = t1.sin_cos();
+        let (t4, t11) = t1.sin_cos();
         let t5 = t4 * t4;
         let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
         let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = T::from_f64(0.5) * t6 * t7;
+        let t8 = t6 * t7;
         let t9 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
         let t10 = T::from_f64(0.5) * d_hole;
-        let t11 = -T::from_f64(0.5) * t6 * t7;
-        let t12 = T::from_f64(0.5) * h + t11;
-        let t13 = -(T::from_f64(0.5) * h) + t8;
-        let t14 = (d_hole * t2 * t3 * t7).hypot(t10);
-        let t15 = T::from_f64(1.0) / t14;
-        let t17 = d_peg * t4 * t7 * t16 - T::from_f64(0.5) * cos_gamma * t6 * t9;
-        let t18 = cos_gamma * t13 + sin_gamma * t17;
-        let t19 = -(d_peg * t4 * t7 * t16) + T::from_f64(0.5) * cos_gamma * t6 * t9;
-        let t20 = t10 + d_hole * cos_gamma * t2 * t3 * t9 - sin_gamma * t12
-            + cos_gamma * t19;
-        let t21 = t16 * t16;
-        let t22 = T::from_f64(1.0) / (sin_gamma * sin_gamma * sin_gamma);
-        let t23 = cos_gamma * cos_gamma;
-        let t24 = -(sin_gamma * t13)
-            + sin_gamma
-                * (t8 + T::from_f64(0.5) * d_peg * t7 * t21
-                    - T::from_f64(0.5) * d_peg * t5 * t7 + t6 * t22 * t23
-                    - T::from_f64(2.0) * d_peg * cos_gamma * t4 * t9 * t16)
-            + T::from_f64(2.0) * cos_gamma * t17;
-        let t25 = gammadot * gammadot;
-        let t26 = -(d_hole * t2 * t3 * t7)
-            - T::from_f64(2.0) * d_hole * t2 * t3 * t22 * t23
-            - T::from_f64(0.5) * d_hole * cos_gamma * t7 - cos_gamma * t12
+        let t12 = cos_gamma * t9;
+        let t13 = t11 * t11;
+        let t14 = gammadot * gammadot;
+        let t15 = T::from_f64(0.5) * t6;
+        let t16 = t2 * t3;
+        let t17 = t16 * d_hole;
+        let t18 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
+        let t19 = (t17 * t7).hypot(t10);
+        let t20 = d_peg * t4 * t11;
+        let t21 = t20 * t7;
+        let t22 = t12 * t6;
+        let t23 = t21 - T::from_f64(0.5) * t22;
+        let t24 = sin_gamma * t23;
+        let t25 = sin_gamma * t18;
+        let t26 = -t21 + T::from_f64(0.5) * t22;
+        let t27 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t28 = t27 * t6;
+        let t29 = t12 * t20;
+        let t30 = t7 / t19;
+        let t31 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t32 = cos_gamma * t31;
+        let t33 = t32 + t24;
+        let t34 = t17 * t9;
+        let t35 = t10 + cos_gamma * (t34 + t26) - t25;
+        let t36 = sin_gamma
+            * (-t31
+                + t7 * (d_peg * (T::from_f64(0.5) * t13 - T::from_f64(0.5) * t5) + t15)
+                + t28 - T::from_f64(2.0) * t29) + T::from_f64(2.0) * cos_gamma * t23;
+        let t37 = d_hole
+            * (t16 * (-t7 - T::from_f64(2.0) * t27) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
-                * (t11 - T::from_f64(0.5) * d_peg * t7 * t21
-                    + T::from_f64(0.5) * d_peg * t5 * t7 - t6 * t22 * t23
-                    + T::from_f64(2.0) * d_peg * cos_gamma * t4 * t9 * t16)
-            - T::from_f64(2.0) * sin_gamma * t19;
-        let t27 = T::from_f64(2.0) * cos_gamma * t13
-            + T::from_f64(2.0) * sin_gamma * t17;
-        let t28 = d_hole + T::from_f64(2.0) * d_hole * cos_gamma * t2 * t3 * t9
-            - T::from_f64(2.0) * sin_gamma * t12 + T::from_f64(2.0) * cos_gamma * t19;
+                * (-t18
+                    + t7
+                        * (d_peg * (-(T::from_f64(0.5) * t13) + T::from_f64(0.5) * t5)
+                            - T::from_f64(0.5) * t6) - t28 + T::from_f64(2.0) * t29)
+            - T::from_f64(2.0) * sin_gamma * t26;
+        let t38 = t36 * (T::from_f64(2.0) * t32 + T::from_f64(2.0) * t24);
+        let t39 = t37
+            * (d_hole + cos_gamma * (T::from_f64(2.0) * t34 + T::from_f64(2.0) * t26)
+                - T::from_f64(2.0) * t25);
         let a = Matrix3::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             -T::from_f64(1.0) + T::from_f64(2.0) * t5,
-            T::from_f64(2.0) * t7 * (t8 + d_hole * cos_gamma * t2 * t3 * t7) * t15,
+            T::from_f64(2.0) * (t7 * (t15 + t17 * cos_gamma)) * t30,
             T::from_f64(0.0),
             -sin_gamma,
-            T::from_f64(2.0) * d_hole * t2 * t3 * t7 * t15,
+            T::from_f64(2.0) * t30 * t17,
         );
         let b = Vector3::new(
-            f_z * t20 - m * g * t20
-                - T::from_f64(0.5) * m * gammadot
-                    * (gammadot
-                        * (T::from_f64(2.0) * t24 * t27 + T::from_f64(2.0) * t26 * t28))
-                + f_x * t18 + T::from_f64(0.5) * m * (t25 * (t24 * t27 + t26 * t28))
-                - gammaddot
-                    * (m
+            m
+                * (-(g * t35)
+                    - T::from_f64(0.5) * gammadot * gammadot
+                        * (T::from_f64(2.0) * t38 + T::from_f64(2.0) * t39)
+                    + T::from_f64(0.5) * t14 * (t38 + t39)
+                    - gammaddot
                         * (T::from_f64(0.08333333333333333)
                             * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
                             + T::from_f64(0.5)
-                                * (T::from_f64(2.0) * (t18 * t18)
-                                    + T::from_f64(2.0) * (t20 * t20)))),
-            f_x - m * (t24 * t25 + gammaddot * t18),
-            f_z - m * g - m * (t25 * t26 + gammaddot * t20),
+                                * (T::from_f64(2.0) * (t33 * t33)
+                                    + T::from_f64(2.0) * (t35 * t35)))) + f_z * t35 + f_x * t33,
+            f_x - m * (t36 * t14 + gammaddot * t33),
+            f_z - m * g - m * (t14 * t37 + gammaddot * t35),
         );
         (a, b)
     }
@@ -234,7 +251,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 19 add/sub, 49 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 18 `let`s.
+    /// 19 add/sub, 38 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 21 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 2>,
@@ -251,36 +268,34 @@ pub mod rigid_peg_planar_frictionless {
         let t1 = T::from_f64(0.5) * gamma;
         let t2 = (t0 + t1).sin();
         let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t11) = t1.sin_cos();
+        let (t4, t9) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = T::from_f64(0.5) * t5 * t6;
+        let t7 = t5 * t6;
         let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t9 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
-        let t10 = -(T::from_f64(0.5) * h) + t7;
-        let t12 = gammadot
-            * (T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t8
-                - sin_gamma * t9
-                + cos_gamma
-                    * (-(d_peg * t4 * t6 * t11)
-                        + T::from_f64(0.5) * cos_gamma * t5 * t8));
-        let t13 = -sin_gamma * t10;
-        let t14 = gammadot
-            * ((cos_gamma * t10
-                + sin_gamma
-                    * (d_peg * t4 * t6 * t11 - T::from_f64(0.5) * cos_gamma * t5 * t8))
-                - (d_hole * t2 * t3 * t6 - cos_gamma * t9));
-        let t15 = t12 + gammadot * (t6 * (t7 + d_hole * cos_gamma * t2 * t3 * t6) + t13);
+        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
+        let t11 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7;
+        let t12 = d_hole * t2 * t3;
+        let t13 = d_peg * t4 * (t6 * t9);
+        let t14 = cos_gamma * t5 * t8;
+        let t15 = T::from_f64(0.5) * d_hole
+            + cos_gamma * (t12 * t8 + -t13 + T::from_f64(0.5) * t14) - sin_gamma * t10;
+        let t16 = -sin_gamma * t11;
+        let t17 = gammadot
+            * (cos_gamma * t11 + sin_gamma * (t13 - T::from_f64(0.5) * t14)
+                - (t12 * t6 - cos_gamma * t10));
+        let t18 = gammadot
+            * (t15 + t6 * t6 * (T::from_f64(0.5) * t5 + t12 * cos_gamma) + t16);
         Matrix3::new(
-            t14,
+            t17,
             T::from_f64(0.0),
-            t12 + gammadot * (-(T::from_f64(0.5) * d_hole) + t13),
-            t14,
+            gammadot * (t15 + -(T::from_f64(0.5) * d_hole) + t16),
+            t17,
             T::from_f64(0.0),
-            t15,
-            t14,
+            t18,
+            t17,
             T::from_f64(0.0),
-            t15,
+            t18,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -294,7 +309,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 18 add/sub, 52 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 17 `let`s.
+    /// 17 add/sub, 41 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 19 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -313,21 +328,22 @@ pub mod rigid_peg_planar_frictionless {
         let (t4, t9) = t1.sin_cos();
         let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
         let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t8 = T::from_f64(0.5) * h - T::from_f64(0.5) * t5 * t6;
-        let t10 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t5 * t6)
-            + sin_gamma
-                * (d_peg * t4 * t6 * t9 - T::from_f64(0.5) * cos_gamma * t5 * t7);
-        let t11 = T::from_f64(0.5) * d_hole + d_hole * cos_gamma * t2 * t3 * t7
-            - sin_gamma * t8
-            + cos_gamma
-                * (-(d_peg * t4 * t6 * t9) + T::from_f64(0.5) * cos_gamma * t5 * t7);
-        let t12 = gammadot * gammadot;
-        let t13 = T::from_f64(0.5) * m * (t12 * (t10 * t10 + t11 * t11));
-        let t14 = T::from_f64(0.041666666666666664) * m * t12
-            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h);
-        let kinetic = t13 + t14;
-        let total = m * g * (-(d_hole * t2 * t3 * t6) + cos_gamma * t8) + t13 + t14;
+        let t7 = t5 * t6;
+        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
+        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
+        let t11 = d_hole * t2 * t3;
+        let t12 = d_peg * t4 * (t6 * t9);
+        let t13 = cos_gamma * t5 * t8;
+        let t14 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7)
+            + sin_gamma * (t12 - T::from_f64(0.5) * t13);
+        let t15 = T::from_f64(0.5) * d_hole
+            + cos_gamma * (t11 * t8 + -t12 + T::from_f64(0.5) * t13) - sin_gamma * t10;
+        let t16 = gammadot * gammadot
+            * (T::from_f64(0.5) * (t14 * t14 + t15 * t15)
+                + T::from_f64(0.041666666666666664)
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h));
+        let kinetic = t16 * m;
+        let total = m * (t16 + g * (-(t11 * t6) + cos_gamma * t10));
         (kinetic, total)
     }
 }

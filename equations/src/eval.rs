@@ -98,17 +98,20 @@ pub fn pow(b: f64, e: f64) -> f64 {
 /// before a small state-dependent term is added, so their difference is
 /// exact when they are close (Sterbenz) instead of rounded at their size.
 pub fn sum_order(g: &Graph, xs: &[Id]) -> Vec<Id> {
-    let is_param = |t: Id| {
-        let (_, fs) = crate::simplify::term_parts(g, t);
-        !fs.is_empty()
-            && fs.iter().all(|&f| match g.node(f) {
-                Node::Sym(s) => g.sym_info(s).kind == crate::graph::SymKind::Param,
-                _ => false,
-            })
-    };
-    let (mut first, rest): (Vec<Id>, Vec<Id>) = xs.iter().partition(|&&t| is_param(t));
+    let (mut first, rest): (Vec<Id>, Vec<Id>) = xs.iter().partition(|&&t| is_param_term(g, t));
     first.extend(rest);
     first
+}
+
+/// True for a sum term that is a product of parameters (with a constant
+/// coefficient): the first group of [`sum_order`].
+pub fn is_param_term(g: &Graph, t: Id) -> bool {
+    let (_, fs) = crate::simplify::term_parts(g, t);
+    !fs.is_empty()
+        && fs.iter().all(|&f| match g.node(f) {
+            Node::Sym(s) => g.sym_info(s).kind == crate::graph::SymKind::Param,
+            _ => false,
+        })
 }
 
 /// A sum evaluated as `common₁ · common₂ · … · (Σ cₖ · restₖ)`: every term

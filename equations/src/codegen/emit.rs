@@ -164,7 +164,8 @@ impl<'a> Emitter<'a> {
                 let name = self.name(id);
                 Frag::new(quote!(#name), Prec::Atom)
             }
-            Node::Add(xs) => self.sum(&crate::eval::sum_order(g, &xs)),
+            // Lowered sums are already in evaluation order (lower.rs).
+            Node::Add(xs) => self.sum(&xs),
             Node::Mul(xs) => self.product(&xs, None),
             Node::Pow(b, e) => self.power(b, e),
             Node::Unary(op, a) => self.unary(op, a),
@@ -181,7 +182,7 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    /// A sum, terms in [`crate::eval::sum_order`]; negative-coefficient
+    /// A sum, terms in the given order; negative-coefficient
     /// terms subtracted; common factors taken out as
     /// [`crate::eval::factor_sum`] says (as the interpreter does).
     fn sum(&mut self, xs: &[Id]) -> Frag {

@@ -104,6 +104,7 @@ pub fn function(
         .iter()
         .flat_map(|(_, o)| o.ids().iter().copied())
         .collect();
+    let roots = super::lower::lower(g, &roots);
     let sched = Schedule::new(g, &roots);
     // Output names are locals only when there are several outputs.
     let out_locals = spec
@@ -153,9 +154,15 @@ pub fn function(
     let lets = em.lets();
     let mut types = Vec::new();
     let mut values = Vec::new();
+    let mut lowered = roots.iter();
     for (_, out) in &spec.outputs {
         types.push(output_type(out, uses));
-        let entries = out.ids().iter().map(|&id| em.expr(id)).collect();
+        let entries = out
+            .ids()
+            .iter()
+            .zip(lowered.by_ref())
+            .map(|(_, &id)| em.expr(id))
+            .collect();
         values.push(output_value(out, entries, uses));
     }
     let (ret, tail) = if spec.outputs.len() == 1 {

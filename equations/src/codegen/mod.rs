@@ -15,6 +15,7 @@ pub mod coverage;
 pub mod emit;
 pub mod function;
 pub mod harness;
+pub mod lower;
 pub mod ops;
 pub mod registry;
 pub mod schedule;
