@@ -13,10 +13,42 @@
 //!   it changes sign (approach to a Painlevé singularity, a "dynamic jam"
 //!   that a rigid model can only resolve by a tangential impulse).
 
+use std::cell::Cell;
+use std::rc::Rc;
+
 use nalgebra::{Vector2, Vector4};
 
 use crate::integrate::{Direction, Event};
 use crate::rigid::forward::{ForwardModel, FrictionLaw};
+
+/// The normal reactions at the last state asked for: the integrator
+/// evaluates every event function at the same state in turn, and the three
+/// lift-off events and the jam event all need the one forward solution
+/// there (one model evaluation instead of four). The value is a pure
+/// function of `x`, so the memo changes no result.
+struct LastReactions<'m> {
+    model: &'m ForwardModel,
+    start: Option<Vector2<f64>>,
+    last: Cell<Option<(Vector4<f64>, Option<[f64; 3]>)>>,
+}
+
+impl LastReactions<'_> {
+    /// `[N_K, N_B1, N_B2]` at `x` (γ clamped); `None` where the model fails.
+    fn at(&self, x: &Vector4<f64>) -> Option<[f64; 3]> {
+        if let Some((y, n)) = self.last.get()
+            && y == *x
+        {
+            return n;
+        }
+        let n = self
+            .model
+            .evaluate_clamped(x, self.start)
+            .ok()
+            .map(|a| a.normal);
+        self.last.set(Some((*x, n)));
+        n
+    }
+}
 
 /// Reaction level (in units of m g) taken as unbounded by the `jam` event.
 pub const N_JAM: f64 = 1e4;
@@ -50,12 +82,16 @@ pub fn events(
             .terminal(),
     ];
     let mut kinds = vec![EventKind::Gamma0];
+    let reactions = Rc::new(LastReactions {
+        model,
+        start,
+        last: Cell::new(None),
+    });
     for i in 0..3 {
+        let reactions = Rc::clone(&reactions);
         ev.push(
             Event::new(move |_t, x: &Vector4<f64>| {
-                model
-                    .evaluate_clamped(x, start)
-                    .map_or(f64::NAN, |a| a.normal[i] / weight)
+                reactions.at(x).map_or(f64::NAN, |n| n[i] / weight)
             })
             .direction(Direction::Falling)
             .terminal(),
@@ -79,8 +115,8 @@ pub fn events(
     kinds.push(EventKind::Singular);
     ev.push(
         Event::new(move |_t, x: &Vector4<f64>| {
-            model.evaluate_clamped(x, start).map_or(f64::NAN, |a| {
-                a.normal.iter().fold(f64::NEG_INFINITY, |m, &n| m.max(n)) / weight - N_JAM
+            reactions.at(x).map_or(f64::NAN, |n| {
+                n.iter().fold(f64::NEG_INFINITY, |m, &v| m.max(v)) / weight - N_JAM
             })
         })
         .direction(Direction::Rising)
