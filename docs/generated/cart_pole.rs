@@ -138,7 +138,7 @@ pub mod cart_pole {
     /// - `energy`: scalar
     ///
     /// # Cost
-    /// 4 add/sub, 12 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 2 `let`s.
+    /// 4 add/sub, 11 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 2 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> T {
         let theta = x[1];
@@ -151,8 +151,8 @@ pub mod cart_pole {
         let cos_theta = theta.cos();
         let t0 = xcdot * xcdot;
         m
-            * (cos_theta * (xcdot * thetadot - g) * l + T::from_f64(0.5) * t0
-                + T::from_f64(0.5) * (thetadot * thetadot) * (l * l))
+            * (cos_theta * (xcdot * thetadot - g) * l
+                + T::from_f64(0.5) * (t0 + thetadot * thetadot * (l * l)))
             + T::from_f64(0.5) * mc * t0
     }
 }

@@ -219,7 +219,7 @@ pub mod compliant_peg {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 400 add/sub, 777 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 320 `let`s.
+    /// 388 add/sub, 756 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 306 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -255,7 +255,7 @@ pub mod compliant_peg {
         let t8 = rho_h - z;
         let t9 = sin_theta * t8;
         let t10 = T::from_f64(0.5) * theta;
-        let (t11, t29) = t10.sin_cos();
+        let (t11, t27) = t10.sin_cos();
         let t12 = t11 * t11;
         let t13 = cos_theta * t8;
         let t14 = sin_theta * t7 + t13;
@@ -268,308 +268,293 @@ pub mod compliant_peg {
         let t21 = r * cos_theta;
         let t22 = t20 + t21;
         let t23 = zdot + thetadot * t22;
-        let t24 = sin_theta * t19;
-        let t25 = cos_theta * t23;
-        let t26 = t24 + t25;
-        let t27 = -T::from_f64(1.0) + T::from_f64(2.0) * t12;
-        let t28 = zdot * sin_theta;
-        let t30 = t11 * t29;
-        let t31 = v_s.hypot(t26);
-        let t32 = T::from_f64(1.0) / t31;
-        let t33 = sin_theta * t18 + cos_theta * t22;
-        let t34 = t26 * t26;
-        let t35 = -rho_p;
-        let t36 = l_c + t35;
-        let t37 = r + t35;
-        let t38 = sin_theta * t36;
-        let t39 = rho_p * sin_theta;
-        let t40 = l_c + t35 + t39;
-        let t41 = rho_p * t12;
-        let t42 = sin_theta * t40;
-        let t43 = cos_theta * t36;
-        let t44 = rho_h + T::from_f64(0.5) * d + t6;
-        let t45 = t13 + sin_theta * t44;
-        let t46 = cos_theta * t45;
-        let t47 = -sin_theta * t45;
-        let t48 = T::from_f64(1.0) - T::from_f64(2.0) * t12;
-        let t49 = rho_p + t15;
-        let t50 = T::from_f64(1.0) / m;
-        let t51 = T::from_f64(1.0) / j;
-        let t52 = t27 * t27;
-        let t53 = sin_theta * sin_theta;
-        let t54 = t48 * t48;
-        let t55 = cos_theta * cos_theta;
-        let t56 = zdot * cos_theta;
-        let t57 = t29 * t29;
-        let t58 = T::from_f64(1.0) / (t31 * t31 * t31);
-        let t59 = T::from_f64(2.0) * zdot;
-        let t60 = r + t5 + x + t38 - T::from_f64(2.0) * t12 * t37;
-        let t61 = t60.max0();
-        let t62 = t61 * t61.sqrt();
-        let t63 = t60.step();
-        let t64 = r + t5 + x + t9 + T::from_f64(2.0) * t12 * t44;
-        let t65 = t64.max0();
-        let t66 = t65 * t65.sqrt();
-        let t67 = t64.step();
-        let t68 = -t9;
-        let t69 = r + t5 + t6 + t68 - T::from_f64(2.0) * t7 * t12;
-        let t70 = t69.max0();
-        let t71 = t70 * t70.sqrt();
-        let t72 = -t13 - T::from_f64(2.0) * t30 * t7;
-        let t73 = xdot * t27 + t28 + thetadot * t72;
-        let t74 = T::from_f64(1.0) + hc_alpha * t73;
-        let t75 = t74.max0();
-        let t76 = t69.step();
-        let t77 = r - T::from_f64(2.0) * t41;
-        let t78 = t43 - T::from_f64(2.0) * t30 * t37;
-        let t79 = xdot + thetadot * t78;
-        let t80 = T::from_f64(1.0) + hc_alpha * t79;
-        let t81 = t80.max0();
-        let t82 = -t17 + t46;
-        let t83 = xdot + thetadot * t82;
-        let t84 = -t21 + t47;
-        let t85 = zdot + thetadot * t84;
-        let t86 = sin_theta * t83;
-        let t87 = cos_theta * t85;
-        let t88 = t86 + t87;
-        let t89 = t13 + T::from_f64(2.0) * t30 * t44;
-        let t90 = xdot * t48 - t28 + thetadot * t89;
-        let t91 = T::from_f64(1.0) + hc_alpha * t90;
-        let t92 = t91.max0();
-        let t93 = v_s.hypot(t88);
-        let t94 = T::from_f64(1.0) / t93;
-        let t95 = sin_theta * t82 + cos_theta * t84;
-        let t96 = t88 * t88;
-        let t97 = -t38;
-        let t98 = r + t5 + t6 + t97 + T::from_f64(2.0) * t12 * t49;
-        let t99 = l_c + t35 - t39;
-        let t100 = t15 + T::from_f64(2.0) * t41;
-        let t101 = t98.max0();
-        let t102 = t101 * t101.sqrt();
-        let t103 = -t43 + T::from_f64(2.0) * t30 * t49;
-        let t104 = -xdot + thetadot * t103;
-        let t105 = T::from_f64(1.0) + hc_alpha * t104;
-        let t106 = t105.max0();
-        let t107 = t98.step();
-        let t108 = t75 - T::from_f64(1.0);
-        let t109 = t81 - T::from_f64(1.0);
-        let t110 = t92 - T::from_f64(1.0);
-        let t111 = t106 - T::from_f64(1.0);
-        let t112 = -t76;
-        let t113 = -t108;
-        let t114 = mu * sin_theta;
-        let t115 = t71 * (t112 + t113);
-        let t116 = t61.sqrt();
-        let t117 = t63 * t63;
-        let t118 = t65.sqrt();
-        let t119 = t67 * t67;
-        let t120 = -T::from_f64(1.5) * t117;
-        let t121 = t12 - t57;
-        let t122 = t7 * t121 + t9;
-        let t123 = t57 - t12;
-        let t124 = t49 * t123 + t38;
-        let t125 = t34 * t58;
-        let t126 = T::from_f64(2.0) * t67;
-        let t127 = cos_theta * t7 + t68;
-        let t128 = cos_theta * t77;
-        let t129 = -t42 - t128;
-        let t130 = thetadot * t129;
-        let t131 = zdot + t130;
-        let t132 = v_s.hypot(t131);
-        let t133 = T::from_f64(1.0) / t132;
-        let t134 = t131 * t131;
-        let t135 = t68 + cos_theta * t44;
-        let t136 = sin_theta * t99;
-        let t137 = cos_theta * t100;
-        let t138 = -t136 - t137;
-        let t139 = thetadot * t138;
-        let t140 = zdot + t139;
-        let t141 = v_s.hypot(t140);
-        let t142 = T::from_f64(1.0) / t141;
-        let t143 = t140 * t140;
-        let t144 = t70.sqrt();
-        let t145 = t76 * t76;
-        let t146 = t74.step();
-        let t147 = t91.step();
-        let t148 = t101.sqrt();
-        let t149 = t107 * t107;
-        let t150 = t30 * xdot;
-        let t151 = t80.step();
-        let t152 = T::from_f64(1.0) / (t93 * t93 * t93);
-        let t153 = t105.step();
-        let t154 = -t0;
-        let t155 = -t1;
-        let t156 = T::from_f64(1.0) / (t132 * t132 * t132);
-        let t157 = T::from_f64(1.0) / (t141 * t141 * t141);
-        let t158 = t72 * t72;
-        let t159 = t78 * t78;
-        let t160 = t89 * t89;
-        let t161 = t103 * t103;
-        let t162 = t128 + t42;
-        let t163 = t137 + t136;
-        let t164 = T::from_f64(2.0) * t24 + T::from_f64(2.0) * t25;
-        let t165 = t59 + T::from_f64(2.0) * t130;
-        let t166 = T::from_f64(2.0) * t86 + T::from_f64(2.0) * t87;
-        let t167 = t59 + T::from_f64(2.0) * t139;
-        let t168 = t71 * t108;
-        let t169 = t26 * t32;
-        let t170 = t169 * t71 * t75;
-        let t171 = t88 * t94;
-        let t172 = t171 * t92 * t66;
-        let t173 = t76 * t144;
-        let t174 = t173 * (T::from_f64(1.5) * t75 - T::from_f64(1.5));
-        let t175 = t71 * t146;
-        let t176 = thetadot * hc_alpha;
-        let t177 = t176 * t30;
-        let t178 = t175 * t177;
-        let t179 = T::from_f64(2.0) * t178;
-        let t180 = t174 * t27 + t179;
-        let t181 = t67 * t118;
-        let t182 = t181 * (T::from_f64(1.5) * t92 - T::from_f64(1.5));
-        let t183 = t147 * t66;
-        let t184 = t183 * t177;
-        let t185 = -T::from_f64(2.0) * t184;
-        let t186 = t182 * t48 + t185;
-        let t187 = t173 * t75;
-        let t188 = t187 * t27;
-        let t189 = t181 * t92;
-        let t190 = t189 * t48;
-        let t191 = t169 * (-(T::from_f64(1.5) * t188) - T::from_f64(2.0) * t178)
-            + t171 * (-(T::from_f64(1.5) * t190) + T::from_f64(2.0) * t184);
-        let t192 = t144 * t145;
-        let t193 = t118 * t119;
-        let t194 = t116 * (t63 * (T::from_f64(1.5) - T::from_f64(1.5) * t81) + t120);
-        let t195 = -(T::from_f64(1.5) * t106) + T::from_f64(1.5);
-        let t196 = t176 * cos_theta;
-        let t197 = t174 * sin_theta + t196 * t175;
-        let t198 = t181 * (-(T::from_f64(1.5) * t92) + T::from_f64(1.5)) * sin_theta
-            - t196 * t183;
-        let t199 = -(t169 * t175) + t183 * t171;
-        let t200 = hc_alpha * t199;
-        let t201 = mu * cos_theta;
-        let t202 = -T::from_f64(1.5) * t192 * t27;
-        let t203 = T::from_f64(1.5) * t193 * t48;
-        let t204 = -(T::from_f64(1.5) * t187 * t169) + T::from_f64(1.5) * t189 * t171;
-        let t205 = mu * t53;
-        let t206 = k_edge * t50;
-        let t207 = T::from_f64(2.0) * t150 + t56 + thetadot * t122;
-        let t208 = t175 * t207;
-        let t209 = t174 * t72 + t208 * hc_alpha;
-        let t210 = cos_theta * (r + t127) + t20;
-        let t211 = sin_theta * (t15 - t127) - t16;
-        let t212 = cos_theta * (t19 + thetadot * t211)
-            + sin_theta * (thetadot * t210 - t23);
-        let t213 = t37 * t121 + t97;
-        let t214 = t44 * t123 + t68;
-        let t215 = -(T::from_f64(2.0) * t150) - t56 + thetadot * t214;
-        let t216 = t183 * t215;
-        let t217 = t182 * t89 + t216 * hc_alpha;
-        let t218 = cos_theta * (t15 + t135) + t47;
-        let t219 = sin_theta * (r - t135) - t46;
-        let t220 = cos_theta * (t83 + thetadot * t219)
-            + sin_theta * (thetadot * t218 - t85);
-        let t221 = t75 * (-t32 + t125);
-        let t222 = hc_alpha * t146;
-        let t223 = t222 * t207;
-        let t224 = t96 * t152;
-        let t225 = t92 * (-t94 + t224);
-        let t226 = hc_alpha * t147;
-        let t227 = t226 * t215;
-        let t228 = t187 * t72;
-        let t229 = t189 * t89;
-        let t230 = t71 * (t221 * t212 - t223 * t169) + t66 * (t225 * t220 - t227 * t171)
-            - T::from_f64(1.5) * t228 * t169 - T::from_f64(1.5) * t229 * t171;
-        let t231 = -T::from_f64(2.0) * t76;
-        let t232 = -T::from_f64(2.0) * t108;
-        let t233 = T::from_f64(2.0) * t110;
-        let t234 = -T::from_f64(1.5) * t192 * t72;
-        let t235 = -t209;
-        let t236 = t193 * t89;
-        let t237 = T::from_f64(1.5) * t106 - T::from_f64(1.5);
-        let t238 = T::from_f64(1.5) * t149;
-        let t239 = t151 * t62;
-        let t240 = t239 * t213;
-        let t241 = t102 * t153;
-        let t242 = t241 * t124;
-        let t243 = t221 * t71;
-        let t244 = t243 + t225 * t66;
-        let t245 = t175 * t27;
-        let t246 = t183 * t48;
-        let t247 = hc_alpha * (-(t245 * t169) - t246 * t171);
-        let t248 = k_wall * hc_alpha;
-        let t249 = sin_theta * (t201 * t244 + hc_alpha * (-t245 + t246));
-        let t250 = t222 * t72;
-        let t251 = t225 * t95;
-        let t252 = t226 * t89;
-        let t253 = t71 * (t221 * t33 - t250 * t169) + t66 * (t251 - t252 * t171);
-        let t254 = hc_alpha * (-(t245 * t72) - t246 * t89);
-        let t255 = t131 * t133;
-        let t256 = t255 * t81;
-        let t257 = t63 * t116;
-        let t258 = t140 * t142;
-        let t259 = t258 * t106;
-        let t260 = t107 * t148;
-        let t261 = t176 * mu;
-        let t262 = cos_theta * (rho_p * (-sin_theta + T::from_f64(2.0) * t30) - t40)
-            + sin_theta * t77;
-        let t263 = cos_theta * (rho_p * (sin_theta - T::from_f64(2.0) * t30) - t99)
-            + sin_theta * t100;
-        let t264 = t81 * (-t133 + t134 * t156);
-        let t265 = hc_alpha * t151;
-        let t266 = t265 * t213;
-        let t267 = t264 * t262 - t266 * t255;
-        let t268 = t106 * (-t142 + t143 * t157);
-        let t269 = hc_alpha * t153;
-        let t270 = t269 * t124;
-        let t271 = t268 * t263 - t270 * t258;
-        let t272 = t257 * t78;
-        let t273 = t260 * t103;
-        let t274 = k_edge * hc_alpha;
-        let t275 = t265 * t78;
-        let t276 = t255 * t275;
-        let t277 = t269 * t103;
-        let t278 = t258 * t277;
-        let t279 = t274 * (sin_theta * (-(t175 * t72) + t183 * t89));
-        let t280 = T::from_f64(1.5) * t81 - T::from_f64(1.5);
-        let t281 = t169 * t33;
-        let t282 = t261 * (t281 * t146);
-        let t283 = t171 * t95;
-        let t284 = t261 * (t283 * t147);
-        let t285 = t144
-            * (-(T::from_f64(1.5) * t72 * t145)
-                - T::from_f64(1.5) * t281 * mu * t75 * t76);
-        let t286 = mu * t92 * (t283 * t67);
-        let t287 = mu * t129;
-        let t288 = mu * t138;
-        let t289 = t272 * t280 + t240 * t176;
-        let t290 = t273 * t237 + t242 * t176;
-        let t291 = t33 * t212;
-        let t292 = t95 * t220;
-        let t293 = t129 * t62;
-        let t294 = t138 * t102;
-        let t295 = t243 * t33 + t251 * t66;
-        let t296 = t32 * t34;
-        let t297 = t94 * t96;
-        let t298 = t66 * t110;
-        let t299 = t81 * t133 * t134;
-        let t300 = t106 * t142 * t143;
-        let t301 = t296 * t175 - t297 * t183;
-        let t302 = -t298;
-        let t303 = t71 * t212;
-        let t304 = t58 * (t26 * t26 * t26);
-        let t305 = t66 * t220;
-        let t306 = t152 * (t88 * t88 * t88);
-        let t307 = t81 * t262;
-        let t308 = t156 * (t131 * t131 * t131);
-        let t309 = t106 * t263;
-        let t310 = t157 * (t140 * t140 * t140);
-        let t311 = t75 * (-t304 + t32 * t164) * t71 + t92 * (-t306 + t94 * t166) * t66;
-        let t312 = t71 * (t108 + t222 * t73);
-        let t313 = t66 * (t110 + t226 * t90);
-        let t314 = t75 * t33;
-        let t315 = t92 * t95;
-        let t316 = t129 * t81;
-        let t317 = t138 * t106;
+        let t24 = sin_theta * t19 + cos_theta * t23;
+        let t25 = -T::from_f64(1.0) + T::from_f64(2.0) * t12;
+        let t26 = zdot * sin_theta;
+        let t28 = t11 * t27;
+        let t29 = v_s.hypot(t24);
+        let t30 = T::from_f64(1.0) / t29;
+        let t31 = sin_theta * t18 + cos_theta * t22;
+        let t32 = t24 * t24;
+        let t33 = -rho_p;
+        let t34 = l_c + t33;
+        let t35 = r + t33;
+        let t36 = sin_theta * t34;
+        let t37 = rho_p * sin_theta;
+        let t38 = l_c + t33 + t37;
+        let t39 = rho_p * t12;
+        let t40 = sin_theta * t38;
+        let t41 = cos_theta * t34;
+        let t42 = rho_h + T::from_f64(0.5) * d + t6;
+        let t43 = t13 + sin_theta * t42;
+        let t44 = cos_theta * t43;
+        let t45 = -sin_theta * t43;
+        let t46 = T::from_f64(1.0) - T::from_f64(2.0) * t12;
+        let t47 = rho_p + t15;
+        let t48 = T::from_f64(1.0) / m;
+        let t49 = T::from_f64(1.0) / j;
+        let t50 = t25 * t25;
+        let t51 = sin_theta * sin_theta;
+        let t52 = t46 * t46;
+        let t53 = cos_theta * cos_theta;
+        let t54 = zdot * cos_theta;
+        let t55 = t27 * t27;
+        let t56 = T::from_f64(1.0) / (t29 * t29 * t29);
+        let t57 = r + t5 + x + t36 - T::from_f64(2.0) * t12 * t35;
+        let t58 = t57.max0();
+        let t59 = t58 * t58.sqrt();
+        let t60 = t57.step();
+        let t61 = r + t5 + x + t9 + T::from_f64(2.0) * t12 * t42;
+        let t62 = t61.max0();
+        let t63 = t62 * t62.sqrt();
+        let t64 = t61.step();
+        let t65 = -t9;
+        let t66 = r + t5 + t6 + t65 - T::from_f64(2.0) * t7 * t12;
+        let t67 = t66.max0();
+        let t68 = t67 * t67.sqrt();
+        let t69 = -t13 - T::from_f64(2.0) * t28 * t7;
+        let t70 = xdot * t25 + t26 + thetadot * t69;
+        let t71 = T::from_f64(1.0) + hc_alpha * t70;
+        let t72 = t71.max0();
+        let t73 = t66.step();
+        let t74 = r - T::from_f64(2.0) * t39;
+        let t75 = t41 - T::from_f64(2.0) * t28 * t35;
+        let t76 = xdot + thetadot * t75;
+        let t77 = T::from_f64(1.0) + hc_alpha * t76;
+        let t78 = t77.max0();
+        let t79 = -t17 + t44;
+        let t80 = xdot + thetadot * t79;
+        let t81 = -t21 + t45;
+        let t82 = zdot + thetadot * t81;
+        let t83 = sin_theta * t80 + cos_theta * t82;
+        let t84 = t13 + T::from_f64(2.0) * t28 * t42;
+        let t85 = xdot * t46 - t26 + thetadot * t84;
+        let t86 = T::from_f64(1.0) + hc_alpha * t85;
+        let t87 = t86.max0();
+        let t88 = v_s.hypot(t83);
+        let t89 = T::from_f64(1.0) / t88;
+        let t90 = sin_theta * t79 + cos_theta * t81;
+        let t91 = t83 * t83;
+        let t92 = -t36;
+        let t93 = r + t5 + t6 + t92 + T::from_f64(2.0) * t12 * t47;
+        let t94 = l_c + t33 - t37;
+        let t95 = t15 + T::from_f64(2.0) * t39;
+        let t96 = t93.max0();
+        let t97 = t96 * t96.sqrt();
+        let t98 = -t41 + T::from_f64(2.0) * t28 * t47;
+        let t99 = -xdot + thetadot * t98;
+        let t100 = T::from_f64(1.0) + hc_alpha * t99;
+        let t101 = t100.max0();
+        let t102 = t93.step();
+        let t103 = t72 - T::from_f64(1.0);
+        let t104 = t78 - T::from_f64(1.0);
+        let t105 = t87 - T::from_f64(1.0);
+        let t106 = t101 - T::from_f64(1.0);
+        let t107 = -t73;
+        let t108 = -t103;
+        let t109 = mu * sin_theta;
+        let t110 = t68 * (t107 + t108);
+        let t111 = t63 * (t64 + t105);
+        let t112 = t58.sqrt();
+        let t113 = t60 * t60;
+        let t114 = t62.sqrt();
+        let t115 = t64 * t64;
+        let t116 = -T::from_f64(1.5) * t113;
+        let t117 = t12 - t55;
+        let t118 = t7 * t117 + t9;
+        let t119 = t55 - t12;
+        let t120 = t47 * t119 + t36;
+        let t121 = t32 * t56;
+        let t122 = cos_theta * t7 + t65;
+        let t123 = cos_theta * t74;
+        let t124 = -t40 - t123;
+        let t125 = zdot + thetadot * t124;
+        let t126 = v_s.hypot(t125);
+        let t127 = T::from_f64(1.0) / t126;
+        let t128 = t125 * t125;
+        let t129 = t65 + cos_theta * t42;
+        let t130 = sin_theta * t94;
+        let t131 = cos_theta * t95;
+        let t132 = -t130 - t131;
+        let t133 = zdot + thetadot * t132;
+        let t134 = v_s.hypot(t133);
+        let t135 = T::from_f64(1.0) / t134;
+        let t136 = t133 * t133;
+        let t137 = t67.sqrt();
+        let t138 = t73 * t73;
+        let t139 = t71.step();
+        let t140 = t86.step();
+        let t141 = t96.sqrt();
+        let t142 = t102 * t102;
+        let t143 = t28 * xdot;
+        let t144 = t77.step();
+        let t145 = T::from_f64(1.0) / (t88 * t88 * t88);
+        let t146 = t100.step();
+        let t147 = -t0;
+        let t148 = -t1;
+        let t149 = T::from_f64(1.0) / (t126 * t126 * t126);
+        let t150 = T::from_f64(1.0) / (t134 * t134 * t134);
+        let t151 = t69 * t69;
+        let t152 = t75 * t75;
+        let t153 = t84 * t84;
+        let t154 = t98 * t98;
+        let t155 = t123 + t40;
+        let t156 = t131 + t130;
+        let t157 = t68 * t103;
+        let t158 = t24 * t30;
+        let t159 = t158 * t68 * t72;
+        let t160 = t83 * t89;
+        let t161 = t160 * t87 * t63;
+        let t162 = t73 * t137;
+        let t163 = t162 * (T::from_f64(1.5) * t72 - T::from_f64(1.5));
+        let t164 = t68 * t139;
+        let t165 = thetadot * hc_alpha;
+        let t166 = t28 * t165;
+        let t167 = t164 * t166;
+        let t168 = T::from_f64(2.0) * t167;
+        let t169 = t163 * t25 + t168;
+        let t170 = t64 * t114;
+        let t171 = t170 * (T::from_f64(1.5) * t87 - T::from_f64(1.5));
+        let t172 = t140 * t63;
+        let t173 = t172 * t166;
+        let t174 = -T::from_f64(2.0) * t173;
+        let t175 = t171 * t46 + t174;
+        let t176 = t162 * t72;
+        let t177 = t176 * t25;
+        let t178 = t170 * t87;
+        let t179 = t178 * t46;
+        let t180 = t158 * (-(T::from_f64(1.5) * t177) - T::from_f64(2.0) * t167)
+            + t160 * (-(T::from_f64(1.5) * t179) + T::from_f64(2.0) * t173);
+        let t181 = t137 * t138;
+        let t182 = t114 * t115;
+        let t183 = t112 * (t60 * (T::from_f64(1.5) - T::from_f64(1.5) * t78) + t116);
+        let t184 = -(T::from_f64(1.5) * t101) + T::from_f64(1.5);
+        let t185 = t165 * cos_theta;
+        let t186 = t163 * sin_theta + t185 * t164;
+        let t187 = t170 * (-(T::from_f64(1.5) * t87) + T::from_f64(1.5)) * sin_theta
+            - t185 * t172;
+        let t188 = -(t158 * t164) + t172 * t160;
+        let t189 = hc_alpha * t188;
+        let t190 = mu * cos_theta;
+        let t191 = T::from_f64(1.5) * (-(t181 * t25) + t182 * t46);
+        let t192 = -(t176 * t158) + t178 * t160;
+        let t193 = mu * t51;
+        let t194 = k_edge * t48;
+        let t195 = T::from_f64(2.0) * t143 + t54 + thetadot * t118;
+        let t196 = t164 * t195;
+        let t197 = t163 * t69 + t196 * hc_alpha;
+        let t198 = cos_theta * (r + t122) + t20;
+        let t199 = sin_theta * (t15 - t122) - t16;
+        let t200 = cos_theta * (t19 + thetadot * t199)
+            + sin_theta * (thetadot * t198 - t23);
+        let t201 = t35 * t117 + t92;
+        let t202 = t42 * t119 + t65;
+        let t203 = -(T::from_f64(2.0) * t143) - t54 + thetadot * t202;
+        let t204 = t172 * t203;
+        let t205 = t171 * t84 + t204 * hc_alpha;
+        let t206 = cos_theta * (t15 + t129) + t45;
+        let t207 = sin_theta * (r - t129) - t44;
+        let t208 = cos_theta * (t80 + thetadot * t207)
+            + sin_theta * (thetadot * t206 - t82);
+        let t209 = t72 * (-t30 + t121);
+        let t210 = hc_alpha * t139;
+        let t211 = t210 * t195;
+        let t212 = t91 * t145;
+        let t213 = t87 * (-t89 + t212);
+        let t214 = hc_alpha * t140;
+        let t215 = t214 * t203;
+        let t216 = t176 * t69;
+        let t217 = t178 * t84;
+        let t218 = t68 * (t209 * t200 - t211 * t158) + t63 * (t213 * t208 - t215 * t160)
+            + T::from_f64(1.5) * (-(t216 * t158) - t217 * t160);
+        let t219 = t181 * t69;
+        let t220 = -t197;
+        let t221 = t182 * t84;
+        let t222 = T::from_f64(1.5) * t101 - T::from_f64(1.5);
+        let t223 = T::from_f64(1.5) * t142;
+        let t224 = t144 * t59;
+        let t225 = t224 * t201;
+        let t226 = t97 * t146;
+        let t227 = t226 * t120;
+        let t228 = t209 * t68;
+        let t229 = t228 + t213 * t63;
+        let t230 = t164 * t25;
+        let t231 = t172 * t46;
+        let t232 = hc_alpha * (-(t230 * t158) - t231 * t160);
+        let t233 = k_wall * hc_alpha;
+        let t234 = sin_theta * (t190 * t229 + hc_alpha * (-t230 + t231));
+        let t235 = t210 * t69;
+        let t236 = t213 * t90;
+        let t237 = t214 * t84;
+        let t238 = t68 * (t209 * t31 - t235 * t158) + t63 * (t236 - t237 * t160);
+        let t239 = hc_alpha * (-(t230 * t69) - t231 * t84);
+        let t240 = t125 * t127;
+        let t241 = t240 * t78;
+        let t242 = t60 * t112;
+        let t243 = t133 * t135;
+        let t244 = t243 * t101;
+        let t245 = t102 * t141;
+        let t246 = t165 * mu;
+        let t247 = cos_theta * (rho_p * (-sin_theta + T::from_f64(2.0) * t28) - t38)
+            + sin_theta * t74;
+        let t248 = cos_theta * (rho_p * (sin_theta - T::from_f64(2.0) * t28) - t94)
+            + sin_theta * t95;
+        let t249 = t78 * (-t127 + t128 * t149);
+        let t250 = hc_alpha * t144;
+        let t251 = t250 * t201;
+        let t252 = t249 * t247 - t251 * t240;
+        let t253 = t101 * (-t135 + t136 * t150);
+        let t254 = hc_alpha * t146;
+        let t255 = t254 * t120;
+        let t256 = t253 * t248 - t255 * t243;
+        let t257 = t242 * t75;
+        let t258 = t245 * t98;
+        let t259 = k_edge * hc_alpha;
+        let t260 = t250 * t75;
+        let t261 = t240 * t260;
+        let t262 = t254 * t98;
+        let t263 = t243 * t262;
+        let t264 = t259 * (sin_theta * (-(t164 * t69) + t172 * t84));
+        let t265 = T::from_f64(1.5) * t78 - T::from_f64(1.5);
+        let t266 = t158 * t31;
+        let t267 = t68 * (t107 + t108 - t246 * t266 * t139);
+        let t268 = t160 * t90;
+        let t269 = t63 * (t64 + t105 + t246 * t268 * t140);
+        let t270 = t137 * (-(t69 * t138) - t266 * mu * t72 * t73);
+        let t271 = mu * t87 * (t268 * t64);
+        let t272 = mu * t124;
+        let t273 = mu * t132;
+        let t274 = t257 * t265 + t225 * t165;
+        let t275 = t258 * t222 + t227 * t165;
+        let t276 = t31 * t200;
+        let t277 = t90 * t208;
+        let t278 = t124 * t59;
+        let t279 = t132 * t97;
+        let t280 = t228 * t31 + t236 * t63;
+        let t281 = t30 * t32;
+        let t282 = t89 * t91;
+        let t283 = t63 * t105;
+        let t284 = -t283;
+        let t285 = thetadot * (t157 + t284);
+        let t286 = t78 * t127 * t128;
+        let t287 = t101 * t135 * t136;
+        let t288 = t281 * t164 - t282 * t172;
+        let t289 = t68 * t200;
+        let t290 = t56 * (t24 * t24 * t24);
+        let t291 = t63 * t208;
+        let t292 = t145 * (t83 * t83 * t83);
+        let t293 = t78 * t247;
+        let t294 = t149 * (t125 * t125 * t125);
+        let t295 = t101 * t248;
+        let t296 = t150 * (t133 * t133 * t133);
+        let t297 = t72 * (-t290 + T::from_f64(2.0) * t158) * t68
+            + t87 * (-t292 + T::from_f64(2.0) * t160) * t63;
+        let t298 = t68 * (t103 + t210 * t70);
+        let t299 = t63 * (t105 + t214 * t85);
+        let t300 = t72 * t31;
+        let t301 = t87 * t90;
+        let t302 = t124 * t78;
+        let t303 = t132 * t101;
         SMatrix::<
             T,
             8,
@@ -600,157 +585,149 @@ pub mod compliant_peg {
                 T::from_f64(1.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t50
+                t48
                     * (k_edge
-                        * (t114 * t191 - T::from_f64(1.5) * t192 * t52 - t27 * t180
-                            - T::from_f64(1.5) * t193 * t54 - t48 * t186)
+                        * (t109 * t180 + T::from_f64(1.5) * (-(t181 * t50) - t182 * t52)
+                            - t25 * t169 - t46 * t175)
                         + k_wall
-                            * (t194 + t148 * (t107 * t195 - T::from_f64(1.5) * t149))),
-                t206
-                    * (sin_theta * (t201 * t176 * t199 + t202 + t203) + t205 * t204
-                        - t27 * t197 - t48 * t198),
-                t50
+                            * (t183 + t141 * (t102 * t184 - T::from_f64(1.5) * t142))),
+                t194
+                    * (sin_theta * (t190 * t165 * t188 + t191)
+                        + T::from_f64(1.5) * t193 * t192 - t25 * t186 - t46 * t187),
+                t48
                     * (k_edge
-                        * (mu * (sin_theta * t230 + cos_theta * (-t170 - t172))
-                            + t30 * (t71 * (t231 + t232) + t66 * (t126 + t233))
-                            + t27 * (t234 + t235)
-                            + t48 * (-(T::from_f64(1.5) * t236) - t217))
+                        * (mu * (sin_theta * t218 + cos_theta * (-t159 - t161))
+                            + t28 * (T::from_f64(2.0) * t110 + T::from_f64(2.0) * t111)
+                            + t25 * (-(T::from_f64(1.5) * t219) + t220)
+                            + t46 * (-(T::from_f64(1.5) * t221) - t205))
                         + k_wall
-                            * (t194 * t78 + t148 * (t107 * t237 + t238) * t103
-                                + t176 * (-t240 + t242)) + t2 + t3),
-                t50
+                            * (t183 * t75 + t141 * (t102 * t222 + t223) * t98
+                                + t165 * (-t225 + t227)) + t2 + t3),
+                t48
                     * (k_edge
-                        * (mu * (t53 * t244 + t247 * sin_theta)
-                            + hc_alpha * (-(t175 * t52) - t183 * t54))
-                        + t248 * (-t239 - t241)),
-                t206 * (t249 + t205 * t200),
-                t50
-                    * (k_edge * (t114 * t253 + t254)
-                        + t248 * (-(t239 * t78) + t241 * t103)),
+                        * (mu * (t51 * t229 + t232 * sin_theta)
+                            + hc_alpha * (-(t164 * t50) - t172 * t52))
+                        + t233 * (-t224 - t226)),
+                t194 * (t234 + t193 * t189),
+                t48
+                    * (k_edge * (t109 * t238 + t239)
+                        + t233 * (-(t224 * t75) + t226 * t98)),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t50
-                    * (k_edge * (sin_theta * (t202 + t203 - t180 + t186) + t201 * t191)
-                        + k_wall
-                            * (-(T::from_f64(1.5) * t256 * t257)
-                                + T::from_f64(1.5) * t259 * t260) * mu),
-                t206
-                    * (sin_theta * (t201 * t204 - t197 + t198)
-                        + t53 * (-(T::from_f64(1.5) * t192) - T::from_f64(1.5) * t193)
-                        + t55 * t199 * t261),
-                t50
+                t48
+                    * (k_edge * (sin_theta * (t191 - t169 + t175) + t190 * t180)
+                        + T::from_f64(1.5) * (k_wall * (-(t241 * t242) + t244 * t245))
+                            * mu),
+                t194
+                    * (sin_theta * (T::from_f64(1.5) * t190 * t192 - t186 + t187)
+                        + T::from_f64(1.5) * (-t181 - t182) * t51 + t53 * t188 * t246),
+                t48
                     * (mu
-                        * (k_edge * (cos_theta * t230 + sin_theta * (t170 + t172))
+                        * (k_edge * (cos_theta * t218 + sin_theta * (t159 + t161))
                             + k_wall
-                                * (thetadot * (t62 * t267 + t102 * t271)
-                                    - T::from_f64(1.5) * t256 * t272
-                                    - T::from_f64(1.5) * t259 * t273))
+                                * (thetadot * (t59 * t252 + t97 * t256)
+                                    + T::from_f64(1.5) * (-(t241 * t257) - t244 * t258)))
                         + k_edge
-                            * (cos_theta * (t115 + t66 * (t67 + t110))
+                            * (cos_theta * (t110 + t111)
                                 + sin_theta
-                                    * (t234 + t235 + T::from_f64(1.5) * t236 + t217)) + t154
-                        + t155),
-                t50
-                    * (k_edge * (t249 + t247 * t201)
-                        + t248 * (-(t239 * t255) + t241 * t258) * mu),
-                t50
+                                    * (T::from_f64(1.5) * (-t219 + t221) + t220 + t205)) + t147
+                        + t148),
+                t48
+                    * (k_edge * (t234 + t232 * t190)
+                        + t233 * (-(t224 * t240) + t226 * t243) * mu),
+                t48
                     * (mu
-                        * (k_edge * (t55 * t244 + sin_theta * cos_theta * t200)
-                            + k_wall * (t264 * t62 + t268 * t102))
-                        + t274 * (t53 * (-t175 - t183))),
-                t50
+                        * (k_edge * (t53 * t229 + sin_theta * cos_theta * t189)
+                            + k_wall * (t249 * t59 + t253 * t97))
+                        + t259 * (t51 * (-t164 - t172))),
+                t48
                     * (mu
-                        * (cos_theta * t253 * k_edge
+                        * (cos_theta * t238 * k_edge
                             + k_wall
-                                * (t62 * (t264 * t129 - t276)
-                                    + t102 * (t268 * t138 - t278))) + t279),
+                                * (t59 * (t249 * t124 - t261) + t97 * (t253 * t132 - t263)))
+                        + t264),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t51
+                t49
                     * (k_edge
-                        * (t30
-                            * (t71 * (t231 + t232 - T::from_f64(2.0) * t282)
-                                + t66 * (t126 + t233 + T::from_f64(2.0) * t284))
-                            + t285 * t27
-                            + t118
-                                * (-(T::from_f64(1.5) * t89 * t119)
-                                    - T::from_f64(1.5) * t286) * t48 - t72 * t180 - t89 * t186)
+                        * (t28 * (T::from_f64(2.0) * t267 + T::from_f64(2.0) * t269)
+                            + T::from_f64(1.5) * t270 * t25
+                            + T::from_f64(1.5) * (t114 * (-(t84 * t115) - t271)) * t46
+                            - t69 * t169 - t84 * t175)
                         + k_wall
-                            * (t116
-                                * (t78 * (t120 - t280 * t63)
-                                    - T::from_f64(1.5) * t287 * t256 * t63)
-                                + t148
-                                    * (t103 * (t238 - t195 * t107)
-                                        + T::from_f64(1.5) * t288 * t259 * t107))),
+                            * (t112
+                                * (t75 * (t116 - t265 * t60)
+                                    - T::from_f64(1.5) * t272 * t241 * t60)
+                                + t141
+                                    * (t98 * (t223 - t184 * t102)
+                                        + T::from_f64(1.5) * t273 * t244 * t102))),
                 k_edge
-                    * (cos_theta
-                        * (t71 * (t112 + t113 - t282) + t66 * (t67 + t110 + t284))
+                    * (cos_theta * (t267 + t269)
                         + sin_theta
-                            * (t285
-                                + t118
-                                    * (T::from_f64(1.5) * t89 * t119 + T::from_f64(1.5) * t286))
-                        - t72 * t197 - t89 * t198) * t51,
-                t51
+                            * (T::from_f64(1.5) * t270
+                                + T::from_f64(1.5) * (t84 * t115 + t271) * t114)
+                        - t69 * t186 - t84 * t187) * t49,
+                t49
                     * (mu
                         * (k_edge
-                            * (t71
-                                * (t75
-                                    * (t32
-                                        * (-t291
-                                            - t26
-                                                * (cos_theta * (t18 + t211) + sin_theta * (t210 - t22)))
-                                        + t125 * t291) - t223 * t281)
-                                + t66
-                                    * (t92
-                                        * (t94
-                                            * (-t292
-                                                - t88
-                                                    * (cos_theta * (t82 + t219) + sin_theta * (t218 - t84)))
-                                            + t224 * t292) - t227 * t283)
-                                - T::from_f64(1.5) * t228 * t281
-                                - T::from_f64(1.5) * t229 * t283)
+                            * (t68
+                                * (t72
+                                    * (t30
+                                        * (-t276
+                                            - t24
+                                                * (cos_theta * (t18 + t199) + sin_theta * (t198 - t22)))
+                                        + t121 * t276) - t211 * t266)
+                                + t63
+                                    * (t87
+                                        * (t89
+                                            * (-t277
+                                                - t83
+                                                    * (cos_theta * (t79 + t207) + sin_theta * (t206 - t81)))
+                                            + t212 * t277) - t215 * t268)
+                                + T::from_f64(1.5) * (-(t216 * t266) - t217 * t268))
                             + k_wall
-                                * (thetadot * (t293 * t267 + t294 * t271)
-                                    + t256 * (-(t62 * t262) - T::from_f64(1.5) * t272 * t129)
-                                    + t259 * (-(t102 * t263) - T::from_f64(1.5) * t273 * t138)))
+                                * (thetadot * (t278 * t252 + t279 * t256)
+                                    + t241 * (-(t59 * t247) - T::from_f64(1.5) * t257 * t124)
+                                    + t244 * (-(t97 * t248) - T::from_f64(1.5) * t258 * t132)))
                         + k_edge
-                            * (t115 * t122 + (-t67 - t110) * t214 * t66
-                                - T::from_f64(1.5) * t192 * t158 - t72 * t209
-                                - T::from_f64(1.5) * t193 * t160 - t89 * t217)
+                            * (t110 * t118 + (-t64 - t105) * t202 * t63
+                                + T::from_f64(1.5) * (-(t181 * t151) - t182 * t153)
+                                - t69 * t197 - t84 * t205)
                         + k_wall
-                            * ((-t63 - t109) * t213 * t62 + (-t107 - t111) * t124 * t102
-                                - T::from_f64(1.5) * t116 * t117 * t159 - t78 * t289
-                                - T::from_f64(1.5) * t148 * t149 * t161 - t103 * t290)),
-                t51
+                            * ((-t60 - t104) * t201 * t59 + (-t102 - t106) * t120 * t97
+                                + T::from_f64(1.5)
+                                    * (-(t112 * t113 * t152) - t141 * t142 * t154) - t75 * t274
+                                - t98 * t275)),
+                t49
                     * (k_edge
                         * (mu
-                            * (sin_theta * t295
-                                + hc_alpha * (-(t245 * t281) - t246 * t283)) + t254)
-                        + t248
-                            * (t239 * (-t78 - t287 * t255)
-                                + t241 * (t103 + t288 * t258))),
-                t51
+                            * (sin_theta * t280
+                                + hc_alpha * (-(t230 * t266) - t231 * t268)) + t239)
+                        + t233
+                            * (t224 * (-t75 - t272 * t240)
+                                + t226 * (t98 + t273 * t243))),
+                t49
                     * (mu
                         * (k_edge
-                            * (cos_theta * t295
-                                + sin_theta * (-(t281 * t175) + t283 * t183) * hc_alpha)
-                            + k_wall * (t293 * t264 + t294 * t268)) + t279),
-                t51
+                            * (cos_theta * t280
+                                + sin_theta * (-(t266 * t164) + t268 * t172) * hc_alpha)
+                            + k_wall * (t278 * t249 + t279 * t253)) + t264),
+                t49
                     * (mu
                         * (k_edge
-                            * (t71 * (t221 * (t33 * t33) - t250 * t281)
-                                + t66 * (t225 * (t95 * t95) - t252 * t283))
+                            * (t68 * (t209 * (t31 * t31) - t235 * t266)
+                                + t63 * (t213 * (t90 * t90) - t237 * t268))
                             + k_wall
-                                * (t62 * (t264 * (t162 * t162) - t276 * t129)
-                                    + t102 * (t268 * (t163 * t163) - t278 * t138)))
+                                * (t59 * (t249 * (t155 * t155) - t261 * t124)
+                                    + t97 * (t253 * (t156 * t156) - t263 * t132)))
                         + hc_alpha
-                            * (k_edge * (-(t175 * t158) - t183 * t160)
-                                + k_wall * (-(t239 * t159) - t241 * t161))),
+                            * (k_edge * (-(t164 * t151) - t172 * t153)
+                                + k_wall * (-(t224 * t152) - t226 * t154))),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                xdot * t4 + zdot * (t154 + t155),
+                xdot * t4 + zdot * (t147 + t148),
                 t0 + t1,
                 t4,
                 m_2,
@@ -758,68 +735,75 @@ pub mod compliant_peg {
                 T::from_f64(0.0),
                 k_edge
                     * (mu
-                        * (t296 * (T::from_f64(1.5) * t188 + t179)
-                            + t297 * (T::from_f64(1.5) * t190 + t185))
-                        + t30 * (T::from_f64(2.0) * t168 - T::from_f64(2.0) * t298)
-                            * thetadot + t73 * t180 + t90 * t186)
+                        * (t281 * (T::from_f64(1.5) * t177 + t168)
+                            + t282 * (T::from_f64(1.5) * t179 + t174))
+                        + T::from_f64(2.0) * t285 * t28 + t70 * t169 + t85 * t175)
                     + k_wall
-                        * (mu
-                            * (T::from_f64(1.5) * t299 * t257
-                                - T::from_f64(1.5) * t300 * t260) + t257 * t280 * t79
-                            + t260 * t104 * t195),
+                        * (T::from_f64(1.5) * (t286 * t242 - t287 * t245) * mu
+                            + t242 * t265 * t76 + t245 * t99 * t184),
                 k_edge
                     * (mu
-                        * (sin_theta
-                            * (T::from_f64(1.5) * t296 * t187
-                                - T::from_f64(1.5) * t297 * t189) + cos_theta * t301 * t176)
-                        + cos_theta * (t168 + t302) * thetadot + t73 * t197
-                        + t90 * t198),
+                        * (T::from_f64(1.5) * (t281 * t176 - t282 * t178) * sin_theta
+                            + cos_theta * t288 * t165) + t285 * cos_theta + t70 * t186
+                        + t85 * t187),
                 mu
                     * (k_edge
-                        * (t75
-                            * (t32 * (T::from_f64(1.5) * t173 * t72 * t34 + t303 * t164)
-                                - t303 * t304)
-                            + t92
-                                * (t94 * (T::from_f64(1.5) * t181 * t89 * t96 + t305 * t166)
-                                    - t305 * t306) + hc_alpha * (t208 * t296 + t216 * t297))
+                        * (t72
+                            * (t30
+                                * (T::from_f64(1.5) * t162 * t69 * t32
+                                    + T::from_f64(2.0) * t289 * t24) - t289 * t290)
+                            + t87
+                                * (t89
+                                    * (T::from_f64(1.5) * t170 * t84 * t91
+                                        + T::from_f64(2.0) * t291 * t83) - t291 * t292)
+                            + hc_alpha * (t196 * t281 + t204 * t282))
                         + k_wall
                             * (thetadot
-                                * (t62 * (t133 * (t266 * t134 + t307 * t165) - t307 * t308)
-                                    + t102 * (t142 * (t270 * t143 + t309 * t167) - t309 * t310))
-                                + T::from_f64(1.5) * t299 * t272
-                                + T::from_f64(1.5) * t300 * t273))
-                    + k_edge * (t168 * t207 + t73 * t209 + t298 * t215 + t90 * t217)
+                                * (t59
+                                    * (t127 * (t251 * t128 + T::from_f64(2.0) * t293 * t125)
+                                        - t293 * t294)
+                                    + t97
+                                        * (t135 * (t255 * t136 + T::from_f64(2.0) * t295 * t133)
+                                            - t295 * t296))
+                                + T::from_f64(1.5) * (t286 * t257 + t287 * t258)))
+                    + k_edge * (t157 * t195 + t70 * t197 + t283 * t203 + t85 * t205)
                     + k_wall
-                        * (thetadot * (t62 * t109 * t213 + t102 * t111 * t124)
-                            + t79 * t289 + t104 * t290),
+                        * (thetadot * (t59 * t104 * t201 + t97 * t106 * t120)
+                            + t76 * t274 + t99 * t275),
                 k_edge
-                    * (mu * (sin_theta * t311 + hc_alpha * (t296 * t245 + t297 * t246))
-                        + t312 * t27 + t313 * t48)
+                    * (mu * (sin_theta * t297 + hc_alpha * (t281 * t230 + t282 * t231))
+                        + t298 * t25 + t299 * t46)
                     + k_wall
-                        * (t62
-                            * (t265 * (mu * t133 * t134 + t79) + t81 - T::from_f64(1.0))
-                            + t102
-                                * (t269 * (-(mu * t142 * t143) - t104) + T::from_f64(1.0)
-                                    - t106)),
+                        * (t59
+                            * (t250 * (mu * t127 * t128 + t76) + t78 - T::from_f64(1.0))
+                            + t97
+                                * (t254 * (-(mu * t135 * t136) - t99) + T::from_f64(1.0)
+                                    - t101)),
                 k_edge
                     * (sin_theta
-                        * (hc_alpha * (mu * t301 + t175 * t73 - t183 * t90) + t168
-                            + t302) + t201 * t311)
+                        * (hc_alpha * (mu * t288 + t164 * t70 - t172 * t85) + t157
+                            + t284) + t190 * t297)
                     + k_wall
-                        * (t81 * (-t308 + t133 * t165) * t62
-                            + t106 * (-t310 + t142 * t167) * t102) * mu,
+                        * (t78 * (-t294 + T::from_f64(2.0) * t240) * t59
+                            + t101 * (-t296 + T::from_f64(2.0) * t243) * t97) * mu,
                 mu
                     * (k_edge
-                        * (t71 * (t32 * (t250 * t34 + t314 * t164) - t314 * t304)
-                            + t66 * (t94 * (t252 * t96 + t315 * t166) - t315 * t306))
+                        * (t68
+                            * (t30 * (t235 * t32 + T::from_f64(2.0) * t300 * t24)
+                                - t300 * t290)
+                            + t63
+                                * (t89 * (t237 * t91 + T::from_f64(2.0) * t301 * t83)
+                                    - t301 * t292))
                         + k_wall
-                            * (t62 * (t133 * (t275 * t134 + t316 * t165) - t316 * t308)
-                                + t102
-                                    * (t142 * (t277 * t143 + t317 * t167) - t317 * t310)))
-                    + k_edge * (t312 * t72 + t313 * t89)
+                            * (t59
+                                * (t127 * (t260 * t128 + T::from_f64(2.0) * t302 * t125)
+                                    - t302 * t294)
+                                + t97
+                                    * (t135 * (t262 * t136 + T::from_f64(2.0) * t303 * t133)
+                                        - t303 * t296))) + k_edge * (t298 * t69 + t299 * t84)
                     + k_wall
-                        * (t62 * (t109 + t265 * t79) * t78
-                            + t102 * (t111 + t269 * t104) * t103),
+                        * (t59 * (t104 + t250 * t76) * t75
+                            + t97 * (t106 + t254 * t99) * t98),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
             ],
@@ -992,7 +976,7 @@ pub mod compliant_peg {
     /// - `depth`: scalar
     ///
     /// # Cost
-    /// 30 add/sub, 28 mul, 0 div, 0 sqrt, 6 transcendental, 4 branches; 17 `let`s.
+    /// 30 add/sub, 25 mul, 0 div, 0 sqrt, 6 transcendental, 4 branches; 17 `let`s.
     #[inline]
     pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> (T, T, T) {
         let x = y[0];
@@ -1028,10 +1012,10 @@ pub mod compliant_peg {
         let t12 = t8.powf(T::from_f64(2.5));
         let t13 = t9.powf(T::from_f64(2.5));
         let t14 = t10.powf(T::from_f64(2.5));
-        let kinetic = T::from_f64(0.5) * m * (xdot * xdot + zdot * zdot)
-            + T::from_f64(0.5) * j * (thetadot * thetadot);
-        let potential = k_edge * (T::from_f64(0.4) * t13 + T::from_f64(0.4) * t12)
-            + k_wall * (T::from_f64(0.4) * t11 + T::from_f64(0.4) * t14);
+        let kinetic = T::from_f64(0.5)
+            * (m * (xdot * xdot + zdot * zdot) + j * (thetadot * thetadot));
+        let potential = T::from_f64(0.4) * (t13 + t12) * k_edge
+            + T::from_f64(0.4) * (t11 + t14) * k_wall;
         let depth = z + l_c * cos_theta;
         (kinetic, potential, depth)
     }

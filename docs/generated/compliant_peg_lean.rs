@@ -161,7 +161,7 @@ pub mod compliant_peg_lean {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 204 add/sub, 449 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 178 `let`s.
+    /// 199 add/sub, 446 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 172 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -197,7 +197,7 @@ pub mod compliant_peg_lean {
         let t8 = rho_h - z;
         let t9 = sin_theta * t8;
         let t10 = T::from_f64(0.5) * theta;
-        let (t11, t25) = t10.sin_cos();
+        let (t11, t23) = t10.sin_cos();
         let t12 = t11 * t11;
         let t13 = cos_theta * t8;
         let t14 = sin_theta * t7 + t13;
@@ -207,163 +207,156 @@ pub mod compliant_peg_lean {
         let t18 = -sin_theta * t14;
         let t19 = t18 + r * cos_theta;
         let t20 = zdot + thetadot * t19;
-        let t21 = sin_theta * t17;
-        let t22 = cos_theta * t20;
-        let t23 = t21 + t22;
-        let t24 = -T::from_f64(1.0) + T::from_f64(2.0) * t12;
-        let t26 = t11 * t25;
-        let t27 = v_s.hypot(t23);
-        let t28 = T::from_f64(1.0) / t27;
-        let t29 = sin_theta * t16 + cos_theta * t19;
-        let t30 = t23 * t23;
-        let t31 = -rho_p;
-        let t32 = l_c + t31;
-        let t33 = r + t31;
-        let t34 = sin_theta * t32;
-        let t35 = l_c + t31 + rho_p * sin_theta;
-        let t36 = r - T::from_f64(2.0) * rho_p * t12;
-        let t37 = cos_theta * t36;
-        let t38 = sin_theta * t35;
-        let t39 = T::from_f64(1.0) / m;
-        let t40 = T::from_f64(1.0) / j;
-        let t41 = t24 * t24;
-        let t42 = sin_theta * sin_theta;
-        let t43 = cos_theta * cos_theta;
-        let t44 = T::from_f64(1.0) / (t27 * t27 * t27);
-        let t45 = t37 + t38;
-        let t46 = r + t5 + x + t34 - T::from_f64(2.0) * t12 * t33;
-        let t47 = t46.max0();
-        let t48 = t47 * t47.sqrt();
-        let t49 = k_wall * t48;
-        let t50 = t46.step();
-        let t51 = -t13 - T::from_f64(2.0) * t26 * t7;
-        let t52 = xdot * t24 + zdot * sin_theta + thetadot * t51;
-        let t53 = T::from_f64(1.0) + hc_alpha * t52;
-        let t54 = t53.max0();
-        let t55 = cos_theta * t32 - T::from_f64(2.0) * t26 * t33;
-        let t56 = xdot + thetadot * t55;
-        let t57 = T::from_f64(1.0) + hc_alpha * t56;
-        let t58 = t57.max0();
-        let t59 = t54 - T::from_f64(1.0);
-        let t60 = t58 - T::from_f64(1.0);
-        let t61 = -t59;
-        let t62 = t47.sqrt();
-        let t63 = t50 * t50;
-        let t64 = -T::from_f64(1.5) * t63;
-        let t65 = t12 - t25 * t25;
-        let t66 = t7 * t65 + t9;
-        let t67 = t30 * t44;
-        let t68 = -t28 + t67;
-        let t69 = -t9;
-        let t70 = cos_theta * t7 + t69;
-        let t71 = r + t5 + t6 + t69 - T::from_f64(2.0) * t7 * t12;
-        let t72 = t71.max0();
-        let t73 = t72 * t72.sqrt();
-        let t74 = t71.step();
-        let t75 = -t38 - t37;
-        let t76 = thetadot * t75;
-        let t77 = zdot + t76;
-        let t78 = v_s.hypot(t77);
-        let t79 = T::from_f64(1.0) / t78;
-        let t80 = t77 * t77;
-        let t81 = t72.sqrt();
-        let t82 = t74 * t74;
-        let t83 = t53.step();
-        let t84 = t57.step();
-        let t85 = -t0;
-        let t86 = -t1;
-        let t87 = T::from_f64(1.0) / (t78 * t78 * t78);
-        let t88 = k_edge * t73;
-        let t89 = hc_alpha * t83;
-        let t90 = t89 * t51;
-        let t91 = -t90 * t88 * sin_theta;
-        let t92 = t51 * t51;
-        let t93 = t55 * t55;
-        let t94 = T::from_f64(2.0) * t21 + T::from_f64(2.0) * t22;
-        let t95 = T::from_f64(2.0) * zdot + T::from_f64(2.0) * t76;
-        let t96 = -t74;
-        let t97 = t73 * (t96 + t61);
-        let t98 = T::from_f64(1.5) * t54 - T::from_f64(1.5);
-        let t99 = t74 * t81;
-        let t100 = t99 * t24;
-        let t101 = thetadot * t73;
-        let t102 = t26 * t101;
-        let t103 = t89 * t102;
-        let t104 = T::from_f64(2.0) * t103;
-        let t105 = t100 * t98 + t104;
-        let t106 = t23 * t28;
-        let t107 = mu * t54;
-        let t108 = t106 * t107;
-        let t109 = t108 * sin_theta;
-        let t110 = t109 * t74;
-        let t111 = t89 * t106;
-        let t112 = t111 * mu;
-        let t113 = t62 * (t50 * (T::from_f64(1.5) - T::from_f64(1.5) * t58) + t64);
-        let t114 = t99 * sin_theta;
-        let t115 = t101 * cos_theta;
-        let t116 = t115 * t89;
-        let t117 = t114 * t98 + t116;
-        let t118 = t81 * t82;
-        let t119 = -T::from_f64(1.5) * t118 * t24;
-        let t120 = T::from_f64(2.0) * t26 * xdot + zdot * cos_theta + thetadot * t66;
-        let t121 = t99 * t51;
-        let t122 = t73 * t120;
-        let t123 = t89 * t122;
-        let t124 = t121 * t98 + t123;
-        let t125 = cos_theta * (r + t70) + t18;
-        let t126 = sin_theta * (-r - t70) - t15;
-        let t127 = cos_theta * (t17 + thetadot * t126)
-            + sin_theta * (thetadot * t125 - t20);
-        let t128 = t33 * t65 - t34;
-        let t129 = t67 * t127;
-        let t130 = t111 * sin_theta;
-        let t131 = -T::from_f64(2.0) * t74;
-        let t132 = -T::from_f64(2.0) * t59;
-        let t133 = -(T::from_f64(1.5) * t118 * t51) - t124;
-        let t134 = thetadot * t48;
-        let t135 = hc_alpha * t84;
-        let t136 = t135 * t128;
-        let t137 = t134 * t136;
-        let t138 = t49 * t135;
-        let t139 = cos_theta * t54;
-        let t140 = t107 * cos_theta;
-        let t141 = sin_theta * (t140 * t68 - t89 * t24);
-        let t142 = t135 * t55;
-        let t143 = t54 * t29;
-        let t144 = t111 * t51;
-        let t145 = t143 * t68 - t144;
-        let t146 = -t90 * t24;
-        let t147 = t50 * t62;
-        let t148 = t147 * k_wall;
-        let t149 = mu * t58;
-        let t150 = t77 * t79;
-        let t151 = t100 * t54;
-        let t152 = cos_theta * (rho_p * (-sin_theta + T::from_f64(2.0) * t26) - t35)
-            + sin_theta * t36;
-        let t153 = t111 * t120;
-        let t154 = t106 * t121;
-        let t155 = t80 * t87;
-        let t156 = t58 * (-t79 + t155);
-        let t157 = t150 * t136;
-        let t158 = t147 * t55;
-        let t159 = t158 * t58;
-        let t160 = t156 * t75;
-        let t161 = T::from_f64(1.5) * t58 - T::from_f64(1.5);
-        let t162 = t112 * (thetadot * t29);
-        let t163 = t81
-            * (-(T::from_f64(1.5) * t51 * t82) - T::from_f64(1.5) * t108 * t74 * t29);
-        let t164 = t150 * t75;
-        let t165 = t158 * t161 + t137;
-        let t166 = t28 * t30;
-        let t167 = t166 * mu;
-        let t168 = t79 * t80;
-        let t169 = t73 * t127;
-        let t170 = t44 * (t23 * t23 * t23);
-        let t171 = t134 * t152;
-        let t172 = t87 * (t77 * t77 * t77);
-        let t173 = t89 * (t167 + t52) + t59;
-        let t174 = -t170 + t28 * t94;
-        let t175 = t75 * t58;
+        let t21 = sin_theta * t17 + cos_theta * t20;
+        let t22 = -T::from_f64(1.0) + T::from_f64(2.0) * t12;
+        let t24 = t11 * t23;
+        let t25 = v_s.hypot(t21);
+        let t26 = T::from_f64(1.0) / t25;
+        let t27 = sin_theta * t16 + cos_theta * t19;
+        let t28 = t21 * t21;
+        let t29 = -rho_p;
+        let t30 = l_c + t29;
+        let t31 = r + t29;
+        let t32 = sin_theta * t30;
+        let t33 = l_c + t29 + rho_p * sin_theta;
+        let t34 = r - T::from_f64(2.0) * rho_p * t12;
+        let t35 = cos_theta * t34;
+        let t36 = sin_theta * t33;
+        let t37 = T::from_f64(1.0) / m;
+        let t38 = T::from_f64(1.0) / j;
+        let t39 = t22 * t22;
+        let t40 = sin_theta * sin_theta;
+        let t41 = cos_theta * cos_theta;
+        let t42 = T::from_f64(1.0) / (t25 * t25 * t25);
+        let t43 = t35 + t36;
+        let t44 = r + t5 + x + t32 - T::from_f64(2.0) * t12 * t31;
+        let t45 = t44.max0();
+        let t46 = t45 * t45.sqrt();
+        let t47 = k_wall * t46;
+        let t48 = t44.step();
+        let t49 = -t13 - T::from_f64(2.0) * t24 * t7;
+        let t50 = xdot * t22 + zdot * sin_theta + thetadot * t49;
+        let t51 = T::from_f64(1.0) + hc_alpha * t50;
+        let t52 = t51.max0();
+        let t53 = cos_theta * t30 - T::from_f64(2.0) * t24 * t31;
+        let t54 = xdot + thetadot * t53;
+        let t55 = T::from_f64(1.0) + hc_alpha * t54;
+        let t56 = t55.max0();
+        let t57 = t52 - T::from_f64(1.0);
+        let t58 = t56 - T::from_f64(1.0);
+        let t59 = -t57;
+        let t60 = t45.sqrt();
+        let t61 = t48 * t48;
+        let t62 = -T::from_f64(1.5) * t61;
+        let t63 = t12 - t23 * t23;
+        let t64 = t7 * t63 + t9;
+        let t65 = t28 * t42;
+        let t66 = -t26 + t65;
+        let t67 = -t9;
+        let t68 = cos_theta * t7 + t67;
+        let t69 = r + t5 + t6 + t67 - T::from_f64(2.0) * t7 * t12;
+        let t70 = t69.max0();
+        let t71 = t70 * t70.sqrt();
+        let t72 = t69.step();
+        let t73 = -t36 - t35;
+        let t74 = thetadot * t73;
+        let t75 = zdot + t74;
+        let t76 = v_s.hypot(t75);
+        let t77 = T::from_f64(1.0) / t76;
+        let t78 = t75 * t75;
+        let t79 = t70.sqrt();
+        let t80 = t72 * t72;
+        let t81 = t51.step();
+        let t82 = t55.step();
+        let t83 = -t0;
+        let t84 = -t1;
+        let t85 = T::from_f64(1.0) / (t76 * t76 * t76);
+        let t86 = k_edge * t71;
+        let t87 = hc_alpha * t81;
+        let t88 = t87 * t49;
+        let t89 = -t88 * t86 * sin_theta;
+        let t90 = t49 * t49;
+        let t91 = t53 * t53;
+        let t92 = -t72;
+        let t93 = t92 + t59;
+        let t94 = t71 * t93;
+        let t95 = T::from_f64(1.5) * t52 - T::from_f64(1.5);
+        let t96 = t72 * t79;
+        let t97 = t96 * t22;
+        let t98 = thetadot * t71;
+        let t99 = t24 * t98;
+        let t100 = t87 * t99;
+        let t101 = T::from_f64(2.0) * t100;
+        let t102 = t97 * t95 + t101;
+        let t103 = t21 * t26;
+        let t104 = mu * t52;
+        let t105 = t103 * t104;
+        let t106 = t105 * sin_theta;
+        let t107 = t106 * t72;
+        let t108 = t87 * t103;
+        let t109 = t108 * mu;
+        let t110 = t60 * (t48 * (T::from_f64(1.5) - T::from_f64(1.5) * t56) + t62);
+        let t111 = t96 * sin_theta;
+        let t112 = t98 * cos_theta;
+        let t113 = t112 * t87;
+        let t114 = t111 * t95 + t113;
+        let t115 = t79 * t80;
+        let t116 = -T::from_f64(1.5) * t115 * t22;
+        let t117 = T::from_f64(2.0) * t24 * xdot + zdot * cos_theta + thetadot * t64;
+        let t118 = t96 * t49;
+        let t119 = t71 * t117;
+        let t120 = t87 * t119;
+        let t121 = t118 * t95 + t120;
+        let t122 = cos_theta * (r + t68) + t18;
+        let t123 = sin_theta * (-r - t68) - t15;
+        let t124 = cos_theta * (t17 + thetadot * t123)
+            + sin_theta * (thetadot * t122 - t20);
+        let t125 = t31 * t63 - t32;
+        let t126 = t65 * t124;
+        let t127 = t108 * sin_theta;
+        let t128 = -(T::from_f64(1.5) * t115 * t49) - t121;
+        let t129 = thetadot * t46;
+        let t130 = hc_alpha * t82;
+        let t131 = t130 * t125;
+        let t132 = t129 * t131;
+        let t133 = t47 * t130;
+        let t134 = cos_theta * t52;
+        let t135 = t104 * cos_theta;
+        let t136 = sin_theta * (t135 * t66 - t87 * t22);
+        let t137 = t130 * t53;
+        let t138 = t52 * t27;
+        let t139 = t108 * t49;
+        let t140 = t138 * t66 - t139;
+        let t141 = -t88 * t22;
+        let t142 = t48 * t60;
+        let t143 = t142 * k_wall;
+        let t144 = mu * t56;
+        let t145 = t75 * t77;
+        let t146 = t97 * t52;
+        let t147 = cos_theta * (rho_p * (-sin_theta + T::from_f64(2.0) * t24) - t33)
+            + sin_theta * t34;
+        let t148 = t108 * t117;
+        let t149 = t103 * t118;
+        let t150 = t78 * t85;
+        let t151 = t56 * (-t77 + t150);
+        let t152 = t142 * t53;
+        let t153 = t152 * t56;
+        let t154 = t151 * t73;
+        let t155 = T::from_f64(1.5) * t56 - T::from_f64(1.5);
+        let t156 = t71 * (t92 + t59 - t109 * thetadot * t27);
+        let t157 = t79 * (-(t49 * t80) - t105 * t72 * t27);
+        let t158 = t145 * t73;
+        let t159 = t152 * t155 + t132;
+        let t160 = t26 * t28;
+        let t161 = t160 * mu;
+        let t162 = t77 * t78;
+        let t163 = t71 * t124;
+        let t164 = t42 * (t21 * t21 * t21);
+        let t165 = t129 * t147;
+        let t166 = t85 * (t75 * t75 * t75);
+        let t167 = t87 * (t161 + t50) + t57;
+        let t168 = -t164 + T::from_f64(2.0) * t103;
+        let t169 = t73 * t56;
         SMatrix::<
             T,
             8,
@@ -394,135 +387,139 @@ pub mod compliant_peg_lean {
                 T::from_f64(1.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t39
+                t37
                     * (k_edge
-                        * (t81
-                            * (-(T::from_f64(1.5) * t41 * t82)
-                                - T::from_f64(1.5) * t110 * t24) - t24 * t105
-                            - T::from_f64(2.0) * t102 * t112 * sin_theta)
-                        + t113 * k_wall),
+                        * (T::from_f64(1.5) * (-(t39 * t80) - t107 * t22) * t79
+                            - t22 * t102 - T::from_f64(2.0) * t99 * t109 * sin_theta)
+                        + t110 * k_wall),
                 k_edge
-                    * (sin_theta * (t119 - t115 * t112) - t24 * t117
-                        - T::from_f64(1.5) * t108 * t99 * t42) * t39,
-                t39
+                    * (sin_theta * (t116 - t112 * t109) - t22 * t114
+                        - T::from_f64(1.5) * t105 * t96 * t40) * t37,
+                t37
                     * (k_edge
-                        * (t73
+                        * (t71
                             * (mu
-                                * (t54
-                                    * (t28 * (-(cos_theta * t23) - sin_theta * t127)
-                                        + t129 * sin_theta) - t130 * t120) + t26 * (t131 + t132))
-                            + t24 * t133 - T::from_f64(1.5) * t109 * t121)
-                        + k_wall * (t113 * t55 - t137) + t2 + t3),
-                t39 * (t88 * (mu * (t42 * t68 * t54 - t130 * t24) - t89 * t41) - t138),
-                t88 * (t141 - t112 * t42) * t39,
-                t39 * (t88 * (sin_theta * t145 * mu + t146) - t142 * t49),
+                                * (t52
+                                    * (t26 * (-(cos_theta * t21) - sin_theta * t124)
+                                        + t126 * sin_theta) - t127 * t117)
+                                + T::from_f64(2.0) * t24 * t93) + t22 * t128
+                            - T::from_f64(1.5) * t106 * t118)
+                        + k_wall * (t110 * t53 - t132) + t2 + t3),
+                t37 * (t86 * (mu * (t40 * t66 * t52 - t127 * t22) - t87 * t39) - t133),
+                t86 * (t136 - t109 * t40) * t37,
+                t37 * (t86 * (sin_theta * t140 * mu + t141) - t137 * t47),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t39
+                t37
                     * (k_edge
-                        * (sin_theta * (t119 - t105)
-                            + t106
-                                * (-(T::from_f64(1.5) * t151) - T::from_f64(2.0) * t103)
-                                * cos_theta * mu) - T::from_f64(1.5) * t148 * t149 * t150),
+                        * (sin_theta * (t116 - t102)
+                            + t103
+                                * (-(T::from_f64(1.5) * t146) - T::from_f64(2.0) * t100)
+                                * cos_theta * mu) - T::from_f64(1.5) * t143 * t144 * t145),
                 k_edge
-                    * (t81
-                        * (-(T::from_f64(1.5) * t82 * t42)
-                            - T::from_f64(1.5) * t110 * cos_theta) - sin_theta * t117
-                        - t112 * t101 * t43) * t39,
-                t39
+                    * (T::from_f64(1.5) * (-(t80 * t40) - t107 * cos_theta) * t79
+                        - sin_theta * t114 - t109 * t98 * t41) * t37,
+                t37
                     * (mu
                         * (k_edge
-                            * (t73
-                                * (t54
-                                    * (t28 * (sin_theta * t23 - cos_theta * t127)
-                                        + t129 * cos_theta) - t153 * cos_theta)
-                                - T::from_f64(1.5) * t154 * t139)
+                            * (t71
+                                * (t52
+                                    * (t26 * (sin_theta * t21 - cos_theta * t124)
+                                        + t126 * cos_theta) - t148 * cos_theta)
+                                - T::from_f64(1.5) * t149 * t134)
                             + k_wall
-                                * (t134 * (t156 * t152 - t157)
-                                    - T::from_f64(1.5) * t159 * t150))
-                        + k_edge * (t97 * cos_theta + sin_theta * t133) + t85 + t86),
-                t39 * (t88 * (t141 - t112 * cos_theta * t24) - t138 * t150 * mu),
-                t39
-                    * (mu * (t88 * (t43 * t68 * t54 - t130 * cos_theta) + t156 * t49)
-                        - t88 * t89 * t42),
-                t39 * (mu * (cos_theta * t145 * t88 + t49 * (t160 - t142 * t150)) + t91),
+                                * (t129 * (t151 * t147 - t131 * t145)
+                                    - T::from_f64(1.5) * t153 * t145))
+                        + k_edge * (t94 * cos_theta + sin_theta * t128) + t83 + t84),
+                t37 * (t86 * (t136 - t109 * cos_theta * t22) - t133 * t145 * mu),
+                t37
+                    * (mu * (t86 * (t41 * t66 * t52 - t127 * cos_theta) + t151 * t47)
+                        - t86 * t87 * t40),
+                t37 * (mu * (cos_theta * t140 * t86 + t47 * (t154 - t137 * t145)) + t89),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t40
+                t38
                     * (k_edge
-                        * (t73 * (t131 + t132 - T::from_f64(2.0) * t162) * t26
-                            + t163 * t24 - t51 * t105)
-                        + t62
-                            * (t55 * (t64 - t161 * t50)
-                                - T::from_f64(1.5) * t164 * t149 * t50) * k_wall),
+                        * (T::from_f64(2.0) * t156 * t24 + T::from_f64(1.5) * t157 * t22
+                            - t49 * t102)
+                        + t60
+                            * (t53 * (t62 - t155 * t48)
+                                - T::from_f64(1.5) * t144 * t158 * t48) * k_wall),
                 k_edge
-                    * (t73 * (t96 + t61 - t162) * cos_theta + t163 * sin_theta
-                        - t51 * t117) * t40,
-                t40
+                    * (t156 * cos_theta + T::from_f64(1.5) * t157 * sin_theta
+                        - t49 * t114) * t38,
+                t38
                     * (mu
                         * (k_edge
-                            * (t73
-                                * (t54
-                                    * (t28
-                                        * (-(t29 * t127)
-                                            - t23
-                                                * (cos_theta * (t16 + t126) + sin_theta * (t125 - t19)))
-                                        + t129 * t29) - t153 * t29)
-                                - T::from_f64(1.5) * t154 * t143)
+                            * (t71
+                                * (t52
+                                    * (t26
+                                        * (-(t27 * t124)
+                                            - t21
+                                                * (cos_theta * (t16 + t123) + sin_theta * (t122 - t19)))
+                                        + t126 * t27) - t148 * t27)
+                                - T::from_f64(1.5) * t149 * t138)
                             + k_wall
-                                * (t48
-                                    * (t152 * (t79 * (-t77 - t76) + t155 * t76) * t58
-                                        - t157 * t76) - T::from_f64(1.5) * t159 * t164))
+                                * (t46
+                                    * (t147 * (t77 * (-t75 - t74) + t74 * t150) * t56
+                                        - t131 * t158 * thetadot) - T::from_f64(1.5) * t153 * t158))
                         + k_edge
-                            * (t97 * t66 - T::from_f64(1.5) * t118 * t92 - t51 * t124)
+                            * (t94 * t64 - T::from_f64(1.5) * t115 * t90 - t49 * t121)
                         + k_wall
-                            * ((-t50 - t60) * t128 * t48
-                                - T::from_f64(1.5) * t62 * t63 * t93 - t55 * t165)),
-                t40
-                    * (t88 * (t29 * (t54 * t68 * sin_theta - t111 * t24) * mu + t146)
-                        + t138 * (-t55 - t164 * mu)),
-                t40 * (mu * (t29 * (t139 * t68 - t130) * t88 + t160 * t49) + t91),
-                t40
+                            * ((-t48 - t58) * t125 * t46
+                                - T::from_f64(1.5) * t60 * t61 * t91 - t53 * t159)),
+                t38
+                    * (t86 * (t27 * (t52 * t66 * sin_theta - t108 * t22) * mu + t141)
+                        + t133 * (-t53 - t158 * mu)),
+                t38 * (mu * (t27 * (t134 * t66 - t127) * t86 + t154 * t47) + t89),
+                t38
                     * (mu
-                        * (t88 * (t29 * t29 * t68 * t54 - t144 * t29)
-                            + t49 * (t156 * (t45 * t45) - t142 * t164))
-                        + hc_alpha * (-(t88 * t83 * t92) - t49 * t84 * t93)),
+                        * (t86 * (t27 * t27 * t66 * t52 - t139 * t27)
+                            + t47 * (t151 * (t43 * t43) - t137 * t158))
+                        + hc_alpha * (-(t86 * t81 * t90) - t47 * t82 * t91)),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                xdot * t4 + zdot * (t85 + t86),
+                xdot * t4 + zdot * (t83 + t84),
                 t0 + t1,
                 t4,
                 m_2,
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 k_edge
-                    * (t167 * (T::from_f64(1.5) * t151 + t104)
-                        + T::from_f64(2.0) * t102 * t59 + t52 * t105)
-                    + t148 * (T::from_f64(1.5) * t168 * t149 + t56 * t161),
+                    * (t161 * (T::from_f64(1.5) * t146 + t101)
+                        + T::from_f64(2.0) * t99 * t57 + t50 * t102)
+                    + t143 * (T::from_f64(1.5) * t162 * t144 + t54 * t155),
                 k_edge
-                    * (t167 * (T::from_f64(1.5) * t114 * t54 + t116) + t115 * t59
-                        + t52 * t117),
+                    * (t161 * (T::from_f64(1.5) * t111 * t52 + t113) + t112 * t57
+                        + t50 * t114),
                 mu
                     * (k_edge
-                        * (t54
-                            * (t28 * (T::from_f64(1.5) * t121 * t30 + t169 * t94)
-                                - t169 * t170) + t123 * t166)
+                        * (t52
+                            * (t26
+                                * (T::from_f64(1.5) * t118 * t28
+                                    + T::from_f64(2.0) * t163 * t21) - t163 * t164)
+                            + t120 * t160)
                         + k_wall
-                            * (t58
-                                * (t79 * (T::from_f64(1.5) * t158 * t80 + t171 * t95)
-                                    - t171 * t172) + t137 * t168))
-                    + k_edge * (t122 * t59 + t52 * t124)
-                    + k_wall * (t134 * t60 * t128 + t56 * t165),
-                t88 * (t24 * t173 + sin_theta * t174 * t107)
-                    + t49 * (t135 * (t168 * mu + t56) + t58 - T::from_f64(1.0)),
-                t88 * (sin_theta * t173 + t140 * t174)
-                    + t49 * (-t172 + t79 * t95) * t149,
+                            * (t56
+                                * (t77
+                                    * (T::from_f64(1.5) * t152 * t78
+                                        + T::from_f64(2.0) * t165 * t75) - t165 * t166)
+                                + t132 * t162)) + k_edge * (t119 * t57 + t50 * t121)
+                    + k_wall * (t129 * t58 * t125 + t54 * t159),
+                t86 * (t22 * t167 + sin_theta * t168 * t104)
+                    + t47 * (t130 * (t162 * mu + t54) + t56 - T::from_f64(1.0)),
+                t86 * (sin_theta * t167 + t135 * t168)
+                    + t47 * (-t166 + T::from_f64(2.0) * t145) * t144,
                 mu
-                    * (t88 * (t28 * (t90 * t30 + t143 * t94) - t170 * t143)
-                        + t49 * (t79 * (t142 * t80 + t175 * t95) - t175 * t172))
-                    + t88 * (t59 + t89 * t52) * t51 + t49 * (t60 + t135 * t56) * t55,
+                    * (t86
+                        * (t26 * (t88 * t28 + T::from_f64(2.0) * t138 * t21)
+                            - t164 * t138)
+                        + t47
+                            * (t77 * (t137 * t78 + T::from_f64(2.0) * t169 * t75)
+                                - t169 * t166)) + t86 * (t57 + t87 * t50) * t49
+                    + t47 * (t58 + t130 * t54) * t53,
                 T::from_f64(0.0),
                 T::from_f64(0.0),
             ],
@@ -649,7 +646,7 @@ pub mod compliant_peg_lean {
     /// - `depth`: scalar
     ///
     /// # Cost
-    /// 17 add/sub, 21 mul, 0 div, 0 sqrt, 4 transcendental, 2 branches; 11 `let`s.
+    /// 17 add/sub, 19 mul, 0 div, 0 sqrt, 4 transcendental, 2 branches; 11 `let`s.
     #[inline]
     pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> (T, T, T) {
         let x = y[0];
@@ -680,9 +677,9 @@ pub mod compliant_peg_lean {
         let t7 = (r + t0 + x + sin_theta * (l_c + t6) - T::from_f64(2.0) * t3 * (r + t6))
             .max0();
         let t8 = t7.powf(T::from_f64(2.5));
-        let kinetic = T::from_f64(0.5) * m * (xdot * xdot + zdot * zdot)
-            + T::from_f64(0.5) * j * (thetadot * thetadot);
-        let potential = T::from_f64(0.4) * k_edge * t5 + T::from_f64(0.4) * k_wall * t8;
+        let kinetic = T::from_f64(0.5)
+            * (m * (xdot * xdot + zdot * zdot) + j * (thetadot * thetadot));
+        let potential = T::from_f64(0.4) * (k_edge * t5 + k_wall * t8);
         let depth = z + l_c * cos_theta;
         (kinetic, potential, depth)
     }

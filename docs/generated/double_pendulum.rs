@@ -163,7 +163,7 @@ pub mod double_pendulum {
     /// - `energy`: scalar
     ///
     /// # Cost
-    /// 7 add/sub, 20 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 5 `let`s.
+    /// 7 add/sub, 19 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 5 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> T {
         let theta1 = x[0];
@@ -181,8 +181,7 @@ pub mod double_pendulum {
         let t1 = theta1dot * theta1dot * (l1 * l1);
         let t2 = (theta1 - theta2).cos();
         m2
-            * (T::from_f64(0.5) * t1
-                + T::from_f64(0.5) * (theta2dot * theta2dot) * (l2 * l2)
+            * (T::from_f64(0.5) * (t1 + theta2dot * theta2dot * (l2 * l2))
                 + theta1dot * theta2dot * l1 * l2 * t2) + T::from_f64(0.5) * t1 * m1
             + g * (-(t0 * m1) + m2 * (-t0 - l2 * cos_theta2))
     }

@@ -42,7 +42,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 88 add/sub, 170 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 74 `let`s.
+    /// 86 add/sub, 161 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 72 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -127,64 +127,55 @@ pub mod rigid_peg {
         let t48 = t47 * t47;
         let t49 = t30 * t35;
         let t50 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t51 = cos_gamma * t50;
-        let t52 = t51 + t41;
-        let t53 = t29 * t10;
-        let t54 = cos_gamma * (t53 + t43);
-        let t55 = t11 + t54 - t42;
-        let t56 = -t50;
-        let t57 = sin_gamma
-            * (t56
-                + t7 * (d_peg * (T::from_f64(0.5) * t14 - T::from_f64(0.5) * t5) + t26)
-                + t45 - T::from_f64(2.0) * t46) + T::from_f64(2.0) * cos_gamma * t40;
-        let t58 = -t33;
-        let t59 = d_hole
+        let t51 = cos_gamma * t50 + t41;
+        let t52 = cos_gamma * (t29 * t10 + t43);
+        let t53 = t11 + t52 - t42;
+        let t54 = -t50;
+        let t55 = sin_gamma
+            * (t54 + t7 * (T::from_f64(0.5) * (t14 - t5) * d_peg + t26) + t45
+                - T::from_f64(2.0) * t46) + T::from_f64(2.0) * cos_gamma * t40;
+        let t56 = -t33;
+        let t57 = d_hole
             * (t28 * (-t7 - T::from_f64(2.0) * t44) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
-                * (t58
+                * (t56
                     + t7
-                        * (d_peg * (-(T::from_f64(0.5) * t14) + T::from_f64(0.5) * t5)
+                        * (T::from_f64(0.5) * (-t14 + t5) * d_peg
                             - T::from_f64(0.5) * t6) - t45 + T::from_f64(2.0) * t46)
             - T::from_f64(2.0) * sin_gamma * t43;
-        let t60 = sin_gamma * t50;
-        let t61 = cos_gamma * (t33 + t50) - t30 + t41;
-        let t62 = sin_gamma * (t58 + t56);
-        let t63 = t7 * (t26 + t29 * cos_gamma) * t7;
-        let t64 = t11 + t54 + t62 + t63;
-        let t65 = t57 * (T::from_f64(2.0) * t51 + T::from_f64(2.0) * t41);
-        let t66 = t59
-            * (d_hole + cos_gamma * (T::from_f64(2.0) * t53 + T::from_f64(2.0) * t43)
-                - T::from_f64(2.0) * t42);
-        let t67 = T::from_f64(0.25) * t9 * (t39 - T::from_f64(2.0) * t38)
+        let t58 = sin_gamma * t50;
+        let t59 = cos_gamma * (t33 + t50) - t30 + t41;
+        let t60 = sin_gamma * (t56 + t54);
+        let t61 = t7 * (t26 + t29 * cos_gamma) * t7;
+        let t62 = t11 + t52 + t60 + t61;
+        let t63 = t51 * t55;
+        let t64 = t57 * (d_hole + T::from_f64(2.0) * t52 - T::from_f64(2.0) * t42);
+        let t65 = T::from_f64(0.25) * t9 * (t39 - T::from_f64(2.0) * t38)
             * (T::from_f64(2.0) * h - T::from_f64(2.0) * t8);
-        let t68 = t63 * t35;
-        let t69 = m * gammadot * psidot;
+        let t66 = t61 * t35;
+        let t67 = m * gammadot * psidot;
         let a = Matrix5::new(
-            m
-                * (t27
-                    + T::from_f64(0.5)
-                        * (T::from_f64(2.0) * (t52 * t52)
-                            + T::from_f64(2.0) * (t55 * t55))),
+            m * (t27 + t51 * t51 + t53 * t53),
             T::from_f64(0.0),
-            f * (-(t_k_eta * t61) - t_k_z * (t54 + t62)),
-            f * (-(t_b1_eta * t61) - t_b1_z * t64),
-            f * (-(t_b2_eta * t61) - t_b2_z * t64),
+            f * (-(t_k_eta * t59) - t_k_z * (t52 + t60)),
+            f * (-(t_b1_eta * t59) - t_b1_z * t62),
+            f * (-(t_b2_eta * t59) - t_b2_z * t62),
             T::from_f64(0.0),
             m * (t9 * (T::from_f64(0.25) * t48 + t27) + T::from_f64(0.125) * t15 * t18),
             T::from_f64(0.5) * t25 * d_hole,
-            f * (t_b1_eta * t32 - t63 * t_b1_n),
-            f * (-(t_b2_eta * t32) - t63 * t_b2_n),
-            m * t52,
+            f * (t_b1_eta * t32 - t61 * t_b1_n),
+            f * (-(t_b2_eta * t32) - t61 * t_b2_n),
+            m * t51,
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) + t68,
-            -(f * t_b2_eta) + t68,
+            -(f * t_b1_eta) + t66,
+            -(f * t_b2_eta) + t66,
             T::from_f64(0.0),
-            t60 * m,
+            t58 * m,
             -t25,
             -(f * t_b1_n) + t36,
             -(f * t_b2_n) - t36,
-            m * t55,
+            m * t53,
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
             -(f * t_b1_z) + t49,
@@ -193,21 +184,21 @@ pub mod rigid_peg {
         let b = Vector5::new(
             m_gamma
                 + m
-                    * (t17 * (-(T::from_f64(0.125) * t18) + t27) * t24 - g * t55
+                    * (t17 * (-(T::from_f64(0.125) * t18) + t27) * t24
                         + T::from_f64(0.5)
-                            * (t16 * (t65 + t66)
-                                + t17 * (T::from_f64(0.5) * t24 * t48 + t67))
-                        - T::from_f64(0.5) * gammadot * gammadot
-                            * (T::from_f64(2.0) * t65 + T::from_f64(2.0) * t66))
-                + t52 * (t20 + t21) + f_z * t55,
-            m_psi + t60 * (t22 + t23)
-                - t69
+                            * (t16 * (T::from_f64(2.0) * t63 + t64)
+                                + t17 * (T::from_f64(0.5) * t24 * t48 + t65)
+                                - gammadot * gammadot
+                                    * (T::from_f64(4.0) * t63 + T::from_f64(2.0) * t64))
+                        - g * t53) + t51 * (t20 + t21) + f_z * t53,
+            m_psi + t58 * (t22 + t23)
+                - t67
                     * (t24
                         * (T::from_f64(0.5) * t48 - T::from_f64(0.25) * t18
-                            + T::from_f64(0.16666666666666666) * t19) + t67),
-            t20 + t21 - m * (t57 * t16 - t60 * t17),
-            t22 + t23 - t69 * t52 * (T::from_f64(1.0) + T::from_f64(1.0)),
-            f_z - m * g - m * t16 * t59,
+                            + T::from_f64(0.16666666666666666) * t19) + t65),
+            t20 + t21 - m * (t55 * t16 - t58 * t17),
+            t22 + t23 - t67 * t51 * (T::from_f64(1.0) + T::from_f64(1.0)),
+            f_z - m * g - m * t16 * t57,
         );
         (a, b)
     }
@@ -226,7 +217,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 91 add/sub, 171 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 74 `let`s.
+    /// 89 add/sub, 162 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 72 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -312,54 +303,49 @@ pub mod rigid_peg {
         let t48 = t47 * t47;
         let t49 = t30 * t35;
         let t50 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t51 = cos_gamma * t50;
-        let t52 = t51 + t41;
-        let t53 = t29 * t10;
-        let t54 = cos_gamma * (t53 + t43);
-        let t55 = t11 + t54 - t42;
-        let t56 = -t50;
-        let t57 = sin_gamma
-            * (t56
-                + t7 * (d_peg * (T::from_f64(0.5) * t14 - T::from_f64(0.5) * t5) + t26)
-                + t45 - T::from_f64(2.0) * t46) + T::from_f64(2.0) * cos_gamma * t40;
-        let t58 = -t33;
-        let t59 = d_hole
+        let t51 = cos_gamma * t50 + t41;
+        let t52 = cos_gamma * (t29 * t10 + t43);
+        let t53 = t11 + t52 - t42;
+        let t54 = -t50;
+        let t55 = sin_gamma
+            * (t54 + t7 * (T::from_f64(0.5) * (t14 - t5) * d_peg + t26) + t45
+                - T::from_f64(2.0) * t46) + T::from_f64(2.0) * cos_gamma * t40;
+        let t56 = -t33;
+        let t57 = d_hole
             * (t28 * (-t7 - T::from_f64(2.0) * t44) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
-                * (t58
+                * (t56
                     + t7
-                        * (d_peg * (-(T::from_f64(0.5) * t14) + T::from_f64(0.5) * t5)
+                        * (T::from_f64(0.5) * (-t14 + t5) * d_peg
                             - T::from_f64(0.5) * t6) - t45 + T::from_f64(2.0) * t46)
             - T::from_f64(2.0) * sin_gamma * t43;
-        let t60 = sin_gamma * t50;
-        let t61 = cos_gamma * (t33 + t50) - t30 + t41;
-        let t62 = sin_gamma * (t58 + t56);
-        let t63 = t7 * (t26 + t29 * cos_gamma) * t7;
-        let t64 = t11 + t54 + t62 + t63;
-        let t65 = t57 * (T::from_f64(2.0) * t51 + T::from_f64(2.0) * t41);
-        let t66 = t59
-            * (d_hole + cos_gamma * (T::from_f64(2.0) * t53 + T::from_f64(2.0) * t43)
-                - T::from_f64(2.0) * t42);
-        let t67 = T::from_f64(0.25) * t9 * (t39 - T::from_f64(2.0) * t38)
+        let t58 = sin_gamma * t50;
+        let t59 = cos_gamma * (t33 + t50) - t30 + t41;
+        let t60 = sin_gamma * (t56 + t54);
+        let t61 = t7 * (t26 + t29 * cos_gamma) * t7;
+        let t62 = t11 + t52 + t60 + t61;
+        let t63 = t51 * t55;
+        let t64 = t57 * (d_hole + T::from_f64(2.0) * t52 - T::from_f64(2.0) * t42);
+        let t65 = T::from_f64(0.25) * t9 * (t39 - T::from_f64(2.0) * t38)
             * (T::from_f64(2.0) * h - T::from_f64(2.0) * t8);
-        let t68 = t63 * t35;
-        let t69 = gammadot * psidot;
+        let t66 = t61 * t35;
+        let t67 = gammadot * psidot;
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
-            f * (-(t_k_eta * t61) - t_k_z * (t54 + t62)),
-            f * (-(t_b1_eta * t61) - t_b1_z * t64),
-            f * (-(t_b2_eta * t61) - t_b2_z * t64),
+            f * (-(t_k_eta * t59) - t_k_z * (t52 + t60)),
+            f * (-(t_b1_eta * t59) - t_b1_z * t62),
+            f * (-(t_b2_eta * t59) - t_b2_z * t62),
             T::from_f64(0.0),
             -T::from_f64(1.0),
             T::from_f64(0.5) * t25 * d_hole,
-            f * (t_b1_eta * t32 - t63 * t_b1_n),
-            f * (-(t_b2_eta * t32) - t63 * t_b2_n),
+            f * (t_b1_eta * t32 - t61 * t_b1_n),
+            f * (-(t_b2_eta * t32) - t61 * t_b2_n),
             T::from_f64(0.0),
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) + t68,
-            -(f * t_b2_eta) + t68,
+            -(f * t_b1_eta) + t66,
+            -(f * t_b2_eta) + t66,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -t25,
@@ -373,32 +359,28 @@ pub mod rigid_peg {
         );
         let b = Vector5::new(
             m
-                * (t17 * (-(T::from_f64(0.125) * t18) + t27) * t24 - g * t55
+                * (t17 * (-(T::from_f64(0.125) * t18) + t27) * t24
                     + T::from_f64(0.5)
-                        * (t16 * (t65 + t66)
-                            + t17 * (T::from_f64(0.5) * t24 * t48 + t67))
-                    - T::from_f64(0.5) * gammadot * gammadot
-                        * (T::from_f64(2.0) * t65 + T::from_f64(2.0) * t66)
-                    - gammaddot
-                        * (t27
-                            + T::from_f64(0.5)
-                                * (T::from_f64(2.0) * (t52 * t52)
-                                    + T::from_f64(2.0) * (t55 * t55)))) + t52 * (t20 + t21)
-                + f_z * t55,
+                        * (t16 * (T::from_f64(2.0) * t63 + t64)
+                            + t17 * (T::from_f64(0.5) * t24 * t48 + t65)
+                            - gammadot * gammadot
+                                * (T::from_f64(4.0) * t63 + T::from_f64(2.0) * t64))
+                    - g * t53 - gammaddot * (t27 + t51 * t51 + t53 * t53))
+                + t51 * (t20 + t21) + f_z * t53,
             m
-                * (-(t69
+                * (-(t67
                     * (t24
                         * (T::from_f64(0.5) * t48 - T::from_f64(0.25) * t18
-                            + T::from_f64(0.16666666666666666) * t19) + t67))
+                            + T::from_f64(0.16666666666666666) * t19) + t65))
                     - psiddot
                         * (t9 * (T::from_f64(0.25) * t48 + t27)
-                            + T::from_f64(0.125) * t15 * t18)) + t60 * (t22 + t23),
-            t20 + t21 - m * (t57 * t16 + gammaddot * t52 - t60 * t17),
+                            + T::from_f64(0.125) * t15 * t18)) + t58 * (t22 + t23),
+            t20 + t21 - m * (t55 * t16 + gammaddot * t51 - t58 * t17),
             t22 + t23
                 - m
-                    * (t69 * (t52 * (T::from_f64(1.0) + T::from_f64(1.0)))
-                        + t60 * psiddot),
-            f_z - m * g - m * (t16 * t59 + gammaddot * t55),
+                    * (t67 * (t51 * (T::from_f64(1.0) + T::from_f64(1.0)))
+                        + t58 * psiddot),
+            f_z - m * g - m * (t16 * t57 + gammaddot * t53),
         );
         (a, b)
     }

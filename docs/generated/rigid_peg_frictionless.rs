@@ -29,7 +29,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 67 add/sub, 142 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 66 `let`s.
+    /// 65 add/sub, 133 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 64 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -81,7 +81,7 @@ pub mod rigid_peg_frictionless {
         let t26 = T::from_f64(0.08333333333333333) * t19;
         let t27 = t2 * t3;
         let t28 = t27 * d_hole;
-        let t29 = t28 * t13;
+        let t29 = t13 * t28;
         let t30 = (-T::from_f64(2.0) * t29 * (d_hole + T::from_f64(2.0) * t29)).sqrt();
         let t31 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
         let t32 = (t28 * t7).hypot(t11);
@@ -91,91 +91,82 @@ pub mod rigid_peg_frictionless {
         let t36 = t35 * t7;
         let t37 = t13 * t6;
         let t38 = t36 - T::from_f64(0.5) * t37;
-        let t39 = sin_gamma * t38;
-        let t40 = sin_gamma * t31;
-        let t41 = -t36 + T::from_f64(0.5) * t37;
-        let t42 = t15 / (sin_gamma * sin_gamma * sin_gamma);
-        let t43 = t42 * t6;
-        let t44 = t13 * t35;
-        let t45 = h - t8;
-        let t46 = t45 * t45;
-        let t47 = t7 * t33;
-        let t48 = t47 * t28;
-        let t49 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t50 = cos_gamma * t49;
-        let t51 = t50 + t39;
-        let t52 = t28 * t10;
-        let t53 = t11 + cos_gamma * (t52 + t41) - t40;
-        let t54 = sin_gamma
-            * (-t49
-                + t7 * (d_peg * (T::from_f64(0.5) * t14 - T::from_f64(0.5) * t5) + t25)
-                + t43 - T::from_f64(2.0) * t44) + T::from_f64(2.0) * cos_gamma * t38;
-        let t55 = d_hole
-            * (t27 * (-t7 - T::from_f64(2.0) * t42) - T::from_f64(0.5) * cos_gamma * t7)
+        let t39 = sin_gamma * t31;
+        let t40 = -t36 + T::from_f64(0.5) * t37;
+        let t41 = t15 / (sin_gamma * sin_gamma * sin_gamma);
+        let t42 = t41 * t6;
+        let t43 = t13 * t35;
+        let t44 = h - t8;
+        let t45 = t44 * t44;
+        let t46 = t7 * t33;
+        let t47 = t46 * t28;
+        let t48 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t49 = cos_gamma * t48 + sin_gamma * t38;
+        let t50 = cos_gamma * (t28 * t10 + t40);
+        let t51 = t11 + t50 - t39;
+        let t52 = sin_gamma
+            * (-t48 + t7 * (T::from_f64(0.5) * (t14 - t5) * d_peg + t25) + t42
+                - T::from_f64(2.0) * t43) + T::from_f64(2.0) * cos_gamma * t38;
+        let t53 = d_hole
+            * (t27 * (-t7 - T::from_f64(2.0) * t41) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
                 * (-t31
                     + t7
-                        * (d_peg * (-(T::from_f64(0.5) * t14) + T::from_f64(0.5) * t5)
-                            - T::from_f64(0.5) * t6) - t43 + T::from_f64(2.0) * t44)
-            - T::from_f64(2.0) * sin_gamma * t41;
-        let t56 = sin_gamma * t49;
-        let t57 = t54 * (T::from_f64(2.0) * t50 + T::from_f64(2.0) * t39);
-        let t58 = t55
-            * (d_hole + cos_gamma * (T::from_f64(2.0) * t52 + T::from_f64(2.0) * t41)
-                - T::from_f64(2.0) * t40);
-        let t59 = T::from_f64(0.25) * t9 * (t37 - T::from_f64(2.0) * t36)
+                        * (T::from_f64(0.5) * (-t14 + t5) * d_peg
+                            - T::from_f64(0.5) * t6) - t42 + T::from_f64(2.0) * t43)
+            - T::from_f64(2.0) * sin_gamma * t40;
+        let t54 = sin_gamma * t48;
+        let t55 = t49 * t52;
+        let t56 = t53 * (d_hole + T::from_f64(2.0) * t50 - T::from_f64(2.0) * t39);
+        let t57 = T::from_f64(0.25) * t9 * (t37 - T::from_f64(2.0) * t36)
             * (T::from_f64(2.0) * h - T::from_f64(2.0) * t8);
-        let t60 = t7 * (t25 + t28 * cos_gamma) * t47;
-        let t61 = m * gammadot * psidot;
+        let t58 = t7 * (t25 + t28 * cos_gamma) * t46;
+        let t59 = m * gammadot * psidot;
         let a = Matrix5::new(
-            m
-                * (t26
-                    + T::from_f64(0.5)
-                        * (T::from_f64(2.0) * (t51 * t51)
-                            + T::from_f64(2.0) * (t53 * t53))),
+            m * (t26 + t49 * t49 + t51 * t51),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * (t9 * (T::from_f64(0.25) * t46 + t26) + T::from_f64(0.125) * t15 * t18),
+            m * (t9 * (T::from_f64(0.25) * t45 + t26) + T::from_f64(0.125) * t15 * t18),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * t51,
+            m * t49,
             T::from_f64(0.0),
             -cos_gamma,
-            t60,
-            t60,
+            t58,
+            t58,
             T::from_f64(0.0),
-            t56 * m,
+            t54 * m,
             T::from_f64(0.0),
             t34,
             -t34,
-            m * t53,
+            m * t51,
             T::from_f64(0.0),
             -sin_gamma,
-            t48,
-            t48,
+            t47,
+            t47,
         );
         let b = Vector5::new(
             m_gamma
                 + m
-                    * (t17 * (-(T::from_f64(0.125) * t18) + t26) * t24 - g * t53
+                    * (t17 * (-(T::from_f64(0.125) * t18) + t26) * t24
                         + T::from_f64(0.5)
-                            * (t16 * (t57 + t58)
-                                + t17 * (T::from_f64(0.5) * t24 * t46 + t59))
-                        - T::from_f64(0.5) * gammadot * gammadot
-                            * (T::from_f64(2.0) * t57 + T::from_f64(2.0) * t58))
-                + t51 * (t20 + t21) + f_z * t53,
-            m_psi + t56 * (t22 + t23)
-                - t61
+                            * (t16 * (T::from_f64(2.0) * t55 + t56)
+                                + t17 * (T::from_f64(0.5) * t24 * t45 + t57)
+                                - gammadot * gammadot
+                                    * (T::from_f64(4.0) * t55 + T::from_f64(2.0) * t56))
+                        - g * t51) + t49 * (t20 + t21) + f_z * t51,
+            m_psi + t54 * (t22 + t23)
+                - t59
                     * (t24
-                        * (T::from_f64(0.5) * t46 - T::from_f64(0.25) * t18
-                            + T::from_f64(0.16666666666666666) * t19) + t59),
-            t20 + t21 - m * (t54 * t16 - t56 * t17),
-            t22 + t23 - t61 * t51 * (T::from_f64(1.0) + T::from_f64(1.0)),
-            f_z - m * g - m * t16 * t55,
+                        * (T::from_f64(0.5) * t45 - T::from_f64(0.25) * t18
+                            + T::from_f64(0.16666666666666666) * t19) + t57),
+            t20 + t21 - m * (t52 * t16 - t54 * t17),
+            t22 + t23 - t59 * t49 * (T::from_f64(1.0) + T::from_f64(1.0)),
+            f_z - m * g - m * t16 * t53,
         );
         (a, b)
     }
@@ -193,7 +184,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 70 add/sub, 143 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 66 `let`s.
+    /// 68 add/sub, 134 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 64 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -246,7 +237,7 @@ pub mod rigid_peg_frictionless {
         let t26 = T::from_f64(0.08333333333333333) * t19;
         let t27 = t2 * t3;
         let t28 = t27 * d_hole;
-        let t29 = t28 * t13;
+        let t29 = t13 * t28;
         let t30 = (-T::from_f64(2.0) * t29 * (d_hole + T::from_f64(2.0) * t29)).sqrt();
         let t31 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
         let t32 = (t28 * t7).hypot(t11);
@@ -256,42 +247,37 @@ pub mod rigid_peg_frictionless {
         let t36 = t35 * t7;
         let t37 = t13 * t6;
         let t38 = t36 - T::from_f64(0.5) * t37;
-        let t39 = sin_gamma * t38;
-        let t40 = sin_gamma * t31;
-        let t41 = -t36 + T::from_f64(0.5) * t37;
-        let t42 = t15 / (sin_gamma * sin_gamma * sin_gamma);
-        let t43 = t42 * t6;
-        let t44 = t13 * t35;
-        let t45 = h - t8;
-        let t46 = t45 * t45;
-        let t47 = t7 * t33;
-        let t48 = t47 * t28;
-        let t49 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t50 = cos_gamma * t49;
-        let t51 = t50 + t39;
-        let t52 = t28 * t10;
-        let t53 = t11 + cos_gamma * (t52 + t41) - t40;
-        let t54 = sin_gamma
-            * (-t49
-                + t7 * (d_peg * (T::from_f64(0.5) * t14 - T::from_f64(0.5) * t5) + t25)
-                + t43 - T::from_f64(2.0) * t44) + T::from_f64(2.0) * cos_gamma * t38;
-        let t55 = d_hole
-            * (t27 * (-t7 - T::from_f64(2.0) * t42) - T::from_f64(0.5) * cos_gamma * t7)
+        let t39 = sin_gamma * t31;
+        let t40 = -t36 + T::from_f64(0.5) * t37;
+        let t41 = t15 / (sin_gamma * sin_gamma * sin_gamma);
+        let t42 = t41 * t6;
+        let t43 = t13 * t35;
+        let t44 = h - t8;
+        let t45 = t44 * t44;
+        let t46 = t7 * t33;
+        let t47 = t46 * t28;
+        let t48 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t49 = cos_gamma * t48 + sin_gamma * t38;
+        let t50 = cos_gamma * (t28 * t10 + t40);
+        let t51 = t11 + t50 - t39;
+        let t52 = sin_gamma
+            * (-t48 + t7 * (T::from_f64(0.5) * (t14 - t5) * d_peg + t25) + t42
+                - T::from_f64(2.0) * t43) + T::from_f64(2.0) * cos_gamma * t38;
+        let t53 = d_hole
+            * (t27 * (-t7 - T::from_f64(2.0) * t41) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
                 * (-t31
                     + t7
-                        * (d_peg * (-(T::from_f64(0.5) * t14) + T::from_f64(0.5) * t5)
-                            - T::from_f64(0.5) * t6) - t43 + T::from_f64(2.0) * t44)
-            - T::from_f64(2.0) * sin_gamma * t41;
-        let t56 = sin_gamma * t49;
-        let t57 = t54 * (T::from_f64(2.0) * t50 + T::from_f64(2.0) * t39);
-        let t58 = t55
-            * (d_hole + cos_gamma * (T::from_f64(2.0) * t52 + T::from_f64(2.0) * t41)
-                - T::from_f64(2.0) * t40);
-        let t59 = T::from_f64(0.25) * t9 * (t37 - T::from_f64(2.0) * t36)
+                        * (T::from_f64(0.5) * (-t14 + t5) * d_peg
+                            - T::from_f64(0.5) * t6) - t42 + T::from_f64(2.0) * t43)
+            - T::from_f64(2.0) * sin_gamma * t40;
+        let t54 = sin_gamma * t48;
+        let t55 = t49 * t52;
+        let t56 = t53 * (d_hole + T::from_f64(2.0) * t50 - T::from_f64(2.0) * t39);
+        let t57 = T::from_f64(0.25) * t9 * (t37 - T::from_f64(2.0) * t36)
             * (T::from_f64(2.0) * h - T::from_f64(2.0) * t8);
-        let t60 = t7 * (t25 + t28 * cos_gamma) * t47;
-        let t61 = gammadot * psidot;
+        let t58 = t7 * (t25 + t28 * cos_gamma) * t46;
+        let t59 = gammadot * psidot;
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
@@ -306,8 +292,8 @@ pub mod rigid_peg_frictionless {
             T::from_f64(0.0),
             T::from_f64(0.0),
             -cos_gamma,
-            t60,
-            t60,
+            t58,
+            t58,
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
@@ -316,37 +302,33 @@ pub mod rigid_peg_frictionless {
             T::from_f64(0.0),
             T::from_f64(0.0),
             -sin_gamma,
-            t48,
-            t48,
+            t47,
+            t47,
         );
         let b = Vector5::new(
             m
-                * (t17 * (-(T::from_f64(0.125) * t18) + t26) * t24 - g * t53
+                * (t17 * (-(T::from_f64(0.125) * t18) + t26) * t24
                     + T::from_f64(0.5)
-                        * (t16 * (t57 + t58)
-                            + t17 * (T::from_f64(0.5) * t24 * t46 + t59))
-                    - T::from_f64(0.5) * gammadot * gammadot
-                        * (T::from_f64(2.0) * t57 + T::from_f64(2.0) * t58)
-                    - gammaddot
-                        * (t26
-                            + T::from_f64(0.5)
-                                * (T::from_f64(2.0) * (t51 * t51)
-                                    + T::from_f64(2.0) * (t53 * t53)))) + t51 * (t20 + t21)
-                + f_z * t53,
+                        * (t16 * (T::from_f64(2.0) * t55 + t56)
+                            + t17 * (T::from_f64(0.5) * t24 * t45 + t57)
+                            - gammadot * gammadot
+                                * (T::from_f64(4.0) * t55 + T::from_f64(2.0) * t56))
+                    - g * t51 - gammaddot * (t26 + t49 * t49 + t51 * t51))
+                + t49 * (t20 + t21) + f_z * t51,
             m
-                * (-(t61
+                * (-(t59
                     * (t24
-                        * (T::from_f64(0.5) * t46 - T::from_f64(0.25) * t18
-                            + T::from_f64(0.16666666666666666) * t19) + t59))
+                        * (T::from_f64(0.5) * t45 - T::from_f64(0.25) * t18
+                            + T::from_f64(0.16666666666666666) * t19) + t57))
                     - psiddot
-                        * (t9 * (T::from_f64(0.25) * t46 + t26)
-                            + T::from_f64(0.125) * t15 * t18)) + t56 * (t22 + t23),
-            t20 + t21 - m * (t54 * t16 + gammaddot * t51 - t56 * t17),
+                        * (t9 * (T::from_f64(0.25) * t45 + t26)
+                            + T::from_f64(0.125) * t15 * t18)) + t54 * (t22 + t23),
+            t20 + t21 - m * (t52 * t16 + gammaddot * t49 - t54 * t17),
             t22 + t23
                 - m
-                    * (t61 * (t51 * (T::from_f64(1.0) + T::from_f64(1.0)))
-                        + t56 * psiddot),
-            f_z - m * g - m * (t16 * t55 + gammaddot * t53),
+                    * (t59 * (t49 * (T::from_f64(1.0) + T::from_f64(1.0)))
+                        + t54 * psiddot),
+            f_z - m * g - m * (t16 * t53 + gammaddot * t51),
         );
         (a, b)
     }

@@ -32,7 +32,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 60 add/sub, 117 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 50 `let`s.
+    /// 58 add/sub, 107 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 48 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -89,60 +89,52 @@ pub mod rigid_peg_planar {
         let t30 = t29 * t6;
         let t31 = t12 * t22;
         let t32 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t33 = cos_gamma * t32;
-        let t34 = t33 + t26;
-        let t35 = t17 * t9;
-        let t36 = cos_gamma * (t35 + t28);
-        let t37 = t10 + t36 - t27;
-        let t38 = -t32;
-        let t39 = sin_gamma
-            * (t38
-                + t7 * (d_peg * (T::from_f64(0.5) * t13 - T::from_f64(0.5) * t5) + t15)
-                + t30 - T::from_f64(2.0) * t31) + T::from_f64(2.0) * cos_gamma * t25;
-        let t40 = -t19;
-        let t41 = d_hole
+        let t33 = cos_gamma * t32 + t26;
+        let t34 = cos_gamma * (t17 * t9 + t28);
+        let t35 = t10 + t34 - t27;
+        let t36 = -t32;
+        let t37 = sin_gamma
+            * (t36 + t7 * (T::from_f64(0.5) * (t13 - t5) * d_peg + t15) + t30
+                - T::from_f64(2.0) * t31) + T::from_f64(2.0) * cos_gamma * t25;
+        let t38 = -t19;
+        let t39 = d_hole
             * (t16 * (-t7 - T::from_f64(2.0) * t29) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
-                * (t40
+                * (t38
                     + t7
-                        * (d_peg * (-(T::from_f64(0.5) * t13) + T::from_f64(0.5) * t5)
+                        * (T::from_f64(0.5) * (-t13 + t5) * d_peg
                             - T::from_f64(0.5) * t6) - t30 + T::from_f64(2.0) * t31)
             - T::from_f64(2.0) * sin_gamma * t28;
-        let t42 = cos_gamma * (t19 + t32) - t18 + t26;
-        let t43 = sin_gamma * (t40 + t38);
-        let t44 = t7 * (t15 + t17 * cos_gamma) * t7;
-        let t45 = t39 * (T::from_f64(2.0) * t33 + T::from_f64(2.0) * t26);
-        let t46 = t41
-            * (d_hole + cos_gamma * (T::from_f64(2.0) * t35 + T::from_f64(2.0) * t28)
-                - T::from_f64(2.0) * t27);
-        let t47 = m * t14;
+        let t40 = cos_gamma * (t19 + t32) - t18 + t26;
+        let t41 = sin_gamma * (t38 + t36);
+        let t42 = t7 * (t15 + t17 * cos_gamma) * t7;
+        let t43 = t33 * t37;
+        let t44 = t39 * (d_hole + T::from_f64(2.0) * t34 - T::from_f64(2.0) * t27);
+        let t45 = m * t14;
         let a = Matrix3::new(
             m
                 * (T::from_f64(0.08333333333333333)
-                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
-                    + T::from_f64(0.5)
-                        * (T::from_f64(2.0) * (t34 * t34)
-                            + T::from_f64(2.0) * (t37 * t37))),
-            f * (-(t_k_eta * t42) - t_k_z * (t36 + t43)),
-            f
-                * (-(T::from_f64(2.0) * t42 * t_b_eta)
-                    - T::from_f64(2.0) * (t10 + t36 + t43 + t44) * t_b_z),
-            m * t34,
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t33 * t33
+                    + t35 * t35),
+            f * (-(t_k_eta * t40) - t_k_z * (t34 + t41)),
+            T::from_f64(2.0) * (-(t40 * t_b_eta) - (t10 + t34 + t41 + t42) * t_b_z) * f,
+            m * t33,
             -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t5,
-            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t44 * t21,
-            m * t37,
+            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t42 * t21,
+            m * t35,
             -(f * t_k_z) - sin_gamma,
             -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * t18 * t21,
         );
         let b = Vector3::new(
             m_gamma
                 + m
-                    * (-(g * t37)
-                        - T::from_f64(0.5) * gammadot * gammadot
-                            * (T::from_f64(2.0) * t45 + T::from_f64(2.0) * t46)
-                        + T::from_f64(0.5) * t14 * (t45 + t46)) + f_z * t37 + f_x * t34,
-            f_x - t47 * t39,
-            f_z - m * g - t47 * t41,
+                    * (T::from_f64(0.5)
+                        * (-(gammadot * gammadot
+                            * (T::from_f64(4.0) * t43 + T::from_f64(2.0) * t44))
+                            + t14 * (T::from_f64(2.0) * t43 + t44)) - g * t35)
+                + f_z * t35 + f_x * t33,
+            f_x - t45 * t37,
+            f_z - m * g - t45 * t39,
         );
         (a, b)
     }
@@ -161,7 +153,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 62 add/sub, 118 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 49 `let`s.
+    /// 60 add/sub, 108 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 47 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -219,59 +211,50 @@ pub mod rigid_peg_planar {
         let t30 = t29 * t6;
         let t31 = t12 * t22;
         let t32 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t33 = cos_gamma * t32;
-        let t34 = t33 + t26;
-        let t35 = t17 * t9;
-        let t36 = cos_gamma * (t35 + t28);
-        let t37 = t10 + t36 - t27;
-        let t38 = -t32;
-        let t39 = sin_gamma
-            * (t38
-                + t7 * (d_peg * (T::from_f64(0.5) * t13 - T::from_f64(0.5) * t5) + t15)
-                + t30 - T::from_f64(2.0) * t31) + T::from_f64(2.0) * cos_gamma * t25;
-        let t40 = -t19;
-        let t41 = d_hole
+        let t33 = cos_gamma * t32 + t26;
+        let t34 = cos_gamma * (t17 * t9 + t28);
+        let t35 = t10 + t34 - t27;
+        let t36 = -t32;
+        let t37 = sin_gamma
+            * (t36 + t7 * (T::from_f64(0.5) * (t13 - t5) * d_peg + t15) + t30
+                - T::from_f64(2.0) * t31) + T::from_f64(2.0) * cos_gamma * t25;
+        let t38 = -t19;
+        let t39 = d_hole
             * (t16 * (-t7 - T::from_f64(2.0) * t29) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
-                * (t40
+                * (t38
                     + t7
-                        * (d_peg * (-(T::from_f64(0.5) * t13) + T::from_f64(0.5) * t5)
+                        * (T::from_f64(0.5) * (-t13 + t5) * d_peg
                             - T::from_f64(0.5) * t6) - t30 + T::from_f64(2.0) * t31)
             - T::from_f64(2.0) * sin_gamma * t28;
-        let t42 = cos_gamma * (t19 + t32) - t18 + t26;
-        let t43 = sin_gamma * (t40 + t38);
-        let t44 = t7 * (t15 + t17 * cos_gamma) * t7;
-        let t45 = t39 * (T::from_f64(2.0) * t33 + T::from_f64(2.0) * t26);
-        let t46 = t41
-            * (d_hole + cos_gamma * (T::from_f64(2.0) * t35 + T::from_f64(2.0) * t28)
-                - T::from_f64(2.0) * t27);
+        let t40 = cos_gamma * (t19 + t32) - t18 + t26;
+        let t41 = sin_gamma * (t38 + t36);
+        let t42 = t7 * (t15 + t17 * cos_gamma) * t7;
+        let t43 = t33 * t37;
+        let t44 = t39 * (d_hole + T::from_f64(2.0) * t34 - T::from_f64(2.0) * t27);
         let a = Matrix3::new(
             -T::from_f64(1.0),
-            f * (-(t_k_eta * t42) - t_k_z * (t36 + t43)),
-            f
-                * (-(T::from_f64(2.0) * t42 * t_b_eta)
-                    - T::from_f64(2.0) * (t10 + t36 + t43 + t44) * t_b_z),
+            f * (-(t_k_eta * t40) - t_k_z * (t34 + t41)),
+            T::from_f64(2.0) * (-(t40 * t_b_eta) - (t10 + t34 + t41 + t42) * t_b_z) * f,
             T::from_f64(0.0),
             -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t5,
-            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t44 * t21,
+            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t42 * t21,
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
             -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * t18 * t21,
         );
         let b = Vector3::new(
             m
-                * (-(g * t37)
-                    - T::from_f64(0.5) * gammadot * gammadot
-                        * (T::from_f64(2.0) * t45 + T::from_f64(2.0) * t46)
-                    + T::from_f64(0.5) * t14 * (t45 + t46)
+                * (T::from_f64(0.5)
+                    * (-(gammadot * gammadot
+                        * (T::from_f64(4.0) * t43 + T::from_f64(2.0) * t44))
+                        + t14 * (T::from_f64(2.0) * t43 + t44)) - g * t35
                     - gammaddot
                         * (T::from_f64(0.08333333333333333)
-                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
-                            + T::from_f64(0.5)
-                                * (T::from_f64(2.0) * (t34 * t34)
-                                    + T::from_f64(2.0) * (t37 * t37)))) + f_z * t37 + f_x * t34,
-            f_x - m * (t39 * t14 + gammaddot * t34),
-            f_z - m * g - m * (t14 * t41 + gammaddot * t37),
+                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t33 * t33
+                            + t35 * t35)) + f_z * t35 + f_x * t33,
+            f_x - m * (t37 * t14 + gammaddot * t33),
+            f_z - m * g - m * (t14 * t39 + gammaddot * t35),
         );
         (a, b)
     }

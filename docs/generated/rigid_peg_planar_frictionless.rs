@@ -29,7 +29,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 46 add/sub, 100 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 43 `let`s.
+    /// 44 add/sub, 91 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 41 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -71,60 +71,54 @@ pub mod rigid_peg_planar_frictionless {
         let t21 = t20 * t7;
         let t22 = t12 * t6;
         let t23 = t21 - T::from_f64(0.5) * t22;
-        let t24 = sin_gamma * t23;
-        let t25 = sin_gamma * t18;
-        let t26 = -t21 + T::from_f64(0.5) * t22;
-        let t27 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t28 = t27 * t6;
-        let t29 = t12 * t20;
-        let t30 = t7 / t19;
-        let t31 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t32 = cos_gamma * t31;
-        let t33 = t32 + t24;
-        let t34 = t17 * t9;
-        let t35 = t10 + cos_gamma * (t34 + t26) - t25;
-        let t36 = sin_gamma
-            * (-t31
-                + t7 * (d_peg * (T::from_f64(0.5) * t13 - T::from_f64(0.5) * t5) + t15)
-                + t28 - T::from_f64(2.0) * t29) + T::from_f64(2.0) * cos_gamma * t23;
-        let t37 = d_hole
-            * (t16 * (-t7 - T::from_f64(2.0) * t27) - T::from_f64(0.5) * cos_gamma * t7)
+        let t24 = sin_gamma * t18;
+        let t25 = -t21 + T::from_f64(0.5) * t22;
+        let t26 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t27 = t26 * t6;
+        let t28 = t12 * t20;
+        let t29 = t7 / t19;
+        let t30 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t31 = cos_gamma * t30 + sin_gamma * t23;
+        let t32 = cos_gamma * (t17 * t9 + t25);
+        let t33 = t10 + t32 - t24;
+        let t34 = sin_gamma
+            * (-t30 + t7 * (T::from_f64(0.5) * (t13 - t5) * d_peg + t15) + t27
+                - T::from_f64(2.0) * t28) + T::from_f64(2.0) * cos_gamma * t23;
+        let t35 = d_hole
+            * (t16 * (-t7 - T::from_f64(2.0) * t26) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
                 * (-t18
                     + t7
-                        * (d_peg * (-(T::from_f64(0.5) * t13) + T::from_f64(0.5) * t5)
-                            - T::from_f64(0.5) * t6) - t28 + T::from_f64(2.0) * t29)
-            - T::from_f64(2.0) * sin_gamma * t26;
-        let t38 = t36 * (T::from_f64(2.0) * t32 + T::from_f64(2.0) * t24);
-        let t39 = t37
-            * (d_hole + cos_gamma * (T::from_f64(2.0) * t34 + T::from_f64(2.0) * t26)
-                - T::from_f64(2.0) * t25);
-        let t40 = m * t14;
+                        * (T::from_f64(0.5) * (-t13 + t5) * d_peg
+                            - T::from_f64(0.5) * t6) - t27 + T::from_f64(2.0) * t28)
+            - T::from_f64(2.0) * sin_gamma * t25;
+        let t36 = t31 * t34;
+        let t37 = t35 * (d_hole + T::from_f64(2.0) * t32 - T::from_f64(2.0) * t24);
+        let t38 = m * t14;
         let a = Matrix3::new(
             m
                 * (T::from_f64(0.08333333333333333)
-                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
-                    + T::from_f64(0.5)
-                        * (T::from_f64(2.0) * (t33 * t33)
-                            + T::from_f64(2.0) * (t35 * t35))),
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t31 * t31
+                    + t33 * t33),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * t33,
+            m * t31,
             -T::from_f64(1.0) + T::from_f64(2.0) * t5,
-            T::from_f64(2.0) * (t7 * (t15 + t17 * cos_gamma)) * t30,
-            m * t35,
+            T::from_f64(2.0) * (t7 * (t15 + t17 * cos_gamma)) * t29,
+            m * t33,
             -sin_gamma,
-            T::from_f64(2.0) * t30 * t17,
+            T::from_f64(2.0) * t29 * t17,
         );
         let b = Vector3::new(
             m_gamma
                 + m
-                    * (-(g * t35)
-                        - T::from_f64(0.5) * gammadot * gammadot
-                            * (T::from_f64(2.0) * t38 + T::from_f64(2.0) * t39)
-                        + T::from_f64(0.5) * t14 * (t38 + t39)) + f_z * t35 + f_x * t33,
-            f_x - t40 * t36,
-            f_z - m * g - t40 * t37,
+                    * (T::from_f64(0.5)
+                        * (-(gammadot * gammadot
+                            * (T::from_f64(4.0) * t36 + T::from_f64(2.0) * t37))
+                            + t14 * (T::from_f64(2.0) * t36 + t37)) - g * t33)
+                + f_z * t33 + f_x * t31,
+            f_x - t38 * t34,
+            f_z - m * g - t38 * t35,
         );
         (a, b)
     }
@@ -142,7 +136,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 48 add/sub, 101 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 42 `let`s.
+    /// 46 add/sub, 92 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 40 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -185,59 +179,52 @@ pub mod rigid_peg_planar_frictionless {
         let t21 = t20 * t7;
         let t22 = t12 * t6;
         let t23 = t21 - T::from_f64(0.5) * t22;
-        let t24 = sin_gamma * t23;
-        let t25 = sin_gamma * t18;
-        let t26 = -t21 + T::from_f64(0.5) * t22;
-        let t27 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t28 = t27 * t6;
-        let t29 = t12 * t20;
-        let t30 = t7 / t19;
-        let t31 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t32 = cos_gamma * t31;
-        let t33 = t32 + t24;
-        let t34 = t17 * t9;
-        let t35 = t10 + cos_gamma * (t34 + t26) - t25;
-        let t36 = sin_gamma
-            * (-t31
-                + t7 * (d_peg * (T::from_f64(0.5) * t13 - T::from_f64(0.5) * t5) + t15)
-                + t28 - T::from_f64(2.0) * t29) + T::from_f64(2.0) * cos_gamma * t23;
-        let t37 = d_hole
-            * (t16 * (-t7 - T::from_f64(2.0) * t27) - T::from_f64(0.5) * cos_gamma * t7)
+        let t24 = sin_gamma * t18;
+        let t25 = -t21 + T::from_f64(0.5) * t22;
+        let t26 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t27 = t26 * t6;
+        let t28 = t12 * t20;
+        let t29 = t7 / t19;
+        let t30 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t31 = cos_gamma * t30 + sin_gamma * t23;
+        let t32 = cos_gamma * (t17 * t9 + t25);
+        let t33 = t10 + t32 - t24;
+        let t34 = sin_gamma
+            * (-t30 + t7 * (T::from_f64(0.5) * (t13 - t5) * d_peg + t15) + t27
+                - T::from_f64(2.0) * t28) + T::from_f64(2.0) * cos_gamma * t23;
+        let t35 = d_hole
+            * (t16 * (-t7 - T::from_f64(2.0) * t26) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
                 * (-t18
                     + t7
-                        * (d_peg * (-(T::from_f64(0.5) * t13) + T::from_f64(0.5) * t5)
-                            - T::from_f64(0.5) * t6) - t28 + T::from_f64(2.0) * t29)
-            - T::from_f64(2.0) * sin_gamma * t26;
-        let t38 = t36 * (T::from_f64(2.0) * t32 + T::from_f64(2.0) * t24);
-        let t39 = t37
-            * (d_hole + cos_gamma * (T::from_f64(2.0) * t34 + T::from_f64(2.0) * t26)
-                - T::from_f64(2.0) * t25);
+                        * (T::from_f64(0.5) * (-t13 + t5) * d_peg
+                            - T::from_f64(0.5) * t6) - t27 + T::from_f64(2.0) * t28)
+            - T::from_f64(2.0) * sin_gamma * t25;
+        let t36 = t31 * t34;
+        let t37 = t35 * (d_hole + T::from_f64(2.0) * t32 - T::from_f64(2.0) * t24);
         let a = Matrix3::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             -T::from_f64(1.0) + T::from_f64(2.0) * t5,
-            T::from_f64(2.0) * (t7 * (t15 + t17 * cos_gamma)) * t30,
+            T::from_f64(2.0) * (t7 * (t15 + t17 * cos_gamma)) * t29,
             T::from_f64(0.0),
             -sin_gamma,
-            T::from_f64(2.0) * t30 * t17,
+            T::from_f64(2.0) * t29 * t17,
         );
         let b = Vector3::new(
             m
-                * (-(g * t35)
-                    - T::from_f64(0.5) * gammadot * gammadot
-                        * (T::from_f64(2.0) * t38 + T::from_f64(2.0) * t39)
-                    + T::from_f64(0.5) * t14 * (t38 + t39)
+                * (T::from_f64(0.5)
+                    * (-(gammadot * gammadot
+                        * (T::from_f64(4.0) * t36 + T::from_f64(2.0) * t37))
+                        + t14 * (T::from_f64(2.0) * t36 + t37)) - g * t33
                     - gammaddot
                         * (T::from_f64(0.08333333333333333)
-                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h)
-                            + T::from_f64(0.5)
-                                * (T::from_f64(2.0) * (t33 * t33)
-                                    + T::from_f64(2.0) * (t35 * t35)))) + f_z * t35 + f_x * t33,
-            f_x - m * (t36 * t14 + gammaddot * t33),
-            f_z - m * g - m * (t14 * t37 + gammaddot * t35),
+                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t31 * t31
+                            + t33 * t33)) + f_z * t33 + f_x * t31,
+            f_x - m * (t34 * t14 + gammaddot * t31),
+            f_z - m * g - m * (t14 * t35 + gammaddot * t33),
         );
         (a, b)
     }

@@ -134,7 +134,7 @@ fn horner(g: &Graph, terms: Vec<Term>) -> Vec<Id> {
         return Vec::new();
     }
     let Some(f) = most_shared_factor(&terms) else {
-        return terms.into_iter().map(|t| term_node(g, t)).collect();
+        return shared_coefficient(g, terms);
     };
     let (with, without): (Vec<Term>, Vec<Term>) =
         terms.into_iter().partition(|(_, fs)| fs.contains(&f));
@@ -153,6 +153,36 @@ fn horner(g: &Graph, terms: Vec<Term>) -> Vec<Id> {
     if !without.is_empty() {
         out.extend(horner(g, without));
     }
+    out
+}
+
+/// The addends of a sum whose terms share no factor: terms with the same
+/// coefficient magnitude `c ≠ 1` (at least two) summed first and scaled
+/// once, `½a + ½b → ½(a + b)`.
+fn shared_coefficient(g: &Graph, terms: Vec<Term>) -> Vec<Id> {
+    let shared = terms.iter().map(|t| t.0.abs()).find(|&c| {
+        c != 1.0
+            && terms
+                .iter()
+                .filter(|t| t.0.abs() == c && !t.1.is_empty())
+                .count()
+                >= 2
+    });
+    let Some(c) = shared else {
+        return terms.into_iter().map(|t| term_node(g, t)).collect();
+    };
+    let (with, without): (Vec<Term>, Vec<Term>) = terms
+        .into_iter()
+        .partition(|t| t.0.abs() == c && !t.1.is_empty());
+    let inner: Vec<Id> = with
+        .into_iter()
+        .map(|(k, fs)| term_node(g, (k.signum(), fs)))
+        .collect();
+    let scaled = g.intern(Node::Mul(
+        vec![konst(g, c), sum_node(g, inner)].into_boxed_slice(),
+    ));
+    let mut out = vec![scaled];
+    out.extend(without.into_iter().map(|t| term_node(g, t)));
     out
 }
 
