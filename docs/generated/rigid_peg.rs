@@ -42,7 +42,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 86 add/sub, 161 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 72 `let`s.
+    /// 86 add/sub, 160 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 72 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -188,8 +188,7 @@ pub mod rigid_peg {
                         + T::from_f64(0.5)
                             * (t16 * (T::from_f64(2.0) * t63 + t64)
                                 + t17 * (T::from_f64(0.5) * t24 * t48 + t65)
-                                - gammadot * gammadot
-                                    * (T::from_f64(4.0) * t63 + T::from_f64(2.0) * t64))
+                                - t16 * (T::from_f64(4.0) * t63 + T::from_f64(2.0) * t64))
                         - g * t53) + t51 * (t20 + t21) + f_z * t53,
             m_psi + t58 * (t22 + t23)
                 - t67
@@ -217,7 +216,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 89 add/sub, 162 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 72 `let`s.
+    /// 89 add/sub, 161 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 72 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -363,8 +362,7 @@ pub mod rigid_peg {
                     + T::from_f64(0.5)
                         * (t16 * (T::from_f64(2.0) * t63 + t64)
                             + t17 * (T::from_f64(0.5) * t24 * t48 + t65)
-                            - gammadot * gammadot
-                                * (T::from_f64(4.0) * t63 + T::from_f64(2.0) * t64))
+                            - t16 * (T::from_f64(4.0) * t63 + T::from_f64(2.0) * t64))
                     - g * t53 - gammaddot * (t27 + t51 * t51 + t53 * t53))
                 + t51 * (t20 + t21) + f_z * t53,
             m

@@ -29,7 +29,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 65 add/sub, 133 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 64 `let`s.
+    /// 65 add/sub, 132 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 64 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -156,8 +156,7 @@ pub mod rigid_peg_frictionless {
                         + T::from_f64(0.5)
                             * (t16 * (T::from_f64(2.0) * t55 + t56)
                                 + t17 * (T::from_f64(0.5) * t24 * t45 + t57)
-                                - gammadot * gammadot
-                                    * (T::from_f64(4.0) * t55 + T::from_f64(2.0) * t56))
+                                - t16 * (T::from_f64(4.0) * t55 + T::from_f64(2.0) * t56))
                         - g * t51) + t49 * (t20 + t21) + f_z * t51,
             m_psi + t54 * (t22 + t23)
                 - t59
@@ -184,7 +183,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 68 add/sub, 134 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 64 `let`s.
+    /// 68 add/sub, 133 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 64 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -311,8 +310,7 @@ pub mod rigid_peg_frictionless {
                     + T::from_f64(0.5)
                         * (t16 * (T::from_f64(2.0) * t55 + t56)
                             + t17 * (T::from_f64(0.5) * t24 * t45 + t57)
-                            - gammadot * gammadot
-                                * (T::from_f64(4.0) * t55 + T::from_f64(2.0) * t56))
+                            - t16 * (T::from_f64(4.0) * t55 + T::from_f64(2.0) * t56))
                     - g * t51 - gammaddot * (t26 + t49 * t49 + t51 * t51))
                 + t49 * (t20 + t21) + f_z * t51,
             m

@@ -32,7 +32,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 58 add/sub, 107 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 48 `let`s.
+    /// 58 add/sub, 105 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 48 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -129,10 +129,9 @@ pub mod rigid_peg_planar {
             m_gamma
                 + m
                     * (T::from_f64(0.5)
-                        * (-(gammadot * gammadot
-                            * (T::from_f64(4.0) * t43 + T::from_f64(2.0) * t44))
-                            + t14 * (T::from_f64(2.0) * t43 + t44)) - g * t35)
-                + f_z * t35 + f_x * t33,
+                        * (-(T::from_f64(4.0) * t43 + T::from_f64(2.0) * t44)
+                            + T::from_f64(2.0) * t43 + t44) * t14 - g * t35) + f_z * t35
+                + f_x * t33,
             f_x - t45 * t37,
             f_z - m * g - t45 * t39,
         );
@@ -153,7 +152,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 60 add/sub, 108 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 47 `let`s.
+    /// 60 add/sub, 106 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 47 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -246,9 +245,8 @@ pub mod rigid_peg_planar {
         let b = Vector3::new(
             m
                 * (T::from_f64(0.5)
-                    * (-(gammadot * gammadot
-                        * (T::from_f64(4.0) * t43 + T::from_f64(2.0) * t44))
-                        + t14 * (T::from_f64(2.0) * t43 + t44)) - g * t35
+                    * (-(T::from_f64(4.0) * t43 + T::from_f64(2.0) * t44)
+                        + T::from_f64(2.0) * t43 + t44) * t14 - g * t35
                     - gammaddot
                         * (T::from_f64(0.08333333333333333)
                             * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t33 * t33

@@ -93,14 +93,63 @@ fn map_children(node: &Node, map: &HashMap<Id, Id>) -> Node {
 /// A term of a sum: coefficient times factors (none of them constant).
 type Term = (f64, Vec<Id>);
 
-/// The factors of a (possibly lowered) product, nested products flattened.
+/// The factors of a (possibly lowered) product, nested products flattened
+/// and a base met more than once with positive integer exponents merged
+/// into one power (`l₁ · (l₁ · x) → l₁² · x`, the `l₁²` the model already
+/// computes).
 fn factors_of(g: &Graph, id: Id) -> Term {
+    let (c, fs) = flat_factors(g, id);
+    (c, merge_powers(g, fs))
+}
+
+/// `(base, positive integer exponent)` of a factor.
+fn base_exponent(g: &Graph, f: Id) -> Option<(Id, i32)> {
+    match g.node(f) {
+        Node::Pow(b, e) => match crate::simplify::const_of(g, e) {
+            Some(n) if n.fract() == 0.0 && (1.0..=64.0).contains(&n) => Some((b, n as i32)),
+            _ => None,
+        },
+        _ => Some((f, 1)),
+    }
+}
+
+fn merge_powers(g: &Graph, fs: Vec<Id>) -> Vec<Id> {
+    let keyed: Vec<Option<(Id, i32)>> = fs.iter().map(|&f| base_exponent(g, f)).collect();
+    let repeated = |b: Id| keyed.iter().flatten().filter(|(x, _)| *x == b).count() > 1;
+    if !keyed.iter().flatten().any(|&(b, _)| repeated(b)) {
+        return fs;
+    }
+    let mut out: Vec<Id> = Vec::with_capacity(fs.len());
+    let mut done: Vec<Id> = Vec::new();
+    for (&f, k) in fs.iter().zip(&keyed) {
+        match k {
+            Some((b, _)) if repeated(*b) => {
+                if done.contains(b) {
+                    continue;
+                }
+                done.push(*b);
+                let n: i32 = keyed
+                    .iter()
+                    .flatten()
+                    .filter(|(x, _)| x == b)
+                    .map(|(_, n)| n)
+                    .sum();
+                out.push(g.intern(Node::Pow(*b, konst(g, f64::from(n)))));
+            }
+            _ => out.push(f),
+        }
+    }
+    out
+}
+
+/// The coefficient and factors of a product, nested products flattened.
+fn flat_factors(g: &Graph, id: Id) -> Term {
     let (c, fs) = term_parts(g, id);
     let mut coef = c;
     let mut out = Vec::with_capacity(fs.len());
     for f in fs {
         if matches!(g.node(f), Node::Mul(_)) {
-            let (c2, inner) = factors_of(g, f);
+            let (c2, inner) = flat_factors(g, f);
             coef *= c2;
             out.extend(inner);
         } else {
