@@ -26,10 +26,13 @@ use crate::rigid::forward::{ForwardModel, FrictionLaw};
 /// lift-off events and the jam event all need the one forward solution
 /// there (one model evaluation instead of four). The value is a pure
 /// function of `x`, so the memo changes no result.
+/// A state and its reactions (`None`: the model failed there).
+type Memo = Option<(Vector4<f64>, Option<[f64; 3]>)>;
+
 struct LastReactions<'m> {
     model: &'m ForwardModel,
     start: Option<Vector2<f64>>,
-    last: Cell<Option<(Vector4<f64>, Option<[f64; 3]>)>>,
+    last: Cell<Memo>,
 }
 
 impl LastReactions<'_> {
