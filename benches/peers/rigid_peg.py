@@ -2,16 +2,22 @@
 system A u = b of pegdyn's generated `rigid_peg::forward` built in SymPy
 (lambdify; C from sympy's C printer after cse) and CasADi (SX Function; C
 from Function.generate), checked against pegdyn's values, timed, and
-integrated with SciPy's solve_ivp against pegdyn's DOPRI5, all in one run.
+integrated with SciPy's solve_ivp (and CasADi's CVODES) against pegdyn's
+DOPRI5, all in one run.
 
     pip install -r benches/peers/requirements.txt
-    python3 benches/peers/rigid_peg.py            # about 3 minutes here
+    python3 benches/peers/rigid_peg.py    # about 30 s here after the cargo build
 
-It runs `cargo run --release --example rigid_peer_values` (pegdyn's values,
-timing loop and DOPRI5 runs) and writes the generated C and the shared
-libraries to target/peers/. Options: --quick (fewer repeats), --json FILE
-(all numbers), --cflags (default "-O3"; pegdyn is built at opt-level 3
-without target-cpu=native, so no -march=native here either).
+It runs `cargo build --release --example rigid_peer_values` and that
+example (pegdyn's values, timing loop and DOPRI5 runs), writes the generated
+C and the shared libraries to target/peers/, and prints markdown tables.
+Options: --quick (fewer repeats), --json FILE (all numbers), --cflags
+(default "-O3"; pegdyn is built at opt-level 3 without target-cpu=native,
+so no -march=native here either).
+
+Files: rigid_peg_model.py (the derivation, for SymPy and CasADi),
+rigid_peg_c.py (generated C, timing loop in C), rigid_peg_integrate.py
+(the integration study).
 """
 import argparse
 import json
@@ -39,8 +45,8 @@ P = PEG + [model.gamma0(PEG[0], PEG[1])]
 
 
 def example(*args, stdin=""):
-    """Runs pegdyn's example and returns its JSON lines."""
-    cmd = ["cargo", "run", "--quiet", "--release", "--example", "rigid_peer_values", "--", *args]
+    """Runs pegdyn's example (built by main) and returns its JSON lines."""
+    cmd = [os.path.join(ROOT, "target", "release", "examples", "rigid_peer_values"), *args]
     out = subprocess.run(cmd, input=stdin, capture_output=True, text=True, cwd=ROOT, check=True)
     return [json.loads(line) for line in out.stdout.splitlines() if line.strip()]
 
@@ -109,14 +115,19 @@ def build_peers(cflags):
     info["sympy_ccode_s"] = time.perf_counter() - t0
     info["sympy_cse_lets"] = n_lets
     sympy_lib, cmd_s = cgen.compile_library(src, out_dir, "rigid_forward_sympy", cflags)
-    fn = cgen.casadi_function(cas)
-    info["casadi_n_instructions"] = fn.n_instructions()
-    csrc, sz_w = cgen.casadi_source(fn, out_dir)
-    if sz_w > 1024:
-        raise RuntimeError(f"CasADi work vector {sz_w} > 1024: enlarge peer_w")
-    casadi_lib, cmd_c = cgen.compile_library(csrc, out_dir, "rigid_forward_casadi_peer", cflags)
-    info["compile"] = [cmd_s, cmd_c]
-    ext = ca.external("rigid_forward", os.path.join(out_dir, "rigid_forward_casadi_peer.so"))
+    fns, libs, cmds = {}, {}, [cmd_s]
+    for cse in (False, True):
+        tag = "_cse" if cse else ""
+        fn = fns[cse] = cgen.casadi_function(cas, cse)
+        info[f"casadi{tag}_n_instructions"] = fn.n_instructions()
+        csrc, sz_w = cgen.casadi_source(fn, out_dir, f"rigid_forward_casadi{tag}")
+        if sz_w > 1024:
+            raise RuntimeError(f"CasADi work vector {sz_w} > 1024: enlarge peer_w")
+        libs[cse], cmd = cgen.compile_library(csrc, out_dir, f"rigid_forward_casadi{tag}_peer", cflags)
+        cmds.append(cmd)
+    info["compile"] = cmds
+    exts = {cse: ca.external("rigid_forward", os.path.join(out_dir, f"rigid_forward_casadi{tag}_peer.so"))
+            for cse, tag in ((False, ""), (True, "_cse"))}
 
     def lam(f):
         return lambda x, p, l, t: tuple(np.array(v, dtype=float).reshape(s) for v, s in zip(f(x, p, l, t), [(5, 5), 5]))
@@ -130,11 +141,14 @@ def build_peers(cflags):
     peers = {
         "SymPy lambdify (default: numpy, no cse)": (lam(lam_default), lambda x, p, l, t: lam_default(x, p, l, t)),
         "SymPy lambdify (math, cse=True, flat list)": (lam(lam_math), lambda x, p, l, t: lam_flat(x, p, l, t)),
-        "CasADi SX Function": (cas_call(fn), lambda x, p, l, t: fn(x, p, l, t)),
-        "CasADi generated C via casadi.external": (cas_call(ext), lambda x, p, l, t: ext(x, p, l, t)),
     }
+    for cse, tag in ((False, ""), (True, ", cse=True")):
+        peers[f"CasADi SX Function{tag}"] = (cas_call(fns[cse]), lambda x, p, l, t, f=fns[cse]: f(x, p, l, t))
+        peers[f"CasADi generated C{tag} via casadi.external"] = (
+            cas_call(exts[cse]), lambda x, p, l, t, f=exts[cse]: f(x, p, l, t))
     c_peers = {"SymPy generated C (cse)": cgen.CForward(sympy_lib),
-               "CasADi generated C": cgen.CForward(casadi_lib, column_major=True)}
+               "CasADi generated C": cgen.CForward(libs[False], column_major=True),
+               "CasADi generated C (cse=True)": cgen.CForward(libs[True], column_major=True)}
     return sym, cas, peers, c_peers, info
 
 
@@ -162,7 +176,7 @@ def main():
     report["build"] = info
     print(f"# derivation: SymPy {info['sympy_derive_s']:.2f} s, CasADi {info['casadi_derive_s']:.2f} s; "
           f"SymPy cse: {info['sympy_cse_lets']} temporaries; CasADi: {info['casadi_n_instructions']} "
-          "instructions")
+          f"instructions ({info['casadi_cse_n_instructions']} with cse=True)")
 
     # 1. Values against pegdyn.
     cases = check_inputs()
@@ -193,15 +207,24 @@ def main():
     t = list(np.array([[0.6, 0.0, 0.8], [-0.36, 0.48, 0.8], [0.6, 0.8, 0.0]]).ravel())
     inp = (x0, P, loads, t)
     calls = 20_000 if a.quick else 200_000
-    peg = [example("time", str(calls), str(repeats), stdin=line(*inp))[0] for _ in range(3)]
-    peg_ns = statistics.median(r["forward_ns"] for r in peg)
+    # Compiled code: interleaved rounds (pegdyn's loop, then each C loop), so that a change of
+    # the machine's load hits all alike; each round is a median of 3 loops; median over rounds.
+    compiled = {"pegdyn generated Rust, timed in Rust (black_box loop)": [],
+                **{f"{name}, timed in C (asm barrier loop)": [] for name in c_peers}}
+    peg = []
+    for fc in c_peers.values():
+        fc(*inp)
+    for _ in range(repeats):
+        peg.append(example("time", str(calls), "3", stdin=line(*inp))[0])
+        compiled["pegdyn generated Rust, timed in Rust (black_box loop)"].append(peg[-1]["forward_ns"])
+        for name, fc in c_peers.items():
+            compiled[f"{name}, timed in C (asm barrier loop)"].append(
+                statistics.median(fc.bench_ns(calls) for _ in range(3)))
+    peg_ns = statistics.median(compiled["pegdyn generated Rust, timed in Rust (black_box loop)"])
     peg_lu = statistics.median(r["forward_lu_ns"] for r in peg)
     peg_rhs = statistics.median(r["rhs_ns"] for r in peg)
-    rows = [("pegdyn generated Rust, timed in Rust (black_box loop)", peg_ns)]
-    for name, fc in c_peers.items():
-        fc(*inp)
-        ns = statistics.median(fc.bench_ns(calls * 10) for _ in range(repeats))
-        rows.append((f"{name}, timed in C (asm barrier loop)", ns))
+    spread = {name: (min(v), max(v)) for name, v in compiled.items()}
+    rows = [(name, statistics.median(v)) for name, v in compiled.items()]
     for name, fc in c_peers.items():
         rows.append((f"{name}, called through ctypes", median_ns(fc.call_only, calls // 4, repeats)))
     inp_np = tuple(np.array(v, dtype=float) for v in inp)
@@ -213,13 +236,14 @@ def main():
         n = max(200, calls // (20 if "flat" in name else 200))
         ns = median_ns(lambda r=raw, z=args: r(*z), n, repeats)
         rows.append((f"{name}, called from Python ({kind} inputs)", ns))
-    print(f"\n## Cost of one evaluation of A and b ({a.cflags}; median of {repeats} repeats)\n")
-    print("| implementation | ns per call | ratio to pegdyn |")
-    print("|---|---|---|")
-    report["per_call_ns"] = {}
+    print(f"\n## Cost of one evaluation of A and b ({a.cflags}; median of {repeats} rounds)\n")
+    print("| implementation | ns per call | range over rounds | ratio to pegdyn |")
+    print("|---|---|---|---|")
+    report["per_call_ns"], report["per_call_range_ns"] = {}, spread
     for name, ns in rows:
         report["per_call_ns"][name] = ns
-        print(f"| {name} | {ns:,.0f} | {ns / peg_ns:.1f} |")
+        lo_hi = f"{spread[name][0]:.0f}-{spread[name][1]:.0f}" if name in spread else "-"
+        print(f"| {name} | {ns:,.0f} | {lo_hi} | {ns / peg_ns:.1f} |")
     report["pegdyn_forward_lu_ns"], report["pegdyn_rhs_ns"] = peg_lu, peg_rhs
     print(f"\npegdyn: forward + 5x5 LU solve {peg_lu:.0f} ns; whole PegSystem right-hand side "
           f"(friction directions, forward, LU) {peg_rhs:.0f} ns.")

@@ -55,28 +55,29 @@ def sympy_source(model):
     return "\n".join(lines) + "\n", len(lets)
 
 
-def casadi_function(model):
-    """The CasADi SX Function rigid_forward(x, p, loads, t) -> (A, b), dense."""
+def casadi_function(model, cse=False):
+    """The CasADi SX Function rigid_forward(x, p, loads, t) -> (A, b), dense;
+    `cse` is CasADi's Function option (off by default: then each separately
+    built sin(gamma) etc. stays a separate instruction)."""
     import casadi as ca
 
     a = ca.densify(ca.blockcat(model["A"]))
     b = ca.densify(ca.vertcat(*model["b"]))
     args = [ca.vertcat(*model[k]) for k in ("x", "p", "loads", "t")]
-    return ca.Function("rigid_forward", args, [a, b], ["x", "p", "loads", "t"], ["a", "b"])
+    return ca.Function("rigid_forward", args, [a, b], ["x", "p", "loads", "t"], ["a", "b"], {"cse": cse})
 
 
-def casadi_source(fn, directory):
-    """C source of peer_forward wrapping the code of fn.generate (A
-    column-major)."""
-    fn.generate("rigid_forward_casadi.c", {"with_header": False})
-    # generate() writes into the working directory; move it.
+def casadi_source(fn, directory, stem):
+    """C source of peer_forward wrapping the code of fn.generate, written to
+    `<directory>/<stem>.c` (A column-major)."""
     import os
     import shutil
 
-    target = os.path.join(directory, "rigid_forward_casadi.c")
-    shutil.move("rigid_forward_casadi.c", target)
+    # generate() writes into the working directory; move it.
+    fn.generate(f"{stem}.c", {"with_header": False})
+    shutil.move(f"{stem}.c", os.path.join(directory, f"{stem}.c"))
     return r"""
-#include "rigid_forward_casadi.c"
+#include "STEM.c"
 static casadi_real peer_w[1024];
 static casadi_int peer_iw[64];
 /* a is written column-major, as CasADi (and nalgebra) store it. */
@@ -86,7 +87,7 @@ void peer_forward(const double *x, const double *p, const double *l, const doubl
     casadi_real *res[2] = {a, b};
     rigid_forward(arg, res, peer_iw, peer_w, 0);
 }
-""", fn.sz_w()
+""".replace("STEM", stem), fn.sz_w()
 
 
 def compile_library(source, directory, name, flags):
