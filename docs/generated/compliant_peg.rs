@@ -53,7 +53,7 @@ pub mod compliant_peg {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 110 add/sub, 151 mul, 6 div, 4 sqrt, 6 transcendental, 16 branches; 93 `let`s.
+    /// 110 add/sub, 149 mul, 7 div, 4 sqrt, 6 transcendental, 16 branches; 92 `let`s.
     #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
@@ -114,64 +114,63 @@ pub mod compliant_peg {
         let t33 = t12 + sin_theta * t32;
         let t34 = T::from_f64(1.0) - T::from_f64(2.0) * t11;
         let t35 = rho_p + t14;
-        let t36 = T::from_f64(1.0) / m;
-        let t37 = r + t4 + x + t28 - T::from_f64(2.0) * t11 * t27;
-        let t38 = t37.max0();
-        let t39 = t38 * t38.sqrt();
-        let t40 = t37.step();
-        let t41 = r + t4 + x + t8 + T::from_f64(2.0) * t11 * t32;
-        let t42 = t41.max0();
-        let t43 = t42 * t42.sqrt();
-        let t44 = t41.step();
-        let t45 = -t40;
-        let t46 = r + t4 + t5 - t8 - T::from_f64(2.0) * t6 * t11;
-        let t47 = t46.max0();
-        let t48 = t47 * t47.sqrt();
-        let t49 = -t12 - T::from_f64(2.0) * t23 * t6;
-        let t50 = xdot * t20 + t21 + thetadot * t49;
-        let t51 = (T::from_f64(1.0) + hc_alpha * t50).max0();
-        let t52 = t46.step();
-        let t53 = -(sin_theta * (l_c + t25 + t29))
+        let t36 = r + t4 + x + t28 - T::from_f64(2.0) * t11 * t27;
+        let t37 = t36.max0();
+        let t38 = t37 * t37.sqrt();
+        let t39 = t36.step();
+        let t40 = r + t4 + x + t8 + T::from_f64(2.0) * t11 * t32;
+        let t41 = t40.max0();
+        let t42 = t41 * t41.sqrt();
+        let t43 = t40.step();
+        let t44 = -t39;
+        let t45 = r + t4 + t5 - t8 - T::from_f64(2.0) * t6 * t11;
+        let t46 = t45.max0();
+        let t47 = t46 * t46.sqrt();
+        let t48 = -t12 - T::from_f64(2.0) * t23 * t6;
+        let t49 = xdot * t20 + t21 + thetadot * t48;
+        let t50 = (T::from_f64(1.0) + hc_alpha * t49).max0();
+        let t51 = t45.step();
+        let t52 = -(sin_theta * (l_c + t25 + t29))
             - cos_theta * (r - T::from_f64(2.0) * t30);
-        let t54 = zdot + thetadot * t53;
-        let t55 = t31 - T::from_f64(2.0) * t23 * t27;
-        let t56 = xdot + thetadot * t55;
-        let t57 = (T::from_f64(1.0) + hc_alpha * t56).max0();
-        let t58 = v_s.hypot(t54);
-        let t59 = -t15 + cos_theta * t33;
-        let t60 = -t17 - sin_theta * t33;
-        let t61 = sin_theta * (xdot + thetadot * t59)
-            + cos_theta * (zdot + thetadot * t60);
-        let t62 = t12 + T::from_f64(2.0) * t23 * t32;
-        let t63 = xdot * t34 - t21 + thetadot * t62;
-        let t64 = (T::from_f64(1.0) + hc_alpha * t63).max0();
-        let t65 = v_s.hypot(t61);
-        let t66 = r + t4 + t5 - t28 + T::from_f64(2.0) * t11 * t35;
-        let t67 = -(sin_theta * (l_c + t25 - t29))
+        let t53 = zdot + thetadot * t52;
+        let t54 = t31 - T::from_f64(2.0) * t23 * t27;
+        let t55 = xdot + thetadot * t54;
+        let t56 = (T::from_f64(1.0) + hc_alpha * t55).max0();
+        let t57 = v_s.hypot(t53);
+        let t58 = -t15 + cos_theta * t33;
+        let t59 = -t17 - sin_theta * t33;
+        let t60 = sin_theta * (xdot + thetadot * t58)
+            + cos_theta * (zdot + thetadot * t59);
+        let t61 = t12 + T::from_f64(2.0) * t23 * t32;
+        let t62 = xdot * t34 - t21 + thetadot * t61;
+        let t63 = (T::from_f64(1.0) + hc_alpha * t62).max0();
+        let t64 = v_s.hypot(t60);
+        let t65 = r + t4 + t5 - t28 + T::from_f64(2.0) * t11 * t35;
+        let t66 = -(sin_theta * (l_c + t25 - t29))
             - cos_theta * (t14 + T::from_f64(2.0) * t30);
-        let t68 = zdot + thetadot * t67;
-        let t69 = t66.max0();
-        let t70 = t69 * t69.sqrt();
-        let t71 = -t31 + T::from_f64(2.0) * t23 * t35;
-        let t72 = -xdot + thetadot * t71;
-        let t73 = (T::from_f64(1.0) + hc_alpha * t72).max0();
-        let t74 = v_s.hypot(t68);
-        let t75 = t66.step();
-        let t76 = t51 - T::from_f64(1.0);
-        let t77 = t57 - T::from_f64(1.0);
-        let t78 = t64 - T::from_f64(1.0);
-        let t79 = t73 - T::from_f64(1.0);
-        let t80 = -t52 - t76;
-        let t81 = mu * sin_theta;
-        let t82 = t51 / t24;
-        let t83 = t82 * t19;
-        let t84 = -t44 - t78;
-        let t85 = t64 / t65;
-        let t86 = t85 * t61;
-        let t87 = t57 / t58;
-        let t88 = t87 * t54;
-        let t89 = t73 / t74;
-        let t90 = t89 * t68;
+        let t67 = zdot + thetadot * t66;
+        let t68 = t65.max0();
+        let t69 = t68 * t68.sqrt();
+        let t70 = -t31 + T::from_f64(2.0) * t23 * t35;
+        let t71 = -xdot + thetadot * t70;
+        let t72 = (T::from_f64(1.0) + hc_alpha * t71).max0();
+        let t73 = v_s.hypot(t67);
+        let t74 = t65.step();
+        let t75 = t50 - T::from_f64(1.0);
+        let t76 = t56 - T::from_f64(1.0);
+        let t77 = t63 - T::from_f64(1.0);
+        let t78 = t72 - T::from_f64(1.0);
+        let t79 = -t51 - t75;
+        let t80 = mu * sin_theta;
+        let t81 = t50 / t24;
+        let t82 = t81 * t19;
+        let t83 = -t43 - t77;
+        let t84 = t63 / t64;
+        let t85 = t84 * t60;
+        let t86 = t56 / t57;
+        let t87 = t86 * t53;
+        let t88 = t72 / t73;
+        let t89 = t88 * t67;
         SMatrix::<
             T,
             8,
@@ -181,31 +180,31 @@ pub mod compliant_peg {
                 xdot,
                 zdot,
                 thetadot,
-                (k_edge * (t48 * (t20 * t80 - t81 * t83) + t43 * (t34 * t84 - t81 * t86))
+                (k_edge * (t47 * (t20 * t79 - t80 * t82) + t42 * (t34 * t83 - t80 * t85))
                     + k_wall
-                        * (t39 * (T::from_f64(1.0) + t45 - t57)
-                            + t70 * (t73 - T::from_f64(1.0) + t75)) + t0 + t1) * t36,
+                        * (t38 * (T::from_f64(1.0) + t44 - t56)
+                            + t69 * (t72 - T::from_f64(1.0) + t74)) + t0 + t1) / m,
                 (k_edge
-                    * (sin_theta * (t48 * t80 + t43 * (t44 + t78))
-                        + cos_theta * (-(t83 * t48) - t86 * t43) * mu)
-                    + k_wall * (-(t88 * t39) - t90 * t70) * mu + t2 + t3) * t36,
+                    * (sin_theta * (t47 * t79 + t42 * (t43 + t77))
+                        + cos_theta * (-(t82 * t47) - t85 * t42) * mu)
+                    + k_wall * (-(t87 * t38) - t89 * t69) * mu + t2 + t3) / m,
                 (m_2
                     + k_edge
-                        * (t48
-                            * (t49 * t80
-                                - t83 * mu * (sin_theta * t16 + cos_theta * t18))
-                            + t43
-                                * (t62 * t84
-                                    - t86 * mu * (sin_theta * t59 + cos_theta * t60)))
+                        * (t47
+                            * (t48 * t79
+                                - t82 * mu * (sin_theta * t16 + cos_theta * t18))
+                            + t42
+                                * (t61 * t83
+                                    - t85 * mu * (sin_theta * t58 + cos_theta * t59)))
                     + k_wall
-                        * (t39 * (t55 * (t45 - t77) - t88 * mu * t53)
-                            + t70 * (t71 * (-t75 - t79) - t90 * mu * t67))) / j,
+                        * (t38 * (t54 * (t44 - t76) - t87 * mu * t52)
+                            + t69 * (t70 * (-t74 - t78) - t89 * mu * t66))) / j,
                 xdot * (t0 + t1) + zdot * (t2 + t3) + thetadot * m_2,
                 mu
-                    * (k_edge * (t82 * t48 * (t19 * t19) + t85 * t43 * (t61 * t61))
-                        + k_wall * (t87 * t39 * (t54 * t54) + t89 * t70 * (t68 * t68)))
-                    + k_edge * (t50 * t48 * t76 + t63 * t43 * t78)
-                    + k_wall * (t56 * t39 * t77 + t72 * t70 * t79),
+                    * (k_edge * (t81 * t47 * (t19 * t19) + t84 * t42 * (t60 * t60))
+                        + k_wall * (t86 * t38 * (t53 * t53) + t88 * t69 * (t67 * t67)))
+                    + k_edge * (t49 * t47 * t75 + t62 * t42 * t77)
+                    + k_wall * (t55 * t38 * t76 + t71 * t69 * t78),
             ],
         )
     }
@@ -825,7 +824,7 @@ pub mod compliant_peg {
     /// - `p0`: vector of 4
     ///
     /// # Cost
-    /// 62 add/sub, 114 mul, 9 div, 4 sqrt, 10 transcendental, 8 branches; 65 `let`s.
+    /// 62 add/sub, 116 mul, 8 div, 4 sqrt, 10 transcendental, 8 branches; 64 `let`s.
     #[inline]
     pub fn contacts<T: Real>(
         y: &SVector<T, 8>,
@@ -881,86 +880,85 @@ pub mod compliant_peg {
         let t14 = zdot * sin_theta;
         let t16 = t6 * t15;
         let t17 = v_s.hypot(t13);
-        let t18 = T::from_f64(1.0) / e_star;
-        let t19 = t18 / edge_sum;
-        let t20 = -rho_p;
-        let t21 = l_c + t20;
-        let t22 = r + t20;
-        let t23 = sin_theta * t21;
-        let t24 = rho_p * sin_theta;
-        let t25 = rho_p * t7;
-        let t26 = cos_theta * t21;
-        let t27 = t18 / wall_sum;
-        let t28 = rho_h + T::from_f64(0.5) * d + t1;
-        let t29 = t8 + sin_theta * t28;
-        let t30 = rho_p + t10;
-        let t31 = r + t0 + x + t23 - T::from_f64(2.0) * t7 * t22;
-        let t32 = t31.max0();
-        let t33 = t32 * t32.sqrt();
-        let t34 = r + t0 + x + t4 + T::from_f64(2.0) * t7 * t28;
-        let t35 = t34.max0();
-        let t36 = t35 * t35.sqrt();
-        let t37 = r + t0 + t1 - t4 - T::from_f64(2.0) * t2 * t7;
-        let t38 = t37.max0();
-        let t39 = t38 * t38.sqrt();
-        let t40 = (T::from_f64(1.0)
+        let t18 = T::from_f64(1.0) / (e_star * edge_sum);
+        let t19 = -rho_p;
+        let t20 = l_c + t19;
+        let t21 = r + t19;
+        let t22 = sin_theta * t20;
+        let t23 = rho_p * sin_theta;
+        let t24 = rho_p * t7;
+        let t25 = cos_theta * t20;
+        let t26 = T::from_f64(1.0) / (e_star * wall_sum);
+        let t27 = rho_h + T::from_f64(0.5) * d + t1;
+        let t28 = t8 + sin_theta * t27;
+        let t29 = rho_p + t10;
+        let t30 = r + t0 + x + t22 - T::from_f64(2.0) * t7 * t21;
+        let t31 = t30.max0();
+        let t32 = t31 * t31.sqrt();
+        let t33 = r + t0 + x + t4 + T::from_f64(2.0) * t7 * t27;
+        let t34 = t33.max0();
+        let t35 = t34 * t34.sqrt();
+        let t36 = r + t0 + t1 - t4 - T::from_f64(2.0) * t2 * t7;
+        let t37 = t36.max0();
+        let t38 = t37 * t37.sqrt();
+        let t39 = (T::from_f64(1.0)
             + hc_alpha
                 * (xdot * (-T::from_f64(1.0) + T::from_f64(2.0) * t7) + t14
                     + thetadot * (-t8 - T::from_f64(2.0) * t16 * t2)))
             .max0();
-        let t41 = zdot
+        let t40 = zdot
             + thetadot
-                * (-(sin_theta * (l_c + t20 + t24))
-                    - cos_theta * (r - T::from_f64(2.0) * t25));
-        let t42 = (T::from_f64(1.0)
-            + hc_alpha * (xdot + thetadot * (t26 - T::from_f64(2.0) * t16 * t22)))
+                * (-(sin_theta * (l_c + t19 + t23))
+                    - cos_theta * (r - T::from_f64(2.0) * t24));
+        let t41 = (T::from_f64(1.0)
+            + hc_alpha * (xdot + thetadot * (t25 - T::from_f64(2.0) * t16 * t21)))
             .max0();
-        let t43 = v_s.hypot(t41);
-        let t44 = sin_theta * (xdot + thetadot * (-t11 + cos_theta * t29))
-            + cos_theta * (zdot + thetadot * (-t12 - sin_theta * t29));
-        let t45 = (T::from_f64(1.0)
+        let t42 = v_s.hypot(t40);
+        let t43 = sin_theta * (xdot + thetadot * (-t11 + cos_theta * t28))
+            + cos_theta * (zdot + thetadot * (-t12 - sin_theta * t28));
+        let t44 = (T::from_f64(1.0)
             + hc_alpha
                 * (xdot * (T::from_f64(1.0) - T::from_f64(2.0) * t7) - t14
-                    + thetadot * (t8 + T::from_f64(2.0) * t16 * t28)))
+                    + thetadot * (t8 + T::from_f64(2.0) * t16 * t27)))
             .max0();
-        let t46 = v_s.hypot(t44);
-        let t47 = r + t0 + t1 - t23 + T::from_f64(2.0) * t7 * t30;
-        let t48 = zdot
+        let t45 = v_s.hypot(t43);
+        let t46 = r + t0 + t1 - t22 + T::from_f64(2.0) * t7 * t29;
+        let t47 = zdot
             + thetadot
-                * (-(sin_theta * (l_c + t20 - t24))
-                    - cos_theta * (t10 + T::from_f64(2.0) * t25));
-        let t49 = t47.max0();
-        let t50 = t49 * t49.sqrt();
-        let t51 = (T::from_f64(1.0)
-            + hc_alpha * (-xdot + thetadot * (-t26 + T::from_f64(2.0) * t16 * t30)))
+                * (-(sin_theta * (l_c + t19 - t23))
+                    - cos_theta * (t10 + T::from_f64(2.0) * t24));
+        let t48 = t46.max0();
+        let t49 = t48 * t48.sqrt();
+        let t50 = (T::from_f64(1.0)
+            + hc_alpha * (-xdot + thetadot * (-t25 + T::from_f64(2.0) * t16 * t29)))
             .max0();
-        let t52 = v_s.hypot(t48);
-        let t53 = k_edge * t39 * t40;
-        let t54 = (T::from_f64(1.5) * t19 * t53).cbrt();
-        let t55 = e_star * edge_sum * (T::from_f64(1.0) / (edge_ma * edge_mb));
-        let t56 = k_wall * t50 * t51;
-        let t57 = (T::from_f64(1.5) * t27 * t56).cbrt();
-        let t58 = e_star * wall_sum * (T::from_f64(1.0) / (wall_ma * wall_mb));
-        let t59 = k_wall * t42 * t33;
-        let t60 = k_edge * t45 * t36;
-        let t61 = (T::from_f64(1.5) * t27 * t59).cbrt();
-        let t62 = (T::from_f64(1.5) * t19 * t60).cbrt();
-        let normal = Vector4::new(t53, t59, t60, t56);
+        let t51 = v_s.hypot(t47);
+        let t52 = k_edge * t38 * t39;
+        let t53 = (T::from_f64(1.5) * t18 * t52).cbrt();
+        let t54 = e_star * edge_sum * (T::from_f64(1.0) / (edge_ma * edge_mb));
+        let t55 = k_wall * t49 * t50;
+        let t56 = (T::from_f64(1.5) * t26 * t55).cbrt();
+        let t57 = e_star * wall_sum * (T::from_f64(1.0) / (wall_ma * wall_mb));
+        let t58 = k_wall * t41 * t32;
+        let t59 = k_edge * t44 * t35;
+        let t60 = (T::from_f64(1.5) * t26 * t58).cbrt();
+        let t61 = (T::from_f64(1.5) * t18 * t59).cbrt();
+        let normal = Vector4::new(t52, t58, t59, t55);
         let friction = Vector4::new(
-            -t53 * mu * t13 / t17,
-            -t59 * mu * t41 / t43,
-            -t60 * mu * t44 / t46,
-            -t56 * mu * t48 / t52,
+            -t52 * mu * t13 / t17,
+            -t58 * mu * t40 / t42,
+            -t59 * mu * t43 / t45,
+            -t55 * mu * t47 / t51,
         );
-        let delta = Vector4::new(t37, t31, t34, t47);
-        let slip = Vector4::new(t13, t41, t44, t48);
-        let a = Vector4::new(edge_ma * t54, wall_ma * t61, edge_ma * t62, wall_ma * t57);
-        let b = Vector4::new(edge_mb * t54, wall_mb * t61, edge_mb * t62, wall_mb * t57);
+        let delta = Vector4::new(t36, t30, t33, t46);
+        let slip = Vector4::new(t13, t40, t43, t47);
+        let a = Vector4::new(edge_ma * t53, wall_ma * t60, edge_ma * t61, wall_ma * t56);
+        let b = Vector4::new(edge_mb * t53, wall_mb * t60, edge_mb * t61, wall_mb * t56);
         let p0 = Vector4::new(
-            T::from_f64(0.3183098861837907) * t55 * t54,
-            T::from_f64(0.3183098861837907) * t58 * t61,
-            T::from_f64(0.3183098861837907) * t55 * t62,
-            T::from_f64(0.3183098861837907) * t58 * t57,
+            T::from_f64(0.3183098861837907) * t54 * t53,
+            T::from_f64(0.3183098861837907) * t57 * t60,
+            T::from_f64(0.3183098861837907) * t54 * t61,
+            T::from_f64(0.3183098861837907) * t57 * t56,
         );
         (normal, friction, delta, slip, a, b, p0)
     }

@@ -53,7 +53,7 @@ pub mod compliant_peg_lean {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 58 add/sub, 83 mul, 4 div, 2 sqrt, 4 transcendental, 8 branches; 52 `let`s.
+    /// 58 add/sub, 81 mul, 5 div, 2 sqrt, 4 transcendental, 8 branches; 51 `let`s.
     #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
@@ -108,27 +108,26 @@ pub mod compliant_peg_lean {
             - cos_theta * (r - T::from_f64(2.0) * rho_p * t8);
         let t27 = zdot + thetadot * t26;
         let t28 = v_s.hypot(t27);
-        let t29 = T::from_f64(1.0) / m;
-        let t30 = r + t2 + x + sin_theta * t24 - T::from_f64(2.0) * t8 * t25;
-        let t31 = t30.max0();
-        let t32 = t31 * t31.sqrt();
-        let t33 = k_wall * t32;
-        let t34 = t30.step();
-        let t35 = -t34;
-        let t36 = -t10 - T::from_f64(2.0) * t20 * t4;
-        let t37 = xdot * t18 + zdot * sin_theta + thetadot * t36;
-        let t38 = (T::from_f64(1.0) + hc_alpha * t37).max0();
-        let t39 = t38 / t21;
-        let t40 = t39 * (mu * t14);
-        let t41 = cos_theta * t24 - T::from_f64(2.0) * t20 * t25;
-        let t42 = xdot + thetadot * t41;
-        let t43 = (T::from_f64(1.0) + hc_alpha * t42).max0();
-        let t44 = t38 - T::from_f64(1.0);
-        let t45 = t43 - T::from_f64(1.0);
-        let t46 = t43 / t28;
-        let t47 = t33 * t46;
-        let t48 = mu * t27;
-        let t49 = -t22 - t44;
+        let t29 = r + t2 + x + sin_theta * t24 - T::from_f64(2.0) * t8 * t25;
+        let t30 = t29.max0();
+        let t31 = t30 * t30.sqrt();
+        let t32 = k_wall * t31;
+        let t33 = t29.step();
+        let t34 = -t33;
+        let t35 = -t10 - T::from_f64(2.0) * t20 * t4;
+        let t36 = xdot * t18 + zdot * sin_theta + thetadot * t35;
+        let t37 = (T::from_f64(1.0) + hc_alpha * t36).max0();
+        let t38 = t37 / t21;
+        let t39 = t38 * (mu * t14);
+        let t40 = cos_theta * t24 - T::from_f64(2.0) * t20 * t25;
+        let t41 = xdot + thetadot * t40;
+        let t42 = (T::from_f64(1.0) + hc_alpha * t41).max0();
+        let t43 = t37 - T::from_f64(1.0);
+        let t44 = t42 - T::from_f64(1.0);
+        let t45 = t42 / t28;
+        let t46 = t32 * t45;
+        let t47 = mu * t27;
+        let t48 = -t22 - t43;
         SMatrix::<
             T,
             8,
@@ -138,16 +137,16 @@ pub mod compliant_peg_lean {
                 xdot,
                 zdot,
                 thetadot,
-                (t17 * (t18 * t49 - t40 * sin_theta)
-                    + t33 * (T::from_f64(1.0) + t35 - t43) + t0 + t1) * t29,
-                (sin_theta * (t17 * t49 - f2) + cos_theta * (f1 - t40 * t17) - t47 * t48)
-                    * t29,
-                (m_2 + t17 * (t36 * t49 - t40 * (sin_theta * t12 + cos_theta * t13))
-                    + t33 * (t41 * (t35 - t45) - t48 * t46 * t26)) / j,
+                (t17 * (t18 * t48 - t39 * sin_theta)
+                    + t32 * (T::from_f64(1.0) + t34 - t42) + t0 + t1) / m,
+                (sin_theta * (t17 * t48 - f2) + cos_theta * (f1 - t39 * t17) - t46 * t47)
+                    / m,
+                (m_2 + t17 * (t35 * t48 - t39 * (sin_theta * t12 + cos_theta * t13))
+                    + t32 * (t40 * (t34 - t44) - t47 * t45 * t26)) / j,
                 xdot * (t0 + t1) + zdot * (f1 * cos_theta - f2 * sin_theta)
                     + thetadot * m_2,
-                mu * (t39 * t17 * (t14 * t14) + t47 * (t27 * t27)) + t17 * t37 * t44
-                    + t33 * t42 * t45,
+                mu * (t38 * t17 * (t14 * t14) + t46 * (t27 * t27)) + t17 * t36 * t43
+                    + t32 * t41 * t44,
             ],
         )
     }
@@ -541,7 +540,7 @@ pub mod compliant_peg_lean {
     /// - `p0`: vector of 2
     ///
     /// # Cost
-    /// 32 add/sub, 64 mul, 7 div, 2 sqrt, 6 transcendental, 4 branches; 33 `let`s.
+    /// 32 add/sub, 64 mul, 6 div, 2 sqrt, 6 transcendental, 4 branches; 32 `let`s.
     #[inline]
     pub fn contacts<T: Real>(
         y: &SVector<T, 8>,
@@ -595,41 +594,40 @@ pub mod compliant_peg_lean {
         let t12 = t11 * t11.sqrt();
         let t14 = t5 * t13;
         let t15 = v_s.hypot(t10);
-        let t16 = T::from_f64(1.0) / e_star;
-        let t17 = -rho_p;
-        let t18 = l_c + t17;
-        let t19 = r + t17;
-        let t20 = zdot
+        let t16 = -rho_p;
+        let t17 = l_c + t16;
+        let t18 = r + t16;
+        let t19 = zdot
             + thetadot
-                * (-(sin_theta * (l_c + t17 + rho_p * sin_theta))
+                * (-(sin_theta * (l_c + t16 + rho_p * sin_theta))
                     - cos_theta * (r - T::from_f64(2.0) * rho_p * t6));
-        let t21 = v_s.hypot(t20);
-        let t22 = r + t0 + x + sin_theta * t18 - T::from_f64(2.0) * t6 * t19;
-        let t23 = t22.max0();
-        let t24 = t23 * t23.sqrt();
-        let t25 = (T::from_f64(1.0)
+        let t20 = v_s.hypot(t19);
+        let t21 = r + t0 + x + sin_theta * t17 - T::from_f64(2.0) * t6 * t18;
+        let t22 = t21.max0();
+        let t23 = t22 * t22.sqrt();
+        let t24 = (T::from_f64(1.0)
             + hc_alpha
                 * (xdot * (-T::from_f64(1.0) + T::from_f64(2.0) * t6) + zdot * sin_theta
                     + thetadot * (-t8 - T::from_f64(2.0) * t14 * t2)))
             .max0();
-        let t26 = (T::from_f64(1.0)
+        let t25 = (T::from_f64(1.0)
             + hc_alpha
-                * (xdot + thetadot * (cos_theta * t18 - T::from_f64(2.0) * t14 * t19)))
+                * (xdot + thetadot * (cos_theta * t17 - T::from_f64(2.0) * t14 * t18)))
             .max0();
-        let t27 = k_edge * t12 * t25;
-        let t28 = (T::from_f64(1.5) * t27 * t16 / edge_sum).cbrt();
-        let t29 = k_wall * t26 * t24;
-        let t30 = (T::from_f64(1.5) * t29 * t16 / wall_sum).cbrt();
-        let normal = Vector2::new(t27, t29);
-        let friction = Vector2::new(-t27 * mu * t10 / t15, -t29 * mu * t20 / t21);
-        let delta = Vector2::new(t7, t22);
-        let slip = Vector2::new(t10, t20);
-        let a = Vector2::new(edge_ma * t28, wall_ma * t30);
-        let b = Vector2::new(edge_mb * t28, wall_mb * t30);
+        let t26 = k_edge * t12 * t24;
+        let t27 = (T::from_f64(1.5) * t26 / (e_star * edge_sum)).cbrt();
+        let t28 = k_wall * t25 * t23;
+        let t29 = (T::from_f64(1.5) * t28 / (e_star * wall_sum)).cbrt();
+        let normal = Vector2::new(t26, t28);
+        let friction = Vector2::new(-t26 * mu * t10 / t15, -t28 * mu * t19 / t20);
+        let delta = Vector2::new(t7, t21);
+        let slip = Vector2::new(t10, t19);
+        let a = Vector2::new(edge_ma * t27, wall_ma * t29);
+        let b = Vector2::new(edge_mb * t27, wall_mb * t29);
         let p0 = Vector2::new(
-            T::from_f64(0.3183098861837907) * e_star * edge_sum * t28
+            T::from_f64(0.3183098861837907) * e_star * edge_sum * t27
                 / (edge_ma * edge_mb),
-            T::from_f64(0.3183098861837907) * e_star * wall_sum * t30
+            T::from_f64(0.3183098861837907) * e_star * wall_sum * t29
                 / (wall_ma * wall_mb),
         );
         (normal, friction, delta, slip, a, b, p0)

@@ -512,7 +512,7 @@ pub mod rigid_peg {
     /// - `geo`: vector of 13
     ///
     /// # Cost
-    /// 10 add/sub, 37 mul, 3 div, 1 sqrt, 5 transcendental, 0 branches; 21 `let`s.
+    /// 10 add/sub, 35 mul, 4 div, 1 sqrt, 5 transcendental, 0 branches; 20 `let`s.
     #[inline]
     pub fn geometry<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> SVector<T, 13> {
         let gamma = x[0];
@@ -530,35 +530,34 @@ pub mod rigid_peg {
         let t6 = T::from_f64(1.0) / sin_gamma;
         let t7 = t5 * t6;
         let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t9 = T::from_f64(1.0) / d_hole;
-        let t10 = T::from_f64(0.5) * t7;
-        let t11 = d_hole * t2 * t3;
-        let t12 = t11 * t6;
-        let t13 = t11 * cos_gamma;
-        let t14 = -t12;
-        let t15 = t13 * t8;
-        let t16 = (-T::from_f64(2.0) * t15 * (d_hole + T::from_f64(2.0) * t15)).sqrt();
-        let t17 = t6 * (T::from_f64(0.5) * t5 + t13) * t6;
-        let t18 = t17.hypot(t12);
+        let t9 = T::from_f64(0.5) * t7;
+        let t10 = d_hole * t2 * t3;
+        let t11 = t10 * t6;
+        let t12 = t10 * cos_gamma;
+        let t13 = -t11;
+        let t14 = t12 * t8;
+        let t15 = (-T::from_f64(2.0) * t14 * (d_hole + T::from_f64(2.0) * t14)).sqrt();
+        let t16 = t6 * (T::from_f64(0.5) * t5 + t12) * t6;
+        let t17 = t16.hypot(t11);
         SMatrix::<
             T,
             13,
             1,
         >::from_row_slice(
             &[
-                t14,
-                t10,
-                t17,
-                t6 * (T::from_f64(0.5) * cos_gamma * t5 + t11) * t6,
+                t13,
+                t9,
                 t16,
-                T::from_f64(2.0) * t16 * t9,
-                T::from_f64(2.0) * t17 * t9,
-                sin_gamma * (-(T::from_f64(0.5) * h) + t10),
-                t14 + cos_gamma * (T::from_f64(0.5) * h - T::from_f64(0.5) * t7),
-                -T::from_f64(2.0) * t11 * t8,
-                T::from_f64(2.0) * t18,
-                -t17,
-                -T::from_f64(2.0) * t12,
+                t6 * (T::from_f64(0.5) * cos_gamma * t5 + t10) * t6,
+                t15,
+                T::from_f64(2.0) * t15 / d_hole,
+                T::from_f64(2.0) * t16 / d_hole,
+                sin_gamma * (-(T::from_f64(0.5) * h) + t9),
+                t13 + cos_gamma * (T::from_f64(0.5) * h - T::from_f64(0.5) * t7),
+                -T::from_f64(2.0) * t10 * t8,
+                T::from_f64(2.0) * t17,
+                -t16,
+                -T::from_f64(2.0) * t11,
             ],
         )
     }

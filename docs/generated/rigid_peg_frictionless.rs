@@ -29,7 +29,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 65 add/sub, 132 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 64 `let`s.
+    /// 65 add/sub, 130 mul, 5 div, 1 sqrt, 6 transcendental, 0 branches; 63 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -85,87 +85,86 @@ pub mod rigid_peg_frictionless {
         let t30 = (-T::from_f64(2.0) * t29 * (d_hole + T::from_f64(2.0) * t29)).sqrt();
         let t31 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
         let t32 = (t28 * t7).hypot(t11);
-        let t33 = T::from_f64(1.0) / t32;
-        let t34 = t30 * t33;
-        let t35 = d_peg * t4 * t12;
-        let t36 = t35 * t7;
-        let t37 = t13 * t6;
-        let t38 = t36 - T::from_f64(0.5) * t37;
-        let t39 = sin_gamma * t31;
-        let t40 = -t36 + T::from_f64(0.5) * t37;
-        let t41 = t15 / (sin_gamma * sin_gamma * sin_gamma);
-        let t42 = t41 * t6;
-        let t43 = t13 * t35;
-        let t44 = h - t8;
-        let t45 = t44 * t44;
-        let t46 = t7 * t33;
-        let t47 = t46 * t28;
-        let t48 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t49 = cos_gamma * t48 + sin_gamma * t38;
-        let t50 = cos_gamma * (t28 * t10 + t40);
-        let t51 = t11 + t50 - t39;
-        let t52 = sin_gamma
-            * (-t48 + t7 * (T::from_f64(0.5) * (t14 - t5) * d_peg + t25) + t42
-                - T::from_f64(2.0) * t43) + T::from_f64(2.0) * cos_gamma * t38;
-        let t53 = d_hole
-            * (t27 * (-t7 - T::from_f64(2.0) * t41) - T::from_f64(0.5) * cos_gamma * t7)
+        let t33 = t30 / t32;
+        let t34 = d_peg * t4 * t12;
+        let t35 = t34 * t7;
+        let t36 = t13 * t6;
+        let t37 = t35 - T::from_f64(0.5) * t36;
+        let t38 = sin_gamma * t31;
+        let t39 = -t35 + T::from_f64(0.5) * t36;
+        let t40 = t15 / (sin_gamma * sin_gamma * sin_gamma);
+        let t41 = t40 * t6;
+        let t42 = t13 * t34;
+        let t43 = h - t8;
+        let t44 = t43 * t43;
+        let t45 = t7 / t32;
+        let t46 = t45 * t28;
+        let t47 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t48 = cos_gamma * t47 + sin_gamma * t37;
+        let t49 = cos_gamma * (t28 * t10 + t39);
+        let t50 = t11 + t49 - t38;
+        let t51 = sin_gamma
+            * (-t47 + t7 * (T::from_f64(0.5) * (t14 - t5) * d_peg + t25) + t41
+                - T::from_f64(2.0) * t42) + T::from_f64(2.0) * cos_gamma * t37;
+        let t52 = d_hole
+            * (t27 * (-t7 - T::from_f64(2.0) * t40) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
                 * (-t31
                     + t7
                         * (T::from_f64(0.5) * (-t14 + t5) * d_peg
-                            - T::from_f64(0.5) * t6) - t42 + T::from_f64(2.0) * t43)
-            - T::from_f64(2.0) * sin_gamma * t40;
-        let t54 = sin_gamma * t48;
-        let t55 = t49 * t52;
-        let t56 = t53 * (d_hole + T::from_f64(2.0) * t50 - T::from_f64(2.0) * t39);
-        let t57 = T::from_f64(0.25) * t9 * (t37 - T::from_f64(2.0) * t36)
+                            - T::from_f64(0.5) * t6) - t41 + T::from_f64(2.0) * t42)
+            - T::from_f64(2.0) * sin_gamma * t39;
+        let t53 = sin_gamma * t47;
+        let t54 = t48 * t51;
+        let t55 = t52 * (d_hole + T::from_f64(2.0) * t49 - T::from_f64(2.0) * t38);
+        let t56 = T::from_f64(0.25) * t9 * (t36 - T::from_f64(2.0) * t35)
             * (T::from_f64(2.0) * h - T::from_f64(2.0) * t8);
-        let t58 = t7 * (t25 + t28 * cos_gamma) * t46;
-        let t59 = m * gammadot * psidot;
+        let t57 = t7 * (t25 + t28 * cos_gamma) * t45;
+        let t58 = m * gammadot * psidot;
         let a = Matrix5::new(
-            m * (t26 + t49 * t49 + t51 * t51),
+            m * (t26 + t48 * t48 + t50 * t50),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * (t9 * (T::from_f64(0.25) * t45 + t26) + T::from_f64(0.125) * t15 * t18),
+            m * (t9 * (T::from_f64(0.25) * t44 + t26) + T::from_f64(0.125) * t15 * t18),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * t49,
+            m * t48,
             T::from_f64(0.0),
             -cos_gamma,
-            t58,
-            t58,
+            t57,
+            t57,
             T::from_f64(0.0),
-            t54 * m,
+            t53 * m,
             T::from_f64(0.0),
-            t34,
-            -t34,
-            m * t51,
+            t33,
+            -t33,
+            m * t50,
             T::from_f64(0.0),
             -sin_gamma,
-            t47,
-            t47,
+            t46,
+            t46,
         );
         let b = Vector5::new(
             m_gamma
                 + m
                     * (t17 * (-(T::from_f64(0.125) * t18) + t26) * t24
                         + T::from_f64(0.5)
-                            * (t16 * (T::from_f64(2.0) * t55 + t56)
-                                + t17 * (T::from_f64(0.5) * t24 * t45 + t57)
-                                - t16 * (T::from_f64(4.0) * t55 + T::from_f64(2.0) * t56))
-                        - g * t51) + t49 * (t20 + t21) + f_z * t51,
-            m_psi + t54 * (t22 + t23)
-                - t59
+                            * (t16 * (T::from_f64(2.0) * t54 + t55)
+                                + t17 * (T::from_f64(0.5) * t24 * t44 + t56)
+                                - t16 * (T::from_f64(4.0) * t54 + T::from_f64(2.0) * t55))
+                        - g * t50) + t48 * (t20 + t21) + f_z * t50,
+            m_psi + t53 * (t22 + t23)
+                - t58
                     * (t24
-                        * (T::from_f64(0.5) * t45 - T::from_f64(0.25) * t18
-                            + T::from_f64(0.16666666666666666) * t19) + t57),
-            t20 + t21 - m * (t52 * t16 - t54 * t17),
-            t22 + t23 - t59 * t49 * (T::from_f64(1.0) + T::from_f64(1.0)),
-            f_z - m * g - m * t16 * t53,
+                        * (T::from_f64(0.5) * t44 - T::from_f64(0.25) * t18
+                            + T::from_f64(0.16666666666666666) * t19) + t56),
+            t20 + t21 - m * (t51 * t16 - t53 * t17),
+            t22 + t23 - t58 * t48 * (T::from_f64(1.0) + T::from_f64(1.0)),
+            f_z - m * g - m * t16 * t52,
         );
         (a, b)
     }
@@ -183,7 +182,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 68 add/sub, 133 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 64 `let`s.
+    /// 68 add/sub, 131 mul, 5 div, 1 sqrt, 6 transcendental, 0 branches; 63 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -240,43 +239,42 @@ pub mod rigid_peg_frictionless {
         let t30 = (-T::from_f64(2.0) * t29 * (d_hole + T::from_f64(2.0) * t29)).sqrt();
         let t31 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
         let t32 = (t28 * t7).hypot(t11);
-        let t33 = T::from_f64(1.0) / t32;
-        let t34 = t30 * t33;
-        let t35 = d_peg * t4 * t12;
-        let t36 = t35 * t7;
-        let t37 = t13 * t6;
-        let t38 = t36 - T::from_f64(0.5) * t37;
-        let t39 = sin_gamma * t31;
-        let t40 = -t36 + T::from_f64(0.5) * t37;
-        let t41 = t15 / (sin_gamma * sin_gamma * sin_gamma);
-        let t42 = t41 * t6;
-        let t43 = t13 * t35;
-        let t44 = h - t8;
-        let t45 = t44 * t44;
-        let t46 = t7 * t33;
-        let t47 = t46 * t28;
-        let t48 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t49 = cos_gamma * t48 + sin_gamma * t38;
-        let t50 = cos_gamma * (t28 * t10 + t40);
-        let t51 = t11 + t50 - t39;
-        let t52 = sin_gamma
-            * (-t48 + t7 * (T::from_f64(0.5) * (t14 - t5) * d_peg + t25) + t42
-                - T::from_f64(2.0) * t43) + T::from_f64(2.0) * cos_gamma * t38;
-        let t53 = d_hole
-            * (t27 * (-t7 - T::from_f64(2.0) * t41) - T::from_f64(0.5) * cos_gamma * t7)
+        let t33 = t30 / t32;
+        let t34 = d_peg * t4 * t12;
+        let t35 = t34 * t7;
+        let t36 = t13 * t6;
+        let t37 = t35 - T::from_f64(0.5) * t36;
+        let t38 = sin_gamma * t31;
+        let t39 = -t35 + T::from_f64(0.5) * t36;
+        let t40 = t15 / (sin_gamma * sin_gamma * sin_gamma);
+        let t41 = t40 * t6;
+        let t42 = t13 * t34;
+        let t43 = h - t8;
+        let t44 = t43 * t43;
+        let t45 = t7 / t32;
+        let t46 = t45 * t28;
+        let t47 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t48 = cos_gamma * t47 + sin_gamma * t37;
+        let t49 = cos_gamma * (t28 * t10 + t39);
+        let t50 = t11 + t49 - t38;
+        let t51 = sin_gamma
+            * (-t47 + t7 * (T::from_f64(0.5) * (t14 - t5) * d_peg + t25) + t41
+                - T::from_f64(2.0) * t42) + T::from_f64(2.0) * cos_gamma * t37;
+        let t52 = d_hole
+            * (t27 * (-t7 - T::from_f64(2.0) * t40) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
                 * (-t31
                     + t7
                         * (T::from_f64(0.5) * (-t14 + t5) * d_peg
-                            - T::from_f64(0.5) * t6) - t42 + T::from_f64(2.0) * t43)
-            - T::from_f64(2.0) * sin_gamma * t40;
-        let t54 = sin_gamma * t48;
-        let t55 = t49 * t52;
-        let t56 = t53 * (d_hole + T::from_f64(2.0) * t50 - T::from_f64(2.0) * t39);
-        let t57 = T::from_f64(0.25) * t9 * (t37 - T::from_f64(2.0) * t36)
+                            - T::from_f64(0.5) * t6) - t41 + T::from_f64(2.0) * t42)
+            - T::from_f64(2.0) * sin_gamma * t39;
+        let t53 = sin_gamma * t47;
+        let t54 = t48 * t51;
+        let t55 = t52 * (d_hole + T::from_f64(2.0) * t49 - T::from_f64(2.0) * t38);
+        let t56 = T::from_f64(0.25) * t9 * (t36 - T::from_f64(2.0) * t35)
             * (T::from_f64(2.0) * h - T::from_f64(2.0) * t8);
-        let t58 = t7 * (t25 + t28 * cos_gamma) * t46;
-        let t59 = gammadot * psidot;
+        let t57 = t7 * (t25 + t28 * cos_gamma) * t45;
+        let t58 = gammadot * psidot;
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
@@ -291,42 +289,42 @@ pub mod rigid_peg_frictionless {
             T::from_f64(0.0),
             T::from_f64(0.0),
             -cos_gamma,
-            t58,
-            t58,
+            t57,
+            t57,
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            t34,
-            -t34,
+            t33,
+            -t33,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -sin_gamma,
-            t47,
-            t47,
+            t46,
+            t46,
         );
         let b = Vector5::new(
             m
                 * (t17 * (-(T::from_f64(0.125) * t18) + t26) * t24
                     + T::from_f64(0.5)
-                        * (t16 * (T::from_f64(2.0) * t55 + t56)
-                            + t17 * (T::from_f64(0.5) * t24 * t45 + t57)
-                            - t16 * (T::from_f64(4.0) * t55 + T::from_f64(2.0) * t56))
-                    - g * t51 - gammaddot * (t26 + t49 * t49 + t51 * t51))
-                + t49 * (t20 + t21) + f_z * t51,
+                        * (t16 * (T::from_f64(2.0) * t54 + t55)
+                            + t17 * (T::from_f64(0.5) * t24 * t44 + t56)
+                            - t16 * (T::from_f64(4.0) * t54 + T::from_f64(2.0) * t55))
+                    - g * t50 - gammaddot * (t26 + t48 * t48 + t50 * t50))
+                + t48 * (t20 + t21) + f_z * t50,
             m
-                * (-(t59
+                * (-(t58
                     * (t24
-                        * (T::from_f64(0.5) * t45 - T::from_f64(0.25) * t18
-                            + T::from_f64(0.16666666666666666) * t19) + t57))
+                        * (T::from_f64(0.5) * t44 - T::from_f64(0.25) * t18
+                            + T::from_f64(0.16666666666666666) * t19) + t56))
                     - psiddot
-                        * (t9 * (T::from_f64(0.25) * t45 + t26)
-                            + T::from_f64(0.125) * t15 * t18)) + t54 * (t22 + t23),
-            t20 + t21 - m * (t52 * t16 + gammaddot * t49 - t54 * t17),
+                        * (t9 * (T::from_f64(0.25) * t44 + t26)
+                            + T::from_f64(0.125) * t15 * t18)) + t53 * (t22 + t23),
+            t20 + t21 - m * (t51 * t16 + gammaddot * t48 - t53 * t17),
             t22 + t23
                 - m
-                    * (t59 * (t49 * (T::from_f64(1.0) + T::from_f64(1.0)))
-                        + t54 * psiddot),
-            f_z - m * g - m * (t16 * t53 + gammaddot * t51),
+                    * (t58 * (t48 * (T::from_f64(1.0) + T::from_f64(1.0)))
+                        + t53 * psiddot),
+            f_z - m * g - m * (t16 * t52 + gammaddot * t50),
         );
         (a, b)
     }

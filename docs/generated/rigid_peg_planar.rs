@@ -32,7 +32,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 58 add/sub, 105 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 48 `let`s.
+    /// 58 add/sub, 103 mul, 5 div, 0 sqrt, 5 transcendental, 0 branches; 47 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -77,63 +77,62 @@ pub mod rigid_peg_planar {
         let t18 = t17 * t7;
         let t19 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
         let t20 = t18.hypot(t10);
-        let t21 = T::from_f64(1.0) / t20;
-        let t22 = d_peg * t4 * t11;
-        let t23 = t22 * t7;
-        let t24 = t12 * t6;
-        let t25 = t23 - T::from_f64(0.5) * t24;
-        let t26 = sin_gamma * t25;
-        let t27 = sin_gamma * t19;
-        let t28 = -t23 + T::from_f64(0.5) * t24;
-        let t29 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t30 = t29 * t6;
-        let t31 = t12 * t22;
-        let t32 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t33 = cos_gamma * t32 + t26;
-        let t34 = cos_gamma * (t17 * t9 + t28);
-        let t35 = t10 + t34 - t27;
-        let t36 = -t32;
-        let t37 = sin_gamma
-            * (t36 + t7 * (T::from_f64(0.5) * (t13 - t5) * d_peg + t15) + t30
-                - T::from_f64(2.0) * t31) + T::from_f64(2.0) * cos_gamma * t25;
-        let t38 = -t19;
-        let t39 = d_hole
-            * (t16 * (-t7 - T::from_f64(2.0) * t29) - T::from_f64(0.5) * cos_gamma * t7)
+        let t21 = d_peg * t4 * t11;
+        let t22 = t21 * t7;
+        let t23 = t12 * t6;
+        let t24 = t22 - T::from_f64(0.5) * t23;
+        let t25 = sin_gamma * t24;
+        let t26 = sin_gamma * t19;
+        let t27 = -t22 + T::from_f64(0.5) * t23;
+        let t28 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t29 = t28 * t6;
+        let t30 = t12 * t21;
+        let t31 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t32 = cos_gamma * t31 + t25;
+        let t33 = cos_gamma * (t17 * t9 + t27);
+        let t34 = t10 + t33 - t26;
+        let t35 = -t31;
+        let t36 = sin_gamma
+            * (t35 + t7 * (T::from_f64(0.5) * (t13 - t5) * d_peg + t15) + t29
+                - T::from_f64(2.0) * t30) + T::from_f64(2.0) * cos_gamma * t24;
+        let t37 = -t19;
+        let t38 = d_hole
+            * (t16 * (-t7 - T::from_f64(2.0) * t28) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
-                * (t38
+                * (t37
                     + t7
                         * (T::from_f64(0.5) * (-t13 + t5) * d_peg
-                            - T::from_f64(0.5) * t6) - t30 + T::from_f64(2.0) * t31)
-            - T::from_f64(2.0) * sin_gamma * t28;
-        let t40 = cos_gamma * (t19 + t32) - t18 + t26;
-        let t41 = sin_gamma * (t38 + t36);
-        let t42 = t7 * (t15 + t17 * cos_gamma) * t7;
-        let t43 = t33 * t37;
-        let t44 = t39 * (d_hole + T::from_f64(2.0) * t34 - T::from_f64(2.0) * t27);
-        let t45 = m * t14;
+                            - T::from_f64(0.5) * t6) - t29 + T::from_f64(2.0) * t30)
+            - T::from_f64(2.0) * sin_gamma * t27;
+        let t39 = cos_gamma * (t19 + t31) - t18 + t25;
+        let t40 = sin_gamma * (t37 + t35);
+        let t41 = t7 * (t15 + t17 * cos_gamma) * t7;
+        let t42 = t32 * t36;
+        let t43 = t38 * (d_hole + T::from_f64(2.0) * t33 - T::from_f64(2.0) * t26);
+        let t44 = m * t14;
         let a = Matrix3::new(
             m
                 * (T::from_f64(0.08333333333333333)
-                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t33 * t33
-                    + t35 * t35),
-            f * (-(t_k_eta * t40) - t_k_z * (t34 + t41)),
-            T::from_f64(2.0) * (-(t40 * t_b_eta) - (t10 + t34 + t41 + t42) * t_b_z) * f,
-            m * t33,
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t32 * t32
+                    + t34 * t34),
+            f * (-(t_k_eta * t39) - t_k_z * (t33 + t40)),
+            T::from_f64(2.0) * (-(t39 * t_b_eta) - (t10 + t33 + t40 + t41) * t_b_z) * f,
+            m * t32,
             -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t5,
-            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t42 * t21,
-            m * t35,
+            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t41 / t20,
+            m * t34,
             -(f * t_k_z) - sin_gamma,
-            -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * t18 * t21,
+            -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * t18 / t20,
         );
         let b = Vector3::new(
             m_gamma
                 + m
                     * (T::from_f64(0.5)
-                        * (-(T::from_f64(4.0) * t43 + T::from_f64(2.0) * t44)
-                            + T::from_f64(2.0) * t43 + t44) * t14 - g * t35) + f_z * t35
-                + f_x * t33,
-            f_x - t45 * t37,
-            f_z - m * g - t45 * t39,
+                        * (-(T::from_f64(4.0) * t42 + T::from_f64(2.0) * t43)
+                            + T::from_f64(2.0) * t42 + t43) * t14 - g * t34) + f_z * t34
+                + f_x * t32,
+            f_x - t44 * t36,
+            f_z - m * g - t44 * t38,
         );
         (a, b)
     }
@@ -152,7 +151,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 60 add/sub, 106 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 47 `let`s.
+    /// 60 add/sub, 104 mul, 5 div, 0 sqrt, 5 transcendental, 0 branches; 46 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -198,61 +197,60 @@ pub mod rigid_peg_planar {
         let t18 = t17 * t7;
         let t19 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
         let t20 = t18.hypot(t10);
-        let t21 = T::from_f64(1.0) / t20;
-        let t22 = d_peg * t4 * t11;
-        let t23 = t22 * t7;
-        let t24 = t12 * t6;
-        let t25 = t23 - T::from_f64(0.5) * t24;
-        let t26 = sin_gamma * t25;
-        let t27 = sin_gamma * t19;
-        let t28 = -t23 + T::from_f64(0.5) * t24;
-        let t29 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t30 = t29 * t6;
-        let t31 = t12 * t22;
-        let t32 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t33 = cos_gamma * t32 + t26;
-        let t34 = cos_gamma * (t17 * t9 + t28);
-        let t35 = t10 + t34 - t27;
-        let t36 = -t32;
-        let t37 = sin_gamma
-            * (t36 + t7 * (T::from_f64(0.5) * (t13 - t5) * d_peg + t15) + t30
-                - T::from_f64(2.0) * t31) + T::from_f64(2.0) * cos_gamma * t25;
-        let t38 = -t19;
-        let t39 = d_hole
-            * (t16 * (-t7 - T::from_f64(2.0) * t29) - T::from_f64(0.5) * cos_gamma * t7)
+        let t21 = d_peg * t4 * t11;
+        let t22 = t21 * t7;
+        let t23 = t12 * t6;
+        let t24 = t22 - T::from_f64(0.5) * t23;
+        let t25 = sin_gamma * t24;
+        let t26 = sin_gamma * t19;
+        let t27 = -t22 + T::from_f64(0.5) * t23;
+        let t28 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t29 = t28 * t6;
+        let t30 = t12 * t21;
+        let t31 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
+        let t32 = cos_gamma * t31 + t25;
+        let t33 = cos_gamma * (t17 * t9 + t27);
+        let t34 = t10 + t33 - t26;
+        let t35 = -t31;
+        let t36 = sin_gamma
+            * (t35 + t7 * (T::from_f64(0.5) * (t13 - t5) * d_peg + t15) + t29
+                - T::from_f64(2.0) * t30) + T::from_f64(2.0) * cos_gamma * t24;
+        let t37 = -t19;
+        let t38 = d_hole
+            * (t16 * (-t7 - T::from_f64(2.0) * t28) - T::from_f64(0.5) * cos_gamma * t7)
             + cos_gamma
-                * (t38
+                * (t37
                     + t7
                         * (T::from_f64(0.5) * (-t13 + t5) * d_peg
-                            - T::from_f64(0.5) * t6) - t30 + T::from_f64(2.0) * t31)
-            - T::from_f64(2.0) * sin_gamma * t28;
-        let t40 = cos_gamma * (t19 + t32) - t18 + t26;
-        let t41 = sin_gamma * (t38 + t36);
-        let t42 = t7 * (t15 + t17 * cos_gamma) * t7;
-        let t43 = t33 * t37;
-        let t44 = t39 * (d_hole + T::from_f64(2.0) * t34 - T::from_f64(2.0) * t27);
+                            - T::from_f64(0.5) * t6) - t29 + T::from_f64(2.0) * t30)
+            - T::from_f64(2.0) * sin_gamma * t27;
+        let t39 = cos_gamma * (t19 + t31) - t18 + t25;
+        let t40 = sin_gamma * (t37 + t35);
+        let t41 = t7 * (t15 + t17 * cos_gamma) * t7;
+        let t42 = t32 * t36;
+        let t43 = t38 * (d_hole + T::from_f64(2.0) * t33 - T::from_f64(2.0) * t26);
         let a = Matrix3::new(
             -T::from_f64(1.0),
-            f * (-(t_k_eta * t40) - t_k_z * (t34 + t41)),
-            T::from_f64(2.0) * (-(t40 * t_b_eta) - (t10 + t34 + t41 + t42) * t_b_z) * f,
+            f * (-(t_k_eta * t39) - t_k_z * (t33 + t40)),
+            T::from_f64(2.0) * (-(t39 * t_b_eta) - (t10 + t33 + t40 + t41) * t_b_z) * f,
             T::from_f64(0.0),
             -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t5,
-            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t42 * t21,
+            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t41 / t20,
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * t18 * t21,
+            -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * t18 / t20,
         );
         let b = Vector3::new(
             m
                 * (T::from_f64(0.5)
-                    * (-(T::from_f64(4.0) * t43 + T::from_f64(2.0) * t44)
-                        + T::from_f64(2.0) * t43 + t44) * t14 - g * t35
+                    * (-(T::from_f64(4.0) * t42 + T::from_f64(2.0) * t43)
+                        + T::from_f64(2.0) * t42 + t43) * t14 - g * t34
                     - gammaddot
                         * (T::from_f64(0.08333333333333333)
-                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t33 * t33
-                            + t35 * t35)) + f_z * t35 + f_x * t33,
-            f_x - m * (t37 * t14 + gammaddot * t33),
-            f_z - m * g - m * (t14 * t39 + gammaddot * t35),
+                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t32 * t32
+                            + t34 * t34)) + f_z * t34 + f_x * t32,
+            f_x - m * (t36 * t14 + gammaddot * t32),
+            f_z - m * g - m * (t14 * t38 + gammaddot * t34),
         );
         (a, b)
     }

@@ -37,6 +37,19 @@ fn expensive(g: &Graph, node: &Node) -> bool {
     }
 }
 
+/// A reciprocal `b⁻¹` used by at most [`MAX_DIVIDING_USERS`] products:
+/// emitted as a division in each (`n₁ / b`, `n₂ / b`) rather than bound as
+/// `1 / b` and multiplied. Two divisions cost about as much throughput as
+/// one division and two multiplications, and take one multiplication off
+/// the critical path (the division waits for `b`, the numerators do not).
+fn shared_reciprocal(g: &Graph, node: &Node, uses: u32) -> bool {
+    matches!(node, Node::Pow(_, e) if const_exponent(g, *e) == Some(-1.0))
+        && (2..=MAX_DIVIDING_USERS).contains(&uses)
+}
+
+/// Users up to which a shared reciprocal is a division in each.
+const MAX_DIVIDING_USERS: u32 = 2;
+
 /// Operands that must be a name because the emitted form repeats them.
 fn repeated_operand(g: &Graph, node: &Node) -> Option<Id> {
     match node {
@@ -94,6 +107,14 @@ impl Schedule {
                         named[i] = true;
                     }
                     Node::Const(_) => {}
+                    _ if shared_reciprocal(g, node, uses[i]) => {
+                        // Divide in each of its two users (as a person
+                        // writes Cramer's rule): the base is named instead.
+                        if let Node::Pow(b, _) = node {
+                            let atomic = g.with_node(*b, |n| matches!(n, Node::Const(_)));
+                            named[b.index()] |= !atomic;
+                        }
+                    }
                     _ => named[i] |= uses[i] > 1 || expensive(g, node),
                 }
                 if let Some(a) = repeated_operand(g, node) {
