@@ -9,6 +9,9 @@
 //!    `a·x + a·y + z → a·(x + y) + z`, and the rule is applied again inside
 //!    and outside the bracket. The sub-sums it creates are hash-consed, so
 //!    `(m₁ + m₂)` built in two places is one value, bound once.
+//!    Then, in a product with one reciprocal factor, powers of parameters
+//!    common to numerator and denominator cancel (Cramer's rule:
+//!    `l₁ l₂² S / (l₁² l₂² S₂) → S / (l₁ S₂)`).
 //! 2. **Sub-products are shared**: the pair of factors that occurs together
 //!    in the most products (at least two) becomes a product of its own and
 //!    replaces the pair everywhere; repeated until no pair recurs (greedy
