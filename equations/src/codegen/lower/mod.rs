@@ -1,0 +1,197 @@
+//! Lowering before emission: the canonical DAG (flat, expanded sums and
+//! products) rewritten into the shape a person would write by hand, so
+//! that the emitted code does the same work as a hand-derived form.
+//!
+//! Two passes, both over the nodes reachable from a function's outputs:
+//!
+//! 1. **Sums are factored** greedily (multivariate Horner): in a sum of
+//!    products, the factor shared by the most terms is taken out,
+//!    `a·x + a·y + z → a·(x + y) + z`, and the rule is applied again inside
+//!    and outside the bracket. The sub-sums it creates are hash-consed, so
+//!    `(m₁ + m₂)` built in two places is one value, bound once.
+//!    Then, in a product with one reciprocal factor, powers of parameters
+//!    common to numerator and denominator cancel (Cramer's rule:
+//!    `l₁ l₂² S / (l₁² l₂² S₂) → S / (l₁ S₂)`).
+//! 2. **Sub-products are shared**: the pair of factors that occurs together
+//!    in the most products (at least two) becomes a product of its own and
+//!    replaces the pair everywhere; repeated until no pair recurs (greedy
+//!    pair extraction). `m₂·l₁·l₂` in five terms is computed once.
+//!
+//! The new nodes are interned without simplification (the simplifier would
+//! flatten them back), so they live beside the canonical ones in the same
+//! arena and only the emitter sees them. The interpreter
+//! ([`crate::eval::Tape`]) keeps evaluating the canonical DAG: it is the
+//! independent oracle that `tests/generated_vs_interpreter.rs` checks the
+//! lowered code against. Constants are never taken out (they fold into the
+//! coefficient of a term), so the number of multiplications never grows.
+
+mod cancel;
+mod horner;
+mod pairs;
+
+use std::collections::HashMap;
+
+use crate::graph::{Graph, Id, Node};
+use crate::simplify::{konst, term_parts};
+
+/// The lowered roots of `roots` (same values, same order).
+pub fn lower(g: &Graph, roots: &[Id]) -> Vec<Id> {
+    let factored = rebuild(g, roots, |g, _, node, _| match node {
+        Node::Add(xs) => horner::factor_sum(g, &xs),
+        node => g.intern(node),
+    });
+    let cancelled = rebuild(g, &factored, |g, _, node, _| match node {
+        Node::Mul(_) => cancel::cancel_parameters(g, g.intern(node)),
+        node => g.intern(node),
+    });
+    pairs::share_products(g, &cancelled)
+}
+
+/// Rebuilds the nodes reachable from `roots` in arena (children-first)
+/// order, each with its children replaced by their rebuilt ids, through
+/// `f(graph, old id, node with new children, old → new so far)`.
+pub(super) fn rebuild(
+    g: &Graph,
+    roots: &[Id],
+    mut f: impl FnMut(&Graph, Id, Node, &HashMap<Id, Id>) -> Id,
+) -> Vec<Id> {
+    let live = live_nodes(g, roots);
+    let mut map: HashMap<Id, Id> = HashMap::with_capacity(live.len());
+    for &id in &live {
+        let node = g.node(id);
+        let new = match node {
+            Node::Const(_) | Node::Sym(_) => id,
+            node => {
+                let mapped = map_children(&node, &map);
+                f(g, id, mapped, &map)
+            }
+        };
+        map.insert(id, new);
+    }
+    roots.iter().map(|r| map[r]).collect()
+}
+
+/// Ids reachable from `roots`, in arena order.
+pub(super) fn live_nodes(g: &Graph, roots: &[Id]) -> Vec<Id> {
+    let n = roots.iter().map(|r| r.index() + 1).max().unwrap_or(0);
+    let mut live = vec![false; n];
+    for r in roots {
+        live[r.index()] = true;
+    }
+    for i in (0..n).rev() {
+        if live[i] {
+            g.with_node(Id(i as u32), |node| {
+                node.for_each_child(|c| live[c.index()] = true)
+            });
+        }
+    }
+    (0..n).filter(|&i| live[i]).map(|i| Id(i as u32)).collect()
+}
+
+fn map_children(node: &Node, map: &HashMap<Id, Id>) -> Node {
+    let m = |id: &Id| map[id];
+    match node {
+        Node::Const(_) | Node::Sym(_) => node.clone(),
+        Node::Add(xs) => Node::Add(xs.iter().map(m).collect()),
+        Node::Mul(xs) => Node::Mul(xs.iter().map(m).collect()),
+        Node::Pow(a, b) => Node::Pow(m(a), m(b)),
+        Node::Unary(op, a) => Node::Unary(*op, m(a)),
+        Node::Binary(op, a, b) => Node::Binary(*op, m(a), m(b)),
+    }
+}
+
+/// A term of a sum: coefficient times factors (none of them constant).
+pub(super) type Term = (f64, Vec<Id>);
+
+/// The factors of a (possibly lowered) product, nested products flattened
+/// and a base met more than once with positive integer exponents merged
+/// into one power (`l₁ · (l₁ · x) → l₁² · x`, the `l₁²` the model already
+/// computes).
+pub(super) fn factors_of(g: &Graph, id: Id) -> Term {
+    let (c, fs) = flat_factors(g, id);
+    (c, merge_powers(g, fs))
+}
+
+/// `(base, positive integer exponent)` of a factor.
+pub(super) fn base_exponent(g: &Graph, f: Id) -> Option<(Id, i32)> {
+    match g.node(f) {
+        Node::Pow(b, e) => match crate::simplify::const_of(g, e) {
+            Some(n) if n.fract() == 0.0 && (1.0..=64.0).contains(&n) => Some((b, n as i32)),
+            _ => None,
+        },
+        _ => Some((f, 1)),
+    }
+}
+
+fn merge_powers(g: &Graph, fs: Vec<Id>) -> Vec<Id> {
+    let keyed: Vec<Option<(Id, i32)>> = fs.iter().map(|&f| base_exponent(g, f)).collect();
+    let repeated = |b: Id| keyed.iter().flatten().filter(|(x, _)| *x == b).count() > 1;
+    if !keyed.iter().flatten().any(|&(b, _)| repeated(b)) {
+        return fs;
+    }
+    let mut out: Vec<Id> = Vec::with_capacity(fs.len());
+    let mut done: Vec<Id> = Vec::new();
+    for (&f, k) in fs.iter().zip(&keyed) {
+        match k {
+            Some((b, _)) if repeated(*b) => {
+                if done.contains(b) {
+                    continue;
+                }
+                done.push(*b);
+                let n: i32 = keyed
+                    .iter()
+                    .flatten()
+                    .filter(|(x, _)| x == b)
+                    .map(|(_, n)| n)
+                    .sum();
+                out.push(g.intern(Node::Pow(*b, konst(g, f64::from(n)))));
+            }
+            _ => out.push(f),
+        }
+    }
+    out
+}
+
+/// The coefficient and factors of a product, nested products flattened.
+fn flat_factors(g: &Graph, id: Id) -> Term {
+    let (c, fs) = term_parts(g, id);
+    let mut coef = c;
+    let mut out = Vec::with_capacity(fs.len());
+    for f in fs {
+        if matches!(g.node(f), Node::Mul(_)) {
+            let (c2, inner) = flat_factors(g, f);
+            coef *= c2;
+            out.extend(inner);
+        } else {
+            out.push(f);
+        }
+    }
+    (coef, out)
+}
+
+/// A sum node of `addends` (one addend stands for itself).
+pub(super) fn sum_node(g: &Graph, addends: Vec<Id>) -> Id {
+    match addends.len() {
+        1 => addends[0],
+        _ => g.intern(Node::Add(addends.into_boxed_slice())),
+    }
+}
+
+/// `c · f₁ · f₂ · …` as a node: constant first, nested products next (so
+/// that they print without brackets), the rest in their given order.
+pub(super) fn term_node(g: &Graph, (c, fs): Term) -> Id {
+    if fs.is_empty() {
+        return konst(g, c);
+    }
+    if c == 1.0 && fs.len() == 1 {
+        return fs[0];
+    }
+    let (mut nested, rest): (Vec<Id>, Vec<Id>) = fs
+        .into_iter()
+        .partition(|&f| matches!(g.node(f), Node::Mul(_)));
+    nested.extend(rest);
+    if c != 1.0 {
+        nested.insert(0, konst(g, c));
+    }
+    g.intern(Node::Mul(nested.into_boxed_slice()))
+}
