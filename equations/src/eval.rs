@@ -193,18 +193,8 @@ pub struct Tape {
 impl Tape {
     /// Compiles the nodes reachable from `roots`.
     pub fn new(g: &Graph, roots: &[Id]) -> Tape {
-        let n = roots.iter().map(|r| r.index() + 1).max().unwrap_or(0);
-        let mut live = vec![false; n];
-        for r in roots {
-            live[r.index()] = true;
-        }
-        for i in (0..n).rev() {
-            if live[i] {
-                g.with_node(Id(i as u32), |node| {
-                    node.for_each_child(|c| live[c.index()] = true)
-                });
-            }
-        }
+        let live = g.reachable(roots);
+        let n = live.len();
         // The emitter's plan: sums are factored only where it factors them.
         let sched = crate::codegen::schedule::Schedule::new(g, roots);
         let mut slot = vec![u32::MAX; n];

@@ -58,6 +58,25 @@ impl Graph {
         id
     }
 
+    /// `reachable[i]`: node `i` is reachable from one of `roots` (the
+    /// vector covers ids up to the largest root). One backward sweep over
+    /// the arena, which lists children before parents.
+    pub fn reachable(&self, roots: &[Id]) -> Vec<bool> {
+        let n = roots.iter().map(|r| r.index() + 1).max().unwrap_or(0);
+        let mut live = vec![false; n];
+        for r in roots {
+            live[r.index()] = true;
+        }
+        for i in (0..n).rev() {
+            if live[i] {
+                self.with_node(Id(i as u32), |node| {
+                    node.for_each_child(|c| live[c.index()] = true)
+                });
+            }
+        }
+        live
+    }
+
     /// The id of `node` if an equal node is already stored. Unlike
     /// [`Graph::intern`] this never grows the arena, so rules can ask "does
     /// the partner term exist?" without leaving garbage behind.

@@ -73,19 +73,11 @@ pub(super) fn rebuild(
 
 /// Ids reachable from `roots`, in arena order.
 pub(super) fn live_nodes(g: &Graph, roots: &[Id]) -> Vec<Id> {
-    let n = roots.iter().map(|r| r.index() + 1).max().unwrap_or(0);
-    let mut live = vec![false; n];
-    for r in roots {
-        live[r.index()] = true;
-    }
-    for i in (0..n).rev() {
-        if live[i] {
-            g.with_node(Id(i as u32), |node| {
-                node.for_each_child(|c| live[c.index()] = true)
-            });
-        }
-    }
-    (0..n).filter(|&i| live[i]).map(|i| Id(i as u32)).collect()
+    let live = g.reachable(roots);
+    (0..live.len())
+        .filter(|&i| live[i])
+        .map(|i| Id(i as u32))
+        .collect()
 }
 
 fn map_children(node: &Node, map: &HashMap<Id, Id>) -> Node {
