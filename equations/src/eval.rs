@@ -91,8 +91,9 @@ pub fn pow(b: f64, e: f64) -> f64 {
     }
 }
 
-/// The order in which the terms of a sum are added (left to right), by the
-/// interpreter and by the emitted code alike: terms that are products of
+/// The order in which the terms of a sum are added (left to right) by the
+/// interpreter, and the order the lowering (`codegen::lower`) keeps between
+/// its two groups in the emitted code: terms that are products of
 /// parameters (with a constant coefficient) first, then the others, each
 /// group in canonical order. Alike parameters (`r` and `−D/2`) then meet
 /// before a small state-dependent term is added, so their difference is
@@ -106,28 +107,25 @@ pub fn sum_order(g: &Graph, xs: &[Id]) -> Vec<Id> {
 /// True for a sum term that is a product of parameters (with a constant
 /// coefficient): the first group of [`sum_order`].
 pub fn is_param_term(g: &Graph, t: Id) -> bool {
-    let (_, fs) = crate::simplify::term_parts(g, t);
-    !fs.is_empty()
-        && fs.iter().all(|&f| match g.node(f) {
-            Node::Sym(s) => g.sym_info(s).kind == crate::graph::SymKind::Param,
-            _ => false,
-        })
+    crate::simplify::all_params(g, &crate::simplify::term_parts(g, t).1)
 }
 
 /// A sum evaluated as `common₁ · common₂ · … · (Σ cₖ · restₖ)`: every term
 /// is a product holding all the `common` factors (`m1 l1 s + m2 l1 s` is
 /// `l1 · s · (m1 + m2)`), which saves a multiplication per common factor
-/// and term. The interpreter and the emitter evaluate sums this way alike.
+/// and term. The interpreter applies it to the canonical DAG's sums, the
+/// emitter to the lowered ones (where the lowering's Horner pass has
+/// already taken out most common factors).
 #[derive(Clone, Debug, PartialEq)]
 pub struct FactoredSum {
     /// The shared non-constant factors, in canonical order.
     pub common: Vec<Id>,
-    /// Each term's coefficient and remaining factors, in
-    /// [`sum_order`] of the terms.
+    /// Each term's coefficient and remaining factors, in the order of the
+    /// terms given.
     pub rest: Vec<(f64, Vec<Id>)>,
 }
 
-/// The factored form of the sum of `xs` (in [`sum_order`]), when every term
+/// The factored form of the sum of `xs` (in the order given), when every term
 /// is a product that is not bound to a name (`named`: a `let` of the
 /// emitter's [`Schedule`](crate::codegen::schedule::Schedule), whose value
 /// is reused rather than recomputed) and they share at least one
@@ -179,7 +177,8 @@ enum Op {
 }
 
 /// A compiled program for the nodes reachable from some roots: one
-/// instruction per node, in arena (topological) order, the operands of sums
+/// instruction per node (plus the products and sum of each factored sum,
+/// [`factor_sum`]), in arena (topological) order, the operands of sums
 /// and products in one flat array. Evaluation allocates nothing beyond the
 /// caller's scratch buffer.
 #[derive(Clone, Debug)]
@@ -193,10 +192,11 @@ pub struct Tape {
 impl Tape {
     /// Compiles the nodes reachable from `roots`.
     pub fn new(g: &Graph, roots: &[Id]) -> Tape {
-        let live = g.reachable(roots);
-        let n = live.len();
-        // The emitter's plan: sums are factored only where it factors them.
+        // Sums are factored where `factor_sum` factors them under this
+        // plan of the canonical DAG (the emitter plans the lowered one).
         let sched = crate::codegen::schedule::Schedule::new(g, roots);
+        let live = &sched.live;
+        let n = live.len();
         let mut slot = vec![u32::MAX; n];
         let mut ops = Vec::new();
         let mut args = Vec::new();
@@ -302,7 +302,8 @@ impl Tape {
     /// `scratch` as working memory (resized as needed, so a reused buffer
     /// makes evaluation allocation-free), writing `out[k]` for root `k`.
     ///
-    /// Sums and products are evaluated left to right in canonical operand
+    /// Sums are evaluated left to right in [`sum_order`] (factored as
+    /// [`factor_sum`] says), products left to right in canonical operand
     /// order; powers, functions and their NaN behaviour are [`pow`],
     /// [`unary`] and [`binary`], the definitions the emitted code uses.
     ///

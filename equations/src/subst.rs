@@ -1,7 +1,7 @@
 //! Substitution of symbols by expressions.
 //!
-//! [`substitute`] rebuilds an expression with some symbols replaced, through
-//! the simplifying constructors, so that what the replacement makes trivial
+//! [`Expr::subs`] and [`Substitution`] rebuild an expression with some
+//! symbols replaced, through the simplifying constructors, so that what the replacement makes trivial
 //! folds away (`x·0 = 0`, `cos 0 = 1`, `a·N + (−a)·N = 0`). Memoized over the
 //! DAG: shared subexpressions are rebuilt once.
 //!
@@ -26,12 +26,7 @@ use crate::graph::{Graph, Id, Node, Sym};
 use crate::simplify;
 
 /// `e` with every symbol of `map` replaced by its expression (all at once:
-/// a replacement is not itself substituted into).
-pub fn substitute(g: &Graph, e: Id, map: &HashMap<Sym, Id>) -> Id {
-    let mut memo = HashMap::new();
-    subst_memo(g, e, map, &mut memo)
-}
-
+/// a replacement is not itself substituted into), rebuilt nodes in `memo`.
 fn subst_memo(g: &Graph, e: Id, map: &HashMap<Sym, Id>, memo: &mut HashMap<Id, Id>) -> Id {
     if let Some(&r) = memo.get(&e) {
         return r;
@@ -115,7 +110,7 @@ impl Substitution {
 ///
 /// # Panics
 /// If a left-hand side is not a symbol (a bug in the calling model).
-pub fn map_of(pairs: &[(Expr<'_>, Expr<'_>)]) -> HashMap<Sym, Id> {
+fn map_of(pairs: &[(Expr<'_>, Expr<'_>)]) -> HashMap<Sym, Id> {
     pairs
         .iter()
         .map(|&(s, v)| match s.node() {
@@ -131,12 +126,6 @@ impl<'g> Expr<'g> {
     /// # Panics
     /// If a left-hand side is not a symbol.
     pub fn subs(self, pairs: &[(Expr<'g>, Expr<'g>)]) -> Expr<'g> {
-        self.subs_map(&map_of(pairs))
-    }
-
-    /// `self` with the symbols of a prepared map replaced.
-    pub fn subs_map(self, map: &HashMap<Sym, Id>) -> Expr<'g> {
-        let g = self.graph();
-        g.expr(substitute(g, self.id(), map))
+        Substitution::new(pairs).apply(self)
     }
 }

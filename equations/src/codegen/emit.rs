@@ -164,7 +164,7 @@ impl<'a> Emitter<'a> {
                 let name = self.name(id);
                 Frag::new(quote!(#name), Prec::Atom)
             }
-            // Lowered sums are already in evaluation order (lower.rs).
+            // Lowered sums are already in evaluation order (`lower::horner`).
             Node::Add(xs) => self.sum(&xs),
             Node::Mul(xs) => self.product(&xs, None),
             Node::Pow(b, e) => self.power(b, e),
@@ -388,8 +388,8 @@ impl<'a> Emitter<'a> {
         }
     }
 
-    /// A one-argument function; the branchy ones exactly as
-    /// [`crate::eval::unary`].
+    /// A one-argument function as a `Real` method call (`max0`, `step` and
+    /// `sign` with the semantics of [`crate::eval::unary`]).
     fn unary(&mut self, op: Unary, a: Id) -> Frag {
         let x = self.frag(a).at(Prec::Atom);
         let call = |m: &str| {

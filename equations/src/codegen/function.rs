@@ -157,11 +157,10 @@ pub fn function(
     let mut lowered = roots.iter();
     for (_, out) in &spec.outputs {
         types.push(output_type(out, uses));
-        let entries = out
-            .ids()
-            .iter()
-            .zip(lowered.by_ref())
-            .map(|(_, &id)| em.expr(id))
+        let entries = lowered
+            .by_ref()
+            .take(out.ids().len())
+            .map(|&id| em.expr(id))
             .collect();
         values.push(output_value(out, entries, uses));
     }

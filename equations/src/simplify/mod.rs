@@ -83,6 +83,19 @@ pub(crate) fn term_parts(g: &Graph, id: Id) -> (f64, Vec<Id>) {
     })
 }
 
+/// True when `id` is a parameter symbol.
+pub(crate) fn is_param(g: &Graph, id: Id) -> bool {
+    g.with_node(id, |n| match n {
+        Node::Sym(s) => g.sym_info(*s).kind == crate::graph::SymKind::Param,
+        _ => false,
+    })
+}
+
+/// True when `fs` is not empty and every factor in it is a parameter symbol.
+pub(crate) fn all_params(g: &Graph, fs: &[Id]) -> bool {
+    !fs.is_empty() && fs.iter().all(|&f| is_param(g, f))
+}
+
 /// `c · base` for a base that is not a constant, in canonical form.
 pub(crate) fn scale(g: &Graph, c: f64, base: Id) -> Id {
     if c == 0.0 {

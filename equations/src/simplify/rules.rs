@@ -10,8 +10,8 @@
 //!
 //! To add a law, write its function (in `super::laws` or a new sibling
 //! module) and add a row. A [`Site::Sum`] rule must strictly decrease the
-//! number of `cos` occurrences in the sum (counted as a tree): that is the
-//! measure that proves the sum rules terminate, and `rewrite_sum` refuses
+//! number of `cos` and `exp` occurrences in the sum (counted as a tree,
+//! `sum_measure`): that is the measure that proves the sum rules terminate, and `rewrite_sum` refuses
 //! (and in debug builds reports) a rewrite that does not decrease it.
 
 use std::cell::Cell;
@@ -371,7 +371,7 @@ pub(crate) fn rewrite_sum(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
     for rule in active() {
         let Site::Sum(f) = rule.site else { continue };
         if let Some(next) = f(g, terms) {
-            if cos_count(g, &next) < cos_count(g, terms) {
+            if sum_measure(g, &next) < sum_measure(g, terms) {
                 return Some(next);
             }
             debug_assert!(
@@ -386,7 +386,7 @@ pub(crate) fn rewrite_sum(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
 
 /// The termination measure of the sum rules: occurrences of `cos` and
 /// `exp` in the terms, counted as a tree (saturating).
-pub(crate) fn cos_count(g: &Graph, terms: &[Id]) -> u64 {
+pub(crate) fn sum_measure(g: &Graph, terms: &[Id]) -> u64 {
     fn count(g: &Graph, id: Id, memo: &mut HashMap<Id, u64>) -> u64 {
         if let Some(&n) = memo.get(&id) {
             return n;

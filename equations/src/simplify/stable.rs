@@ -5,17 +5,8 @@
 //! buys); each is shown by a hard case in `tests/hard_cases_rewrites.rs`.
 
 use super::laws::{find_pair, find_term, remove, without};
-use super::{add, const_of, konst, mul, pow, term_parts, unary};
-use crate::graph::{Binary, Const, Graph, Id, Node, SymKind, Unary};
-
-/// True when every factor in `fs` is a parameter symbol.
-fn all_params(g: &Graph, fs: &[Id]) -> bool {
-    !fs.is_empty()
-        && fs.iter().all(|&f| match g.node(f) {
-            Node::Sym(s) => g.sym_info(s).kind == SymKind::Param,
-            _ => false,
-        })
-}
+use super::{add, all_params, const_of, konst, mul, pow, term_parts, unary};
+use crate::graph::{Binary, Const, Graph, Id, Node, Unary};
 
 /// The position of a factor `cos(u)` in `fs`, and `u`.
 fn cos_factor(g: &Graph, fs: &[Id]) -> Option<(usize, Id)> {
@@ -86,7 +77,7 @@ pub(super) fn cos_near_equal(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
         }
     }
     // A cofactor that itself holds cos(u) would keep the count: no rewrite.
-    let fewer = super::rules::cos_count(g, &next) < super::rules::cos_count(g, terms);
+    let fewer = super::rules::sum_measure(g, &next) < super::rules::sum_measure(g, terms);
     fewer.then_some(next)
 }
 

@@ -8,11 +8,7 @@ use crate::simplify::konst;
 /// `(parameter symbol, positive integer exponent)` of a factor that is a
 /// parameter or a positive integer power of one.
 fn parameter_power(g: &Graph, f: Id) -> Option<(Id, i32)> {
-    let (b, n) = base_exponent(g, f)?;
-    match g.node(b) {
-        Node::Sym(s) if g.sym_info(s).kind == crate::graph::SymKind::Param => Some((b, n)),
-        _ => None,
-    }
+    base_exponent(g, f).filter(|&(b, _)| crate::simplify::is_param(g, b))
 }
 
 /// Pass 1b: in a product `n₁ n₂ … / (d₁ d₂ …)` (one reciprocal factor of
@@ -26,35 +22,29 @@ pub(super) fn cancel_parameters(g: &Graph, id: Id) -> Id {
         Node::Pow(x, e) if crate::simplify::const_of(g, e) == Some(-1.0) => Some(x),
         _ => None,
     };
-    let recips: Vec<usize> = (0..fs.len())
-        .filter(|&k| reciprocal(&fs[k]).is_some())
+    let recips: Vec<(usize, Id)> = fs
+        .iter()
+        .enumerate()
+        .filter_map(|(k, f)| reciprocal(f).map(|x| (k, x)))
         .collect();
-    let [r] = recips[..] else {
+    let [(r, den)] = recips[..] else {
         return id;
     };
-    let Some(den) = reciprocal(&fs[r]) else {
-        return id;
-    };
-    let (dc, dfs) = factors_of(g, den);
+    let (dc, mut dfs) = factors_of(g, den);
     let mut num: Vec<Id> = fs
         .iter()
         .enumerate()
         .filter(|&(k, _)| k != r)
         .map(|(_, &f)| f)
         .collect();
-    let mut dfs = dfs;
     let mut changed = false;
     for x in num.iter_mut() {
         let Some((b, n)) = parameter_power(g, *x) else {
             continue;
         };
-        let Some(j) = dfs
-            .iter()
-            .position(|&f| parameter_power(g, f).is_some_and(|(x, _)| x == b))
-        else {
-            continue;
-        };
-        let Some((_, m)) = parameter_power(g, dfs[j]) else {
+        let Some((j, m)) = dfs.iter().enumerate().find_map(|(j, &f)| {
+            parameter_power(g, f).and_then(|(x, m)| (x == b).then_some((j, m)))
+        }) else {
             continue;
         };
         let t = n.min(m);

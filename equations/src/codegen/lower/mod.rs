@@ -2,28 +2,29 @@
 //! products) rewritten into the shape a person would write by hand, so
 //! that the emitted code does the same work as a hand-derived form.
 //!
-//! Two passes, both over the nodes reachable from a function's outputs:
+//! Three rewrites, each over the nodes reachable from a function's outputs:
 //!
-//! 1. **Sums are factored** greedily (multivariate Horner): in a sum of
-//!    products, the factor shared by the most terms is taken out,
+//! 1. **Sums are factored** greedily (multivariate Horner, `horner`): in a
+//!    sum of products, the factor shared by the most terms is taken out,
 //!    `a·x + a·y + z → a·(x + y) + z`, and the rule is applied again inside
-//!    and outside the bracket. The sub-sums it creates are hash-consed, so
-//!    `(m₁ + m₂)` built in two places is one value, bound once.
-//!    Then, in a product with one reciprocal factor, powers of parameters
-//!    common to numerator and denominator cancel (Cramer's rule:
-//!    `l₁ l₂² S / (l₁² l₂² S₂) → S / (l₁ S₂)`).
-//! 2. **Sub-products are shared**: the pair of factors that occurs together
-//!    in the most products (at least two) becomes a product of its own and
-//!    replaces the pair everywhere; repeated until no pair recurs (greedy
-//!    pair extraction). `m₂·l₁·l₂` in five terms is computed once.
+//!    and outside the bracket; terms without a shared factor but with the
+//!    same coefficient are scaled once (`½a + ½b → ½(a + b)`). The sub-sums
+//!    it creates are hash-consed, so `(m₁ + m₂)` built in two places is one
+//!    value, bound once.
+//! 2. **Parameters cancel** (`cancel`): in a product with one reciprocal
+//!    factor, powers of parameters common to numerator and denominator
+//!    cancel (Cramer's rule: `l₁ l₂² S / (l₁² l₂² S₂) → S / (l₁ S₂)`).
+//! 3. **Sub-products are shared** (`pairs`): the pair of factors that occurs
+//!    together in the most products (at least two) becomes a product of its
+//!    own and replaces the pair everywhere; repeated until no pair recurs
+//!    (greedy pair extraction). `m₂·l₁·l₂` in five terms is computed once.
 //!
 //! The new nodes are interned without simplification (the simplifier would
 //! flatten them back), so they live beside the canonical ones in the same
 //! arena and only the emitter sees them. The interpreter
 //! ([`crate::eval::Tape`]) keeps evaluating the canonical DAG: it is the
 //! independent oracle that `tests/generated_vs_interpreter.rs` checks the
-//! lowered code against. Constants are never taken out (they fold into the
-//! coefficient of a term), so the number of multiplications never grows.
+//! lowered code against. None of the rewrites adds a multiplication.
 
 mod cancel;
 mod horner;

@@ -36,8 +36,8 @@ pub(super) fn share_products(g: &Graph, roots: &[Id]) -> Vec<Id> {
         let Some(&k) = by_id.get(&old) else {
             return g.intern(node);
         };
-        // Every leaf factor of product `k` comes before it in the arena,
-        // so it is already in `map`.
+        // The leaf factors of product `k` come before it in the arena, so
+        // they are already in `map` (merged powers aside, see `factor_node`).
         let (_, c, fs) = &products[k];
         let fs: Vec<Id> = fs
             .iter()
@@ -57,6 +57,8 @@ fn factor_node(
     map: &HashMap<Id, Id>,
 ) -> Id {
     match f {
+        // A power that `factors_of` merged from repeated bases is a new
+        // node, not in `map`: it stands for itself.
         Factor::Node(id) => map.get(&id).copied().unwrap_or(id),
         Factor::Pair(k) => {
             if let Some(&id) = built.get(&k) {
