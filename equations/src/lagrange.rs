@@ -179,16 +179,9 @@ impl<'g> Lagrange<'g> {
         let x = Input::new("x", &self.state());
         let p = Input::new("p", params);
         let qdd = Input::new("qdd", &self.accelerations());
-        let spec =
-            |name: &str, doc: String, inputs: Vec<Input>, outputs: Vec<(&str, Output)>| FnSpec {
-                name: name.to_owned(),
-                doc: format!("{doc}\n\n{reference}"),
-                inputs,
-                outputs: outputs
-                    .into_iter()
-                    .map(|(n, o)| (n.to_owned(), o))
-                    .collect(),
-            };
+        let spec = |name: &str, doc: String, inputs: Vec<Input>, outputs: Vec<(&str, Output)>| {
+            FnSpec::new(name, format!("{doc}\n\n{reference}"), inputs, outputs)
+        };
         let mut fns = vec![spec(
             "dynamics",
             "Mass matrix M(q) and forcing f(q, q̇) of M q̈ = f (Lagrange's equations, derived symbolically).".into(),

@@ -132,6 +132,25 @@ impl Output {
 }
 
 impl FnSpec {
+    /// A function named `name` with its doc comment, inputs and named
+    /// outputs.
+    pub fn new(
+        name: &str,
+        doc: impl Into<String>,
+        inputs: Vec<Input>,
+        outputs: Vec<(&str, Output)>,
+    ) -> FnSpec {
+        FnSpec {
+            name: name.to_owned(),
+            doc: doc.into(),
+            inputs,
+            outputs: outputs
+                .into_iter()
+                .map(|(n, o)| (n.to_owned(), o))
+                .collect(),
+        }
+    }
+
     /// Evaluates every output with the interpreter ([`Tape`]), `inputs[k]`
     /// giving the values of `self.inputs[k]`. Returns one vector per output
     /// (row-major for matrices). Symbols bound by no input read as NaN.

@@ -21,14 +21,8 @@ pub fn module(g: &Graph) -> Module {
     let one = g.constant(1.0);
     let pos = a * a + one; // > 0 for real a
     let shared = a * b + c;
-    let spec = |name: &str, inputs: Vec<Input>, outputs: Vec<(&str, Output)>| FnSpec {
-        name: name.to_owned(),
-        doc: format!("Emitter coverage: {name}."),
-        inputs,
-        outputs: outputs
-            .into_iter()
-            .map(|(n, o)| (n.to_owned(), o))
-            .collect(),
+    let spec = |name: &str, inputs: Vec<Input>, outputs: Vec<(&str, Output)>| {
+        FnSpec::new(name, format!("Emitter coverage: {name}."), inputs, outputs)
     };
     let branches = spec(
         "branches",

@@ -25,15 +25,12 @@ pub fn module_lean(g: &Graph) -> Module {
 }
 
 fn function(name: &str, doc: &str, pp: &PlanarPeg<'_>, outputs: Vec<(&str, Output)>) -> FnSpec {
-    FnSpec {
-        name: name.to_owned(),
-        doc: doc.to_owned(),
-        inputs: vec![Input::new("y", &pp.state), Input::new("p", &pp.params)],
-        outputs: outputs
-            .into_iter()
-            .map(|(n, o)| (n.to_owned(), o))
-            .collect(),
-    }
+    FnSpec::new(
+        name,
+        doc,
+        vec![Input::new("y", &pp.state), Input::new("p", &pp.params)],
+        outputs,
+    )
 }
 
 fn per<'g>(xs: &[Expr<'g>]) -> Output {

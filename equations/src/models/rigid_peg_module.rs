@@ -234,8 +234,8 @@ pub fn build(g: &Graph, variant: Variant) -> Module {
         "Rows: the Lagrange equations of γ and ψ (paper (26), (27)), then the centre-of-mass \
          equations (28)–(31) along e_η, e_n, e_z (the fixed-frame (29)–(31) rotated by −ψ)."
     };
-    let fns = vec![
-        spec(
+    let mut functions = vec![
+        FnSpec::new(
             "forward",
             format!(
                 "Forward dynamics (replaces paper (24)–(31)): A u = b for u = ({}) (rad/s², N), \
@@ -246,7 +246,7 @@ pub fn build(g: &Graph, variant: Variant) -> Module {
             inputs(vec![x.clone(), p.clone()]),
             vec![("a", Output::matrix(&fa)), ("b", Output::vector(&fb))],
         ),
-        spec(
+        FnSpec::new(
             "prescribed",
             format!(
                 "Prescribed motion (paper (26)–(31), Fig. 9): A u = b for u = ({}) (N·m, N) given \
@@ -256,19 +256,17 @@ pub fn build(g: &Graph, variant: Variant) -> Module {
             inputs(vec![x.clone(), qdd, p.clone()]),
             vec![("a", Output::matrix(&pa)), ("b", Output::vector(&pb))],
         ),
-        spec(
+        FnSpec::new(
             "contact_velocities",
             "Material velocity of the peg at K, B1, B2 (rows) in rotating components (e_η, e_n, e_z) \
-             (m/s); replaces paper (10)–(13). The friction directions are −v/|v|."
-                .into(),
+             (m/s); replaces paper (10)–(13). The friction directions are −v/|v|.",
             vec![x.clone(), p.clone()],
             vec![("v", Output::matrix(&sp.contact_velocities))],
         ),
-        spec(
+        FnSpec::new(
             "energy",
             "Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with \
-             V = m g z_C (J)."
-                .into(),
+             V = m g z_C (J).",
             vec![x.clone(), p.clone()],
             vec![
                 ("kinetic", Output::scalar(sp.kinetic)),
@@ -276,7 +274,6 @@ pub fn build(g: &Graph, variant: Variant) -> Module {
             ],
         ),
     ];
-    let mut functions = fns;
     if variant == Variant::Full {
         let geo = &d.geo;
         let outs = [
@@ -294,11 +291,10 @@ pub fn build(g: &Graph, variant: Variant) -> Module {
             geo.centre_l[0],
             geo.centre_l[1],
         ];
-        functions.push(spec(
+        functions.push(FnSpec::new(
             "geometry",
             "Planar geometry at γ (m): a1, a2 (paper (1)), S1, S2 (2), b = BB1, sin τ, cos τ, η_C, z_C \
-             (3), KL, BL (5), η_L, z_L (4b)."
-                .into(),
+             (3), KL, BL (5), η_L, z_L (4b).",
             vec![x, p],
             vec![("geo", Output::vector(&outs))],
         ));
@@ -327,17 +323,5 @@ pub fn build(g: &Graph, variant: Variant) -> Module {
             }
         ),
         functions,
-    }
-}
-
-fn spec(name: &str, doc: String, inputs: Vec<Input>, outputs: Vec<(&str, Output)>) -> FnSpec {
-    FnSpec {
-        name: name.to_owned(),
-        doc,
-        inputs,
-        outputs: outputs
-            .into_iter()
-            .map(|(n, o)| (n.to_owned(), o))
-            .collect(),
     }
 }
