@@ -10,12 +10,16 @@ use nalgebra::{SMatrix, SVector, Vector2, Vector3};
 use pegdyn::generated::{
     rigid_peg, rigid_peg_frictionless, rigid_peg_planar, rigid_peg_planar_frictionless,
 };
+use pegdyn::rigid::PegParams;
 use pegdyn::rigid::hand::Pose;
 use pegdyn::rigid::hand_dynamics::{
     Matrix5, Vector5, forward_system, friction_directions, kinetic_energy, potential_energy,
     prescribed_system,
 };
-use pegdyn::rigid::{Loads, PegParams};
+
+mod common;
+use common::Rng;
+use common::rigid::{gammas, loads, planar_loads};
 
 const TOL: f64 = 1e-12;
 
@@ -38,30 +42,8 @@ fn rowwise<const R: usize, const C: usize>(
         .fold(0.0, f64::max)
 }
 
-fn gammas(p: &PegParams) -> [f64; 5] {
-    let g0 = p.gamma0();
-    [g0 * (1.0 + 1e-9), g0 * (1.0 + 1e-6), 0.1, 0.5, 1.2]
-}
-
 const PSIS: [f64; 3] = [0.0, 0.7, -2.0];
 const RATES: [(f64, f64); 4] = [(-2.0, 10.0), (1.5, -3.0), (-0.3, -0.7), (2.0, 0.5)];
-
-fn loads() -> Loads {
-    Loads {
-        m_gamma: 0.02,
-        m_psi: -0.01,
-        force: [0.3, -0.2, 1.5],
-    }
-}
-
-/// In-plane loads (no M_ψ, no lateral force at ψ = 0).
-fn planar_loads() -> Loads {
-    Loads {
-        m_gamma: 0.02,
-        m_psi: 0.0,
-        force: [0.3, 0.0, 1.5],
-    }
-}
 
 struct State {
     q: Vector2<f64>,
@@ -270,20 +252,6 @@ fn geometry_equals_the_hand_derived_geometry() {
                 "γ = {gamma}, output {k}: {g} vs {w}"
             );
         }
-    }
-}
-
-/// SplitMix64 for seeded random states.
-struct Rng(u64);
-
-impl Rng {
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        lo + (hi - lo) * ((z >> 11) as f64 / (1u64 << 53) as f64)
     }
 }
 
