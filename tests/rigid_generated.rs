@@ -77,7 +77,7 @@ fn t9(t: &[Vector3<f64>; 3]) -> SVector<f64, 9> {
 
 /// The hand 5×5 system reduced to the planar unknowns: rows (γ, η, z),
 /// columns (first, N_K, N_B1 + N_B2).
-fn reduce(a: &Matrix5, b: &Vector5) -> (SMatrix<f64, 3, 3>, SVector<f64, 3>) {
+fn reduce((a, b): (Matrix5, Vector5)) -> (SMatrix<f64, 3, 3>, SVector<f64, 3>) {
     let rows = [0, 2, 4];
     let ar = SMatrix::<f64, 3, 3>::from_fn(|i, j| match j {
         0 => a[(rows[i], 0)],
@@ -85,6 +85,31 @@ fn reduce(a: &Matrix5, b: &Vector5) -> (SMatrix<f64, 3, 3>, SVector<f64, 3>) {
         _ => a[(rows[i], 3)] + a[(rows[i], 4)],
     });
     (ar, SVector::<f64, 3>::from_fn(|i, _| b[rows[i]]))
+}
+
+/// Asserts generated [forward, prescribed] systems (A, b) equal the hand
+/// ones to [`TOL`]: parts 0–3 normwise (A and b of each), parts 4–5 row by
+/// row; `worst` keeps the largest normwise and row-wise differences.
+fn compare<const N: usize>(
+    generated: [(&SMatrix<f64, N, N>, &SVector<f64, N>); 2],
+    hand: [(&SMatrix<f64, N, N>, &SVector<f64, N>); 2],
+    worst: &mut [f64; 2],
+    context: std::fmt::Arguments,
+) {
+    let [(ga, gb), (pa, pb)] = generated;
+    let [(fa, fb), (ha, hb)] = hand;
+    let errs = [
+        rel(ga, fa),
+        rel(gb, fb),
+        rel(pa, ha),
+        rel(pb, hb),
+        rowwise((ga, gb), (fa, fb)),
+        rowwise((pa, pb), (ha, hb)),
+    ];
+    for (k, e) in errs.iter().enumerate() {
+        assert!(*e < TOL, "{context}: part {k} rel {e:e}");
+        worst[k / 4] = worst[k / 4].max(*e);
+    }
 }
 
 #[test]
@@ -111,18 +136,12 @@ fn two_dof_systems_equal_the_hand_derived_systems() {
                 let (pa, pb) = rigid_peg_frictionless::prescribed(&x, &qdd, &pv, &lv);
                 (ga, gb, pa, pb)
             };
-            let errs = [
-                rel(&ga, &fa),
-                rel(&gb, &fb),
-                rel(&pa, &ha),
-                rel(&pb, &hb),
-                rowwise((&ga, &gb), (&fa, &fb)),
-                rowwise((&pa, &pb), (&ha, &hb)),
-            ];
-            for (k, e) in errs.iter().enumerate() {
-                assert!(*e < TOL, "f = {friction}, {:?}: part {k} rel {e:e}", s.q);
-                worst[k / 4] = worst[k / 4].max(*e);
-            }
+            compare(
+                [(&ga, &gb), (&pa, &pb)],
+                [(&fa, &fb), (&ha, &hb)],
+                &mut worst,
+                format_args!("f = {friction}, {:?}", s.q),
+            );
         }
     }
     eprintln!(
@@ -150,8 +169,8 @@ fn planar_systems_equal_the_hand_derived_systems_at_psi_zero() {
                 let (q, qd) = (Vector2::new(gamma, 0.0), Vector2::new(gd, 0.0));
                 let pose = Pose::try_new(&p, gamma, 0.0).unwrap();
                 let t = friction_directions(&pose.kinematics(qd)).unwrap();
-                let (fa, fb) = reduce_pair(forward_system(&p, &l, &pose, qd, &t));
-                let (ha, hb) = reduce_pair(prescribed_system(&p, &l, &pose, qd, qdd, &t));
+                let (fa, fb) = reduce(forward_system(&p, &l, &pose, qd, &t));
+                let (ha, hb) = reduce(prescribed_system(&p, &l, &pose, qd, qdd, &t));
                 let (x, qdd1) = (
                     SVector::<f64, 2>::new(gamma, gd),
                     SVector::<f64, 1>::new(qdd[0]),
@@ -166,18 +185,12 @@ fn planar_systems_equal_the_hand_derived_systems_at_psi_zero() {
                     let (pa, pb) = rigid_peg_planar_frictionless::prescribed(&x, &qdd1, &pv, &lv);
                     (ga, gb, pa, pb)
                 };
-                let errs = [
-                    rel(&ga, &fa),
-                    rel(&gb, &fb),
-                    rel(&pa, &ha),
-                    rel(&pb, &hb),
-                    rowwise((&ga, &gb), (&fa, &fb)),
-                    rowwise((&pa, &pb), (&ha, &hb)),
-                ];
-                for (k, e) in errs.iter().enumerate() {
-                    assert!(*e < TOL, "f = {friction}, {q:?}: part {k} rel {e:e}");
-                    worst[k / 4] = worst[k / 4].max(*e);
-                }
+                compare(
+                    [(&ga, &gb), (&pa, &pb)],
+                    [(&fa, &fb), (&ha, &hb)],
+                    &mut worst,
+                    format_args!("f = {friction}, {q:?}"),
+                );
             }
         }
     }
@@ -185,10 +198,6 @@ fn planar_systems_equal_the_hand_derived_systems_at_psi_zero() {
         "planar generated vs hand: worst normwise {:e}, worst row-wise {:e}",
         worst[0], worst[1]
     );
-}
-
-fn reduce_pair((a, b): (Matrix5, Vector5)) -> (SMatrix<f64, 3, 3>, SVector<f64, 3>) {
-    reduce(&a, &b)
 }
 
 #[test]
