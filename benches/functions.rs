@@ -56,7 +56,7 @@ macro_rules! compare {
     ($c:expr, $cases:expr, $m:ident :: $f:ident ($($a:ident),*) $(=> $h:path)?) => {{
         let mut case = $cases.take(stringify!($m), stringify!($f));
         let mut k = 0..;
-        $( let $a = case.input(k.next().unwrap_or(0)); )*
+        $( let $a = case.input(k.next().expect("endless range")); )*
         let hand = compare!(@hand $($h)? ; $($a),*);
         run_group($c, &mut case, || generated::$m::$f($(black_box(&$a)),*), hand);
     }};

@@ -16,6 +16,18 @@ use pegdyn::jamming::quasi_static::{PaperPeg, PegAcc, PegLoad};
 
 type V<const N: usize> = SVector<f64, N>;
 
+/// `(q̇, M⁻¹ f)` for two coordinates, `x = (q, q̇)`, by Cramer's rule
+/// (`M` symmetric).
+fn cramer_rhs(x: &V<4>, mm: &Matrix2<f64>, f: &Vector2<f64>) -> V<4> {
+    let det = mm[(0, 0)] * mm[(1, 1)] - mm[(0, 1)] * mm[(0, 1)];
+    Vector4::new(
+        x[2],
+        x[3],
+        (f[0] * mm[(1, 1)] - mm[(0, 1)] * f[1]) / det,
+        (mm[(0, 0)] * f[1] - mm[(0, 1)] * f[0]) / det,
+    )
+}
+
 /// Simple pendulum, `x = (θ, θ̇)`, `p = (m, l, g)`.
 pub mod pendulum {
     use super::*;
@@ -73,13 +85,7 @@ pub mod double_pendulum {
     /// `(θ̇₁, θ̇₂, M⁻¹ f)` by Cramer's rule.
     pub fn rhs(x: &V<4>, p: &V<5>) -> V<4> {
         let (mm, f) = parts(x, p);
-        let det = mm[(0, 0)] * mm[(1, 1)] - mm[(0, 1)] * mm[(0, 1)];
-        Vector4::new(
-            x[2],
-            x[3],
-            (f[0] * mm[(1, 1)] - mm[(0, 1)] * f[1]) / det,
-            (mm[(0, 0)] * f[1] - mm[(0, 1)] * f[0]) / det,
-        )
+        cramer_rhs(x, &mm, &f)
     }
 
     /// `G` (2 × 4) from the derivatives of `f` and of `M₁₂ = k c`
@@ -136,13 +142,7 @@ pub mod cart_pole {
     /// `(ẋ_c, θ̇, M⁻¹ f)` by Cramer's rule.
     pub fn rhs(x: &V<4>, p: &V<5>) -> V<4> {
         let (mm, f) = parts(x, p);
-        let det = mm[(0, 0)] * mm[(1, 1)] - mm[(0, 1)] * mm[(0, 1)];
-        Vector4::new(
-            x[2],
-            x[3],
-            (f[0] * mm[(1, 1)] - mm[(0, 1)] * f[1]) / det,
-            (mm[(0, 0)] * f[1] - mm[(0, 1)] * f[0]) / det,
-        )
+        cramer_rhs(x, &mm, &f)
     }
 
     /// `G` (2 × 4); only `M₁₂ = m l cos θ` depends on the state.

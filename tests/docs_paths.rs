@@ -1,6 +1,6 @@
 //! Docs that drift from the tree: every repository path that README.md or a
 //! page under docs/ names in backticks (`src/...`, `docs/...`, `scenes/...`,
-//! `tests/...`, `benches/...`, `equations/...`) must exist.
+//! `tests/...`, `benches/...`, `examples/...`, `equations/...`) must exist.
 //!
 //! A path may end in `/` (a folder) or carry a `::item` or `#anchor` suffix
 //! (only the file part is checked). Glob-like names (`*`, `{`, `<`) and
@@ -9,12 +9,13 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
-const ROOTS: [&str; 6] = [
+const ROOTS: [&str; 7] = [
     "src/",
     "docs/",
     "scenes/",
     "tests/",
     "benches/",
+    "examples/",
     "equations/",
 ];
 

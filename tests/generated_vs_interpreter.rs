@@ -21,29 +21,14 @@ use pegdyn_equations::graph::SymKind;
 use pegdyn_equations::model::{FnSpec, Module};
 use pegdyn_equations::{Graph, models};
 
+mod common;
+use common::Rng;
+
 #[allow(clippy::all, dead_code)]
 mod calls {
     include!(concat!(env!("OUT_DIR"), "/generated_calls.rs"));
 }
 use calls::CALLS;
-
-/// SplitMix64: a seeded, dependency-free source of test inputs.
-struct Rng(u64);
-
-impl Rng {
-    fn next_f64(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        (z >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.next_f64()
-    }
-}
 
 /// Random inputs: states in [-2, 2], parameters in [0.5, 2] (masses and
 /// lengths are positive), time in [0, 10].

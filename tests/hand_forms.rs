@@ -2,7 +2,8 @@
 //! code (`benches/hand.rs`: textbook pendulum, double pendulum and cart-pole
 //! from their closed-form mass matrices and forcing, Hertz (9)–(13), the
 //! quasi-static Eqs. 51–54, the rigid peg's `rigid::hand_dynamics`) agree with the generated functions on seeded
-//! inputs. Two independent derivations of the same physics; a bench that
+//! inputs, for every function that `benches/list.rs` gives a hand form (so a
+//! new one cannot be missed). Two independent derivations of the same physics; a bench that
 //! timed a wrong hand form would compare nothing.
 
 #[allow(dead_code)]
@@ -11,21 +12,27 @@ mod cases;
 #[allow(dead_code)]
 #[path = "../benches/hand.rs"]
 mod hand;
+#[macro_use]
+#[path = "../benches/list.rs"]
+mod list;
 
 use cases::{Cases, flatten, max_rel_diff};
 use pegdyn::generated;
 
-/// Calls generated and hand form on the inputs of `Cases::new(seed)` and
-/// returns their largest relative difference.
+/// For a function of `benches/list.rs` with a hand form: calls generated
+/// and hand form on the inputs of `cases` and pushes (name, largest
+/// relative difference) to `diffs`; functions without one are skipped.
 macro_rules! diff {
-    ($cases:expr, $m:ident :: $f:ident ($($a:ident),*)) => {{
+    ($cases:expr, $diffs:expr, $m:ident :: $f:ident ($($a:ident),*)) => {};
+    ($cases:expr, $diffs:expr, $m:ident :: $f:ident ($($a:ident),*) => $h:path) => {{
         let case = $cases.take(stringify!($m), stringify!($f));
         let mut k = 0..;
-        $( let $a = case.input(k.next().unwrap_or(0)); )*
+        $( let $a = case.input(k.next().expect("endless range")); )*
         let g = flatten(&generated::$m::$f($(&$a),*));
-        let h = flatten(&hand::$m::$f($(&$a),*));
-        assert!(g.iter().any(|v| *v != 0.0), "{}: all zero", stringify!($m::$f));
-        max_rel_diff(&h, &g)
+        let h = flatten(&$h($(&$a),*));
+        let name = stringify!($m::$f);
+        assert!(g.iter().any(|v| *v != 0.0), "{name}: all zero");
+        $diffs.push((name, max_rel_diff(&h, &g)));
     }};
 }
 
@@ -33,37 +40,11 @@ macro_rules! diff {
 fn hand_forms_match_generated_code() {
     for seed in 0..50 {
         let mut c = Cases::new(seed);
-        let diffs = [
-            diff!(c, pendulum::dynamics(x, p)),
-            diff!(c, pendulum::rhs(x, p)),
-            diff!(c, pendulum::jacobian_terms(x, qdd, p)),
-            diff!(c, pendulum::energy(x, p)),
-            diff!(c, double_pendulum::dynamics(x, p)),
-            diff!(c, double_pendulum::rhs(x, p)),
-            diff!(c, double_pendulum::jacobian_terms(x, qdd, p)),
-            diff!(c, double_pendulum::energy(x, p)),
-            diff!(c, cart_pole::dynamics(x, p)),
-            diff!(c, cart_pole::rhs(x, p)),
-            diff!(c, cart_pole::jacobian_terms(x, qdd, p)),
-            diff!(c, cart_pole::energy(x, p)),
-            diff!(c, hertz::ellipse(load, k)),
-            diff!(c, hertz::stiffness(k)),
-            diff!(c, quasi_static::two_point(pose, load, acc, p)),
-            diff!(c, quasi_static::edge_only(pose, load, acc, p)),
-            diff!(c, quasi_static::tip_only(pose, load, acc, p)),
-            diff!(c, quasi_static::whitney_tip(pose, w, q)),
-            diff!(c, rigid_peg::forward(x, p, loads, t)),
-            diff!(c, rigid_peg::prescribed(x, qdd, p, loads, t)),
-            diff!(c, rigid_peg::contact_velocities(x, p)),
-            diff!(c, rigid_peg::energy(x, p)),
-            diff!(c, rigid_peg_frictionless::forward(x, p, loads)),
-            diff!(c, rigid_peg_frictionless::prescribed(x, qdd, p, loads)),
-        ];
-        for (k, d) in diffs.iter().enumerate() {
-            assert!(
-                *d <= 1e-10,
-                "seed {seed}, function #{k}: relative difference {d:e}"
-            );
+        let mut diffs = Vec::new();
+        for_each_function!(diff!(c, diffs));
+        assert!(diffs.len() >= 24, "{} hand forms checked", diffs.len());
+        for (name, d) in diffs {
+            assert!(d <= 1e-10, "seed {seed}, {name}: relative difference {d:e}");
         }
     }
 }

@@ -7,6 +7,7 @@
 //! in `tests/accuracy_report.rs`).
 
 use nalgebra::{SVector, Vector2, Vector4};
+use pegdyn::accuracy::ulp;
 use pegdyn::integrate::{Method, Options, Solver};
 use pegdyn::rigid::hand::{Geometry, Pose};
 use pegdyn::rigid::hand_dynamics::{
@@ -24,10 +25,6 @@ fn peg(clearance: f64, friction: f64) -> PegParams {
     p.peg_diameter = p.hole_diameter - clearance;
     p.friction = friction;
     p
-}
-
-fn ulp(x: f64) -> f64 {
-    pegdyn::accuracy::ulp(x)
 }
 
 /// c = d − D cos γ at γ = γ0(1 + ε), ε = 1e-3 … 1e-12, clearances 50 µm to

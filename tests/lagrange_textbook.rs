@@ -18,23 +18,8 @@
 use nalgebra::{DMatrix, SVector};
 use pegdyn::generated::{cart_pole, double_pendulum as dp, pendulum};
 
-/// SplitMix64: seeded inputs without a dependency.
-struct Rng(u64);
-
-impl Rng {
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        lo + (hi - lo) * ((z >> 11) as f64 / (1u64 << 53) as f64)
-    }
-
-    fn vector<const N: usize>(&mut self, lo: f64, hi: f64) -> SVector<f64, N> {
-        SVector::from_fn(|_, _| self.uniform(lo, hi))
-    }
-}
+mod common;
+use common::Rng;
 
 const TRIALS: usize = 100;
 const REL: f64 = 1e-13;

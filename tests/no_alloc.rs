@@ -1,7 +1,10 @@
 //! The hot path allocates nothing: every generated right-hand side and
-//! Jacobian, and the `OdeSystem` adapters the integrators call (the
+//! Jacobian, the generated rigid contact systems (`forward`, `prescribed`,
+//! four variants), the `OdeSystem` adapters the integrators call (the
 //! compliant model's `rhs` / `jacobian` / `time_derivative`, the pendulum
-//! scenes' systems), are measured with a counting global allocator.
+//! scenes' systems, the rigid `PegSystem`), and the interpreter's
+//! `Tape::eval_into` with reused buffers (every function of every model)
+//! are measured with a counting global allocator.
 //!
 //! The counter is per thread (the test harness allocates on other threads),
 //! and each measured closure is first called once outside the window so
@@ -11,11 +14,13 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 use std::hint::black_box;
 
-use nalgebra::{SVector, Vector2, Vector4};
+use nalgebra::{SVector, Vector2, Vector3, Vector4};
 use pegdyn::compliant::{
     CompliantParams, CompliantSpec, CompliantSystem, ContactSet, Load, PegState,
 };
 use pegdyn::generated::{cart_pole, compliant_peg, compliant_peg_lean, double_pendulum, pendulum};
+use pegdyn::rigid::forward::{ForwardModel, PegSystem};
+use pegdyn::rigid::{Loads, PegParams};
 use pegdyn::scene::double_pendulum::{DoublePendulumParams, DoublePendulumSystem};
 use pegdyn::scene::pendulum::{PendulumParams, PendulumSystem};
 use pegdyn::system::OdeSystem;
@@ -184,5 +189,108 @@ fn integration_steps_allocate_nothing() {
             "{method:?}: {short_steps} vs {long_steps} steps"
         );
         assert_eq!(short, long, "{method:?}: allocations grow with the steps");
+    }
+}
+
+#[test]
+fn generated_rigid_systems_allocate_nothing() {
+    use pegdyn::generated::{
+        rigid_peg, rigid_peg_frictionless, rigid_peg_planar, rigid_peg_planar_frictionless,
+    };
+    let p = PegParams::fig9().to_vector();
+    let loads = SVector::<f64, 5>::from([0.02, -0.01, 0.3, -0.2, 1.5]);
+    let planar_loads = Vector3::new(0.02, 0.3, 1.5);
+    let x4 = Vector4::new(0.3, 0.7, -2.0, 10.0);
+    let x2 = Vector2::new(0.3, -2.0);
+    let t9 = SVector::<f64, 9>::from_fn(|i, _| 0.1 * i as f64 - 0.4);
+    let t4 = SVector::<f64, 4>::new(0.6, -0.8, 0.0, 1.0);
+    let q2 = Vector2::new(3.0, -40.0);
+    let q1 = SVector::<f64, 1>::new(3.0);
+    assert_eq!(
+        allocs_of(|| rigid_peg::forward(black_box(&x4), &p, &loads, &t9)),
+        0
+    );
+    assert_eq!(
+        allocs_of(|| rigid_peg::prescribed(black_box(&x4), &q2, &p, &loads, &t9)),
+        0
+    );
+    assert_eq!(
+        allocs_of(|| rigid_peg_frictionless::forward(black_box(&x4), &p, &loads)),
+        0
+    );
+    assert_eq!(
+        allocs_of(|| rigid_peg_frictionless::prescribed(black_box(&x4), &q2, &p, &loads)),
+        0
+    );
+    assert_eq!(
+        allocs_of(|| rigid_peg_planar::forward(black_box(&x2), &p, &planar_loads, &t4)),
+        0
+    );
+    assert_eq!(
+        allocs_of(|| rigid_peg_planar::prescribed(black_box(&x2), &q1, &p, &planar_loads, &t4)),
+        0
+    );
+    assert_eq!(
+        allocs_of(|| rigid_peg_planar_frictionless::forward(black_box(&x2), &p, &planar_loads)),
+        0
+    );
+    assert_eq!(
+        allocs_of(|| {
+            rigid_peg_planar_frictionless::prescribed(black_box(&x2), &q1, &p, &planar_loads)
+        }),
+        0
+    );
+}
+
+#[test]
+fn rigid_ode_adapter_allocates_nothing() {
+    let loads = Loads {
+        m_gamma: 0.02,
+        m_psi: -0.01,
+        force: [0.3, -0.2, 1.5],
+    };
+    let model = ForwardModel::new(PegParams::fig9(), loads).expect("Fig. 9 peg");
+    // Sliding in both coordinates, and at rest with a sliding start
+    // direction (the start path of the friction directions).
+    for (x, start) in [
+        (Vector4::new(0.3, 0.7, -2.0, 10.0), None),
+        (
+            Vector4::new(0.3, 0.0, 0.0, 0.0),
+            Some(Vector2::new(-1.0, 0.0)),
+        ),
+    ] {
+        let sys = PegSystem {
+            model: &model,
+            start,
+        };
+        assert!(sys.rhs(0.0, &x).iter().all(|v| v.is_finite()), "{x:?}");
+        assert_eq!(allocs_of(|| sys.rhs(0.0, black_box(&x))), 0, "{x:?}");
+    }
+}
+
+#[test]
+fn interpreter_tape_with_reused_buffers_allocates_nothing() {
+    use pegdyn_equations::eval::Tape;
+    use pegdyn_equations::{Graph, models};
+    for build in models::ALL {
+        let g = Graph::new();
+        let m = build(&g);
+        for f in &m.functions {
+            let roots: Vec<_> = f
+                .outputs
+                .iter()
+                .flat_map(|(_, o)| o.ids().iter().copied())
+                .collect();
+            let tape = Tape::new(&g, &roots);
+            let values = vec![0.5; g.symbols().len()];
+            let (mut scratch, mut out) = (Vec::new(), vec![0.0; roots.len()]);
+            assert_eq!(
+                allocs_of(|| tape.eval_into(black_box(&values), &mut scratch, &mut out)),
+                0,
+                "{}::{}",
+                m.name,
+                f.name
+            );
+        }
     }
 }

@@ -10,7 +10,7 @@ use pegdyn::rigid::forward::ForwardModel;
 use pegdyn::rigid::hand::Pose;
 use pegdyn::rigid::modes::{Verdict, classify, contact_problem};
 use pegdyn::rigid::stop::ForwardStop;
-use pegdyn::rigid::trajectory::simulate;
+use pegdyn::rigid::trajectory::{Trajectory, simulate};
 use pegdyn::rigid::{Loads, PegParams};
 
 fn frictionless() -> PegParams {
@@ -18,6 +18,19 @@ fn frictionless() -> PegParams {
         friction: 0.0,
         ..PegParams::fig9()
     }
+}
+
+/// DOPRI5 from `x0` at t = 0 to 1 s at tolerances (rtol, atol).
+fn run(m: &ForwardModel, x0: Vector4<f64>, rtol: f64, atol: f64) -> Trajectory {
+    simulate(
+        m,
+        x0,
+        0.0,
+        1.0,
+        Method::Dopri5,
+        &Options::with_tolerances(rtol, atol),
+    )
+    .unwrap()
 }
 
 /// With f = 0 and no loads only gravity works: T + V is constant. The
@@ -63,18 +76,7 @@ fn gamma0_event_is_located_to_1e_10_s() {
     };
     let m = ForwardModel::new(frictionless(), loads).unwrap();
     let x0 = Vector4::new(0.06, 0.0, -0.2, 0.0);
-    let run = |rtol: f64, atol: f64| {
-        simulate(
-            &m,
-            x0,
-            0.0,
-            1.0,
-            Method::Dopri5,
-            &Options::with_tolerances(rtol, atol),
-        )
-        .unwrap()
-    };
-    let (a, b) = (run(1e-10, 1e-12), run(1e-12, 1e-14));
+    let (a, b) = (run(&m, x0, 1e-10, 1e-12), run(&m, x0, 1e-12, 1e-14));
     let (
         ForwardStop::TwoPointContact { t: ta, state: xa },
         ForwardStop::TwoPointContact { t: tb, .. },
@@ -103,18 +105,7 @@ fn lift_off_is_detected_where_the_reaction_vanishes() {
     let p = frictionless();
     let m = ForwardModel::new(p, Loads::default()).unwrap();
     let x0 = Vector4::new(0.3, 0.0, 0.0, 30.0);
-    let run = |rtol: f64, atol: f64| {
-        simulate(
-            &m,
-            x0,
-            0.0,
-            1.0,
-            Method::Dopri5,
-            &Options::with_tolerances(rtol, atol),
-        )
-        .unwrap()
-    };
-    let (a, b) = (run(1e-10, 1e-12), run(1e-12, 1e-14));
+    let (a, b) = (run(&m, x0, 1e-10, 1e-12), run(&m, x0, 1e-12, 1e-14));
     let ForwardStop::LiftOff {
         contact: "B2",
         t,
@@ -188,7 +179,6 @@ fn three_point_mode_reproduces_the_forward_system() {
 #[test]
 fn fig9_state_near_gamma0_is_a_lift_off_of_b1() {
     let p = PegParams::fig9();
-    let m = ForwardModel::new(p, Loads::default()).unwrap();
     let q = Vector2::new(p.gamma0() * (1.0 + 1e-6), 0.0);
     let qdot = Vector2::new(-2.0, 10.0);
     // The moments that drive the prescribed motion (Fig. 9 has them as
@@ -212,5 +202,4 @@ fn fig9_state_near_gamma0_is_a_lift_off_of_b1() {
         }
         v => panic!("{v:?}"),
     }
-    let _ = m;
 }

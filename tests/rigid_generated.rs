@@ -10,12 +10,16 @@ use nalgebra::{SMatrix, SVector, Vector2, Vector3};
 use pegdyn::generated::{
     rigid_peg, rigid_peg_frictionless, rigid_peg_planar, rigid_peg_planar_frictionless,
 };
+use pegdyn::rigid::PegParams;
 use pegdyn::rigid::hand::Pose;
 use pegdyn::rigid::hand_dynamics::{
     Matrix5, Vector5, forward_system, friction_directions, kinetic_energy, potential_energy,
     prescribed_system,
 };
-use pegdyn::rigid::{Loads, PegParams};
+
+mod common;
+use common::Rng;
+use common::rigid::{gammas, loads, planar_loads};
 
 const TOL: f64 = 1e-12;
 
@@ -38,30 +42,8 @@ fn rowwise<const R: usize, const C: usize>(
         .fold(0.0, f64::max)
 }
 
-fn gammas(p: &PegParams) -> [f64; 5] {
-    let g0 = p.gamma0();
-    [g0 * (1.0 + 1e-9), g0 * (1.0 + 1e-6), 0.1, 0.5, 1.2]
-}
-
 const PSIS: [f64; 3] = [0.0, 0.7, -2.0];
 const RATES: [(f64, f64); 4] = [(-2.0, 10.0), (1.5, -3.0), (-0.3, -0.7), (2.0, 0.5)];
-
-fn loads() -> Loads {
-    Loads {
-        m_gamma: 0.02,
-        m_psi: -0.01,
-        force: [0.3, -0.2, 1.5],
-    }
-}
-
-/// In-plane loads (no M_ψ, no lateral force at ψ = 0).
-fn planar_loads() -> Loads {
-    Loads {
-        m_gamma: 0.02,
-        m_psi: 0.0,
-        force: [0.3, 0.0, 1.5],
-    }
-}
 
 struct State {
     q: Vector2<f64>,
@@ -95,7 +77,7 @@ fn t9(t: &[Vector3<f64>; 3]) -> SVector<f64, 9> {
 
 /// The hand 5×5 system reduced to the planar unknowns: rows (γ, η, z),
 /// columns (first, N_K, N_B1 + N_B2).
-fn reduce(a: &Matrix5, b: &Vector5) -> (SMatrix<f64, 3, 3>, SVector<f64, 3>) {
+fn reduce((a, b): (Matrix5, Vector5)) -> (SMatrix<f64, 3, 3>, SVector<f64, 3>) {
     let rows = [0, 2, 4];
     let ar = SMatrix::<f64, 3, 3>::from_fn(|i, j| match j {
         0 => a[(rows[i], 0)],
@@ -103,6 +85,31 @@ fn reduce(a: &Matrix5, b: &Vector5) -> (SMatrix<f64, 3, 3>, SVector<f64, 3>) {
         _ => a[(rows[i], 3)] + a[(rows[i], 4)],
     });
     (ar, SVector::<f64, 3>::from_fn(|i, _| b[rows[i]]))
+}
+
+/// Asserts generated [forward, prescribed] systems (A, b) equal the hand
+/// ones to [`TOL`]: parts 0–3 normwise (A and b of each), parts 4–5 row by
+/// row; `worst` keeps the largest normwise and row-wise differences.
+fn compare<const N: usize>(
+    generated: [(&SMatrix<f64, N, N>, &SVector<f64, N>); 2],
+    hand: [(&SMatrix<f64, N, N>, &SVector<f64, N>); 2],
+    worst: &mut [f64; 2],
+    context: std::fmt::Arguments,
+) {
+    let [(ga, gb), (pa, pb)] = generated;
+    let [(fa, fb), (ha, hb)] = hand;
+    let errs = [
+        rel(ga, fa),
+        rel(gb, fb),
+        rel(pa, ha),
+        rel(pb, hb),
+        rowwise((ga, gb), (fa, fb)),
+        rowwise((pa, pb), (ha, hb)),
+    ];
+    for (k, e) in errs.iter().enumerate() {
+        assert!(*e < TOL, "{context}: part {k} rel {e:e}");
+        worst[k / 4] = worst[k / 4].max(*e);
+    }
 }
 
 #[test]
@@ -129,18 +136,12 @@ fn two_dof_systems_equal_the_hand_derived_systems() {
                 let (pa, pb) = rigid_peg_frictionless::prescribed(&x, &qdd, &pv, &lv);
                 (ga, gb, pa, pb)
             };
-            let errs = [
-                rel(&ga, &fa),
-                rel(&gb, &fb),
-                rel(&pa, &ha),
-                rel(&pb, &hb),
-                rowwise((&ga, &gb), (&fa, &fb)),
-                rowwise((&pa, &pb), (&ha, &hb)),
-            ];
-            for (k, e) in errs.iter().enumerate() {
-                assert!(*e < TOL, "f = {friction}, {:?}: part {k} rel {e:e}", s.q);
-                worst[k / 4] = worst[k / 4].max(*e);
-            }
+            compare(
+                [(&ga, &gb), (&pa, &pb)],
+                [(&fa, &fb), (&ha, &hb)],
+                &mut worst,
+                format_args!("f = {friction}, {:?}", s.q),
+            );
         }
     }
     eprintln!(
@@ -168,8 +169,8 @@ fn planar_systems_equal_the_hand_derived_systems_at_psi_zero() {
                 let (q, qd) = (Vector2::new(gamma, 0.0), Vector2::new(gd, 0.0));
                 let pose = Pose::try_new(&p, gamma, 0.0).unwrap();
                 let t = friction_directions(&pose.kinematics(qd)).unwrap();
-                let (fa, fb) = reduce_pair(forward_system(&p, &l, &pose, qd, &t));
-                let (ha, hb) = reduce_pair(prescribed_system(&p, &l, &pose, qd, qdd, &t));
+                let (fa, fb) = reduce(forward_system(&p, &l, &pose, qd, &t));
+                let (ha, hb) = reduce(prescribed_system(&p, &l, &pose, qd, qdd, &t));
                 let (x, qdd1) = (
                     SVector::<f64, 2>::new(gamma, gd),
                     SVector::<f64, 1>::new(qdd[0]),
@@ -184,18 +185,12 @@ fn planar_systems_equal_the_hand_derived_systems_at_psi_zero() {
                     let (pa, pb) = rigid_peg_planar_frictionless::prescribed(&x, &qdd1, &pv, &lv);
                     (ga, gb, pa, pb)
                 };
-                let errs = [
-                    rel(&ga, &fa),
-                    rel(&gb, &fb),
-                    rel(&pa, &ha),
-                    rel(&pb, &hb),
-                    rowwise((&ga, &gb), (&fa, &fb)),
-                    rowwise((&pa, &pb), (&ha, &hb)),
-                ];
-                for (k, e) in errs.iter().enumerate() {
-                    assert!(*e < TOL, "f = {friction}, {q:?}: part {k} rel {e:e}");
-                    worst[k / 4] = worst[k / 4].max(*e);
-                }
+                compare(
+                    [(&ga, &gb), (&pa, &pb)],
+                    [(&fa, &fb), (&ha, &hb)],
+                    &mut worst,
+                    format_args!("f = {friction}, {q:?}"),
+                );
             }
         }
     }
@@ -203,10 +198,6 @@ fn planar_systems_equal_the_hand_derived_systems_at_psi_zero() {
         "planar generated vs hand: worst normwise {:e}, worst row-wise {:e}",
         worst[0], worst[1]
     );
-}
-
-fn reduce_pair((a, b): (Matrix5, Vector5)) -> (SMatrix<f64, 3, 3>, SVector<f64, 3>) {
-    reduce(&a, &b)
 }
 
 #[test]
@@ -270,20 +261,6 @@ fn geometry_equals_the_hand_derived_geometry() {
                 "γ = {gamma}, output {k}: {g} vs {w}"
             );
         }
-    }
-}
-
-/// SplitMix64 for seeded random states.
-struct Rng(u64);
-
-impl Rng {
-    fn uniform(&mut self, lo: f64, hi: f64) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^= z >> 31;
-        lo + (hi - lo) * ((z >> 11) as f64 / (1u64 << 53) as f64)
     }
 }
 

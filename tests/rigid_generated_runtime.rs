@@ -15,22 +15,8 @@ use pegdyn::rigid::hand_dynamics::{self, forward_system};
 use pegdyn::rigid::prescribed::{reactions, reactions_hand};
 use pegdyn::rigid::{Loads, PegParams, RigidError};
 
-fn peg() -> PegParams {
-    PegParams::fig9()
-}
-
-fn gammas(p: &PegParams) -> [f64; 5] {
-    let g0 = p.gamma0();
-    [g0 * (1.0 + 1e-9), g0 * (1.0 + 1e-6), 0.1, 0.5, 1.2]
-}
-
-fn in_plane() -> Loads {
-    Loads {
-        m_gamma: 0.02,
-        m_psi: 0.0,
-        force: [0.3, 0.0, 1.5],
-    }
-}
+mod common;
+use common::rigid::{gammas, loads, planar_loads};
 
 fn directions(v: Variant, p: &PegParams, q: Vector2<f64>, qd: Vector2<f64>) -> [Vector3<f64>; 3] {
     friction_directions(&contact_velocities(v, p, q, qd).unwrap()).unwrap()
@@ -43,7 +29,10 @@ fn close(a: f64, b: f64, tol: f64, scale: f64) -> bool {
 #[test]
 fn two_dof_model_without_precession_reproduces_the_planar_variant() {
     for friction in [0.2, 0.0] {
-        let p = PegParams { friction, ..peg() };
+        let p = PegParams {
+            friction,
+            ..PegParams::fig9()
+        };
         let (two, one) = if friction > 0.0 {
             (Variant::Full, Variant::Planar)
         } else {
@@ -53,8 +42,8 @@ fn two_dof_model_without_precession_reproduces_the_planar_variant() {
             for gd in [-2.0, 1.5] {
                 let (q, qd) = (Vector2::new(gamma, 0.0), Vector2::new(gd, 0.0));
                 let t = directions(two, &p, q, qd);
-                let a = forward(two, &p, &in_plane(), q, qd, &t).unwrap();
-                let b = forward(one, &p, &in_plane(), q, qd, &t).unwrap();
+                let a = forward(two, &p, &planar_loads(), q, qd, &t).unwrap();
+                let b = forward(one, &p, &planar_loads(), q, qd, &t).unwrap();
                 let scale = b.normal.iter().fold(1.0f64, |m, n| m.max(n.abs()));
                 assert!(close(a.qdd[0], b.qdd[0], 1e-9, b.qdd[0].abs().max(1.0)));
                 assert!(
@@ -78,12 +67,8 @@ fn two_dof_model_without_precession_reproduces_the_planar_variant() {
 
 #[test]
 fn forward_solutions_equal_the_hand_derived_solutions() {
-    let p = peg();
-    let loads = Loads {
-        m_gamma: 0.02,
-        m_psi: -0.01,
-        force: [0.3, -0.2, 1.5],
-    };
+    let p = PegParams::fig9();
+    let loads = loads();
     for gamma in [0.1, 0.5, 1.2] {
         for psi in [0.0, 0.7, -2.0] {
             for (gd, pd) in [(-2.0, 10.0), (1.5, -3.0)] {
@@ -115,7 +100,7 @@ fn forward_solutions_equal_the_hand_derived_solutions() {
 
 #[test]
 fn generated_reactions_equal_hand_reactions_and_invert_forward_dynamics() {
-    let p = peg();
+    let p = PegParams::fig9();
     let loads = Loads {
         force: [0.3, -0.2, 1.5],
         ..Loads::default()
@@ -159,7 +144,7 @@ fn generated_reactions_equal_hand_reactions_and_invert_forward_dynamics() {
 
 #[test]
 fn symmetric_contacts_carry_equal_loads_without_precession() {
-    let p = peg();
+    let p = PegParams::fig9();
     for gamma in gammas(&p) {
         let q = Vector2::new(gamma, 0.7);
         let qd = Vector2::new(-2.0, 0.0);
@@ -175,7 +160,7 @@ fn symmetric_contacts_carry_equal_loads_without_precession() {
 
 #[test]
 fn reactions_over_weight_do_not_depend_on_mass() {
-    let light = peg();
+    let light = PegParams::fig9();
     let heavy = PegParams { mass: 7.3, ..light };
     for v in Variant::ALL {
         let (pl, ph) = if v.has_friction() {
@@ -226,9 +211,9 @@ fn assert_close<const R: usize, const C: usize>(
 fn frictionless_variant_is_the_full_variant_with_f_zero() {
     let p = PegParams {
         friction: 0.0,
-        ..peg()
+        ..PegParams::fig9()
     };
-    let (pv, lv) = (p.to_vector(), in_plane().to_vector());
+    let (pv, lv) = (p.to_vector(), planar_loads().to_vector());
     for gamma in gammas(&p) {
         for (psi, gd, pd) in [(0.0, -2.0, 10.0), (0.7, 1.5, -3.0)] {
             let x = nalgebra::SVector::<f64, 4>::new(gamma, psi, gd, pd);
@@ -250,7 +235,7 @@ fn frictionless_variant_is_the_full_variant_with_f_zero() {
 
 #[test]
 fn smallest_variant_follows_the_scene() {
-    let p = peg();
+    let p = PegParams::fig9();
     let p0 = PegParams { friction: 0.0, ..p };
     let none = Loads::default();
     let lateral = Loads {
@@ -267,18 +252,21 @@ fn smallest_variant_follows_the_scene() {
     assert_eq!(Variant::smallest(&p0, &none, false), Variant::Frictionless);
     assert_eq!(Variant::smallest(&p, &lateral, true), Variant::Full);
     assert_eq!(Variant::smallest(&p0, &twist, true), Variant::Frictionless);
-    assert_eq!(Variant::smallest(&p, &in_plane(), true), Variant::Planar);
+    assert_eq!(
+        Variant::smallest(&p, &planar_loads(), true),
+        Variant::Planar
+    );
     // At ψ = π/2 the fixed y axis lies in the symmetry plane.
     let half_pi = std::f64::consts::FRAC_PI_2;
     assert_eq!(
-        Variant::smallest_at(&p, &in_plane(), half_pi, true),
+        Variant::smallest_at(&p, &planar_loads(), half_pi, true),
         Variant::Full
     );
 }
 
 #[test]
 fn variants_refuse_what_they_cannot_represent() {
-    let p = peg();
+    let p = PegParams::fig9();
     let (q, qd) = (Vector2::new(0.3, 0.0), Vector2::new(-2.0, 1.0));
     let t = directions(Variant::Full, &p, q, qd);
     let unrep = |r: Result<_, RigidError>| matches!(r, Err(RigidError::Unrepresentable { .. }));
