@@ -36,7 +36,7 @@ impl Point {
             .map(|&(_, v)| v)
     }
 
-    /// This point with `name = value` (added or replaced) and a longer label.
+    /// This point with `name = value` (added or replaced), label unchanged.
     pub fn with(&self, name: &str, value: f64) -> Point {
         let mut p = self.clone();
         p.values.push((name.to_owned(), value));
@@ -104,7 +104,7 @@ pub fn points(module: &str) -> Option<Vec<Point>> {
     }
 }
 
-/// Angles near 0 and π and 1.2 rad, rates 0, 1e-12 and 1; accelerations 0.
+/// Angles near 0 and π and 1.2 rad, rates 0, 1e-12 and 1; accelerations 0.5.
 fn angles(base: &[(&str, f64)], angle: &[&str], rate: &str) -> Vec<Point> {
     let base = Point::new("", base);
     let mut out = Vec::new();

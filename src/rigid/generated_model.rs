@@ -2,8 +2,9 @@
 //! (`pegdyn::generated::rigid_peg*`, derived in
 //! `equations/src/models/rigid_peg.rs`; `docs/rigid-model.md`).
 //!
-//! Four variants of one derivation; a scene picks the smallest that
-//! represents it ([`Variant::smallest`]). Every entry point checks the
+//! Four variants of one derivation; the runtime picks the smallest that
+//! represents the state ([`Variant::smallest_at`]; [`Variant::smallest`] for
+//! a scene posed at ψ = 0). Every entry point checks the
 //! parameters, the three-point range γ0 < γ < π/2 and that the variant can
 //! represent the request, solves the generated 5×5 (or 3×3 planar) system
 //! with LU, and refuses a singular or non-finite solution.
@@ -160,8 +161,7 @@ fn lateral(loads: &Loads, psi: f64) -> f64 {
     -loads.force[0] * s + loads.force[1] * c
 }
 
-/// Checks parameters, finiteness and the three-point range.
-/// Checks the parameters and the state; returns γ0 = arccos(d/D), computed
+/// Checks the parameters, the state's finiteness and the three-point range; returns γ0 = arccos(d/D), computed
 /// once per call and handed to [`args`].
 fn check_state(p: &PegParams, q: Vector2<f64>, qdot: Vector2<f64>) -> Result<f64, RigidError> {
     p.validate()?;
