@@ -18,7 +18,6 @@ use std::hint::black_box;
 use super::cases::{align_forward_scene, insertion_scene};
 use pegdyn::integrate::OutputMode;
 use pegdyn::rigid::forward::ForwardModel;
-use pegdyn::rigid::stop::ForwardStop;
 use pegdyn::rigid::trajectory::{Trajectory, simulate};
 use pegdyn::scene::integrator::IntegratorSpec;
 
@@ -84,17 +83,6 @@ fn integrations<const N: usize, S: OdeSystem<N>>(
     }
 }
 
-/// The time and state of a rigid run's stop, if it has them.
-fn stop_point(stop: &ForwardStop) -> Option<(f64, Option<nalgebra::Vector4<f64>>)> {
-    match stop {
-        ForwardStop::TwoPointContact { t, state }
-        | ForwardStop::LiftOff { t, state, .. }
-        | ForwardStop::Painleve { t, state, .. } => Some((*t, Some(*state))),
-        ForwardStop::ReachedEnd { t } | ForwardStop::Stuck { t, .. } => Some((*t, None)),
-        _ => None,
-    }
-}
-
 /// The rigid forward alignment as the scene runs it: `simulate` with the
 /// scene's output times and span, `atol / rtol` as in the scene (1e-2).
 fn rigid_run(
@@ -121,7 +109,7 @@ fn rigid_forward(c: &mut Criterion) {
     let x0 = scene.initial_state();
     let spec = &scene.integrator;
     let reference = rigid_run(&model, x0, spec, Method::Dopri5, 1e-13);
-    let (t_ref, x_ref) = stop_point(&reference.stop).expect("reference stops at an event");
+    let (t_ref, x_ref) = reference.stop.point().expect("reference stops at an event");
     for (method, rtol) in [
         (Method::Dopri5, 1e-6),
         (Method::Dopri5, 1e-10),
@@ -131,7 +119,7 @@ fn rigid_forward(c: &mut Criterion) {
         let id = format!("align_forward/{}", label(method, rtol));
         let tr = rigid_run(&model, x0, spec, method, rtol);
         let same = tr.stop.name() == reference.stop.name();
-        let (dt, dx) = match (stop_point(&tr.stop), same) {
+        let (dt, dx) = match (tr.stop.point(), same) {
             (Some((t, x)), true) => (
                 (t - t_ref).abs(),
                 x.zip(x_ref).map_or(f64::NAN, |(x, y)| (x - y).amax()),

@@ -215,3 +215,15 @@ pub enum RunError {
     #[error(transparent)]
     Integrate(#[from] crate::integrate::IntegrateError),
 }
+
+impl From<crate::rigid::trajectory::ForwardError> for RunError {
+    /// Each variant to its namesake (the rigid error keeps its
+    /// `rigid peg:` prefix).
+    fn from(e: crate::rigid::trajectory::ForwardError) -> RunError {
+        use crate::rigid::trajectory::ForwardError;
+        match e {
+            ForwardError::Integrate(e) => RunError::Integrate(e),
+            ForwardError::Rigid(e) => RunError::Rigid(e),
+        }
+    }
+}

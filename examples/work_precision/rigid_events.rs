@@ -27,17 +27,10 @@ pub struct EventPoint {
     wall_s: f64,
 }
 
-/// The time and state where a run stopped (state only for located events).
+/// The time and state where a run stopped (state only for located events;
+/// time NaN where [`ForwardStop::point`] has none).
 fn stop_point(stop: &ForwardStop) -> (f64, Option<Vector4<f64>>) {
-    match stop {
-        ForwardStop::TwoPointContact { t, state }
-        | ForwardStop::LiftOff { t, state, .. }
-        | ForwardStop::Painleve { t, state, .. } => (*t, Some(*state)),
-        ForwardStop::ReachedEnd { t }
-        | ForwardStop::Stuck { t, .. }
-        | ForwardStop::RestartLimit { t, .. } => (*t, None),
-        ForwardStop::Integrator(_) => (f64::NAN, None),
-    }
+    stop.point().unwrap_or((f64::NAN, None))
 }
 
 fn run(

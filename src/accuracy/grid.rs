@@ -8,6 +8,7 @@
 
 use crate::compliant::{CompliantParams, CompliantSpec, Load};
 use crate::generated::compliant_peg::P_NAMES;
+use crate::rigid::PegParams;
 
 /// One grid point: a label and a value for each symbol name.
 #[derive(Clone, Debug, PartialEq)]
@@ -35,7 +36,7 @@ impl Point {
             .map(|&(_, v)| v)
     }
 
-    /// This point with `name = value` (added or replaced) and a longer label.
+    /// This point with `name = value` (added or replaced), label unchanged.
     pub fn with(&self, name: &str, value: f64) -> Point {
         let mut p = self.clone();
         p.values.push((name.to_owned(), value));
@@ -103,9 +104,9 @@ pub fn points(module: &str) -> Option<Vec<Point>> {
     }
 }
 
-/// Angles near 0 and π and 1.2 rad, rates 0, 1e-12 and 1; accelerations 0.
+/// Angles near 0 and π and 1.2 rad, rates 0, 1e-12 and 1; accelerations 0.5.
 fn angles(base: &[(&str, f64)], angle: &[&str], rate: &str) -> Vec<Point> {
-    let base = Point::new("", base).with(rate, 0.0);
+    let base = Point::new("", base);
     let mut out = Vec::new();
     for &a in &[0.0, 1e-8, 1e-4, 0.5, 1.2, std::f64::consts::PI - 1e-7] {
         for &w in &[0.0, 1e-12, 1.0] {
@@ -250,12 +251,20 @@ fn quasi_static() -> Vec<Point> {
 /// The rigid peg of seed 000 (Fig. 9 dimensions, D = 50 mm) for
 /// clearances 50 µm, 1 µm and 1 nm: γ = γ0(1 + ε) for ε = 1e-3, 1e-6,
 /// 1e-9, 1e-12 and γ = 0.3, 1.2 rad; ψ̇ = 0, 1e-12 and 1 rad/s; γ0 given
-/// as `2 asin(√((D − d)/(2D)))` rounded to `f64` (as `PegParams::gamma0`).
+/// by [`PegParams::gamma0`], `2 asin(√((D − d)/(2D)))` rounded to `f64`.
 fn rigid() -> Vec<Point> {
     let mut out = Vec::new();
     for &c in &[50e-6f64, 1e-6, 1e-9] {
         let (dh, dp) = (0.05, 0.05 - c);
-        let gamma0 = 2.0 * ((dh - dp) / (2.0 * dh)).sqrt().asin();
+        let gamma0 = PegParams {
+            hole_diameter: dh,
+            peg_diameter: dp,
+            height: 0.07,
+            mass: 1.0,
+            gravity: 9.81,
+            friction: 0.2,
+        }
+        .gamma0();
         let base = Point::new(
             "",
             &[

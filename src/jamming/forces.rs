@@ -70,10 +70,14 @@ pub fn k_factors(mu: f64, theta: f64) -> (f64, f64, f64) {
 /// k1/k2 only, and k2 = sin θ + μ cos θ > 0 for 0 < θ < π/2, μ > 0); it is
 /// kept as the plain closed form that tests and benches compare against.
 pub fn sliding_contact_forces(p: &PegHole, theta: f64, fx: f64, fz: f64) -> ContactForces {
-    let (k1, k2, k3) = k_factors(p.mu(), theta);
+    eq52(p.mu(), k_factors(p.mu(), theta), fx, fz)
+}
+
+/// Eq. 52's division for given factors, unchecked.
+fn eq52(mu: f64, (k1, k2, k3): (f64, f64, f64), fx: f64, fz: f64) -> ContactForces {
     ContactForces {
         tip: (k1 * fz - k2 * fx) / k3,
-        edge: (fz + p.mu() * fx) / k3,
+        edge: (fz + mu * fx) / k3,
     }
 }
 
@@ -104,11 +108,7 @@ fn forces_from_factors(
     fx: f64,
     fz: f64,
 ) -> Result<ContactForces, SlidingIndeterminate> {
-    let (k1, k2, k3) = check_k3(mu, theta, k)?;
-    Ok(ContactForces {
-        tip: (k1 * fz - k2 * fx) / k3,
-        edge: (fz + mu * fx) / k3,
-    })
+    Ok(eq52(mu, check_k3(mu, theta, k)?, fx, fz))
 }
 
 /// [`sliding_contact_forces`], or why they are not determined.

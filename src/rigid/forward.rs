@@ -21,7 +21,7 @@ use nalgebra::{Vector2, Vector3, Vector4};
 
 use crate::rigid::generated_model::{self, Variant};
 use crate::rigid::hand::Pose;
-use crate::rigid::hand_dynamics::forward_system;
+use crate::rigid::hand_dynamics::{forward_system, regularized_opposing};
 use crate::rigid::{Loads, PegParams, RigidError};
 use crate::system::OdeSystem;
 
@@ -62,16 +62,11 @@ fn accelerations(
     qdot: Vector2<f64>,
     t: &[Vector3<f64>; 3],
 ) -> Result<Accelerations, RigidError> {
-    let variant = Variant::smallest_at(p, loads, q[1], qdot[1] == 0.0);
-    match generated_model::forward(variant, p, loads, q, qdot, t) {
-        // Friction directions out of the plane (a sliding start searched
-        // over the circle): the planar variant cannot represent them.
-        Err(RigidError::Unrepresentable { .. }) if variant.is_planar() => {
-            let full = Variant::smallest_at(p, loads, q[1], false);
-            generated_model::forward(full, p, loads, q, qdot, t)
-        }
-        r => r,
-    }
+    // Friction directions out of the plane (a sliding start searched over
+    // the circle) rule out the planar variant with friction.
+    let in_plane = qdot[1] == 0.0 && (p.friction == 0.0 || generated_model::planar_directions(t));
+    let variant = Variant::smallest_at(p, loads, q[1], in_plane);
+    generated_model::forward(variant, p, loads, q, qdot, t)
 }
 
 /// The peg, its loads and the friction law of a forward simulation.
@@ -177,26 +172,34 @@ impl ForwardModel {
         start: Option<Vector2<f64>>,
     ) -> Result<[Vector3<f64>; 3], RigidError> {
         let pose = Pose::try_new(&self.params, q[0], q[1])?;
+        self.directions_at(&pose, qdot, start)
+    }
+
+    /// [`ForwardModel::friction_directions`] at an already built pose.
+    fn directions_at(
+        &self,
+        pose: &Pose,
+        qdot: Vector2<f64>,
+        start: Option<Vector2<f64>>,
+    ) -> Result<[Vector3<f64>; 3], RigidError> {
         let j = pose.jacobians_local();
+        let v = [0, 1, 2].map(|i| j.contacts[i] * qdot);
+        if let FrictionLaw::Regularized { v_s } = self.friction {
+            return Ok(regularized_opposing(&v, v_s));
+        }
         let mut t = [Vector3::zeros(); 3];
-        for (i, ti) in t.iter_mut().enumerate() {
-            let v = j.contacts[i] * qdot;
-            *ti = match self.friction {
-                FrictionLaw::Regularized { v_s } => -v / (v.norm_squared() + v_s * v_s).sqrt(),
-                FrictionLaw::Coulomb => {
-                    let s = v.norm();
-                    if s > 0.0 && s.is_finite() {
-                        -v / s
-                    } else {
-                        let u = start.map(|u| j.contacts[i] * u).filter(|u| u.norm() > 0.0);
-                        match u {
-                            Some(u) => -u / u.norm(),
-                            None => {
-                                return Err(RigidError::NoSliding {
-                                    contact: crate::rigid::hand_dynamics::CONTACTS[i],
-                                });
-                            }
-                        }
+        for (i, (ti, v)) in t.iter_mut().zip(v).enumerate() {
+            let s = v.norm();
+            *ti = if s > 0.0 && s.is_finite() {
+                -v / s
+            } else {
+                let u = start.map(|u| j.contacts[i] * u).filter(|u| u.norm() > 0.0);
+                match u {
+                    Some(u) => -u / u.norm(),
+                    None => {
+                        return Err(RigidError::NoSliding {
+                            contact: crate::rigid::hand_dynamics::CONTACTS[i],
+                        });
                     }
                 }
             };
@@ -315,10 +318,10 @@ impl ForwardModel {
     pub fn contact_determinant(&self, x: &Vector4<f64>, start: Option<Vector2<f64>>) -> f64 {
         let (q, qdot) = split(x);
         let gamma = self.clamp_gamma(q[0]);
-        let (Ok(pose), Ok(t)) = (
-            Pose::try_new(&self.params, gamma, q[1]),
-            self.friction_directions(Vector2::new(gamma, q[1]), qdot, start),
-        ) else {
+        let Ok(pose) = Pose::try_new(&self.params, gamma, q[1]) else {
+            return f64::NAN;
+        };
+        let Ok(t) = self.directions_at(&pose, qdot, start) else {
             return f64::NAN;
         };
         let (a, _) = forward_system(&self.params, &self.loads, &pose, qdot, &t);

@@ -21,14 +21,14 @@ use nalgebra::{Vector2, Vector4};
 use crate::integrate::{Direction, Event};
 use crate::rigid::forward::{ForwardModel, FrictionLaw};
 
+/// A state and its reactions (`None`: the model failed there).
+type Memo = Option<(Vector4<f64>, Option<[f64; 3]>)>;
+
 /// The normal reactions at the last state asked for: the integrator
 /// evaluates every event function at the same state in turn, and the three
 /// lift-off events and the jam event all need the one forward solution
 /// there (one model evaluation instead of four). The value is a pure
 /// function of `x`, so the memo changes no result.
-/// A state and its reactions (`None`: the model failed there).
-type Memo = Option<(Vector4<f64>, Option<[f64; 3]>)>;
-
 struct LastReactions<'m> {
     model: &'m ForwardModel,
     start: Option<Vector2<f64>>,

@@ -2,8 +2,9 @@
 //! (`pegdyn::generated::rigid_peg*`, derived in
 //! `equations/src/models/rigid_peg.rs`; `docs/rigid-model.md`).
 //!
-//! Four variants of one derivation; a scene picks the smallest that
-//! represents it ([`Variant::smallest`]). Every entry point checks the
+//! Four variants of one derivation; the runtime picks the smallest that
+//! represents the state ([`Variant::smallest_at`]; [`Variant::smallest`] for
+//! a scene posed at ψ = 0). Every entry point checks the
 //! parameters, the three-point range γ0 < γ < π/2 and that the variant can
 //! represent the request, solves the generated 5×5 (or 3×3 planar) system
 //! with LU, and refuses a singular or non-finite solution.
@@ -13,11 +14,12 @@
 //! K, B1, B2; [`friction_directions`] makes them from
 //! [`contact_velocities`].
 
-use nalgebra::{SMatrix, SVector, Vector2, Vector3};
+use nalgebra::{SVector, Vector2, Vector3};
 
 use crate::generated::{
     rigid_peg, rigid_peg_frictionless, rigid_peg_planar, rigid_peg_planar_frictionless,
 };
+use crate::rigid::hand_dynamics::solve;
 use crate::rigid::prescribed::Reactions;
 use crate::rigid::{Loads, PegParams, RigidError};
 
@@ -133,17 +135,24 @@ impl Variant {
         if lateral(loads, psi).abs() > PLANAR_TOL * scale {
             return Err(self.refuse("the force has a lateral (e_n) component"));
         }
-        if self.has_friction() {
-            let lateral_t = t.iter().any(|ti| ti.y.abs() > PLANAR_TOL);
-            let (b1, b2) = (t[1], t[2]);
-            let unequal = (b1.x - b2.x).abs() > PLANAR_TOL || (b1.z - b2.z).abs() > PLANAR_TOL;
-            if lateral_t || unequal {
-                return Err(self
-                    .refuse("friction directions are not planar (t_n = 0, t_B1 = t_B2 required)"));
-            }
+        if self.has_friction() && !planar_directions(t) {
+            return Err(
+                self.refuse("friction directions are not planar (t_n = 0, t_B1 = t_B2 required)")
+            );
         }
         Ok(())
     }
+}
+
+/// Whether the friction directions `t` (K, B1, B2) lie in the symmetry
+/// plane, as the planar variants with friction require: no lateral (e_n)
+/// component and t_B1 = t_B2, each up to [`PLANAR_TOL`] (absolute, `t` is
+/// at most unit).
+pub(crate) fn planar_directions(t: &[Vector3<f64>; 3]) -> bool {
+    let lateral_t = t.iter().any(|ti| ti.y.abs() > PLANAR_TOL);
+    let (b1, b2) = (t[1], t[2]);
+    let unequal = (b1.x - b2.x).abs() > PLANAR_TOL || (b1.z - b2.z).abs() > PLANAR_TOL;
+    !(lateral_t || unequal)
 }
 
 /// Lateral (e_n) component of the assembly force at precession angle ψ (N).
@@ -152,8 +161,7 @@ fn lateral(loads: &Loads, psi: f64) -> f64 {
     -loads.force[0] * s + loads.force[1] * c
 }
 
-/// Checks parameters, finiteness and the three-point range.
-/// Checks the parameters and the state; returns γ0 = arccos(d/D), computed
+/// Checks the parameters, the state's finiteness and the three-point range; returns γ0 = arccos(d/D), computed
 /// once per call and handed to [`args`].
 fn check_state(p: &PegParams, q: Vector2<f64>, qdot: Vector2<f64>) -> Result<f64, RigidError> {
     p.validate()?;
@@ -212,23 +220,6 @@ fn args(
     }
 }
 
-/// LU solve of a generated system; `Singular` unless the solution is finite.
-macro_rules! solver {
-    ($name:ident, $n:literal) => {
-        fn $name(
-            (a, b): (SMatrix<f64, $n, $n>, SVector<f64, $n>),
-            gamma: f64,
-        ) -> Result<SVector<f64, $n>, RigidError> {
-            match a.lu().solve(&b) {
-                Some(x) if x.iter().all(|v| v.is_finite()) => Ok(x),
-                _ => Err(RigidError::Singular { gamma }),
-            }
-        }
-    };
-}
-solver!(solve5, 5);
-solver!(solve3, 3);
-
 /// Forward dynamics: (γ̈, ψ̈) and the normal forces at state (q, q̇) under
 /// `loads`, with friction directions `t` (ignored by the frictionless
 /// variants). Replaces the paper's (24)–(31).
@@ -251,8 +242,8 @@ pub fn forward(
     variant.check(p, loads, q[1], qdot[1], t)?;
     let a = args(p, gamma0, loads, q, qdot, t);
     let gamma = q[0];
-    let two = |system| solve5(system, gamma);
-    let one = |system| solve3(system, gamma);
+    let two = |(a, b)| solve::<5>(&a, &b, gamma);
+    let one = |(a, b)| solve::<3>(&a, &b, gamma);
     let (qdd, normal) = match variant {
         Variant::Full => split5(two(rigid_peg::forward(&a.x2, &a.p, &a.loads2, &a.t2))?),
         Variant::Frictionless => split5(two(rigid_peg_frictionless::forward(
@@ -303,8 +294,8 @@ pub fn prescribed(
     let a = args(p, gamma0, &loads, q, qdot, t);
     let (qdd2, qdd1) = (qdd, SVector::<f64, 1>::new(qdd[0]));
     let gamma = q[0];
-    let two = |system| solve5(system, gamma);
-    let one = |system| solve3(system, gamma);
+    let two = |(a, b)| solve::<5>(&a, &b, gamma);
+    let one = |(a, b)| solve::<3>(&a, &b, gamma);
     let (moments, normal) = match variant {
         Variant::Full => split5(two(rigid_peg::prescribed(
             &a.x2, &qdd2, &a.p, &a.loads2, &a.t2,
@@ -369,11 +360,6 @@ pub fn contact_velocities(
     Ok([0, 1, 2].map(|i| v.row(i).transpose()))
 }
 
-/// Friction directions t_i = −v_i/|v_i| from the contact velocities.
-///
-/// # Errors
-/// [`RigidError::NoSliding`] when a contact's sliding speed is zero or not
-/// finite.
-pub fn friction_directions(v: &[Vector3<f64>; 3]) -> Result<[Vector3<f64>; 3], RigidError> {
-    crate::rigid::hand_dynamics::directions_opposing(v)
-}
+/// Friction directions t_i = −v_i/|v_i| from the contact velocities (the
+/// hand-derived model's [`directions_opposing`](crate::rigid::hand_dynamics::directions_opposing)).
+pub use crate::rigid::hand_dynamics::directions_opposing as friction_directions;

@@ -23,7 +23,7 @@
 //! The prescribed-motion problem has the unknowns [M_γ, M_ψ, N_K, N_B1, N_B2]
 //! in the same equations.
 
-use nalgebra::{Matrix2, Matrix3, SMatrix, SVector, Vector2, Vector3};
+use nalgebra::{Const, DimMin, Matrix2, Matrix3, SMatrix, SVector, Vector2, Vector3};
 
 use crate::rigid::hand::{Kinematics, Pose};
 use crate::rigid::{Loads, PegParams, RigidError};
@@ -107,8 +107,14 @@ pub fn directions_opposing(v: &[Vector3<f64>; 3]) -> Result<[Vector3<f64>; 3], R
 /// Regularized friction directions t_i = −v_i/√(|v_i|² + v_s²) with the
 /// velocity scale `v_s` (m/s): |t_i| < 1, defined at v = 0.
 pub fn regularized_directions(kin: &Kinematics, v_s: f64) -> [Vector3<f64>; 3] {
-    kin.v_contacts_local
-        .map(|v| -v / (v.norm_squared() + v_s * v_s).sqrt())
+    regularized_opposing(&kin.v_contacts_local, v_s)
+}
+
+/// t_i = −v_i/√(|v_i|² + v_s²) for the sliding velocities `v` of K, B1, B2
+/// (any components; the directions come out in the same ones) and the
+/// velocity scale `v_s` (m/s).
+pub fn regularized_opposing(v: &[Vector3<f64>; 3], v_s: f64) -> [Vector3<f64>; 3] {
+    v.map(|v| -v / (v.norm_squared() + v_s * v_s).sqrt())
 }
 
 /// The blocks shared by both problems: Lagrange rows (2) and centre-of-mass
@@ -203,12 +209,21 @@ pub fn prescribed_system(
     (a, rhs)
 }
 
-/// Solves a 5×5 rigid-peg system with LU.
+/// Solves an N×N rigid-peg system (the hand-derived 5×5, the generated
+/// 5×5 or 3×3 planar one) with LU; `gamma` (rad) names the state in the
+/// error.
 ///
 /// # Errors
 /// [`RigidError::Singular`] when the matrix is singular or the solution is
 /// not finite.
-pub fn solve(a: &Matrix5, rhs: &Vector5, gamma: f64) -> Result<Vector5, RigidError> {
+pub fn solve<const N: usize>(
+    a: &SMatrix<f64, N, N>,
+    rhs: &SVector<f64, N>,
+    gamma: f64,
+) -> Result<SVector<f64, N>, RigidError>
+where
+    Const<N>: DimMin<Const<N>, Output = Const<N>>,
+{
     match a.lu().solve(rhs) {
         Some(x) if x.iter().all(|v| v.is_finite()) => Ok(x),
         _ => Err(RigidError::Singular { gamma }),

@@ -118,7 +118,7 @@ pub fn contact_problem(
 }
 
 impl ContactProblem {
-    /// Every consistent mode (tolerance `tol` on N and g̈ relative to the
+    /// Every consistent mode (tolerance 1e-9 on N and g̈ relative to the
     /// problem's scale).
     pub fn consistent_modes(&self) -> Vec<Mode> {
         let scale_g = self.w_free.amax().max(1e-300);

@@ -80,6 +80,19 @@ pub enum ForwardStop {
 }
 
 impl ForwardStop {
+    /// The time (s) of the stop and, for a located event, the state there;
+    /// `None` for an integrator stop and for the restart budget (which
+    /// ends the run without a point of the motion to compare).
+    pub fn point(&self) -> Option<(f64, Option<Vector4<f64>>)> {
+        match self {
+            ForwardStop::TwoPointContact { t, state }
+            | ForwardStop::LiftOff { t, state, .. }
+            | ForwardStop::Painleve { t, state, .. } => Some((*t, Some(*state))),
+            ForwardStop::ReachedEnd { t } | ForwardStop::Stuck { t, .. } => Some((*t, None)),
+            ForwardStop::Integrator(_) | ForwardStop::RestartLimit { .. } => None,
+        }
+    }
+
     /// Short name of the event, e.g. `lift_off_B1`.
     pub fn name(&self) -> String {
         match self {

@@ -160,7 +160,7 @@ impl PartialOrd for Dd {
 }
 
 impl fmt::Display for Dd {
-    /// `hi + lo` with both parts in full (e.g. `3.141592653589793 + 1.2246467991473532e-16`).
+    /// `hi + lo` with both parts in full (e.g. `3.141592653589793e0 + 1.2246467991473532e-16`).
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{:e} + {:e}", self.hi, self.lo)
     }

@@ -259,11 +259,7 @@ impl Scene for AlignForwardScene {
             method,
             &options,
             &mut |t| progress.update(t),
-        )
-        .map_err(|e| match e {
-            crate::rigid::trajectory::ForwardError::Integrate(e) => RunError::Integrate(e),
-            crate::rigid::trajectory::ForwardError::Rigid(e) => RunError::Rigid(e),
-        })?;
+        )?;
         let header = [
             "t", "gamma", "psi", "gammadot", "psidot", "N_K", "N_B1", "N_B2",
         ];
