@@ -203,3 +203,31 @@ fn fig9_state_near_gamma0_is_a_lift_off_of_b1() {
         v => panic!("{v:?}"),
     }
 }
+
+/// Without gravity the reactions are watched in units of the applied load
+/// (|F| + (|M_γ| + |M_ψ|)/H), or of 1 N without loads, not of a zero
+/// weight (N/(m·0) is ±∞: the lift-off functions were infinite and `jam`
+/// could never rise); the frictionless peg pressed down by 20 N still
+/// slides to γ0 and stops there.
+#[test]
+fn without_gravity_the_peg_still_slides_to_gamma0() {
+    use pegdyn::rigid::forward_events::force_scale;
+    let p = PegParams {
+        gravity: 0.0,
+        ..frictionless()
+    };
+    let loads = Loads {
+        m_gamma: -0.02,
+        force: [0.0, 0.0, -20.0],
+        ..Loads::default()
+    };
+    let m = ForwardModel::new(p, loads).unwrap();
+    assert_eq!(force_scale(&m), 20.0 + 0.02 / p.height);
+    let unloaded = ForwardModel::new(p, Loads::default()).unwrap();
+    assert_eq!(force_scale(&unloaded), 1.0);
+    let tr = run(&m, Vector4::new(0.06, 0.0, -0.2, 0.0), 1e-10, 1e-12);
+    let ForwardStop::TwoPointContact { state, .. } = tr.stop else {
+        panic!("{}", tr.stop);
+    };
+    assert!((state[0] - p.gamma0()).abs() < 1e-10);
+}

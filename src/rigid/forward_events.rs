@@ -2,13 +2,13 @@
 //! integrator [`Event`]s on x = (γ, ψ, γ̇, ψ̇), all terminal:
 //!
 //! - `gamma0`: γ − γ0 falling through 0 (B1 and B2 merge, b → 0);
-//! - `lift_off_K`, `lift_off_B1`, `lift_off_B2`: N_i/(m g) falling
-//!   through 0;
+//! - `lift_off_K`, `lift_off_B1`, `lift_off_B2`: N_i/W falling through 0,
+//!   W the force scale of [`force_scale`] (m g when there is gravity);
 //! - `stop` (exact Coulomb only): RMS sliding speed − v_stop falling
 //!   through 0 (the peg comes to rest: decide stick or slip);
 //! - `singular`: the normalized determinant of the forward system changing
 //!   sign (Painlevé singularity);
-//! - `jam`: the largest reaction rising through [`N_JAM`]·m g: the
+//! - `jam`: the largest reaction rising through [`N_JAM`]·W: the
 //!   determinant tends to zero and the reactions grow without bound before
 //!   it changes sign (approach to a Painlevé singularity, a "dynamic jam"
 //!   that a rigid model can only resolve by a tangential impulse).
@@ -67,8 +67,24 @@ pub enum EventKind {
     Stop,
     /// The forward system became singular.
     Singular,
-    /// A reaction exceeded [`N_JAM`]·m g.
+    /// A reaction exceeded [`N_JAM`]·W ([`force_scale`]).
     Jam,
+}
+
+/// The force W (N) in whose units the reactions are watched: the weight
+/// m g; without gravity the applied loads' scale |F| + (|M_γ| + |M_ψ|)/H;
+/// 1 N when there is neither (the reactions are then inertial only, and
+/// `jam` fires at [`N_JAM`] N). Never zero, so N/W stays finite.
+pub fn force_scale(model: &ForwardModel) -> f64 {
+    let p = &model.params;
+    let weight = p.mass * p.gravity;
+    if weight > 0.0 {
+        return weight;
+    }
+    let l = &model.loads;
+    let f = l.force.iter().map(|c| c * c).sum::<f64>().sqrt();
+    let applied = f + (l.m_gamma.abs() + l.m_psi.abs()) / p.height;
+    if applied > 0.0 { applied } else { 1.0 }
 }
 
 /// The events for `model` with the sliding start `start`, and their kinds
@@ -78,7 +94,7 @@ pub fn events(
     start: Option<Vector2<f64>>,
 ) -> (Vec<Event<'_, 4>>, Vec<EventKind>) {
     let g0 = model.params.gamma0();
-    let weight = model.params.mass * model.params.gravity.max(f64::MIN_POSITIVE);
+    let weight = force_scale(model);
     let mut ev = vec![
         Event::new(move |_t, x: &Vector4<f64>| x[0] - g0)
             .direction(Direction::Falling)
