@@ -9,7 +9,7 @@
 //! timed loop; only [`Case::interpret`] is timed.
 
 use nalgebra::{Dim, Matrix, RawStorage, SVector};
-use pegdyn::compliant::{CompliantParams, Load, PegState};
+use pegdyn::compliant_peg::{CompliantParams, Load, PegState};
 use pegdyn_equations::eval::Tape;
 use pegdyn_equations::graph::SymKind;
 use pegdyn_equations::{Graph, models};
@@ -135,7 +135,7 @@ impl Cases {
 /// μ = 0.1, f₁ = 5 N, M = −0.002 N·m, tilted 0.01 rad in two-point contact).
 pub fn insertion_scene() -> (CompliantParams, Load, PegState) {
     let text = include_str!("../scenes/insert_compliant.toml");
-    let scene: pegdyn::compliant::scene::InsertCompliantScene =
+    let scene: pegdyn::compliant_peg::scene::InsertCompliantScene =
         pegdyn::scene::document::Document::parse(text)
             .and_then(|d| d.body())
             .expect("shipped scene parses");
@@ -147,7 +147,7 @@ pub fn insertion_scene() -> (CompliantParams, Load, PegState) {
 /// the file so that the benches follow it) and its forward model.
 pub fn align_forward_scene() -> (
     pegdyn::scene::align_forward::AlignForwardScene,
-    pegdyn::rigid::forward::ForwardModel,
+    pegdyn::rigid_peg::forward::ForwardModel,
 ) {
     let text = include_str!("../scenes/align_forward.toml");
     let scene: pegdyn::scene::align_forward::AlignForwardScene =
@@ -180,9 +180,9 @@ pub fn physical_inputs(module: &str, input: &str) -> Option<Vec<f64>> {
 /// (planar: ψ̇ = 0), small applied loads, friction opposing the sliding.
 fn rigid_inputs(planar: bool, input: &str) -> Option<Vec<f64>> {
     use nalgebra::Vector2;
-    use pegdyn::rigid::hand::Pose;
-    use pegdyn::rigid::hand_dynamics::friction_directions;
-    use pegdyn::rigid::{Loads, PegParams};
+    use pegdyn::rigid_peg::hand::Pose;
+    use pegdyn::rigid_peg::hand_dynamics::friction_directions;
+    use pegdyn::rigid_peg::{Loads, PegParams};
     let p = PegParams::fig9();
     let (gamma, qd) = (0.3, Vector2::new(-2.0, if planar { 0.0 } else { 10.0 }));
     let loads = Loads {

@@ -7,18 +7,18 @@
 
 use criterion::Criterion;
 use nalgebra::{SVector, Vector2};
-use pegdyn::compliant::{CompliantSystem, Load, PegState};
+use pegdyn::compliant_peg::{CompliantSystem, Load, PegState};
 use pegdyn::integrate::{Direction, Event, Method, Options, Solution, Solver};
 use pegdyn::reference_problems::{Pendulum, StiffLinear, VanDerPol};
-use pegdyn::rigid::prescribed::{fig9_rows, gamma_grid, reactions, reactions_hand};
-use pegdyn::rigid::{Loads, PegParams, RigidError};
+use pegdyn::rigid_peg::prescribed::{fig9_rows, gamma_grid, reactions, reactions_hand};
+use pegdyn::rigid_peg::{Loads, PegParams, RigidError};
 use pegdyn::system::OdeSystem;
 use std::hint::black_box;
 
 use super::cases::{align_forward_scene, insertion_scene};
 use pegdyn::integrate::OutputMode;
-use pegdyn::rigid::forward::ForwardModel;
-use pegdyn::rigid::trajectory::{Trajectory, simulate};
+use pegdyn::rigid_peg::forward::ForwardModel;
+use pegdyn::rigid_peg::trajectory::{Trajectory, simulate};
 use pegdyn::scene::integrator::IntegratorSpec;
 
 /// The signature of `reactions` and `reactions_hand`.
@@ -28,7 +28,7 @@ type Reactions = fn(
     Vector2<f64>,
     Vector2<f64>,
     Vector2<f64>,
-) -> Result<pegdyn::rigid::prescribed::Reactions, RigidError>;
+) -> Result<pegdyn::rigid_peg::prescribed::Reactions, RigidError>;
 
 /// Integrates without storing the trajectory; `events` are made by
 /// `event` (a fresh terminal event per run, if any).

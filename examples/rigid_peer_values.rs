@@ -13,7 +13,7 @@
 //!
 //! - `values`: per input line one JSON line with `a` (5×5, row-major), `b`,
 //!   `u` (A⁻¹b by LU) and `xdot`, the right-hand side of
-//!   `rigid::forward::PegSystem` (exact Coulomb; friction directions from the
+//!   `rigid_peg::forward::PegSystem` (exact Coulomb; friction directions from the
 //!   state, so `t` is not used) for the peg and loads of the line (`null`
 //!   where it is not defined).
 //! - `time CALLS REPEATS`: ns per call (median of REPEATS loops of CALLS
@@ -33,8 +33,8 @@ use std::time::Instant;
 use nalgebra::{SMatrix, SVector, Vector4};
 use pegdyn::generated::rigid_peg;
 use pegdyn::integrate::{Method, Options, Solver};
-use pegdyn::rigid::forward::{ForwardModel, PegSystem};
-use pegdyn::rigid::{Loads, PegParams};
+use pegdyn::rigid_peg::forward::{ForwardModel, PegSystem};
+use pegdyn::rigid_peg::{Loads, PegParams};
 use pegdyn::scene::align_forward::AlignForwardScene;
 use pegdyn::scene::document::Document;
 use pegdyn::system::OdeSystem;

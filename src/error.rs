@@ -210,17 +210,17 @@ pub enum RunError {
     Jamming(#[from] crate::jamming::ParamError),
     /// The rigid-peg model (seed 000) has no physical answer at a state.
     #[error("rigid peg: {0}")]
-    Rigid(#[from] crate::rigid::RigidError),
+    Rigid(#[from] crate::rigid_peg::RigidError),
     /// The integrator rejected its input.
     #[error(transparent)]
     Integrate(#[from] crate::integrate::IntegrateError),
 }
 
-impl From<crate::rigid::trajectory::ForwardError> for RunError {
+impl From<crate::rigid_peg::trajectory::ForwardError> for RunError {
     /// Each variant to its namesake (the rigid error keeps its
     /// `rigid peg:` prefix).
-    fn from(e: crate::rigid::trajectory::ForwardError) -> RunError {
-        use crate::rigid::trajectory::ForwardError;
+    fn from(e: crate::rigid_peg::trajectory::ForwardError) -> RunError {
+        use crate::rigid_peg::trajectory::ForwardError;
         match e {
             ForwardError::Integrate(e) => RunError::Integrate(e),
             ForwardError::Rigid(e) => RunError::Rigid(e),

@@ -5,7 +5,7 @@
 extern crate self as pegdyn;
 
 pub mod accuracy;
-pub mod compliant;
+pub mod compliant_peg;
 pub mod error;
 pub mod generated;
 pub mod hertz;
@@ -13,7 +13,7 @@ pub mod integrate;
 pub mod jamming;
 pub mod output;
 pub mod reference_problems;
-pub mod rigid;
+pub mod rigid_peg;
 pub mod scalar;
 pub mod scene;
 pub mod system;

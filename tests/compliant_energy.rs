@@ -6,7 +6,7 @@
 //! integrated as extra states of the generated model.
 
 use nalgebra::SVector;
-use pegdyn::compliant::{CompliantParams, CompliantSpec, CompliantSystem, Load, PegState};
+use pegdyn::compliant_peg::{CompliantParams, CompliantSpec, CompliantSystem, Load, PegState};
 use pegdyn::integrate::{Method, Options, Solver};
 
 struct Trace {

@@ -4,7 +4,7 @@
 //! a flat" shortcut, the wall contact splits near √(2c), and bad dimensions
 //! are refused with the field named.
 
-use pegdyn::compliant::{ContactPair, PegHoleGeometry};
+use pegdyn::compliant_peg::{ContactPair, PegHoleGeometry};
 use pegdyn::hertz::{Curvatures, EllipticityMethod, HertzContact, HertzError, Material};
 
 const D: f64 = 0.05;

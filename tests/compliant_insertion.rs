@@ -5,7 +5,7 @@
 //! proportion to its velocity scale `v_s`.
 
 use nalgebra::SVector;
-use pegdyn::compliant::{
+use pegdyn::compliant_peg::{
     CompliantParams, CompliantSpec, CompliantSystem, InsertionOptions, InsertionOutcome, Load,
     PegState, simulate_insertion,
 };

@@ -1,15 +1,15 @@
 //! The planar compliant peg-in-hole model's expression trees
-//! (`equations/src/models/planar_peg*.rs`), evaluated by the interpreter:
+//! (`equations/src/models/compliant_peg/`), evaluated by the interpreter:
 //! the symbolic Jacobian against finite differences, contact states arising
 //! from the geometry alone (free, two-point), and the Hertz ellipse trees
 //! against `pegdyn::hertz`.
 
-use pegdyn::compliant::{ContactPair, PegHoleGeometry};
+use pegdyn::compliant_peg::{ContactPair, PegHoleGeometry};
 use pegdyn::hertz::{EllipticityMethod, HertzContact, Material};
 use pegdyn_equations::Graph;
 use pegdyn_equations::eval::Tape;
-use pegdyn_equations::models::planar_peg::{self, PARAMS, STATE};
-use pegdyn_equations::models::planar_peg_geometry::Contact;
+use pegdyn_equations::models::compliant_peg::{self, PARAMS, STATE};
+use pegdyn_equations::models::compliant_peg::geometry::Contact;
 
 const D: f64 = 0.05;
 const C: f64 = 0.002;
@@ -65,7 +65,7 @@ fn params(mu: f64, loads: [f64; 3]) -> (Vec<(String, f64)>, ContactPair) {
 
 /// The state in two-point contact (left edge, right wall) at tilt `theta`
 /// with penetrations `delta_a`, `delta_b` (solving the two linear relations
-/// of `planar_peg_geometry` for x and z).
+/// of `compliant_peg::geometry` for x and z).
 fn two_point(theta: f64, delta_a: f64, delta_b: f64) -> [f64; 3] {
     let r = 0.5 * D * (1.0 - C);
     let (s, c) = theta.sin_cos();
@@ -94,7 +94,7 @@ impl Model {
 #[test]
 fn parameter_list_is_complete() {
     let g = Graph::new();
-    let _ = planar_peg::build(&g, &Contact::ALL);
+    let _ = compliant_peg::build(&g, &Contact::ALL);
     let (p, _) = params(0.1, [0.0; 3]);
     let mut names: Vec<&str> = p.iter().map(|(n, _)| n.as_str()).collect();
     names.sort_unstable();
@@ -114,7 +114,7 @@ fn parameter_list_is_complete() {
 #[test]
 fn jacobian_matches_central_differences() {
     let model = Model { g: Graph::new() };
-    let pp = planar_peg::build(&model.g, &Contact::ALL);
+    let pp = compliant_peg::build(&model.g, &Contact::ALL);
     let rhs_ids: Vec<_> = pp.rhs.iter().map(|e| e.id()).collect();
     let jac_ids: Vec<_> = pp.jacobian.iter().flatten().map(|e| e.id()).collect();
     let (rhs, jac) = (Tape::new(&model.g, &rhs_ids), Tape::new(&model.g, &jac_ids));
@@ -154,7 +154,7 @@ fn jacobian_matches_central_differences() {
 #[test]
 fn centred_upright_peg_feels_no_contact_force() {
     let model = Model { g: Graph::new() };
-    let pp = planar_peg::build(&model.g, &Contact::ALL);
+    let pp = compliant_peg::build(&model.g, &Contact::ALL);
     let roots: Vec<_> = pp.normal.iter().chain(&pp.rhs).map(|e| e.id()).collect();
     let tape = Tape::new(&model.g, &roots);
     let (p, _) = params(0.1, [30.0, 0.0, 0.0]);
@@ -169,7 +169,7 @@ fn centred_upright_peg_feels_no_contact_force() {
 #[test]
 fn tilted_peg_in_two_point_contact_has_both_forces_positive() {
     let model = Model { g: Graph::new() };
-    let pp = planar_peg::build(&model.g, &Contact::ALL);
+    let pp = compliant_peg::build(&model.g, &Contact::ALL);
     let roots: Vec<_> = pp.normal.iter().chain(&pp.delta).map(|e| e.id()).collect();
     let tape = Tape::new(&model.g, &roots);
     let (p, pair) = params(0.1, [0.0; 3]);
@@ -195,7 +195,7 @@ fn tilted_peg_in_two_point_contact_has_both_forces_positive() {
 #[test]
 fn ellipse_trees_agree_with_runtime_hertz() {
     let model = Model { g: Graph::new() };
-    let pp = planar_peg::build(&model.g, &[Contact::EdgeLeft, Contact::WallRight]);
+    let pp = compliant_peg::build(&model.g, &[Contact::EdgeLeft, Contact::WallRight]);
     let roots: Vec<_> = pp
         .ellipse
         .iter()
@@ -241,7 +241,7 @@ fn generated_functions_match_the_interpreter_at_a_physical_state() {
     use nalgebra::SVector;
     use pegdyn::generated::compliant_peg as cp;
     let model = Model { g: Graph::new() };
-    let pp = planar_peg::build(&model.g, &Contact::ALL);
+    let pp = compliant_peg::build(&model.g, &Contact::ALL);
     let roots: Vec<_> = pp
         .rhs
         .iter()

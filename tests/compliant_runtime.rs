@@ -2,7 +2,7 @@
 //! generated model's names, the two-point start has both contact forces
 //! positive, and bad input is refused with the field named.
 
-use pegdyn::compliant::{CompliantParams, CompliantSpec, CompliantSystem, Load, PegState};
+use pegdyn::compliant_peg::{CompliantParams, CompliantSpec, CompliantSystem, Load, PegState};
 use pegdyn::hertz::{HertzError, Material};
 
 fn field(r: Result<CompliantParams, HertzError>) -> String {
@@ -90,7 +90,7 @@ fn bad_input_is_refused_with_the_field_named() {
 /// (μ = 0.1, D = 50 mm: 5 mm), not when the peg is deeper.
 #[test]
 fn contact_line_lies_in_the_friction_cones_only_when_shallow() {
-    use pegdyn::compliant::simulate::contact_line_in_cones;
+    use pegdyn::compliant_peg::simulate::contact_line_in_cones;
     let p = CompliantParams::try_new(CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, 0.1)).unwrap();
     let shallow = PegState::two_point(&p, 0.04, 0.0).unwrap();
     let deep = PegState::two_point(&p, 0.005, 0.0).unwrap();

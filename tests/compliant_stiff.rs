@@ -6,7 +6,7 @@
 //! than Dormand–Prince, which is held to the stability limit; both agree.
 //! (Step and call counts only: timings are in `docs/compliant.md`.)
 
-use pegdyn::compliant::{CompliantParams, CompliantSpec, CompliantSystem, Load, PegState};
+use pegdyn::compliant_peg::{CompliantParams, CompliantSpec, CompliantSystem, Load, PegState};
 use pegdyn::integrate::{Method, Options, Solver};
 
 #[test]

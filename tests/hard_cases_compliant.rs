@@ -5,7 +5,7 @@
 //! the jamming factor k3 of Eq. (52) going to zero.
 
 use nalgebra::SVector;
-use pegdyn::compliant::{CompliantParams, CompliantSpec, Load};
+use pegdyn::compliant_peg::{CompliantParams, CompliantSpec, Load};
 use pegdyn::generated::compliant_peg_lean as lean;
 use pegdyn::jamming::forces::{k_factors, try_sliding_contact_forces};
 use pegdyn::jamming::{PegHole, SlidingIndeterminate};

@@ -1,5 +1,5 @@
 //! Hard cases of the rigid peg on the hole edge at three points (seed 000,
-//! hand-derived model `pegdyn::rigid`): γ → γ0 = arccos(d/D) for small
+//! hand-derived model `pegdyn::rigid_peg`): γ → γ0 = arccos(d/D) for small
 //! clearances, γ up to 1.2 rad, ψ̇ = 0 exactly and 1e-12, and a 10 s
 //! frictionless simulation (energy and contact-constraint drift).
 //! The generated rigid model (`pegdyn::generated::rigid_peg*`) is measured
@@ -9,12 +9,12 @@
 use nalgebra::{SVector, Vector2, Vector4};
 use pegdyn::accuracy::ulp;
 use pegdyn::integrate::{Method, Options, Solver};
-use pegdyn::rigid::hand::{Geometry, Pose};
-use pegdyn::rigid::hand_dynamics::{
+use pegdyn::rigid_peg::hand::{Geometry, Pose};
+use pegdyn::rigid_peg::hand_dynamics::{
     forward_system, friction_directions, kinetic_energy, potential_energy, regularized_directions,
     solve,
 };
-use pegdyn::rigid::{Loads, PegParams, RigidError};
+use pegdyn::rigid_peg::{Loads, PegParams, RigidError};
 use pegdyn::scalar::{Dd, Real};
 use pegdyn::system::OdeSystem;
 

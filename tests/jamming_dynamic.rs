@@ -1,5 +1,5 @@
 //! The jamming diagram checked with dynamics (compliant Hertz contacts,
-//! `compliant::simulate_insertion`): a load far outside the parallelogram
+//! `compliant_peg::simulate_insertion`): a load far outside the parallelogram
 //! jams and one well inside inserts, and on a coarse grid the simulated
 //! class boundary matches the exact parallelogram within the grid spacing.
 //! The scene's `[sweep]` writes its CSV and SVG.

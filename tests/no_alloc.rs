@@ -15,12 +15,12 @@ use std::cell::Cell;
 use std::hint::black_box;
 
 use nalgebra::{SVector, Vector2, Vector3, Vector4};
-use pegdyn::compliant::{
+use pegdyn::compliant_peg::{
     CompliantParams, CompliantSpec, CompliantSystem, ContactSet, Load, PegState,
 };
 use pegdyn::generated::{cart_pole, compliant_peg, compliant_peg_lean, double_pendulum, pendulum};
-use pegdyn::rigid::forward::{ForwardModel, PegSystem};
-use pegdyn::rigid::{Loads, PegParams};
+use pegdyn::rigid_peg::forward::{ForwardModel, PegSystem};
+use pegdyn::rigid_peg::{Loads, PegParams};
 use pegdyn::scene::double_pendulum::{DoublePendulumParams, DoublePendulumSystem};
 use pegdyn::scene::pendulum::{PendulumParams, PendulumSystem};
 use pegdyn::system::OdeSystem;

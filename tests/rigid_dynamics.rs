@@ -5,12 +5,12 @@
 //! have the symmetries and scaling the physics demands.
 
 use nalgebra::Vector2;
-use pegdyn::rigid::hand::Pose;
-use pegdyn::rigid::hand_dynamics::{
+use pegdyn::rigid_peg::hand::Pose;
+use pegdyn::rigid_peg::hand_dynamics::{
     forward_system, friction_directions, kinetic_energy, mass_matrix, solve, velocity_terms,
 };
-use pegdyn::rigid::prescribed::reactions;
-use pegdyn::rigid::{Loads, PegParams, RigidError};
+use pegdyn::rigid_peg::prescribed::reactions;
+use pegdyn::rigid_peg::{Loads, PegParams, RigidError};
 
 fn states(p: &PegParams) -> Vec<(Vector2<f64>, Vector2<f64>)> {
     let g0 = p.gamma0();

@@ -8,9 +8,9 @@
 //! Coriolis). See `docs/rigid-peg.md`.
 
 use nalgebra::Vector2;
-use pegdyn::rigid::hand::Geometry;
-use pegdyn::rigid::prescribed::reactions;
-use pegdyn::rigid::{Loads, PegParams};
+use pegdyn::rigid_peg::hand::Geometry;
+use pegdyn::rigid_peg::prescribed::reactions;
+use pegdyn::rigid_peg::{Loads, PegParams};
 
 fn n_over_mg(p: &PegParams, rel: f64, psidot: f64) -> [f64; 3] {
     let gamma = p.gamma0() * (1.0 + rel);

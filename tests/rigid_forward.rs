@@ -6,12 +6,12 @@
 
 use nalgebra::{Vector2, Vector4};
 use pegdyn::integrate::{Method, Options};
-use pegdyn::rigid::forward::ForwardModel;
-use pegdyn::rigid::hand::Pose;
-use pegdyn::rigid::modes::{Verdict, classify, contact_problem};
-use pegdyn::rigid::stop::ForwardStop;
-use pegdyn::rigid::trajectory::{Trajectory, simulate};
-use pegdyn::rigid::{Loads, PegParams};
+use pegdyn::rigid_peg::forward::ForwardModel;
+use pegdyn::rigid_peg::hand::Pose;
+use pegdyn::rigid_peg::modes::{Verdict, classify, contact_problem};
+use pegdyn::rigid_peg::stop::ForwardStop;
+use pegdyn::rigid_peg::trajectory::{Trajectory, simulate};
+use pegdyn::rigid_peg::{Loads, PegParams};
 
 fn frictionless() -> PegParams {
     PegParams {
@@ -183,7 +183,7 @@ fn fig9_state_near_gamma0_is_a_lift_off_of_b1() {
     let qdot = Vector2::new(-2.0, 10.0);
     // The moments that drive the prescribed motion (Fig. 9 has them as
     // unknowns) are applied here as loads.
-    let r = pegdyn::rigid::prescribed::reactions(&p, &Loads::default(), q, qdot, Vector2::zeros())
+    let r = pegdyn::rigid_peg::prescribed::reactions(&p, &Loads::default(), q, qdot, Vector2::zeros())
         .unwrap();
     assert!(r.normal[1] < 0.0);
     let driven = ForwardModel::new(
@@ -211,7 +211,7 @@ fn fig9_state_near_gamma0_is_a_lift_off_of_b1() {
 /// slides to γ0 and stops there.
 #[test]
 fn without_gravity_the_peg_still_slides_to_gamma0() {
-    use pegdyn::rigid::forward_events::force_scale;
+    use pegdyn::rigid_peg::forward_events::force_scale;
     let p = PegParams {
         gravity: 0.0,
         ..frictionless()

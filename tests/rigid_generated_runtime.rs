@@ -1,4 +1,4 @@
-//! Seed 000, the runtime of the generated model (`rigid::generated_model`):
+//! Seed 000, the runtime of the generated model (`rigid_peg::generated_model`):
 //! the variants agree with each other where they overlap (2-DOF with ψ̇ ≡ 0
 //! = planar; frictionless = full with f = 0), the solutions equal the
 //! hand-derived ones, the symmetric contacts carry equal loads without
@@ -7,13 +7,13 @@
 
 use nalgebra::{Vector2, Vector3};
 use pegdyn::generated::{rigid_peg, rigid_peg_frictionless};
-use pegdyn::rigid::generated_model::{
+use pegdyn::rigid_peg::generated_model::{
     Variant, contact_velocities, forward, friction_directions, prescribed,
 };
-use pegdyn::rigid::hand::Pose;
-use pegdyn::rigid::hand_dynamics::{self, forward_system};
-use pegdyn::rigid::prescribed::{reactions, reactions_hand};
-use pegdyn::rigid::{Loads, PegParams, RigidError};
+use pegdyn::rigid_peg::hand::Pose;
+use pegdyn::rigid_peg::hand_dynamics::{self, forward_system};
+use pegdyn::rigid_peg::prescribed::{reactions, reactions_hand};
+use pegdyn::rigid_peg::{Loads, PegParams, RigidError};
 
 mod common;
 use common::rigid::{gammas, loads, planar_loads};

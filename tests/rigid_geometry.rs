@@ -5,8 +5,8 @@
 //! derivatives of material points, and no contact has a penetration rate.
 
 use nalgebra::{Matrix3, Rotation3, Unit, Vector2, Vector3};
-use pegdyn::rigid::PegParams;
-use pegdyn::rigid::hand::{Geometry, Pose};
+use pegdyn::rigid_peg::PegParams;
+use pegdyn::rigid_peg::hand::{Geometry, Pose};
 
 fn peg() -> PegParams {
     PegParams::fig9()

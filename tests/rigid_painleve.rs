@@ -6,13 +6,13 @@
 
 use nalgebra::{Vector2, Vector4};
 use pegdyn::integrate::{Method, Options};
-use pegdyn::rigid::forward::ForwardModel;
-use pegdyn::rigid::forward_events::N_JAM;
-use pegdyn::rigid::modes::{Verdict, classify, contact_problem};
-use pegdyn::rigid::prescribed::reactions;
-use pegdyn::rigid::stop::{ForwardStop, PainleveCase};
-use pegdyn::rigid::trajectory::simulate;
-use pegdyn::rigid::{Loads, PegParams};
+use pegdyn::rigid_peg::forward::ForwardModel;
+use pegdyn::rigid_peg::forward_events::N_JAM;
+use pegdyn::rigid_peg::modes::{Verdict, classify, contact_problem};
+use pegdyn::rigid_peg::prescribed::reactions;
+use pegdyn::rigid_peg::stop::{ForwardStop, PainleveCase};
+use pegdyn::rigid_peg::trajectory::simulate;
+use pegdyn::rigid_peg::{Loads, PegParams};
 
 /// W = G M⁻¹ Gᵀ without friction: symmetric and positive definite (the
 /// three normals are independent), so exactly one mode is consistent.

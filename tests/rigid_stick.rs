@@ -6,12 +6,12 @@
 
 use nalgebra::{DMatrix, DVector, Vector2, Vector3, Vector4};
 use pegdyn::integrate::{Method, Options, OutputMode};
-use pegdyn::rigid::forward::{ForwardModel, FrictionLaw};
-use pegdyn::rigid::hand::Pose;
-use pegdyn::rigid::stick::{RestOutcome, start_from_rest};
-use pegdyn::rigid::stop::ForwardStop;
-use pegdyn::rigid::trajectory::simulate;
-use pegdyn::rigid::{Loads, PegParams};
+use pegdyn::rigid_peg::forward::{ForwardModel, FrictionLaw};
+use pegdyn::rigid_peg::hand::Pose;
+use pegdyn::rigid_peg::stick::{RestOutcome, start_from_rest};
+use pegdyn::rigid_peg::stop::ForwardStop;
+use pegdyn::rigid_peg::trajectory::simulate;
+use pegdyn::rigid_peg::{Loads, PegParams};
 
 /// Each contact Jacobian J_i (3×2) has full column rank for
 /// γ0 < γ < π/2, so J_i q̇ = 0 only for q̇ = 0. At K the two columns are
@@ -375,7 +375,7 @@ fn static_residual(
 /// nothing holds it and the lift-off is reported.
 #[test]
 fn static_friction_is_checked_before_a_lift_off_from_rest() {
-    use pegdyn::rigid::static_hold::hold_at_rest;
+    use pegdyn::rigid_peg::static_hold::hold_at_rest;
     let p = PegParams {
         friction: 0.4,
         ..PegParams::fig9()
@@ -440,7 +440,7 @@ fn static_friction_is_checked_before_a_lift_off_from_rest() {
 /// independent cone search finds an equilibrium.
 #[test]
 fn wedged_configurations_are_not_claimed_as_held() {
-    use pegdyn::rigid::static_hold::hold_at_rest;
+    use pegdyn::rigid_peg::static_hold::hold_at_rest;
     let p = PegParams {
         friction: 0.2,
         ..PegParams::fig9()

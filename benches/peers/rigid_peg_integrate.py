@@ -9,7 +9,7 @@ the right-hand sides of Radau's finite-difference Jacobians (4 per "jac").
 
 The peers' right-hand side is what a user writes: contact velocities v_i,
 friction directions t_i = -v_i/|v_i|, A and b, u = numpy.linalg.solve(A, b),
-xdot = (gammadot, psidot, u0, u1). pegdyn's (rigid::forward::PegSystem) also
+xdot = (gammadot, psidot, u0, u1). pegdyn's (rigid_peg::forward::PegSystem) also
 clamps gamma into the three-point range; on this interval gamma stays in
 [0.2965, 0.3] rad, far from gamma0 = 0.0447, so the clamp never acts.
 """

@@ -8,7 +8,7 @@
 //! simplifying.
 
 use pegdyn_equations::models::rigid_peg::{self, Derivation};
-use pegdyn_equations::models::rigid_peg_module::{Variant, specialize};
+use pegdyn_equations::models::rigid_peg::variants::{Variant, specialize};
 use pegdyn_equations::{Expr, Graph};
 
 const VARIANTS: [Variant; 4] = [

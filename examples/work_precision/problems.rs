@@ -2,9 +2,9 @@
 //! state components whose error is reported, and the method settings.
 
 use nalgebra::SVector;
-use pegdyn::compliant::CompliantSystem;
-use pegdyn::rigid::forward::{ForwardModel, PegSystem};
-use pegdyn::rigid::{Loads, PegParams};
+use pegdyn::compliant_peg::CompliantSystem;
+use pegdyn::rigid_peg::forward::{ForwardModel, PegSystem};
+use pegdyn::rigid_peg::{Loads, PegParams};
 use pegdyn::scene::align_forward::AlignForwardScene;
 use pegdyn::scene::document::Document;
 use pegdyn::scene::double_pendulum::{DoublePendulumParams, DoublePendulumSystem};
@@ -105,7 +105,7 @@ pub fn double_pendulum(t_end: f64) -> Problem<4, DoublePendulumSystem> {
 pub fn insertion() -> Problem<8, CompliantSystem> {
     // Read from the shipped scene file, so that the diagram follows it.
     let text = include_str!("../../scenes/insert_compliant.toml");
-    let scene: pegdyn::compliant::scene::InsertCompliantScene =
+    let scene: pegdyn::compliant_peg::scene::InsertCompliantScene =
         pegdyn::scene::document::Document::parse(text)
             .and_then(|d| d.body())
             .expect("shipped scene parses");

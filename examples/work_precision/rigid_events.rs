@@ -1,5 +1,5 @@
 //! Event accuracy of the rigid forward scene (`scenes/align_forward.toml`):
-//! the whole run through `pegdyn::rigid::trajectory::simulate`, with its
+//! the whole run through `pegdyn::rigid_peg::trajectory::simulate`, with its
 //! contact events, to its first event (the lift-off of K near 13 ms). For
 //! each method setting: the event found, the error of its time and of the
 //! state there against DOPRI5 at rtol 1e-14, the work and the median wall
@@ -8,9 +8,9 @@
 use nalgebra::Vector4;
 use pegdyn::integrate::{Method, Options, Stats};
 use pegdyn::output::csv::{CsvWriter, format_f64};
-use pegdyn::rigid::forward::ForwardModel;
-use pegdyn::rigid::stop::ForwardStop;
-use pegdyn::rigid::trajectory::{Trajectory, simulate};
+use pegdyn::rigid_peg::forward::ForwardModel;
+use pegdyn::rigid_peg::stop::ForwardStop;
+use pegdyn::rigid_peg::trajectory::{Trajectory, simulate};
 use std::path::Path;
 
 use crate::measure::median_time;

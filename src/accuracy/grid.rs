@@ -6,9 +6,9 @@
 //! A point gives a value to every input symbol of its module by name, so a
 //! new model needs only a base point and its variations here.
 
-use crate::compliant::{CompliantParams, CompliantSpec, Load};
+use crate::compliant_peg::{CompliantParams, CompliantSpec, Load};
 use crate::generated::compliant_peg::P_NAMES;
-use crate::rigid::PegParams;
+use crate::rigid_peg::PegParams;
 
 /// One grid point: a label and a value for each symbol name.
 #[derive(Clone, Debug, PartialEq)]

@@ -75,7 +75,7 @@ impl CompliantSpec {
     /// mid-length, friction `mu`, `v_s = 1e-5 m/s`, all four contacts.
     ///
     /// ```
-    /// use pegdyn::compliant::{CompliantParams, CompliantSpec};
+    /// use pegdyn::compliant_peg::{CompliantParams, CompliantSpec};
     /// let spec = CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, 0.1);
     /// assert!((spec.mass - 1.535).abs() < 1e-3);
     /// assert!(CompliantParams::try_new(spec).is_ok());

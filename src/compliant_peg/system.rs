@@ -3,7 +3,7 @@
 //!
 //! State `y = (x, z, θ, ẋ, ż, θ̇, W, S)`: the peg's coordinates and
 //! velocities, the work `W` of the applied loads and the friction
-//! dissipation `S` (see `equations/src/models/planar_peg.rs`).
+//! dissipation `S` (see `equations/src/models/compliant_peg/`).
 
 use nalgebra::{SMatrix, SVector};
 

@@ -1,5 +1,5 @@
 //! The jamming diagram checked with dynamics: a sweep of compliant-contact
-//! insertions (`compliant::simulate_insertion`, paper 001 §3) over a grid of
+//! insertions (`compliant_peg::simulate_insertion`, paper 001 §3) over a grid of
 //! load ratios at fixed depth, classified inserted / jammed / wedged.
 //!
 //! Each run starts at rest in two-point contact (the paper's Fig. 5 lean)
@@ -16,7 +16,7 @@ use super::diagram::{Parallelogram, Ratio, exact_parallelogram_at_tilt};
 use super::forces::{Wrench, to_paper_frame};
 use super::params::PegHole;
 use super::sweep::{self, Grid, RunClass, SweepPoint};
-use crate::compliant::{
+use crate::compliant_peg::{
     CompliantParams, CompliantSpec, InsertionOptions, InsertionOutcome, Load, PegState,
     simulate_insertion,
 };

@@ -4,7 +4,7 @@
 //! comparison of the class boundary with the quasi-static parallelogram.
 //!
 //! The simulator is a closure, so the driver does not depend on a particular
-//! dynamic model (the scene plugs in `compliant::simulate_insertion`).
+//! dynamic model (the scene plugs in `compliant_peg::simulate_insertion`).
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 

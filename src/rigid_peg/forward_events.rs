@@ -19,7 +19,7 @@ use std::rc::Rc;
 use nalgebra::{Vector2, Vector4};
 
 use crate::integrate::{Direction, Event};
-use crate::rigid::forward::{ForwardModel, FrictionLaw};
+use crate::rigid_peg::forward::{ForwardModel, FrictionLaw};
 
 /// A state and its reactions (`None`: the model failed there).
 type Memo = Option<(Vector4<f64>, Option<[f64; 3]>)>;

@@ -1,6 +1,6 @@
 //! The rigid peg (seed 000) through the generated code
 //! (`pegdyn::generated::rigid_peg*`, derived in
-//! `equations/src/models/rigid_peg.rs`; `docs/rigid-model.md`).
+//! `equations/src/models/rigid_peg/`; `docs/rigid-model.md`).
 //!
 //! Four variants of one derivation; the runtime picks the smallest that
 //! represents the state ([`Variant::smallest_at`]; [`Variant::smallest`] for
@@ -19,9 +19,9 @@ use nalgebra::{SVector, Vector2, Vector3};
 use crate::generated::{
     rigid_peg, rigid_peg_frictionless, rigid_peg_planar, rigid_peg_planar_frictionless,
 };
-use crate::rigid::hand_dynamics::solve;
-use crate::rigid::prescribed::Reactions;
-use crate::rigid::{Loads, PegParams, RigidError};
+use crate::rigid_peg::hand_dynamics::solve;
+use crate::rigid_peg::prescribed::Reactions;
+use crate::rigid_peg::{Loads, PegParams, RigidError};
 
 /// Which generated rigid-peg module to use.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -361,5 +361,5 @@ pub fn contact_velocities(
 }
 
 /// Friction directions t_i = −v_i/|v_i| from the contact velocities (the
-/// hand-derived model's [`directions_opposing`](crate::rigid::hand_dynamics::directions_opposing)).
-pub use crate::rigid::hand_dynamics::directions_opposing as friction_directions;
+/// hand-derived model's [`directions_opposing`](crate::rigid_peg::hand_dynamics::directions_opposing)).
+pub use crate::rigid_peg::hand_dynamics::directions_opposing as friction_directions;

@@ -21,7 +21,7 @@
 
 use nalgebra::{Matrix3, Matrix3x2, Vector2, Vector3};
 
-use crate::rigid::{PegParams, RigidError};
+use crate::rigid_peg::{PegParams, RigidError};
 
 /// Planar (γ-only) geometry of the three-point contact, in the symmetry
 /// plane O1ηz (paper eqs. (1)–(5)), with the γ-derivatives of the centre of

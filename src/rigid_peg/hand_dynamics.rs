@@ -25,8 +25,8 @@
 
 use nalgebra::{Const, DimMin, Matrix2, Matrix3, SMatrix, SVector, Vector2, Vector3};
 
-use crate::rigid::hand::{Kinematics, Pose};
-use crate::rigid::{Loads, PegParams, RigidError};
+use crate::rigid_peg::hand::{Kinematics, Pose};
+use crate::rigid_peg::{Loads, PegParams, RigidError};
 
 /// 5×5 matrix of a rigid-peg linear system.
 pub type Matrix5 = SMatrix<f64, 5, 5>;

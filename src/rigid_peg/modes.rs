@@ -24,10 +24,10 @@
 
 use nalgebra::{Matrix3, SMatrix, SVector, Vector2, Vector3};
 
-use crate::rigid::forward::ForwardModel;
-use crate::rigid::hand::Pose;
-use crate::rigid::hand_dynamics::com_bias;
-use crate::rigid::{PegParams, RigidError};
+use crate::rigid_peg::forward::ForwardModel;
+use crate::rigid_peg::hand::Pose;
+use crate::rigid_peg::hand_dynamics::com_bias;
+use crate::rigid_peg::{PegParams, RigidError};
 
 type Vector5 = SVector<f64, 5>;
 

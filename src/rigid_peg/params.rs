@@ -2,7 +2,7 @@
 //!
 //! All quantities in SI units (m, kg, s, N, N·m, rad).
 
-use crate::rigid::RigidError;
+use crate::rigid_peg::RigidError;
 
 /// Dimensions, mass and friction of the peg and the hole.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -15,8 +15,8 @@ use std::f64::consts::TAU;
 
 use nalgebra::Vector2;
 
-use crate::rigid::RigidError;
-use crate::rigid::forward::{Accelerations, ForwardModel};
+use crate::rigid_peg::RigidError;
+use crate::rigid_peg::forward::{Accelerations, ForwardModel};
 
 /// Number of sample directions on the circle.
 pub const SAMPLES: usize = 720;
@@ -46,8 +46,8 @@ pub enum RestOutcome {
     /// No three-point start is consistent, but a start with q̈ = λ û,
     /// λ > 0, exists that needs contact `contact` to pull: the peg does not
     /// stay on three points (it leaves the model). Static friction is not
-    /// checked here: [`crate::rigid::trajectory::simulate`] asks
-    /// [`crate::rigid::static_hold::hold_at_rest`] before reporting a
+    /// checked here: [`crate::rigid_peg::trajectory::simulate`] asks
+    /// [`crate::rigid_peg::static_hold::hold_at_rest`] before reporting a
     /// lift-off.
     LeavesContact {
         /// The start with the largest |q̈| among these (`normal` has the
@@ -79,7 +79,7 @@ fn cross(model: &ForwardModel, q: Vector2<f64>, theta: f64) -> Option<(f64, Acce
 /// # Errors
 /// [`RigidError::NotThreePoint`] outside γ0 < γ < π/2.
 pub fn start_from_rest(model: &ForwardModel, q: Vector2<f64>) -> Result<RestOutcome, RigidError> {
-    crate::rigid::hand::Geometry::try_new(&model.params, q[0])?;
+    crate::rigid_peg::hand::Geometry::try_new(&model.params, q[0])?;
     let thetas: Vec<f64> = (0..SAMPLES)
         .map(|k| TAU * k as f64 / SAMPLES as f64)
         .collect();

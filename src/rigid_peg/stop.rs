@@ -7,7 +7,7 @@ use std::fmt;
 use nalgebra::Vector4;
 
 use crate::integrate::StopReason;
-use crate::rigid::modes::Mode;
+use crate::rigid_peg::modes::Mode;
 
 /// Which kind of rigid-model breakdown a [`ForwardStop::Painleve`] reports.
 #[derive(Clone, Debug, PartialEq)]

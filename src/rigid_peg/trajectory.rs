@@ -5,13 +5,13 @@
 use nalgebra::{Vector2, Vector4};
 
 use crate::integrate::{IntegrateError, Method, Options, OutputMode, Solver, Stats, StopReason};
-use crate::rigid::RigidError;
-use crate::rigid::forward::{ForwardModel, FrictionLaw, PegSystem, split};
-use crate::rigid::forward_events::{EventKind, events};
-use crate::rigid::modes::{Verdict, classify};
-use crate::rigid::static_hold::hold_at_rest;
-use crate::rigid::stick::{RestOutcome, start_from_rest};
-use crate::rigid::stop::{ForwardStop, PainleveCase};
+use crate::rigid_peg::RigidError;
+use crate::rigid_peg::forward::{ForwardModel, FrictionLaw, PegSystem, split};
+use crate::rigid_peg::forward_events::{EventKind, events};
+use crate::rigid_peg::modes::{Verdict, classify};
+use crate::rigid_peg::static_hold::hold_at_rest;
+use crate::rigid_peg::stick::{RestOutcome, start_from_rest};
+use crate::rigid_peg::stop::{ForwardStop, PainleveCase};
 
 /// Budget of stop/restart cycles of one simulation.
 pub const MAX_RESTARTS: usize = 1000;
@@ -80,7 +80,7 @@ fn check_sliding(model: &ForwardModel, t: f64, x: Vector4<f64>) -> Option<Forwar
         Ok(Verdict::LiftOff(m)) => {
             let i = (0..3).find(|&i| !m.in_contact[i]).unwrap_or(0);
             Some(ForwardStop::LiftOff {
-                contact: crate::rigid::hand_dynamics::CONTACTS[i],
+                contact: crate::rigid_peg::hand_dynamics::CONTACTS[i],
                 t,
                 state: x,
             })
@@ -122,7 +122,7 @@ pub fn simulate_with_progress(
     progress: &mut dyn FnMut(f64),
 ) -> Result<Trajectory, ForwardError> {
     options.validate(t0, t_end)?;
-    crate::rigid::hand::Geometry::try_new(&model.params, x0[0])?;
+    crate::rigid_peg::hand::Geometry::try_new(&model.params, x0[0])?;
     let mut out = Trajectory {
         rows: Vec::new(),
         stop: ForwardStop::ReachedEnd { t: t0 },
@@ -161,7 +161,7 @@ pub fn simulate_with_progress(
                 RestOutcome::LeavesContact { contact, .. } => {
                     push_row(model, &mut out.rows, t, x, None);
                     out.stop = ForwardStop::LiftOff {
-                        contact: crate::rigid::hand_dynamics::CONTACTS[contact],
+                        contact: crate::rigid_peg::hand_dynamics::CONTACTS[contact],
                         t,
                         state: x,
                     };
@@ -211,7 +211,7 @@ pub fn simulate_with_progress(
             (StopReason::ReachedEnd, _) => ForwardStop::ReachedEnd { t },
             (_, Some(EventKind::Gamma0)) => ForwardStop::TwoPointContact { t, state: x },
             (_, Some(EventKind::LiftOff(i))) => ForwardStop::LiftOff {
-                contact: crate::rigid::hand_dynamics::CONTACTS[i],
+                contact: crate::rigid_peg::hand_dynamics::CONTACTS[i],
                 t,
                 state: x,
             },

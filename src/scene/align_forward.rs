@@ -1,5 +1,5 @@
 //! Scene kind `align_forward`: forward dynamics of the rigid peg leaning on
-//! the hole edge at K, B1, B2 (seed 000; `src/rigid/forward.rs`,
+//! the hole edge at K, B1, B2 (seed 000; `src/rigid_peg/forward.rs`,
 //! `docs/rigid-peg.md`), released at γ(0) with rates γ̇(0), ψ̇(0) under
 //! gravity, constant moments M_γ, M_ψ and an assembly force, until a
 //! contact event (γ0 reached, lift-off, stick, Painlevé) or `t_end`.
@@ -41,9 +41,9 @@ use crate::error::{RunError, SceneError, SceneErrors};
 use crate::integrate::{Options, OutputMode};
 use crate::output::csv::CsvWriter;
 use crate::output::plot::{Figure, Panel, Series};
-use crate::rigid::forward::{ForwardModel, FrictionLaw};
-use crate::rigid::trajectory::simulate_with_progress;
-use crate::rigid::{Loads, RigidError};
+use crate::rigid_peg::forward::{ForwardModel, FrictionLaw};
+use crate::rigid_peg::trajectory::simulate_with_progress;
+use crate::rigid_peg::{Loads, RigidError};
 use crate::scene::fig9::PegTable;
 use crate::scene::simulate::solver_config;
 use crate::scene::validate::Checker;
@@ -123,7 +123,7 @@ pub struct FrictionTable {
 }
 
 fn default_v_stop() -> f64 {
-    crate::rigid::forward::DEFAULT_V_STOP
+    crate::rigid_peg::forward::DEFAULT_V_STOP
 }
 fn default_v_s() -> f64 {
     1e-4

@@ -1,6 +1,6 @@
 //! Scene kind `fig9`: the paper's (seed 000) Fig. 9 study — reactions of the
 //! rigid peg leaning on the hole edge at K, B1, B2 under prescribed steady
-//! rates γ̇ and ψ̇ (`src/rigid/prescribed.rs`, `docs/rigid-peg.md`).
+//! rates γ̇ and ψ̇ (`src/rigid_peg/prescribed.rs`, `docs/rigid-peg.md`).
 //!
 //! ```toml
 //! kind = "fig9"
@@ -31,8 +31,8 @@ use serde::Deserialize;
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::output::csv::{CsvWriter, format_f64};
 use crate::output::plot::{Figure, Panel, Scale, Series};
-use crate::rigid::PegParams;
-use crate::rigid::prescribed::{Fig9Row, fig9_rows, gamma_grid};
+use crate::rigid_peg::PegParams;
+use crate::rigid_peg::prescribed::{Fig9Row, fig9_rows, gamma_grid};
 use crate::scene::validate::Checker;
 use crate::scene::{Document, Kind, Metric, RunContext, RunSummary, Scene};
 

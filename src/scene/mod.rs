@@ -72,7 +72,7 @@ pub const KINDS: &[Kind] = &[
     pendulum::KIND,
     double_pendulum::KIND,
     jamming::KIND,
-    crate::compliant::scene::KIND,
+    crate::compliant_peg::scene::KIND,
     fig9::KIND,
     align_forward::KIND,
 ];

@@ -1,7 +1,7 @@
 //! Seed 000 fixtures shared by the rigid-peg tests: a grid of inclinations
 //! and the loads.
 
-use pegdyn::rigid::{Loads, PegParams};
+use pegdyn::rigid_peg::{Loads, PegParams};
 
 /// Inclinations γ (rad) from γ0 (1 + 1e-9) up to 1.2.
 pub fn gammas(p: &PegParams) -> [f64; 5] {

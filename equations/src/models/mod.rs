@@ -1,4 +1,4 @@
-//! The models, one file each. A model is a function building a [`Module`]
+//! The models, one file or folder each. A model is a function building a [`Module`]
 //! in a fresh [`Graph`]; register it in [`ALL`] (one line) to have its code
 //! generated into `pegdyn::generated::<name>`.
 
@@ -6,16 +6,12 @@ use crate::graph::Graph;
 use crate::model::Module;
 
 pub mod cart_pole;
+pub mod compliant_peg;
 pub mod double_pendulum;
 pub mod hertz;
 pub mod pendulum;
-pub mod planar_peg;
-pub mod planar_peg_geometry;
-pub mod planar_peg_module;
 pub mod quasi_static;
 pub mod rigid_peg;
-pub mod rigid_peg_geometry;
-pub mod rigid_peg_module;
 
 /// Builds one model's module in the given graph.
 pub type ModelFn = fn(&Graph) -> Module;
@@ -28,11 +24,11 @@ pub const ALL: &[ModelFn] = &[
     double_pendulum::module,
     cart_pole::module,
     hertz::module,
-    planar_peg_module::module,
-    planar_peg_module::module_lean,
+    compliant_peg::variants::module,
+    compliant_peg::variants::module_lean,
     quasi_static::module,
-    rigid_peg_module::module,
-    rigid_peg_module::module_frictionless,
-    rigid_peg_module::module_planar,
-    rigid_peg_module::module_planar_frictionless,
+    rigid_peg::variants::module,
+    rigid_peg::variants::module_frictionless,
+    rigid_peg::variants::module_planar,
+    rigid_peg::variants::module_planar_frictionless,
 ];

@@ -2,7 +2,7 @@
 //! derived from a potential instead of the paper's constraint Jacobians.
 //!
 //! Coordinates `q = (x, z, θ)` of the peg's centre of mass and tilt (frame in
-//! [`super::planar_peg_geometry`]); mass matrix `diag(m, m, J)`. Each contact
+//! [`geometry`]); mass matrix `diag(m, m, J)`. Each contact
 //! `c` has a penetration `δ_c(q)` and stores the Hertz energy
 //! `V_c = (2/5) k_c max(δ_c, 0)^{5/2}` ((62)); its normal force on the peg is
 //! `−∂V_c/∂q = −k_c max(δ_c,0)^{3/2} ∂δ_c/∂q` — unilateral, acting only
@@ -22,8 +22,11 @@
 //! that `T + V − W + S` is constant along every solution.
 //! Units: SI (kg, kg·m², m, rad, N, N·m, J).
 
+pub mod geometry;
+pub mod variants;
+
 use super::hertz::{self, HertzCoefficients, HertzState};
-use super::planar_peg_geometry::{Contact, PegFrame};
+use geometry::{Contact, PegFrame};
 use crate::expr::Expr;
 use crate::graph::Graph;
 

@@ -1,11 +1,11 @@
 //! The generated modules of the planar compliant peg-in-hole
-//! ([`super::planar_peg`]): `compliant_peg` with all four contacts (either
+//! ([`super`]): `compliant_peg` with all four contacts (either
 //! lean, any contact state of the paper's Fig. 4) and `compliant_peg_lean`
 //! with only the two contacts of the paper's Fig. 5 (left edge, right wall:
 //! the peg leaning with θ > 0), for scenes that never lean the other way.
 
-use super::planar_peg::{self, PlanarPeg};
-use super::planar_peg_geometry::Contact;
+use super::PlanarPeg;
+use super::geometry::Contact;
 use crate::expr::Expr;
 use crate::graph::Graph;
 use crate::model::{FnSpec, Input, Module, Output};
@@ -38,7 +38,7 @@ fn per<'g>(xs: &[Expr<'g>]) -> Output {
 }
 
 fn build_module(g: &Graph, name: &str, contacts: &[Contact]) -> Module {
-    let pp = planar_peg::build(g, contacts);
+    let pp = super::build(g, contacts);
     let names: Vec<&str> = contacts.iter().map(|c| c.name()).collect();
     let fns = vec![
         function(

@@ -3,7 +3,7 @@
 //!
 //! Generalized coordinates q = (γ, ψ): nutation and precession, spin held
 //! fixed; angular velocity ω = ψ̇ e_z − γ̇ e_n. All vectors are in the
-//! rotating components (e_η, e_n, e_z) of [`super::rigid_peg_geometry`], so
+//! rotating components (e_η, e_n, e_z) of [`geometry`], so
 //! nothing depends on ψ except the fixed-frame assembly force, which is
 //! rotated by −ψ. Velocities and accelerations of the centre of mass use the
 //! transport theorem with the frame rate Ω = ψ̇ e_z,
@@ -27,9 +27,12 @@
 //! Everything is collected in a residual R (five rows: Lagrange γ, ψ;
 //! centre of mass η, n, z) that is linear in q̈, the moments M and the normal
 //! forces N; each variant's linear systems are its derivatives
-//! ([`super::rigid_peg_module`]). Units: SI (m, kg, s, N, N·m, rad, J).
+//! ([`variants`]). Units: SI (m, kg, s, N, N·m, rad, J).
 
-use super::rigid_peg_geometry::{Geometry, Params, Vec3, add, cross, dot, sub};
+pub mod geometry;
+pub mod variants;
+
+use geometry::{Geometry, Params, Vec3, add, cross, dot, sub};
 use crate::expr::Expr;
 use crate::graph::Graph;
 use crate::lagrange;

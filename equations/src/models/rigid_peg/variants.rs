@@ -1,5 +1,5 @@
 //! The generated modules of the rigid peg (seed 000): four variants of one
-//! derivation ([`super::rigid_peg::derive`]), specialized by substitution
+//! derivation ([`super::derive`]), specialized by substitution
 //! at generation time.
 //!
 //! | module | coordinates | unknowns (forward) | friction input |
@@ -20,7 +20,7 @@
 //! unknowns u): A = ∂R/∂u, b = −R|_{u=0}. For the Lagrange rows this is
 //! A = [M | −∂f/∂N], b = f|_{N=0}.
 
-use super::rigid_peg::{self, Derivation};
+use super::Derivation;
 use crate::expr::Expr;
 use crate::graph::Graph;
 use crate::model::{FnSpec, Input, Module, Output};
@@ -198,7 +198,7 @@ pub fn linear_system<'g>(
 /// If a row the planar specialization must make vanish does not (a bug in
 /// the derivation: the planar motion would not solve the 2-DOF equations).
 pub fn build(g: &Graph, variant: Variant) -> Module {
-    let d = rigid_peg::derive(g);
+    let d = super::derive(g);
     let sp = specialize(g, &d, variant);
     for (k, r) in sp.vanished.iter().enumerate() {
         assert!(
