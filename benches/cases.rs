@@ -135,7 +135,7 @@ impl Cases {
 /// μ = 0.1, f₁ = 5 N, M = −0.002 N·m, tilted 0.01 rad in two-point contact).
 pub fn insertion_scene() -> (CompliantParams, Load, PegState) {
     let text = include_str!("../scenes/insert_compliant.toml");
-    let scene: pegdyn::compliant_peg::scene::InsertCompliantScene =
+    let scene: pegdyn::scene::insert_compliant::InsertCompliantScene =
         pegdyn::scene::document::Document::parse(text)
             .and_then(|d| d.body())
             .expect("shipped scene parses");

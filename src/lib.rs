@@ -17,3 +17,4 @@ pub mod rigid_peg;
 pub mod scalar;
 pub mod scene;
 pub mod system;
+pub mod textbook;

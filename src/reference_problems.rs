@@ -182,8 +182,9 @@ impl OdeSystem<2> for Pendulum {
 }
 
 /// Complete elliptic integral of the first kind `K(k) = ∫₀^{π/2} dφ/√(1 − k² sin²φ)`
-/// (modulus `k`, `|k| < 1`) by the arithmetic–geometric mean:
-/// `K(k) = π / (2 AGM(1, √(1 − k²)))`.
+/// (modulus `k`, `|k| < 1`), as Carlson's `K = R_F(0, 1 − k², 1)`
+/// ([`crate::hertz::elliptic::carlson_rf`], the crate's one elliptic-integral
+/// implementation).
 ///
 /// ```
 /// // K(1/√2) = Γ(1/4)² / (4√π) = 1.854074677301372 (Abramowitz & Stegun 17.3).
@@ -191,12 +192,5 @@ impl OdeSystem<2> for Pendulum {
 /// assert!((k - 1.854074677301372).abs() < 1e-14);
 /// ```
 pub fn elliptic_k(k: f64) -> f64 {
-    let (mut a, mut b) = (1.0_f64, (1.0 - k * k).sqrt());
-    for _ in 0..64 {
-        if (a - b).abs() <= 1e-16 * a {
-            break;
-        }
-        (a, b) = (0.5 * (a + b), (a * b).sqrt());
-    }
-    std::f64::consts::FRAC_PI_2 / a
+    crate::hertz::elliptic::carlson_rf(0.0, 1.0 - k * k, 1.0)
 }

@@ -8,8 +8,8 @@ use pegdyn::compliant_peg::{ContactPair, PegHoleGeometry};
 use pegdyn::hertz::{EllipticityMethod, HertzContact, Material};
 use pegdyn_equations::Graph;
 use pegdyn_equations::eval::Tape;
-use pegdyn_equations::models::compliant_peg::{self, PARAMS, STATE};
 use pegdyn_equations::models::compliant_peg::geometry::Contact;
+use pegdyn_equations::models::compliant_peg::{self, PARAMS, STATE};
 
 const D: f64 = 0.05;
 const C: f64 = 0.002;

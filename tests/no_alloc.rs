@@ -21,9 +21,9 @@ use pegdyn::compliant_peg::{
 use pegdyn::generated::{cart_pole, compliant_peg, compliant_peg_lean, double_pendulum, pendulum};
 use pegdyn::rigid_peg::forward::{ForwardModel, PegSystem};
 use pegdyn::rigid_peg::{Loads, PegParams};
-use pegdyn::scene::double_pendulum::{DoublePendulumParams, DoublePendulumSystem};
-use pegdyn::scene::pendulum::{PendulumParams, PendulumSystem};
 use pegdyn::system::OdeSystem;
+use pegdyn::textbook::double_pendulum::{DoublePendulumParams, DoublePendulumSystem};
+use pegdyn::textbook::pendulum::{PendulumParams, PendulumSystem};
 
 struct Counting;
 

@@ -183,8 +183,9 @@ fn fig9_state_near_gamma0_is_a_lift_off_of_b1() {
     let qdot = Vector2::new(-2.0, 10.0);
     // The moments that drive the prescribed motion (Fig. 9 has them as
     // unknowns) are applied here as loads.
-    let r = pegdyn::rigid_peg::prescribed::reactions(&p, &Loads::default(), q, qdot, Vector2::zeros())
-        .unwrap();
+    let r =
+        pegdyn::rigid_peg::prescribed::reactions(&p, &Loads::default(), q, qdot, Vector2::zeros())
+            .unwrap();
     assert!(r.normal[1] < 0.0);
     let driven = ForwardModel::new(
         p,

@@ -7,8 +7,8 @@
 //! derivatives rotated by −ψ; and substitution is simultaneous and
 //! simplifying.
 
-use pegdyn_equations::models::rigid_peg::{self, Derivation};
 use pegdyn_equations::models::rigid_peg::variants::{Variant, specialize};
+use pegdyn_equations::models::rigid_peg::{self, Derivation};
 use pegdyn_equations::{Expr, Graph};
 
 const VARIANTS: [Variant; 4] = [

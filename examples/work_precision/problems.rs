@@ -7,9 +7,9 @@ use pegdyn::rigid_peg::forward::{ForwardModel, PegSystem};
 use pegdyn::rigid_peg::{Loads, PegParams};
 use pegdyn::scene::align_forward::AlignForwardScene;
 use pegdyn::scene::document::Document;
-use pegdyn::scene::double_pendulum::{DoublePendulumParams, DoublePendulumSystem};
-use pegdyn::scene::pendulum::{PendulumParams, PendulumSystem};
 use pegdyn::system::OdeSystem;
+use pegdyn::textbook::double_pendulum::{DoublePendulumParams, DoublePendulumSystem};
+use pegdyn::textbook::pendulum::{PendulumParams, PendulumSystem};
 
 /// One problem: a system from `y0` at t = 0 to `t_end`.
 pub struct Problem<const N: usize, S> {
@@ -105,7 +105,7 @@ pub fn double_pendulum(t_end: f64) -> Problem<4, DoublePendulumSystem> {
 pub fn insertion() -> Problem<8, CompliantSystem> {
     // Read from the shipped scene file, so that the diagram follows it.
     let text = include_str!("../../scenes/insert_compliant.toml");
-    let scene: pegdyn::compliant_peg::scene::InsertCompliantScene =
+    let scene: pegdyn::scene::insert_compliant::InsertCompliantScene =
         pegdyn::scene::document::Document::parse(text)
             .and_then(|d| d.body())
             .expect("shipped scene parses");

@@ -6,9 +6,7 @@
 
 pub mod geometry;
 pub mod initial;
-pub mod output;
 pub mod params;
-pub mod scene;
 pub mod simulate;
 pub mod system;
 

@@ -11,14 +11,14 @@
 //! - [`space3d`]: the 3-D no-jamming inequalities (Eqs. 81–82).
 //! - [`dynamic`]: the sweep of compliant-contact insertions (needs `compliant`).
 //! - [`sweep`]: the dynamic sweep driver (rayon) and its comparison with the diagram.
-//! - [`table`], [`figure`]: the scene's corner/wedging tables and Fig. 6-style panels.
+//! - [`table`]: the corner/wedging tables of the jamming scene (its Fig. 6-style
+//!   panels are drawn by `scene::jamming_figure`).
 //!
 //! The derivation and the comparison with the paper are in `docs/jamming.md`.
 
 pub mod diagram;
 pub mod dynamic;
 pub mod error;
-pub mod figure;
 pub mod forces;
 pub mod geometry;
 pub mod params;

@@ -30,18 +30,17 @@
 //! t_end = 20.0
 //! ```
 
-use nalgebra::{SMatrix, SVector, Vector4};
+use nalgebra::Vector4;
 use serde::Deserialize;
 
 use crate::error::{RunError, SceneErrors};
-use crate::generated::double_pendulum as generated;
 use crate::output::csv::CsvWriter;
 use crate::output::plot::{Figure, Panel, Series};
-use crate::scene::pendulum::STANDARD_GRAVITY;
 use crate::scene::simulate::{integrate, integration_summary};
 use crate::scene::validate::Checker;
 use crate::scene::{Document, IntegratorSpec, Kind, Metric, RunContext, RunSummary, Scene};
-use crate::system::{OdeSystem, finite_difference_jacobian};
+pub use crate::textbook::double_pendulum::DoublePendulumParams;
+use crate::textbook::double_pendulum::DoublePendulumSystem;
 
 /// Registry entry.
 pub const KIND: Kind = Kind {
@@ -54,37 +53,6 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
     let s: DoublePendulumScene = doc.body()?;
     s.check()?;
     Ok(Box::new(s))
-}
-
-fn standard_gravity() -> f64 {
-    STANDARD_GRAVITY
-}
-
-/// The `[double_pendulum]` table.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct DoublePendulumParams {
-    /// Upper bob mass `m₁`, kg.
-    pub mass1: f64,
-    /// Lower bob mass `m₂`, kg.
-    pub mass2: f64,
-    /// Upper rod length `l₁`, m.
-    pub length1: f64,
-    /// Lower rod length `l₂`, m.
-    pub length2: f64,
-    /// Gravitational acceleration `g`, m/s².
-    #[serde(default = "standard_gravity")]
-    pub gravity: f64,
-    /// Initial upper angle, degrees from the downward vertical.
-    pub theta1_deg: f64,
-    /// Initial lower angle, degrees from the downward vertical.
-    pub theta2_deg: f64,
-    /// Initial upper angular velocity, rad/s.
-    #[serde(default)]
-    pub omega1: f64,
-    /// Initial lower angular velocity, rad/s.
-    #[serde(default)]
-    pub omega2: f64,
 }
 
 /// A `double_pendulum` scene.
@@ -201,92 +169,5 @@ impl Scene for DoublePendulumScene {
         ));
         out.outputs = vec![csv, svg];
         Ok(out)
-    }
-}
-
-/// The generated `double_pendulum` model as an [`OdeSystem`], state
-/// `(θ₁, θ₂, θ̇₁, θ̇₂)`.
-#[derive(Debug, Clone, Copy)]
-pub struct DoublePendulumSystem {
-    /// Parameters in the order of [`generated::P_NAMES`]: `m1, m2, l1, l2, g`.
-    p: SVector<f64, 5>,
-}
-
-impl DoublePendulumSystem {
-    /// The system for the given parameters.
-    pub fn new(p: &DoublePendulumParams) -> Self {
-        DoublePendulumSystem {
-            p: SVector::<f64, 5>::from([p.mass1, p.mass2, p.length1, p.length2, p.gravity]),
-        }
-    }
-
-    /// Total energy `T + V`, J.
-    pub fn energy(&self, x: &Vector4<f64>) -> f64 {
-        generated::energy(x, &self.p)
-    }
-}
-
-impl OdeSystem<4> for DoublePendulumSystem {
-    fn rhs(&self, _t: f64, x: &Vector4<f64>) -> Vector4<f64> {
-        generated::rhs(x, &self.p)
-    }
-
-    /// `∂ẋ/∂x = [[0, I], [M⁻¹G]]` from the generated mass matrix and
-    /// Jacobian terms `G`.
-    fn jacobian(&self, t: f64, x: &Vector4<f64>) -> SMatrix<f64, 4, 4> {
-        let (mass, forcing) = generated::dynamics(x, &self.p);
-        let lu = mass.lu();
-        let solved = lu
-            .solve(&forcing)
-            .and_then(|qdd| lu.solve(&generated::jacobian_terms(x, &qdd, &self.p)));
-        match solved {
-            Some(lower) => {
-                let mut j = SMatrix::<f64, 4, 4>::zeros();
-                j[(0, 2)] = 1.0;
-                j[(1, 3)] = 1.0;
-                j.fixed_view_mut::<2, 4>(2, 0).copy_from(&lower);
-                j
-            }
-            None => finite_difference_jacobian(|x| self.rhs(t, x), x),
-        }
-    }
-
-    fn time_derivative(&self, _t: f64, _x: &Vector4<f64>) -> Vector4<f64> {
-        Vector4::zeros()
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn generated_orders_match_the_adapter() {
-        assert_eq!(generated::P_NAMES, ["m1", "m2", "l1", "l2", "g"]);
-        assert_eq!(
-            generated::X_NAMES,
-            ["theta1", "theta2", "theta1dot", "theta2dot"]
-        );
-    }
-
-    #[test]
-    fn jacobian_matches_finite_difference() {
-        let p = DoublePendulumParams {
-            mass1: 1.3,
-            mass2: 0.7,
-            length1: 0.9,
-            length2: 1.4,
-            gravity: 9.81,
-            theta1_deg: 0.0,
-            theta2_deg: 0.0,
-            omega1: 0.0,
-            omega2: 0.0,
-        };
-        let sys = DoublePendulumSystem::new(&p);
-        let x = Vector4::new(0.4, -1.1, 0.8, -0.5);
-        let j = sys.jacobian(0.0, &x);
-        let fd = finite_difference_jacobian(|x| sys.rhs(0.0, x), &x);
-        assert!((j - fd).abs().max() < 1e-5, "{j} vs {fd}");
-        assert_eq!((j[(0, 2)], j[(1, 3)], j[(0, 0)]), (1.0, 1.0, 0.0));
     }
 }

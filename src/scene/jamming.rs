@@ -23,9 +23,10 @@ use serde::Deserialize;
 
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::jamming::dynamic::SweepSetup;
-use crate::jamming::{figure, table};
+use crate::jamming::table;
 use crate::output::csv::{CsvWriter, format_f64};
 use crate::output::plot::Figure;
+use crate::scene::jamming_figure as figure;
 use crate::scene::jamming_sweep::{self, SweepParams};
 use crate::scene::validate::Checker;
 use crate::scene::{Document, Kind, Metric, RunContext, RunSummary, Scene};

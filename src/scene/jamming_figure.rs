@@ -2,8 +2,8 @@
 //! (c, μ) one panel in the plane (F_x/F_z, M/(r F_z)) with, per depth, the
 //! exact parallelogram (solid) and Whitney's (dashed) in the same colour.
 
-use super::diagram::Parallelogram;
-use super::table::{CornerRow, DiagramKind};
+use crate::jamming::diagram::Parallelogram;
+use crate::jamming::table::{CornerRow, DiagramKind};
 use crate::output::plot::{Panel, Series, Style};
 
 /// Closed polyline through a parallelogram's corners.

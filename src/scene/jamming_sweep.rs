@@ -31,10 +31,10 @@ use crate::error::{RunError, SceneError, SceneErrors};
 use crate::jamming::PegHole;
 use crate::jamming::diagram::whitney_parallelogram;
 use crate::jamming::dynamic::{self, DynamicPoint, SweepSetup, SweepSpec};
-use crate::jamming::figure::{X_LABEL, Y_LABEL, parallelogram_series};
 use crate::jamming::sweep::{self, RunClass};
 use crate::output::csv::{CsvWriter, format_f64};
 use crate::output::plot::{Figure, Panel, Series, Style};
+use crate::scene::jamming_figure::{X_LABEL, Y_LABEL, parallelogram_series};
 use crate::scene::validate::Checker;
 use crate::scene::{Metric, RunContext};
 

@@ -30,8 +30,10 @@ pub mod align_forward;
 pub mod document;
 pub mod double_pendulum;
 pub mod fig9;
+pub mod insert_compliant;
 pub mod integrator;
 pub mod jamming;
+pub mod jamming_figure;
 pub mod jamming_sweep;
 pub mod pendulum;
 pub mod progress;
@@ -72,7 +74,7 @@ pub const KINDS: &[Kind] = &[
     pendulum::KIND,
     double_pendulum::KIND,
     jamming::KIND,
-    crate::compliant_peg::scene::KIND,
+    insert_compliant::KIND,
     fig9::KIND,
     align_forward::KIND,
 ];

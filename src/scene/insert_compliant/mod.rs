@@ -36,8 +36,11 @@
 
 use serde::Deserialize;
 
-use super::output::write_outputs;
-use super::{
+pub mod output;
+
+use output::write_outputs;
+
+use crate::compliant_peg::{
     CompliantParams, CompliantSpec, CompliantSystem, ContactSet, Load, PegHoleGeometry, PegState,
 };
 use crate::error::{RunError, SceneError, SceneErrors};
@@ -67,7 +70,7 @@ fn steel() -> MaterialSpec {
     }
 }
 fn default_fillet() -> f64 {
-    super::DEFAULT_FILLET
+    crate::compliant_peg::DEFAULT_FILLET
 }
 fn default_slip() -> f64 {
     1e-5

@@ -5,7 +5,7 @@
 //! dissipation_J, balance_J` (A: the loaded edge contact, B: the loaded
 //! wall contact; `balance = T + P − W + S`, constant along a solution).
 
-use super::system::{CompliantSystem, N_STATE};
+use crate::compliant_peg::system::{CompliantSystem, N_STATE};
 use crate::error::RunError;
 use crate::integrate::Solution;
 use crate::output::csv::CsvWriter;

@@ -26,9 +26,9 @@ pub mod geometry;
 pub mod variants;
 
 use super::hertz::{self, HertzCoefficients, HertzState};
-use geometry::{Contact, PegFrame};
 use crate::expr::Expr;
 use crate::graph::Graph;
+use geometry::{Contact, PegFrame};
 
 /// Names of the state components, in order.
 pub const STATE: [&str; 8] = [

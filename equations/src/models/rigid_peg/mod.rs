@@ -32,10 +32,10 @@
 pub mod geometry;
 pub mod variants;
 
-use geometry::{Geometry, Params, Vec3, add, cross, dot, sub};
 use crate::expr::Expr;
 use crate::graph::Graph;
 use crate::lagrange;
+use geometry::{Geometry, Params, Vec3, add, cross, dot, sub};
 
 /// Names of the state components (x = (q, q̇)), in order.
 pub const STATE: [&str; 4] = ["gamma", "psi", "gammadot", "psidot"];
