@@ -180,8 +180,8 @@ pub fn physical_inputs(module: &str, input: &str) -> Option<Vec<f64>> {
 /// (planar: ψ̇ = 0), small applied loads, friction opposing the sliding.
 fn rigid_inputs(planar: bool, input: &str) -> Option<Vec<f64>> {
     use nalgebra::Vector2;
-    use pegdyn::rigid_peg::hand::Pose;
-    use pegdyn::rigid_peg::hand_dynamics::friction_directions;
+    use pegdyn::rigid_peg::dynamics::friction_directions;
+    use pegdyn::rigid_peg::kinematics::Pose;
     use pegdyn::rigid_peg::{Loads, PegParams};
     let p = PegParams::fig9();
     let (gamma, qd) = (0.3, Vector2::new(-2.0, if planar { 0.0 } else { 10.0 }));

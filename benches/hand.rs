@@ -261,8 +261,8 @@ pub mod quasi_static {
     }
 }
 
-/// The rigid peg on three points (seed 000): `pegdyn::rigid_peg::hand` and
-/// `hand_dynamics` (hand-derived) from the generated functions' inputs
+/// The rigid peg on three points (seed 000): `pegdyn::rigid_peg::kinematics` and
+/// `dynamics` (hand-derived) from the generated functions' inputs
 /// `x = (γ, ψ, γ̇, ψ̇)`, `p = (D, d, H, m, g, f, γ0)`,
 /// `loads = (M_γ, M_ψ, F_x, F_y, F_z)`, `t` = friction directions at K, B1,
 /// B2 (local components). The hand path includes building the pose from γ,
@@ -271,10 +271,10 @@ pub mod quasi_static {
 pub mod rigid_peg {
     use super::*;
     use nalgebra::{Matrix3, Vector3};
-    use pegdyn::rigid_peg::hand::Pose;
-    use pegdyn::rigid_peg::hand_dynamics::{
+    use pegdyn::rigid_peg::dynamics::{
         forward_system, kinetic_energy, potential_energy, prescribed_system,
     };
+    use pegdyn::rigid_peg::kinematics::Pose;
     use pegdyn::rigid_peg::{Loads, PegParams};
 
     pub(crate) fn params(p: &V<7>) -> PegParams {

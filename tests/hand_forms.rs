@@ -1,7 +1,7 @@
 //! The hand-derived closed forms the benches time against the generated
 //! code (`benches/hand.rs`: textbook pendulum, double pendulum and cart-pole
 //! from their closed-form mass matrices and forcing, Hertz (9)–(13), the
-//! quasi-static Eqs. 51–54, the rigid peg's `rigid_peg::hand_dynamics`) agree with the generated functions on seeded
+//! quasi-static Eqs. 51–54, the rigid peg's `rigid_peg::dynamics`) agree with the generated functions on seeded
 //! inputs, for every function that `benches/list.rs` gives a hand form (so a
 //! new one cannot be missed). Two independent derivations of the same physics; a bench that
 //! timed a wrong hand form would compare nothing.

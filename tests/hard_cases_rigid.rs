@@ -9,11 +9,11 @@
 use nalgebra::{SVector, Vector2, Vector4};
 use pegdyn::accuracy::ulp;
 use pegdyn::integrate::{Method, Options, Solver};
-use pegdyn::rigid_peg::hand::{Geometry, Pose};
-use pegdyn::rigid_peg::hand_dynamics::{
+use pegdyn::rigid_peg::dynamics::{
     forward_system, friction_directions, kinetic_energy, potential_energy, regularized_directions,
     solve,
 };
+use pegdyn::rigid_peg::kinematics::{Geometry, Pose};
 use pegdyn::rigid_peg::{Loads, PegParams, RigidError};
 use pegdyn::scalar::{Dd, Real};
 use pegdyn::system::OdeSystem;

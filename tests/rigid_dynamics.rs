@@ -5,10 +5,10 @@
 //! have the symmetries and scaling the physics demands.
 
 use nalgebra::Vector2;
-use pegdyn::rigid_peg::hand::Pose;
-use pegdyn::rigid_peg::hand_dynamics::{
+use pegdyn::rigid_peg::dynamics::{
     forward_system, friction_directions, kinetic_energy, mass_matrix, solve, velocity_terms,
 };
+use pegdyn::rigid_peg::kinematics::Pose;
 use pegdyn::rigid_peg::prescribed::reactions;
 use pegdyn::rigid_peg::{Loads, PegParams, RigidError};
 

@@ -8,7 +8,7 @@
 //! Coriolis). See `docs/rigid-peg.md`.
 
 use nalgebra::Vector2;
-use pegdyn::rigid_peg::hand::Geometry;
+use pegdyn::rigid_peg::kinematics::Geometry;
 use pegdyn::rigid_peg::prescribed::reactions;
 use pegdyn::rigid_peg::{Loads, PegParams};
 

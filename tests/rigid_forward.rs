@@ -7,7 +7,7 @@
 use nalgebra::{Vector2, Vector4};
 use pegdyn::integrate::{Method, Options};
 use pegdyn::rigid_peg::forward::ForwardModel;
-use pegdyn::rigid_peg::hand::Pose;
+use pegdyn::rigid_peg::kinematics::Pose;
 use pegdyn::rigid_peg::modes::{Verdict, classify, contact_problem};
 use pegdyn::rigid_peg::stop::ForwardStop;
 use pegdyn::rigid_peg::trajectory::{Trajectory, simulate};

@@ -1,7 +1,7 @@
 //! Seed 000, generated model against the hand-derived one: the linear
 //! systems, contact velocities and energies that the generator derives
 //! (`pegdyn::generated::rigid_peg*`) equal the hand-derived forms
-//! (`rigid_peg::hand`, `rigid_peg::hand_dynamics`) to 1e-12 normwise over a grid of
+//! (`rigid_peg::kinematics`, `rigid_peg::dynamics`) to 1e-12 normwise over a grid of
 //! states from γ0(1 + 1e-9) to 1.2 rad, for all four variants (and row by
 //! row, each row of [A | b] against its own norm); the mass block
 //! reproduces the kinetic energy (22)–(23).
@@ -11,11 +11,11 @@ use pegdyn::generated::{
     rigid_peg, rigid_peg_frictionless, rigid_peg_planar, rigid_peg_planar_frictionless,
 };
 use pegdyn::rigid_peg::PegParams;
-use pegdyn::rigid_peg::hand::Pose;
-use pegdyn::rigid_peg::hand_dynamics::{
+use pegdyn::rigid_peg::dynamics::{
     Matrix5, Vector5, forward_system, friction_directions, kinetic_energy, potential_energy,
     prescribed_system,
 };
+use pegdyn::rigid_peg::kinematics::Pose;
 
 mod common;
 use common::Rng;
@@ -246,7 +246,7 @@ fn contact_velocities_and_energies_equal_the_hand_derived_ones() {
 fn geometry_equals_the_hand_derived_geometry() {
     let p = PegParams::fig9();
     for gamma in gammas(&p).into_iter().chain([0.05, 0.3, 0.9]) {
-        let h = pegdyn::rigid_peg::hand::Geometry::try_new(&p, gamma).unwrap();
+        let h = pegdyn::rigid_peg::kinematics::Geometry::try_new(&p, gamma).unwrap();
         let (eta_l, z_l) = h.centre_l();
         let want = [
             h.a1, h.a2, h.s1, h.s2, h.b, h.sin_tau, h.cos_tau, h.eta_c, h.z_c, h.kl, h.bl, eta_l,

@@ -7,11 +7,11 @@
 
 use nalgebra::{Vector2, Vector3};
 use pegdyn::generated::{rigid_peg, rigid_peg_frictionless};
+use pegdyn::rigid_peg::dynamics::{self, forward_system};
 use pegdyn::rigid_peg::generated_model::{
     Variant, contact_velocities, forward, friction_directions, prescribed,
 };
-use pegdyn::rigid_peg::hand::Pose;
-use pegdyn::rigid_peg::hand_dynamics::{self, forward_system};
+use pegdyn::rigid_peg::kinematics::Pose;
 use pegdyn::rigid_peg::prescribed::{reactions, reactions_hand};
 use pegdyn::rigid_peg::{Loads, PegParams, RigidError};
 
@@ -74,9 +74,9 @@ fn forward_solutions_equal_the_hand_derived_solutions() {
             for (gd, pd) in [(-2.0, 10.0), (1.5, -3.0)] {
                 let (q, qd) = (Vector2::new(gamma, psi), Vector2::new(gd, pd));
                 let pose = Pose::try_new(&p, gamma, psi).unwrap();
-                let t = hand_dynamics::friction_directions(&pose.kinematics(qd)).unwrap();
+                let t = dynamics::friction_directions(&pose.kinematics(qd)).unwrap();
                 let (a, b) = forward_system(&p, &loads, &pose, qd, &t);
-                let want = hand_dynamics::solve(&a, &b, gamma).unwrap();
+                let want = dynamics::solve(&a, &b, gamma).unwrap();
                 let got = forward(Variant::Full, &p, &loads, q, qd, &t).unwrap();
                 let got = [
                     got.qdd[0],

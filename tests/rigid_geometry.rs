@@ -6,7 +6,7 @@
 
 use nalgebra::{Matrix3, Rotation3, Unit, Vector2, Vector3};
 use pegdyn::rigid_peg::PegParams;
-use pegdyn::rigid_peg::hand::{Geometry, Pose};
+use pegdyn::rigid_peg::kinematics::{Geometry, Pose};
 
 fn peg() -> PegParams {
     PegParams::fig9()

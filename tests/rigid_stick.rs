@@ -7,7 +7,7 @@
 use nalgebra::{DMatrix, DVector, Vector2, Vector3, Vector4};
 use pegdyn::integrate::{Method, Options, OutputMode};
 use pegdyn::rigid_peg::forward::{ForwardModel, FrictionLaw};
-use pegdyn::rigid_peg::hand::Pose;
+use pegdyn::rigid_peg::kinematics::Pose;
 use pegdyn::rigid_peg::stick::{RestOutcome, start_from_rest};
 use pegdyn::rigid_peg::stop::ForwardStop;
 use pegdyn::rigid_peg::trajectory::simulate;

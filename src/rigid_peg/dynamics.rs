@@ -25,7 +25,7 @@
 
 use nalgebra::{Const, DimMin, Matrix2, Matrix3, SMatrix, SVector, Vector2, Vector3};
 
-use crate::rigid_peg::hand::{Kinematics, Pose};
+use crate::rigid_peg::kinematics::{Kinematics, Pose};
 use crate::rigid_peg::{Loads, PegParams, RigidError};
 
 /// 5×5 matrix of a rigid-peg linear system.

@@ -19,9 +19,9 @@
 
 use nalgebra::{Vector2, Vector3, Vector4};
 
+use crate::rigid_peg::dynamics::{forward_system, regularized_opposing};
 use crate::rigid_peg::generated_model::{self, Variant};
-use crate::rigid_peg::hand::Pose;
-use crate::rigid_peg::hand_dynamics::{forward_system, regularized_opposing};
+use crate::rigid_peg::kinematics::Pose;
 use crate::rigid_peg::{Loads, PegParams, RigidError};
 use crate::system::OdeSystem;
 
@@ -198,7 +198,7 @@ impl ForwardModel {
                     Some(u) => -u / u.norm(),
                     None => {
                         return Err(RigidError::NoSliding {
-                            contact: crate::rigid_peg::hand_dynamics::CONTACTS[i],
+                            contact: crate::rigid_peg::dynamics::CONTACTS[i],
                         });
                     }
                 }
@@ -272,7 +272,7 @@ impl ForwardModel {
     /// # Errors
     /// [`RigidError::NotThreePoint`] outside the range.
     pub fn energy(&self, x: &Vector4<f64>) -> Result<f64, RigidError> {
-        use crate::rigid_peg::hand_dynamics::{kinetic_energy, potential_energy};
+        use crate::rigid_peg::dynamics::{kinetic_energy, potential_energy};
         let (q, qdot) = split(x);
         let pose = Pose::try_new(&self.params, q[0], q[1])?;
         Ok(kinetic_energy(&self.params, &pose, &pose.kinematics(qdot))

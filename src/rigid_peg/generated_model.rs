@@ -19,7 +19,7 @@ use nalgebra::{SVector, Vector2, Vector3};
 use crate::generated::{
     rigid_peg, rigid_peg_frictionless, rigid_peg_planar, rigid_peg_planar_frictionless,
 };
-use crate::rigid_peg::hand_dynamics::solve;
+use crate::rigid_peg::dynamics::solve;
 use crate::rigid_peg::prescribed::Reactions;
 use crate::rigid_peg::{Loads, PegParams, RigidError};
 
@@ -361,5 +361,5 @@ pub fn contact_velocities(
 }
 
 /// Friction directions t_i = −v_i/|v_i| from the contact velocities (the
-/// hand-derived model's [`directions_opposing`](crate::rigid_peg::hand_dynamics::directions_opposing)).
-pub use crate::rigid_peg::hand_dynamics::directions_opposing as friction_directions;
+/// hand-derived model's [`directions_opposing`](crate::rigid_peg::dynamics::directions_opposing)).
+pub use crate::rigid_peg::dynamics::directions_opposing as friction_directions;

@@ -2,8 +2,12 @@
 //! K, B1, B2, with two degrees of freedom: nutation γ and precession ψ.
 //!
 //! - [`params`]: dimensions, mass, friction and loads;
-//! - [`hand`]: hand-derived geometry and kinematics (corrected paper forms);
-//! - [`hand_dynamics`]: hand-derived equations of motion and reactions;
+//! - [`kinematics`]: geometry, poses, velocities and contact Jacobians
+//!   (hand-derived, corrected paper forms), used by every path below;
+//! - [`dynamics`]: the hand-derived equations of motion and reactions: the
+//!   linear systems of the static-hold and prescribed-motion checks, the
+//!   shared LU [`dynamics::solve`] and friction directions, and the oracle
+//!   the generated model is tested against;
 //! - [`generated_model`]: the same model derived by the generator
 //!   (`pegdyn::generated::rigid_peg*`), in four variants;
 //! - [`prescribed`]: reactions and driving moments of a prescribed motion
@@ -16,11 +20,11 @@
 //! Derivation and findings: `docs/rigid-peg.md`; the generated model:
 //! `docs/rigid-model.md`.
 
+pub mod dynamics;
 pub mod forward;
 pub mod forward_events;
 pub mod generated_model;
-pub mod hand;
-pub mod hand_dynamics;
+pub mod kinematics;
 pub mod modes;
 pub mod params;
 pub mod prescribed;

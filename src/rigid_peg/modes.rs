@@ -24,9 +24,9 @@
 
 use nalgebra::{Matrix3, SMatrix, SVector, Vector2, Vector3};
 
+use crate::rigid_peg::dynamics::com_bias;
 use crate::rigid_peg::forward::ForwardModel;
-use crate::rigid_peg::hand::Pose;
-use crate::rigid_peg::hand_dynamics::com_bias;
+use crate::rigid_peg::kinematics::Pose;
 use crate::rigid_peg::{PegParams, RigidError};
 
 type Vector5 = SVector<f64, 5>;

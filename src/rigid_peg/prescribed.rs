@@ -9,9 +9,9 @@
 
 use nalgebra::{Vector2, Vector3};
 
+use crate::rigid_peg::dynamics::{friction_directions, prescribed_system, solve};
 use crate::rigid_peg::generated_model::{self, Variant};
-use crate::rigid_peg::hand::Pose;
-use crate::rigid_peg::hand_dynamics::{friction_directions, prescribed_system, solve};
+use crate::rigid_peg::kinematics::Pose;
 use crate::rigid_peg::{Loads, PegParams, RigidError};
 
 /// Reactions and driving moments of a prescribed motion.
@@ -69,7 +69,7 @@ pub fn reactions(
 }
 
 /// [`reactions`] computed with the hand-derived model
-/// ([`crate::rigid_peg::hand_dynamics`]), always in the full 2-DOF form.
+/// ([`crate::rigid_peg::dynamics`]), always in the full 2-DOF form.
 ///
 /// # Errors
 /// As [`reactions`] (without the parameter checks).

@@ -24,9 +24,9 @@ use std::f64::consts::TAU;
 use nalgebra::{DMatrix, DVector, Vector2, Vector3, Vector5};
 
 use crate::rigid_peg::RigidError;
+use crate::rigid_peg::dynamics::forward_system;
 use crate::rigid_peg::forward::ForwardModel;
-use crate::rigid_peg::hand::Pose;
-use crate::rigid_peg::hand_dynamics::forward_system;
+use crate::rigid_peg::kinematics::Pose;
 
 /// Vertices of the polygon inscribed in each contact's friction circle.
 pub const POLYGON: usize = 32;

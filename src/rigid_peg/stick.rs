@@ -79,7 +79,7 @@ fn cross(model: &ForwardModel, q: Vector2<f64>, theta: f64) -> Option<(f64, Acce
 /// # Errors
 /// [`RigidError::NotThreePoint`] outside γ0 < γ < π/2.
 pub fn start_from_rest(model: &ForwardModel, q: Vector2<f64>) -> Result<RestOutcome, RigidError> {
-    crate::rigid_peg::hand::Geometry::try_new(&model.params, q[0])?;
+    crate::rigid_peg::kinematics::Geometry::try_new(&model.params, q[0])?;
     let thetas: Vec<f64> = (0..SAMPLES)
         .map(|k| TAU * k as f64 / SAMPLES as f64)
         .collect();

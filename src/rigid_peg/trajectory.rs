@@ -80,7 +80,7 @@ fn check_sliding(model: &ForwardModel, t: f64, x: Vector4<f64>) -> Option<Forwar
         Ok(Verdict::LiftOff(m)) => {
             let i = (0..3).find(|&i| !m.in_contact[i]).unwrap_or(0);
             Some(ForwardStop::LiftOff {
-                contact: crate::rigid_peg::hand_dynamics::CONTACTS[i],
+                contact: crate::rigid_peg::dynamics::CONTACTS[i],
                 t,
                 state: x,
             })
@@ -122,7 +122,7 @@ pub fn simulate_with_progress(
     progress: &mut dyn FnMut(f64),
 ) -> Result<Trajectory, ForwardError> {
     options.validate(t0, t_end)?;
-    crate::rigid_peg::hand::Geometry::try_new(&model.params, x0[0])?;
+    crate::rigid_peg::kinematics::Geometry::try_new(&model.params, x0[0])?;
     let mut out = Trajectory {
         rows: Vec::new(),
         stop: ForwardStop::ReachedEnd { t: t0 },
@@ -161,7 +161,7 @@ pub fn simulate_with_progress(
                 RestOutcome::LeavesContact { contact, .. } => {
                     push_row(model, &mut out.rows, t, x, None);
                     out.stop = ForwardStop::LiftOff {
-                        contact: crate::rigid_peg::hand_dynamics::CONTACTS[contact],
+                        contact: crate::rigid_peg::dynamics::CONTACTS[contact],
                         t,
                         state: x,
                     };
@@ -211,7 +211,7 @@ pub fn simulate_with_progress(
             (StopReason::ReachedEnd, _) => ForwardStop::ReachedEnd { t },
             (_, Some(EventKind::Gamma0)) => ForwardStop::TwoPointContact { t, state: x },
             (_, Some(EventKind::LiftOff(i))) => ForwardStop::LiftOff {
-                contact: crate::rigid_peg::hand_dynamics::CONTACTS[i],
+                contact: crate::rigid_peg::dynamics::CONTACTS[i],
                 t,
                 state: x,
             },

@@ -2,7 +2,7 @@
 //! B2 (seed 000, eqs. (1)–(9) and (14)–(17), corrected), as expression trees
 //! of the nutation angle γ and the parameters.
 //!
-//! Frames (as `src/rigid_peg/hand.rs`): fixed O1xyz with the hole-edge circle
+//! Frames (as `src/rigid_peg/kinematics.rs`): fixed O1xyz with the hole-edge circle
 //! (radius D/2) in z = 0 and z up the hole axis; the rotating components
 //! (e_η, e_n, e_z) with e_η = (cos ψ, sin ψ, 0) in the symmetry plane and
 //! e_n = e_z × e_η. Every vector here is in rotating components, so none
