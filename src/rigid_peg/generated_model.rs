@@ -23,18 +23,12 @@ use crate::rigid_peg::dynamics::solve;
 use crate::rigid_peg::prescribed::Reactions;
 use crate::rigid_peg::{Loads, PegParams, RigidError};
 
-/// Which generated rigid-peg module to use.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Variant {
-    /// `rigid_peg`: γ and ψ, Coulomb friction.
-    Full,
-    /// `rigid_peg_frictionless`: γ and ψ, f = 0.
-    Frictionless,
-    /// `rigid_peg_planar`: γ only (ψ̇ ≡ 0), N_B1 = N_B2, friction.
-    Planar,
-    /// `rigid_peg_planar_frictionless`: γ only, f = 0.
-    PlanarFrictionless,
-}
+/// Which generated rigid-peg module to use: the generator's own definition
+/// (one file, `equations/src/models/rigid_peg/variant.rs`, compiled into both
+/// crates).
+#[path = "../../equations/src/models/rigid_peg/variant.rs"]
+mod variant;
+pub use variant::Variant;
 
 /// Forward-dynamics result: accelerations and normal forces.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -51,34 +45,6 @@ pub struct Accelerations {
 const PLANAR_TOL: f64 = 1e-12;
 
 impl Variant {
-    /// All variants, largest first.
-    pub const ALL: [Variant; 4] = [
-        Variant::Full,
-        Variant::Frictionless,
-        Variant::Planar,
-        Variant::PlanarFrictionless,
-    ];
-
-    /// The generated module's name.
-    pub fn name(self) -> &'static str {
-        match self {
-            Variant::Full => "rigid_peg",
-            Variant::Frictionless => "rigid_peg_frictionless",
-            Variant::Planar => "rigid_peg_planar",
-            Variant::PlanarFrictionless => "rigid_peg_planar_frictionless",
-        }
-    }
-
-    /// ψ ≡ 0 (one degree of freedom).
-    pub fn is_planar(self) -> bool {
-        matches!(self, Variant::Planar | Variant::PlanarFrictionless)
-    }
-
-    /// f is a parameter (not eliminated).
-    pub fn has_friction(self) -> bool {
-        matches!(self, Variant::Full | Variant::Planar)
-    }
-
     /// The smallest variant for a scene posed at ψ = 0: planar when ψ̇ ≡ 0
     /// throughout, M_ψ = 0 and the lateral force `force[1]` is 0 (the fixed
     /// y axis is e_n at ψ = 0); frictionless when f = 0.
@@ -105,7 +71,7 @@ impl Variant {
 
     fn refuse(self, reason: &'static str) -> RigidError {
         RigidError::Unrepresentable {
-            variant: self.name(),
+            variant: self.module_name(),
             reason,
         }
     }

@@ -1,6 +1,9 @@
-//! The call table the test suite uses to run every generated function
-//! without naming it: `$OUT_DIR/generated_calls.rs`, included only by
-//! `tests/generated_vs_interpreter.rs` (not part of any public API).
+//! Test scaffolding: the `coverage` module's code and its call table,
+//! `$OUT_DIR/generated_calls.rs`, included only by
+//! `tests/generated_vs_interpreter.rs` (not part of any public API). The
+//! registered models' functions are not listed here: their one list is the
+//! generated registry (`pegdyn::generated::registry::FUNCTIONS`,
+//! [`super::registry`]), which the test walks.
 //!
 //! Each entry is `(module, function, caller)`; the caller takes the inputs
 //! as slices, calls `pegdyn::generated::<module>::<function>`, and returns
@@ -17,18 +20,12 @@ use crate::model::{Module, Output};
 /// Name of the call table in the output directory.
 pub const CALLS_FILE: &str = "generated_calls.rs";
 
-/// The formatted call table for the registered `modules` (called as
-/// `pegdyn::generated::<module>::<fn>`) and the `coverage` module (its code
-/// is included in the table's file).
-pub fn calls(modules: &[&Module], coverage: (&Module, &str)) -> Result<String, GenError> {
+/// The formatted call table of the `coverage` module, followed by the
+/// module's code.
+pub fn calls(coverage: (&Module, &str)) -> Result<String, GenError> {
     let mut entries = Vec::new();
     let mut fns = Vec::new();
-    let local = std::iter::once((coverage.0, quote!()));
-    let all = modules
-        .iter()
-        .map(|m| (*m, quote!(pegdyn::generated::)))
-        .chain(local);
-    for (m, prefix) in all {
+    for m in [coverage.0] {
         for f in &m.functions {
             let (mi, fi) = (ident(&m.name), ident(&f.name));
             let caller = format_ident!("call_{}_{}", m.name, f.name);
@@ -57,7 +54,7 @@ pub fn calls(modules: &[&Module], coverage: (&Module, &str)) -> Result<String, G
             entries.push(quote!((#ms, #fs, #caller)));
             fns.push(quote! {
                 fn #caller(a: &[&[f64]]) -> Vec<f64> {
-                    let r = #prefix #mi::#fi(#(#args),*);
+                    let r = #mi::#fi(#(#args),*);
                     let mut out = Vec::new();
                     #(#pushes)*
                     out
@@ -67,7 +64,7 @@ pub fn calls(modules: &[&Module], coverage: (&Module, &str)) -> Result<String, G
     }
     let n = proc_macro2::Literal::usize_unsuffixed(entries.len());
     let file = quote! {
-        /// Every generated function: (module, function, caller on slices).
+        /// Every `coverage` function: (module, function, caller on slices).
         pub const CALLS: [(&str, &str, fn(&[&[f64]]) -> Vec<f64>); #n] = [#(#entries),*];
         #(#fns)*
     };

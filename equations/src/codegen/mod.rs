@@ -11,9 +11,11 @@
 //! model order, nodes in arena order; no hash-map iteration, no paths, no
 //! timestamps.
 
+#[doc(hidden)]
 pub mod coverage;
 pub mod emit;
 pub mod function;
+#[doc(hidden)]
 pub mod harness;
 pub mod lower;
 pub mod ops;
@@ -99,8 +101,7 @@ pub fn render(modules: &[(&Graph, &Module)]) -> Result<Generated, GenError> {
     let cm = coverage::module(&cg);
     verify::verify_module(&cg, &cm)?;
     let coverage_code = emit_module(&cg, &cm, &mut Report::default())?.code;
-    let registered: Vec<&Module> = modules.iter().map(|(_, m)| *m).collect();
-    let calls = harness::calls(&registered, (&cm, &coverage_code))?;
+    let calls = harness::calls((&cm, &coverage_code))?;
     Ok(Generated {
         modules: out,
         source,

@@ -141,14 +141,9 @@ impl Schedule {
     }
 }
 
-/// Rust keywords and names the generated code itself uses.
-const RESERVED: &[&str] = &[
-    "as", "async", "await", "break", "const", "continue", "crate", "dyn", "else", "enum", "extern",
-    "false", "fn", "for", "gen", "if", "impl", "in", "let", "loop", "match", "mod", "move", "mut",
-    "pub", "ref", "return", "self", "static", "struct", "super", "trait", "true", "type", "unsafe",
-    "use", "where", "while", "abstract", "become", "box", "do", "final", "macro", "override",
-    "priv", "try", "typeof", "unsized", "virtual", "yield", "f64", "nalgebra",
-];
+/// Names the generated code itself uses (besides the Rust keywords,
+/// [`super::tokens::KEYWORDS`]), so no `let` may take them.
+const GENERATED_NAMES: &[&str] = &["f64", "nalgebra"];
 
 /// ASCII names of Greek letters (lower and upper case map to the same).
 fn greek(c: char) -> Option<&'static str> {
@@ -213,7 +208,11 @@ pub struct Names {
 impl Names {
     /// A name set that already holds `reserved` (e.g. the input names).
     pub fn new<'a>(reserved: impl IntoIterator<Item = &'a str>) -> Names {
-        let mut taken: BTreeSet<String> = RESERVED.iter().map(|s| (*s).to_owned()).collect();
+        let mut taken: BTreeSet<String> = super::tokens::KEYWORDS
+            .iter()
+            .chain(GENERATED_NAMES)
+            .map(|s| (*s).to_owned())
+            .collect();
         taken.extend(reserved.into_iter().map(str::to_owned));
         Names { taken, counter: 0 }
     }

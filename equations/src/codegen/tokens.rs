@@ -8,6 +8,17 @@ use super::emit::{Frag, Prec};
 use super::schedule::const_exponent;
 use crate::graph::{Graph, Id, Node, Sym, Unary};
 
+/// The Rust keywords, strict and reserved (edition 2024), none of which
+/// may name a model symbol or a generated `let`: the one list read by the
+/// name check ([`super::verify::is_snake_ident`]) and the schedule's namer.
+pub(crate) const KEYWORDS: &[&str] = &[
+    "as", "async", "await", "break", "const", "continue", "crate", "dyn", "else", "enum", "extern",
+    "false", "fn", "for", "gen", "if", "impl", "in", "let", "loop", "match", "mod", "move", "mut",
+    "pub", "ref", "return", "self", "static", "struct", "super", "trait", "true", "type", "unsafe",
+    "use", "where", "while", "abstract", "become", "box", "do", "final", "macro", "override",
+    "priv", "try", "typeof", "unsized", "virtual", "yield",
+];
+
 /// An `f64` literal of a finite, non-negative value.
 pub(crate) fn lit(v: f64) -> Literal {
     Literal::f64_unsuffixed(v)

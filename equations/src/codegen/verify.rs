@@ -16,14 +16,9 @@ use crate::error::GenError;
 use crate::graph::{Graph, Id, Node, Sym};
 use crate::model::{FnSpec, Module, Output};
 
-/// True for a snake_case Rust identifier that is not a keyword.
+/// True for a snake_case Rust identifier that is not a keyword
+/// ([`super::tokens::KEYWORDS`]: strict and reserved, edition 2024).
 pub fn is_snake_ident(s: &str) -> bool {
-    const KEYWORDS: &[&str] = &[
-        "as", "async", "await", "break", "const", "continue", "crate", "dyn", "else", "enum",
-        "extern", "false", "fn", "for", "gen", "if", "impl", "in", "let", "loop", "match", "mod",
-        "move", "mut", "pub", "ref", "return", "self", "static", "struct", "super", "trait",
-        "true", "type", "unsafe", "use", "where", "while", "yield",
-    ];
     let mut cs = s.chars();
     let first_ok = cs
         .next()
@@ -32,7 +27,7 @@ pub fn is_snake_ident(s: &str) -> bool {
         && s != "_"
         && s.chars()
             .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
-        && !KEYWORDS.contains(&s)
+        && !super::tokens::KEYWORDS.contains(&s)
 }
 
 fn check_names<'a>(

@@ -30,6 +30,7 @@
 //! ([`variants`]). Units: SI (m, kg, s, N, N·m, rad, J).
 
 pub mod geometry;
+pub mod variant;
 pub mod variants;
 
 use crate::expr::Expr;

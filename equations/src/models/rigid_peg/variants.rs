@@ -26,40 +26,7 @@ use crate::graph::Graph;
 use crate::model::{FnSpec, Input, Module, Output};
 use crate::subst::Substitution;
 
-/// Which specialization of the rigid-peg model to generate.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Variant {
-    /// 2 DOF with Coulomb friction.
-    Full,
-    /// 2 DOF, f = 0.
-    Frictionless,
-    /// ψ ≡ 0, one unknown N_B, friction in the symmetry plane.
-    Planar,
-    /// ψ ≡ 0, f = 0.
-    PlanarFrictionless,
-}
-
-impl Variant {
-    /// The generated module's name.
-    pub fn module_name(self) -> &'static str {
-        match self {
-            Variant::Full => "rigid_peg",
-            Variant::Frictionless => "rigid_peg_frictionless",
-            Variant::Planar => "rigid_peg_planar",
-            Variant::PlanarFrictionless => "rigid_peg_planar_frictionless",
-        }
-    }
-
-    /// ψ ≡ 0.
-    pub fn is_planar(self) -> bool {
-        matches!(self, Variant::Planar | Variant::PlanarFrictionless)
-    }
-
-    /// f is kept (not eliminated).
-    pub fn has_friction(self) -> bool {
-        matches!(self, Variant::Full | Variant::Planar)
-    }
-}
+pub use super::variant::Variant;
 
 /// `rigid_peg`.
 pub fn module(g: &Graph) -> Module {
