@@ -1,4 +1,5 @@
 #![doc = include_str!("../README.md")]
+#![warn(missing_docs)]
 
 // Generated code names the crate as `pegdyn::…` so that it reads the same
 // inside this crate and in the test harness that includes it.

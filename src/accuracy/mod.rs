@@ -89,6 +89,7 @@ pub struct FunctionAccuracy {
 /// hard grid.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Report {
+    /// One row per evaluated function.
     pub functions: Vec<FunctionAccuracy>,
     /// Modules skipped because [`grid::points`] has no grid for them.
     pub skipped: Vec<String>,
@@ -100,8 +101,11 @@ pub enum AccuracyError {
     /// The grid point does not give a value for an input symbol.
     #[error("grid point `{point}` of module `{module}` has no value for input symbol `{symbol}`")]
     MissingSymbol {
+        /// The generated module.
         module: String,
+        /// The grid point's name.
         point: String,
+        /// The input symbol without a value.
         symbol: String,
     },
 }

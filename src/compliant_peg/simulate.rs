@@ -88,33 +88,62 @@ impl Default for InsertionOptions {
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum InsertionOutcome {
     /// The target depth was reached at time `t`.
-    Inserted { t: f64 },
+    Inserted {
+        /// Time, s.
+        t: f64,
+    },
     /// Stuck in two-point contact with the contact line inside both
     /// friction cones.
     Wedged {
+        /// Time of the classification, s.
         t: f64,
+        /// Depth of the bottom face, m.
         depth: f64,
+        /// Tilt θ, rad.
         theta: f64,
+        /// Normal force at the hole edge, N.
         f_edge: f64,
+        /// Normal force at the wall, N.
         f_wall: f64,
     },
     /// Stuck in contact, the contact forces balancing the applied load.
     Jammed {
+        /// Time of the classification, s.
         t: f64,
+        /// Depth of the bottom face, m.
         depth: f64,
+        /// Tilt θ, rad.
         theta: f64,
+        /// Normal force at the hole edge, N.
         f_edge: f64,
+        /// Normal force at the wall, N.
         f_wall: f64,
     },
     /// Not moving and not in contact.
-    Stalled { t: f64, depth: f64 },
+    Stalled {
+        /// Time of the classification, s.
+        t: f64,
+        /// Depth of the bottom face, m.
+        depth: f64,
+    },
     /// The peg left the hole at time `t`.
-    Exited { t: f64 },
+    Exited {
+        /// Time, s.
+        t: f64,
+    },
     /// Still moving at `t_max`.
-    Unfinished { t: f64, depth: f64 },
+    Unfinished {
+        /// Time (`t_max`), s.
+        t: f64,
+        /// Depth of the bottom face, m.
+        depth: f64,
+    },
     /// The integrator could not continue (step size underflow, non-finite
     /// values, step budget).
-    Failed { reason: StopReason },
+    Failed {
+        /// Why the integrator stopped.
+        reason: StopReason,
+    },
 }
 
 /// The outcome with the final state and the integrator's work.

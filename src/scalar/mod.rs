@@ -45,20 +45,29 @@ pub trait Real:
     fn from_f64(v: f64) -> Self;
     /// The nearest `f64`.
     fn to_f64(self) -> f64;
+    /// Sine (argument in radians).
     fn sin(self) -> Self;
+    /// Cosine (argument in radians).
     fn cos(self) -> Self;
+    /// Tangent (argument in radians).
     fn tan(self) -> Self;
+    /// Arcsine, in [−π/2, π/2] rad.
     fn asin(self) -> Self;
+    /// Arccosine, in [0, π] rad.
     fn acos(self) -> Self;
+    /// Arctangent, in (−π/2, π/2) rad.
     fn atan(self) -> Self;
     /// `atan2(self, x)`, `self` the ordinate.
     fn atan2(self, x: Self) -> Self;
+    /// `e^self`.
     fn exp(self) -> Self;
     /// `exp(self) − 1`, accurate near 0.
     fn exp_m1(self) -> Self;
+    /// Natural logarithm.
     fn ln(self) -> Self;
     /// `ln(1 + self)`, accurate near 0.
     fn ln_1p(self) -> Self;
+    /// Square root.
     fn sqrt(self) -> Self;
     /// Real cube root (`cbrt(−x) = −cbrt(x)`); the generator emits it for
     /// the exponent 1/3.
@@ -66,11 +75,15 @@ pub trait Real:
     /// `(sin self, cos self)` in one call; the generator emits it when both
     /// are used.
     fn sin_cos(self) -> (Self, Self);
+    /// `self^n` for an integer `n`.
     fn powi(self, n: i32) -> Self;
+    /// `self^e` for a real `e`.
     fn powf(self, e: Self) -> Self;
     /// `sqrt(self² + y²)` without overflow.
     fn hypot(self, y: Self) -> Self;
+    /// Absolute value.
     fn abs(self) -> Self;
+    /// Hyperbolic tangent.
     fn tanh(self) -> Self;
     /// −1, 0 or 1 (0 at ±0; NaN propagates).
     fn sign(self) -> Self;

@@ -101,34 +101,53 @@ pub enum ContactsSpec {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct InsertParams {
+    /// Hole diameter D, m.
     pub hole_diameter: f64,
+    /// Clearance ratio c = (D − 2r)/D (r the peg radius).
     pub clearance_ratio: f64,
+    /// Peg length, m (a solid cylinder: sets mass and inertia).
     pub peg_length: f64,
+    /// Peg density, kg/m³.
     pub density: f64,
+    /// Height l_c of the centre of mass above the bottom face, m (default `peg_length / 2`).
     pub com_height: Option<f64>,
     #[serde(default = "default_fillet")]
+    /// Fillet radius of the peg's bottom edge, m (default 0.2 mm).
     pub peg_fillet: f64,
     #[serde(default = "default_fillet")]
+    /// Fillet radius of the hole's edge, m (default 0.2 mm).
     pub hole_fillet: f64,
+    /// Coulomb friction coefficient μ.
     pub friction: f64,
     #[serde(default = "default_slip")]
+    /// Slip velocity v_s of the regularized friction law, m/s (default 1e-5).
     pub slip_velocity: f64,
     #[serde(default)]
+    /// Which contacts to generate (default all four).
     pub contacts: ContactsSpec,
     #[serde(default)]
+    /// Hunt–Crossley damping α, s/m (default 0: elastic).
     pub contact_damping: f64,
+    /// Axial force f1 into the hole, N.
     pub axial_force: f64,
     #[serde(default)]
+    /// Radial force f2, N (default 0).
     pub radial_force: f64,
     #[serde(default)]
+    /// Applied moment M, N·m (default 0).
     pub torque: f64,
+    /// Initial tilt, rad: a two-point start, or 0 for a centred upright start.
     pub initial_tilt: f64,
     #[serde(default)]
+    /// Initial depth for `initial_tilt = 0`, m (default 0).
     pub initial_depth: f64,
+    /// Depth at which the run stops, m.
     pub target_depth: f64,
     #[serde(default = "steel")]
+    /// Peg material (default steel: 210 GPa, 0.3).
     pub peg_material: MaterialSpec,
     #[serde(default = "steel")]
+    /// Hole material (default steel).
     pub hole_material: MaterialSpec,
 }
 
@@ -136,7 +155,9 @@ pub struct InsertParams {
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct InsertCompliantScene {
+    /// The `[insert_compliant]` table.
     pub insert_compliant: InsertParams,
+    /// The `[integrator]` table.
     pub integrator: IntegratorSpec,
 }
 
