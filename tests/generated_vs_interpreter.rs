@@ -96,10 +96,13 @@ fn spread(g: &Graph, f: &FnSpec, inputs: &[Vec<f64>], rng: &mut Rng) -> Vec<f64>
     out
 }
 
+/// A generated function called on slices, outputs flattened.
+type Caller = fn(&[&[f64]]) -> Vec<f64>;
+
 /// The caller of `module::name` on slices: a registered model's from the
 /// generated registry (the one list of generated functions), the
 /// `coverage` module's from the test call table.
-fn call(module: &str, name: &str) -> Option<fn(&[&[f64]]) -> Vec<f64>> {
+fn call(module: &str, name: &str) -> Option<Caller> {
     let registered = FUNCTIONS
         .iter()
         .find(|f| f.module == module && f.name == name)

@@ -38,19 +38,6 @@ use crate::integrate::{
 };
 use nalgebra::SVector;
 
-/// Which integrator runs the insertion.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
-pub enum Integrator {
-    /// Adaptive explicit Dormand–Prince 5(4): slow (steps limited by the
-    /// contact frequency and the friction time constant) but reliable.
-    #[default]
-    Explicit,
-    /// Linearly implicit Rosenbrock RODAS3 with the generated exact
-    /// Jacobian: steps far longer than the contact period where the
-    /// motion is smooth.
-    Implicit,
-}
-
 /// Options of [`simulate_insertion`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct InsertionOptions {
@@ -66,8 +53,11 @@ pub struct InsertionOptions {
     pub rtol: f64,
     /// Absolute tolerance (state units: m, rad, m/s, J).
     pub atol: f64,
-    /// The integrator.
-    pub integrator: Integrator,
+    /// The integrator: `Dopri5` (the default; explicit, steps limited by
+    /// the contact frequency and the friction time constant, reliable) or
+    /// `Rodas3` (linearly implicit with the generated exact Jacobian: steps
+    /// far longer than the contact period where the motion is smooth).
+    pub integrator: Method,
 }
 
 impl Default for InsertionOptions {
@@ -79,7 +69,7 @@ impl Default for InsertionOptions {
             stall_distance: 2e-6,
             rtol: 1e-6,
             atol: 1e-10,
-            integrator: Integrator::Explicit,
+            integrator: Method::Dopri5,
         }
     }
 }
@@ -218,10 +208,7 @@ pub fn simulate_insertion(
         last: sys.sample(&y),
         stats,
     };
-    let method = match opts.integrator {
-        Integrator::Explicit => Method::Dopri5,
-        Integrator::Implicit => Method::Rodas3,
-    };
+    let method = opts.integrator;
     while t < opts.t_max {
         let t_end = (t + opts.window).min(opts.t_max);
         let mut options = Options::with_tolerances(opts.rtol, opts.atol);

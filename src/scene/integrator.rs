@@ -3,7 +3,7 @@
 //!
 //! ```toml
 //! [integrator]
-//! method = "dopri5"        # "dopri5" | "rk4" | "rosenbrock"
+//! method = "dopri5"        # "dopri5" | "rk4" | "rodas3" (alias "rosenbrock")
 //! rtol = 1e-9              # relative tolerance (adaptive methods)
 //! atol = 1e-12             # absolute tolerance, > 0 (adaptive methods)
 //! h = 1e-3                 # fixed step, s (rk4 only; required there)
@@ -18,7 +18,10 @@ use serde::Deserialize;
 use crate::error::{SceneError, SceneErrors};
 use crate::scene::validate::Checker;
 
-/// Integration method selected by `integrator.method`.
+/// Integration method selected by `integrator.method`: the names of
+/// [`crate::integrate::Method`] (`"rk4"`, `"dopri5"`, `"rodas3"`), without
+/// the step size, which the table gives as `h` ([`super::simulate::solver_config`]
+/// builds the engine's method from both).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Method {
@@ -27,9 +30,10 @@ pub enum Method {
     /// Dormand–Prince 5(4), adaptive, with dense output and events.
     Dopri5,
     /// Linearly implicit, L-stable Rosenbrock method RODAS3 (order 3(2))
-    /// for stiff problems, adaptive; also accepted as `"rodas3"`.
-    #[serde(alias = "rodas3")]
-    Rosenbrock,
+    /// for stiff problems, adaptive; the older spelling `"rosenbrock"` is
+    /// accepted as an alias.
+    #[serde(alias = "rosenbrock")]
+    Rodas3,
 }
 
 impl Method {
@@ -38,7 +42,7 @@ impl Method {
         match self {
             Method::Rk4 => "rk4",
             Method::Dopri5 => "dopri5",
-            Method::Rosenbrock => "rosenbrock",
+            Method::Rodas3 => "rodas3",
         }
     }
 

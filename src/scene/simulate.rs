@@ -27,7 +27,7 @@ pub fn solver_config(spec: &IntegratorSpec) -> Result<(integrate::Method, Option
             }));
         }
         (Method::Dopri5, _) => integrate::Method::Dopri5,
-        (Method::Rosenbrock, _) => integrate::Method::Rodas3,
+        (Method::Rodas3, _) => integrate::Method::Rodas3,
     };
     let mut options = Options::with_tolerances(spec.rtol, spec.atol);
     options.max_steps = spec.max_steps;
@@ -129,7 +129,7 @@ mod tests {
             (integrate::Method::Dopri5, Some(1e-3), 1e-9, 1e-12)
         );
         assert!(solver_config(&spec(Method::Rk4, None)).is_err());
-        let (m, _) = solver_config(&spec(Method::Rosenbrock, None)).unwrap();
+        let (m, _) = solver_config(&spec(Method::Rodas3, None)).unwrap();
         assert_eq!(m, integrate::Method::Rodas3);
     }
 
