@@ -17,7 +17,8 @@ use crate::graph::{Graph, Id, Node, Sym};
 use crate::model::{FnSpec, Module, Output};
 
 /// True for a snake_case Rust identifier that is not a keyword
-/// ([`super::tokens::KEYWORDS`]: strict and reserved, edition 2024).
+/// (the strict and reserved keywords of edition 2024, one list in the
+/// emitter's token helpers).
 pub fn is_snake_ident(s: &str) -> bool {
     let mut cs = s.chars();
     let first_ok = cs
