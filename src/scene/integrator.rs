@@ -20,8 +20,8 @@ use crate::scene::validate::Checker;
 
 /// Integration method selected by `integrator.method`: the names of
 /// [`crate::integrate::Method`] (`"rk4"`, `"dopri5"`, `"rodas3"`), without
-/// the step size, which the table gives as `h` ([`super::simulate::solver_config`]
-/// builds the engine's method from both).
+/// the step size, which the table gives as `h` (the scene layer builds the
+/// engine's method from both).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Method {

@@ -33,13 +33,13 @@ pub mod fig9;
 pub mod insert_compliant;
 pub mod integrator;
 pub mod jamming;
-pub mod jamming_figure;
+pub(crate) mod jamming_figure;
 pub mod jamming_sweep;
 pub mod pendulum;
-pub mod progress;
-pub mod simulate;
-pub mod summary;
-pub mod validate;
+mod progress;
+pub(crate) mod simulate;
+mod summary;
+pub(crate) mod validate;
 
 use std::fmt;
 use std::path::{Path, PathBuf};
