@@ -1,4 +1,4 @@
-//! Hertz's elliptical contact (paper 001, (9)–(13)) as expression trees.
+//! Hertz's elliptical contact (the compliant-contact paper's (9)–(13)) as expression trees.
 //!
 //! The ellipticity solve is iterative and runs once at scene setup
 //! (`pegdyn::hertz`); these trees take its results — the coefficients

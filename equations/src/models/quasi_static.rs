@@ -1,4 +1,4 @@
-//! The quasi-static contact-force solution of paper 001, Eqs. 51–54, derived
+//! The quasi-static contact-force solution of the compliant planar peg, Eqs. 51–54, derived
 //! here from the contact geometry (not typed in from the printed result).
 //!
 //! Paper frame (Fig. 5): x lateral, y along the hole axis into the hole, θ the

@@ -1,4 +1,4 @@
-//! The generated modules of the rigid peg (seed 000): four variants of one
+//! The generated modules of the rigid three-point peg: four variants of one
 //! derivation ([`super::rigid_peg::derive`]), specialized by substitution
 //! at generation time.
 //!
