@@ -111,7 +111,7 @@ pub fn module(g: &Graph) -> crate::model::Module {
     );
     Module {
         name: "hertz".to_owned(),
-        doc: "Hertz elliptical contact (paper 001, (9)-(13)) from setup-time coefficients \
+        doc: "Hertz elliptical contact (*Dynamic analysis for peg-in-hole assembly with contact deformation*, (9)-(13)) from setup-time coefficients \
               c = (sum of curvatures 1/m, contact modulus Pa, m_a, m_b, delta_star). SI units."
             .to_owned(),
         functions: vec![

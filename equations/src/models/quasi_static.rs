@@ -105,7 +105,7 @@ pub fn module(g: &Graph) -> Module {
     Module {
         name: "quasi_static".to_owned(),
         doc: "Quasi-static contact forces of the planar peg in two-point and one-point contact \
-              (paper 001, Eqs. 51-54), derived from the contact geometry. Inputs: pose = (theta rad, \
+              (*Dynamic analysis for peg-in-hole assembly with contact deformation*, Eqs. 51-54), derived from the contact geometry. Inputs: pose = (theta rad, \
               l m), load = (f1 axial N, f2 radial N), acc = (xdd, ydd m/s^2, thdd rad/s^2), \
               p = (mu, r m, l_c m, m kg, J kg m^2)."
             .to_owned(),
