@@ -261,7 +261,7 @@ pub mod quasi_static {
     }
 }
 
-/// The rigid peg on three points (seed 000): `pegdyn::rigid_peg::kinematics` and
+/// The rigid three-point peg: `pegdyn::rigid_peg::kinematics` and
 /// `dynamics` (hand-derived) from the generated functions' inputs
 /// `x = (γ, ψ, γ̇, ψ̇)`, `p = (D, d, H, m, g, f, γ0)`,
 /// `loads = (M_γ, M_ψ, F_x, F_y, F_z)`, `t` = friction directions at K, B1,

@@ -1,5 +1,5 @@
 //! Per-operation cost on this machine, for the op-count floor of
-//! `docs/BENCHMARKS.md`: each bench applies one operation to every element
+//! `docs/bench-methods.md`: each bench applies one operation to every element
 //! of a seeded 256-element array (independent operations, so this measures
 //! throughput, as straight-line generated code with many independent
 //! subexpressions can reach). Ids `ops/<op>`; ns per operation = time / 256.

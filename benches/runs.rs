@@ -1,6 +1,6 @@
 //! Whole runs: the Fig. 9 table and the rigid forward alignment
-//! (`scenes/align_forward.toml`; seed 000), the compliant insertion scene
-//! (seed 001) and each integrator on a reference problem. Bench ids:
+//! (`scenes/align_forward.toml`; rigid three-point peg), the compliant
+//! insertion scene (compliant planar peg) and each integrator on a reference problem. Bench ids:
 //! `<scene>/<method>/<tolerance or step>`. Each integration prints its
 //! achieved error against a tight reference once, before timing, so that
 //! the time is read next to the accuracy it buys.

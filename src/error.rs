@@ -208,7 +208,7 @@ pub enum RunError {
     /// scene's `check`; reported rather than unwrapped).
     #[error("jamming analysis refused {0}")]
     Jamming(#[from] crate::jamming::ParamError),
-    /// The rigid-peg model (seed 000) has no physical answer at a state.
+    /// The rigid three-point peg model has no physical answer at a state.
     #[error("rigid peg: {0}")]
     Rigid(#[from] crate::rigid_peg::RigidError),
     /// The integrator rejected its input.

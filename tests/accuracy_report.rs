@@ -88,7 +88,7 @@ fn compliant_peg_at_zero_tilt_is_accurate_to_a_few_ulps() {
     }
 }
 
-/// The generated rigid peg (seed 000) near γ0, clearances 50 µm to 1 nm,
+/// The generated rigid three-point peg near γ0, clearances 50 µm to 1 nm,
 /// γ = γ0(1 + ε) down to ε = 1e-12: the geometry (a1, a2, S1, b, …) within
 /// 64 ulps — its forms are the stable products of the model — and every
 /// output normwise within 8 u (single entries that vanish at γ0, such as

@@ -1,4 +1,4 @@
-//! Scene `align_forward` (seed 000 forward dynamics): the shipped scene runs
+//! Scene `align_forward` (rigid three-point peg, forward dynamics): the shipped scene runs
 //! to a contact event and writes the documented CSV columns with finite
 //! values; bad scenes are refused by the CLI naming the field.
 

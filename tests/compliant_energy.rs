@@ -1,4 +1,4 @@
-//! Energy and passivity of the compliant peg-in-hole (paper 001, (55)–(64)):
+//! Energy and passivity of the compliant planar peg ((55)–(64)):
 //! without friction `T + P − W` is constant to the integrator tolerance;
 //! with friction the dissipated energy `S` never decreases and
 //! `T + P − W + S` is constant, also with Hunt–Crossley contact damping.

@@ -1,4 +1,4 @@
-//! Hard cases of the planar compliant peg (paper 001) through the generated
+//! Hard cases of the compliant planar peg through the generated
 //! code, `f64` against double-double (the same generic function at
 //! `pegdyn::scalar::Dd`) and against closed forms: small clearances, Hertz
 //! approaches of steel from 1 pm to 10 µm, zero and tiny velocities, and
@@ -81,7 +81,7 @@ fn penetration_small_clearances_50um_to_1nm() {
 }
 
 /// Hertz contact of steel (E = 210 GPa) on the edge at δ = 1e-12 … 1e-5 m,
-/// 1 nm clearance: the normal force is k δ^{3/2} (paper 001, (13), with
+/// 1 nm clearance: the normal force is k δ^{3/2} ((13), with
 /// k the generated stiffness of the edge contact); the generated `f64`
 /// force is within 4 ulps of k δ^{3/2} computed in double-double from the
 /// exact δ, at every approach.

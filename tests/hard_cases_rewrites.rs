@@ -57,7 +57,7 @@ fn naive_and_stable(
     (ulps(naive, reference), ulps(stable, reference))
 }
 
-/// Planar peg edge contact (paper 001, (14)): the penetration of the side
+/// Compliant planar peg, edge contact ((14)): the penetration of the side
 /// `u = −r` into the filleted edge of a hole of diameter D = 50 mm,
 /// `δ = ρ + r − (D/2 + ρ + x) cos θ`, at θ = 0 and 1e-6 rad for clearances
 /// D − 2r from 50 µm to 1 nm and δ from 1e-12 to 1e-6 m. Naively the terms
@@ -102,7 +102,7 @@ fn edge_penetration_small_clearance_cos_near_equal() {
     );
 }
 
-/// Rigid peg of seed 000: `c = d − D cos γ` at γ = γ0(1 + ε), γ0 =
+/// Rigid three-point peg: `c = d − D cos γ` at γ = γ0(1 + ε), γ0 =
 /// acos(d/D), D = 50 mm, clearances 50 µm and 1 nm, ε = 1e-3 … 1e-12. The
 /// value is ill-conditioned in γ (relative condition ≈ 2/ε), so no `f64`
 /// formula is accurate to an ulp; the attainable bound is the rounding of
@@ -221,7 +221,7 @@ fn atan_of_ratio_degenerate_normal() {
     assert!(naive <= 2.0 && stable <= 1.0, "{naive} {stable}");
 }
 
-/// `1 − cos θ` (the existing `one_minus_cos` row, now switchable) at θ =
+/// `1 − cos θ` (the `one_minus_cos` row, switchable like the others) at θ =
 /// 1e-9 … 1e-3: naive cancels to 0 or a few bits; `2 sin²(θ/2)` within 2 ulps.
 #[test]
 fn one_minus_cos_small_angle() {

@@ -1,4 +1,4 @@
-//! Hard cases of the rigid peg on the hole edge at three points (seed 000,
+//! Hard cases of the rigid peg on the hole edge at three points (the
 //! hand-derived model `pegdyn::rigid_peg`): γ → γ0 = arccos(d/D) for small
 //! clearances, γ up to 1.2 rad, ψ̇ = 0 exactly and 1e-12, and a 10 s
 //! frictionless simulation (energy and contact-constraint drift).

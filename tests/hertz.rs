@@ -1,4 +1,4 @@
-//! Hertz contact (paper 001, (6)–(13)): elliptic integrals, the ellipticity
+//! Hertz contact (the compliant-contact paper's (6)–(13)): elliptic integrals, the ellipticity
 //! solve, the closed-form circular cases, Timoshenko & Goodier's elliptical
 //! table, the inversion `Q(δ(Q)) = Q`, and refusal of bad input.
 

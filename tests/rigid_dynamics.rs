@@ -1,4 +1,4 @@
-//! Seed 000 dynamics (hand-derived forms): the paper's kinetic energy
+//! Rigid three-point peg dynamics (hand-derived forms): the paper's kinetic energy
 //! (22)–(23) is the exact rigid-body energy, the mass matrix and velocity
 //! terms are the Lagrange derivatives of that energy, the forward and the
 //! prescribed-motion systems are inverse to each other, and the reactions

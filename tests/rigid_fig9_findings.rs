@@ -1,4 +1,4 @@
-//! The paper's Fig. 9 claim tested (seed 000): "N_B1 grows sharply near γ0
+//! The rigid-peg paper's Fig. 9 claim tested: "N_B1 grows sharply near γ0
 //! without rotation and rotation (ψ̇ = 10 1/s) lowers it". pegdyn finds a
 //! finite limit without rotation, and with rotation a prescribed
 //! three-point motion that becomes infeasible near γ0 (B1 would have to

@@ -1,4 +1,4 @@
-//! Scene `fig9` (seed 000): validation names the offending field; the run
+//! Scene `fig9` (rigid three-point peg): validation names the offending field; the run
 //! writes the documented CSV columns with N_B1 = N_B2 at ψ̇ = 0.
 
 use pegdyn::scene;

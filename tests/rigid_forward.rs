@@ -1,5 +1,4 @@
-//! Forward dynamics of the rigid peg on three points (seed 000, issue
-//! items 3 and 6): energy conservation without friction, the γ0 and
+//! Forward dynamics of the rigid three-point peg: energy conservation without friction, the γ0 and
 //! lift-off events located on the dense output, and the contact-mode
 //! analysis (a separate 5-coordinate Newton–Euler derivation) agreeing with
 //! the hand-derived forward system.

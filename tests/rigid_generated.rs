@@ -1,4 +1,4 @@
-//! Seed 000, generated model against the hand-derived one: the linear
+//! Rigid three-point peg, generated model against the hand-derived one: the linear
 //! systems, contact velocities and energies that the generator derives
 //! (`pegdyn::generated::rigid_peg*`) equal the hand-derived forms
 //! (`rigid_peg::kinematics`, `rigid_peg::dynamics`) to 1e-12 normwise over a grid of

@@ -1,4 +1,4 @@
-//! Seed 000, the runtime of the generated model (`rigid_peg::generated_model`):
+//! Rigid three-point peg, the runtime of the generated model (`rigid_peg::generated_model`):
 //! the variants agree with each other where they overlap (2-DOF with ψ̇ ≡ 0
 //! = planar; frictionless = full with f = 0), the solutions equal the
 //! hand-derived ones, the symmetric contacts carry equal loads without

@@ -1,4 +1,4 @@
-//! Seed 000 geometry and kinematics, checked from first principles in 3-D:
+//! Rigid three-point peg geometry and kinematics, checked from first principles in 3-D:
 //! the contact points lie on the hole edge and on the peg's surface, an
 //! independent Newton solve of the contact conditions reproduces the closed
 //! forms (1)–(9), the material velocities equal finite-difference

@@ -1,4 +1,4 @@
-//! Contact modes and Painlevé cases of the rigid peg (seed 000): without
+//! Contact modes and Painlevé cases of the rigid three-point peg: without
 //! friction the contact problem is a symmetric positive definite LCP (one
 //! mode); with f = 0.2 a tipping peg (γ̇ > 0) has no consistent mode at all,
 //! the paper's Fig. 9 state without rotation is indeterminate, and a forward

@@ -1,4 +1,4 @@
-//! Stick and slip of the rigid peg (seed 000, issue item 5): every contact
+//! Stick and slip of the rigid three-point peg: every contact
 //! slides unless q̇ = 0; at rest, small loads stick (checked by an
 //! independent static-equilibrium search inside the friction cones), large
 //! loads start a sliding motion in the consistent direction; regularized

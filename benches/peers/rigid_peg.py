@@ -1,4 +1,4 @@
-"""Peer comparison for the rigid peg (seed 000), not run by CI: the forward
+"""Peer comparison for the rigid three-point peg, not run by CI: the forward
 system A u = b of pegdyn's generated `rigid_peg::forward` built in SymPy
 (lambdify; C from sympy's C printer after cse) and CasADi (SX Function; C
 from Function.generate), checked against pegdyn's values, timed, and

@@ -1,4 +1,4 @@
-"""The rigid peg on three points (seed 000) derived from first principles,
+"""The rigid three-point peg derived from first principles,
 once, for two symbolic engines: SymPy and CasADi SX (the same formulas,
 each engine differentiating on its own). Used by benches/peers/rigid_peg.py.
 

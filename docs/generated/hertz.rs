@@ -1,7 +1,7 @@
 // @generated readable copy of `pegdyn::generated::hertz` — do not edit.
 // Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
 
-/// Hertz elliptical contact (paper 001, (9)-(13)) from setup-time coefficients c = (sum of curvatures 1/m, contact modulus Pa, m_a, m_b, delta_star). SI units.
+/// Hertz elliptical contact (*Dynamic analysis for peg-in-hole assembly with contact deformation*, (9)-(13)) from setup-time coefficients c = (sum of curvatures 1/m, contact modulus Pa, m_a, m_b, delta_star). SI units.
 pub mod hertz {
     use nalgebra::SVector;
     use pegdyn::scalar::Real;

@@ -1,7 +1,7 @@
 // @generated readable copy of `pegdyn::generated::rigid_peg_frictionless` — do not edit.
 // Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
 
-/// Rigid peg leaning on the hole edge at K, B1, B2 (seed 000), variant `Frictionless`, derived by the generator (equations/src/models/rigid_peg.rs).
+/// Rigid three-point peg leaning on the hole edge at K, B1, B2 (*Peg-on-hole: fundamental principles of motion of a peg leaning on a horizontal hole edge*), variant `Frictionless`, derived by the generator (equations/src/models/rigid_peg.rs).
 /// State x = (`gamma`, `psi`, `gammadot`, `psidot`); parameters p = (D_hole, d_peg, H, m, g, f, gamma0); loads = (`M_gamma`, `M_psi`, `F_x`, `F_y`, `F_z`).
 /// Vectors in rotating components (e_η, e_n, e_z). SI units.
 pub mod rigid_peg_frictionless {

@@ -1,7 +1,7 @@
 // @generated readable copy of `pegdyn::generated::rigid_peg_planar` — do not edit.
 // Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
 
-/// Rigid peg leaning on the hole edge at K, B1, B2 (seed 000), variant `Planar`, derived by the generator (equations/src/models/rigid_peg.rs).
+/// Rigid three-point peg leaning on the hole edge at K, B1, B2 (*Peg-on-hole: fundamental principles of motion of a peg leaning on a horizontal hole edge*), variant `Planar`, derived by the generator (equations/src/models/rigid_peg.rs).
 /// State x = (`gamma`, `gammadot`); parameters p = (D_hole, d_peg, H, m, g, f, gamma0); loads = (`M_gamma`, `F_x`, `F_z`); friction directions t = (`t_K_eta`, `t_K_z`, `t_B_eta`, `t_B_z`) (unit, force on the peg).
 /// Vectors in rotating components (e_η, e_n, e_z); ψ ≡ 0, so `F_x` is the in-plane horizontal force (along e_η) and N_B = N_B1 = N_B2. SI units.
 pub mod rigid_peg_planar {

@@ -173,7 +173,7 @@ impl<'g> Lagrange<'g> {
     ///   ∂ẋ/∂x = [[0, I], [M⁻¹G]];
     /// - `energy(x, p) -> energy`: T + V.
     ///
-    /// `reference` (e.g. "Goldstein §1.4; seed 000 eq. (3)") and `units` are
+    /// `reference` (e.g. "Goldstein §1.4; rigid-peg paper eq. (3)") and `units` are
     /// prepended to every doc comment.
     pub fn functions(&self, params: &[Expr<'g>], reference: &str) -> Vec<FnSpec> {
         let x = Input::new("x", &self.state());

@@ -1,4 +1,4 @@
-//! The rigid-peg derivation (seed 000) and its variants: the planar
+//! The derivation of the rigid three-point peg and its variants: the planar
 //! specialization makes the ψ Lagrange row and the lateral centre-of-mass
 //! row vanish identically (the planar motion solves the 2-DOF equations);
 //! every variant's residual is linear in its unknowns, so A = ∂R/∂u and

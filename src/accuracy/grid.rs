@@ -213,7 +213,7 @@ fn compliant() -> Vec<Point> {
     out
 }
 
-/// The quasi-static peg of seed 001 near the edges of the jamming
+/// The quasi-static planar peg near the edges of the jamming
 /// parallelogram: small tilts and depths, force ratios from 0 to beyond the
 /// friction cone.
 fn quasi_static() -> Vec<Point> {
@@ -248,7 +248,7 @@ fn quasi_static() -> Vec<Point> {
     out
 }
 
-/// The rigid peg of seed 000 (Fig. 9 dimensions, D = 50 mm) for
+/// The rigid three-point peg (Fig. 9 dimensions, D = 50 mm) for
 /// clearances 50 µm, 1 µm and 1 nm: γ = γ0(1 + ε) for ε = 1e-3, 1e-6,
 /// 1e-9, 1e-12 and γ = 0.3, 1.2 rad; ψ̇ = 0, 1e-12 and 1 rad/s; γ0 given
 /// by [`PegParams::gamma0`], `2 asin(√((D − d)/(2D)))` rounded to `f64`.

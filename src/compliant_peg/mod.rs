@@ -1,4 +1,5 @@
-//! The compliant peg-in-hole model of paper 001 (sections 2–3): contact
+//! The compliant planar peg of "Dynamic analysis for peg-in-hole assembly
+//! with contact deformation" (sections 2–3): contact
 //! geometry and Hertz stiffness ([`geometry`]), checked parameters
 //! ([`params`]), the generated model as an ODE system ([`system`]), initial
 //! states ([`initial`]) and classified insertion runs ([`simulate`]).

@@ -1,4 +1,5 @@
-//! Hertz contact mechanics (paper 001, section 2.3, eqs. (6)–(13)).
+//! Hertz contact mechanics ("Dynamic analysis for peg-in-hole assembly with
+//! contact deformation", section 2.3, eqs. (6)–(13)).
 //!
 //! Given the principal curvatures of two bodies at their point of contact
 //! ([`Curvatures`]) and their materials ([`Material`]), [`HertzContact`]

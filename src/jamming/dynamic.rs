@@ -1,5 +1,5 @@
 //! The jamming diagram checked with dynamics: a sweep of compliant-contact
-//! insertions (`compliant_peg::simulate_insertion`, paper 001 §3) over a grid of
+//! insertions (`compliant_peg::simulate_insertion`, the compliant planar peg) over a grid of
 //! load ratios at fixed depth, classified inserted / jammed / wedged.
 //!
 //! Each run starts at rest in two-point contact (the paper's Fig. 5 lean)

@@ -1,4 +1,4 @@
-//! Forward dynamics of the rigid peg on three points (seed 000): state
+//! Forward dynamics of the rigid three-point peg: state
 //! x = (γ, ψ, γ̇, ψ̇) (rad, rad, 1/s, 1/s), given loads, as an
 //! [`OdeSystem`] for the project's integrators.
 //!

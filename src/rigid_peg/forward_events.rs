@@ -1,4 +1,4 @@
-//! Contact-state events of the forward simulation (issue item 6), as
+//! Contact-state events of the forward simulation, as
 //! integrator [`Event`]s on x = (γ, ψ, γ̇, ψ̇), all terminal:
 //!
 //! - `gamma0`: γ − γ0 falling through 0 (B1 and B2 merge, b → 0);

@@ -1,4 +1,4 @@
-//! The rigid peg (seed 000) through the generated code
+//! The rigid three-point peg through the generated code
 //! (`pegdyn::generated::rigid_peg*`, derived in
 //! `equations/src/models/rigid_peg/`; `docs/rigid-model.md`).
 //!

@@ -1,4 +1,6 @@
-//! Seed 000: a rigid peg leaning on a horizontal hole edge at three points
+//! The rigid three-point peg of "Peg-on-hole: fundamental principles of motion
+//! of a peg leaning on a horizontal hole edge": a rigid peg leaning on a
+//! horizontal hole edge at three points
 //! K, B1, B2, with two degrees of freedom: nutation γ and precession ψ.
 //!
 //! - [`params`]: dimensions, mass, friction and loads;

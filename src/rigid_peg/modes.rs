@@ -1,5 +1,5 @@
 //! Contact modes of the sliding peg: which of K, B1, B2 stay in contact
-//! (the Painlevé check of issue item 5).
+//! (the Painlevé check).
 //!
 //! The three-point model has 2 DOF (γ, ψ; spin locked). With a contact
 //! allowed to separate, the peg has the coordinates p = (r_C, γ, ψ): centre

@@ -1,4 +1,4 @@
-//! Parameters and loads of the rigid peg leaning on the hole edge (seed 000).
+//! Parameters and loads of the rigid three-point peg leaning on the hole edge.
 //!
 //! All quantities in SI units (m, kg, s, N, N·m, rad).
 

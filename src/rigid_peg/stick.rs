@@ -1,4 +1,4 @@
-//! Stick or slip from rest (issue item 5).
+//! Stick or slip from rest.
 //!
 //! Every contact of the three-point peg slides unless q̇ = 0: each contact
 //! Jacobian J_i has full column rank 2 for γ0 < γ < π/2

@@ -1,7 +1,7 @@
 //! The scalar types generated code runs on.
 //!
 //! Every function in [`crate::generated`] is generic over [`Real`]: at `f64`
-//! it compiles to the same code as before (each method is the `std` one,
+//! it compiles to the same code as a non-generic `f64` function (each method is the `std` one,
 //! `#[inline]`), and at [`Dd`] (double-double, about 106 significant bits)
 //! the same straight-line formula is evaluated with a unit roundoff of about
 //! 1e-32, which is the reference `pegdyn accuracy` measures `f64` against.

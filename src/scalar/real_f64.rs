@@ -1,5 +1,5 @@
 //! [`Real`] for `f64`: the `std` functions, so generated code at `f64` is
-//! the code it was before it became generic.
+//! the same code as a function written for `f64` alone.
 
 use super::Real;
 

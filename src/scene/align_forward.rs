@@ -1,5 +1,5 @@
 //! Scene kind `align_forward`: forward dynamics of the rigid peg leaning on
-//! the hole edge at K, B1, B2 (seed 000; `src/rigid_peg/forward.rs`,
+//! the hole edge at K, B1, B2 (`src/rigid_peg/forward.rs`,
 //! `docs/rigid-peg.md`), released at γ(0) with rates γ̇(0), ψ̇(0) under
 //! gravity, constant moments M_γ, M_ψ and an assembly force, until a
 //! contact event (γ0 reached, lift-off, stick, Painlevé) or `t_end`.
@@ -54,7 +54,7 @@ use crate::scene::{
 /// Registry entry.
 pub const KIND: Kind = Kind {
     name: "align_forward",
-    about: "rigid peg on the hole edge (seed 000): forward dynamics until a contact event",
+    about: "rigid three-point peg on the hole edge: forward dynamics until a contact event",
     parse,
 };
 

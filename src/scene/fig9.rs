@@ -1,4 +1,4 @@
-//! Scene kind `fig9`: the paper's (seed 000) Fig. 9 study — reactions of the
+//! Scene kind `fig9`: the Fig. 9 study of the rigid three-point peg — reactions of the
 //! rigid peg leaning on the hole edge at K, B1, B2 under prescribed steady
 //! rates γ̇ and ψ̇ (`src/rigid_peg/prescribed.rs`, `docs/rigid-peg.md`).
 //!
@@ -39,7 +39,7 @@ use crate::scene::{Document, Kind, Metric, RunContext, RunSummary, Scene};
 /// Registry entry.
 pub const KIND: Kind = Kind {
     name: "fig9",
-    about: "rigid peg on the hole edge (seed 000): reactions under prescribed gamma, psi rates (Fig. 9)",
+    about: "rigid three-point peg on the hole edge: reactions under prescribed gamma, psi rates (Fig. 9)",
     parse,
 };
 

@@ -1,5 +1,5 @@
 //! Scene kind `jamming`: the quasi-static jamming diagram and wedging angle
-//! of paper 001 §4 over lists of clearance ratios, friction coefficients and
+//! of the compliant-contact paper's §4 over lists of clearance ratios, friction coefficients and
 //! insertion depths (`src/jamming`, `docs/jamming.md`).
 //!
 //! ```toml

@@ -1,4 +1,4 @@
-//! Seed 000 fixtures shared by the rigid-peg tests: a grid of inclinations
+//! Fixtures shared by the rigid three-point peg tests: a grid of inclinations
 //! and the loads.
 
 use pegdyn::rigid_peg::{Loads, PegParams};

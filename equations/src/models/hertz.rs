@@ -1,4 +1,4 @@
-//! Hertz's elliptical contact (paper 001, (9)–(13)) as expression trees.
+//! Hertz's elliptical contact (the compliant-contact paper's (9)–(13)) as expression trees.
 //!
 //! The ellipticity solve is iterative and runs once at scene setup
 //! (`pegdyn::hertz`); these trees take its results — the coefficients
@@ -111,7 +111,7 @@ pub fn module(g: &Graph) -> crate::model::Module {
     );
     Module {
         name: "hertz".to_owned(),
-        doc: "Hertz elliptical contact (paper 001, (9)-(13)) from setup-time coefficients \
+        doc: "Hertz elliptical contact (*Dynamic analysis for peg-in-hole assembly with contact deformation*, (9)-(13)) from setup-time coefficients \
               c = (sum of curvatures 1/m, contact modulus Pa, m_a, m_b, delta_star). SI units."
             .to_owned(),
         functions: vec![

@@ -1,4 +1,4 @@
-//! The quasi-static contact-force solution of paper 001, Eqs. 51–54, derived
+//! The quasi-static contact-force solution of the compliant planar peg, Eqs. 51–54, derived
 //! here from the contact geometry (not typed in from the printed result).
 //!
 //! Paper frame (Fig. 5): x lateral, y along the hole axis into the hole, θ the
@@ -105,7 +105,7 @@ pub fn module(g: &Graph) -> Module {
     Module {
         name: "quasi_static".to_owned(),
         doc: "Quasi-static contact forces of the planar peg in two-point and one-point contact \
-              (paper 001, Eqs. 51-54), derived from the contact geometry. Inputs: pose = (theta rad, \
+              (*Dynamic analysis for peg-in-hole assembly with contact deformation*, Eqs. 51-54), derived from the contact geometry. Inputs: pose = (theta rad, \
               l m), load = (f1 axial N, f2 radial N), acc = (xdd, ydd m/s^2, thdd rad/s^2), \
               p = (mu, r m, l_c m, m kg, J kg m^2)."
             .to_owned(),

@@ -1,5 +1,5 @@
 //! Scene kind `insert_compliant`: a steel peg pushed into a round hole with
-//! Hertz contacts at filleted edges (paper 001, sections 2–3; see
+//! Hertz contacts at filleted edges (the compliant planar peg, sections 2–3; see
 //! `docs/compliant.md`). Writes the time series (t, x, z, θ, depth, contact
 //! forces, pressures and penetrations, energy terms) as CSV and plots it.
 //!
@@ -53,7 +53,7 @@ use crate::scene::{Document, IntegratorSpec, Kind, RunContext, RunSummary, Scene
 /// Registry entry.
 pub const KIND: Kind = Kind {
     name: "insert_compliant",
-    about: "compliant (Hertz) peg-in-hole insertion, planar, with friction (paper 001)",
+    about: "compliant planar peg: insertion with Hertz contacts and friction",
     parse,
 };
 

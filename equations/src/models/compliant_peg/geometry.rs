@@ -1,4 +1,4 @@
-//! Geometry of the planar compliant peg-in-hole (paper 001, (14)–(30),
+//! Geometry of the compliant planar peg ((14)–(30),
 //! re-derived): penetration and sliding velocity of each of the four
 //! possible contacts as expressions of the peg's coordinates.
 //!

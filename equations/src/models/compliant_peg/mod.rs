@@ -1,4 +1,5 @@
-//! The planar compliant peg-in-hole (paper 001, (31)–(51) and (55)–(64)),
+//! The compliant planar peg of "Dynamic analysis for peg-in-hole assembly
+//! with contact deformation" ((31)–(51) and (55)–(64)),
 //! derived from a potential instead of the paper's constraint Jacobians.
 //!
 //! Coordinates `q = (x, z, θ)` of the peg's centre of mass and tilt (frame in

@@ -97,7 +97,7 @@ fn build_module(g: &Graph, name: &str, contacts: &[Contact]) -> Module {
     Module {
         name: name.to_owned(),
         doc: format!(
-            "Planar compliant peg-in-hole (paper 001, (31)-(51), (55)-(64)) with contacts {}. \
+            "Compliant planar peg (*Dynamic analysis for peg-in-hole assembly with contact deformation*, (31)-(51), (55)-(64)) with contacts {}. \
              Inputs: state y (see STATE) and parameters p (see P_NAMES). SI units.",
             names.join(", ")
         ),

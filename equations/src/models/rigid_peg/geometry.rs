@@ -1,5 +1,5 @@
 //! Geometry of the rigid peg leaning on the hole edge at three points K, B1,
-//! B2 (seed 000, eqs. (1)–(9) and (14)–(17), corrected), as expression trees
+//! B2 (the rigid-peg paper's eqs. (1)–(9) and (14)–(17), corrected), as expression trees
 //! of the nutation angle γ and the parameters.
 //!
 //! Frames (as `src/rigid_peg/kinematics.rs`): fixed O1xyz with the hole-edge circle

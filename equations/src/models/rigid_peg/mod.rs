@@ -1,5 +1,6 @@
-//! Dynamics of the rigid peg leaning on the hole edge at K, B1, B2 (seed 000,
-//! paper eqs. (22)–(31)), derived by the generator from first principles.
+//! Dynamics of the rigid three-point peg leaning on the hole edge at K, B1, B2
+//! ("Peg-on-hole: fundamental principles of motion of a peg leaning on a
+//! horizontal hole edge", eqs. (22)–(31)), derived by the generator from first principles.
 //!
 //! Generalized coordinates q = (γ, ψ): nutation and precession, spin held
 //! fixed; angular velocity ω = ψ̇ e_z − γ̇ e_n. All vectors are in the

@@ -1,4 +1,4 @@
-//! The generated modules of the rigid peg (seed 000): four variants of one
+//! The generated modules of the rigid three-point peg: four variants of one
 //! derivation ([`super::derive`]), specialized by substitution
 //! at generation time.
 //!
@@ -269,7 +269,7 @@ pub fn build(g: &Graph, variant: Variant) -> Module {
     Module {
         name: variant.module_name().to_owned(),
         doc: format!(
-            "Rigid peg leaning on the hole edge at K, B1, B2 (seed 000), variant `{variant:?}`, derived \
+            "Rigid three-point peg leaning on the hole edge at K, B1, B2 (*Peg-on-hole: fundamental principles of motion of a peg leaning on a horizontal hole edge*), variant `{variant:?}`, derived \
              by the generator (equations/src/models/rigid_peg.rs).\n\
              State x = ({}); parameters p = (D_hole, d_peg, H, m, g, f, gamma0); loads = ({}){}.\n\
              Vectors in rotating components (e_η, e_n, e_z){}. SI units.",
