@@ -11,7 +11,7 @@ fn main() {
     let x0 = initial_state();
     // An event when the bob touches the floor (penetration crosses zero).
     let touch = Event::new(move |_t, x| sp::penetration(x, &p));
-    let solver = Solver::new(Method::Rodas3, Options::with_tolerances(1e-8, 1e-11)).with_event(touch);
+    let mut solver = Solver::new(Method::Rodas3, Options::with_tolerances(1e-8, 1e-11)).with_event(touch);
     let sol = match solver.solve(&system, 0.0, x0, 5.0) {
         Ok(sol) => sol,
         Err(e) => {
