@@ -22,7 +22,10 @@ pub fn tokens(l: &Layout) -> TokenStream {
     let np = l.params.len();
     let (nl, npl) = (lit(n), lit(np));
     let mut consts = Vec::new();
-    for (prefix, names, docs) in [("X", &l.state, &l.state_docs), ("P", &l.params, &l.param_docs)] {
+    for (prefix, names, docs) in [
+        ("X", &l.state, &l.state_docs),
+        ("P", &l.params, &l.param_docs),
+    ] {
         for (k, (name, doc)) in names.iter().zip(docs).enumerate() {
             let c = ident(&format!("{prefix}_{}", name.to_uppercase()));
             let d = format!(" Index of `{name}` in `{}`: {doc}.", prefix.to_lowercase());

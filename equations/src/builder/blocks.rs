@@ -6,8 +6,10 @@
 //! use pegdyn_equations::{Graph, blocks};
 //! let g = Graph::new();
 //! let (k, d) = (g.param("k"), g.var("d"));
-//! // Hertz: Q = k max(δ, 0)^{3/2}, and its potential (2/5) k max(δ, 0)^{5/2}.
-//! assert_eq!(blocks::hertz_potential(k, d).diff(d), blocks::hertz_load(k, d));
+//! // Hertz: Q = k max(δ, 0)^{3/2}, and its potential (2/5) k max(δ, 0)^{5/2},
+//! // whose derivative is the load (times the unit step, 1 where max0 > 0).
+//! assert_eq!(blocks::hertz_load(k, d).to_string(), "k*max0(d)^1.5");
+//! assert_eq!(blocks::hertz_potential(k, d).diff(d).to_string(), "k*max0(d)^1.5*step(d)");
 //! ```
 
 use crate::expr::Expr;
@@ -22,7 +24,7 @@ pub use crate::models::hertz::{
 pub use crate::models::planar_peg_geometry::{Contact, ContactKinematics, PegFrame};
 /// Geometry of the rigid three-point peg (peg and hole frames, the three
 /// contact points, vector helpers).
-pub use crate::models::rigid_peg_geometry as rigid_peg_geometry;
+pub use crate::models::rigid_peg_geometry;
 
 /// The unilateral part `max(δ, 0)` of a penetration `δ` (m): zero when the
 /// bodies are apart, `δ` when they overlap.

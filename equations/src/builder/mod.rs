@@ -37,11 +37,11 @@ use std::path::{Path, PathBuf};
 
 pub use model::{Coordinate, Layout, ModelBuilder, Outputs};
 
+use crate::GenError;
 use crate::codegen::{self, Report, write_if_changed};
 use crate::graph::Graph;
 use crate::model::Module;
 use crate::options::Options;
-use crate::GenError;
 
 /// One model to generate: its arena, its module and (for models declared
 /// through [`ModelBuilder`]) the adapter layout.
@@ -149,7 +149,8 @@ impl Generator {
     /// [`GenError`] naming the module, function and symbol of a model that
     /// fails verification.
     pub fn render(&self) -> Result<Rendered, GenError> {
-        let pairs: Vec<(&Graph, &Module)> = self.entries.iter().map(|e| (&e.graph, &e.module)).collect();
+        let pairs: Vec<(&Graph, &Module)> =
+            self.entries.iter().map(|e| (&e.graph, &e.module)).collect();
         let generated = codegen::render(&pairs)?;
         let mut modules = Vec::with_capacity(generated.modules.len());
         let mut source = generated.source.clone();
@@ -165,7 +166,11 @@ impl Generator {
             modules.push(code);
         }
         if !self.options.registry {
-            let names: Vec<&str> = self.entries.iter().map(|e| e.module.name.as_str()).collect();
+            let names: Vec<&str> = self
+                .entries
+                .iter()
+                .map(|e| e.module.name.as_str())
+                .collect();
             source = codegen::header(&names, self.options.stable_rewrites);
             for code in &modules {
                 source.push('\n');
@@ -189,7 +194,12 @@ impl Generator {
     /// # Errors
     /// [`GenError::Model`] when the model or function does not exist or the
     /// inputs do not match it in number or length.
-    pub fn interpret(&self, model: &str, function: &str, inputs: &[&[f64]]) -> Result<Vec<Vec<f64>>, GenError> {
+    pub fn interpret(
+        &self,
+        model: &str,
+        function: &str,
+        inputs: &[&[f64]],
+    ) -> Result<Vec<Vec<f64>>, GenError> {
         let err = |symbol: &str, reason: String| GenError::Model {
             model: model.to_owned(),
             function: function.to_owned(),
@@ -208,11 +218,17 @@ impl Generator {
             .find(|f| f.name == function)
             .ok_or_else(|| err(function, "no such function".to_owned()))?;
         if f.inputs.len() != inputs.len() {
-            return Err(err("inputs", format!("{} inputs given, {} expected", inputs.len(), f.inputs.len())));
+            return Err(err(
+                "inputs",
+                format!("{} inputs given, {} expected", inputs.len(), f.inputs.len()),
+            ));
         }
         for (i, v) in f.inputs.iter().zip(inputs) {
             if i.syms.len() != v.len() {
-                return Err(err(&i.name, format!("{} values given, {} expected", v.len(), i.syms.len())));
+                return Err(err(
+                    &i.name,
+                    format!("{} values given, {} expected", v.len(), i.syms.len()),
+                ));
             }
         }
         Ok(f.interpret(&entry.graph, inputs))

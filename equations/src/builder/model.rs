@@ -2,12 +2,12 @@
 //! dynamics, outputs — and turned into a [`Module`] of functions plus the
 //! layout its ODE adapter needs.
 
+use crate::GenError;
 use crate::diff;
 use crate::expr::Expr;
 use crate::graph::{Graph, Sym};
 use crate::lagrange;
 use crate::model::{FnSpec, Input, Module, Output, sym_of};
-use crate::GenError;
 
 /// One generalized coordinate `q` with its velocity `q̇` (both state
 /// symbols) and acceleration `q̈` (used inside the Jacobian terms only).
@@ -156,7 +156,11 @@ impl<'g> ModelBuilder<'g> {
             return Err(self.error("declaration", name, "not an ASCII identifier"));
         }
         if name == "t" || self.names.iter().any(|n| n == name) {
-            return Err(self.error("declaration", name, "declared twice (or `t`, reserved for time)"));
+            return Err(self.error(
+                "declaration",
+                name,
+                "declared twice (or `t`, reserved for time)",
+            ));
         }
         self.names.push(name.to_owned());
         Ok(())
@@ -258,7 +262,11 @@ impl<'g> ModelBuilder<'g> {
     pub(crate) fn finish(self) -> Result<(Module, Layout), GenError> {
         let g = self.g;
         let Some(dynamics) = self.dynamics.clone() else {
-            return Err(self.error("dynamics", &self.name, "no dynamics: call `lagrange` or `explicit`"));
+            return Err(self.error(
+                "dynamics",
+                &self.name,
+                "no dynamics: call `lagrange` or `explicit`",
+            ));
         };
         let state = self.state_exprs();
         if state.is_empty() {
@@ -289,7 +297,11 @@ impl<'g> ModelBuilder<'g> {
             Dynamics::Lagrange { t, v, forces } => {
                 if !self.states.is_empty() {
                     let name = self.states[0].0.to_string();
-                    return Err(self.error("lagrange", &name, "a `state` in a Lagrangian model (use `coordinate`)"));
+                    return Err(self.error(
+                        "lagrange",
+                        &name,
+                        "a `state` in a Lagrangian model (use `coordinate`)",
+                    ));
                 }
                 let n = self.coords.len();
                 if forces.len() != n {
@@ -299,8 +311,11 @@ impl<'g> ModelBuilder<'g> {
                         format!("{} generalized forces for {n} coordinates", forces.len()),
                     ));
                 }
-                let coords: Vec<lagrange::Coord<'g>> =
-                    self.coords.iter().map(|(c, _)| (c.q, c.v, c.accel)).collect();
+                let coords: Vec<lagrange::Coord<'g>> = self
+                    .coords
+                    .iter()
+                    .map(|(c, _)| (c.q, c.v, c.accel))
+                    .collect();
                 let lag = lagrange::derive(g, &coords, t, v, &forces);
                 let qdd = Input::new("qdd", &lag.accelerations());
                 if o.adapter {
@@ -336,9 +351,12 @@ impl<'g> ModelBuilder<'g> {
                     if let Some(ts) = time_sym {
                         let terms: Vec<Expr<'g>> = (0..n)
                             .map(|i| {
-                                let dm = g.sum(lag.accelerations().iter().zip(&lag.mass[i]).map(|(&a, &m)| {
-                                    g.expr(diff::diff(g, m.id(), ts)) * a
-                                }));
+                                let dm = g.sum(
+                                    lag.accelerations()
+                                        .iter()
+                                        .zip(&lag.mass[i])
+                                        .map(|(&a, &m)| g.expr(diff::diff(g, m.id(), ts)) * a),
+                                );
                                 g.expr(diff::diff(g, lag.forcing[i].id(), ts)) - dm
                             })
                             .collect();
@@ -353,7 +371,9 @@ impl<'g> ModelBuilder<'g> {
                 if o.energy {
                     fns.push(FnSpec::new(
                         "energy",
-                        doc("Total mechanical energy T + V (conserved without generalized forces)."),
+                        doc(
+                            "Total mechanical energy T + V (conserved without generalized forces).",
+                        ),
                         inputs(None),
                         vec![("energy", Output::scalar(lag.energy))],
                     ));
@@ -363,7 +383,11 @@ impl<'g> ModelBuilder<'g> {
             Dynamics::Explicit(rhs) => {
                 if !self.coords.is_empty() {
                     let name = self.coords[0].0.q.to_string();
-                    return Err(self.error("explicit", &name, "a `coordinate` in an explicit model (use `state`)"));
+                    return Err(self.error(
+                        "explicit",
+                        &name,
+                        "a `coordinate` in an explicit model (use `state`)",
+                    ));
                 }
                 if rhs.len() != state.len() {
                     return Err(self.error(
@@ -385,8 +409,10 @@ impl<'g> ModelBuilder<'g> {
                     ));
                 }
                 if o.jacobian {
-                    let rows: Vec<Vec<Expr<'g>>> =
-                        rhs.iter().map(|f| state.iter().map(|&s| f.diff(s)).collect()).collect();
+                    let rows: Vec<Vec<Expr<'g>>> = rhs
+                        .iter()
+                        .map(|f| state.iter().map(|&s| f.diff(s)).collect())
+                        .collect();
                     fns.push(FnSpec::new(
                         "jacobian",
                         doc("Exact Jacobian ∂f/∂x of the right-hand side, entry (i, j) = ∂fᵢ/∂xⱼ."),
@@ -394,8 +420,10 @@ impl<'g> ModelBuilder<'g> {
                         vec![("jacobian", Output::matrix(&rows))],
                     ));
                     if let Some(ts) = time_sym {
-                        let dt: Vec<Expr<'g>> =
-                            rhs.iter().map(|f| g.expr(diff::diff(g, f.id(), ts))).collect();
+                        let dt: Vec<Expr<'g>> = rhs
+                            .iter()
+                            .map(|f| g.expr(diff::diff(g, f.id(), ts)))
+                            .collect();
                         fns.push(FnSpec::new(
                             "rhs_t",
                             doc("Partial time derivative ∂f/∂t of the right-hand side."),
@@ -406,7 +434,11 @@ impl<'g> ModelBuilder<'g> {
                 }
                 if o.energy {
                     let Some(e) = self.energy else {
-                        return Err(self.error("energy", "energy", "energy output chosen but no `energy` expression given"));
+                        return Err(self.error(
+                            "energy",
+                            "energy",
+                            "energy output chosen but no `energy` expression given",
+                        ));
                     };
                     fns.push(FnSpec::new(
                         "energy",
@@ -419,12 +451,22 @@ impl<'g> ModelBuilder<'g> {
             }
         };
         for (name, text, output) in &self.extras {
-            fns.push(FnSpec::new(name, doc(text), inputs(None), vec![(name.as_str(), output.clone())]));
+            fns.push(FnSpec::new(
+                name,
+                doc(text),
+                inputs(None),
+                vec![(name.as_str(), output.clone())],
+            ));
         }
         let state_docs = match dof {
             Some(_) => {
                 let q = self.coords.iter().map(|(_, d)| d.clone());
-                q.chain(self.coords.iter().map(|(c, d)| format!("rate of `{}` ({d})", c.q))).collect()
+                q.chain(
+                    self.coords
+                        .iter()
+                        .map(|(c, d)| format!("rate of `{}` ({d})", c.q)),
+                )
+                .collect()
             }
             None => self.states.iter().map(|(_, d)| d.clone()).collect(),
         };

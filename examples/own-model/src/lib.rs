@@ -21,7 +21,14 @@ use nalgebra::SVector;
 /// functions (`dynamics`, `rhs`, `jacobian_terms`, `energy`, `penetration`,
 /// `floor_load`, `angular_momentum`), its layout constants and `System`;
 /// then `generated::registry` (every function at `f64` and double-double).
-#[allow(clippy::all, clippy::pedantic, unused_parens, unused_variables, non_snake_case, missing_docs)]
+#[allow(
+    clippy::all,
+    clippy::pedantic,
+    unused_parens,
+    unused_variables,
+    non_snake_case,
+    missing_docs
+)]
 pub mod generated {
     include!(concat!(env!("OUT_DIR"), "/own_model.rs"));
 }

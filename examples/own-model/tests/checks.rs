@@ -27,7 +27,12 @@ fn states() -> Vec<SVector<f64, 4>> {
     (0..40)
         .map(|i| {
             let s = f64::from(i);
-            SVector::from([0.05 + 0.03 * s, 0.7 * s, (0.37 * s).sin() * 3.0, (0.11 * s).cos() * 2.0])
+            SVector::from([
+                0.05 + 0.03 * s,
+                0.7 * s,
+                (0.37 * s).sin() * 3.0,
+                (0.11 * s).cos() * 2.0,
+            ])
         })
         .collect()
 }
@@ -40,11 +45,15 @@ fn generated_code_matches_the_interpreter() {
     let mut worst = 0;
     let mut in_contact = 0;
     for x in states() {
-        let rhs = generator.interpret(model::MODEL, "rhs", &[x.as_slice(), p.as_slice()]).unwrap();
+        let rhs = generator
+            .interpret(model::MODEL, "rhs", &[x.as_slice(), p.as_slice()])
+            .unwrap();
         for (a, b) in sp::rhs(&x, &p).iter().zip(&rhs[0]) {
             worst = worst.max(ulps(*a, *b));
         }
-        let e = generator.interpret(model::MODEL, "energy", &[x.as_slice(), p.as_slice()]).unwrap();
+        let e = generator
+            .interpret(model::MODEL, "energy", &[x.as_slice(), p.as_slice()])
+            .unwrap();
         worst = worst.max(ulps(sp::energy(&x, &p), e[0][0]));
         if sp::floor_load(&x, &p) > 0.0 {
             in_contact += 1;
@@ -64,7 +73,10 @@ fn exact_jacobian_matches_finite_differences() {
         let fd = finite_difference_jacobian(|x| system.rhs(0.0, x), &x);
         let scale = exact.abs().max().max(1.0);
         let diff = (exact - fd).abs().max();
-        assert!(diff <= 1e-5 * scale, "x = {x:?}: |J - J_fd| = {diff}, |J| = {scale}");
+        assert!(
+            diff <= 1e-5 * scale,
+            "x = {x:?}: |J - J_fd| = {diff}, |J| = {scale}"
+        );
         // Kinematic rows: d(theta)/dt = theta_dot, d(phi)/dt = phi_dot.
         assert_eq!(exact[(sp::X_THETA, sp::X_THETA_DOT)], 1.0);
         assert_eq!(exact[(sp::X_PHI, sp::X_PHI_DOT)], 1.0);
@@ -78,13 +90,27 @@ fn energy_and_angular_momentum_are_conserved_through_floor_contacts() {
     let x0 = initial_state();
     let (e0, l0) = (sp::energy(&x0, &p), sp::angular_momentum(&x0, &p));
     for (method, rtol, bound) in [(Method::Dopri5, 1e-10, 1e-7), (Method::Rodas3, 1e-9, 1e-5)] {
-        let sol = solve(&system, method, (0.0, x0), 3.0, &Options::with_tolerances(rtol, rtol * 1e-2)).unwrap();
+        let sol = solve(
+            &system,
+            method,
+            (0.0, x0),
+            3.0,
+            &Options::with_tolerances(rtol, rtol * 1e-2),
+        )
+        .unwrap();
         assert!(sol.stop.is_success(), "{method:?}: {:?}", sol.stop);
         let touched = sol.x.iter().filter(|x| sp::floor_load(x, &p) > 0.0).count();
         assert!(touched > 0, "{method:?}: the bob never touched the floor");
-        let max_load = sol.x.iter().map(|x| sp::floor_load(x, &p)).fold(0.0, f64::max);
+        let max_load = sol
+            .x
+            .iter()
+            .map(|x| sp::floor_load(x, &p))
+            .fold(0.0, f64::max);
         // The floor holds the bob up: its load exceeds the weight m g.
-        assert!(max_load > p[sp::P_M] * p[sp::P_G], "{method:?}: peak load {max_load} N");
+        assert!(
+            max_load > p[sp::P_M] * p[sp::P_G],
+            "{method:?}: peak load {max_load} N"
+        );
         for x in &sol.x {
             let de = (sp::energy(x, &p) - e0).abs() / e0.abs();
             let dl = (sp::angular_momentum(x, &p) - l0).abs() / l0.abs();
@@ -107,12 +133,23 @@ fn an_incomplete_model_is_an_error_naming_model_and_symbol() {
         .err()
         .unwrap();
     match &err {
-        GenError::Model { model, function, symbol, .. } => {
-            assert_eq!((model.as_str(), function.as_str(), symbol.as_str()), ("broken", "lagrange", "forces"));
+        GenError::Model {
+            model,
+            function,
+            symbol,
+            ..
+        } => {
+            assert_eq!(
+                (model.as_str(), function.as_str(), symbol.as_str()),
+                ("broken", "lagrange", "forces")
+            );
         }
         other => panic!("unexpected error {other}"),
     }
-    assert_eq!(err.to_string(), "model `broken`, lagrange: `forces`: 1 generalized forces for 2 coordinates");
+    assert_eq!(
+        err.to_string(),
+        "model `broken`, lagrange: `forces`: 1 generalized forces for 2 coordinates"
+    );
 }
 
 #[test]
@@ -146,6 +183,12 @@ fn every_generated_function_is_accurate_against_double_double() {
     for f in &own_model::generated::registry::FUNCTIONS {
         let acc = measure_function(f, &points).unwrap();
         assert_eq!(acc.non_finite, 0, "{}", acc.path);
-        assert!(acc.max_normwise < 1e-13, "{}: normwise error {} at {}", acc.path, acc.max_normwise, acc.worst_at);
+        assert!(
+            acc.max_normwise < 1e-13,
+            "{}: normwise error {} at {}",
+            acc.path,
+            acc.max_normwise,
+            acc.worst_at
+        );
     }
 }
