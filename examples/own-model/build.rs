@@ -20,7 +20,9 @@ fn main() {
         ..Options::from_env()
     };
     let mut generator = Generator::new(options);
-    let written = model::declare(&mut generator).and_then(|()| generator.write(out_dir.as_ref()));
+    let written = model::declare(&mut generator)
+        .and_then(|()| model::declare_forced(&mut generator))
+        .and_then(|()| generator.write(out_dir.as_ref()));
     if let Err(e) = written {
         eprintln!("error: code generation failed: {e}");
         std::process::exit(1);

@@ -21,6 +21,9 @@ use pegdyn_equations::{GenError, Generator, blocks, model::Output};
 /// Name of the generated module.
 pub const MODEL: &str = "spherical_pendulum";
 
+/// Name of the second, explicit and time-dependent model.
+pub const FORCED: &str = "forced_oscillator";
+
 /// Adds the model to `generator`.
 pub fn declare(generator: &mut Generator) -> Result<(), GenError> {
     generator.model(
@@ -49,6 +52,28 @@ pub fn declare(generator: &mut Generator) -> Result<(), GenError> {
                 "Vertical angular momentum L_z = m l² sin²θ φ̇ (kg·m²/s), conserved.",
                 Output::scalar(mass * l.square() * s.square() * phi.v),
             );
+            Ok(())
+        },
+    )?;
+    Ok(())
+}
+
+/// Adds a first-order, explicitly time-dependent model: the undamped
+/// oscillator `ÿ + ω₀² y = a cos(ω t)` as `x = (y, v)`, whose solution from
+/// rest is `y(t) = a (cos ωt − cos ω₀t) / (ω₀² − ω²)` (for `ω ≠ ω₀`).
+pub fn declare_forced(generator: &mut Generator) -> Result<(), GenError> {
+    generator.model(
+        FORCED,
+        "Undamped oscillator driven by a cosine force (per unit mass).",
+        |m| {
+            let y = m.state("y", "displacement, m")?;
+            let v = m.state("v", "velocity, m/s")?;
+            let w0 = m.parameter("omega0", "natural angular frequency, rad/s")?;
+            let a = m.parameter("a", "forcing amplitude per unit mass, m/s²")?;
+            let w = m.parameter("omega", "forcing angular frequency, rad/s")?;
+            let t = m.time();
+            m.explicit(&[v, a * (w * t).cos() - w0.square() * y]);
+            m.energy(0.5 * v.square() + 0.5 * w0.square() * y.square());
             Ok(())
         },
     )?;

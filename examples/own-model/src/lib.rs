@@ -20,7 +20,8 @@ use nalgebra::SVector;
 /// The generated code: `generated::spherical_pendulum` with the model's
 /// functions (`dynamics`, `rhs`, `jacobian_terms`, `energy`, `penetration`,
 /// `floor_load`, `angular_momentum`), its layout constants and `System`;
-/// then `generated::registry` (every function at `f64` and double-double).
+/// `generated::forced_oscillator` (explicit, time-dependent); then
+/// `generated::registry` (every function at `f64` and double-double).
 #[allow(
     clippy::all,
     clippy::pedantic,

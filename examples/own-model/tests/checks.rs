@@ -59,6 +59,24 @@ fn generated_code_matches_the_interpreter() {
             in_contact += 1;
         }
     }
+    // The time-dependent model: inputs (x, p, t).
+    model::declare_forced(&mut generator).unwrap();
+    let pf = [2.0, 0.5, 1.3];
+    for i in 0..20 {
+        let s = f64::from(i);
+        let (x, t) = ([0.3 * s - 2.0, (0.7 * s).sin()], 0.45 * s);
+        let rhs = generator
+            .interpret(model::FORCED, "rhs", &[&x, &pf, &[t]])
+            .unwrap();
+        let generated = own_model::generated::forced_oscillator::rhs(
+            &SVector::from(x),
+            &SVector::from(pf),
+            &SVector::from([t]),
+        );
+        for (a, b) in generated.iter().zip(&rhs[0]) {
+            worst = worst.max(ulps(*a, *b));
+        }
+    }
     // Same expression DAG, same operation order: equal up to a few ulps
     // (the emitter may fuse or reorder a sum).
     assert!(worst <= 4, "worst difference {worst} ulps");
@@ -179,8 +197,11 @@ fn every_generated_function_is_accurate_against_double_double() {
             )
         })
         .collect();
-    assert_eq!(own_model::generated::registry::FUNCTIONS.len(), 7);
-    for f in &own_model::generated::registry::FUNCTIONS {
+    assert_eq!(own_model::generated::registry::FUNCTIONS.len(), 11);
+    for f in own_model::generated::registry::FUNCTIONS
+        .iter()
+        .filter(|f| f.module == model::MODEL)
+    {
         let acc = measure_function(f, &points).unwrap();
         assert_eq!(acc.non_finite, 0, "{}", acc.path);
         assert!(
@@ -190,5 +211,28 @@ fn every_generated_function_is_accurate_against_double_double() {
             acc.max_normwise,
             acc.worst_at
         );
+    }
+}
+
+#[test]
+fn forced_oscillator_follows_its_closed_form_solution() {
+    use own_model::generated::forced_oscillator as fo;
+    let p = SVector::from([2.0, 0.5, 1.3]); // omega0, a, omega
+    assert_eq!(fo::P_NAMES, ["omega0", "a", "omega"]);
+    let (w0, a, w) = (p[fo::P_OMEGA0], p[fo::P_A], p[fo::P_OMEGA]);
+    let exact = |t: f64| a * ((w * t).cos() - (w0 * t).cos()) / (w0 * w0 - w * w);
+    let system = fo::System::new(p);
+    // The exact time derivative: d/dt of the forcing a cos(ωt) is −aω sin(ωt).
+    let x = SVector::from([0.1, 0.2]);
+    let dt = system.time_derivative(0.7, &x);
+    assert_eq!(dt[fo::X_Y], 0.0);
+    assert!((dt[fo::X_V] + a * w * (w * 0.7).sin()).abs() < 1e-15);
+    for method in [Method::Dopri5, Method::Rodas3] {
+        let opts = Options::with_tolerances(1e-10, 1e-12);
+        let sol = solve(&system, method, (0.0, SVector::zeros()), 10.0, &opts).unwrap();
+        for (t, x) in sol.t.iter().zip(&sol.x) {
+            let err = (x[fo::X_Y] - exact(*t)).abs();
+            assert!(err < 2e-6, "{method:?}: |y - exact| = {err} at t = {t}");
+        }
     }
 }
