@@ -39,7 +39,8 @@ pub struct Outputs {
     /// (∂f/∂x) for an explicit one.
     pub jacobian: bool,
     /// `energy(x, p) -> energy`: T + V for a Lagrangian model, the
-    /// expression given to [`ModelBuilder::energy`] otherwise.
+    /// expression given to [`ModelBuilder::energy`] for an explicit one
+    /// (none when it was not given).
     pub energy: bool,
     /// The ODE adapter `System` implementing `pegdyn::system::OdeSystem`
     /// and the layout constants (`X_<NAME>`, `P_<NAME>`, `X_DOCS`, ...).
@@ -432,14 +433,7 @@ impl<'g> ModelBuilder<'g> {
                         ));
                     }
                 }
-                if o.energy {
-                    let Some(e) = self.energy else {
-                        return Err(self.error(
-                            "energy",
-                            "energy",
-                            "energy output chosen but no `energy` expression given",
-                        ));
-                    };
+                if let (true, Some(e)) = (o.energy, self.energy) {
                     fns.push(FnSpec::new(
                         "energy",
                         doc("The model's energy (as given to the builder)."),
