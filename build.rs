@@ -8,8 +8,11 @@
 //!          `tests/generated_vs_interpreter.rs`), each rewritten only when its
 //!          content changes.
 //!
+//! It uses the public builder API (`pegdyn_equations::Generator`), the same
+//! one a downstream crate's build script uses (docs/own-model.md).
+//!
 //! Environment: `PEGDYN_NAIVE_FORMS=1` generates without the stable
-//! numerical rewrites of the simplifier (for `pegdyn accuracy`'s "before"
+//! numerical rewrites of the simplifier (`Options::from_env`) (for `pegdyn accuracy`'s "before"
 //! column only, see docs/ACCURACY.md; the snapshot test then fails).
 //!
 //! Any error (a model that fails verification, an unwritable file) is
@@ -27,11 +30,17 @@ fn main() {
         eprintln!("error: OUT_DIR is not set (build.rs must run under cargo)");
         exit(1);
     };
-    let stable = std::env::var_os("PEGDYN_NAIVE_FORMS").is_none_or(|v| v != "1");
-    let generated = pegdyn_equations::simplify::rules::with_stable_forms(stable, || {
-        pegdyn_equations::generate(&out_dir)
+    // The public generator API, as a downstream build script uses it.
+    let options = pegdyn_equations::Options::from_env();
+    let mut generator = pegdyn_equations::Generator::new(options);
+    generator.builtin_models();
+    let written = generator.render().and_then(|out| {
+        out.write(&out_dir)?;
+        // pegdyn's own test call table (tests/generated_vs_interpreter.rs).
+        let calls = out_dir.join(pegdyn_equations::codegen::harness::CALLS_FILE);
+        pegdyn_equations::codegen::write_if_changed(&calls, out.calls.as_bytes())
     });
-    if let Err(e) = generated {
+    if let Err(e) = written {
         eprintln!("error: code generation failed: {e}");
         exit(1);
     }

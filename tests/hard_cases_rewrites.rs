@@ -1,7 +1,7 @@
 //! Each stable numerical form of the generator (the rows of
 //! `pegdyn_equations::simplify::rules::RULES` with `stable: true`) on the
 //! hard case it exists for: the same expression is built with the stable
-//! forms off (`with_stable_forms(false, ..)`, the naive form) and on, both
+//! forms off (`Graph::with_stable_rewrites(false)`, the naive form) and on, both
 //! are evaluated by the generator's `f64` interpreter, and both are
 //! compared with the double-double evaluation of the stable form from the
 //! same `f64` inputs (checked equal to the naive form's double-double
@@ -12,7 +12,6 @@ mod common;
 
 use common::{eval_dd, eval_f64, ulps};
 use pegdyn::scalar::Dd;
-use pegdyn_equations::simplify::rules::with_stable_forms;
 use pegdyn_equations::{Expr, Graph, Id};
 
 /// Builds `f` in a fresh graph with the stable forms on or off, evaluates
@@ -22,16 +21,14 @@ fn both(
     f: impl for<'g> Fn(&'g Graph) -> Expr<'g>,
     value: &dyn Fn(&str) -> f64,
 ) -> (f64, Dd, String) {
-    with_stable_forms(stable, || {
-        let g = Graph::new();
-        let e = f(&g);
-        let id: Id = e.id();
-        (
-            eval_f64(&g, id, value),
-            eval_dd(&g, id, value),
-            e.to_string(),
-        )
-    })
+    let g = Graph::with_stable_rewrites(stable);
+    let e = f(&g);
+    let id: Id = e.id();
+    (
+        eval_f64(&g, id, value),
+        eval_dd(&g, id, value),
+        e.to_string(),
+    )
 }
 
 /// Errors in ulps of (naive, stable) against the double-double naive value.

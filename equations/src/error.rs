@@ -78,6 +78,16 @@ pub enum GenError {
     #[error("emitted code for module `{module}` does not parse: {message}")]
     Parse { module: String, message: String },
 
+    /// A model given to [`crate::builder`] is incomplete or inconsistent:
+    /// `symbol` names the coordinate, parameter or expression at fault.
+    #[error("model `{model}`, {function}: `{symbol}`: {reason}")]
+    Model {
+        model: String,
+        function: String,
+        symbol: String,
+        reason: String,
+    },
+
     /// Reading or writing an output file failed.
     #[error("cannot write {path}: {source}")]
     Io {

@@ -3,9 +3,12 @@
 //! The build-time half of pegdyn: expression DAGs for the models, symbolic
 //! differentiation, Lagrange derivation, and emission of straight-line Rust.
 //!
-//! Define → verify → emit: models in [`models`] build expressions in a
-//! [`Graph`]; [`codegen`] checks and emits them; `build.rs` of the `pegdyn`
-//! crate writes the result into `OUT_DIR`.
+//! Define → verify → emit: models build expressions in a [`Graph`];
+//! [`codegen`] checks and emits them; a build script writes the result into
+//! `OUT_DIR`. [`Generator`] is the entry point for a build script: pegdyn's
+//! own `build.rs` adds its models ([`models`]) with it, and a downstream
+//! crate declares its own models by name with [`ModelBuilder`] (guide:
+//! `docs/own-model.md` in the pegdyn repository).
 
 pub mod diff;
 pub mod display;
@@ -24,5 +27,10 @@ pub mod lagrange;
 pub mod model;
 pub mod models;
 
+pub mod builder;
+pub mod options;
+
+pub use builder::{Generator, ModelBuilder, Outputs, Rendered, blocks};
 pub use codegen::{Report, generate};
 pub use error::GenError;
+pub use options::Options;

@@ -28,15 +28,45 @@ struct Inner {
 ///
 /// The arena uses interior mutability so that many [`Expr`](crate::Expr)
 /// handles can build new nodes through `&Graph` with ordinary operators.
-#[derive(Default)]
 pub struct Graph {
     inner: RefCell<Inner>,
+    /// Whether the simplifier applies the stable numerical forms (rows of
+    /// `simplify::rules::RULES` with `stable: true`) in this arena.
+    stable_rewrites: bool,
+}
+
+impl Default for Graph {
+    fn default() -> Graph {
+        Graph::with_stable_rewrites(true)
+    }
 }
 
 impl Graph {
-    /// An empty arena.
+    /// An empty arena with the stable numerical rewrites on (the default).
     pub fn new() -> Graph {
         Graph::default()
+    }
+
+    /// An empty arena whose simplifier applies the stable numerical forms
+    /// (`true`, the default) or leaves them out (`false`, the naive forms,
+    /// for measuring what the stable forms buy). The choice belongs to the
+    /// arena, so one graph never mixes both forms.
+    ///
+    /// ```
+    /// use pegdyn_equations::Graph;
+    /// let g = Graph::with_stable_rewrites(false);
+    /// assert_eq!((1.0 - g.var("x").cos()).to_string(), "1 - cos(x)");
+    /// ```
+    pub fn with_stable_rewrites(on: bool) -> Graph {
+        Graph {
+            inner: RefCell::new(Inner::default()),
+            stable_rewrites: on,
+        }
+    }
+
+    /// Whether this arena applies the stable numerical forms.
+    pub fn stable_rewrites(&self) -> bool {
+        self.stable_rewrites
     }
 
     /// Stores `node` (or finds the equal node already stored) without any

@@ -14,7 +14,6 @@
 //! `sum_measure`): that is the measure that proves the sum rules terminate, and `rewrite_sum` refuses
 //! (and in debug builds reports) a rewrite that does not decrease it.
 
-use std::cell::Cell;
 use std::collections::HashMap;
 
 use super::{laws, stable, trig};
@@ -62,7 +61,8 @@ pub struct Rule {
     /// Where it applies.
     pub site: Site,
     /// A stable numerical form (a rewrite for accuracy, not for size):
-    /// switched off by [`with_stable_forms`]`(false, ..)` so that its
+    /// switched off in a graph built by
+    /// [`Graph::with_stable_rewrites`]`(false)` so that its
     /// effect can be measured.
     pub stable: bool,
 }
@@ -330,45 +330,16 @@ pub static RULES: &[Rule] = &[
     // cut (y = ±0, x < 0), where the sign of a computed zero picks ±π.
 ];
 
-thread_local! {
-    static STABLE_FORMS: Cell<bool> = const { Cell::new(true) };
-}
-
-/// Whether the stable numerical forms (rows with `stable: true`) are
-/// applied on this thread (the default).
-pub fn stable_forms() -> bool {
-    STABLE_FORMS.with(Cell::get)
-}
-
-/// Runs `f` with the stable numerical forms switched on or off on this
-/// thread, then restores the previous setting. Build a graph entirely
-/// inside one call: hash-consing does not know the setting, so a graph
-/// built half with and half without them mixes forms.
-///
-/// ```
-/// use pegdyn_equations::{Graph, simplify::rules::with_stable_forms};
-/// let naive = with_stable_forms(false, || {
-///     let g = Graph::new();
-///     (1.0 - g.var("x").cos()).to_string()
-/// });
-/// assert_eq!(naive, "1 - cos(x)");
-/// ```
-pub fn with_stable_forms<R>(on: bool, f: impl FnOnce() -> R) -> R {
-    let before = STABLE_FORMS.with(|c| c.replace(on));
-    let r = f();
-    STABLE_FORMS.with(|c| c.set(before));
-    r
-}
-
-/// The rules applied now: all, or all but the stable forms.
-fn active() -> impl Iterator<Item = &'static Rule> {
-    let stable = stable_forms();
+/// The rules applied in `g`: all, or all but the stable forms
+/// ([`Graph::stable_rewrites`]).
+fn active(g: &Graph) -> impl Iterator<Item = &'static Rule> {
+    let stable = g.stable_rewrites();
     RULES.iter().filter(move |r| stable || !r.stable)
 }
 
 /// Applies the first sum rule that fires and decreases the measure.
 pub(crate) fn rewrite_sum(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
-    for rule in active() {
+    for rule in active(g) {
         let Site::Sum(f) = rule.site else { continue };
         if let Some(next) = f(g, terms) {
             if sum_measure(g, &next) < sum_measure(g, terms) {
@@ -405,7 +376,7 @@ pub(crate) fn sum_measure(g: &Graph, terms: &[Id]) -> u64 {
 
 /// Applies the first product rule that fires.
 pub(crate) fn rewrite_product(g: &Graph, c: f64, factors: &[Id]) -> Option<Id> {
-    active().find_map(|r| match r.site {
+    active(g).find_map(|r| match r.site {
         Site::Product(f) => f(g, c, factors),
         _ => None,
     })
@@ -413,7 +384,7 @@ pub(crate) fn rewrite_product(g: &Graph, c: f64, factors: &[Id]) -> Option<Id> {
 
 /// Applies the first power rule that fires.
 pub(crate) fn rewrite_pow(g: &Graph, base: Id, exponent: Id) -> Option<Id> {
-    active().find_map(|r| match r.site {
+    active(g).find_map(|r| match r.site {
         Site::Pow(f) => f(g, base, exponent),
         _ => None,
     })
@@ -421,7 +392,7 @@ pub(crate) fn rewrite_pow(g: &Graph, base: Id, exponent: Id) -> Option<Id> {
 
 /// Applies the first rule for `op` that fires.
 pub(crate) fn rewrite_unary(g: &Graph, op: Unary, x: Id) -> Option<Id> {
-    active().find_map(|r| match r.site {
+    active(g).find_map(|r| match r.site {
         Site::Unary(o, f) if o == op => f(g, op, x),
         _ => None,
     })
@@ -429,7 +400,7 @@ pub(crate) fn rewrite_unary(g: &Graph, op: Unary, x: Id) -> Option<Id> {
 
 /// Applies the first rule for `op` that fires.
 pub(crate) fn rewrite_binary(g: &Graph, op: Binary, a: Id, b: Id) -> Option<Id> {
-    active().find_map(|r| match r.site {
+    active(g).find_map(|r| match r.site {
         Site::Binary(o, f) if o == op => f(g, op, a, b),
         _ => None,
     })

@@ -1,7 +1,7 @@
 //! Stable numerical forms: rewrites that keep the value and remove a
 //! cancellation, an overflow or a NaN from the *floating-point* evaluation.
 //! Each is a row of [`super::rules::RULES`] with `stable: true` (so that
-//! `with_stable_forms(false, ..)` can switch it off to measure what it
+//! `Graph::with_stable_rewrites(false)` can switch it off to measure what it
 //! buys); each is shown by a hard case in `tests/hard_cases_rewrites.rs`.
 
 use super::laws::{find_pair, find_term, remove, without};

@@ -1,0 +1,266 @@
+//! The generator as a build dependency: declare models by name in a
+//! `build.rs`, write one `@generated` Rust file (and its operation-count
+//! report) into `OUT_DIR`, include it, and integrate the models with
+//! pegdyn's integrators through the generated `System` adapters.
+//!
+//! ```
+//! use pegdyn_equations::{Generator, Options};
+//!
+//! let mut generator = Generator::new(Options::default());
+//! generator.model("oscillator", "Mass on a linear spring.", |m| {
+//!     let x = m.coordinate("x", "displacement, m")?;
+//!     let mass = m.parameter("m", "mass, kg")?;
+//!     let k = m.parameter("k", "spring stiffness, N/m")?;
+//!     let zero = m.g().constant(0.0);
+//!     m.lagrange(0.5 * mass * x.v.square(), 0.5 * k * x.q.square(), &[zero]);
+//!     Ok(())
+//! })?;
+//! let out = generator.render()?;
+//! assert!(out.source.starts_with("// @generated"));
+//! assert!(out.source.contains("pub fn rhs<T: Real>"));
+//! assert!(out.source.contains("impl pegdyn::system::OdeSystem<2> for System"));
+//! assert!(out.source.contains("pub const X_X_DOT: usize = 1;"));
+//! # let dir = std::env::temp_dir().join(format!("pegdyn-builder-doc-{}", std::process::id()));
+//! # std::fs::create_dir_all(&dir).unwrap();
+//! let written = out.write(&dir)?; // generated.rs + codegen_report.txt
+//! assert!(written.source_written);
+//! assert!(!out.write(&dir)?.source_written); // unchanged bytes: not rewritten
+//! # std::fs::remove_dir_all(&dir).unwrap();
+//! # Ok::<(), pegdyn_equations::GenError>(())
+//! ```
+
+mod adapter;
+pub mod blocks;
+mod model;
+
+use std::path::{Path, PathBuf};
+
+pub use model::{Coordinate, Layout, ModelBuilder, Outputs};
+
+use crate::GenError;
+use crate::codegen::{self, Report, write_if_changed};
+use crate::graph::Graph;
+use crate::model::Module;
+use crate::options::Options;
+
+/// One model to generate: its arena, its module and (for models declared
+/// through [`ModelBuilder`]) the adapter layout.
+struct Entry {
+    graph: Graph,
+    module: Module,
+    layout: Option<Layout>,
+}
+
+/// Collects models and generates their code into one file.
+pub struct Generator {
+    options: Options,
+    entries: Vec<Entry>,
+}
+
+/// The result of [`Generator::render`], in memory.
+#[derive(Clone, Debug)]
+pub struct Rendered {
+    /// The whole generated file.
+    pub source: String,
+    /// Operation counts per function.
+    pub report: Report,
+    /// pegdyn's test call table (`generated_calls.rs`, see
+    /// [`crate::codegen::harness`]); only pegdyn's own test suite includes it.
+    pub calls: String,
+    options: Options,
+}
+
+/// What [`Rendered::write`] wrote.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Written {
+    /// Path of the generated source.
+    pub source: PathBuf,
+    /// Path of the report.
+    pub report: PathBuf,
+    /// Whether the source file's bytes changed (and it was rewritten).
+    pub source_written: bool,
+}
+
+impl Generator {
+    /// A generator with no models.
+    pub fn new(options: Options) -> Generator {
+        Generator {
+            options,
+            entries: Vec::new(),
+        }
+    }
+
+    /// The options this generator applies.
+    pub fn options(&self) -> &Options {
+        &self.options
+    }
+
+    /// Declares the model `name` (a snake_case identifier: the generated
+    /// `pub mod name`), documented by `doc`, built by `build` in a fresh
+    /// expression arena.
+    ///
+    /// # Errors
+    /// Whatever `build` returns, or [`GenError::Model`] for an incomplete
+    /// model (no dynamics, a force count that does not match the
+    /// coordinates, a name declared twice).
+    pub fn model<F>(&mut self, name: &str, doc: &str, build: F) -> Result<&mut Generator, GenError>
+    where
+        F: for<'g> FnOnce(&mut ModelBuilder<'g>) -> Result<(), GenError>,
+    {
+        let graph = self.options.graph();
+        let (module, layout) = {
+            let mut b = ModelBuilder::new(&graph, name, doc);
+            build(&mut b)?;
+            b.finish()?
+        };
+        self.entries.push(Entry {
+            graph,
+            module,
+            layout: Some(layout),
+        });
+        Ok(self)
+    }
+
+    /// Adds a module built directly from [`Module`] and [`crate::model::FnSpec`]
+    /// values (full control over every function's inputs and outputs; no
+    /// adapter). pegdyn's own models are added this way.
+    pub fn module(&mut self, build: impl for<'g> FnOnce(&'g Graph) -> Module) -> &mut Generator {
+        let graph = self.options.graph();
+        let module = build(&graph);
+        self.entries.push(Entry {
+            graph,
+            module,
+            layout: None,
+        });
+        self
+    }
+
+    /// Adds every model pegdyn ships ([`crate::models::ALL`]), in order.
+    pub fn builtin_models(&mut self) -> &mut Generator {
+        for build in crate::models::ALL {
+            self.module(build);
+        }
+        self
+    }
+
+    /// Verifies and emits every model.
+    ///
+    /// # Errors
+    /// [`GenError`] naming the module, function and symbol of a model that
+    /// fails verification.
+    pub fn render(&self) -> Result<Rendered, GenError> {
+        let pairs: Vec<(&Graph, &Module)> =
+            self.entries.iter().map(|e| (&e.graph, &e.module)).collect();
+        let generated = codegen::render(&pairs)?;
+        let mut modules = Vec::with_capacity(generated.modules.len());
+        let mut source = generated.source.clone();
+        for (m, e) in generated.modules.iter().zip(&self.entries) {
+            let code = match &e.layout {
+                Some(l) if l.adapter => {
+                    let spliced = adapter::splice(&m.name, &m.code, adapter::tokens(l))?;
+                    source = source.replacen(&m.code, &spliced, 1);
+                    spliced
+                }
+                _ => m.code.clone(),
+            };
+            modules.push(code);
+        }
+        if !self.options.registry {
+            let names: Vec<&str> = self
+                .entries
+                .iter()
+                .map(|e| e.module.name.as_str())
+                .collect();
+            source = codegen::header(&names, self.options.stable_rewrites);
+            for code in &modules {
+                source.push('\n');
+                source.push_str(code);
+            }
+        }
+        Ok(Rendered {
+            source,
+            report: generated.report,
+            calls: generated.calls,
+            options: self.options.clone(),
+        })
+    }
+
+    /// Evaluates `model::function` with the generator's interpreter (the
+    /// oracle the generated code is checked against): `inputs[k]` gives the
+    /// values of the function's `k`-th input (`x`, then `qdd` for
+    /// `jacobian_terms`, `p`, and `t` for a time-dependent model). Returns
+    /// one vector per output, matrices row-major.
+    ///
+    /// # Errors
+    /// [`GenError::Model`] when the model or function does not exist or the
+    /// inputs do not match it in number or length.
+    pub fn interpret(
+        &self,
+        model: &str,
+        function: &str,
+        inputs: &[&[f64]],
+    ) -> Result<Vec<Vec<f64>>, GenError> {
+        let err = |symbol: &str, reason: String| GenError::Model {
+            model: model.to_owned(),
+            function: function.to_owned(),
+            symbol: symbol.to_owned(),
+            reason,
+        };
+        let entry = self
+            .entries
+            .iter()
+            .find(|e| e.module.name == model)
+            .ok_or_else(|| err(model, "no such model".to_owned()))?;
+        let f = entry
+            .module
+            .functions
+            .iter()
+            .find(|f| f.name == function)
+            .ok_or_else(|| err(function, "no such function".to_owned()))?;
+        if f.inputs.len() != inputs.len() {
+            return Err(err(
+                "inputs",
+                format!("{} inputs given, {} expected", inputs.len(), f.inputs.len()),
+            ));
+        }
+        for (i, v) in f.inputs.iter().zip(inputs) {
+            if i.syms.len() != v.len() {
+                return Err(err(
+                    &i.name,
+                    format!("{} values given, {} expected", v.len(), i.syms.len()),
+                ));
+            }
+        }
+        Ok(f.interpret(&entry.graph, inputs))
+    }
+
+    /// [`Generator::render`] then [`Rendered::write`] into `dir`.
+    ///
+    /// # Errors
+    /// As [`Generator::render`], or [`GenError::Io`] for a file that cannot
+    /// be written.
+    pub fn write(&self, dir: &Path) -> Result<Written, GenError> {
+        self.render()?.write(dir)
+    }
+}
+
+impl Rendered {
+    /// Writes the source and the report into `dir` (file names from
+    /// [`Options::source_file`] and [`Options::report_file`]), each only
+    /// when its bytes change, so that an unchanged model does not trigger a
+    /// recompilation of the crate that includes it.
+    ///
+    /// # Errors
+    /// [`GenError::Io`] naming the path that cannot be written.
+    pub fn write(&self, dir: &Path) -> Result<Written, GenError> {
+        let source = dir.join(&self.options.source_file);
+        let report = dir.join(&self.options.report_file);
+        let source_written = write_if_changed(&source, self.source.as_bytes())?;
+        write_if_changed(&report, self.report.to_string().as_bytes())?;
+        Ok(Written {
+            source,
+            report,
+            source_written,
+        })
+    }
+}
