@@ -21,10 +21,10 @@ pub use crate::models::hertz::{
 /// Contact geometry of the compliant planar peg: penetrations (exact signed
 /// circle–line distances) and sliding velocities of the four peg/hole
 /// contacts as expressions of the peg's coordinates `x, z, theta`.
-pub use crate::models::planar_peg_geometry::{Contact, ContactKinematics, PegFrame};
+pub use crate::models::compliant_peg::geometry::{Contact, ContactKinematics, PegFrame};
 /// Geometry of the rigid three-point peg (peg and hole frames, the three
 /// contact points, vector helpers).
-pub use crate::models::rigid_peg_geometry;
+pub use crate::models::rigid_peg::geometry as rigid_peg_geometry;
 
 /// The unilateral part `max(δ, 0)` of a penetration `δ` (m): zero when the
 /// bodies are apart, `δ` when they overlap.
