@@ -17,7 +17,7 @@ use super::forces::{Wrench, to_paper_frame};
 use super::params::PegHole;
 use super::sweep::{self, Grid, RunClass, SweepPoint};
 use crate::compliant::{
-    CompliantParams, CompliantSpec, InsertionOptions, InsertionOutcome, Load, PegState,
+    CompliantParams, CompliantSpec, InsertionOptions, InsertionOutcome, Integrator, Load, PegState,
     simulate_insertion,
 };
 use crate::hertz::HertzError;
@@ -42,6 +42,8 @@ pub struct SweepSpec {
     /// 2 µm in one window counts as stuck. Near the boundary the peg starts
     /// slowly, so too short a window calls slow insertions stuck.
     pub window: f64,
+    /// The integrator of every run.
+    pub integrator: Integrator,
 }
 
 /// A prepared sweep: the compliant model, the start state and the
@@ -111,6 +113,7 @@ impl SweepSetup {
             target_depth: self.start.depth(&self.params) + self.spec.advance,
             t_max: self.spec.t_max,
             window: self.spec.window,
+            integrator: self.spec.integrator,
             ..InsertionOptions::default()
         };
         let run = simulate_insertion(&self.params, &load, &self.start, &opts)?;
