@@ -3,7 +3,7 @@
 //!
 //! ```toml
 //! [integrator]
-//! method = "dopri5"        # "dopri5" | "rk4" | "rosenbrock"
+//! method = "dopri5"        # "auto" (default) | "dopri5" | "rk4" | "rosenbrock" | "rodas4"
 //! rtol = 1e-9              # relative tolerance (adaptive methods)
 //! atol = 1e-12             # absolute tolerance, > 0 (adaptive methods)
 //! h = 1e-3                 # fixed step, s (rk4 only; required there)
@@ -19,9 +19,17 @@ use crate::error::{SceneError, SceneErrors};
 use crate::scene::validate::Checker;
 
 /// Integration method selected by `integrator.method`.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+///
+/// Without `method` (or with `"auto"`) the scene kind chooses: the
+/// compliant-contact scenes RODAS4 (their Hertz contacts and regularized
+/// friction are stiff), every other kind DOPRI5; the run summary names
+/// the method used and why.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Method {
+    /// Chosen by the scene kind (see the type's documentation).
+    #[default]
+    Auto,
     /// Classical fixed-step Runge–Kutta 4.
     Rk4,
     /// Dormand–Prince 5(4), adaptive, with dense output and events.
@@ -30,6 +38,9 @@ pub enum Method {
     /// for stiff problems, adaptive; also accepted as `"rodas3"`.
     #[serde(alias = "rodas3")]
     Rosenbrock,
+    /// Linearly implicit, L-stable Rosenbrock method RODAS4 (order 4(3))
+    /// for stiff problems, adaptive.
+    Rodas4,
 }
 
 impl Method {
@@ -39,6 +50,8 @@ impl Method {
             Method::Rk4 => "rk4",
             Method::Dopri5 => "dopri5",
             Method::Rosenbrock => "rosenbrock",
+            Method::Rodas4 => "rodas4",
+            Method::Auto => "auto",
         }
     }
 
@@ -48,11 +61,34 @@ impl Method {
     }
 }
 
+/// How a scene kind resolves [`Method::Auto`]: the method and why.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct DefaultMethod {
+    /// The method used when the scene names none.
+    pub method: Method,
+    /// Why, for the run summary.
+    pub reason: &'static str,
+}
+
+impl DefaultMethod {
+    /// The default of non-stiff scene kinds.
+    pub const NON_STIFF: DefaultMethod = DefaultMethod {
+        method: Method::Dopri5,
+        reason: "default for non-stiff scenes",
+    };
+    /// The default of compliant-contact scene kinds.
+    pub const STIFF_CONTACT: DefaultMethod = DefaultMethod {
+        method: Method::Rodas4,
+        reason: "default for compliant contact: stiff Hertz contacts and regularized friction",
+    };
+}
+
 /// The `[integrator]` table as written; call [`IntegratorSpec::check`].
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct IntegratorSpec {
-    /// Integration method.
+    /// Integration method ([`Method::Auto`] when not written).
+    #[serde(default)]
     pub method: Method,
     /// Relative tolerance, dimensionless (adaptive methods).
     #[serde(default = "default_rtol")]
@@ -85,6 +121,18 @@ fn default_max_steps() -> usize {
 }
 
 impl IntegratorSpec {
+    /// The spec with [`Method::Auto`] replaced by `default`'s method, and
+    /// why that method runs (named by the scene, or `default`'s reason).
+    pub fn resolved(&self, default: DefaultMethod) -> (IntegratorSpec, &'static str) {
+        let mut spec = self.clone();
+        if spec.method == Method::Auto {
+            spec.method = default.method;
+            (spec, default.reason)
+        } else {
+            (spec, "named by the scene")
+        }
+    }
+
     /// Validates the table; `table` is its dotted name (`"integrator"`).
     pub fn check(&self, table: &str) -> Result<(), SceneErrors> {
         let f = |k: &str| format!("{table}.{k}");
