@@ -22,6 +22,7 @@ fn setup() -> SweepSetup {
         advance: 0.001,
         window: 0.05,
         integrator: Integrator::ImplicitOrder4,
+        early_stop: true,
     })
     .unwrap()
 }

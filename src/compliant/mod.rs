@@ -16,6 +16,6 @@ pub use geometry::{ContactPair, DEFAULT_FILLET, PegHoleGeometry};
 pub use initial::PegState;
 pub use params::{CompliantParams, CompliantSpec, ContactSet, Load};
 pub use simulate::{
-    InsertionOptions, InsertionOutcome, InsertionRun, Integrator, simulate_insertion,
+    InsertionOptions, InsertionOutcome, InsertionRun, Integrator, Settle, simulate_insertion,
 };
 pub use system::{CompliantSystem, Sample};

@@ -17,7 +17,7 @@ use super::forces::{Wrench, to_paper_frame};
 use super::params::PegHole;
 use super::sweep::{self, Grid, RunClass, SweepPoint};
 use crate::compliant::{
-    CompliantParams, CompliantSpec, InsertionOptions, InsertionOutcome, Integrator, Load, PegState,
+    CompliantParams, CompliantSpec, InsertionOptions, InsertionOutcome, Integrator, Load, PegState, Settle,
     simulate_insertion,
 };
 use crate::hertz::HertzError;
@@ -44,6 +44,10 @@ pub struct SweepSpec {
     pub window: f64,
     /// The integrator of every run.
     pub integrator: Integrator,
+    /// Classify a stuck run as soon as it has settled
+    /// ([`crate::compliant::Settle::for_window`]) instead of at the end of
+    /// its window.
+    pub early_stop: bool,
 }
 
 /// A prepared sweep: the compliant model, the start state and the
@@ -114,6 +118,10 @@ impl SweepSetup {
             t_max: self.spec.t_max,
             window: self.spec.window,
             integrator: self.spec.integrator,
+            settle: self
+                .spec
+                .early_stop
+                .then(|| Settle::for_window(self.spec.window)),
             ..InsertionOptions::default()
         };
         let run = simulate_insertion(&self.params, &load, &self.start, &opts)?;

@@ -16,6 +16,8 @@
 //! advance_m = 0.001      # advance of the bottom face that counts as inserted, m
 //! window_s = 0.05        # classification window: < 2 µm advance in it = stuck, s
 //! method = "rodas4"      # optional: "rodas4" (default) | "rodas3" | "dopri5"
+//! early_stop = true      # optional (default true): classify a stuck run once
+//!                        # it has settled (compliant::Settle), not at its window's end
 //! ```
 //!
 //! Without `method` every run uses RODAS4 with the generated exact
@@ -77,6 +79,13 @@ pub struct SweepParams {
     /// Integrator of the runs (default RODAS4).
     #[serde(default)]
     pub method: Option<SweepMethod>,
+    /// Early stop of settled runs (default true).
+    #[serde(default = "yes")]
+    pub early_stop: bool,
+}
+
+fn yes() -> bool {
+    true
 }
 
 /// `sweep.method`: the integrator of every run.
@@ -164,6 +173,7 @@ impl SweepParams {
             advance: self.advance_m,
             window: self.window_s,
             integrator: self.method().integrator(),
+            early_stop: self.early_stop,
         };
         SweepSetup::new(spec).map_err(|e| {
             SceneErrors::from(SceneError::invalid(
