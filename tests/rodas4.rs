@@ -60,7 +60,10 @@ fn rodas4_tableau_is_fourth_order_with_third_order_embedding() {
     assert!(r.iter().all(|&x| x < 1e-12), "b residuals {r:?}");
     let r_hat = residuals(&t, &t.b_embedded);
     assert!(r_hat[..3].iter().all(|&x| x < 1e-12), "{r_hat:?}");
-    assert!(r_hat[3] > 1e-4, "embedded must not be fourth order: {r_hat:?}");
+    assert!(
+        r_hat[3] > 1e-4,
+        "embedded must not be fourth order: {r_hat:?}"
+    );
 }
 
 #[test]
@@ -97,9 +100,8 @@ fn rodas4_is_stiffly_accurate_and_l_stable_on_the_negative_real_axis() {
     let t = RosenbrockTableau::rodas4();
     // Stiffly accurate: b is the last row of B = α + Γ, hence R(∞) = 0.
     for j in 0..S {
-        let last = t.alpha[S - 1][j]
-            + t.gamma_lower[S - 1][j]
-            + if j == S - 1 { t.gamma } else { 0.0 };
+        let last =
+            t.alpha[S - 1][j] + t.gamma_lower[S - 1][j] + if j == S - 1 { t.gamma } else { 0.0 };
         assert!((t.b[j] - last).abs() < 1e-12, "b[{j}] = {}", t.b[j]);
     }
     assert!(stability(&t, -1e8).abs() < 1e-6);
@@ -207,7 +209,12 @@ fn rodas4_needs_fewer_steps_than_rodas3_on_stiff_van_der_pol_at_tight_tolerance(
     assert_eq!(r3.stop, StopReason::ReachedEnd);
     // Same answer (both within their tolerance of each other) ...
     let d = (r4.x_final - r3.x_final).norm() / r3.x_final.norm();
-    assert!(d < 1e-4, "rodas4 {:?} vs rodas3 {:?}", r4.x_final, r3.x_final);
+    assert!(
+        d < 1e-4,
+        "rodas4 {:?} vs rodas3 {:?}",
+        r4.x_final,
+        r3.x_final
+    );
     // ... in fewer steps.
     assert!(
         2 * r4.stats.steps < r3.stats.steps,

@@ -43,9 +43,9 @@ use super::{
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::hertz::{HertzError, Material};
 use crate::integrate::{Direction, Event};
+use crate::scene::integrator::DefaultMethod;
 use crate::scene::simulate::{integrate, integration_summary};
 use crate::scene::validate::Checker;
-use crate::scene::integrator::DefaultMethod;
 use crate::scene::{Document, IntegratorSpec, Kind, RunContext, RunSummary, Scene};
 
 /// Registry entry.
@@ -316,11 +316,7 @@ impl Scene for Ready {
             &mut ctx.progress,
         )?;
         let mut out = RunSummary {
-            integration: Some(integration_summary(
-                &self.integrator,
-                &sol,
-                &["inserted"],
-            )),
+            integration: Some(integration_summary(&self.integrator, &sol, &["inserted"])),
             ..RunSummary::default()
         };
         write_outputs(ctx, &sys, &sol, &mut out)?;

@@ -241,6 +241,7 @@ impl<const S: usize> RosenbrockTableau<S> {
     /// The tableau of eq. (7.4) equivalent to transformed coefficients:
     /// `Γ = (diag(1/γ) − C)⁻¹` (lower triangular, by forward substitution),
     /// `α = AΓ`, `b = MΓ`, `b̂ = (M − E)Γ`, `γᵢⱼ = Γᵢⱼ` below the diagonal.
+    #[allow(clippy::needless_range_loop)] // triangular index ranges
     pub fn from_transformed(
         name: &'static str,
         t: &TransformedCoefficients<S>,
@@ -303,7 +304,7 @@ pub const RODAS4_TRANSFORMED: TransformedCoefficients<6> = {
     const A51: f64 = 1.221224509226641;
     const A52: f64 = 6.019134481288629;
     const A53: f64 = 12.53708332932087;
-    const A54: f64 = -0.6878860361058950;
+    const A54: f64 = -0.687886036105895;
     TransformedCoefficients {
         gamma: 0.25,
         a: [
@@ -337,7 +338,7 @@ pub const RODAS4_TRANSFORMED: TransformedCoefficients<6> = {
                 7.496443313967647,
                 -10.24680431464352,
                 -33.99990352819905,
-                11.70890893206160,
+                11.7089089320616,
                 0.0,
                 0.0,
             ],

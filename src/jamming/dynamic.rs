@@ -17,8 +17,8 @@ use super::forces::{Wrench, to_paper_frame};
 use super::params::PegHole;
 use super::sweep::{self, Grid, RunClass, SweepPoint};
 use crate::compliant::{
-    CompliantParams, CompliantSpec, InsertionOptions, InsertionOutcome, Integrator, Load, PegState, Settle,
-    simulate_insertion,
+    CompliantParams, CompliantSpec, InsertionOptions, InsertionOutcome, Integrator, Load, PegState,
+    Settle, simulate_insertion,
 };
 use crate::hertz::HertzError;
 use crate::integrate::IntegrateError;
