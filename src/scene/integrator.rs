@@ -223,6 +223,20 @@ mod tests {
     }
 
     #[test]
+    fn auto_takes_the_scene_kind_default_and_a_named_method_stays() {
+        let (r, why) = spec(Method::Auto).resolved(DefaultMethod::STIFF_CONTACT);
+        assert_eq!(r.method, Method::Rodas4);
+        assert!(why.contains("compliant contact"), "{why}");
+        let (r, _) = spec(Method::Auto).resolved(DefaultMethod::NON_STIFF);
+        assert_eq!(r.method, Method::Dopri5);
+        let (r, why) = spec(Method::Dopri5).resolved(DefaultMethod::STIFF_CONTACT);
+        assert_eq!(r.method, Method::Dopri5);
+        assert_eq!(why, "named by the scene");
+        let toml_spec: IntegratorSpec = toml::from_str("t_end = 1.0").unwrap();
+        assert_eq!(toml_spec.method, Method::Auto);
+    }
+
+    #[test]
     fn rk4_needs_h_and_bad_tolerances_are_named() {
         let e = spec(Method::Rk4).check("integrator").unwrap_err();
         assert!(e.to_string().contains("integrator.h"), "{e}");
