@@ -6,6 +6,7 @@
 
 use std::path::PathBuf;
 
+use pegdyn::integrate::Method;
 use pegdyn::jamming::PegHole;
 use pegdyn::jamming::dynamic::{SweepSetup, SweepSpec};
 use pegdyn::jamming::sweep::RunClass;
@@ -20,6 +21,8 @@ fn setup() -> SweepSetup {
         t_max: 0.2,
         advance: 0.001,
         window: 0.05,
+        integrator: Method::Rodas4,
+        early_stop: true,
     })
     .unwrap()
 }

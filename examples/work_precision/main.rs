@@ -86,7 +86,8 @@ fn study<const N: usize, S: OdeSystem<N>>(pb: &Problem<N, S>, repeats: usize) ->
         .iter()
         .map(|&h| (Method::Rk4 { h }, h))
         .chain(pb.dopri5_rtols.iter().map(|&r| (Method::Dopri5, r)))
-        .chain(pb.rodas3_rtols.iter().map(|&r| (Method::Rodas3, r)));
+        .chain(pb.rodas3_rtols.iter().map(|&r| (Method::Rodas3, r)))
+        .chain(pb.rodas3_rtols.iter().map(|&r| (Method::Rodas4, r)));
     let mut points = Vec::new();
     for (method, setting) in settings {
         let p = point(

@@ -17,7 +17,7 @@ pub type Trajectory<const N: usize> = Vec<Option<SVector<f64, N>>>;
 /// The measured point.
 #[derive(Clone, Debug)]
 pub struct Point {
-    /// `rk4`, `dopri5` or `rodas3`.
+    /// `rk4`, `dopri5`, `rodas3` or `rodas4`.
     pub method: &'static str,
     /// `h` for RK4, `rtol` otherwise.
     pub setting: f64,

@@ -6,7 +6,7 @@ use pegdyn::output::plot::{Figure, Panel, Scale, Series, Style};
 
 use crate::measure::Point;
 
-const METHODS: [&str; 3] = ["rk4", "dopri5", "rodas3"];
+const METHODS: [&str; 4] = ["rk4", "dopri5", "rodas3", "rodas4"];
 
 fn panel(title: &str, unit: &str, points: &[Point], err: fn(&Point) -> f64, ref_err: f64) -> Panel {
     let mut panel = Panel::new(title, "wall time per run [s]", &format!("error [{unit}]"))

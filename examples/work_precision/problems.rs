@@ -32,7 +32,7 @@ pub struct Problem<const N: usize, S> {
     pub rk4_steps: &'static [f64],
     /// DOPRI5 relative tolerances.
     pub dopri5_rtols: &'static [f64],
-    /// RODAS3 relative tolerances.
+    /// Tolerances of the RODAS3 and RODAS4 runs.
     pub rodas3_rtols: &'static [f64],
     /// Reference: DOPRI5 at this rtol; its error is estimated against a run
     /// at 10× this rtol.

@@ -83,6 +83,11 @@ pub fn study(out: &Path, repeats: usize) -> Result<(), Box<dyn std::error::Error
             [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8]
                 .iter()
                 .map(|&r| (Method::Rodas3, r)),
+        )
+        .chain(
+            [1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8]
+                .iter()
+                .map(|&r| (Method::Rodas4, r)),
         );
     let mut points = Vec::new();
     for (method, setting) in settings {

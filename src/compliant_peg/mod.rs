@@ -14,5 +14,5 @@ pub mod system;
 pub use geometry::{ContactPair, DEFAULT_FILLET, PegHoleGeometry};
 pub use initial::PegState;
 pub use params::{CompliantParams, CompliantSpec, ContactSet, Load};
-pub use simulate::{InsertionOptions, InsertionOutcome, InsertionRun, simulate_insertion};
+pub use simulate::{InsertionOptions, InsertionOutcome, InsertionRun, Settle, simulate_insertion};
 pub use system::{CompliantSystem, Sample};

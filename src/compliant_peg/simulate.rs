@@ -25,6 +25,9 @@
 //!     push the peg in, e.g. zero axial force).
 //! - **Unfinished** — `opts.t_max` reached while the peg still moves.
 //!
+//! With `opts.settle` a stuck run is classified before its window ends,
+//! once it has settled (see [`Settle`]).
+//!
 //! With the regularized friction law a stuck peg creeps at a speed of the
 //! order of `v_s`; `stall_distance` must exceed `v_s · window` times the
 //! friction utilisation to see the stall (defaults: `v_s = 1e-5 m/s` in
@@ -58,6 +61,39 @@ pub struct InsertionOptions {
     /// `Rodas3` (linearly implicit with the generated exact Jacobian: steps
     /// far longer than the contact period where the motion is smooth).
     pub integrator: Method,
+    /// Early stop of a stuck run before its window ends (`None`: only
+    /// the window rule).
+    pub settle: Option<Settle>,
+}
+
+/// The early-stop rule: a stuck run is classified as soon as it has
+/// settled, not only at the end of its classification window.
+///
+/// Every `interval` seconds the run counts as *settled* when, over that
+/// interval, (a) the depth advanced less than `stall_distance · interval /
+/// window` (the window rule's mean speed), (b) at its end every speed
+/// `|ẋ|`, `|ż|`, `r|θ̇|` is below `stall_distance / window`, and (c) the
+/// edge and wall normal forces each changed by less than `force_rtol`
+/// times the larger of their two values (forces below `1e-9 · |f₁|`
+/// count as zero). A settled run is classified like a stall at the end
+/// of a window (wedged / jammed / stalled). Inserted and exited runs end
+/// at their events as before.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settle {
+    /// Time between checks (s), shorter than the window.
+    pub interval: f64,
+    /// Relative change of the contact forces over one interval.
+    pub force_rtol: f64,
+}
+
+impl Settle {
+    /// Checks every tenth of `window`, forces steady to 1e-2.
+    pub fn for_window(window: f64) -> Settle {
+        Settle {
+            interval: 0.1 * window,
+            force_rtol: 1e-2,
+        }
+    }
 }
 
 impl Default for InsertionOptions {
@@ -70,6 +106,7 @@ impl Default for InsertionOptions {
             rtol: 1e-6,
             atol: 1e-10,
             integrator: Method::Dopri5,
+            settle: None,
         }
     }
 }
@@ -209,8 +246,18 @@ pub fn simulate_insertion(
         stats,
     };
     let method = opts.integrator;
+    let chunk = opts
+        .settle
+        .map_or(opts.window, |s| s.interval.min(opts.window));
+    let r = params.spec.geometry.peg_radius;
+    let force_floor = 1e-9 * load.axial.abs();
+    let v_max = opts.stall_distance / opts.window;
+    // Start of the current classification window: time and depth.
+    let (mut t_w, mut d_w) = (t, depth(&y));
+    let mut last = sys.sample(&y);
     while t < opts.t_max {
-        let t_end = (t + opts.window).min(opts.t_max);
+        let window_end = (t_w + opts.window).min(opts.t_max);
+        let t_end = (t + chunk).min(window_end);
         let mut options = Options::with_tolerances(opts.rtol, opts.atol);
         options.store = false;
         let mut solver = Solver::new(method, options)
@@ -239,8 +286,27 @@ pub fn simulate_insertion(
             reason => return Ok(finish(InsertionOutcome::Failed { reason }, t, y, stats)),
         }
         let d1 = depth(&y);
-        if d1 - d0 < opts.stall_distance {
-            let s = sys.sample(&y);
+        let now = sys.sample(&y);
+        let window_done = t >= window_end;
+        let stuck = if window_done {
+            d1 - d_w < opts.stall_distance
+        } else {
+            let steady = |a: f64, b: f64, rtol: f64| {
+                let (a, b) = (a.max(force_floor), b.max(force_floor));
+                (a - b).abs() <= rtol * a.max(b)
+            };
+            opts.settle.is_some_and(|st| {
+                d1 - d0 < opts.stall_distance * (chunk / opts.window)
+                    && y[3].abs() < v_max
+                    && y[4].abs() < v_max
+                    && (r * y[5]).abs() < v_max
+                    && steady(now.f_edge, last.f_edge, st.force_rtol)
+                    && steady(now.f_wall, last.f_wall, st.force_rtol)
+            })
+        };
+        last = now;
+        if stuck {
+            let s = now;
             let (f_edge, f_wall, theta) = (s.f_edge, s.f_wall, y[2]);
             let outcome = if f_edge > 0.0 && f_wall > 0.0 && contact_line_in_cones(params, &y) {
                 InsertionOutcome::Wedged {
@@ -262,6 +328,9 @@ pub fn simulate_insertion(
                 InsertionOutcome::Stalled { t, depth: d1 }
             };
             return Ok(finish(outcome, t, y, stats));
+        }
+        if window_done {
+            (t_w, d_w) = (t, d1);
         }
     }
     let d = depth(&y);

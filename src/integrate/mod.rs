@@ -1,6 +1,6 @@
 //! Integrators for [`OdeSystem`]s: fixed-step RK4, adaptive Dormand–Prince
-//! 5(4) with dense output, the L-stable Rosenbrock method RODAS3 for stiff
-//! systems, and event location for all of them.
+//! 5(4) with dense output, the L-stable Rosenbrock methods RODAS3 and
+//! RODAS4 for stiff systems, and event location for all of them.
 //!
 //! Methods are data ([`tableau`]) run by one engine; one driver loop does
 //! step control, event location and output for all of them. Expected ends
@@ -64,6 +64,11 @@ pub enum Method {
     /// Jacobian and one LU factorization per step, cubic Hermite dense
     /// output. For stiff problems (stiff contacts, large damping).
     Rodas3,
+    /// Adaptive L-stable Rosenbrock method RODAS4 (Hairer & Wanner),
+    /// order 4(3), six stages, one Jacobian and one LU factorization per
+    /// step, cubic Hermite dense output. For stiff problems at tighter
+    /// tolerances than RODAS3 pays for.
+    Rodas4,
 }
 
 impl Method {
@@ -73,6 +78,7 @@ impl Method {
             Method::Rk4 { .. } => "rk4",
             Method::Dopri5 => "dopri5",
             Method::Rodas3 => "rodas3",
+            Method::Rodas4 => "rodas4",
         }
     }
 }
@@ -192,6 +198,19 @@ impl<'a, const N: usize> Solver<'a, N> {
             }
             Method::Rodas3 => {
                 let mut stepper = Rosenbrock::<N, 4>::new(&RosenbrockTableau::rodas3());
+                driver::run(
+                    &mut stepper,
+                    system,
+                    start,
+                    t_end,
+                    options,
+                    None,
+                    events,
+                    &mut hooks,
+                )
+            }
+            Method::Rodas4 => {
+                let mut stepper = Rosenbrock::<N, 6>::new(&RosenbrockTableau::rodas4());
                 driver::run(
                     &mut stepper,
                     system,

@@ -218,3 +218,147 @@ impl RosenbrockTableau<4> {
         }
     }
 }
+
+/// Coefficients of a Rosenbrock method in the transformed form of Hairer &
+/// Wanner II, §IV.7, eq. (7.25) (the form in which RODAS-type codes print
+/// them): strictly lower-triangular `A = (aᵢⱼ)`, `C = (cᵢⱼ)`, solution weights
+/// `M` and error weights `E` (`x₁ − x̂₁ = Σ Eᵢuᵢ`).
+#[derive(Debug, Clone, PartialEq)]
+pub struct TransformedCoefficients<const S: usize> {
+    /// Diagonal coefficient γ.
+    pub gamma: f64,
+    /// Stage matrix `A` (strictly lower triangular).
+    pub a: [[f64; S]; S],
+    /// Coupling matrix `C` (strictly lower triangular).
+    pub c: [[f64; S]; S],
+    /// Solution weights `M`.
+    pub m: [f64; S],
+    /// Error weights `E`.
+    pub e: [f64; S],
+}
+
+impl<const S: usize> RosenbrockTableau<S> {
+    /// The tableau of eq. (7.4) equivalent to transformed coefficients:
+    /// `Γ = (diag(1/γ) − C)⁻¹` (lower triangular, by forward substitution),
+    /// `α = AΓ`, `b = MΓ`, `b̂ = (M − E)Γ`, `γᵢⱼ = Γᵢⱼ` below the diagonal.
+    #[allow(clippy::needless_range_loop)] // triangular index ranges
+    pub fn from_transformed(
+        name: &'static str,
+        t: &TransformedCoefficients<S>,
+        order: u32,
+        embedded_order: u32,
+    ) -> Self {
+        // L = diag(1/γ) − C; solve L Γ = I column by column.
+        let mut big_gamma = [[0.0; S]; S];
+        for col in 0..S {
+            for i in col..S {
+                let rhs = if i == col { 1.0 } else { 0.0 };
+                let s: f64 = (col..i).map(|k| t.c[i][k] * big_gamma[k][col]).sum();
+                big_gamma[i][col] = (rhs + s) * t.gamma;
+            }
+        }
+        let times_gamma = |v: &[f64; S]| {
+            let mut out = [0.0; S];
+            for (j, o) in out.iter_mut().enumerate() {
+                *o = (0..S).map(|k| v[k] * big_gamma[k][j]).sum();
+            }
+            out
+        };
+        let mut alpha = [[0.0; S]; S];
+        let mut gamma_lower = [[0.0; S]; S];
+        for i in 0..S {
+            alpha[i] = times_gamma(&t.a[i]);
+            for j in 0..i {
+                gamma_lower[i][j] = big_gamma[i][j];
+            }
+            // A is strictly lower triangular, so α is too (rounding aside).
+            for a in alpha[i].iter_mut().skip(i) {
+                *a = 0.0;
+            }
+        }
+        let mut m_hat = t.m;
+        for (mh, e) in m_hat.iter_mut().zip(t.e) {
+            *mh -= e;
+        }
+        RosenbrockTableau {
+            name,
+            gamma: t.gamma,
+            alpha,
+            gamma_lower,
+            b: times_gamma(&t.m),
+            b_embedded: times_gamma(&m_hat),
+            order,
+            embedded_order,
+        }
+    }
+}
+
+/// RODAS4 in the transformed form of Hairer & Wanner II, §IV.7 (their code
+/// `RODAS`, method 1; Table 7.2 family): six stages, γ = 1/4, stiffly
+/// accurate (the last two stages evaluate at `α = 1`, `x₁` is the sixth
+/// stage point plus `u₆`, the embedded solution the fifth), order 4 with an
+/// embedded order-3 solution, L-stable. Stage nodes `αᵢ = (0, 0.386, 0.21,
+/// 0.63, 1, 1)` and `γᵢ = (1/4, −0.1043, 0.1035, −0.0362, 0, 0)` follow from
+/// these; `tests/stiff.rs` checks them and the order conditions.
+pub const RODAS4_TRANSFORMED: TransformedCoefficients<6> = {
+    const A51: f64 = 1.221224509226641;
+    const A52: f64 = 6.019134481288629;
+    const A53: f64 = 12.53708332932087;
+    const A54: f64 = -0.687886036105895;
+    TransformedCoefficients {
+        gamma: 0.25,
+        a: [
+            [0.0; 6],
+            [1.544, 0.0, 0.0, 0.0, 0.0, 0.0],
+            [0.9466785280815826, 0.2557011698983284, 0.0, 0.0, 0.0, 0.0],
+            [
+                3.314825187068521,
+                2.896124015972201,
+                0.9986419139977817,
+                0.0,
+                0.0,
+                0.0,
+            ],
+            [A51, A52, A53, A54, 0.0, 0.0],
+            [A51, A52, A53, A54, 1.0, 0.0],
+        ],
+        c: [
+            [0.0; 6],
+            [-5.6688, 0.0, 0.0, 0.0, 0.0, 0.0],
+            [-2.430093356833875, -0.2063599157091915, 0.0, 0.0, 0.0, 0.0],
+            [
+                -0.1073529058151375,
+                -9.594562251023355,
+                -20.47028614809616,
+                0.0,
+                0.0,
+                0.0,
+            ],
+            [
+                7.496443313967647,
+                -10.24680431464352,
+                -33.99990352819905,
+                11.7089089320616,
+                0.0,
+                0.0,
+            ],
+            [
+                8.083246795921522,
+                -7.981132988064893,
+                -31.52159432874371,
+                16.31930543123136,
+                -6.058818238834054,
+                0.0,
+            ],
+        ],
+        m: [A51, A52, A53, A54, 1.0, 1.0],
+        e: [0.0, 0.0, 0.0, 0.0, 0.0, 1.0],
+    }
+};
+
+impl RosenbrockTableau<6> {
+    /// RODAS4 ([`RODAS4_TRANSFORMED`]) in the form of eq. (7.4).
+    pub fn rodas4() -> Self {
+        RosenbrockTableau::from_transformed("rodas4", &RODAS4_TRANSFORMED, 4, 3)
+    }
+}

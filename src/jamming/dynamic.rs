@@ -17,11 +17,11 @@ use super::forces::{Wrench, to_paper_frame};
 use super::params::PegHole;
 use super::sweep::{self, Grid, RunClass, SweepPoint};
 use crate::compliant_peg::{
-    CompliantParams, CompliantSpec, InsertionOptions, InsertionOutcome, Load, PegState,
+    CompliantParams, CompliantSpec, InsertionOptions, InsertionOutcome, Load, PegState, Settle,
     simulate_insertion,
 };
 use crate::hertz::HertzError;
-use crate::integrate::IntegrateError;
+use crate::integrate::{IntegrateError, Method};
 
 /// What one dynamic sweep simulates (SI units).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -42,6 +42,12 @@ pub struct SweepSpec {
     /// 2 µm in one window counts as stuck. Near the boundary the peg starts
     /// slowly, so too short a window calls slow insertions stuck.
     pub window: f64,
+    /// The integrator of every run.
+    pub integrator: Method,
+    /// Classify a stuck run as soon as it has settled
+    /// ([`crate::compliant_peg::Settle::for_window`]) instead of at the end of
+    /// its window.
+    pub early_stop: bool,
 }
 
 /// A prepared sweep: the compliant model, the start state and the
@@ -111,6 +117,11 @@ impl SweepSetup {
             target_depth: self.start.depth(&self.params) + self.spec.advance,
             t_max: self.spec.t_max,
             window: self.spec.window,
+            integrator: self.spec.integrator,
+            settle: self
+                .spec
+                .early_stop
+                .then(|| Settle::for_window(self.spec.window)),
             ..InsertionOptions::default()
         };
         let run = simulate_insertion(&self.params, &load, &self.start, &opts)?;

@@ -298,7 +298,10 @@ impl Scene for AlignForwardScene {
 
         let t_final = tr.rows.last().map_or(spec.t0, |r| r.t);
         let integration = IntegrationSummary {
-            method: spec.method,
+            method: spec
+                .resolved(crate::scene::integrator::DefaultMethod::NON_STIFF)
+                .0
+                .method,
             t_end: t_final,
             stop: tr.stop.to_string(),
             success: tr.stop.is_success(),

@@ -153,8 +153,14 @@ impl Scene for DoublePendulumScene {
         fig.panels
             .push(Panel::new("Lower bob path", "x [m]", "y [m]").with(Series::line("bob 2", path)));
         fig.panels.push(
-            Panel::new("Energy error", "t [s]", "(E − E₀)/E_scale [-]")
-                .with(Series::line(self.integrator.method.name(), err)),
+            Panel::new("Energy error", "t [s]", "(E − E₀)/E_scale [-]").with(Series::line(
+                self.integrator
+                    .resolved(crate::scene::integrator::DefaultMethod::NON_STIFF)
+                    .0
+                    .method
+                    .name(),
+                err,
+            )),
         );
         fig.save(&svg)?;
 

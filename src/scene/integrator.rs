@@ -3,7 +3,7 @@
 //!
 //! ```toml
 //! [integrator]
-//! method = "dopri5"        # "dopri5" | "rk4" | "rodas3" (alias "rosenbrock")
+//! method = "dopri5"        # "auto" (default) | "dopri5" | "rk4" | "rodas3" (alias "rosenbrock") | "rodas4"
 //! rtol = 1e-9              # relative tolerance (adaptive methods)
 //! atol = 1e-12             # absolute tolerance, > 0 (adaptive methods)
 //! h = 1e-3                 # fixed step, s (rk4 only; required there)
@@ -18,13 +18,18 @@ use serde::Deserialize;
 use crate::error::{SceneError, SceneErrors};
 use crate::scene::validate::Checker;
 
-/// Integration method selected by `integrator.method`: the names of
-/// [`crate::integrate::Method`] (`"rk4"`, `"dopri5"`, `"rodas3"`), without
-/// the step size, which the table gives as `h` (the scene layer builds the
-/// engine's method from both).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
+/// Integration method selected by `integrator.method`.
+///
+/// Without `method` (or with `"auto"`) the scene kind chooses: the
+/// compliant-contact scenes RODAS4 (their Hertz contacts and regularized
+/// friction are stiff), every other kind DOPRI5; the run summary names
+/// the method used and why.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Method {
+    /// Chosen by the scene kind (see the type's documentation).
+    #[default]
+    Auto,
     /// Classical fixed-step Runge–Kutta 4.
     Rk4,
     /// Dormand–Prince 5(4), adaptive, with dense output and events.
@@ -34,6 +39,9 @@ pub enum Method {
     /// accepted as an alias.
     #[serde(alias = "rosenbrock")]
     Rodas3,
+    /// Linearly implicit, L-stable Rosenbrock method RODAS4 (order 4(3))
+    /// for stiff problems, adaptive.
+    Rodas4,
 }
 
 impl Method {
@@ -43,6 +51,8 @@ impl Method {
             Method::Rk4 => "rk4",
             Method::Dopri5 => "dopri5",
             Method::Rodas3 => "rodas3",
+            Method::Rodas4 => "rodas4",
+            Method::Auto => "auto",
         }
     }
 
@@ -52,11 +62,34 @@ impl Method {
     }
 }
 
+/// How a scene kind resolves [`Method::Auto`]: the method and why.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct DefaultMethod {
+    /// The method used when the scene names none.
+    pub method: Method,
+    /// Why, for the run summary.
+    pub reason: &'static str,
+}
+
+impl DefaultMethod {
+    /// The default of non-stiff scene kinds.
+    pub const NON_STIFF: DefaultMethod = DefaultMethod {
+        method: Method::Dopri5,
+        reason: "default for non-stiff scenes",
+    };
+    /// The default of compliant-contact scene kinds.
+    pub const STIFF_CONTACT: DefaultMethod = DefaultMethod {
+        method: Method::Rodas4,
+        reason: "default for compliant contact: stiff Hertz contacts and regularized friction",
+    };
+}
+
 /// The `[integrator]` table as written; call [`IntegratorSpec::check`].
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct IntegratorSpec {
-    /// Integration method.
+    /// Integration method ([`Method::Auto`] when not written).
+    #[serde(default)]
     pub method: Method,
     /// Relative tolerance, dimensionless (adaptive methods).
     #[serde(default = "default_rtol")]
@@ -89,6 +122,18 @@ fn default_max_steps() -> usize {
 }
 
 impl IntegratorSpec {
+    /// The spec with [`Method::Auto`] replaced by `default`'s method, and
+    /// why that method runs (named by the scene, or `default`'s reason).
+    pub fn resolved(&self, default: DefaultMethod) -> (IntegratorSpec, &'static str) {
+        let mut spec = self.clone();
+        if spec.method == Method::Auto {
+            spec.method = default.method;
+            (spec, default.reason)
+        } else {
+            (spec, "named by the scene")
+        }
+    }
+
     /// Validates the table; `table` is its dotted name (`"integrator"`).
     pub fn check(&self, table: &str) -> Result<(), SceneErrors> {
         let f = |k: &str| format!("{table}.{k}");
@@ -176,6 +221,20 @@ mod tests {
         assert_eq!(ts.len(), 5);
         assert_eq!(ts[4], 1.0);
         assert!((ts[3] - 0.9).abs() < 1e-15);
+    }
+
+    #[test]
+    fn auto_takes_the_scene_kind_default_and_a_named_method_stays() {
+        let (r, why) = spec(Method::Auto).resolved(DefaultMethod::STIFF_CONTACT);
+        assert_eq!(r.method, Method::Rodas4);
+        assert!(why.contains("compliant contact"), "{why}");
+        let (r, _) = spec(Method::Auto).resolved(DefaultMethod::NON_STIFF);
+        assert_eq!(r.method, Method::Dopri5);
+        let (r, why) = spec(Method::Dopri5).resolved(DefaultMethod::STIFF_CONTACT);
+        assert_eq!(r.method, Method::Dopri5);
+        assert_eq!(why, "named by the scene");
+        let toml_spec: IntegratorSpec = toml::from_str("t_end = 1.0").unwrap();
+        assert_eq!(toml_spec.method, Method::Auto);
     }
 
     #[test]

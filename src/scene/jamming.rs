@@ -128,10 +128,12 @@ impl Scene for JammingScene {
         );
         if let Some(s) = &self.sweep {
             text.push_str(&format!(
-                "; dynamic sweep {n} x {n} at c = {}, mu = {}, l = {} m",
+                "; dynamic sweep {n} x {n} at c = {}, mu = {}, l = {} m, {} ({})",
                 s.c,
                 s.mu,
                 s.l_m,
+                s.method().name(),
+                s.method_reason(),
                 n = s.n
             ));
         }

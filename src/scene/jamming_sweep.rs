@@ -15,7 +15,16 @@
 //! t_max_s = 0.2          # longest simulated time per run, s
 //! advance_m = 0.001      # advance of the bottom face that counts as inserted, m
 //! window_s = 0.05        # classification window: < 2 µm advance in it = stuck, s
+//! method = "rodas4"      # optional: "rodas4" (default) | "rodas3" | "dopri5"
+//! early_stop = true      # optional (default true): classify a stuck run once
+//!                        # it has settled (compliant_peg::Settle), not at its window's end
 //! ```
+//!
+//! Without `method` every run uses RODAS4 with the generated exact
+//! Jacobian: the contacts (Hertz periods of about a millisecond) and the
+//! regularized friction law (time constant `m v_s / (μ f)`, microseconds)
+//! make the runs stiff, and an explicit method's steps are bounded by that
+//! time constant however smooth the motion (see docs/BENCHMARKS.md).
 //!
 //! Writes `<out>/jamming_sweep.csv` (`fx_over_fz,m_over_rfz,class,lean_plus,
 //! lean_minus,margin_exact,margin_whitney`) and `<out>/jamming_sweep.svg`
@@ -27,6 +36,7 @@ use std::sync::Mutex;
 
 use serde::Deserialize;
 
+use crate::integrate::Method;
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::jamming::PegHole;
 use crate::jamming::diagram::whitney_parallelogram;
@@ -66,9 +76,65 @@ pub struct SweepParams {
     pub advance_m: f64,
     /// Classification window, s.
     pub window_s: f64,
+    /// Integrator of the runs (default RODAS4).
+    #[serde(default)]
+    pub method: Option<SweepMethod>,
+    /// Early stop of settled runs (default true).
+    #[serde(default = "yes")]
+    pub early_stop: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+/// `sweep.method`: the integrator of every run.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SweepMethod {
+    /// RODAS4, the default: the runs are stiff.
+    #[default]
+    Rodas4,
+    /// RODAS3.
+    Rodas3,
+    /// DOPRI5 (explicit; slow on these stiff runs).
+    Dopri5,
+}
+
+impl SweepMethod {
+    /// The compliant integrator choice.
+    pub fn integrator(self) -> Method {
+        match self {
+            SweepMethod::Rodas4 => Method::Rodas4,
+            SweepMethod::Rodas3 => Method::Rodas3,
+            SweepMethod::Dopri5 => Method::Dopri5,
+        }
+    }
+
+    /// Name as written in scene files.
+    pub fn name(self) -> &'static str {
+        match self {
+            SweepMethod::Rodas4 => "rodas4",
+            SweepMethod::Rodas3 => "rodas3",
+            SweepMethod::Dopri5 => "dopri5",
+        }
+    }
 }
 
 impl SweepParams {
+    /// The integrator of the runs: as named, else RODAS4.
+    pub fn method(&self) -> SweepMethod {
+        self.method.unwrap_or_default()
+    }
+
+    /// Why the runs use [`Self::method`], for the run summary.
+    pub fn method_reason(&self) -> &'static str {
+        match self.method {
+            Some(_) => "named by the scene",
+            None => "default for compliant contact: stiff Hertz contacts and regularized friction",
+        }
+    }
+
     /// Checks every field and builds the model; errors name `sweep.<field>`.
     pub fn prepare(&self) -> Result<SweepSetup, SceneErrors> {
         let mut c = Checker::default();
@@ -106,6 +172,8 @@ impl SweepParams {
             t_max: self.t_max_s,
             advance: self.advance_m,
             window: self.window_s,
+            integrator: self.method().integrator(),
+            early_stop: self.early_stop,
         };
         SweepSetup::new(spec).map_err(|e| {
             SceneErrors::from(SceneError::invalid(

@@ -130,8 +130,14 @@ impl Scene for PendulumScene {
             Panel::new("Simple pendulum: angle", "t [s]", "θ [rad]").with(Series::line("θ", theta)),
         );
         fig.panels.push(
-            Panel::new("Energy error", "t [s]", "(E − E₀)/(m g L) [-]")
-                .with(Series::line(self.integrator.method.name(), err)),
+            Panel::new("Energy error", "t [s]", "(E − E₀)/(m g L) [-]").with(Series::line(
+                self.integrator
+                    .resolved(crate::scene::integrator::DefaultMethod::NON_STIFF)
+                    .0
+                    .method
+                    .name(),
+                err,
+            )),
         );
         fig.save(&svg)?;
 

@@ -8,6 +8,7 @@ use crate::error::RunError;
 use crate::integrate::{
     self, Event, IntegrateError, Options, OutputMode, Solution, Solver, StopReason,
 };
+use crate::scene::integrator::DefaultMethod;
 use crate::scene::{IntegrationSummary, IntegratorSpec, Method, Progress};
 use crate::system::OdeSystem;
 
@@ -26,8 +27,9 @@ pub fn solver_config(spec: &IntegratorSpec) -> Result<(integrate::Method, Option
                 reason: "is required for rk4",
             }));
         }
-        (Method::Dopri5, _) => integrate::Method::Dopri5,
+        (Method::Dopri5 | Method::Auto, _) => integrate::Method::Dopri5,
         (Method::Rodas3, _) => integrate::Method::Rodas3,
+        (Method::Rodas4, _) => integrate::Method::Rodas4,
     };
     let mut options = Options::with_tolerances(spec.rtol, spec.atol);
     options.max_steps = spec.max_steps;
@@ -87,7 +89,7 @@ pub fn integration_summary<const N: usize>(
     event_names: &[&str],
 ) -> IntegrationSummary {
     IntegrationSummary {
-        method: spec.method,
+        method: spec.resolved(DefaultMethod::NON_STIFF).0.method,
         t_end: sol.t_final,
         stop: describe_stop(&sol.stop, event_names),
         success: sol.stop.is_success(),

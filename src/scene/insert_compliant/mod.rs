@@ -46,6 +46,7 @@ use crate::compliant_peg::{
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::hertz::{HertzError, Material};
 use crate::integrate::{Direction, Event};
+use crate::scene::integrator::DefaultMethod;
 use crate::scene::simulate::{integrate, integration_summary};
 use crate::scene::validate::Checker;
 use crate::scene::{Document, IntegratorSpec, Kind, RunContext, RunSummary, Scene};
@@ -60,7 +61,13 @@ pub const KIND: Kind = Kind {
 fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
     let s: InsertCompliantScene = doc.body()?;
     let built = s.build()?;
-    Ok(Box::new(Ready { scene: s, built }))
+    let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::STIFF_CONTACT);
+    Ok(Box::new(Ready {
+        scene: s,
+        built,
+        integrator,
+        method_reason,
+    }))
 }
 
 fn steel() -> MaterialSpec {
@@ -176,6 +183,10 @@ pub struct Built {
 struct Ready {
     scene: InsertCompliantScene,
     built: Built,
+    /// The `[integrator]` table with the method resolved.
+    integrator: IntegratorSpec,
+    /// Why that method runs.
+    method_reason: &'static str,
 }
 
 /// The scene field a model-level field corresponds to.
@@ -293,7 +304,7 @@ impl Scene for Ready {
         let p = &self.scene.insert_compliant;
         format!(
             "compliant peg-in-hole D = {} m, c = {}, mu = {}, f1 = {} N, f2 = {} N, M = {} N m, \
-             start tilt {} rad, k_edge = {:.3e} N/m^1.5; {}",
+             start tilt {} rad, k_edge = {:.3e} N/m^1.5; {} ({})",
             p.hole_diameter,
             p.clearance_ratio,
             p.friction,
@@ -302,7 +313,8 @@ impl Scene for Ready {
             p.torque,
             p.initial_tilt,
             self.built.params.pair.edge.stiffness(),
-            self.scene.integrator.describe()
+            self.integrator.describe(),
+            self.method_reason
         )
     }
 
@@ -323,16 +335,12 @@ impl Scene for Ready {
         let sol = integrate(
             &sys,
             initial.to_vector(),
-            &self.scene.integrator,
+            &self.integrator,
             vec![inserted],
             &mut ctx.progress,
         )?;
         let mut out = RunSummary {
-            integration: Some(integration_summary(
-                &self.scene.integrator,
-                &sol,
-                &["inserted"],
-            )),
+            integration: Some(integration_summary(&self.integrator, &sol, &["inserted"])),
             ..RunSummary::default()
         };
         write_outputs(ctx, &sys, &sol, &mut out)?;
