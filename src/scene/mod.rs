@@ -39,7 +39,7 @@ pub mod pendulum;
 mod progress;
 pub(crate) mod simulate;
 mod summary;
-pub(crate) mod validate;
+pub mod validate;
 
 use std::fmt;
 use std::path::{Path, PathBuf};
