@@ -6,6 +6,7 @@ use crate::graph::Graph;
 use crate::model::Module;
 
 pub mod cart_pole;
+pub mod compliant_peg_3d;
 pub mod double_pendulum;
 pub mod hertz;
 pub mod pendulum;
@@ -35,4 +36,5 @@ pub const ALL: &[ModelFn] = &[
     rigid_peg_module::module_frictionless,
     rigid_peg_module::module_planar,
     rigid_peg_module::module_planar_frictionless,
+    compliant_peg_3d::module,
 ];
