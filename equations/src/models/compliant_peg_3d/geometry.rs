@@ -116,7 +116,13 @@ pub struct PairGeometry<'g> {
 }
 
 /// The geometry of `pair` at pose `(p, q)` and angle `t`.
-pub fn pair<'g>(g: &'g Graph, which: Pair, p: &V3<'g>, q: &[Expr<'g>; 4], t: Expr<'g>) -> PairGeometry<'g> {
+pub fn pair<'g>(
+    g: &'g Graph,
+    which: Pair,
+    p: &V3<'g>,
+    q: &[Expr<'g>; 4],
+    t: Expr<'g>,
+) -> PairGeometry<'g> {
     let r = g.param("r");
     let len = g.param("L");
     let rho_p = g.param("rho_p");

@@ -35,7 +35,20 @@ use geometry::{GEOMETRY, POSE, Pair};
 
 /// Names of the state components, in order.
 pub const STATE: [&str; 15] = [
-    "px", "py", "pz", "q0", "q1", "q2", "q3", "vx", "vy", "vz", "wx", "wy", "wz", "work",
+    "px",
+    "py",
+    "pz",
+    "q0",
+    "q1",
+    "q2",
+    "q3",
+    "vx",
+    "vy",
+    "vz",
+    "wx",
+    "wy",
+    "wz",
+    "work",
     "dissipation",
 ];
 
@@ -78,10 +91,18 @@ fn pair_function(g: &Graph, which: Pair) -> FnSpec {
     let d2 = d1.diff(angle);
     let grad: Vec<Expr<'_>> = pose.iter().map(|&x| geo.gap.diff(x)).collect();
     let what = match which {
-        Pair::EdgeSide => "the mouth-edge torus against the peg's side, angle along the mouth-edge circle",
-        Pair::RimWall => "the peg's rim torus against the bore wall, angle along the rim circle (body)",
-        Pair::RimTop => "the peg's rim torus against the block's top face z = 0, angle along the rim circle",
-        Pair::RimBottom => "the peg's rim torus against the bore bottom z = -h_b, angle along the rim circle",
+        Pair::EdgeSide => {
+            "the mouth-edge torus against the peg's side, angle along the mouth-edge circle"
+        }
+        Pair::RimWall => {
+            "the peg's rim torus against the bore wall, angle along the rim circle (body)"
+        }
+        Pair::RimTop => {
+            "the peg's rim torus against the block's top face z = 0, angle along the rim circle"
+        }
+        Pair::RimBottom => {
+            "the peg's rim torus against the bore bottom z = -h_b, angle along the rim circle"
+        }
     };
     FnSpec::new(
         which.name(),
