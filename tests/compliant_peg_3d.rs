@@ -361,3 +361,74 @@ fn friction_and_damping_dissipate_and_close_the_balance() {
     assert!(last > 1e-5, "dissipated only {last} J");
     assert!(worst < 1e-8, "energy balance drifts by {worst} J");
 }
+
+#[test]
+fn centred_tilted_peg_meets_the_mouth_edge_at_the_filleted_gamma0() {
+    // Axis through the centre of the mouth-edge tube circle, tilted by γ
+    // about y: the distance from c(α) to the axis is
+    // (R+ρ_h) √(cos²γ + sin²α sin²γ), smallest at α = 0 and π, so the gap
+    // there is (R+ρ_h) cos γ − r − ρ_h, which crosses zero at
+    // γ0' = arccos((r+ρ_h)/(R+ρ_h)) (γ0 = arccos(d/D) for sharp edges).
+    // Only α = 0 is on the fillet's upper-inner quarter (force direction
+    // (−cos γ, 0, sin γ)); at α = π the direction points down into the bore
+    // and the contact is not the mouth fillet's.
+    let prm = fig9();
+    let (r, big_r, rho) = (prm.peg_radius(), prm.bore_radius(), prm.mouth_fillet);
+    let gamma0f = ((r + rho) / (big_r + rho)).acos();
+    let sys = Peg3d::new(prm);
+    for (gamma, expect) in [(gamma0f * 0.999, 0), (gamma0f * 1.001, 1), (0.3, 1)] {
+        let q = orientation(gamma, 0.0, 0.4);
+        // Centre of mass on the axis through (0, 0, −ρ_h), 10 mm above it.
+        let p = Vector3::new(0.0, 0.0, -rho) + q * Vector3::new(0.0, 0.0, 0.01);
+        let y = pose_state(p, q, Vector3::zeros(), Vector3::zeros());
+        let c = sys.contacts(&y);
+        let edge: Vec<_> = c.iter().filter(|c| c.pair == Pair::EdgeSide).collect();
+        assert_eq!(edge.len(), expect, "γ = {gamma}: {c:?}");
+        let gap = (big_r + rho) * gamma.cos() - r - rho;
+        for e in edge {
+            assert!(e.angle.min(TAU - e.angle) < 1e-9, "angle {}", e.angle);
+            let n = Vector3::new(-gamma.cos(), 0.0, gamma.sin());
+            assert!((e.normal - n).norm() < 1e-12, "normal {}", e.normal);
+            assert!(
+                (e.penetration + gap).abs() < 1e-15,
+                "{} vs {}",
+                e.penetration,
+                -gap
+            );
+        }
+    }
+}
+
+#[test]
+fn tilted_rim_on_the_top_face_has_the_torus_curvatures() {
+    // At the lowest point of the tilted rim the torus normal is −e_z and
+    // the outward radial direction from the peg's axis dips by γ, so the
+    // parallel curvature is sin γ / (r − ρ_p + ρ_p sin γ); the meridian
+    // curvature is 1/ρ_p; the face is flat.
+    let prm = fig9();
+    let sys = Peg3d::new(prm);
+    let rr = prm.peg_radius() - prm.rim_fillet;
+    for gamma in [0.05, 0.3, 1.0] {
+        let q = orientation(gamma, 0.7, 1.1);
+        let axis = q * Vector3::z();
+        // Lowest tube-centre point: h a_z − (r − ρ_p) |((R e_x)_z, (R e_y)_z)|,
+        // placed 1 µm less than ρ_p above the face.
+        let (ex, ey) = (q * Vector3::x(), q * Vector3::y());
+        let lowest = (prm.rim_fillet - 0.5 * prm.length) * axis.z - rr * ex.z.hypot(ey.z);
+        let p = Vector3::new(0.08, -0.01, prm.rim_fillet - 1e-6 - lowest);
+        let y = pose_state(p, q, Vector3::zeros(), Vector3::zeros());
+        let c = sys.contacts(&y);
+        assert_eq!(c.len(), 1, "γ = {gamma}: {c:?}");
+        assert_eq!(c[0].pair, Pair::RimTop);
+        assert!((c[0].penetration - 1e-6).abs() < 1e-15);
+        let curv = pegdyn::compliant_peg_3d::curvature::at(&prm, &c[0], &p, &axis);
+        let expect = gamma.sin() / (rr + prm.rim_fillet * gamma.sin());
+        assert!(
+            (curv.body1[0] - expect).abs() < 1e-9 * expect,
+            "γ = {gamma}: {} vs {expect}",
+            curv.body1[0]
+        );
+        assert!((curv.body1[1] - 1.0 / prm.rim_fillet).abs() < 1e-9);
+        assert_eq!(curv.body2, [0.0, 0.0]);
+    }
+}

@@ -50,10 +50,12 @@ pub fn at(
     let ez = Vector3::z();
     match c.pair {
         Pair::EdgeSide => {
-            // Mouth-fillet surface point; its outward normal is the force
-            // direction on the peg.
+            // The mouth fillet's surface point, half the penetration from
+            // the midway contact point along the force direction on the peg
+            // (the fillet's outward normal there).
             let n = c.normal;
-            let (kp, km, t) = torus(&Vector3::zeros(), &ez, &c.point, &n, prm.mouth_fillet);
+            let surface = c.point + n * (0.5 * c.penetration);
+            let (kp, km, t) = torus(&Vector3::zeros(), &ez, &surface, &n, prm.mouth_fillet);
             Curvatures {
                 body1: [kp, km],
                 body2: [0.0, 1.0 / prm.peg_radius()],
@@ -62,7 +64,8 @@ pub fn at(
         }
         Pair::RimWall | Pair::RimTop | Pair::RimBottom => {
             let n = -c.normal;
-            let (kp, km, t) = torus(centre, axis, &c.point, &n, prm.rim_fillet);
+            let surface = c.point + n * (0.5 * c.penetration);
+            let (kp, km, t) = torus(centre, axis, &surface, &n, prm.rim_fillet);
             let body2 = if c.pair == Pair::RimWall {
                 [0.0, -1.0 / prm.bore_radius()]
             } else {
