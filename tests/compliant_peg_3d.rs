@@ -432,3 +432,41 @@ fn tilted_rim_on_the_top_face_has_the_torus_curvatures() {
         assert_eq!(curv.body2, [0.0, 0.0]);
     }
 }
+
+#[test]
+fn landing_with_curvature_hertz_runs_and_dissipates() {
+    // Stiffness from the rim torus on the flat face at every evaluation
+    // (steel on steel): the rhs meets no Hertz error, S never decreases,
+    // and the peak normal force exceeds the peg's weight (an impact).
+    let mut prm = fig9();
+    prm.friction = 0.2;
+    prm.damping = 0.5;
+    let (sys, y0) = landing(prm);
+    let sol = solve(
+        &sys,
+        Method::Dopri5,
+        (0.0, y0),
+        0.02,
+        &Options::with_tolerances(1e-9, 1e-12),
+    )
+    .unwrap();
+    assert!(sol.stop.is_success(), "{:?}", sol.stop);
+    assert!(sys.error().is_none(), "{:?}", sys.error());
+    let mut last = 0.0;
+    let mut peak: f64 = 0.0;
+    let mut k_range = (f64::MAX, 0.0_f64);
+    for y in &sol.x {
+        assert!(y[14] >= last - 1e-15);
+        last = y[14];
+        for f in sys.forces(y).unwrap() {
+            peak = peak.max(f.normal_force);
+            k_range = (k_range.0.min(f.stiffness), k_range.1.max(f.stiffness));
+        }
+    }
+    eprintln!(
+        "curvature landing: peak force {peak} N, k in [{:e}, {:e}], dissipated {last:e} J",
+        k_range.0, k_range.1
+    );
+    assert!(peak > prm.mass * prm.gravity, "peak {peak} N");
+    assert!(last > 0.0);
+}
