@@ -7,6 +7,7 @@ extern crate self as pegdyn;
 
 pub mod accuracy;
 pub mod compliant_peg;
+pub mod compliant_peg_3d;
 pub mod error;
 pub mod generated;
 pub mod hertz;

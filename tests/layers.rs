@@ -13,6 +13,7 @@ use std::path::{Path, PathBuf};
 const PHYSICS: &[&str] = &[
     "rigid_peg",
     "compliant_peg",
+    "compliant_peg_3d",
     "jamming",
     "hertz",
     "textbook",

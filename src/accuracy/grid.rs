@@ -96,6 +96,7 @@ pub fn points(module: &str) -> Option<Vec<Point>> {
         "hertz" => Some(hertz()),
         "compliant_peg" | "compliant_peg_lean" => Some(compliant()),
         "quasi_static" => Some(quasi_static()),
+        "compliant_peg_3d" => Some(compliant_peg_3d()),
         "rigid_peg"
         | "rigid_peg_frictionless"
         | "rigid_peg_planar"
@@ -207,6 +208,66 @@ fn compliant() -> Vec<Point> {
                         "clearance={c:e} delta~{delta:e} theta={theta:e} {label}"
                     )));
                 }
+            }
+        }
+    }
+    out
+}
+
+/// The compliant 3-D peg (the Fig. 9 peg, 1 mm fillets): tilts 2e-4, 0.05
+/// and 0.3 rad, the centre of mass inside and above the mouth, angles away
+/// from the stationary points (where `g′` vanishes and has no relative
+/// accuracy to measure), moving with a spin.
+fn compliant_peg_3d() -> Vec<Point> {
+    use crate::compliant_peg_3d::Peg3dParams;
+    use crate::generated::compliant_peg_3d as peg3d;
+    use nalgebra::{Unit, UnitQuaternion, Vector3};
+    let prm = Peg3dParams::steel(0.04995, 0.070, 0.050, 1e-3, 1e-3, 0.1);
+    let pv = prm.vector();
+    let named: Vec<(&str, f64)> = peg3d::P_NAMES
+        .iter()
+        .copied()
+        .zip(pv.iter().copied())
+        .collect();
+    let mut base = Point::new("", &named);
+    // Velocities, body rates (with spin), work, dissipation and a contact
+    // wrench of a few newtons.
+    for (n, v) in [
+        ("vx", 0.01),
+        ("vy", -0.02),
+        ("vz", -0.1),
+        ("wx", 1.0),
+        ("wy", -2.0),
+        ("wz", 5.0),
+        ("work", 0.0),
+        ("dissipation", 0.0),
+        ("Fx", 1.0),
+        ("Fy", 2.0),
+        ("Fz", -3.0),
+        ("Tx", 0.01),
+        ("Ty", -0.02),
+        ("Tz", 0.005),
+        ("Sdot", 0.1),
+    ] {
+        base = base.with(n, v);
+    }
+    let mut out = Vec::new();
+    for &gamma in &[2e-4, 0.05, 0.3] {
+        let tilt = Unit::new_normalize(Vector3::new(-0.6, 0.8, 0.0));
+        let q = UnitQuaternion::from_axis_angle(&tilt, gamma)
+            * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), 0.7);
+        for &z in &[-0.02, 0.01] {
+            for &angle in &[0.3, 1.9, 4.4] {
+                let p = base
+                    .with("px", 3.7e-4)
+                    .with("py", -2e-4)
+                    .with("pz", z)
+                    .with("q0", q.w)
+                    .with("q1", q.i)
+                    .with("q2", q.j)
+                    .with("q3", q.k)
+                    .with("angle", angle);
+                out.push(p.labelled(format!("gamma={gamma:e} z={z:e} angle={angle}")));
             }
         }
     }

@@ -7,6 +7,7 @@ use crate::model::Module;
 
 pub mod cart_pole;
 pub mod compliant_peg;
+pub mod compliant_peg_3d;
 pub mod double_pendulum;
 pub mod hertz;
 pub mod pendulum;
@@ -31,4 +32,5 @@ pub const ALL: &[ModelFn] = &[
     rigid_peg::variants::module_frictionless,
     rigid_peg::variants::module_planar,
     rigid_peg::variants::module_planar_frictionless,
+    compliant_peg_3d::module,
 ];

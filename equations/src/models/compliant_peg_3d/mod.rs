@@ -1,0 +1,209 @@
+//! The compliant 3-D peg: a rigid cylinder with a filleted bottom rim in a
+//! bore with a filleted mouth, six degrees of freedom, Hertz point contacts
+//! found along the edge circles at run time.
+//!
+//! Coordinates (regular at alignment): the centre of mass `p` (hole frame),
+//! the unit quaternion `q` of the peg's orientation, the centre-of-mass
+//! velocity `v` (hole frame) and the angular velocity `ω` in the peg's
+//! principal (body) axes; Newton–Euler equations
+//!
+//! ```text
+//! ṗ = v,   q̇ = ½ q ⊗ (0, ω),
+//! m v̇ = F_c + F_a − m g e_z,
+//! J ω̇ = Rᵀ(T_c + M_a) − ω × J ω,     J = diag(J_t, J_t, J_a)
+//! ```
+//!
+//! with the contact wrench `(F_c, T_c)` (hole frame, about the centre of
+//! mass) an *input*: the runtime finds the contact points and sums their
+//! forces, and any further generalized force (a wrist spring–damper, a
+//! prescribed frame's reaction) is added to the same input. `F_a`, `M_a` are
+//! constant applied loads (hole frame). The state carries the work `W` of
+//! the applied loads and the dissipated energy `S` (its rate is the input's
+//! seventh component), so that `T + m g z + V_c − W + S` is constant.
+//!
+//! Per contact pair ([`geometry::Pair`]) one function gives the gap, its
+//! first and second derivatives in the edge angle, its gradient in the pose
+//! `(p, q)`, the force direction on the peg and the contact point.
+//! Units: SI.
+
+pub mod geometry;
+
+use crate::expr::Expr;
+use crate::graph::Graph;
+use crate::model::{FnSpec, Input, Module, Output};
+use geometry::{GEOMETRY, POSE, Pair};
+
+/// Names of the state components, in order.
+pub const STATE: [&str; 15] = [
+    "px",
+    "py",
+    "pz",
+    "q0",
+    "q1",
+    "q2",
+    "q3",
+    "vx",
+    "vy",
+    "vz",
+    "wx",
+    "wy",
+    "wz",
+    "work",
+    "dissipation",
+];
+
+/// Names of the wrench input: contact force `Fx, Fy, Fz` (N) and moment
+/// about the centre of mass `Tx, Ty, Tz` (N·m), hole frame, and the rate of
+/// dissipation `Sdot` (W).
+pub const WRENCH: [&str; 7] = ["Fx", "Fy", "Fz", "Tx", "Ty", "Tz", "Sdot"];
+
+/// Names of the dynamics parameters, after [`GEOMETRY`]: mass `m` (kg),
+/// transverse and axial moments of inertia `J_t`, `J_a` about the centre of
+/// mass (kg·m²), gravity `g` (m/s²), applied force `fa_x, fa_y, fa_z` (N)
+/// and moment `ma_x, ma_y, ma_z` (N·m), hole frame.
+pub const DYNAMICS: [&str; 10] = [
+    "m", "J_t", "J_a", "g", "fa_x", "fa_y", "fa_z", "ma_x", "ma_y", "ma_z",
+];
+
+fn params(g: &Graph) -> Vec<Expr<'_>> {
+    GEOMETRY
+        .iter()
+        .chain(DYNAMICS.iter())
+        .map(|n| g.param(n))
+        .collect()
+}
+
+fn cross<'g>(a: &[Expr<'g>; 3], b: &[Expr<'g>; 3]) -> [Expr<'g>; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+fn pair_function(g: &Graph, which: Pair) -> FnSpec {
+    let pose: Vec<Expr<'_>> = POSE.iter().map(|n| g.var(n)).collect();
+    let angle = g.var("angle");
+    let p = [pose[0], pose[1], pose[2]];
+    let q = [pose[3], pose[4], pose[5], pose[6]];
+    let geo = geometry::pair(g, which, &p, &q, angle);
+    let d1 = geo.gap.diff(angle);
+    let d2 = d1.diff(angle);
+    let grad: Vec<Expr<'_>> = pose.iter().map(|&x| geo.gap.diff(x)).collect();
+    let what = match which {
+        Pair::EdgeSide => {
+            "the mouth-edge torus against the peg's side, angle along the mouth-edge circle"
+        }
+        Pair::RimWall => {
+            "the peg's rim torus against the bore wall, angle along the rim circle (body)"
+        }
+        Pair::RimTop => {
+            "the peg's rim torus against the block's top face z = 0, angle along the rim circle"
+        }
+        Pair::RimBottom => {
+            "the peg's rim torus against the bore bottom z = -h_b, angle along the rim circle"
+        }
+    };
+    FnSpec::new(
+        which.name(),
+        format!(
+            "Contact pair: {what}. Gap g (m, negative = penetration), dg/dangle and d2g/dangle2 (m/rad, \
+             m/rad^2), gradient dg/d(px, py, pz, q0..q3), unit force direction on the peg, contact \
+             point (m) and its axial coordinate along the peg from the centre of mass (m)."
+        ),
+        vec![
+            Input::new("x", &pose),
+            Input::new("a", &[angle]),
+            Input::new("p", &params(g)),
+        ],
+        vec![
+            ("gap", Output::scalar(geo.gap)),
+            ("d1", Output::scalar(d1)),
+            ("d2", Output::scalar(d2)),
+            ("grad", Output::vector(&grad)),
+            ("normal", Output::vector(&geo.normal)),
+            ("point", Output::vector(&geo.point)),
+            ("axial", Output::scalar(geo.axial)),
+        ],
+    )
+}
+
+fn dynamics_functions(g: &Graph) -> Vec<FnSpec> {
+    let y: Vec<Expr<'_>> = STATE.iter().map(|n| g.var(n)).collect();
+    let w: Vec<Expr<'_>> = WRENCH.iter().map(|n| g.var(n)).collect();
+    let pr = params(g);
+    let par = |n: &str| g.param(n);
+    let (m, jt, ja, grav) = (par("m"), par("J_t"), par("J_a"), par("g"));
+    let q = [y[3], y[4], y[5], y[6]];
+    let v = [y[7], y[8], y[9]];
+    let om = [y[10], y[11], y[12]];
+    let fa = [par("fa_x"), par("fa_y"), par("fa_z")];
+    let ma = [par("ma_x"), par("ma_y"), par("ma_z")];
+    let conj = [q[0], -q[1], -q[2], -q[3]];
+    let torque_world = [w[3] + ma[0], w[4] + ma[1], w[5] + ma[2]];
+    let tb = geometry::rotate(&conj, &torque_world);
+    let jom = [jt * om[0], jt * om[1], ja * om[2]];
+    let gyro = cross(&om, &jom);
+    let om_world = geometry::rotate(&q, &om);
+    let mut rhs = vec![v[0], v[1], v[2]];
+    rhs.push(-0.5 * (q[1] * om[0] + q[2] * om[1] + q[3] * om[2]));
+    rhs.push(0.5 * (q[0] * om[0] + q[2] * om[2] - q[3] * om[1]));
+    rhs.push(0.5 * (q[0] * om[1] + q[3] * om[0] - q[1] * om[2]));
+    rhs.push(0.5 * (q[0] * om[2] + q[1] * om[1] - q[2] * om[0]));
+    rhs.push((w[0] + fa[0]) / m);
+    rhs.push((w[1] + fa[1]) / m);
+    rhs.push((w[2] + fa[2]) / m - grav);
+    rhs.push((tb[0] - gyro[0]) / jt);
+    rhs.push((tb[1] - gyro[1]) / jt);
+    rhs.push((tb[2] - gyro[2]) / ja);
+    rhs.push(
+        fa[0] * v[0]
+            + fa[1] * v[1]
+            + fa[2] * v[2]
+            + ma[0] * om_world[0]
+            + ma[1] * om_world[1]
+            + ma[2] * om_world[2],
+    );
+    rhs.push(w[6]);
+    let kinetic = 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
+        + 0.5 * (jt * (om[0] * om[0] + om[1] * om[1]) + ja * om[2] * om[2]);
+    vec![
+        FnSpec::new(
+            "rhs",
+            "Newton-Euler right-hand side of y = (p, q, v, omega_body, work, dissipation) under the \
+             contact wrench w = (F, T about the centre of mass, hole frame; dissipation rate), the \
+             applied loads and gravity along -z. SI units.",
+            vec![
+                Input::new("y", &y),
+                Input::new("w", &w),
+                Input::new("p", &pr),
+            ],
+            vec![("ydot", Output::vector(&rhs))],
+        ),
+        FnSpec::new(
+            "energy",
+            "Kinetic energy (J) and gravitational potential m g p_z (J).",
+            vec![Input::new("y", &y), Input::new("p", &pr)],
+            vec![
+                ("kinetic", Output::scalar(kinetic)),
+                ("gravity", Output::scalar(m * grav * y[2])),
+            ],
+        ),
+    ]
+}
+
+/// The module `compliant_peg_3d`: one function per contact pair, the
+/// Newton–Euler right-hand side and the energy.
+pub fn module(g: &Graph) -> Module {
+    let mut functions: Vec<FnSpec> = Pair::ALL.iter().map(|&p| pair_function(g, p)).collect();
+    functions.extend(dynamics_functions(g));
+    Module {
+        name: "compliant_peg_3d".to_owned(),
+        doc: "Compliant 3-D peg-in-hole: contact-pair gaps along the edge circles and Newton-Euler \
+              dynamics in centre of mass, unit quaternion and body angular velocity. Inputs: pose x \
+              (see X_NAMES), edge angle a, state y, contact wrench w, parameters p (see P_NAMES). \
+              SI units."
+            .to_owned(),
+        functions,
+    }
+}

@@ -1,0 +1,25 @@
+//! The compliant 3-D peg: a rigid cylinder with a filleted bottom rim in a
+//! bore with a filleted mouth, six degrees of freedom (centre of mass, unit
+//! quaternion, body angular velocity; Newton–Euler), Hertz point contacts
+//! found along the edge circles at every right-hand-side call.
+//!
+//! - [`params`]: bodies, materials, loads and contact laws, and the
+//!   generated functions' parameter vector.
+//! - [`search`]: the local maxima of penetration of each contact pair by
+//!   Newton in the edge angle, warm-started, with a bracketing scan.
+//! - [`curvature`]: the principal curvatures of both surfaces at a contact
+//!   point, for the Hertz ellipse.
+//! - [`system`]: contact forces (Hertz, Hunt–Crossley damping, regularized
+//!   Coulomb friction with the material point's velocity) summed into the
+//!   wrench of the generated Newton–Euler right-hand side.
+//!
+//! See `docs/compliant-peg-3d.md`.
+
+pub mod curvature;
+pub mod params;
+pub mod search;
+pub mod system;
+
+pub use params::{HertzMode, Peg3dParams};
+pub use search::{ContactPoint, Pair, Search};
+pub use system::{Peg3d, pose_state};

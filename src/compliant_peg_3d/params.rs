@@ -1,0 +1,123 @@
+//! Parameters of the compliant 3-D peg and the generated functions'
+//! parameter vector (order `pegdyn::generated::compliant_peg_3d::P_NAMES`).
+
+use crate::hertz::Material;
+use nalgebra::{SVector, Vector3};
+
+/// How each contact's Hertz stiffness `k` of `Q = k δ^{3/2}` is obtained.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum HertzMode {
+    /// From the principal curvatures of both surfaces at the contact point
+    /// (Hertz's elliptical contact, recomputed at every evaluation).
+    Curvature,
+    /// One constant stiffness `k` (N/m^{3/2}) for every contact: the
+    /// contact potential `(2/5) k δ^{5/2}` is then exact, which the energy
+    /// tests use.
+    Fixed(f64),
+}
+
+/// The peg, the hole, the materials, the loads and the contact laws. SI
+/// units.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Peg3dParams {
+    /// Peg diameter `d` (m).
+    pub peg_diameter: f64,
+    /// Peg length `L` (m).
+    pub length: f64,
+    /// Fillet radius of the peg's bottom rim `ρ_p` (m).
+    pub rim_fillet: f64,
+    /// Bore diameter `D` (m).
+    pub hole_diameter: f64,
+    /// Fillet radius of the hole's mouth edge `ρ_h` (m).
+    pub mouth_fillet: f64,
+    /// Bore depth `h_b` below the top face (m).
+    pub bore_depth: f64,
+    /// Mass `m` (kg).
+    pub mass: f64,
+    /// Transverse moment of inertia `J_t` about the centre of mass (kg·m²).
+    pub inertia_transverse: f64,
+    /// Axial moment of inertia `J_a` (kg·m²).
+    pub inertia_axial: f64,
+    /// Gravitational acceleration along `−z` (m/s²).
+    pub gravity: f64,
+    /// Constant applied force at the centre of mass, hole frame (N).
+    pub force: Vector3<f64>,
+    /// Constant applied moment, hole frame (N·m).
+    pub moment: Vector3<f64>,
+    /// Peg material.
+    pub peg_material: Material,
+    /// Block material.
+    pub hole_material: Material,
+    /// Coulomb friction coefficient `μ`.
+    pub friction: f64,
+    /// Velocity scale `v_s` of the regularized sign `v/√(v² + v_s²)` (m/s).
+    pub slip_scale: f64,
+    /// Hunt–Crossley damping `α` (s/m): normal force `k δ^{3/2} (1 + α δ̇)`.
+    pub damping: f64,
+    /// How the Hertz stiffness is obtained.
+    pub hertz: HertzMode,
+}
+
+impl Peg3dParams {
+    /// A solid steel cylinder of diameter `d` and length `l` in a steel
+    /// block with bore `big_d`, fillets `rho_p`, `rho_h`, bore depth `depth`,
+    /// density 7850 kg/m³, gravity 9.81 m/s², no applied loads, no friction,
+    /// no damping, curvature-based Hertz stiffness.
+    pub fn steel(d: f64, l: f64, big_d: f64, rho_p: f64, rho_h: f64, depth: f64) -> Peg3dParams {
+        let r = 0.5 * d;
+        let mass = 7850.0 * std::f64::consts::PI * r * r * l;
+        Peg3dParams {
+            peg_diameter: d,
+            length: l,
+            rim_fillet: rho_p,
+            hole_diameter: big_d,
+            mouth_fillet: rho_h,
+            bore_depth: depth,
+            mass,
+            inertia_transverse: mass * (3.0 * r * r + l * l) / 12.0,
+            inertia_axial: 0.5 * mass * r * r,
+            gravity: 9.81,
+            force: Vector3::zeros(),
+            moment: Vector3::zeros(),
+            peg_material: Material::STEEL,
+            hole_material: Material::STEEL,
+            friction: 0.0,
+            slip_scale: 1e-4,
+            damping: 0.0,
+            hertz: HertzMode::Curvature,
+        }
+    }
+
+    /// Peg radius `r = d/2` (m).
+    pub fn peg_radius(&self) -> f64 {
+        0.5 * self.peg_diameter
+    }
+
+    /// Bore radius `R = D/2` (m).
+    pub fn bore_radius(&self) -> f64 {
+        0.5 * self.hole_diameter
+    }
+
+    /// The generated functions' parameter vector: `r, L, rho_p, R, rho_h,
+    /// h_b, m, J_t, J_a, g, fa_x, fa_y, fa_z, ma_x, ma_y, ma_z`.
+    pub fn vector(&self) -> SVector<f64, 16> {
+        SVector::<f64, 16>::from_column_slice(&[
+            self.peg_radius(),
+            self.length,
+            self.rim_fillet,
+            self.bore_radius(),
+            self.mouth_fillet,
+            self.bore_depth,
+            self.mass,
+            self.inertia_transverse,
+            self.inertia_axial,
+            self.gravity,
+            self.force.x,
+            self.force.y,
+            self.force.z,
+            self.moment.x,
+            self.moment.y,
+            self.moment.z,
+        ])
+    }
+}

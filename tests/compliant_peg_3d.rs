@@ -1,0 +1,472 @@
+//! The compliant 3-D peg: contact geometry against brute-force searches on
+//! dense samplings of the edge circles, the gradient against the force
+//! direction and lever arm, and the energy balance of the dynamics.
+
+#[path = "common/rng.rs"]
+mod rng;
+
+use nalgebra::{SVector, Unit, UnitQuaternion, Vector3};
+use pegdyn::compliant_peg_3d::{HertzMode, Pair, Peg3d, Peg3dParams, Search, pose_state};
+use pegdyn::integrate::{Method, Options, solve};
+use rng::Rng;
+use std::f64::consts::TAU;
+
+/// The Fig. 9 peg (D = 50 mm, d = 49.95 mm, L = 70 mm) with 1 mm fillets
+/// and a 100 mm bore.
+fn fig9() -> Peg3dParams {
+    Peg3dParams::steel(0.04995, 0.070, 0.050, 1e-3, 1e-3, 0.1)
+}
+
+fn pose(p: Vector3<f64>, q: &UnitQuaternion<f64>) -> SVector<f64, 7> {
+    SVector::<f64, 7>::from_column_slice(&[p.x, p.y, p.z, q.w, q.i, q.j, q.k])
+}
+
+/// Tilt `gamma` of the axis towards azimuth `psi`, after a spin `phi` about
+/// the peg's own axis.
+fn orientation(gamma: f64, psi: f64, phi: f64) -> UnitQuaternion<f64> {
+    let tilt_axis = Unit::new_normalize(Vector3::new(-psi.sin(), psi.cos(), 0.0));
+    UnitQuaternion::from_axis_angle(&tilt_axis, gamma)
+        * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), phi)
+}
+
+/// The gap of `pair` at angle `a`, computed independently of the generated
+/// code (nalgebra rotations, projections).
+fn brute_gap(
+    prm: &Peg3dParams,
+    pair: Pair,
+    p: &Vector3<f64>,
+    q: &UnitQuaternion<f64>,
+    a: f64,
+) -> f64 {
+    let (r, big_r) = (prm.peg_radius(), prm.bore_radius());
+    match pair {
+        Pair::EdgeSide => {
+            let rc = big_r + prm.mouth_fillet;
+            let c = Vector3::new(rc * a.cos(), rc * a.sin(), -prm.mouth_fillet);
+            let axis = q * Vector3::z();
+            let u = c - p;
+            (u - axis * u.dot(&axis)).norm() - r - prm.mouth_fillet
+        }
+        _ => {
+            let rr = r - prm.rim_fillet;
+            let c = p + q * Vector3::new(
+                rr * a.cos(),
+                rr * a.sin(),
+                prm.rim_fillet - 0.5 * prm.length,
+            );
+            match pair {
+                Pair::RimWall => big_r - prm.rim_fillet - c.xy().norm(),
+                Pair::RimTop => c.z - prm.rim_fillet,
+                _ => c.z - prm.rim_fillet + prm.bore_depth,
+            }
+        }
+    }
+}
+
+const DENSE: usize = 20_000;
+
+/// Compares the search's minima of every pair at one pose with the discrete
+/// local minima of a dense sampling: every penetrating brute-force dip is
+/// found (angle within two samples, gap at or below the sampled one and
+/// within the sampling error), every found minimum is at or below the
+/// samples around it, and the normal and gradient agree with the
+/// independent geometry. Returns the number of penetrating minima.
+fn check_pose(prm: &Peg3dParams, p: Vector3<f64>, q: UnitQuaternion<f64>) -> usize {
+    let sys = Peg3d::new(*prm);
+    let pv = *sys.param_vector();
+    let x = pose(p, &q);
+    let h = TAU / DENSE as f64;
+    let mut count = 0;
+    for pair in Pair::ALL {
+        let gaps: Vec<f64> = (0..DENSE)
+            .map(|k| brute_gap(prm, pair, &p, &q, k as f64 * h))
+            .collect();
+        let found = Search::default().minima(pair, prm, &x, &pv);
+        let span = gaps.iter().cloned().fold(f64::MIN, f64::max)
+            - gaps.iter().cloned().fold(f64::MAX, f64::min);
+        // The sampling error of a minimum: |g''| h^2 / 8 with |g''| <= span-scale.
+        let sample_err = (span + prm.bore_radius()) * h * h;
+        for k in 0..DENSE {
+            let (g, gp, gn) = (
+                gaps[k],
+                gaps[(k + DENSE - 1) % DENSE],
+                gaps[(k + 1) % DENSE],
+            );
+            let distinct = span > 1e-9;
+            if g < 0.0 && g < gp && g <= gn && distinct {
+                let a = k as f64 * h;
+                let hit = found.iter().find(|&&m| {
+                    let d = (m - a).rem_euclid(TAU);
+                    d.min(TAU - d) <= 2.0 * h
+                });
+                let Some(&m) = hit else {
+                    panic!(
+                        "{pair:?}: brute-force minimum at {a} (gap {g}) not found; found {found:?}"
+                    );
+                };
+                let gm = pair.eval(&x, m, &pv).0;
+                assert!(
+                    gm <= g + 1e-13 && gm >= g - sample_err,
+                    "{pair:?}: gap {gm} vs sampled {g}"
+                );
+            }
+        }
+        for &m in &found {
+            let (gap, d1, d2, grad, normal, point, _) = pair.eval(&x, m, &pv);
+            assert!(
+                (gap - brute_gap(prm, pair, &p, &q, m)).abs() < 1e-14,
+                "{pair:?}: generated gap"
+            );
+            assert!(
+                d2 > 0.0 && d1.abs() <= 1e-8 * d2.max(1e-12),
+                "{pair:?}: not a minimum"
+            );
+            let k = ((m / h).round() as usize) % DENSE;
+            for j in [k + DENSE - 2, k + DENSE - 1, k, k + 1, k + 2] {
+                assert!(
+                    gap <= gaps[j % DENSE] + 1e-13,
+                    "{pair:?}: found minimum above a sample"
+                );
+            }
+            if gap < 0.0 {
+                count += 1;
+            }
+            // Normal: from the independent closest-point construction.
+            let brute_n = match pair {
+                Pair::EdgeSide => {
+                    let rc = prm.bore_radius() + prm.mouth_fillet;
+                    let c = Vector3::new(rc * m.cos(), rc * m.sin(), -prm.mouth_fillet);
+                    let axis = q * Vector3::z();
+                    let foot = p + axis * (c - p).dot(&axis);
+                    (foot - c).normalize()
+                }
+                Pair::RimWall => {
+                    let rr = prm.peg_radius() - prm.rim_fillet;
+                    let c = p + q * Vector3::new(
+                        rr * m.cos(),
+                        rr * m.sin(),
+                        prm.rim_fillet - 0.5 * prm.length,
+                    );
+                    -Vector3::new(c.x, c.y, 0.0).normalize()
+                }
+                _ => Vector3::z(),
+            };
+            assert!(
+                (normal - brute_n).norm() < 1e-12,
+                "{pair:?}: normal {normal} vs {brute_n}"
+            );
+            // Gradient in the centre of mass = the force direction; in the
+            // quaternion, (1/2) Xi(q)^T grad_q = body moment of n about the
+            // centre of mass through the contact point.
+            let gp = Vector3::new(grad[0], grad[1], grad[2]);
+            assert!(
+                (gp - normal).norm() < 1e-10,
+                "{pair:?}: grad_p {gp} vs n {normal}"
+            );
+            let (w, i, j, kq) = (x[3], x[4], x[5], x[6]);
+            let gq = [grad[3], grad[4], grad[5], grad[6]];
+            let tau_body = 0.5
+                * Vector3::new(
+                    -i * gq[0] + w * gq[1] + kq * gq[2] - j * gq[3],
+                    -j * gq[0] - kq * gq[1] + w * gq[2] + i * gq[3],
+                    -kq * gq[0] + j * gq[1] - i * gq[2] + w * gq[3],
+                );
+            let expect = q.inverse() * (point - p).cross(&normal);
+            assert!(
+                (tau_body - expect).norm() < 1e-10,
+                "{pair:?}: moment {tau_body} vs {expect}"
+            );
+        }
+    }
+    count
+}
+
+#[test]
+fn contact_points_match_brute_force_over_random_poses() {
+    let prm = fig9();
+    let mut rng = Rng(0x3D_9E6);
+    let mut penetrating = 0;
+    for _ in 0..40 {
+        let q = orientation(
+            rng.uniform(0.0, 0.5),
+            rng.uniform(0.0, TAU),
+            rng.uniform(0.0, TAU),
+        );
+        let p = Vector3::new(
+            rng.uniform(-2e-3, 2e-3),
+            rng.uniform(-2e-3, 2e-3),
+            rng.uniform(-0.03, 0.05),
+        );
+        penetrating += check_pose(&prm, p, q);
+    }
+    eprintln!("random poses: {penetrating} penetrating minima");
+    assert!(
+        penetrating > 20,
+        "random poses gave only {penetrating} penetrating minima"
+    );
+}
+
+#[test]
+fn aligned_peg_pressed_sideways_touches_edge_and_wall_at_the_analytic_depth() {
+    // Axis vertical at lateral offset e = 40 um: the bore-radius clearance
+    // R - r = 25 um is overrun by 15 um at angle 0 on both the mouth edge
+    // and the bore wall (rim below the fillet).
+    let prm = fig9();
+    let e = 40e-6;
+    let p = Vector3::new(e, 0.0, -0.02);
+    let q = UnitQuaternion::identity();
+    assert_eq!(check_pose(&prm, p, q), 2);
+    let sys = Peg3d::new(prm);
+    let y = pose_state(p, q, Vector3::zeros(), Vector3::zeros());
+    let c = sys.contacts(&y);
+    assert_eq!(c.len(), 2);
+    for pt in &c {
+        assert!(
+            pt.angle.min(TAU - pt.angle) < 1e-9,
+            "{:?} at {}",
+            pt.pair,
+            pt.angle
+        );
+        assert!(
+            (pt.penetration - 15e-6).abs() < 1e-15,
+            "{:?}: {}",
+            pt.pair,
+            pt.penetration
+        );
+        assert!((pt.normal - Vector3::new(-1.0, 0.0, 0.0)).norm() < 1e-15);
+    }
+}
+
+#[test]
+fn peg_at_gamma0_matches_brute_force_and_out_of_hole_has_no_contact() {
+    let prm = fig9();
+    let gamma0 = (prm.peg_diameter / prm.hole_diameter).acos();
+    let mut rng = Rng(77);
+    for k in 0..8 {
+        let q = orientation(gamma0, rng.uniform(0.0, TAU), rng.uniform(0.0, TAU));
+        let z = if k == 0 {
+            0.0
+        } else {
+            rng.uniform(-0.02, 0.02)
+        };
+        let p = Vector3::new(rng.uniform(-1e-3, 1e-3), rng.uniform(-1e-3, 1e-3), z);
+        check_pose(&prm, p, q);
+    }
+    // Above the top face, tilted, over the block: no overlap anywhere.
+    let q = orientation(0.3, 1.0, 2.0);
+    let p = Vector3::new(0.06, 0.0, 0.05);
+    check_pose(&prm, p, q);
+    for pair in [Pair::EdgeSide, Pair::RimTop] {
+        let min = (0..DENSE)
+            .map(|k| brute_gap(&prm, pair, &p, &q, k as f64 * TAU / DENSE as f64))
+            .fold(f64::MAX, f64::min);
+        assert!(min > 0.0, "{pair:?}: sampled gap {min}");
+    }
+    let sys = Peg3d::new(prm);
+    assert!(
+        sys.contacts(&pose_state(p, q, Vector3::zeros(), Vector3::zeros()))
+            .is_empty()
+    );
+}
+
+/// A peg released tilted over the top face with a spin, landing on its rim.
+fn landing(prm: Peg3dParams) -> (Peg3d, SVector<f64, 15>) {
+    let q = orientation(0.2, 0.3, 0.0);
+    let sys = Peg3d::new(prm);
+    // Lowest rim point 0.1 mm above the face.
+    let rr = prm.peg_radius() - prm.rim_fillet;
+    let low = (0..3600)
+        .map(|k| {
+            let a = k as f64 * TAU / 3600.0;
+            (q * Vector3::new(
+                rr * a.cos(),
+                rr * a.sin(),
+                prm.rim_fillet - 0.5 * prm.length,
+            ))
+            .z
+        })
+        .fold(f64::MAX, f64::min);
+    let p = Vector3::new(0.07, 0.01, 1e-4 + prm.rim_fillet - low);
+    let y = pose_state(
+        p,
+        q,
+        Vector3::new(0.01, 0.02, -0.2),
+        Vector3::new(3.0, -2.0, 20.0),
+    );
+    (sys, y)
+}
+
+#[test]
+fn frictionless_undamped_landing_conserves_energy() {
+    let mut prm = fig9();
+    prm.hertz = HertzMode::Fixed(2e9);
+    prm.force = Vector3::new(0.5, 0.0, -2.0);
+    prm.moment = Vector3::new(0.0, 0.01, 0.0);
+    let (sys, y0) = landing(prm);
+    let e0 = sys.energy_balance(&y0).unwrap();
+    let sol = solve(
+        &sys,
+        Method::Dopri5,
+        (0.0, y0),
+        0.02,
+        &Options::with_tolerances(1e-11, 1e-13),
+    )
+    .unwrap();
+    assert!(sol.stop.is_success(), "{:?}", sol.stop);
+    let mut touched = false;
+    let mut worst: f64 = 0.0;
+    for y in &sol.x {
+        touched |= !sys.contacts(y).is_empty();
+        worst = worst.max((sys.energy_balance(y).unwrap() - e0).abs());
+    }
+    assert!(touched, "the peg never landed");
+    eprintln!(
+        "frictionless landing: {} steps, energy drift {worst:e} J",
+        sol.x.len()
+    );
+    // Kinetic energy ~ 0.5 * 1.08 kg * (0.2 m/s)^2 ~ 2e-2 J.
+    assert!(worst < 1e-8, "energy balance drifts by {worst} J");
+}
+
+#[test]
+fn friction_and_damping_dissipate_and_close_the_balance() {
+    let mut prm = fig9();
+    prm.hertz = HertzMode::Fixed(2e9);
+    prm.friction = 0.3;
+    prm.damping = 0.5;
+    let (sys, y0) = landing(prm);
+    let e0 = sys.energy_balance(&y0).unwrap();
+    let sol = solve(
+        &sys,
+        Method::Dopri5,
+        (0.0, y0),
+        0.02,
+        &Options::with_tolerances(1e-11, 1e-13),
+    )
+    .unwrap();
+    assert!(sol.stop.is_success(), "{:?}", sol.stop);
+    let mut last = 0.0;
+    let mut worst: f64 = 0.0;
+    for y in &sol.x {
+        assert!(
+            y[14] >= last - 1e-15,
+            "dissipation decreased: {} -> {}",
+            last,
+            y[14]
+        );
+        last = y[14];
+        worst = worst.max((sys.energy_balance(y).unwrap() - e0).abs());
+    }
+    eprintln!("dissipative landing: dissipated {last:e} J, balance drift {worst:e} J");
+    assert!(last > 1e-5, "dissipated only {last} J");
+    assert!(worst < 1e-8, "energy balance drifts by {worst} J");
+}
+
+#[test]
+fn centred_tilted_peg_meets_the_mouth_edge_at_the_filleted_gamma0() {
+    // Axis through the centre of the mouth-edge tube circle, tilted by γ
+    // about y: the distance from c(α) to the axis is
+    // (R+ρ_h) √(cos²γ + sin²α sin²γ), smallest at α = 0 and π, so the gap
+    // there is (R+ρ_h) cos γ − r − ρ_h, which crosses zero at
+    // γ0' = arccos((r+ρ_h)/(R+ρ_h)) (γ0 = arccos(d/D) for sharp edges).
+    // Only α = 0 is on the fillet's upper-inner quarter (force direction
+    // (−cos γ, 0, sin γ)); at α = π the direction points down into the bore
+    // and the contact is not the mouth fillet's.
+    let prm = fig9();
+    let (r, big_r, rho) = (prm.peg_radius(), prm.bore_radius(), prm.mouth_fillet);
+    let gamma0f = ((r + rho) / (big_r + rho)).acos();
+    let sys = Peg3d::new(prm);
+    for (gamma, expect) in [(gamma0f * 0.999, 0), (gamma0f * 1.001, 1), (0.3, 1)] {
+        let q = orientation(gamma, 0.0, 0.4);
+        // Centre of mass on the axis through (0, 0, −ρ_h), 10 mm above it.
+        let p = Vector3::new(0.0, 0.0, -rho) + q * Vector3::new(0.0, 0.0, 0.01);
+        let y = pose_state(p, q, Vector3::zeros(), Vector3::zeros());
+        let c = sys.contacts(&y);
+        let edge: Vec<_> = c.iter().filter(|c| c.pair == Pair::EdgeSide).collect();
+        assert_eq!(edge.len(), expect, "γ = {gamma}: {c:?}");
+        let gap = (big_r + rho) * gamma.cos() - r - rho;
+        for e in edge {
+            assert!(e.angle.min(TAU - e.angle) < 1e-9, "angle {}", e.angle);
+            let n = Vector3::new(-gamma.cos(), 0.0, gamma.sin());
+            assert!((e.normal - n).norm() < 1e-12, "normal {}", e.normal);
+            assert!(
+                (e.penetration + gap).abs() < 1e-15,
+                "{} vs {}",
+                e.penetration,
+                -gap
+            );
+        }
+    }
+}
+
+#[test]
+fn tilted_rim_on_the_top_face_has_the_torus_curvatures() {
+    // At the lowest point of the tilted rim the torus normal is −e_z and
+    // the outward radial direction from the peg's axis dips by γ, so the
+    // parallel curvature is sin γ / (r − ρ_p + ρ_p sin γ); the meridian
+    // curvature is 1/ρ_p; the face is flat.
+    let prm = fig9();
+    let sys = Peg3d::new(prm);
+    let rr = prm.peg_radius() - prm.rim_fillet;
+    for gamma in [0.05, 0.3, 1.0] {
+        let q = orientation(gamma, 0.7, 1.1);
+        let axis = q * Vector3::z();
+        // Lowest tube-centre point: h a_z − (r − ρ_p) |((R e_x)_z, (R e_y)_z)|,
+        // placed 1 µm less than ρ_p above the face.
+        let (ex, ey) = (q * Vector3::x(), q * Vector3::y());
+        let lowest = (prm.rim_fillet - 0.5 * prm.length) * axis.z - rr * ex.z.hypot(ey.z);
+        let p = Vector3::new(0.08, -0.01, prm.rim_fillet - 1e-6 - lowest);
+        let y = pose_state(p, q, Vector3::zeros(), Vector3::zeros());
+        let c = sys.contacts(&y);
+        assert_eq!(c.len(), 1, "γ = {gamma}: {c:?}");
+        assert_eq!(c[0].pair, Pair::RimTop);
+        assert!((c[0].penetration - 1e-6).abs() < 1e-15);
+        let curv = pegdyn::compliant_peg_3d::curvature::at(&prm, &c[0], &p, &axis);
+        let expect = gamma.sin() / (rr + prm.rim_fillet * gamma.sin());
+        assert!(
+            (curv.body1[0] - expect).abs() < 1e-9 * expect,
+            "γ = {gamma}: {} vs {expect}",
+            curv.body1[0]
+        );
+        assert!((curv.body1[1] - 1.0 / prm.rim_fillet).abs() < 1e-9);
+        assert_eq!(curv.body2, [0.0, 0.0]);
+    }
+}
+
+#[test]
+fn landing_with_curvature_hertz_runs_and_dissipates() {
+    // Stiffness from the rim torus on the flat face at every evaluation
+    // (steel on steel): the rhs meets no Hertz error, S never decreases,
+    // and the peak normal force exceeds the peg's weight (an impact).
+    let mut prm = fig9();
+    prm.friction = 0.2;
+    prm.damping = 0.5;
+    let (sys, y0) = landing(prm);
+    let sol = solve(
+        &sys,
+        Method::Dopri5,
+        (0.0, y0),
+        0.02,
+        &Options::with_tolerances(1e-9, 1e-12),
+    )
+    .unwrap();
+    assert!(sol.stop.is_success(), "{:?}", sol.stop);
+    assert!(sys.error().is_none(), "{:?}", sys.error());
+    let mut last = 0.0;
+    let mut peak: f64 = 0.0;
+    let mut k_range = (f64::MAX, 0.0_f64);
+    for y in &sol.x {
+        assert!(y[14] >= last - 1e-15);
+        last = y[14];
+        for f in sys.forces(y).unwrap() {
+            peak = peak.max(f.normal_force);
+            k_range = (k_range.0.min(f.stiffness), k_range.1.max(f.stiffness));
+        }
+    }
+    eprintln!(
+        "curvature landing: peak force {peak} N, k in [{:e}, {:e}], dissipated {last:e} J",
+        k_range.0, k_range.1
+    );
+    assert!(peak > prm.mass * prm.gravity, "peak {peak} N");
+    assert!(last > 0.0);
+}
