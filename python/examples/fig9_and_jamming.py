@@ -33,7 +33,7 @@ def fig9(out: Path) -> None:
     for psidot in np.unique(c["psidot"]):
         sel = (c["psidot"] == psidot) & feasible
         g, n = c["gamma"][sel], c["N_B1_over_mg"][sel]
-        picks = [np.argmin(abs(g - x)) for x in (0.05, 0.1, 0.2, 0.3, 0.5)]
+        picks = sorted({int(np.argmin(abs(g - x))) for x in (0.05, 0.1, 0.2, 0.3, 0.5)})
         row = "  ".join(f"{g[i]:.3f}: {n[i]:+.4f}" for i in picks)
         print(f"  psidot = {psidot:5.1f} 1/s   {row}")
     header = ",".join(c)

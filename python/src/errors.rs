@@ -50,9 +50,11 @@ fn parts(e: &CoreError) -> (Option<String>, Option<String>, String) {
             format!("unknown scene kind; known kinds: {known}"),
         ),
         CoreError::Missing { field } => (Some(field.clone()), None, "missing field".into()),
-        CoreError::Unknown { field, expected } => {
-            (Some(field.clone()), None, format!("unknown field; {expected}"))
-        }
+        CoreError::Unknown { field, expected } => (
+            Some(field.clone()),
+            None,
+            format!("unknown field; {expected}"),
+        ),
         other => (other.field().map(str::to_owned), None, other.to_string()),
     }
 }
@@ -72,10 +74,7 @@ pub fn scene_error(py: Python<'_>, errors: &SceneErrors, prefix: Option<&str>) -
     let err = SceneError::new_err(message);
     let all: Vec<_> = errors.errors.iter().map(|l| parts(&l.error)).collect();
     let value = err.value(py);
-    let (field, val, reason) = all
-        .first()
-        .cloned()
-        .unwrap_or((None, None, String::new()));
+    let (field, val, reason) = all.first().cloned().unwrap_or((None, None, String::new()));
     // Attribute setting on a fresh exception object cannot fail in practice;
     // if it did, the message still carries everything.
     let _ = value.setattr("field", field);
@@ -83,7 +82,17 @@ pub fn scene_error(py: Python<'_>, errors: &SceneErrors, prefix: Option<&str>) -
     let _ = value.setattr("reason", reason);
     let list: Vec<Bound<'_, PyTuple>> = all
         .into_iter()
-        .filter_map(|t| PyTuple::new(py, [t.0.into_pyobject(py).ok()?.into_any(), t.1.into_pyobject(py).ok()?.into_any(), t.2.into_pyobject(py).ok()?.into_any()]).ok())
+        .filter_map(|t| {
+            PyTuple::new(
+                py,
+                [
+                    t.0.into_pyobject(py).ok()?.into_any(),
+                    t.1.into_pyobject(py).ok()?.into_any(),
+                    t.2.into_pyobject(py).ok()?.into_any(),
+                ],
+            )
+            .ok()
+        })
         .collect();
     let _ = value.setattr("errors", list);
     err

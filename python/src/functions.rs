@@ -78,7 +78,11 @@ pub fn evaluate<'py>(
             "{}: takes {} inputs ({}), got {}",
             f.path(),
             f.inputs.len(),
-            f.inputs.iter().map(|(a, _)| *a).collect::<Vec<_>>().join(", "),
+            f.inputs
+                .iter()
+                .map(|(a, _)| *a)
+                .collect::<Vec<_>>()
+                .join(", "),
             inputs.len()
         )));
     }
@@ -108,9 +112,10 @@ pub fn evaluate<'py>(
             n = shape[0];
         }
         rows.push(shape[0]);
-        data.push(a.as_slice().map_err(|e| {
-            PyValueError::new_err(format!("{}: input `{arg}`: {e}", f.path()))
-        })?);
+        data.push(
+            a.as_slice()
+                .map_err(|e| PyValueError::new_err(format!("{}: input `{arg}`: {e}", f.path())))?,
+        );
     }
     if rows.contains(&0) {
         n = 0;
@@ -130,7 +135,13 @@ pub fn evaluate<'py>(
 /// index added to the first component.
 #[pyfunction]
 #[pyo3(signature = (module, name, n, repeats=3))]
-pub fn rust_loop_ns(py: Python<'_>, module: &str, name: &str, n: usize, repeats: usize) -> PyResult<f64> {
+pub fn rust_loop_ns(
+    py: Python<'_>,
+    module: &str,
+    name: &str,
+    n: usize,
+    repeats: usize,
+) -> PyResult<f64> {
     let f = find(module, name)?;
     let owned: Vec<Vec<f64>> = f
         .inputs
@@ -138,7 +149,14 @@ pub fn rust_loop_ns(py: Python<'_>, module: &str, name: &str, n: usize, repeats:
         .map(|(_, syms)| {
             let w = syms.len();
             (0..n * w)
-                .map(|i| 0.1 + 0.01 * (i % w) as f64 + if i % w == 0 { 1e-9 * (i / w) as f64 } else { 0.0 })
+                .map(|i| {
+                    0.1 + 0.01 * (i % w) as f64
+                        + if i % w == 0 {
+                            1e-9 * (i / w) as f64
+                        } else {
+                            0.0
+                        }
+                })
                 .collect()
         })
         .collect();

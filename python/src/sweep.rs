@@ -47,16 +47,30 @@ fn scratch() -> PathBuf {
     std::env::temp_dir().join(format!("pegdyn-sweep-{}-{k}", std::process::id()))
 }
 
-fn run_point(base: &toml::Table, name: &str, keys: &[String], point: &[toml::Value], index: usize) -> Row {
+fn run_point(
+    base: &toml::Table,
+    name: &str,
+    keys: &[String],
+    point: &[toml::Value],
+    index: usize,
+) -> Row {
     let mut doc = base.clone();
     for (k, v) in keys.iter().zip(point) {
         if let Err(e) = set(&mut doc, k, v.clone()) {
-            return Row { index, result: Err(("invalid".into(), e)) };
+            return Row {
+                index,
+                result: Err(("invalid".into(), e)),
+            };
         }
     }
     let text = match toml::to_string(&doc) {
         Ok(t) => t,
-        Err(e) => return Row { index, result: Err(("invalid".into(), e.to_string())) },
+        Err(e) => {
+            return Row {
+                index,
+                result: Err(("invalid".into(), e.to_string())),
+            };
+        }
     };
     let dir = scratch();
     let outcome = run_text(&text, name, dir.clone());

@@ -53,9 +53,9 @@ pub fn to_toml(obj: &Bound<'_, PyAny>, path: &str) -> PyResult<toml::Value> {
 pub fn table(d: &Bound<'_, PyDict>, path: &str) -> PyResult<toml::Table> {
     let mut t = toml::Table::new();
     for (k, v) in d.iter() {
-        let key: String = k.extract().map_err(|_| {
-            PyTypeError::new_err(format!("`{path}`: scene keys must be strings"))
-        })?;
+        let key: String = k
+            .extract()
+            .map_err(|_| PyTypeError::new_err(format!("`{path}`: scene keys must be strings")))?;
         let sub = if path.is_empty() {
             key.clone()
         } else {
