@@ -66,8 +66,8 @@ def test_dask_sweep_equals_local(client):
 
 
 def test_dask_sweep_survives_a_killed_worker(client):
-    scene = pendulum(20.0)
-    grid = {"pendulum.theta0_deg": [float(a) for a in range(1, 121)]}
+    scene = pendulum(50.0)
+    grid = {"pendulum.theta0_deg": [float(a) / 2 for a in range(1, 241)]}
     local = pegdyn.sweep(scene, grid)
     before = client.run(os.getpid)
     victim = sorted(before.values())[0]
@@ -76,8 +76,7 @@ def test_dask_sweep_survives_a_killed_worker(client):
         # Wait until batches are running, then kill one worker process.
         deadline = time.time() + 30
         while time.time() < deadline and not any(client.processing().values()):
-            time.sleep(0.01)
-        time.sleep(0.2)
+            time.sleep(0.005)
         os.kill(victim, signal.SIGKILL)
         killed.append(time.time())
 
