@@ -126,3 +126,20 @@ def test_to_pandas_when_installed():
     assert isinstance(df, pd.DataFrame)
     assert list(df.columns) == list(r.columns)
     assert math.isclose(df["gamma"].iloc[-1], 0.5)
+
+
+def test_ctrl_c_interrupts_a_long_run():
+    import _thread
+    import threading
+
+    # About a million steps: still running when the interrupt arrives.
+    s = pegdyn.load(next(p for p in SCENES if p.stem == "pendulum")).with_values(
+        {"integrator.t_end": 2e4, "integrator.output_interval": 1000.0}
+    )
+    timer = threading.Timer(0.1, _thread.interrupt_main)
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        s.run()
+    timer.join()
+    # The package is usable afterwards.
+    assert pegdyn.load(next(p for p in SCENES if p.stem == "fig9")).run().outcome.success
