@@ -1,0 +1,205 @@
+"""Scenes: load, validate, run; the result of a run as numpy arrays."""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import tempfile
+from dataclasses import dataclass
+from typing import Any, Dict, List, Mapping, Optional, Tuple, Union
+
+from . import _pegdyn as _core
+
+PathLike = Union[str, "os.PathLike[str]"]
+
+
+def kinds() -> List[Tuple[str, str]]:
+    """Every scene kind pegdyn knows, as ``(kind, description)`` pairs."""
+    return list(_core.kinds())
+
+
+class Scene:
+    """A validated scene: TOML text plus the name its outputs are given.
+
+    Build one with :func:`load`, :func:`loads` or :func:`from_dict`; the
+    constructor validates (raises :class:`SceneError`). A scene is
+    immutable and cheap to pickle (it is its text), so it travels to Dask
+    workers as is.
+
+    Attributes: ``text`` (TOML), ``name`` (stem of output files), ``kind``,
+    ``description`` (or None).
+    """
+
+    __slots__ = ("text", "name", "kind", "description", "_describe")
+
+    def __init__(self, text: str, name: str = "scene", *, _prefix: Optional[str] = None):
+        kind, description, describe = _core.check(text, name, _prefix)
+        self.text = text
+        self.name = name
+        self.kind = kind
+        self.description = description
+        self._describe = describe
+
+    def describe(self) -> str:
+        """One line saying what the scene simulates (as ``pegdyn check`` prints)."""
+        return self._describe
+
+    def with_values(self, values: Mapping[str, Any]) -> "Scene":
+        """A copy with dotted fields replaced, e.g. ``{"pendulum.mass": 2.0}``
+        (validated: raises :class:`SceneError`)."""
+        keys = list(values)
+        text = _core.set_fields(self.text, keys, [values[k] for k in keys])
+        return Scene(text, self.name)
+
+    def run(self, out: Optional[PathLike] = None) -> "Result":
+        """Runs the scene and returns a :class:`Result`.
+
+        ``out``: a directory to write ``<name>.csv``, ``<name>.svg`` (and
+        the scene's other files) into, as ``pegdyn run --out`` does; the
+        paths are in ``Result.paths``. Without it the files go to a
+        temporary directory that is removed after reading them back.
+
+        The run releases the GIL; Ctrl-C (KeyboardInterrupt) returns at
+        once (the abandoned integration finishes in a background thread
+        and its output is discarded). Raises :class:`RunError` if the run
+        fails; an integration that stops unplanned is *not* an exception:
+        see ``Result.outcome.success``.
+        """
+        if out is None:
+            tmp = tempfile.mkdtemp(prefix="pegdyn-run-")
+            try:
+                return _result(_core.run(self.text, self.name, tmp), self.name, keep_paths=False)
+            finally:
+                shutil.rmtree(tmp, ignore_errors=True)
+        os.makedirs(out, exist_ok=True)
+        return _result(_core.run(self.text, self.name, os.fspath(out)), self.name, keep_paths=True)
+
+    def __reduce__(self):
+        return (Scene, (self.text, self.name))
+
+    def __eq__(self, other: object) -> bool:
+        return isinstance(other, Scene) and (self.text, self.name) == (other.text, other.name)
+
+    def __hash__(self) -> int:
+        return hash((self.text, self.name))
+
+    def __repr__(self) -> str:
+        return f"<pegdyn.Scene {self.name!r} kind={self.kind!r}: {self._describe}>"
+
+
+def load(path: PathLike) -> Scene:
+    """Reads and validates the scene file at ``path``; the scene is named
+    after the file stem (as ``pegdyn run`` names its outputs). Errors carry
+    ``pegdyn check``'s message, prefixed with the path the same way."""
+    p = os.fspath(path)
+    with open(p, encoding="utf-8") as fh:
+        text = fh.read()
+    name = os.path.splitext(os.path.basename(p))[0] or "scene"
+    return Scene(text, name, _prefix=p)
+
+
+def loads(text: str, name: str = "scene") -> Scene:
+    """Validates scene TOML ``text``; outputs are named after ``name``."""
+    return Scene(text, name)
+
+
+def from_dict(d: Mapping[str, Any], name: str = "scene") -> Scene:
+    """Validates a scene given as a dict (nested dicts are TOML tables,
+    values bool/int/float/str/lists; numpy scalars and arrays accepted)."""
+    return Scene(_core.to_toml(dict(d)), name)
+
+
+@dataclass(frozen=True)
+class Event:
+    """The event that ended an integration: its ``name`` and time ``t`` (s)."""
+
+    name: str
+    t: float
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """How a run ended. ``success`` is False when the integration stopped
+    unplanned (``pegdyn run`` exits 1 then). The other fields are None for
+    scenes without a time integration (e.g. the jamming tables)."""
+
+    success: bool
+    stop: Optional[str] = None
+    t_end: Optional[float] = None
+    method: Optional[str] = None
+    steps: Optional[int] = None
+    rejected: Optional[int] = None
+    rhs_calls: Optional[int] = None
+
+
+_EVENT = re.compile(r"event `([^`]*)` at t = (\S+) s")
+
+
+@dataclass
+class Result:
+    """What a run produced.
+
+    - ``columns``: the main table ``<name>.csv`` as a dict of numpy float64
+      arrays (text columns as lists of str), exactly the numbers written;
+    - ``tables``: every CSV the run wrote, by file stem;
+    - ``outcome``: an :class:`Outcome`; ``events``: the terminal
+      :class:`Event` (a list, empty when the run reached its end time);
+    - ``metrics``: scalar results ``{name: value}``; ``units`` their units;
+    - ``summary``: the raw summary dict; ``text``: what ``pegdyn run`` prints;
+    - ``paths``: files written (empty when ``run`` had no ``out``).
+    """
+
+    columns: Dict[str, Any]
+    tables: Dict[str, Dict[str, Any]]
+    outcome: Outcome
+    events: List[Event]
+    metrics: Dict[str, float]
+    units: Dict[str, str]
+    summary: Dict[str, Any]
+    text: str
+    paths: List[str]
+
+    def to_pandas(self, table: Optional[str] = None):
+        """The main table (or ``tables[table]``) as a pandas DataFrame
+        (requires pandas)."""
+        import pandas as pd
+
+        return pd.DataFrame(self.columns if table is None else self.tables[table])
+
+
+def _result(summary: Dict[str, Any], name: str, keep_paths: bool) -> Result:
+    outputs = list(summary["outputs"])
+    tables: Dict[str, Dict[str, Any]] = {}
+    for p in outputs:
+        if p.endswith(".csv"):
+            tables[os.path.splitext(os.path.basename(p))[0]] = _core.read_csv(p)
+    # The main table is `<name>.csv` when the scene writes one, else the first.
+    main = tables.get(name, next(iter(tables.values()), {}))
+    integ = summary["integration"]
+    if integ is None:
+        outcome = Outcome(success=bool(summary["success"]))
+        events: List[Event] = []
+    else:
+        outcome = Outcome(
+            success=integ["success"],
+            stop=integ["stop"],
+            t_end=integ["t_end"],
+            method=integ["method"],
+            steps=integ["steps"],
+            rejected=integ["rejected"],
+            rhs_calls=integ["rhs_calls"],
+        )
+        m = _EVENT.search(integ["stop"])
+        events = [Event(m.group(1), float(m.group(2)))] if m else []
+    return Result(
+        columns=main,
+        tables=tables,
+        outcome=outcome,
+        events=events,
+        metrics={n: v for n, v, _ in summary["metrics"]},
+        units={n: u for n, _, u in summary["metrics"]},
+        summary=summary,
+        text=summary["text"],
+        paths=outputs if keep_paths else [],
+    )

@@ -1,0 +1,168 @@
+//! Validating and running one scene given as TOML text.
+//!
+//! The scene is re-parsed from its text wherever it runs (a parsed scene is
+//! not `Send`; parsing costs microseconds), so the Python `Scene` object is
+//! just its text and name, and pickles to Dask workers as such.
+
+use std::path::PathBuf;
+use std::sync::mpsc;
+use std::time::Duration;
+
+use pyo3::exceptions::PyRuntimeError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyList};
+
+use pegdyn::scene::{self, Progress, RunContext, RunSummary};
+
+use crate::errors::{RunError, scene_error};
+use crate::value;
+
+/// check(text, name, prefix=None) -> (kind, description, describe)
+///
+/// Parses and validates scene `text`; raises SceneError with the messages
+/// of `pegdyn check` (each line prefixed by `prefix: error: ` when given).
+#[pyfunction]
+#[pyo3(signature = (text, name, prefix=None))]
+pub fn check(
+    py: Python<'_>,
+    text: &str,
+    name: &str,
+    prefix: Option<&str>,
+) -> PyResult<(String, Option<String>, String)> {
+    match scene::parse_named(text, name) {
+        Ok(s) => Ok((s.kind.to_string(), s.description, s.scene.describe())),
+        Err(e) => Err(scene_error(py, &e, prefix)),
+    }
+}
+
+/// to_toml(d) -> str: a dict (nested dicts are tables) as TOML text.
+#[pyfunction]
+pub fn to_toml(d: &Bound<'_, PyDict>) -> PyResult<String> {
+    let t = value::table(d, "")?;
+    toml::to_string(&t).map_err(|e| PyRuntimeError::new_err(format!("cannot write TOML: {e}")))
+}
+
+/// kinds() -> list[(name, about)]: the registered scene kinds.
+#[pyfunction]
+pub fn kinds() -> Vec<(&'static str, &'static str)> {
+    scene::KINDS.iter().map(|k| (k.name, k.about)).collect()
+}
+
+/// How often a waiting call takes the GIL back to look for Ctrl-C.
+const POLL: Duration = Duration::from_millis(50);
+
+/// Runs `work` on a new thread with the GIL released, taking the GIL back
+/// every [`POLL`] to run Python's signal handlers: on KeyboardInterrupt the
+/// call returns at once with the exception and the abandoned work finishes
+/// in the background, its result dropped (the runtime has no cancellation
+/// point inside an integration).
+pub fn interruptible<T: Send + 'static>(
+    py: Python<'_>,
+    work: impl FnOnce() -> T + Send + 'static,
+) -> PyResult<T> {
+    let (tx, rx) = mpsc::channel();
+    std::thread::Builder::new()
+        .name("pegdyn-run".into())
+        .spawn(move || {
+            // The receiver may be gone after an interrupt: nothing to do then.
+            let _ = tx.send(work());
+        })
+        .map_err(|e| PyRuntimeError::new_err(format!("cannot start a thread: {e}")))?;
+    let mut rx = rx;
+    loop {
+        // The receiver is `Send` but not `Sync`: move it through the closure.
+        let (got, back) = py.detach(move || (rx.recv_timeout(POLL), rx));
+        rx = back;
+        match got {
+            Ok(v) => return Ok(v),
+            Err(mpsc::RecvTimeoutError::Timeout) => py.check_signals()?,
+            Err(mpsc::RecvTimeoutError::Disconnected) => {
+                return Err(PyRuntimeError::new_err("pegdyn: the run thread panicked"));
+            }
+        }
+    }
+}
+
+/// What a run thread hands back.
+pub enum Outcome {
+    Invalid(pegdyn::error::SceneErrors),
+    Failed(String),
+    Done(RunSummary),
+}
+
+/// Parses `text` and runs it into `out_dir` (created), silently.
+pub fn run_text(text: &str, name: &str, out_dir: PathBuf) -> Outcome {
+    let loaded = match scene::parse_named(text, name) {
+        Ok(s) => s,
+        Err(e) => return Outcome::Invalid(e),
+    };
+    if let Err(e) = std::fs::create_dir_all(&out_dir) {
+        return Outcome::Failed(format!(
+            "cannot create output directory {}: {e}",
+            out_dir.display()
+        ));
+    }
+    let mut ctx = RunContext {
+        out_dir,
+        name: loaded.name.clone(),
+        progress: Progress::silent(),
+    };
+    match loaded.scene.run(&mut ctx) {
+        Ok(s) => Outcome::Done(s),
+        Err(e) => Outcome::Failed(e.to_string()),
+    }
+}
+
+/// The summary as a dict: `integration` (None or a dict), `metrics`
+/// (list of `(name, value, unit)`), `outputs` (paths), `success`, `text`
+/// (what `pegdyn run` prints).
+pub fn summary_dict<'py>(py: Python<'py>, s: &RunSummary) -> PyResult<Bound<'py, PyDict>> {
+    let d = PyDict::new(py);
+    match &s.integration {
+        Some(i) => {
+            let id = PyDict::new(py);
+            id.set_item("method", i.method.name())?;
+            id.set_item("t_end", i.t_end)?;
+            id.set_item("stop", &i.stop)?;
+            id.set_item("success", i.success)?;
+            id.set_item("steps", i.steps)?;
+            id.set_item("rejected", i.rejected)?;
+            id.set_item("rhs_calls", i.rhs_calls)?;
+            d.set_item("integration", id)?;
+        }
+        None => d.set_item("integration", py.None())?,
+    }
+    let metrics = PyList::empty(py);
+    for m in &s.metrics {
+        metrics.append((m.name.as_str(), m.value, m.unit))?;
+    }
+    d.set_item("metrics", metrics)?;
+    let outputs: Vec<String> = s
+        .outputs
+        .iter()
+        .map(|p| p.to_string_lossy().into_owned())
+        .collect();
+    d.set_item("outputs", outputs)?;
+    d.set_item("success", s.success())?;
+    d.set_item("text", s.to_string())?;
+    Ok(d)
+}
+
+/// run(text, name, out_dir) -> dict
+///
+/// Runs the scene into `out_dir` with the GIL released (Ctrl-C returns at
+/// once); returns the summary dict of [`summary_dict`]. Raises SceneError
+/// for an invalid scene and RunError when the run fails.
+#[pyfunction]
+pub fn run<'py>(
+    py: Python<'py>,
+    text: String,
+    name: String,
+    out_dir: PathBuf,
+) -> PyResult<Bound<'py, PyDict>> {
+    match interruptible(py, move || run_text(&text, &name, out_dir))? {
+        Outcome::Invalid(e) => Err(scene_error(py, &e, None)),
+        Outcome::Failed(msg) => Err(RunError::new_err(msg)),
+        Outcome::Done(s) => summary_dict(py, &s),
+    }
+}
