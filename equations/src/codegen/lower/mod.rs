@@ -2,7 +2,9 @@
 //! products) rewritten into the shape a person would write by hand, so
 //! that the emitted code does the same work as a hand-derived form.
 //!
-//! Three rewrites, each over the nodes reachable from a function's outputs:
+//! Three rewrites, each over the nodes reachable from a function's outputs,
+//! with the signs of sums normalized before and after the first (`sign`:
+//! one value per ± pair, so that `S` and `−S` are one `let`):
 //!
 //! 1. **Sums are factored** greedily (multivariate Horner, `horner`): in a
 //!    sum of products, the factor shared by the most terms is taken out,
@@ -29,6 +31,7 @@
 mod cancel;
 mod horner;
 mod pairs;
+pub(crate) mod sign;
 
 use std::collections::HashMap;
 
@@ -37,10 +40,12 @@ use crate::simplify::{konst, term_parts};
 
 /// The lowered roots of `roots` (same values, same order).
 pub fn lower(g: &Graph, roots: &[Id]) -> Vec<Id> {
-    let factored = rebuild(g, roots, |g, _, node, _| match node {
+    let signed = sign::fold_negations(g, roots);
+    let factored = rebuild(g, &signed, |g, _, node, _| match node {
         Node::Add(xs) => horner::factor_sum(g, &xs),
         node => g.intern(node),
     });
+    let factored = sign::fold_negations(g, &factored);
     let cancelled = rebuild(g, &factored, |g, _, node, _| match node {
         Node::Mul(_) => cancel::cancel_parameters(g, g.intern(node)),
         node => g.intern(node),
@@ -67,6 +72,11 @@ pub(super) fn rebuild(
                 f(g, id, mapped, &map)
             }
         };
+        if new != id
+            && let Some(label) = g.label(id)
+        {
+            g.set_label(new, &label); // the model's name follows the value
+        }
         map.insert(id, new);
     }
     roots.iter().map(|r| map[r]).collect()
