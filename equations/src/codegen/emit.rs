@@ -17,6 +17,7 @@ use std::collections::HashMap;
 use proc_macro2::{Ident, Literal, TokenStream};
 use quote::quote;
 
+use super::lower::product_key;
 use super::ops::OpCounts;
 use super::schedule::{Names, Schedule, pow_form, snake_case};
 use super::tokens::{constant, ident, let_base, lit_signed, one};
@@ -86,6 +87,36 @@ fn sin_cos_partners(g: &Graph, sched: &Schedule) -> HashMap<Id, Id> {
     partner
 }
 
+/// Named products by [`product_key`]: `(coefficient bits, leaf factors)`.
+type ProductNames = HashMap<(u64, Vec<Id>), String>;
+
+/// The model's named products, so that a lowered product with the same
+/// leaves (grouped otherwise by the lowering) finds its name.
+fn labelled_products(g: &Graph) -> ProductNames {
+    let mut out = HashMap::new();
+    for (id, label) in g.labels() {
+        if let Some((c, fs)) = product_key(g, id) {
+            out.entry((c.to_bits(), fs)).or_insert(label);
+        }
+    }
+    out
+}
+
+/// The model's name for the value `id` (snake_case): its own label, or
+/// that of a named product with the same leaves, `neg_<name>` for its
+/// negation.
+fn model_name(g: &Graph, id: Id, products: &ProductNames) -> Option<String> {
+    if let Some(l) = g.label(id) {
+        return Some(snake_case(&l));
+    }
+    let (c, fs) = product_key(g, id)?;
+    if let Some(l) = products.get(&(c.to_bits(), fs.clone())) {
+        return Some(snake_case(l));
+    }
+    let l = products.get(&((-c).to_bits(), fs))?;
+    Some(format!("neg_{}", snake_case(l)))
+}
+
 impl<'a> Emitter<'a> {
     /// An emitter for `sched`; `sym_name` gives the local name of each symbol.
     ///
@@ -101,6 +132,7 @@ impl<'a> Emitter<'a> {
         sym_name: &dyn Fn(Sym) -> String,
     ) -> Emitter<'a> {
         let partner = sin_cos_partners(g, sched);
+        let by_product = labelled_products(g);
         let mut out: Vec<Option<Ident>> = vec![None; sched.live.len()];
         // Readable names (symbols, model names and functions of them).
         let mut readable: HashMap<Id, String> = HashMap::new();
@@ -125,7 +157,7 @@ impl<'a> Emitter<'a> {
                         n
                     }
                     node => {
-                        let base = g.label(id).map(|l| snake_case(&l)).or_else(|| {
+                        let base = model_name(g, id, &by_product).or_else(|| {
                             let arg = |a: Id| readable.get(&a).cloned();
                             let_base(g, node, &arg)
                         });

@@ -155,6 +155,19 @@ impl Graph {
         self.inner.borrow().labels.get(&id).cloned()
     }
 
+    /// Every named node and its name, in arena order.
+    pub fn labels(&self) -> Vec<(Id, String)> {
+        let mut v: Vec<(Id, String)> = self
+            .inner
+            .borrow()
+            .labels
+            .iter()
+            .map(|(&id, l)| (id, l.clone()))
+            .collect();
+        v.sort();
+        v
+    }
+
     /// Name and kind of a symbol.
     pub fn sym_info(&self, s: Sym) -> SymInfo {
         self.inner.borrow().syms[s.index()].clone()

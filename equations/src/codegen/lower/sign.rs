@@ -49,7 +49,7 @@ pub(super) fn fold_negations(g: &Graph, roots: &[Id]) -> Vec<Id> {
 }
 
 /// How many users each node reachable from `roots` has.
-fn use_counts(g: &Graph, roots: &[Id]) -> Vec<u32> {
+pub(super) fn use_counts(g: &Graph, roots: &[Id]) -> Vec<u32> {
     let live = g.reachable(roots);
     let mut uses = vec![0u32; live.len()];
     for r in roots {
