@@ -75,7 +75,7 @@ fn rational(a: f64) -> Option<(u32, u32)> {
     }
     (2..=MAX_DENOMINATOR).find_map(|q| {
         let p = (a * f64::from(q)).round();
-        (p >= 1.0 && p < 1e6 && p / f64::from(q) == a).then_some((p as u32, q))
+        ((1.0..1e6).contains(&p) && p / f64::from(q) == a).then_some((p as u32, q))
     })
 }
 
