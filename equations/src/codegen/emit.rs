@@ -245,7 +245,10 @@ impl<'a> Emitter<'a> {
             }
             // Lowered sums are already in evaluation order (`lower::horner`).
             Node::Add(xs) => self.sum(&xs),
-            Node::Mul(xs) => self.product(&xs, None),
+            Node::Mul(xs) => match self.negated_sum(id) {
+                Some(f) => f,
+                None => self.product(&xs, None),
+            },
             Node::Pow(b, e) => self.power(b, e),
             Node::Unary(op, a) => self.unary(op, a),
             Node::Binary(op, a, b) => {
@@ -281,6 +284,34 @@ impl<'a> Emitter<'a> {
         }
         self.ops.mul += f.common.len();
         Frag::new(quote!(#ts * #inner), Prec::Product)
+    }
+
+    /// The negation `(−1)·S` of an inlined sum written with its terms'
+    /// signs flipped (`b - a` for `−(a − b)`; two terms swap so that the
+    /// positive one leads, which is exact), when `S` is not factored.
+    fn negated_sum(&mut self, id: Id) -> Option<Frag> {
+        let s = super::lower::sign::negated(self.g, id)?;
+        if self.sched.is_named(s) {
+            return None;
+        }
+        let Node::Add(xs) = self.g.node(s) else {
+            return None;
+        };
+        let sched = self.sched;
+        if crate::eval::factor_sum(self.g, &xs, |t| sched.is_named(t)).is_some() {
+            return None;
+        }
+        let mut terms: Vec<(bool, Frag)> = xs
+            .iter()
+            .map(|&x| {
+                let (neg, f) = self.signed_term(x);
+                (!neg, f)
+            })
+            .collect();
+        if terms.len() == 2 && terms[0].0 && !terms[1].0 {
+            terms.swap(0, 1);
+        }
+        Some(self.signed_sum(terms))
     }
 
     /// `t₁ ± t₂ ± …` from (is negative, magnitude) pairs.
