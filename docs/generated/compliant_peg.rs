@@ -197,15 +197,15 @@ pub mod compliant_peg {
                                 * (-(t49 * (step_delta_wall_left - t56)) + t68 * mu * t30)))
                     / j,
                 xdot * (t0 + t1) + zdot * (t2 - t3) + thetadot * m_2,
-                -(-(mu
+                mu
                     * (k_edge
                         * (t57 * t24 * (slip_edge_left * slip_edge_left)
                             + t59 * t54 * (slip_edge_right * slip_edge_right))
                         + k_wall
                             * (t65 * t32 * (slip_wall_right * slip_wall_right)
-                                + t67 * t48 * (slip_wall_left * slip_wall_left))))
-                    + k_edge * (delta_rate_edge_left * t24 * t52 - t45 * t54 * t55)
-                    + k_wall * (delta_rate_wall_right * t32 * t53 - t50 * t48 * t56)),
+                                + t67 * t48 * (slip_wall_left * slip_wall_left)))
+                    - k_edge * (delta_rate_edge_left * t24 * t52 - t45 * t54 * t55)
+                    - k_wall * (delta_rate_wall_right * t32 * t53 - t50 * t48 * t56),
             ],
         )
     }
@@ -747,14 +747,13 @@ pub mod compliant_peg {
                     - k_wall
                         * (thetadot * (-(t52 * t84 * t103) + t78 * t87 * t100)
                             + delta_rate_wall_right * t256 + t80 * t197),
-                -(k_edge * (t27 * t216 + sin_theta * (-t218 - t220) * mu)
-                    + k_wall
+                -(k_edge * (t27 * t216 + sin_theta * (-t218 - t220) * mu))
+                    - k_wall
                         * (t52
                             * (-(t178 * (mu * t43 * t44 + delta_rate_wall_right)) - t55
                                 + T::from_f64(1.0))
                             + t78
-                                * (t200 * (mu * t50 * t51 - t80) - T::from_f64(1.0)
-                                    + t82))),
+                                * (t200 * (mu * t50 * t51 - t80) - T::from_f64(1.0) + t82)),
                 k_edge * (sin_theta * t216 + cos_theta * (t218 + t220) * mu)
                     + k_wall
                         * (t55 * (-t221 + T::from_f64(2.0) * t177) * t52

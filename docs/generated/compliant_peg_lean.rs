@@ -146,11 +146,11 @@ pub mod compliant_peg_lean {
                     / j,
                 xdot * (t0 + t1) + zdot * (f1 * cos_theta - f2 * sin_theta)
                     + thetadot * m_2,
-                -(-(mu
+                mu
                     * (t29 * t15 * (slip_edge_left * slip_edge_left)
-                        + t32 * (slip_wall_right * slip_wall_right)))
-                    + t15 * delta_rate_edge_left * t27
-                    + elastic_wall_right * delta_rate_wall_right * t28),
+                        + t32 * (slip_wall_right * slip_wall_right))
+                    - t15 * delta_rate_edge_left * t27
+                    - elastic_wall_right * delta_rate_wall_right * t28,
             ],
         )
     }

@@ -158,17 +158,17 @@ pub mod rigid_peg {
             -(f * (t_b2_eta * bb1 + t27 * t_b2_n)),
             m * t42,
             T::from_f64(0.0),
-            -(f * t_k_eta + cos_gamma),
-            -(f * t_b1_eta + t28),
-            -(f * t_b2_eta + t28),
+            -(f * t_k_eta) - cos_gamma,
+            -(f * t_b1_eta) - t28,
+            -(f * t_b2_eta) - t28,
             T::from_f64(0.0),
             -t22 * m,
             -t14,
-            -(f * t_b1_n - t35),
-            -(f * t_b2_n + t35),
+            t35 - f * t_b1_n,
+            -(f * t_b2_n) - t35,
             m * t40,
             T::from_f64(0.0),
-            -(f * t_k_z + sin_gamma),
+            -(f * t_k_z) - sin_gamma,
             -(f * t_b1_z) + t26,
             -(f * t_b2_z) + t26,
         );
@@ -188,7 +188,7 @@ pub mod rigid_peg {
                         * (T::from_f64(0.5) * t25 - T::from_f64(0.25) * t7
                             + T::from_f64(1.0 / 6.0) * t8)) + T::from_f64(0.25) * t41),
             t9 + t10 - m * (t44 * t5 + t22 * t6),
-            -(t13 + t11 + t31 * t42 * (T::from_f64(1.0) + T::from_f64(1.0))),
+            -t13 - t11 - t31 * t42 * (T::from_f64(1.0) + T::from_f64(1.0)),
             f_z - m * g + m * t5 * t46,
         );
         (a, b)
@@ -325,17 +325,17 @@ pub mod rigid_peg {
             -(f * (t_b2_eta * bb1 + t27 * t_b2_n)),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            -(f * t_k_eta + cos_gamma),
-            -(f * t_b1_eta + t28),
-            -(f * t_b2_eta + t28),
+            -(f * t_k_eta) - cos_gamma,
+            -(f * t_b1_eta) - t28,
+            -(f * t_b2_eta) - t28,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -t14,
-            -(f * t_b1_n - t34),
-            -(f * t_b2_n + t34),
+            t34 - f * t_b1_n,
+            -(f * t_b2_n) - t34,
             T::from_f64(0.0),
             T::from_f64(0.0),
-            -(f * t_k_z + sin_gamma),
+            -(f * t_k_z) - sin_gamma,
             -(f * t_b1_z) + t26,
             -(f * t_b2_z) + t26,
         );
@@ -362,7 +362,7 @@ pub mod rigid_peg {
                 + m
                     * (-(t49 * ((T::from_f64(1.0) + T::from_f64(1.0)) * t41))
                         + t22 * psiddot),
-            -(-f_z + m * g + m * (-(t5 * t45) + gammaddot * t39)),
+            f_z - m * g - m * (-(t5 * t45) + gammaddot * t39),
         );
         (a, b)
     }
@@ -420,10 +420,10 @@ pub mod rigid_peg {
             -t13,
             -psidot * (t1 + t6),
             gammadot * (t12 - t6),
-            -(t13 + t11),
+            -t13 - t11,
             t8,
             t14,
-            -(t13 - t11),
+            t11 - t13,
             t8,
             t14,
         )
@@ -536,7 +536,7 @@ pub mod rigid_peg {
                 T::from_f64(2.0) * bb1 / d_hole,
                 T::from_f64(2.0) * s1 / d_hole,
                 sin_gamma * (-(T::from_f64(0.5) * h) + a2),
-                -(neg_a1 - cos_gamma * lever),
+                cos_gamma * lever - neg_a1,
                 -T::from_f64(2.0) * t3 * t2,
                 T::from_f64(2.0) * t5,
                 -s1,

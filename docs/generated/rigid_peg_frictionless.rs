@@ -157,7 +157,7 @@ pub mod rigid_peg_frictionless {
                         * (T::from_f64(0.5) * t23 - T::from_f64(0.25) * t7
                             + T::from_f64(1.0 / 6.0) * t8)) + T::from_f64(0.25) * t37),
             t9 + t10 - m * (t40 * t5 + t20 * t6),
-            -(t13 + t11 + t27 * t38 * (T::from_f64(1.0) + T::from_f64(1.0))),
+            -t13 - t11 - t27 * t38 * (T::from_f64(1.0) + T::from_f64(1.0)),
             f_z - m * g + m * t5 * t41,
         );
         (a, b)
@@ -312,7 +312,7 @@ pub mod rigid_peg_frictionless {
                 + m
                     * (-(t43 * ((T::from_f64(1.0) + T::from_f64(1.0)) * t37))
                         + t20 * psiddot),
-            -(-f_z + m * g + m * (-(t5 * t40) + gammaddot * t35)),
+            f_z - m * g - m * (-(t5 * t40) + gammaddot * t35),
         );
         (a, b)
     }
@@ -370,10 +370,10 @@ pub mod rigid_peg_frictionless {
             -t13,
             -psidot * (t1 + t6),
             gammadot * (t12 - t6),
-            -(t13 + t11),
+            -t13 - t11,
             t8,
             t14,
-            -(t13 - t11),
+            t11 - t13,
             t8,
             t14,
         )

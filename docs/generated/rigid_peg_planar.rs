@@ -108,10 +108,10 @@ pub mod rigid_peg_planar {
             -T::from_f64(2.0)
                 * (f * (t22 * t_b_eta + (half_d + t17 - t6 + t11) * t_b_z)),
             m * t19,
-            -(f * t_k_eta + T::from_f64(1.0) - T::from_f64(2.0) * t0),
-            -(T::from_f64(2.0) * f * t_b_eta - T::from_f64(2.0) * t11 / ob),
+            -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t0,
+            T::from_f64(2.0) * t11 / ob - T::from_f64(2.0) * f * t_b_eta,
             m * t18,
-            -(f * t_k_z + sin_gamma),
+            -(f * t_k_z) - sin_gamma,
             -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * neg_a1 / ob,
         );
         let b = Vector3::new(
@@ -121,7 +121,7 @@ pub mod rigid_peg_planar {
                         * (T::from_f64(4.0) * t24 - T::from_f64(2.0) * t25
                             - (T::from_f64(2.0) * t24 - t25)) * t3 + g * t18) + f_z * t18
                 + f_x * t19,
-            -(-f_x + t12 * t21),
+            f_x - t12 * t21,
             f_z - m * g + t12 * t23,
         );
         (a, b)
@@ -214,10 +214,10 @@ pub mod rigid_peg_planar {
             -T::from_f64(2.0)
                 * (f * (t21 * t_b_eta + (half_d + t16 - t6 + t11) * t_b_z)),
             T::from_f64(0.0),
-            -(f * t_k_eta + T::from_f64(1.0) - T::from_f64(2.0) * t0),
-            -(T::from_f64(2.0) * f * t_b_eta - T::from_f64(2.0) * t11 / ob),
+            -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t0,
+            T::from_f64(2.0) * t11 / ob - T::from_f64(2.0) * f * t_b_eta,
             T::from_f64(0.0),
-            -(f * t_k_z + sin_gamma),
+            -(f * t_k_z) - sin_gamma,
             -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * neg_a1 / ob,
         );
         let b = Vector3::new(
@@ -229,8 +229,8 @@ pub mod rigid_peg_planar {
                         * (T::from_f64(1.0 / 12.0)
                             * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t18 * t18
                             + t17 * t17))) + f_z * t17 + f_x * t18,
-            -(-f_x + m * (t20 * t3 + gammaddot * t18)),
-            -(-f_z + m * g + m * (-(t3 * t22) + gammaddot * t17)),
+            f_x - m * (t20 * t3 + gammaddot * t18),
+            f_z - m * g - m * (-(t3 * t22) + gammaddot * t17),
         );
         (a, b)
     }

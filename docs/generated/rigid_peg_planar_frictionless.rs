@@ -94,7 +94,7 @@ pub mod rigid_peg_planar_frictionless {
             T::from_f64(0.0),
             T::from_f64(0.0),
             m * t17,
-            -(T::from_f64(1.0) - T::from_f64(2.0) * t0),
+            T::from_f64(2.0) * t0 - T::from_f64(1.0),
             T::from_f64(2.0) * (t1 * (t4 + t6 * cos_gamma)) * t9,
             m * t16,
             -sin_gamma,
@@ -107,7 +107,7 @@ pub mod rigid_peg_planar_frictionless {
                         * (T::from_f64(4.0) * t21 - T::from_f64(2.0) * t22
                             - (T::from_f64(2.0) * t21 - t22)) * t3 + g * t16) + f_z * t16
                 + f_x * t17,
-            -(-f_x + t10 * t19),
+            f_x - t10 * t19,
             f_z - m * g + t10 * t20,
         );
         (a, b)
@@ -188,7 +188,7 @@ pub mod rigid_peg_planar_frictionless {
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            -(T::from_f64(1.0) - T::from_f64(2.0) * t0),
+            T::from_f64(2.0) * t0 - T::from_f64(1.0),
             T::from_f64(2.0) * (t1 * (t4 + t6 * cos_gamma)) * t9,
             T::from_f64(0.0),
             -sin_gamma,
@@ -203,8 +203,8 @@ pub mod rigid_peg_planar_frictionless {
                         * (T::from_f64(1.0 / 12.0)
                             * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t16 * t16
                             + t15 * t15))) + f_z * t15 + f_x * t16,
-            -(-f_x + m * (t18 * t3 + gammaddot * t16)),
-            -(-f_z + m * g + m * (-(t3 * t19) + gammaddot * t15)),
+            f_x - m * (t18 * t3 + gammaddot * t16),
+            f_z - m * g - m * (-(t3 * t19) + gammaddot * t15),
         );
         (a, b)
     }
