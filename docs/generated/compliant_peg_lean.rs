@@ -53,7 +53,7 @@ pub mod compliant_peg_lean {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 59 add/sub, 81 mul, 5 div, 2 sqrt, 4 transcendental, 8 branches; 48 `let`s.
+    /// 58 add/sub, 81 mul, 5 div, 2 sqrt, 4 transcendental, 8 branches; 48 `let`s.
     #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
@@ -88,43 +88,43 @@ pub mod compliant_peg_lean {
         let t8 = t5 * t6;
         let t9 = l_c - rho_p;
         let t10 = r - rho_p;
-        let t11 = cos_theta * (r - T::from_f64(2.0) * rho_p * t7)
-            + sin_theta * (l_c - rho_p + rho_p * sin_theta);
-        let t12 = T::from_f64(1.0) - T::from_f64(2.0) * t7;
-        let slip_wall_right = zdot - thetadot * t11;
-        let t13 = v_s.hypot(slip_wall_right);
+        let t11 = -rho_h + z;
+        let delta_edge_left = r + t2 - x + sin_theta * t11 - T::from_f64(2.0) * t3 * t7;
+        let pen_edge_left = delta_edge_left.max0();
+        let t12 = pen_edge_left * pen_edge_left.sqrt();
+        let t13 = T::from_f64(1.0) - T::from_f64(2.0) * t7;
+        let t14 = cos_theta * t11;
+        let t15 = k_edge * t12;
+        let step_delta_edge_left = delta_edge_left.step();
+        let t16 = sin_theta * (l_c - rho_p + rho_p * sin_theta)
+            + cos_theta * (r - T::from_f64(2.0) * rho_p * t7);
+        let slip_wall_right = zdot - thetadot * t16;
+        let t17 = v_s.hypot(slip_wall_right);
         let delta_wall_right = r + t2 + x + sin_theta * t9 - T::from_f64(2.0) * t7 * t10;
         let pen_wall_right = delta_wall_right.max0();
-        let t14 = pen_wall_right * pen_wall_right.sqrt();
-        let elastic_wall_right = k_wall * t14;
+        let t18 = pen_wall_right * pen_wall_right.sqrt();
+        let elastic_wall_right = k_wall * t18;
         let step_delta_wall_right = delta_wall_right.step();
-        let t15 = -rho_h + z;
-        let delta_edge_left = r + t2 - x + sin_theta * t15 - T::from_f64(2.0) * t3 * t7;
-        let pen_edge_left = delta_edge_left.max0();
-        let t16 = pen_edge_left * pen_edge_left.sqrt();
-        let t17 = cos_theta * t15;
-        let t18 = k_edge * t16;
-        let step_delta_edge_left = delta_edge_left.step();
         let t19 = cos_theta * t9 - T::from_f64(2.0) * t8 * t10;
         let delta_rate_wall_right = xdot + thetadot * t19;
         let t20 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
-        let t21 = T::from_f64(1.0) - t20;
-        let t22 = sin_theta * t3 - t17;
-        let t23 = cos_theta * t22 + r * sin_theta;
-        let t24 = -(sin_theta * t22) + r * cos_theta;
-        let slip_edge_left = sin_theta * (xdot + thetadot * t23)
-            + cos_theta * (zdot + thetadot * t24);
-        let t25 = t17 - T::from_f64(2.0) * t8 * t3;
-        let delta_rate_edge_left = -(xdot * t12) + zdot * sin_theta + thetadot * t25;
-        let t26 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
-        let t27 = -t26 + T::from_f64(1.0);
-        let t28 = v_s.hypot(slip_edge_left);
-        let t29 = -step_delta_edge_left + t27;
-        let t30 = t26 / t28;
-        let t31 = t30 * (mu * slip_edge_left);
-        let t32 = t20 / t13;
-        let t33 = elastic_wall_right * t32;
-        let t34 = mu * slip_wall_right;
+        let t21 = sin_theta * t3 - t14;
+        let t22 = cos_theta * t21 + r * sin_theta;
+        let t23 = -(sin_theta * t21) + r * cos_theta;
+        let slip_edge_left = sin_theta * (xdot + thetadot * t22)
+            + cos_theta * (zdot + thetadot * t23);
+        let t24 = t14 - T::from_f64(2.0) * t8 * t3;
+        let delta_rate_edge_left = -(xdot * t13) + zdot * sin_theta + thetadot * t24;
+        let t25 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
+        let t26 = v_s.hypot(slip_edge_left);
+        let t27 = -t25 + T::from_f64(1.0);
+        let t28 = -t20 + T::from_f64(1.0);
+        let t29 = t25 / t26;
+        let t30 = t29 * (mu * slip_edge_left);
+        let t31 = t20 / t17;
+        let t32 = elastic_wall_right * t31;
+        let t33 = mu * slip_wall_right;
+        let t34 = step_delta_edge_left - t27;
         SMatrix::<
             T,
             8,
@@ -134,23 +134,23 @@ pub mod compliant_peg_lean {
                 xdot,
                 zdot,
                 thetadot,
-                (-(t18 * (t12 * t29 + t31 * sin_theta))
+                (-(t15 * (-(t13 * t34) + t30 * sin_theta))
                     - elastic_wall_right
                         * (-T::from_f64(1.0) + step_delta_wall_right + t20) + t0 + t1)
                     / m,
-                -(sin_theta * (-(t18 * (t27 - step_delta_edge_left)) + f2)
-                    + cos_theta * (-f1 + t31 * t18) + t33 * t34) / m,
-                (m_2 - t18 * (-(t25 * t29) + t31 * (sin_theta * t23 + cos_theta * t24))
+                -(sin_theta * (t15 * t34 + f2) + cos_theta * (-f1 + t30 * t15)
+                    + t32 * t33) / m,
+                (m_2 - t15 * (t24 * t34 + t30 * (sin_theta * t22 + cos_theta * t23))
                     + elastic_wall_right
-                        * (-(t19 * (step_delta_wall_right - t21)) + t34 * t32 * t11))
+                        * (-(t19 * (step_delta_wall_right - t28)) + t33 * t31 * t16))
                     / j,
                 xdot * (t0 + t1) + zdot * (f1 * cos_theta - f2 * sin_theta)
                     + thetadot * m_2,
                 mu
-                    * (t30 * t18 * (slip_edge_left * slip_edge_left)
-                        + t33 * (slip_wall_right * slip_wall_right))
-                    - t18 * delta_rate_edge_left * t27
-                    - elastic_wall_right * delta_rate_wall_right * t21,
+                    * (t29 * t15 * (slip_edge_left * slip_edge_left)
+                        + t32 * (slip_wall_right * slip_wall_right))
+                    - t15 * delta_rate_edge_left * t27
+                    - elastic_wall_right * delta_rate_wall_right * t28,
             ],
         )
     }
@@ -164,7 +164,7 @@ pub mod compliant_peg_lean {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 203 add/sub, 443 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 165 `let`s.
+    /// 199 add/sub, 442 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 167 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -205,154 +205,156 @@ pub mod compliant_peg_lean {
         let t14 = sin_theta * t12;
         let t15 = l_c - rho_p + rho_p * sin_theta;
         let t16 = r - T::from_f64(2.0) * rho_p * t10;
-        let t17 = T::from_f64(1.0) / m;
-        let t18 = T::from_f64(1.0) / j;
-        let t19 = sin_theta * sin_theta;
-        let t20 = cos_theta * cos_theta;
-        let t21 = cos_theta * t16 + sin_theta * t15;
-        let t22 = T::from_f64(1.0) - T::from_f64(2.0) * t10;
-        let delta_wall_right = r + t5 + x + t14 - T::from_f64(2.0) * t10 * t13;
-        let pen_wall_right = delta_wall_right.max0();
-        let t23 = pen_wall_right * pen_wall_right.sqrt();
-        let elastic_wall_right = k_wall * t23;
-        let step_delta_wall_right = delta_wall_right.step();
+        let t17 = cos_theta * t16;
+        let t18 = sin_theta * t15;
+        let t19 = T::from_f64(1.0) / m;
+        let t20 = T::from_f64(1.0) / j;
+        let t21 = sin_theta * sin_theta;
+        let t22 = cos_theta * cos_theta;
+        let t23 = t17 + t18;
         let t24 = -rho_h + z;
         let t25 = sin_theta * t24;
         let delta_edge_left = r + t5 - x + t25 - T::from_f64(2.0) * t6 * t10;
         let pen_edge_left = delta_edge_left.max0();
         let t26 = pen_edge_left * pen_edge_left.sqrt();
-        let t27 = cos_theta * t24;
-        let t28 = k_edge * t26;
+        let t27 = T::from_f64(1.0) - T::from_f64(2.0) * t10;
+        let t28 = cos_theta * t24;
+        let t29 = k_edge * t26;
         let step_delta_edge_left = delta_edge_left.step();
-        let t29 = cos_theta * t12 - T::from_f64(2.0) * t11 * t13;
-        let delta_rate_wall_right = xdot + thetadot * t29;
-        let t30 = T::from_f64(1.0) + hc_alpha * delta_rate_wall_right;
-        let t31 = t30.max0();
-        let t32 = T::from_f64(1.0) - t31;
-        let t33 = sin_theta * t6 - t27;
-        let t34 = cos_theta * t33;
-        let t35 = t34 + r * sin_theta;
-        let t36 = xdot + thetadot * t35;
-        let t37 = t27 - T::from_f64(2.0) * t11 * t6;
-        let delta_rate_edge_left = -(xdot * t22) + zdot * sin_theta + thetadot * t37;
-        let t38 = T::from_f64(1.0) + hc_alpha * delta_rate_edge_left;
-        let t39 = t38.max0();
-        let t40 = -t39 + T::from_f64(1.0);
-        let t41 = -step_delta_edge_left + t40;
-        let t42 = t22 * t22;
-        let sqrt_pen_wall_right = pen_wall_right.sqrt();
-        let t43 = step_delta_wall_right * step_delta_wall_right;
+        let t30 = t18 + t17;
+        let delta_wall_right = r + t5 + x + t14 - T::from_f64(2.0) * t10 * t13;
+        let pen_wall_right = delta_wall_right.max0();
+        let t31 = pen_wall_right * pen_wall_right.sqrt();
+        let elastic_wall_right = k_wall * t31;
+        let step_delta_wall_right = delta_wall_right.step();
+        let t32 = cos_theta * t12 - T::from_f64(2.0) * t11 * t13;
+        let delta_rate_wall_right = xdot + thetadot * t32;
+        let t33 = T::from_f64(1.0) + hc_alpha * delta_rate_wall_right;
+        let t34 = t33.max0();
+        let t35 = sin_theta * t6 - t28;
+        let t36 = cos_theta * t35;
+        let t37 = t36 + r * sin_theta;
+        let t38 = xdot + thetadot * t37;
+        let t39 = t28 - T::from_f64(2.0) * t11 * t6;
+        let delta_rate_edge_left = -(xdot * t27) + zdot * sin_theta + thetadot * t39;
+        let t40 = T::from_f64(1.0) + hc_alpha * delta_rate_edge_left;
+        let t41 = t40.max0();
+        let t42 = -t41 + T::from_f64(1.0);
+        let t43 = -t34 + T::from_f64(1.0);
+        let t44 = step_delta_edge_left - t42;
+        let t45 = t26 * t44;
         let sqrt_pen_edge_left = pen_edge_left.sqrt();
-        let t44 = step_delta_edge_left * step_delta_edge_left;
-        let t45 = r + cos_theta * t6 + t25;
-        let t46 = -T::from_f64(1.5) * t43;
-        let t47 = thetadot * t21;
-        let t48 = t10 - t9 * t9;
-        let t49 = -(t6 * t48) + t25;
-        let t50 = -(t13 * t48) + t14;
-        let t51 = t3 - t4;
-        let t52 = t30.step();
-        let t53 = t29 * t29;
-        let slip_wall_right = zdot - t47;
-        let t54 = v_s.hypot(slip_wall_right);
-        let t55 = T::from_f64(1.0) / t54;
-        let t56 = slip_wall_right * slip_wall_right;
-        let t57 = sin_theta * t33;
-        let t58 = -t57 + r * cos_theta;
-        let t59 = zdot + thetadot * t58;
-        let slip_edge_left = sin_theta * t36 + cos_theta * t59;
-        let t60 = v_s.hypot(slip_edge_left);
-        let t61 = T::from_f64(1.0) / t60;
-        let t62 = sin_theta * t35 + cos_theta * t58;
-        let t63 = slip_edge_left * slip_edge_left;
-        let t64 = T::from_f64(1.0) / (t54 * t54 * t54);
-        let t65 = hc_alpha * t52;
-        let t66 = elastic_wall_right * t65;
-        let t67 = t65 * t29;
-        let t68 = T::from_f64(1.5) * t31;
-        let t69 = t68 - T::from_f64(1.5);
-        let t70 = t38.step();
-        let t71 = -T::from_f64(1.5) * t39;
-        let t72 = step_delta_edge_left * sqrt_pen_edge_left;
-        let t73 = t72 * t22;
-        let t74 = thetadot * t26;
-        let t75 = t11 * t74;
-        let t76 = hc_alpha * t70;
-        let t77 = T::from_f64(2.0) * t75 * t76;
-        let t78 = t73 * (t71 + T::from_f64(1.5)) + t77;
-        let t79 = slip_edge_left * t61;
-        let t80 = t76 * t79;
-        let t81 = t80 * t74;
-        let t82 = mu * sin_theta;
-        let t83 = t74 * cos_theta;
-        let t84 = t83 * t76;
-        let t85 = sqrt_pen_edge_left * t44;
-        let t86 = T::from_f64(1.5) * t85 * t22;
-        let t87 = mu * cos_theta;
-        let t88 = mu * t19;
-        let t89 = t79 * t39;
-        let t90 = sin_theta * t45 + t34;
-        let t91 = T::from_f64(1.0) / (t60 * t60 * t60);
-        let t92 = -T::from_f64(1.5) * t31;
-        let t93 = t63 * t91;
-        let t94 = t39 * (t61 - t93);
-        let t95 = t80 * t37;
-        let t96 = t94 * t62 + t95;
-        let t97 = t89 * step_delta_edge_left;
-        let t98 = t56 * t64;
-        let t99 = t26 * t41;
-        let t100 = t76 * t22;
-        let t101 = t80 * t22;
-        let t102 = t80 * sin_theta;
-        let t103 = t31 * (t55 - t98);
-        let t104 = t76 * t37;
-        let t105 = t104 * t28 * sin_theta;
-        let t106 = slip_wall_right * t55;
-        let t107 = mu * t62;
-        let t108 = sqrt_pen_edge_left * (t37 * t44 + t97 * t107);
-        let t109 = mu * t31;
-        let t110 = t106 * t21;
-        let t111 = t37 * t37;
-        let t112 = step_delta_wall_right * sqrt_pen_wall_right;
-        let t113 = t112 * t29;
-        let t114 = t72 * t37;
-        let t115 = t89 * t114;
-        let t116 = t104 * t22;
-        let t117 = -T::from_f64(1.5) * t73 * t39;
-        let t118 = t61 * t63;
-        let t119 = t118 * mu;
-        let t120 = t55 * t56;
-        let t121 = t112 * k_wall;
-        let t122 = t72 * sin_theta;
-        let t123 = t91 * (slip_edge_left * slip_edge_left * slip_edge_left);
-        let t124 = t39 * (-t123 + T::from_f64(2.0) * t79);
-        let t125 = t64 * (slip_wall_right * slip_wall_right * slip_wall_right);
-        let t126 = t39 * t62;
-        let t127 = t31 * t21;
-        let t128 = T::from_f64(1.5) + t71;
-        let t129 = -(t122 * t128) + t84;
-        let t130 = T::from_f64(2.0) * t11 * xdot + zdot * cos_theta - thetadot * t49;
-        let t131 = t26 * t130;
-        let t132 = t76 * t131;
-        let t133 = -(t114 * t128) + t132;
-        let t134 = -(cos_theta * t45) + t57;
-        let t135 = cos_theta * (-t36 + thetadot * t90)
-            + sin_theta * (t59 + thetadot * t134);
-        let t136 = t93 * t135;
-        let t137 = T::from_f64(1.5) * t85 * t37 + t133;
-        let t138 = thetadot * t23;
-        let t139 = t65 * t50;
-        let t140 = t138 * t139;
-        let t141 = t94 * t87;
-        let t142 = sin_theta * t16
-            - cos_theta * (rho_p * (sin_theta - T::from_f64(2.0) * t11) + t15);
-        let t143 = t80 * t130;
-        let t144 = t113 * t31;
-        let t145 = t103 * t21;
-        let t146 = t26 * (step_delta_edge_left - t40 + t107 * t80 * thetadot);
-        let t147 = t113 * (t92 + T::from_f64(1.5)) + t140;
-        let t148 = t26 * t135;
-        let t149 = t138 * t142;
+        let t46 = t27 * t27;
+        let t47 = step_delta_edge_left * step_delta_edge_left;
+        let sqrt_pen_wall_right = pen_wall_right.sqrt();
+        let t48 = step_delta_wall_right * step_delta_wall_right;
+        let t49 = r + cos_theta * t6 + t25;
+        let t50 = -T::from_f64(1.5) * t48;
+        let t51 = thetadot * t30;
+        let t52 = t10 - t9 * t9;
+        let t53 = -(t6 * t52) + t25;
+        let t54 = -(t13 * t52) + t14;
+        let t55 = t3 - t4;
+        let t56 = t33.step();
+        let t57 = t32 * t32;
+        let t58 = sin_theta * t35;
+        let t59 = -t58 + r * cos_theta;
+        let t60 = zdot + thetadot * t59;
+        let slip_edge_left = sin_theta * t38 + cos_theta * t60;
+        let t61 = v_s.hypot(slip_edge_left);
+        let t62 = T::from_f64(1.0) / t61;
+        let t63 = sin_theta * t37 + cos_theta * t59;
+        let t64 = slip_edge_left * slip_edge_left;
+        let slip_wall_right = zdot - t51;
+        let t65 = v_s.hypot(slip_wall_right);
+        let t66 = T::from_f64(1.0) / t65;
+        let t67 = slip_wall_right * slip_wall_right;
+        let t68 = t40.step();
+        let t69 = T::from_f64(1.0) / (t61 * t61 * t61);
+        let t70 = T::from_f64(1.0) / (t65 * t65 * t65);
+        let t71 = hc_alpha * t68;
+        let t72 = t71 * t39;
+        let t73 = t72 * t29 * sin_theta;
+        let t74 = t39 * t39;
+        let t75 = hc_alpha * t56;
+        let t76 = elastic_wall_right * t75;
+        let t77 = t75 * t32;
+        let t78 = T::from_f64(1.5) * t34;
+        let t79 = t78 - T::from_f64(1.5);
+        let t80 = -(T::from_f64(1.5) * t41) + T::from_f64(1.5);
+        let t81 = step_delta_edge_left * sqrt_pen_edge_left;
+        let t82 = t81 * t80;
+        let t83 = thetadot * t26;
+        let t84 = t11 * t83;
+        let t85 = T::from_f64(2.0) * t84 * t71;
+        let t86 = t82 * t27 + t85;
+        let t87 = slip_edge_left * t62;
+        let t88 = t71 * t87;
+        let t89 = t88 * t83;
+        let t90 = mu * sin_theta;
+        let t91 = t83 * cos_theta;
+        let t92 = t91 * t71;
+        let t93 = sqrt_pen_edge_left * t47;
+        let t94 = T::from_f64(1.5) * t93 * t27;
+        let t95 = mu * cos_theta;
+        let t96 = mu * t21;
+        let t97 = t87 * t41;
+        let t98 = sin_theta * t49 + t36;
+        let t99 = -T::from_f64(1.5) * t34;
+        let t100 = t64 * t69;
+        let t101 = t41 * (t62 - t100);
+        let t102 = t88 * t39;
+        let t103 = t101 * t63 + t102;
+        let t104 = t97 * step_delta_edge_left;
+        let t105 = t67 * t70;
+        let t106 = t88 * t27;
+        let t107 = t88 * sin_theta;
+        let t108 = t34 * (t66 - t105);
+        let t109 = slip_wall_right * t66;
+        let t110 = mu * t63;
+        let t111 = sqrt_pen_edge_left * (t39 * t47 + t104 * t110);
+        let t112 = mu * t34;
+        let t113 = t109 * t30;
+        let t114 = step_delta_wall_right * sqrt_pen_wall_right;
+        let t115 = t114 * t32;
+        let t116 = t81 * t39;
+        let t117 = t97 * t116;
+        let t118 = t72 * t27;
+        let t119 = t81 * t41;
+        let t120 = -(T::from_f64(1.5) * t119 * t27) + t85;
+        let t121 = t62 * t64;
+        let t122 = t121 * mu;
+        let t123 = t66 * t67;
+        let t124 = t114 * k_wall;
+        let t125 = t69 * (slip_edge_left * slip_edge_left * slip_edge_left);
+        let t126 = t41 * (-t125 + T::from_f64(2.0) * t87);
+        let t127 = t70 * (slip_wall_right * slip_wall_right * slip_wall_right);
+        let t128 = t41 * t63;
+        let t129 = t34 * t30;
+        let t130 = -(t82 * sin_theta) + t92;
+        let t131 = T::from_f64(2.0) * t11 * xdot + zdot * cos_theta - thetadot * t53;
+        let t132 = t26 * t131;
+        let t133 = t71 * t132;
+        let t134 = -(t116 * t80) + t133;
+        let t135 = -(cos_theta * t49) + t58;
+        let t136 = cos_theta * (-t38 + thetadot * t98)
+            + sin_theta * (thetadot * t135 + t60);
+        let t137 = t100 * t136;
+        let t138 = T::from_f64(1.5) * t93 * t39 + t134;
+        let t139 = thetadot * t31;
+        let t140 = t75 * t54;
+        let t141 = t139 * t140;
+        let t142 = -t101 * t95 + t71 * t27;
+        let t143 = -(cos_theta * (rho_p * (sin_theta - T::from_f64(2.0) * t11) + t15))
+            + sin_theta * t16;
+        let t144 = t88 * t131;
+        let t145 = t115 * t34;
+        let t146 = t108 * t30;
+        let t147 = t26 * (step_delta_edge_left - t42 + t110 * t88 * thetadot);
+        let t148 = t115 * (t99 + T::from_f64(1.5)) + t141;
+        let t149 = t26 * t136;
+        let t150 = t139 * t143;
+        let t151 = -t71 * (t122 + delta_rate_edge_left) + t42;
         SMatrix::<
             T,
             8,
@@ -383,165 +385,160 @@ pub mod compliant_peg_lean {
                 T::from_f64(1.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                -t17
+                -t19
                     * (k_edge
-                        * (-(T::from_f64(1.5) * (-(t42 * t44) + t97 * t82 * t22)
-                            * sqrt_pen_edge_left) - t22 * t78
-                            + T::from_f64(2.0) * t81 * t82 * t11)
+                        * (-(T::from_f64(1.5) * (-(t46 * t47) + t104 * t90 * t27)
+                            * sqrt_pen_edge_left) - t27 * t86
+                            + T::from_f64(2.0) * t89 * t90 * t11)
                         + sqrt_pen_wall_right
-                            * (step_delta_wall_right * (-T::from_f64(1.5) + t68)
-                                + T::from_f64(1.5) * t43) * k_wall),
+                            * (step_delta_wall_right * (-T::from_f64(1.5) + t78)
+                                + T::from_f64(1.5) * t48) * k_wall),
                 k_edge
-                    * (sin_theta * (t86 - t81 * t87) + t22 * t129
-                        - T::from_f64(1.5) * t88 * t89 * t72) * t17,
-                -t17
+                    * (sin_theta * (t94 - t89 * t95) + t27 * t130
+                        - T::from_f64(1.5) * t96 * t97 * t81) * t19,
+                -t19
                     * (k_edge
                         * (t26
                             * (mu
-                                * (t39
-                                    * (-(t61
-                                        * (-(cos_theta * slip_edge_left) + sin_theta * t135))
-                                        + t136 * sin_theta) + t102 * t130)
-                                - T::from_f64(2.0) * t11 * t41) - t22 * t137
-                            + T::from_f64(1.5) * t115 * t82)
+                                * (t41
+                                    * (-(t62
+                                        * (-(cos_theta * slip_edge_left) + sin_theta * t136))
+                                        + t137 * sin_theta) + t107 * t131)
+                                + T::from_f64(2.0) * t11 * t44) - t27 * t138
+                            + T::from_f64(1.5) * t117 * t90)
                         - k_wall
                             * (sqrt_pen_wall_right
-                                * (step_delta_wall_right * (T::from_f64(1.5) + t92) + t46)
-                                * t29 + t140) - t3 + t4),
-                -t17 * (-(t28 * (mu * (-(t94 * t19) + t102 * t22) - t76 * t42)) + t66),
-                -(t28 * (-(sin_theta * (t100 - t141)) + t88 * t80)) * t17,
-                -t17 * (-(t28 * (t116 - t82 * t96)) + t67 * elastic_wall_right),
+                                * (step_delta_wall_right * (T::from_f64(1.5) + t99) + t50)
+                                * t32 + t141) - t3 + t4),
+                -t19 * (-(t29 * (mu * (-(t101 * t21) + t107 * t27) - t71 * t46)) + t76),
+                -(t29 * (-(sin_theta * t142) + t96 * t88)) * t19,
+                -t19 * (-(t29 * (-(t90 * t103) + t118)) + t77 * elastic_wall_right),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                -t17
-                    * (-(k_edge * (sin_theta * (t86 - t78) - t79 * (t77 + t117) * t87))
-                        + T::from_f64(1.5) * t121 * t109 * t106),
+                -t19
+                    * (-(k_edge * (sin_theta * (t94 - t86) - t87 * t120 * t95))
+                        + T::from_f64(1.5) * t124 * t112 * t109),
                 -(k_edge
-                    * (T::from_f64(1.5) * (t44 * t19 + t97 * t87 * sin_theta)
-                        * sqrt_pen_edge_left + sin_theta * t129 + t81 * mu * t20)) * t17,
-                -t17
+                    * (T::from_f64(1.5) * (t47 * t21 + t104 * t95 * sin_theta)
+                        * sqrt_pen_edge_left + sin_theta * t130 + t89 * mu * t22)) * t19,
+                -t19
                     * (mu
                         * (k_edge
                             * (t26
-                                * (t39
-                                    * (-(t61 * (sin_theta * slip_edge_left + cos_theta * t135))
-                                        + t136 * cos_theta) + t143 * cos_theta)
-                                + T::from_f64(1.5) * t115 * cos_theta)
+                                * (t41
+                                    * (-(t62 * (sin_theta * slip_edge_left + cos_theta * t136))
+                                        + t137 * cos_theta) + t144 * cos_theta)
+                                + T::from_f64(1.5) * t117 * cos_theta)
                             + k_wall
-                                * (-(t138 * (-(t103 * t142) + t139 * t106))
-                                    + T::from_f64(1.5) * t144 * t106))
-                        + k_edge * (-(t99 * cos_theta) + sin_theta * t137) + t0 + t1),
-                -t17
-                    * (-(t28 * (sin_theta * (-t141 + t100) + t101 * t87))
-                        + t66 * t106 * mu),
-                -t17
+                                * (-(t139 * (-(t108 * t143) + t140 * t109))
+                                    + T::from_f64(1.5) * t145 * t109))
+                        + k_edge * (t45 * cos_theta + sin_theta * t138) + t0 + t1),
+                -t19 * (-(t29 * (sin_theta * t142 + t106 * t95)) + t76 * t109 * mu),
+                -t19
                     * (mu
-                        * (t28 * (t94 * t20 + t102 * cos_theta)
-                            + t103 * elastic_wall_right) + t28 * t76 * t19),
-                -t17
+                        * (t29 * (t101 * t22 + t107 * cos_theta)
+                            + t108 * elastic_wall_right) + t29 * t71 * t21),
+                -t19
                     * (mu
-                        * (cos_theta * t96 * t28
-                            + elastic_wall_right * (-t145 + t67 * t106)) + t105),
+                        * (cos_theta * t103 * t29
+                            + elastic_wall_right * (-t146 + t77 * t109)) + t73),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t18
+                t20
                     * (k_edge
-                        * (-(T::from_f64(2.0) * t146 * t11)
-                            + T::from_f64(1.5) * t108 * t22 - t37 * t78)
+                        * (-(T::from_f64(2.0) * t147 * t11)
+                            + T::from_f64(1.5) * t111 * t27 - t39 * t86)
                         + sqrt_pen_wall_right
-                            * (t29 * (t46 - t69 * step_delta_wall_right)
-                                + T::from_f64(1.5) * t109 * t110 * step_delta_wall_right)
+                            * (t32 * (t50 - t79 * step_delta_wall_right)
+                                + T::from_f64(1.5) * t112 * t113 * step_delta_wall_right)
                             * k_wall),
                 k_edge
-                    * (-(t146 * cos_theta) - T::from_f64(1.5) * t108 * sin_theta
-                        - t37 * t129) * t18,
-                -t18
+                    * (-(t147 * cos_theta) - T::from_f64(1.5) * t111 * sin_theta
+                        - t39 * t130) * t20,
+                -t20
                     * (mu
                         * (k_edge
                             * (t26
-                                * (-(t39
-                                    * (t61
-                                        * (t62 * t135
+                                * (-(t41
+                                    * (t62
+                                        * (t63 * t136
                                             + slip_edge_left
-                                                * (-(cos_theta * (t35 - t90)) + sin_theta * (t134 + t58)))
-                                        - t136 * t62)) + t143 * t62)
-                                + T::from_f64(1.5) * t115 * t62)
+                                                * (-(cos_theta * (t37 - t98)) + sin_theta * (t135 + t59)))
+                                        - t137 * t63)) + t144 * t63)
+                                + T::from_f64(1.5) * t117 * t63)
                             - k_wall
-                                * (-(t23
-                                    * (t142 * (-(t55 * (-slip_wall_right + t47)) + t47 * t98)
-                                        * t31 + t139 * t110 * thetadot))
-                                    + T::from_f64(1.5) * t144 * t110))
+                                * (-(t31
+                                    * (t143 * (-(t66 * (-slip_wall_right + t51)) + t51 * t105)
+                                        * t34 + t140 * t113 * thetadot))
+                                    + T::from_f64(1.5) * t145 * t113))
                         + k_edge
-                            * (t99 * t49 + T::from_f64(1.5) * t85 * t111 + t37 * t133)
+                            * (-(t45 * t53) + T::from_f64(1.5) * t93 * t74 + t39 * t134)
                         + k_wall
-                            * (-((step_delta_wall_right - t32) * t50 * t23)
-                                + T::from_f64(1.5) * sqrt_pen_wall_right * t43 * t53
-                                - t29 * t147)),
-                t18
-                    * (t28 * (t107 * (-(t94 * sin_theta) + t101) + t116)
-                        + t66 * (-t29 + t110 * mu)),
-                -t18
+                            * (-((step_delta_wall_right - t43) * t54 * t31)
+                                + T::from_f64(1.5) * sqrt_pen_wall_right * t48 * t57
+                                - t32 * t148)),
+                t20
+                    * (t29 * (t110 * (-(t101 * sin_theta) + t106) + t118)
+                        + t76 * (-t32 + t113 * mu)),
+                -t20
                     * (mu
-                        * (t62 * (t94 * cos_theta + t102) * t28
-                            - t145 * elastic_wall_right) + t105),
-                -t18
+                        * (t63 * (t101 * cos_theta + t107) * t29
+                            - t146 * elastic_wall_right) + t73),
+                -t20
                     * (mu
-                        * (t28 * (t94 * (t62 * t62) + t95 * t62)
-                            - elastic_wall_right * (-(t103 * (t21 * t21)) + t67 * t110))
-                        + hc_alpha
-                            * (t28 * t70 * t111 + elastic_wall_right * t52 * t53)),
+                        * (t29 * (t101 * (t63 * t63) + t102 * t63)
+                            - elastic_wall_right * (-(t108 * (t23 * t23)) + t77 * t113))
+                        + hc_alpha * (t29 * t68 * t74 + elastic_wall_right * t56 * t57)),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                xdot * t51 - zdot * t2,
+                xdot * t55 - zdot * t2,
                 t2,
-                t51,
+                t55,
                 m_2,
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 k_edge
-                    * (t119 * (t117 + t77) - T::from_f64(2.0) * t75 * t40
-                        + delta_rate_edge_left * t78)
-                    + t121
-                        * (T::from_f64(1.5) * t120 * t109 + delta_rate_wall_right * t69),
+                    * (t122 * t120 - T::from_f64(2.0) * t84 * t42
+                        + delta_rate_edge_left * t86)
+                    + t124
+                        * (T::from_f64(1.5) * t123 * t112 + delta_rate_wall_right * t79),
                 k_edge
-                    * (t119 * (T::from_f64(1.5) * t122 * t39 + t84) - t83 * t40
-                        + delta_rate_edge_left * t129),
+                    * (t122 * (T::from_f64(1.5) * t119 * sin_theta + t92) - t91 * t42
+                        + delta_rate_edge_left * t130),
                 mu
                     * (k_edge
-                        * (t39
-                            * (-(t61
-                                * (-(T::from_f64(1.5) * t114 * t63)
-                                    + T::from_f64(2.0) * t148 * slip_edge_left)) + t148 * t123)
-                            + t132 * t118)
+                        * (t41
+                            * (-(t62
+                                * (-(T::from_f64(1.5) * t116 * t64)
+                                    + T::from_f64(2.0) * t149 * slip_edge_left)) + t149 * t125)
+                            + t133 * t121)
                         - k_wall
-                            * (t31
-                                * (-(t55
-                                    * (T::from_f64(1.5) * t113 * t56
-                                        + T::from_f64(2.0) * t149 * slip_wall_right)) + t149 * t125)
-                                + t140 * t120))
-                    - k_edge * (t131 * t40 - delta_rate_edge_left * t133)
-                    + k_wall * (t138 * t32 * t50 - delta_rate_wall_right * t147),
-                t28 * (t22 * (-(t76 * (delta_rate_edge_left + t119)) + t40) + t124 * t82)
+                            * (t34
+                                * (-(t66
+                                    * (T::from_f64(1.5) * t115 * t67
+                                        + T::from_f64(2.0) * t150 * slip_wall_right)) + t150 * t127)
+                                + t141 * t123))
+                    - k_edge * (t132 * t42 - delta_rate_edge_left * t134)
+                    + k_wall * (t139 * t43 * t54 - delta_rate_wall_right * t148),
+                t29 * (t27 * t151 + t126 * t90)
                     + elastic_wall_right
-                        * (t65 * (t120 * mu + delta_rate_wall_right) + t31
+                        * (t75 * (t123 * mu + delta_rate_wall_right) + t34
                             - T::from_f64(1.0)),
-                -(t28
-                    * (sin_theta * (t40 - t76 * (t119 + delta_rate_edge_left))
-                        - t124 * t87))
-                    + elastic_wall_right * (-t125 + T::from_f64(2.0) * t106) * t109,
+                -(t29 * (sin_theta * t151 - t126 * t95))
+                    + elastic_wall_right * (-t127 + T::from_f64(2.0) * t109) * t112,
                 mu
-                    * (-(t28
-                        * (-(t61
-                            * (t104 * t63 + T::from_f64(2.0) * t126 * slip_edge_left))
-                            + t126 * t123))
+                    * (-(t29
+                        * (-(t62
+                            * (t72 * t64 + T::from_f64(2.0) * t128 * slip_edge_left))
+                            + t128 * t125))
                         + elastic_wall_right
-                            * (t55
-                                * (t67 * t56 - T::from_f64(2.0) * t127 * slip_wall_right)
-                                + t127 * t125))
-                    + t28 * (-t40 + t76 * delta_rate_edge_left) * t37
-                    + elastic_wall_right * (-t32 + t65 * delta_rate_wall_right) * t29,
+                            * (t66
+                                * (t77 * t67 - T::from_f64(2.0) * t129 * slip_wall_right)
+                                + t129 * t127))
+                    + t29 * (-t42 + t71 * delta_rate_edge_left) * t39
+                    + elastic_wall_right * (-t43 + t75 * delta_rate_wall_right) * t32,
                 T::from_f64(0.0),
                 T::from_f64(0.0),
             ],
@@ -609,47 +606,47 @@ pub mod compliant_peg_lean {
         let t6 = t3 * t4;
         let t7 = l_c - rho_p;
         let t8 = r - rho_p;
+        let t9 = -rho_h + z;
+        let delta_edge_left = r + t0 - x + sin_theta * t9 - T::from_f64(2.0) * t1 * t5;
+        let pen_edge_left = delta_edge_left.max0();
+        let t10 = pen_edge_left * pen_edge_left.sqrt();
+        let t11 = cos_theta * t9;
         let slip_wall_right = zdot
             - thetadot
-                * (cos_theta * (r - T::from_f64(2.0) * rho_p * t5)
-                    + sin_theta * (l_c - rho_p + rho_p * sin_theta));
-        let t9 = v_s.hypot(slip_wall_right);
+                * (sin_theta * (l_c - rho_p + rho_p * sin_theta)
+                    + cos_theta * (r - T::from_f64(2.0) * rho_p * t5));
+        let t12 = v_s.hypot(slip_wall_right);
         let delta_wall_right = r + t0 + x + sin_theta * t7 - T::from_f64(2.0) * t5 * t8;
         let pen_wall_right = delta_wall_right.max0();
-        let t10 = pen_wall_right * pen_wall_right.sqrt();
-        let t11 = -rho_h + z;
-        let delta_edge_left = r + t0 - x + sin_theta * t11 - T::from_f64(2.0) * t1 * t5;
-        let pen_edge_left = delta_edge_left.max0();
-        let t12 = pen_edge_left * pen_edge_left.sqrt();
-        let t13 = cos_theta * t11;
+        let t13 = pen_wall_right * pen_wall_right.sqrt();
         let delta_rate_wall_right = xdot
             + thetadot * (cos_theta * t7 - T::from_f64(2.0) * t6 * t8);
         let t14 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
-        let t15 = sin_theta * t1 - t13;
+        let t15 = sin_theta * t1 - t11;
         let slip_edge_left = sin_theta
             * (xdot + thetadot * (cos_theta * t15 + r * sin_theta))
             + cos_theta * (zdot + thetadot * (-(sin_theta * t15) + r * cos_theta));
         let delta_rate_edge_left = -(xdot * (T::from_f64(1.0) - T::from_f64(2.0) * t5))
-            + zdot * sin_theta + thetadot * (t13 - T::from_f64(2.0) * t6 * t1);
+            + zdot * sin_theta + thetadot * (t11 - T::from_f64(2.0) * t6 * t1);
         let t16 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
         let t17 = v_s.hypot(slip_edge_left);
-        let normal_wall_right = k_wall * t14 * t10;
-        let t18 = (T::from_f64(1.5) * normal_wall_right / (e_star * wall_sum)).cbrt();
-        let normal_edge_left = k_edge * t12 * t16;
-        let t19 = (T::from_f64(1.5) * normal_edge_left / (e_star * edge_sum)).cbrt();
+        let normal_edge_left = k_edge * t10 * t16;
+        let normal_wall_right = k_wall * t14 * t13;
+        let t18 = (T::from_f64(1.5) * normal_edge_left / (e_star * edge_sum)).cbrt();
+        let t19 = (T::from_f64(1.5) * normal_wall_right / (e_star * wall_sum)).cbrt();
         let normal = Vector2::new(normal_edge_left, normal_wall_right);
         let friction = Vector2::new(
             -normal_edge_left * mu * slip_edge_left / t17,
-            -normal_wall_right * mu * slip_wall_right / t9,
+            -normal_wall_right * mu * slip_wall_right / t12,
         );
         let delta = Vector2::new(delta_edge_left, delta_wall_right);
         let slip = Vector2::new(slip_edge_left, slip_wall_right);
-        let a = Vector2::new(edge_ma * t19, wall_ma * t18);
-        let b = Vector2::new(edge_mb * t19, wall_mb * t18);
+        let a = Vector2::new(edge_ma * t18, wall_ma * t19);
+        let b = Vector2::new(edge_mb * t18, wall_mb * t19);
         let p0 = Vector2::new(
-            T::from_f64(0.3183098861837907) * e_star * edge_sum * t19
+            T::from_f64(0.3183098861837907) * e_star * edge_sum * t18
                 / (edge_ma * edge_mb),
-            T::from_f64(0.3183098861837907) * e_star * wall_sum * t18
+            T::from_f64(0.3183098861837907) * e_star * wall_sum * t19
                 / (wall_ma * wall_mb),
         );
         (normal, friction, delta, slip, a, b, p0)
@@ -688,17 +685,17 @@ pub mod compliant_peg_lean {
         let t0 = -T::from_f64(0.5) * d;
         let t1 = (T::from_f64(0.5) * theta).sin();
         let t2 = t1 * t1;
-        let delta_wall_right = r + t0 + x + sin_theta * (l_c - rho_p)
-            - T::from_f64(2.0) * t2 * (r - rho_p);
-        let pen_wall_right = delta_wall_right.max0();
         let delta_edge_left = r + t0 - x + sin_theta * (-rho_h + z)
             - T::from_f64(2.0) * (-rho_h + t0 - x) * t2;
         let pen_edge_left = delta_edge_left.max0();
-        let t3 = pen_wall_right.powf(T::from_f64(2.5));
-        let t4 = pen_edge_left.powf(T::from_f64(2.5));
+        let delta_wall_right = r + t0 + x + sin_theta * (l_c - rho_p)
+            - T::from_f64(2.0) * t2 * (r - rho_p);
+        let pen_wall_right = delta_wall_right.max0();
+        let t3 = pen_edge_left.powf(T::from_f64(2.5));
+        let t4 = pen_wall_right.powf(T::from_f64(2.5));
         let kinetic = T::from_f64(0.5)
             * (m * (xdot * xdot + zdot * zdot) + j * (thetadot * thetadot));
-        let potential = T::from_f64(0.4) * (k_edge * t4 + k_wall * t3);
+        let potential = T::from_f64(0.4) * (k_edge * t3 + k_wall * t4);
         let depth = z + l_c * cos_theta;
         (kinetic, potential, depth)
     }

@@ -50,7 +50,7 @@ pub mod double_pendulum {
         let t5 = t4 * l1 * t2;
         let mass = Matrix2::new(l1 * l1 * t3, t5, t5, m2 * (l2 * l2));
         let forcing = Vector2::new(
-            -(l1 * (t4 * (theta2dot * theta2dot) * t1 + g * sin_theta1 * t3)),
+            -(l1 * (g * sin_theta1 * t3 + t4 * (theta2dot * theta2dot) * t1)),
             t4 * (l1 * (theta1dot * theta1dot) * t1 - g * sin_theta2),
         );
         (mass, forcing)
@@ -86,12 +86,12 @@ pub mod double_pendulum {
         let t3 = m2 * m2;
         let t4 = m1 + m2;
         let t5 = l1 * (theta1dot * theta1dot) * t1 - g * sin_theta2;
-        let t6 = m2 * l2 * (theta2dot * theta2dot) * t1 + g * sin_theta1 * t4;
+        let t6 = g * sin_theta1 * t4 + m2 * l2 * (theta2dot * theta2dot) * t1;
         let t7 = m2 * t4 - t3 * (t2 * t2);
         Vector4::new(
             theta1dot,
             theta2dot,
-            -(t3 * t2 * t5 + m2 * t6) / (l1 * t7),
+            -(m2 * t6 + t3 * t2 * t5) / (l1 * t7),
             m2 * (t4 * t5 + t2 * t6) / (t7 * l2),
         )
     }
@@ -179,6 +179,6 @@ pub mod double_pendulum {
         m2
             * (T::from_f64(0.5) * (t1 + theta2dot * theta2dot * (l2 * l2))
                 + theta1dot * theta2dot * l1 * l2 * t2) + T::from_f64(0.5) * t1 * m1
-            - g * (t0 * m1 + m2 * (l2 * cos_theta2 + t0))
+            - g * (t0 * m1 + m2 * (t0 + l2 * cos_theta2))
     }
 }

@@ -31,7 +31,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 18 add/sub, 21 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 12 `let`s.
+    /// 17 add/sub, 21 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 11 `let`s.
     #[inline]
     pub fn two_point<T: Real>(
         pose: &SVector<T, 2>,
@@ -52,20 +52,19 @@ pub mod quasi_static {
         let m = p[3];
         let j = p[4];
         let (sin_theta, cos_theta) = theta.sin_cos();
-        let t0 = mu * sin_theta;
-        let t1 = f2 * sin_theta;
-        let t2 = ydd * m;
-        let t3 = -f1 * cos_theta;
-        let t4 = sin_theta + mu * cos_theta;
-        let t5 = t0 - cos_theta;
-        let t6 = -(xdd * m) + f1 * sin_theta + f2 * cos_theta;
-        let t7 = t1 + t2 + t3 + mu * t6;
-        let t8 = t5 * (t1 + t2 + t3) + t4 * t6;
-        let t9 = T::from_f64(1.0) / (mu * (cos_theta - t5) + sin_theta);
-        let f_a = -t7 * t9;
-        let f_b = t9 * t8;
-        let moment = thdd * j
-            - t9 * (t7 * (-l_c + mu * r + l) + t8 * (r * t4 + l_c * (-cos_theta + t0)));
+        let t0 = f2 * sin_theta;
+        let t1 = ydd * m;
+        let t2 = -f1 * cos_theta;
+        let t3 = sin_theta + mu * cos_theta;
+        let t4 = -cos_theta + mu * sin_theta;
+        let t5 = -(xdd * m) + f1 * sin_theta + f2 * cos_theta;
+        let t6 = t0 + t1 + t2 + mu * t5;
+        let t7 = t4 * (t0 + t1 + t2) + t3 * t5;
+        let t8 = T::from_f64(1.0) / (mu * (cos_theta - t4) + sin_theta);
+        let f_a = -t6 * t8;
+        let f_b = t8 * t7;
+        let moment = -(t8 * (t6 * (-l_c + mu * r + l) + t7 * (r * t3 + l_c * t4)))
+            + thdd * j;
         (f_a, f_b, moment)
     }
     /// Eq. 53 (signs corrected): edge force f_a (N) from the normal balance and input moment about C (N m), one-point contact at the edge A.
@@ -174,12 +173,12 @@ pub mod quasi_static {
         let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = sin_theta + mu * cos_theta;
         let t1 = mu * sin_theta - cos_theta;
-        let t2 = T::from_f64(1.0) / (mu * (cos_theta - t1) + sin_theta);
-        let t3 = t0 * fx + fz * t1;
-        let t4 = fz + mu * fx;
-        let f_tip = -t3 * t2;
-        let f_edge = t2 * t4;
-        let moment = t2 * (t3 * r * t0 + t4 * (mu * r + l));
+        let t2 = t0 * fx + fz * t1;
+        let t3 = fz + mu * fx;
+        let t4 = T::from_f64(1.0) / (mu * (cos_theta - t1) + sin_theta);
+        let f_tip = -t2 * t4;
+        let f_edge = t4 * t3;
+        let moment = t4 * (t2 * r * t0 + t3 * (mu * r + l));
         (f_tip, f_edge, moment)
     }
 }

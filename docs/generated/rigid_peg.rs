@@ -42,7 +42,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 84 add/sub, 155 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 69 `let`s.
+    /// 78 add/sub, 151 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 66 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -87,112 +87,109 @@ pub mod rigid_peg {
         let t2 = e * t1;
         let t3 = sin_gamma * sin_gamma;
         let half_d = T::from_f64(0.5) * d_hole;
-        let t4 = cos_half_gamma * cos_half_gamma;
-        let t5 = cos_gamma * cos_gamma;
-        let t6 = gammadot * gammadot;
-        let t7 = psidot * psidot;
-        let t8 = d_peg * d_peg;
-        let t9 = T::from_f64(0.75) * t8 + h * h;
+        let t4 = cos_gamma * cos_gamma;
+        let t5 = gammadot * gammadot;
+        let t6 = psidot * psidot;
+        let t7 = d_peg * d_peg;
+        let t8 = T::from_f64(0.75) * t7 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t10 = f_x * cos_psi;
-        let t11 = f_y * sin_psi;
-        let t12 = f_x * sin_psi;
-        let t13 = sin_gamma * cos_gamma;
-        let t14 = -f_y * cos_psi;
-        let t15 = f * t_k_n;
-        let t16 = T::from_f64(0.5) * e;
-        let t17 = T::from_f64(1.0 / 12.0) * t9;
-        let t18 = sin_sum * sin_diff;
-        let t19 = t18 * d_hole;
-        let neg_a1 = t19 * t1;
+        let t9 = f_x * cos_psi;
+        let t10 = f_y * sin_psi;
+        let t11 = f_x * sin_psi;
+        let t12 = sin_gamma * cos_gamma;
+        let t13 = -f_y * cos_psi;
+        let t14 = f * t_k_n;
+        let t15 = T::from_f64(0.5) * e;
+        let t16 = T::from_f64(1.0 / 12.0) * t8;
+        let t17 = sin_sum * sin_diff;
+        let t18 = t17 * d_hole;
+        let neg_a1 = t18 * t1;
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t2;
         let ob = neg_a1.hypot(half_d);
-        let t20 = T::from_f64(1.0) / ob;
-        let t21 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t22 = t21 * t1;
-        let t23 = sin_gamma * lever;
-        let t24 = t5 / (sin_gamma * sin_gamma * sin_gamma);
-        let t25 = t24 * e;
-        let t26 = h - t2;
-        let t27 = t26 * t26;
-        let t28 = neg_a1 * t20;
-        let t29 = t1 * (t16 + t19 * cos_gamma) * t1;
-        let t30 = -t29 * t20;
-        let t31 = lever - lever;
-        let t32 = sin_gamma * t31;
-        let t33 = m * gammadot * psidot;
-        let t34 = t1 * t1;
-        let t35 = cos_gamma * t34;
-        let t36 = t19 * t35;
-        let bb1 = (-T::from_f64(2.0) * t36 * (d_hole + T::from_f64(2.0) * t36)).sqrt();
-        let t37 = bb1 * t20;
-        let t38 = t35 * e;
-        let t39 = t22 - T::from_f64(0.5) * t38;
-        let t40 = sin_gamma * t39;
-        let t41 = -T::from_f64(2.0) * t21 * t35;
-        let t42 = t19 * t34;
-        let t43 = cos_gamma * (t42 - t39);
-        let t44 = half_d + t43 - t23;
-        let t45 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
-            * (-t38 + T::from_f64(2.0) * t22);
-        let t46 = -(cos_gamma * lever) + t40;
-        let t47 = sin_gamma
-            * (lever + t1 * (-(T::from_f64(0.5) * (t0 - t4) * d_peg) + t16) + t25 + t41)
-            + T::from_f64(2.0) * cos_gamma * t39;
-        let t48 = cos_gamma * t31 - neg_a1 + t40;
-        let t49 = d_hole
-            * (t18 * (t1 + T::from_f64(2.0) * t24) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma
-                * (lever + t1 * (t16 - T::from_f64(0.5) * (-t4 + t0) * d_peg) + t25
-                    + t41) - T::from_f64(2.0) * t40;
-        let t50 = half_d + t43 - t32 + t29;
-        let t51 = t46 * t47;
-        let t52 = (d_hole + T::from_f64(2.0) * t43 - T::from_f64(2.0) * t23) * t49;
+        let t19 = T::from_f64(1.0) / ob;
+        let t20 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t21 = t20 * t1;
+        let t22 = sin_gamma * lever;
+        let t23 = t4 / (sin_gamma * sin_gamma * sin_gamma);
+        let t24 = h - t2;
+        let t25 = t24 * t24;
+        let t26 = neg_a1 * t19;
+        let t27 = t1 * (t15 + t18 * cos_gamma) * t1;
+        let t28 = -t27 * t19;
+        let t29 = lever - lever;
+        let t30 = sin_gamma * t29;
+        let t31 = m * gammadot * psidot;
+        let t32 = t1 * t1;
+        let t33 = cos_gamma * t32;
+        let t34 = t18 * t33;
+        let bb1 = (-T::from_f64(2.0) * t34 * (d_hole + T::from_f64(2.0) * t34)).sqrt();
+        let t35 = bb1 * t19;
+        let t36 = t33 * e;
+        let t37 = t21 - T::from_f64(0.5) * t36;
+        let t38 = sin_gamma * t37;
+        let t39 = cos_gamma * (t18 * t32 - t37);
+        let t40 = half_d + t39 - t22;
+        let t41 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
+            * (-t36 + T::from_f64(2.0) * t21);
+        let t42 = -(cos_gamma * lever) + t38;
+        let t43 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t15) + t23 * e
+            - T::from_f64(2.0) * t20 * t33;
+        let t44 = sin_gamma * t43 + T::from_f64(2.0) * cos_gamma * t37;
+        let t45 = cos_gamma * t29 - neg_a1 + t38;
+        let t46 = d_hole
+            * (t17 * (t1 + T::from_f64(2.0) * t23) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t43 - T::from_f64(2.0) * t38;
+        let t47 = half_d + t39 - t30 + t27;
+        let t48 = t42 * t44;
+        let t49 = (d_hole + T::from_f64(2.0) * t39 - T::from_f64(2.0) * t22) * t46;
         let a = Matrix5::new(
-            m * (t17 + t46 * t46 + t44 * t44),
+            m * (t16 + t42 * t42 + t40 * t40),
             T::from_f64(0.0),
-            -(f * (t_k_eta * t48 - t_k_z * (-(cos_gamma * (-t39 + t42)) + t32))),
-            -(f * (t_b1_eta * t48 + t_b1_z * t50)),
-            -(f * (t_b2_eta * t48 + t_b2_z * t50)),
+            -(f * (t_k_eta * t45 - t_k_z * (-t39 + t30))),
+            -(f * (t_b1_eta * t45 + t_b1_z * t47)),
+            -(f * (t_b2_eta * t45 + t_b2_z * t47)),
             T::from_f64(0.0),
-            m * (t3 * (T::from_f64(0.25) * t27 + t17) + T::from_f64(0.125) * t5 * t8),
-            T::from_f64(0.5) * t15 * d_hole,
-            f * (t_b1_eta * bb1 - t29 * t_b1_n),
-            -(f * (t_b2_eta * bb1 + t29 * t_b2_n)),
-            m * t46,
+            m * (t3 * (T::from_f64(0.25) * t25 + t16) + T::from_f64(0.125) * t4 * t7),
+            T::from_f64(0.5) * t14 * d_hole,
+            f * (t_b1_eta * bb1 - t27 * t_b1_n),
+            -(f * (t_b2_eta * bb1 + t27 * t_b2_n)),
+            m * t42,
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) - t30,
-            -(f * t_b2_eta) - t30,
+            -(f * t_b1_eta) - t28,
+            -(f * t_b2_eta) - t28,
             T::from_f64(0.0),
-            -t23 * m,
-            -t15,
-            t37 - f * t_b1_n,
-            -(f * t_b2_n) - t37,
-            m * t44,
+            -t22 * m,
+            -t14,
+            t35 - f * t_b1_n,
+            -(f * t_b2_n) - t35,
+            m * t40,
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            -(f * t_b1_z) + t28,
-            -(f * t_b2_z) + t28,
+            -(f * t_b1_z) + t26,
+            -(f * t_b2_z) + t26,
         );
         let b = Vector5::new(
             m_gamma
                 - m
-                    * (-(t7 * (-(T::from_f64(0.125) * t8) + t17) * t13)
+                    * (-(t6 * (-(T::from_f64(0.125) * t7) + t16) * t12)
                         + T::from_f64(0.5)
-                            * (-(t6 * (T::from_f64(2.0) * t51 - t52)
-                                + t7
-                                    * (T::from_f64(0.5) * t13 * t27 - T::from_f64(0.25) * t45))
-                                + t6 * (T::from_f64(4.0) * t51 - T::from_f64(2.0) * t52))
-                        + g * t44) + t46 * (t10 + t11) + f_z * t44,
-            m_psi + t23 * (t12 + t14)
-                + t33
-                    * (-(t13
-                        * (T::from_f64(0.5) * t27 - T::from_f64(0.25) * t8
-                            + T::from_f64(1.0 / 6.0) * t9)) + T::from_f64(0.25) * t45),
-            t10 + t11 - m * (t23 * t7 + t47 * t6),
-            -t14 - t12 - t33 * t46 * (T::from_f64(1.0) + T::from_f64(1.0)),
-            f_z - m * g + m * t6 * t49,
+                            * (-(t5 * (T::from_f64(2.0) * t48 - t49)
+                                + t6
+                                    * (T::from_f64(0.5) * t12 * t25 - T::from_f64(0.25) * t41))
+                                + t5 * (T::from_f64(4.0) * t48 - T::from_f64(2.0) * t49))
+                        + g * t40) + t42 * (t9 + t10) + f_z * t40,
+            m_psi + t22 * (t13 + t11)
+                + t31
+                    * (-(t12
+                        * (T::from_f64(0.5) * t25 - T::from_f64(0.25) * t7
+                            + T::from_f64(1.0 / 6.0) * t8)) + T::from_f64(0.25) * t41),
+            t9 + t10 - m * (t44 * t5 + t22 * t6),
+            -t13 - t11 - t31 * t42 * (T::from_f64(1.0) + T::from_f64(1.0)),
+            f_z - m * g + m * t5 * t46,
         );
         (a, b)
     }
@@ -211,7 +208,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 87 add/sub, 157 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 69 `let`s.
+    /// 81 add/sub, 153 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 66 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -257,119 +254,115 @@ pub mod rigid_peg {
         let t2 = e * t1;
         let t3 = sin_gamma * sin_gamma;
         let half_d = T::from_f64(0.5) * d_hole;
-        let t4 = cos_half_gamma * cos_half_gamma;
-        let t5 = cos_gamma * cos_gamma;
-        let t6 = gammadot * gammadot;
-        let t7 = psidot * psidot;
-        let t8 = d_peg * d_peg;
-        let t9 = T::from_f64(0.75) * t8 + h * h;
+        let t4 = cos_gamma * cos_gamma;
+        let t5 = gammadot * gammadot;
+        let t6 = psidot * psidot;
+        let t7 = d_peg * d_peg;
+        let t8 = T::from_f64(0.75) * t7 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t10 = f_x * cos_psi;
-        let t11 = f_y * sin_psi;
-        let t12 = f_y * cos_psi;
-        let t13 = f_x * sin_psi;
-        let t14 = sin_gamma * cos_gamma;
-        let t15 = f * t_k_n;
-        let t16 = T::from_f64(0.5) * e;
-        let t17 = T::from_f64(1.0 / 12.0) * t9;
-        let t18 = sin_sum * sin_diff;
-        let t19 = t18 * d_hole;
-        let neg_a1 = t19 * t1;
+        let t9 = f_x * cos_psi;
+        let t10 = f_y * sin_psi;
+        let t11 = f_y * cos_psi;
+        let t12 = f_x * sin_psi;
+        let t13 = sin_gamma * cos_gamma;
+        let t14 = f * t_k_n;
+        let t15 = T::from_f64(0.5) * e;
+        let t16 = T::from_f64(1.0 / 12.0) * t8;
+        let t17 = sin_sum * sin_diff;
+        let t18 = t17 * d_hole;
+        let neg_a1 = t18 * t1;
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t2;
         let ob = neg_a1.hypot(half_d);
-        let t20 = T::from_f64(1.0) / ob;
-        let t21 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t22 = t21 * t1;
-        let t23 = sin_gamma * lever;
-        let t24 = t5 / (sin_gamma * sin_gamma * sin_gamma);
-        let t25 = t24 * e;
-        let t26 = h - t2;
-        let t27 = t26 * t26;
-        let t28 = neg_a1 * t20;
-        let t29 = t1 * (t16 + t19 * cos_gamma) * t1;
-        let t30 = -t29 * t20;
-        let t31 = lever - lever;
-        let t32 = sin_gamma * t31;
-        let t33 = t1 * t1;
-        let t34 = cos_gamma * t33;
-        let t35 = t19 * t34;
-        let bb1 = (-T::from_f64(2.0) * t35 * (d_hole + T::from_f64(2.0) * t35)).sqrt();
-        let t36 = bb1 * t20;
-        let t37 = t34 * e;
-        let t38 = t22 - T::from_f64(0.5) * t37;
-        let t39 = sin_gamma * t38;
-        let t40 = -T::from_f64(2.0) * t21 * t34;
-        let t41 = t19 * t33;
-        let t42 = cos_gamma * (t41 - t38);
-        let t43 = half_d + t42 - t23;
-        let t44 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
-            * (-t37 + T::from_f64(2.0) * t22);
-        let t45 = -(cos_gamma * lever) + t39;
-        let t46 = sin_gamma
-            * (lever + t1 * (-(T::from_f64(0.5) * (t0 - t4) * d_peg) + t16) + t25 + t40)
-            + T::from_f64(2.0) * cos_gamma * t38;
-        let t47 = cos_gamma * t31 - neg_a1 + t39;
-        let t48 = d_hole
-            * (t18 * (t1 + T::from_f64(2.0) * t24) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma
-                * (lever + t1 * (t16 - T::from_f64(0.5) * (-t4 + t0) * d_peg) + t25
-                    + t40) - T::from_f64(2.0) * t39;
-        let t49 = half_d + t42 - t32 + t29;
-        let t50 = t45 * t46;
-        let t51 = (d_hole + T::from_f64(2.0) * t42 - T::from_f64(2.0) * t23) * t48;
-        let t52 = gammadot * psidot;
+        let t19 = T::from_f64(1.0) / ob;
+        let t20 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t21 = t20 * t1;
+        let t22 = sin_gamma * lever;
+        let t23 = t4 / (sin_gamma * sin_gamma * sin_gamma);
+        let t24 = h - t2;
+        let t25 = t24 * t24;
+        let t26 = neg_a1 * t19;
+        let t27 = t1 * (t15 + t18 * cos_gamma) * t1;
+        let t28 = -t27 * t19;
+        let t29 = lever - lever;
+        let t30 = sin_gamma * t29;
+        let t31 = t1 * t1;
+        let t32 = cos_gamma * t31;
+        let t33 = t18 * t32;
+        let bb1 = (-T::from_f64(2.0) * t33 * (d_hole + T::from_f64(2.0) * t33)).sqrt();
+        let t34 = bb1 * t19;
+        let t35 = t32 * e;
+        let t36 = t21 - T::from_f64(0.5) * t35;
+        let t37 = sin_gamma * t36;
+        let t38 = cos_gamma * (t18 * t31 - t36);
+        let t39 = half_d + t38 - t22;
+        let t40 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
+            * (-t35 + T::from_f64(2.0) * t21);
+        let t41 = -(cos_gamma * lever) + t37;
+        let t42 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t15) + t23 * e
+            - T::from_f64(2.0) * t20 * t32;
+        let t43 = sin_gamma * t42 + T::from_f64(2.0) * cos_gamma * t36;
+        let t44 = cos_gamma * t29 - neg_a1 + t37;
+        let t45 = d_hole
+            * (t17 * (t1 + T::from_f64(2.0) * t23) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t42 - T::from_f64(2.0) * t37;
+        let t46 = half_d + t38 - t30 + t27;
+        let t47 = t41 * t43;
+        let t48 = (d_hole + T::from_f64(2.0) * t38 - T::from_f64(2.0) * t22) * t45;
+        let t49 = gammadot * psidot;
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
-            -(f * (t_k_eta * t47 - t_k_z * (-(cos_gamma * (-t38 + t41)) + t32))),
-            -(f * (t_b1_eta * t47 + t_b1_z * t49)),
-            -(f * (t_b2_eta * t47 + t_b2_z * t49)),
+            -(f * (t_k_eta * t44 - t_k_z * (-t38 + t30))),
+            -(f * (t_b1_eta * t44 + t_b1_z * t46)),
+            -(f * (t_b2_eta * t44 + t_b2_z * t46)),
             T::from_f64(0.0),
             -T::from_f64(1.0),
-            T::from_f64(0.5) * t15 * d_hole,
-            f * (t_b1_eta * bb1 - t29 * t_b1_n),
-            -(f * (t_b2_eta * bb1 + t29 * t_b2_n)),
+            T::from_f64(0.5) * t14 * d_hole,
+            f * (t_b1_eta * bb1 - t27 * t_b1_n),
+            -(f * (t_b2_eta * bb1 + t27 * t_b2_n)),
             T::from_f64(0.0),
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) - t30,
-            -(f * t_b2_eta) - t30,
+            -(f * t_b1_eta) - t28,
+            -(f * t_b2_eta) - t28,
             T::from_f64(0.0),
             T::from_f64(0.0),
-            -t15,
-            t36 - f * t_b1_n,
-            -(f * t_b2_n) - t36,
+            -t14,
+            t34 - f * t_b1_n,
+            -(f * t_b2_n) - t34,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            -(f * t_b1_z) + t28,
-            -(f * t_b2_z) + t28,
+            -(f * t_b1_z) + t26,
+            -(f * t_b2_z) + t26,
         );
         let b = Vector5::new(
             -(m
-                * (t7 * (T::from_f64(0.125) * t8 - T::from_f64(1.0 / 12.0) * t9) * t14
+                * (t6 * (T::from_f64(0.125) * t7 - T::from_f64(1.0 / 12.0) * t8) * t13
                     + T::from_f64(0.5)
-                        * (-(t6 * (T::from_f64(2.0) * t50 - t51)
-                            + t7
-                                * (T::from_f64(0.5) * t14 * t27 - T::from_f64(0.25) * t44))
-                            + t6 * (T::from_f64(4.0) * t50 - T::from_f64(2.0) * t51))
-                    + g * t43 + gammaddot * (t17 + t45 * t45 + t43 * t43)))
-                + t45 * (t10 + t11) + f_z * t43,
-            t23 * (t13 - t12)
+                        * (-(t5 * (T::from_f64(2.0) * t47 - t48)
+                            + t6
+                                * (T::from_f64(0.5) * t13 * t25 - T::from_f64(0.25) * t40))
+                            + t5 * (T::from_f64(4.0) * t47 - T::from_f64(2.0) * t48))
+                    + g * t39 + gammaddot * (t16 + t41 * t41 + t39 * t39)))
+                + t41 * (t9 + t10) + f_z * t39,
+            m
+                * (t49
+                    * (-(t13
+                        * (T::from_f64(0.5) * t25 - T::from_f64(0.25) * t7
+                            + T::from_f64(1.0 / 6.0) * t8)) + T::from_f64(0.25) * t40)
+                    - psiddot
+                        * (t3 * (T::from_f64(0.25) * t25 + t16)
+                            + T::from_f64(0.125) * t4 * t7)) + t22 * (-t11 + t12),
+            t9 + t10 - m * (t43 * t5 + gammaddot * t41 + t22 * t6),
+            t11 - t12
                 + m
-                    * (t52
-                        * (-(t14
-                            * (T::from_f64(0.5) * t27 - T::from_f64(0.25) * t8
-                                + T::from_f64(1.0 / 6.0) * t9)) + T::from_f64(0.25) * t44)
-                        - psiddot
-                            * (t3 * (T::from_f64(0.25) * t27 + t17)
-                                + T::from_f64(0.125) * t5 * t8)),
-            t10 + t11 - m * (t46 * t6 + gammaddot * t45 + t23 * t7),
-            t12 - t13
-                + m
-                    * (-(t52 * ((T::from_f64(1.0) + T::from_f64(1.0)) * t45))
-                        + t23 * psiddot),
-            f_z - m * g - m * (-(t6 * t48) + gammaddot * t43),
+                    * (-(t49 * ((T::from_f64(1.0) + T::from_f64(1.0)) * t41))
+                        + t22 * psiddot),
+            f_z - m * g - m * (-(t5 * t45) + gammaddot * t39),
         );
         (a, b)
     }
@@ -383,7 +376,7 @@ pub mod rigid_peg {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 23 add/sub, 40 mul, 1 div, 1 sqrt, 4 transcendental, 0 branches; 29 `let`s.
+    /// 22 add/sub, 39 mul, 1 div, 1 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 4>,
@@ -412,29 +405,27 @@ pub mod rigid_peg {
         let t3 = t0 * t0;
         let t4 = cos_gamma * t3;
         let t5 = d_hole * sin_sum * sin_diff;
-        let t6 = t5 * t0 + t2;
-        let t7 = half_d - t1;
-        let t8 = t1 + t0 * t0 * (T::from_f64(0.5) * e + t5 * cos_gamma);
-        let t9 = -psidot * (t1 - t8);
-        let t10 = t5 * t4;
-        let bb1 = (-T::from_f64(2.0) * t10 * (d_hole + T::from_f64(2.0) * t10)).sqrt();
-        let t11 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+        let t6 = half_d - t1;
+        let t7 = t0 * t0 * (T::from_f64(0.5) * e + t5 * cos_gamma) + t1;
+        let t8 = -psidot * (t1 - t7);
+        let t9 = t5 * t4;
+        let bb1 = (-T::from_f64(2.0) * t9 * (d_hole + T::from_f64(2.0) * t9)).sqrt();
+        let t10 = d_peg * sin_half_gamma * t0 * cos_half_gamma
             - T::from_f64(0.5) * t4 * e;
-        let t12 = psidot * bb1;
-        let t13 = half_d + cos_gamma * (t5 * t3 - t11) - t1;
-        let t14 = t2 + sin_gamma * t11;
-        let t15 = gammadot * (t6 - t14);
-        let t16 = gammadot * (t13 + t8);
+        let t11 = psidot * bb1;
+        let t12 = half_d + cos_gamma * (t5 * t3 - t10) - t1;
+        let t13 = gammadot * (-(t2 + sin_gamma * t10) + t5 * t0 + t2);
+        let t14 = gammadot * (t12 + t7);
         Matrix3::new(
-            -t15,
-            -psidot * (t1 + t7),
-            gammadot * (t13 - t7),
-            -(gammadot * (-t14 + t6)) - t12,
-            t9,
-            t16,
-            t12 - t15,
-            t9,
-            t16,
+            -t13,
+            -psidot * (t1 + t6),
+            gammadot * (t12 - t6),
+            -t13 - t11,
+            t8,
+            t14,
+            t11 - t13,
+            t8,
+            t14,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).

@@ -29,7 +29,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 63 add/sub, 124 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 61 `let`s.
+    /// 58 add/sub, 121 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -63,104 +63,102 @@ pub mod rigid_peg_frictionless {
         let t2 = e * t1;
         let t3 = sin_gamma * sin_gamma;
         let half_d = T::from_f64(0.5) * d_hole;
-        let t4 = cos_half_gamma * cos_half_gamma;
-        let t5 = cos_gamma * cos_gamma;
-        let t6 = gammadot * gammadot;
-        let t7 = psidot * psidot;
-        let t8 = d_peg * d_peg;
-        let t9 = T::from_f64(0.75) * t8 + h * h;
+        let t4 = cos_gamma * cos_gamma;
+        let t5 = gammadot * gammadot;
+        let t6 = psidot * psidot;
+        let t7 = d_peg * d_peg;
+        let t8 = T::from_f64(0.75) * t7 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t10 = f_x * cos_psi;
-        let t11 = f_y * sin_psi;
-        let t12 = f_x * sin_psi;
-        let t13 = sin_gamma * cos_gamma;
-        let t14 = -f_y * cos_psi;
-        let t15 = T::from_f64(0.5) * e;
-        let t16 = T::from_f64(1.0 / 12.0) * t9;
-        let t17 = sin_sum * sin_diff;
-        let t18 = t17 * d_hole;
+        let t9 = f_x * cos_psi;
+        let t10 = f_y * sin_psi;
+        let t11 = f_x * sin_psi;
+        let t12 = sin_gamma * cos_gamma;
+        let t13 = -f_y * cos_psi;
+        let t14 = T::from_f64(0.5) * e;
+        let t15 = T::from_f64(1.0 / 12.0) * t8;
+        let t16 = sin_sum * sin_diff;
+        let t17 = t16 * d_hole;
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t2;
-        let ob = (t18 * t1).hypot(half_d);
-        let t19 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t20 = t19 * t1;
-        let t21 = sin_gamma * lever;
-        let t22 = t5 / (sin_gamma * sin_gamma * sin_gamma);
-        let t23 = t22 * e;
-        let t24 = h - t2;
-        let t25 = t24 * t24;
-        let t26 = t1 / ob;
-        let t27 = t26 * t18;
-        let t28 = t1 * (t15 + t18 * cos_gamma) * t26;
-        let t29 = m * gammadot * psidot;
-        let t30 = t1 * t1;
-        let t31 = cos_gamma * t30;
-        let t32 = t18 * t31;
-        let bb1 = (-T::from_f64(2.0) * t32 * (d_hole + T::from_f64(2.0) * t32)).sqrt();
-        let t33 = bb1 / ob;
-        let t34 = t31 * e;
-        let t35 = t20 - T::from_f64(0.5) * t34;
-        let t36 = sin_gamma * t35;
-        let t37 = -T::from_f64(2.0) * t19 * t31;
-        let t38 = cos_gamma * (t18 * t30 - t35);
-        let t39 = half_d + t38 - t21;
-        let t40 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
-            * (-t34 + T::from_f64(2.0) * t20);
-        let t41 = -(cos_gamma * lever) + t36;
-        let t42 = sin_gamma
-            * (lever + t1 * (-(T::from_f64(0.5) * (t0 - t4) * d_peg) + t15) + t23 + t37)
-            + T::from_f64(2.0) * cos_gamma * t35;
-        let t43 = d_hole
-            * (t17 * (t1 + T::from_f64(2.0) * t22) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma
-                * (lever + t1 * (t15 - T::from_f64(0.5) * (-t4 + t0) * d_peg) + t23
-                    + t37) - T::from_f64(2.0) * t36;
-        let t44 = t41 * t42;
-        let t45 = (d_hole + T::from_f64(2.0) * t38 - T::from_f64(2.0) * t21) * t43;
+        let ob = (t17 * t1).hypot(half_d);
+        let t18 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t19 = t18 * t1;
+        let t20 = sin_gamma * lever;
+        let t21 = t4 / (sin_gamma * sin_gamma * sin_gamma);
+        let t22 = h - t2;
+        let t23 = t22 * t22;
+        let t24 = t1 / ob;
+        let t25 = t24 * t17;
+        let t26 = t1 * (t14 + t17 * cos_gamma) * t24;
+        let t27 = m * gammadot * psidot;
+        let t28 = t1 * t1;
+        let t29 = cos_gamma * t28;
+        let t30 = t17 * t29;
+        let bb1 = (-T::from_f64(2.0) * t30 * (d_hole + T::from_f64(2.0) * t30)).sqrt();
+        let t31 = bb1 / ob;
+        let t32 = t29 * e;
+        let t33 = t19 - T::from_f64(0.5) * t32;
+        let t34 = sin_gamma * t33;
+        let t35 = cos_gamma * (t17 * t28 - t33);
+        let t36 = half_d + t35 - t20;
+        let t37 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
+            * (-t32 + T::from_f64(2.0) * t19);
+        let t38 = -(cos_gamma * lever) + t34;
+        let t39 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t14) + t21 * e
+            - T::from_f64(2.0) * t18 * t29;
+        let t40 = sin_gamma * t39 + T::from_f64(2.0) * cos_gamma * t33;
+        let t41 = d_hole
+            * (t16 * (t1 + T::from_f64(2.0) * t21) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t39 - T::from_f64(2.0) * t34;
+        let t42 = t38 * t40;
+        let t43 = (d_hole + T::from_f64(2.0) * t35 - T::from_f64(2.0) * t20) * t41;
         let a = Matrix5::new(
-            m * (t16 + t41 * t41 + t39 * t39),
+            m * (t15 + t38 * t38 + t36 * t36),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * (t3 * (T::from_f64(0.25) * t25 + t16) + T::from_f64(0.125) * t5 * t8),
+            m * (t3 * (T::from_f64(0.25) * t23 + t15) + T::from_f64(0.125) * t4 * t7),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * t41,
+            m * t38,
             T::from_f64(0.0),
             -cos_gamma,
-            t28,
-            t28,
+            t26,
+            t26,
             T::from_f64(0.0),
-            -t21 * m,
+            -t20 * m,
             T::from_f64(0.0),
-            t33,
-            -t33,
-            m * t39,
+            t31,
+            -t31,
+            m * t36,
             T::from_f64(0.0),
             -sin_gamma,
-            t27,
-            t27,
+            t25,
+            t25,
         );
         let b = Vector5::new(
             m_gamma
                 - m
-                    * (-(t7 * (-(T::from_f64(0.125) * t8) + t16) * t13)
+                    * (-(t6 * (-(T::from_f64(0.125) * t7) + t15) * t12)
                         + T::from_f64(0.5)
-                            * (-(t6 * (T::from_f64(2.0) * t44 - t45)
-                                + t7
-                                    * (T::from_f64(0.5) * t13 * t25 - T::from_f64(0.25) * t40))
-                                + t6 * (T::from_f64(4.0) * t44 - T::from_f64(2.0) * t45))
-                        + g * t39) + t41 * (t10 + t11) + f_z * t39,
-            m_psi + t21 * (t12 + t14)
-                + t29
-                    * (-(t13
-                        * (T::from_f64(0.5) * t25 - T::from_f64(0.25) * t8
-                            + T::from_f64(1.0 / 6.0) * t9)) + T::from_f64(0.25) * t40),
-            t10 + t11 - m * (t21 * t7 + t42 * t6),
-            -t14 - t12 - t29 * t41 * (T::from_f64(1.0) + T::from_f64(1.0)),
-            f_z - m * g + m * t6 * t43,
+                            * (-(t5 * (T::from_f64(2.0) * t42 - t43)
+                                + t6
+                                    * (T::from_f64(0.5) * t12 * t23 - T::from_f64(0.25) * t37))
+                                + t5 * (T::from_f64(4.0) * t42 - T::from_f64(2.0) * t43))
+                        + g * t36) + t38 * (t9 + t10) + f_z * t36,
+            m_psi + t20 * (t13 + t11)
+                + t27
+                    * (-(t12
+                        * (T::from_f64(0.5) * t23 - T::from_f64(0.25) * t7
+                            + T::from_f64(1.0 / 6.0) * t8)) + T::from_f64(0.25) * t37),
+            t9 + t10 - m * (t40 * t5 + t20 * t6),
+            -t13 - t11 - t27 * t38 * (T::from_f64(1.0) + T::from_f64(1.0)),
+            f_z - m * g + m * t5 * t41,
         );
         (a, b)
     }
@@ -178,7 +176,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 66 add/sub, 126 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 61 `let`s.
+    /// 61 add/sub, 123 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -213,59 +211,57 @@ pub mod rigid_peg_frictionless {
         let t2 = e * t1;
         let t3 = sin_gamma * sin_gamma;
         let half_d = T::from_f64(0.5) * d_hole;
-        let t4 = cos_half_gamma * cos_half_gamma;
-        let t5 = cos_gamma * cos_gamma;
-        let t6 = gammadot * gammadot;
-        let t7 = psidot * psidot;
-        let t8 = d_peg * d_peg;
-        let t9 = T::from_f64(0.75) * t8 + h * h;
+        let t4 = cos_gamma * cos_gamma;
+        let t5 = gammadot * gammadot;
+        let t6 = psidot * psidot;
+        let t7 = d_peg * d_peg;
+        let t8 = T::from_f64(0.75) * t7 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t10 = f_x * cos_psi;
-        let t11 = f_y * sin_psi;
-        let t12 = f_y * cos_psi;
-        let t13 = f_x * sin_psi;
-        let t14 = sin_gamma * cos_gamma;
-        let t15 = T::from_f64(0.5) * e;
-        let t16 = T::from_f64(1.0 / 12.0) * t9;
-        let t17 = sin_sum * sin_diff;
-        let t18 = t17 * d_hole;
+        let t9 = f_x * cos_psi;
+        let t10 = f_y * sin_psi;
+        let t11 = f_y * cos_psi;
+        let t12 = f_x * sin_psi;
+        let t13 = sin_gamma * cos_gamma;
+        let t14 = T::from_f64(0.5) * e;
+        let t15 = T::from_f64(1.0 / 12.0) * t8;
+        let t16 = sin_sum * sin_diff;
+        let t17 = t16 * d_hole;
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t2;
-        let ob = (t18 * t1).hypot(half_d);
-        let t19 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t20 = t19 * t1;
-        let t21 = sin_gamma * lever;
-        let t22 = t5 / (sin_gamma * sin_gamma * sin_gamma);
-        let t23 = t22 * e;
-        let t24 = h - t2;
-        let t25 = t24 * t24;
-        let t26 = t1 / ob;
-        let t27 = t26 * t18;
-        let t28 = t1 * (t15 + t18 * cos_gamma) * t26;
-        let t29 = t1 * t1;
-        let t30 = cos_gamma * t29;
-        let t31 = t18 * t30;
-        let bb1 = (-T::from_f64(2.0) * t31 * (d_hole + T::from_f64(2.0) * t31)).sqrt();
-        let t32 = bb1 / ob;
-        let t33 = t30 * e;
-        let t34 = t20 - T::from_f64(0.5) * t33;
-        let t35 = sin_gamma * t34;
-        let t36 = -T::from_f64(2.0) * t19 * t30;
-        let t37 = cos_gamma * (t18 * t29 - t34);
-        let t38 = half_d + t37 - t21;
-        let t39 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
-            * (-t33 + T::from_f64(2.0) * t20);
-        let t40 = -(cos_gamma * lever) + t35;
-        let t41 = sin_gamma
-            * (lever + t1 * (-(T::from_f64(0.5) * (t0 - t4) * d_peg) + t15) + t23 + t36)
-            + T::from_f64(2.0) * cos_gamma * t34;
-        let t42 = d_hole
-            * (t17 * (t1 + T::from_f64(2.0) * t22) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma
-                * (lever + t1 * (t15 - T::from_f64(0.5) * (-t4 + t0) * d_peg) + t23
-                    + t36) - T::from_f64(2.0) * t35;
-        let t43 = t40 * t41;
-        let t44 = (d_hole + T::from_f64(2.0) * t37 - T::from_f64(2.0) * t21) * t42;
-        let t45 = gammadot * psidot;
+        let ob = (t17 * t1).hypot(half_d);
+        let t18 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t19 = t18 * t1;
+        let t20 = sin_gamma * lever;
+        let t21 = t4 / (sin_gamma * sin_gamma * sin_gamma);
+        let t22 = h - t2;
+        let t23 = t22 * t22;
+        let t24 = t1 / ob;
+        let t25 = t24 * t17;
+        let t26 = t1 * (t14 + t17 * cos_gamma) * t24;
+        let t27 = t1 * t1;
+        let t28 = cos_gamma * t27;
+        let t29 = t17 * t28;
+        let bb1 = (-T::from_f64(2.0) * t29 * (d_hole + T::from_f64(2.0) * t29)).sqrt();
+        let t30 = bb1 / ob;
+        let t31 = t28 * e;
+        let t32 = t19 - T::from_f64(0.5) * t31;
+        let t33 = sin_gamma * t32;
+        let t34 = cos_gamma * (t17 * t27 - t32);
+        let t35 = half_d + t34 - t20;
+        let t36 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
+            * (-t31 + T::from_f64(2.0) * t19);
+        let t37 = -(cos_gamma * lever) + t33;
+        let t38 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t14) + t21 * e
+            - T::from_f64(2.0) * t18 * t28;
+        let t39 = sin_gamma * t38 + T::from_f64(2.0) * cos_gamma * t32;
+        let t40 = d_hole
+            * (t16 * (t1 + T::from_f64(2.0) * t21) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t38 - T::from_f64(2.0) * t33;
+        let t41 = t37 * t39;
+        let t42 = (d_hole + T::from_f64(2.0) * t34 - T::from_f64(2.0) * t20) * t40;
+        let t43 = gammadot * psidot;
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
@@ -280,44 +276,43 @@ pub mod rigid_peg_frictionless {
             T::from_f64(0.0),
             T::from_f64(0.0),
             -cos_gamma,
-            t28,
-            t28,
+            t26,
+            t26,
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            t32,
-            -t32,
+            t30,
+            -t30,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -sin_gamma,
-            t27,
-            t27,
+            t25,
+            t25,
         );
         let b = Vector5::new(
             -(m
-                * (t7 * (T::from_f64(0.125) * t8 - T::from_f64(1.0 / 12.0) * t9) * t14
+                * (t6 * (T::from_f64(0.125) * t7 - T::from_f64(1.0 / 12.0) * t8) * t13
                     + T::from_f64(0.5)
-                        * (-(t6 * (T::from_f64(2.0) * t43 - t44)
-                            + t7
-                                * (T::from_f64(0.5) * t14 * t25 - T::from_f64(0.25) * t39))
-                            + t6 * (T::from_f64(4.0) * t43 - T::from_f64(2.0) * t44))
-                    + g * t38 + gammaddot * (t16 + t40 * t40 + t38 * t38)))
-                + t40 * (t10 + t11) + f_z * t38,
-            t21 * (t13 - t12)
+                        * (-(t5 * (T::from_f64(2.0) * t41 - t42)
+                            + t6
+                                * (T::from_f64(0.5) * t13 * t23 - T::from_f64(0.25) * t36))
+                            + t5 * (T::from_f64(4.0) * t41 - T::from_f64(2.0) * t42))
+                    + g * t35 + gammaddot * (t15 + t37 * t37 + t35 * t35)))
+                + t37 * (t9 + t10) + f_z * t35,
+            m
+                * (t43
+                    * (-(t13
+                        * (T::from_f64(0.5) * t23 - T::from_f64(0.25) * t7
+                            + T::from_f64(1.0 / 6.0) * t8)) + T::from_f64(0.25) * t36)
+                    - psiddot
+                        * (t3 * (T::from_f64(0.25) * t23 + t15)
+                            + T::from_f64(0.125) * t4 * t7)) + t20 * (-t11 + t12),
+            t9 + t10 - m * (t39 * t5 + gammaddot * t37 + t20 * t6),
+            t11 - t12
                 + m
-                    * (t45
-                        * (-(t14
-                            * (T::from_f64(0.5) * t25 - T::from_f64(0.25) * t8
-                                + T::from_f64(1.0 / 6.0) * t9)) + T::from_f64(0.25) * t39)
-                        - psiddot
-                            * (t3 * (T::from_f64(0.25) * t25 + t16)
-                                + T::from_f64(0.125) * t5 * t8)),
-            t10 + t11 - m * (t41 * t6 + gammaddot * t40 + t21 * t7),
-            t12 - t13
-                + m
-                    * (-(t45 * ((T::from_f64(1.0) + T::from_f64(1.0)) * t40))
-                        + t21 * psiddot),
-            f_z - m * g - m * (-(t6 * t42) + gammaddot * t38),
+                    * (-(t43 * ((T::from_f64(1.0) + T::from_f64(1.0)) * t37))
+                        + t20 * psiddot),
+            f_z - m * g - m * (-(t5 * t40) + gammaddot * t35),
         );
         (a, b)
     }
@@ -331,7 +326,7 @@ pub mod rigid_peg_frictionless {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 23 add/sub, 40 mul, 1 div, 1 sqrt, 4 transcendental, 0 branches; 29 `let`s.
+    /// 22 add/sub, 39 mul, 1 div, 1 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 4>,
@@ -360,29 +355,27 @@ pub mod rigid_peg_frictionless {
         let t3 = t0 * t0;
         let t4 = cos_gamma * t3;
         let t5 = d_hole * sin_sum * sin_diff;
-        let t6 = t5 * t0 + t2;
-        let t7 = half_d - t1;
-        let t8 = t1 + t0 * t0 * (T::from_f64(0.5) * e + t5 * cos_gamma);
-        let t9 = -psidot * (t1 - t8);
-        let t10 = t5 * t4;
-        let bb1 = (-T::from_f64(2.0) * t10 * (d_hole + T::from_f64(2.0) * t10)).sqrt();
-        let t11 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+        let t6 = half_d - t1;
+        let t7 = t0 * t0 * (T::from_f64(0.5) * e + t5 * cos_gamma) + t1;
+        let t8 = -psidot * (t1 - t7);
+        let t9 = t5 * t4;
+        let bb1 = (-T::from_f64(2.0) * t9 * (d_hole + T::from_f64(2.0) * t9)).sqrt();
+        let t10 = d_peg * sin_half_gamma * t0 * cos_half_gamma
             - T::from_f64(0.5) * t4 * e;
-        let t12 = psidot * bb1;
-        let t13 = half_d + cos_gamma * (t5 * t3 - t11) - t1;
-        let t14 = t2 + sin_gamma * t11;
-        let t15 = gammadot * (t6 - t14);
-        let t16 = gammadot * (t13 + t8);
+        let t11 = psidot * bb1;
+        let t12 = half_d + cos_gamma * (t5 * t3 - t10) - t1;
+        let t13 = gammadot * (-(t2 + sin_gamma * t10) + t5 * t0 + t2);
+        let t14 = gammadot * (t12 + t7);
         Matrix3::new(
-            -t15,
-            -psidot * (t1 + t7),
-            gammadot * (t13 - t7),
-            -(gammadot * (-t14 + t6)) - t12,
-            t9,
-            t16,
-            t12 - t15,
-            t9,
-            t16,
+            -t13,
+            -psidot * (t1 + t6),
+            gammadot * (t12 - t6),
+            -t13 - t11,
+            t8,
+            t14,
+            t11 - t13,
+            t8,
+            t14,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).

@@ -32,7 +32,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 56 add/sub, 98 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 42 `let`s.
+    /// 50 add/sub, 94 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 39 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -68,52 +68,49 @@ pub mod rigid_peg_planar {
         let half_d = T::from_f64(0.5) * d_hole;
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t1;
         let t2 = sin_gamma * lever;
-        let t3 = cos_half_gamma * cos_half_gamma;
-        let t4 = gammadot * gammadot;
-        let t5 = T::from_f64(0.5) * e;
-        let t6 = lever - lever;
-        let t7 = sin_gamma * t6;
-        let t8 = sin_sum * sin_diff;
-        let t9 = t8 * d_hole;
-        let neg_a1 = t9 * t1;
+        let t3 = gammadot * gammadot;
+        let t4 = T::from_f64(0.5) * e;
+        let t5 = lever - lever;
+        let t6 = sin_gamma * t5;
+        let t7 = sin_sum * sin_diff;
+        let t8 = t7 * d_hole;
+        let neg_a1 = t8 * t1;
         let ob = neg_a1.hypot(half_d);
-        let t10 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t11 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t12 = t11 * e;
-        let t13 = t1 * (t5 + t9 * cos_gamma) * t1;
-        let t14 = m * t4;
-        let t15 = t1 * t1;
-        let t16 = cos_gamma * t15;
-        let t17 = t10 * t1 - T::from_f64(0.5) * t16 * e;
-        let t18 = sin_gamma * t17;
-        let t19 = -T::from_f64(2.0) * t10 * t16;
-        let t20 = t9 * t15;
-        let t21 = cos_gamma * (t20 - t17);
-        let t22 = half_d + t21 - t2;
-        let t23 = -(cos_gamma * lever) + t18;
-        let t24 = sin_gamma
-            * (lever + t1 * (-(T::from_f64(0.5) * (t0 - t3) * d_peg) + t5) + t12 + t19)
-            + T::from_f64(2.0) * cos_gamma * t17;
-        let t25 = cos_gamma * t6 - neg_a1 + t18;
-        let t26 = d_hole
-            * (t8 * (t1 + T::from_f64(2.0) * t11) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma
-                * (lever + t1 * (t5 - T::from_f64(0.5) * (-t3 + t0) * d_peg) + t12 + t19)
-            - T::from_f64(2.0) * t18;
-        let t27 = t23 * t24;
-        let t28 = (d_hole + T::from_f64(2.0) * t21 - T::from_f64(2.0) * t2) * t26;
+        let t9 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t10 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t11 = t1 * (t4 + t8 * cos_gamma) * t1;
+        let t12 = m * t3;
+        let t13 = t1 * t1;
+        let t14 = cos_gamma * t13;
+        let t15 = t9 * t1 - T::from_f64(0.5) * t14 * e;
+        let t16 = sin_gamma * t15;
+        let t17 = cos_gamma * (t8 * t13 - t15);
+        let t18 = half_d + t17 - t2;
+        let t19 = -(cos_gamma * lever) + t16;
+        let t20 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t4) + t10 * e
+            - T::from_f64(2.0) * t9 * t14;
+        let t21 = sin_gamma * t20 + T::from_f64(2.0) * cos_gamma * t15;
+        let t22 = cos_gamma * t5 - neg_a1 + t16;
+        let t23 = d_hole
+            * (t7 * (t1 + T::from_f64(2.0) * t10) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t20 - T::from_f64(2.0) * t16;
+        let t24 = t19 * t21;
+        let t25 = (d_hole + T::from_f64(2.0) * t17 - T::from_f64(2.0) * t2) * t23;
         let a = Matrix3::new(
             m
                 * (T::from_f64(1.0 / 12.0)
-                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t23 * t23
-                    + t22 * t22),
-            -(f * (t_k_eta * t25 - t_k_z * (-(cos_gamma * (-t17 + t20)) + t7))),
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t19 * t19
+                    + t18 * t18),
+            -(f * (t_k_eta * t22 - t_k_z * (-t17 + t6))),
             -T::from_f64(2.0)
-                * (f * (t25 * t_b_eta + (half_d + t21 - t7 + t13) * t_b_z)),
-            m * t23,
+                * (f * (t22 * t_b_eta + (half_d + t17 - t6 + t11) * t_b_z)),
+            m * t19,
             -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t0,
-            T::from_f64(2.0) * t13 / ob - T::from_f64(2.0) * f * t_b_eta,
-            m * t22,
+            T::from_f64(2.0) * t11 / ob - T::from_f64(2.0) * f * t_b_eta,
+            m * t18,
             -(f * t_k_z) - sin_gamma,
             -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * neg_a1 / ob,
         );
@@ -121,11 +118,11 @@ pub mod rigid_peg_planar {
             m_gamma
                 - m
                     * (T::from_f64(0.5)
-                        * (T::from_f64(4.0) * t27 - T::from_f64(2.0) * t28
-                            - (T::from_f64(2.0) * t27 - t28)) * t4 + g * t22) + f_z * t22
-                + f_x * t23,
-            f_x - t14 * t24,
-            f_z - m * g + t14 * t26,
+                        * (T::from_f64(4.0) * t24 - T::from_f64(2.0) * t25
+                            - (T::from_f64(2.0) * t24 - t25)) * t3 + g * t18) + f_z * t18
+                + f_x * t19,
+            f_x - t12 * t21,
+            f_z - m * g + t12 * t23,
         );
         (a, b)
     }
@@ -144,7 +141,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 58 add/sub, 99 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 41 `let`s.
+    /// 52 add/sub, 95 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 38 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -181,47 +178,44 @@ pub mod rigid_peg_planar {
         let half_d = T::from_f64(0.5) * d_hole;
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t1;
         let t2 = sin_gamma * lever;
-        let t3 = cos_half_gamma * cos_half_gamma;
-        let t4 = gammadot * gammadot;
-        let t5 = T::from_f64(0.5) * e;
-        let t6 = lever - lever;
-        let t7 = sin_gamma * t6;
-        let t8 = sin_sum * sin_diff;
-        let t9 = t8 * d_hole;
-        let neg_a1 = t9 * t1;
+        let t3 = gammadot * gammadot;
+        let t4 = T::from_f64(0.5) * e;
+        let t5 = lever - lever;
+        let t6 = sin_gamma * t5;
+        let t7 = sin_sum * sin_diff;
+        let t8 = t7 * d_hole;
+        let neg_a1 = t8 * t1;
         let ob = neg_a1.hypot(half_d);
-        let t10 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t11 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t12 = t11 * e;
-        let t13 = t1 * (t5 + t9 * cos_gamma) * t1;
-        let t14 = t1 * t1;
-        let t15 = cos_gamma * t14;
-        let t16 = t10 * t1 - T::from_f64(0.5) * t15 * e;
-        let t17 = sin_gamma * t16;
-        let t18 = -T::from_f64(2.0) * t10 * t15;
-        let t19 = t9 * t14;
-        let t20 = cos_gamma * (t19 - t16);
-        let t21 = half_d + t20 - t2;
-        let t22 = -(cos_gamma * lever) + t17;
-        let t23 = sin_gamma
-            * (lever + t1 * (-(T::from_f64(0.5) * (t0 - t3) * d_peg) + t5) + t12 + t18)
-            + T::from_f64(2.0) * cos_gamma * t16;
-        let t24 = cos_gamma * t6 - neg_a1 + t17;
-        let t25 = d_hole
-            * (t8 * (t1 + T::from_f64(2.0) * t11) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma
-                * (lever + t1 * (t5 - T::from_f64(0.5) * (-t3 + t0) * d_peg) + t12 + t18)
-            - T::from_f64(2.0) * t17;
-        let t26 = t22 * t23;
-        let t27 = (d_hole + T::from_f64(2.0) * t20 - T::from_f64(2.0) * t2) * t25;
+        let t9 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t10 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t11 = t1 * (t4 + t8 * cos_gamma) * t1;
+        let t12 = t1 * t1;
+        let t13 = cos_gamma * t12;
+        let t14 = t9 * t1 - T::from_f64(0.5) * t13 * e;
+        let t15 = sin_gamma * t14;
+        let t16 = cos_gamma * (t8 * t12 - t14);
+        let t17 = half_d + t16 - t2;
+        let t18 = -(cos_gamma * lever) + t15;
+        let t19 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t4) + t10 * e
+            - T::from_f64(2.0) * t9 * t13;
+        let t20 = sin_gamma * t19 + T::from_f64(2.0) * cos_gamma * t14;
+        let t21 = cos_gamma * t5 - neg_a1 + t15;
+        let t22 = d_hole
+            * (t7 * (t1 + T::from_f64(2.0) * t10) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t19 - T::from_f64(2.0) * t15;
+        let t23 = t18 * t20;
+        let t24 = (d_hole + T::from_f64(2.0) * t16 - T::from_f64(2.0) * t2) * t22;
         let a = Matrix3::new(
             -T::from_f64(1.0),
-            -(f * (t_k_eta * t24 - t_k_z * (-(cos_gamma * (-t16 + t19)) + t7))),
+            -(f * (t_k_eta * t21 - t_k_z * (-t16 + t6))),
             -T::from_f64(2.0)
-                * (f * (t24 * t_b_eta + (half_d + t20 - t7 + t13) * t_b_z)),
+                * (f * (t21 * t_b_eta + (half_d + t16 - t6 + t11) * t_b_z)),
             T::from_f64(0.0),
             -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t0,
-            T::from_f64(2.0) * t13 / ob - T::from_f64(2.0) * f * t_b_eta,
+            T::from_f64(2.0) * t11 / ob - T::from_f64(2.0) * f * t_b_eta,
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
             -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * neg_a1 / ob,
@@ -229,14 +223,14 @@ pub mod rigid_peg_planar {
         let b = Vector3::new(
             -(m
                 * (T::from_f64(0.5)
-                    * (T::from_f64(4.0) * t26 - T::from_f64(2.0) * t27
-                        - (T::from_f64(2.0) * t26 - t27)) * t4 + g * t21
+                    * (T::from_f64(4.0) * t23 - T::from_f64(2.0) * t24
+                        - (T::from_f64(2.0) * t23 - t24)) * t3 + g * t17
                     + gammaddot
                         * (T::from_f64(1.0 / 12.0)
-                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t22 * t22
-                            + t21 * t21))) + f_z * t21 + f_x * t22,
-            f_x - m * (t23 * t4 + gammaddot * t22),
-            f_z - m * g - m * (-(t4 * t25) + gammaddot * t21),
+                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t18 * t18
+                            + t17 * t17))) + f_z * t17 + f_x * t18,
+            f_x - m * (t20 * t3 + gammaddot * t18),
+            f_z - m * g - m * (-(t3 * t22) + gammaddot * t17),
         );
         (a, b)
     }
@@ -280,9 +274,9 @@ pub mod rigid_peg_planar {
         let t5 = d_peg * sin_half_gamma * t0 * cos_half_gamma
             - T::from_f64(0.5) * cos_gamma * e * t3;
         let t6 = half_d + cos_gamma * (t4 * t3 - t5) - t1;
-        let t7 = -gammadot * (t4 * t0 + t2 - (t2 + sin_gamma * t5));
+        let t7 = -gammadot * (-(t2 + sin_gamma * t5) + t4 * t0 + t2);
         let t8 = gammadot
-            * (t6 + t1 + t0 * t0 * (T::from_f64(0.5) * e + t4 * cos_gamma));
+            * (t6 + t0 * t0 * (T::from_f64(0.5) * e + t4 * cos_gamma) + t1);
         Matrix3::new(
             t7,
             T::from_f64(0.0),

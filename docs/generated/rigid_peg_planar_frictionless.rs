@@ -29,7 +29,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 42 add/sub, 83 mul, 3 div, 0 sqrt, 5 transcendental, 0 branches; 37 `let`s.
+    /// 37 add/sub, 80 mul, 3 div, 0 sqrt, 5 transcendental, 0 branches; 35 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -59,58 +59,56 @@ pub mod rigid_peg_planar_frictionless {
         let half_d = T::from_f64(0.5) * d_hole;
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t1;
         let t2 = sin_gamma * lever;
-        let t3 = cos_half_gamma * cos_half_gamma;
-        let t4 = gammadot * gammadot;
-        let t5 = T::from_f64(0.5) * e;
-        let t6 = sin_sum * sin_diff;
-        let t7 = t6 * d_hole;
-        let ob = (t7 * t1).hypot(half_d);
-        let t8 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t9 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t10 = t9 * e;
-        let t11 = t1 / ob;
-        let t12 = m * t4;
-        let t13 = t1 * t1;
-        let t14 = cos_gamma * t13;
-        let t15 = t8 * t1 - T::from_f64(0.5) * t14 * e;
-        let t16 = sin_gamma * t15;
-        let t17 = -T::from_f64(2.0) * t8 * t14;
-        let t18 = cos_gamma * (t7 * t13 - t15);
-        let t19 = half_d + t18 - t2;
-        let t20 = -(cos_gamma * lever) + t16;
-        let t21 = sin_gamma
-            * (lever + t1 * (-(T::from_f64(0.5) * (t0 - t3) * d_peg) + t5) + t10 + t17)
-            + T::from_f64(2.0) * cos_gamma * t15;
-        let t22 = d_hole
-            * (t6 * (t1 + T::from_f64(2.0) * t9) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma
-                * (lever + t1 * (t5 - T::from_f64(0.5) * (-t3 + t0) * d_peg) + t10 + t17)
-            - T::from_f64(2.0) * t16;
-        let t23 = t20 * t21;
-        let t24 = (d_hole + T::from_f64(2.0) * t18 - T::from_f64(2.0) * t2) * t22;
+        let t3 = gammadot * gammadot;
+        let t4 = T::from_f64(0.5) * e;
+        let t5 = sin_sum * sin_diff;
+        let t6 = t5 * d_hole;
+        let ob = (t6 * t1).hypot(half_d);
+        let t7 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t8 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t9 = t1 / ob;
+        let t10 = m * t3;
+        let t11 = t1 * t1;
+        let t12 = cos_gamma * t11;
+        let t13 = t7 * t1 - T::from_f64(0.5) * t12 * e;
+        let t14 = sin_gamma * t13;
+        let t15 = cos_gamma * (t6 * t11 - t13);
+        let t16 = half_d + t15 - t2;
+        let t17 = -(cos_gamma * lever) + t14;
+        let t18 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t4) + t8 * e
+            - T::from_f64(2.0) * t7 * t12;
+        let t19 = sin_gamma * t18 + T::from_f64(2.0) * cos_gamma * t13;
+        let t20 = d_hole
+            * (t5 * (t1 + T::from_f64(2.0) * t8) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t18 - T::from_f64(2.0) * t14;
+        let t21 = t17 * t19;
+        let t22 = (d_hole + T::from_f64(2.0) * t15 - T::from_f64(2.0) * t2) * t20;
         let a = Matrix3::new(
             m
                 * (T::from_f64(1.0 / 12.0)
-                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t20 * t20
-                    + t19 * t19),
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t17 * t17
+                    + t16 * t16),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * t20,
+            m * t17,
             T::from_f64(2.0) * t0 - T::from_f64(1.0),
-            T::from_f64(2.0) * (t1 * (t5 + t7 * cos_gamma)) * t11,
-            m * t19,
+            T::from_f64(2.0) * (t1 * (t4 + t6 * cos_gamma)) * t9,
+            m * t16,
             -sin_gamma,
-            T::from_f64(2.0) * t11 * t7,
+            T::from_f64(2.0) * t9 * t6,
         );
         let b = Vector3::new(
             m_gamma
                 - m
                     * (T::from_f64(0.5)
-                        * (T::from_f64(4.0) * t23 - T::from_f64(2.0) * t24
-                            - (T::from_f64(2.0) * t23 - t24)) * t4 + g * t19) + f_z * t19
-                + f_x * t20,
-            f_x - t12 * t21,
-            f_z - m * g + t12 * t22,
+                        * (T::from_f64(4.0) * t21 - T::from_f64(2.0) * t22
+                            - (T::from_f64(2.0) * t21 - t22)) * t3 + g * t16) + f_z * t16
+                + f_x * t17,
+            f_x - t10 * t19,
+            f_z - m * g + t10 * t20,
         );
         (a, b)
     }
@@ -128,7 +126,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 44 add/sub, 84 mul, 3 div, 0 sqrt, 5 transcendental, 0 branches; 36 `let`s.
+    /// 39 add/sub, 81 mul, 3 div, 0 sqrt, 5 transcendental, 0 branches; 34 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -159,56 +157,54 @@ pub mod rigid_peg_planar_frictionless {
         let half_d = T::from_f64(0.5) * d_hole;
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t1;
         let t2 = sin_gamma * lever;
-        let t3 = cos_half_gamma * cos_half_gamma;
-        let t4 = gammadot * gammadot;
-        let t5 = T::from_f64(0.5) * e;
-        let t6 = sin_sum * sin_diff;
-        let t7 = t6 * d_hole;
-        let ob = (t7 * t1).hypot(half_d);
-        let t8 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t9 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t10 = t9 * e;
-        let t11 = t1 / ob;
-        let t12 = t1 * t1;
-        let t13 = cos_gamma * t12;
-        let t14 = t8 * t1 - T::from_f64(0.5) * t13 * e;
-        let t15 = sin_gamma * t14;
-        let t16 = -T::from_f64(2.0) * t8 * t13;
-        let t17 = cos_gamma * (t7 * t12 - t14);
-        let t18 = half_d + t17 - t2;
-        let t19 = -(cos_gamma * lever) + t15;
-        let t20 = sin_gamma
-            * (lever + t1 * (-(T::from_f64(0.5) * (t0 - t3) * d_peg) + t5) + t10 + t16)
-            + T::from_f64(2.0) * cos_gamma * t14;
-        let t21 = d_hole
-            * (t6 * (t1 + T::from_f64(2.0) * t9) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma
-                * (lever + t1 * (t5 - T::from_f64(0.5) * (-t3 + t0) * d_peg) + t10 + t16)
-            - T::from_f64(2.0) * t15;
-        let t22 = t19 * t20;
-        let t23 = (d_hole + T::from_f64(2.0) * t17 - T::from_f64(2.0) * t2) * t21;
+        let t3 = gammadot * gammadot;
+        let t4 = T::from_f64(0.5) * e;
+        let t5 = sin_sum * sin_diff;
+        let t6 = t5 * d_hole;
+        let ob = (t6 * t1).hypot(half_d);
+        let t7 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t8 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t9 = t1 / ob;
+        let t10 = t1 * t1;
+        let t11 = cos_gamma * t10;
+        let t12 = t7 * t1 - T::from_f64(0.5) * t11 * e;
+        let t13 = sin_gamma * t12;
+        let t14 = cos_gamma * (t6 * t10 - t12);
+        let t15 = half_d + t14 - t2;
+        let t16 = -(cos_gamma * lever) + t13;
+        let t17 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t4) + t8 * e
+            - T::from_f64(2.0) * t7 * t11;
+        let t18 = sin_gamma * t17 + T::from_f64(2.0) * cos_gamma * t12;
+        let t19 = d_hole
+            * (t5 * (t1 + T::from_f64(2.0) * t8) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t17 - T::from_f64(2.0) * t13;
+        let t20 = t16 * t18;
+        let t21 = (d_hole + T::from_f64(2.0) * t14 - T::from_f64(2.0) * t2) * t19;
         let a = Matrix3::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(2.0) * t0 - T::from_f64(1.0),
-            T::from_f64(2.0) * (t1 * (t5 + t7 * cos_gamma)) * t11,
+            T::from_f64(2.0) * (t1 * (t4 + t6 * cos_gamma)) * t9,
             T::from_f64(0.0),
             -sin_gamma,
-            T::from_f64(2.0) * t11 * t7,
+            T::from_f64(2.0) * t9 * t6,
         );
         let b = Vector3::new(
             -(m
                 * (T::from_f64(0.5)
-                    * (T::from_f64(4.0) * t22 - T::from_f64(2.0) * t23
-                        - (T::from_f64(2.0) * t22 - t23)) * t4 + g * t18
+                    * (T::from_f64(4.0) * t20 - T::from_f64(2.0) * t21
+                        - (T::from_f64(2.0) * t20 - t21)) * t3 + g * t15
                     + gammaddot
                         * (T::from_f64(1.0 / 12.0)
-                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t19 * t19
-                            + t18 * t18))) + f_z * t18 + f_x * t19,
-            f_x - m * (t20 * t4 + gammaddot * t19),
-            f_z - m * g - m * (-(t4 * t21) + gammaddot * t18),
+                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t16 * t16
+                            + t15 * t15))) + f_z * t15 + f_x * t16,
+            f_x - m * (t18 * t3 + gammaddot * t16),
+            f_z - m * g - m * (-(t3 * t19) + gammaddot * t15),
         );
         (a, b)
     }
@@ -252,9 +248,9 @@ pub mod rigid_peg_planar_frictionless {
         let t5 = d_peg * sin_half_gamma * t0 * cos_half_gamma
             - T::from_f64(0.5) * cos_gamma * e * t3;
         let t6 = half_d + cos_gamma * (t4 * t3 - t5) - t1;
-        let t7 = -gammadot * (t4 * t0 + t2 - (t2 + sin_gamma * t5));
+        let t7 = -gammadot * (-(t2 + sin_gamma * t5) + t4 * t0 + t2);
         let t8 = gammadot
-            * (t6 + t1 + t0 * t0 * (T::from_f64(0.5) * e + t4 * cos_gamma));
+            * (t6 + t0 * t0 * (T::from_f64(0.5) * e + t4 * cos_gamma) + t1);
         Matrix3::new(
             t7,
             T::from_f64(0.0),

@@ -99,7 +99,7 @@ fn normalize_sum(g: &Graph, xs: &[Id]) -> Id {
     if !flip {
         return sum_node(g, xs.to_vec());
     }
-    let mut flipped: Vec<Id> = xs
+    let flipped: Vec<Id> = xs
         .iter()
         .zip(terms)
         .map(|(&t, (c, fs))| match negated(g, t) {
@@ -107,13 +107,6 @@ fn normalize_sum(g: &Graph, xs: &[Id]) -> Id {
             None => term_node(g, (-c, fs)),
         })
         .collect();
-    // Two terms in id order, as the simplifier orders a sum: `−(b − a)`
-    // is then the very node `a − b` where the model built it too, and the
-    // value is the same bits (`a + b = b + a`). Longer sums keep their
-    // order, which is their order of evaluation.
-    if flipped.len() == 2 {
-        flipped.sort_unstable();
-    }
     negate(g, sum_node(g, flipped))
 }
 
