@@ -80,7 +80,7 @@ pub mod cart_pole {
             xcdot,
             thetadot,
             (m * t1 + t4 * cos_theta * t2) / t3,
-            (-(t4 * t0) - cos_theta * t1) * m / (l * t3),
+            -(t4 * t0 + cos_theta * t1) * m / (l * t3),
         )
     }
     /// G = ∂f/∂x − Σ_j (∂M_{·j}/∂x) q̈_j (n × 2n) at the accelerations `qdd`;

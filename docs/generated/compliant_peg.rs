@@ -53,7 +53,7 @@ pub mod compliant_peg {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 110 add/sub, 149 mul, 7 div, 4 sqrt, 6 transcendental, 16 branches; 92 `let`s.
+    /// 105 add/sub, 140 mul, 7 div, 4 sqrt, 6 transcendental, 16 branches; 89 `let`s.
     #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
@@ -81,96 +81,91 @@ pub mod compliant_peg {
         let t0 = f1 * sin_theta;
         let t1 = f2 * cos_theta;
         let t2 = f1 * cos_theta;
-        let t3 = -f2 * sin_theta;
+        let t3 = f2 * sin_theta;
         let t4 = -T::from_f64(0.5) * d;
-        let t5 = -x;
-        let t6 = -rho_h + t4 + t5;
-        let t7 = rho_h - z;
-        let t8 = sin_theta * t7;
-        let t9 = T::from_f64(0.5) * theta;
-        let (t10, t22) = t9.sin_cos();
-        let t11 = t10 * t10;
-        let t12 = cos_theta * t7;
-        let t13 = sin_theta * t6 + t12;
-        let t14 = -r;
-        let t15 = r * sin_theta;
-        let t16 = cos_theta * t13 + t15;
-        let t17 = r * cos_theta;
-        let t18 = -(sin_theta * t13) + t17;
-        let t19 = sin_theta * (xdot + thetadot * t16)
-            + cos_theta * (zdot + thetadot * t18);
-        let t20 = -T::from_f64(1.0) + T::from_f64(2.0) * t11;
-        let t21 = zdot * sin_theta;
-        let t23 = t10 * t22;
-        let t24 = v_s.hypot(t19);
-        let t25 = -rho_p;
-        let t26 = l_c + t25;
-        let t27 = r + t25;
-        let t28 = sin_theta * t26;
-        let t29 = rho_p * sin_theta;
-        let t30 = rho_p * t11;
-        let t31 = cos_theta * t26;
-        let t32 = rho_h + T::from_f64(0.5) * d + t5;
-        let t33 = t12 + sin_theta * t32;
-        let t34 = T::from_f64(1.0) - T::from_f64(2.0) * t11;
-        let t35 = rho_p + t14;
-        let t36 = r + t4 + x + t28 - T::from_f64(2.0) * t11 * t27;
-        let t37 = t36.max0();
-        let t38 = t37 * t37.sqrt();
-        let t39 = t36.step();
-        let t40 = r + t4 + x + t8 + T::from_f64(2.0) * t11 * t32;
-        let t41 = t40.max0();
-        let t42 = t41 * t41.sqrt();
-        let t43 = t40.step();
-        let t44 = -t39;
-        let t45 = r + t4 + t5 - t8 - T::from_f64(2.0) * t6 * t11;
-        let t46 = t45.max0();
-        let t47 = t46 * t46.sqrt();
-        let t48 = -t12 - T::from_f64(2.0) * t23 * t6;
-        let t49 = xdot * t20 + t21 + thetadot * t48;
-        let t50 = (T::from_f64(1.0) + hc_alpha * t49).max0();
-        let t51 = t45.step();
-        let t52 = -(sin_theta * (l_c + t25 + t29))
-            - cos_theta * (r - T::from_f64(2.0) * t30);
-        let t53 = zdot + thetadot * t52;
-        let t54 = t31 - T::from_f64(2.0) * t23 * t27;
-        let t55 = xdot + thetadot * t54;
-        let t56 = (T::from_f64(1.0) + hc_alpha * t55).max0();
-        let t57 = v_s.hypot(t53);
-        let t58 = -t15 + cos_theta * t33;
-        let t59 = -t17 - sin_theta * t33;
-        let t60 = sin_theta * (xdot + thetadot * t58)
-            + cos_theta * (zdot + thetadot * t59);
-        let t61 = t12 + T::from_f64(2.0) * t23 * t32;
-        let t62 = xdot * t34 - t21 + thetadot * t61;
-        let t63 = (T::from_f64(1.0) + hc_alpha * t62).max0();
-        let t64 = v_s.hypot(t60);
-        let t65 = r + t4 + t5 - t28 + T::from_f64(2.0) * t11 * t35;
-        let t66 = -(sin_theta * (l_c + t25 - t29))
-            - cos_theta * (t14 + T::from_f64(2.0) * t30);
-        let t67 = zdot + thetadot * t66;
-        let t68 = t65.max0();
-        let t69 = t68 * t68.sqrt();
-        let t70 = -t31 + T::from_f64(2.0) * t23 * t35;
-        let t71 = -xdot + thetadot * t70;
-        let t72 = (T::from_f64(1.0) + hc_alpha * t71).max0();
-        let t73 = v_s.hypot(t67);
-        let t74 = t65.step();
-        let t75 = t50 - T::from_f64(1.0);
-        let t76 = t56 - T::from_f64(1.0);
-        let t77 = t63 - T::from_f64(1.0);
-        let t78 = t72 - T::from_f64(1.0);
-        let t79 = -t51 - t75;
-        let t80 = mu * sin_theta;
-        let t81 = t50 / t24;
-        let t82 = t81 * t19;
-        let t83 = -t43 - t77;
-        let t84 = t63 / t64;
-        let t85 = t84 * t60;
-        let t86 = t56 / t57;
-        let t87 = t86 * t53;
-        let t88 = t72 / t73;
-        let t89 = t88 * t67;
+        let t5 = -rho_h + t4 - x;
+        let t6 = T::from_f64(0.5) * theta;
+        let (t7, t8) = t6.sin_cos();
+        let t9 = t7 * t7;
+        let t10 = r * sin_theta;
+        let t11 = r * cos_theta;
+        let t12 = zdot * sin_theta;
+        let t13 = t7 * t8;
+        let t14 = l_c - rho_p;
+        let t15 = r - rho_p;
+        let t16 = sin_theta * t14;
+        let t17 = rho_p * sin_theta;
+        let t18 = cos_theta * (r - T::from_f64(2.0) * rho_p * t9);
+        let t19 = cos_theta * t14;
+        let t20 = rho_h + T::from_f64(0.5) * d - x;
+        let t21 = T::from_f64(1.0) - T::from_f64(2.0) * t9;
+        let t22 = -rho_h + z;
+        let t23 = sin_theta * t22;
+        let delta_edge_left = r + t4 - x + t23 - T::from_f64(2.0) * t5 * t9;
+        let pen_edge_left = delta_edge_left.max0();
+        let t24 = pen_edge_left * pen_edge_left.sqrt();
+        let t25 = -xdot * t21;
+        let t26 = cos_theta * t22;
+        let step_delta_edge_left = delta_edge_left.step();
+        let t27 = sin_theta * (l_c - rho_p + t17) + t18;
+        let slip_wall_right = zdot - thetadot * t27;
+        let t28 = v_s.hypot(slip_wall_right);
+        let t29 = -rho_p + r;
+        let t30 = sin_theta * (-l_c + rho_p + t17) + t18;
+        let slip_wall_left = zdot + thetadot * t30;
+        let t31 = v_s.hypot(slip_wall_left);
+        let delta_wall_right = r + t4 + x + t16 - T::from_f64(2.0) * t9 * t15;
+        let pen_wall_right = delta_wall_right.max0();
+        let t32 = pen_wall_right * pen_wall_right.sqrt();
+        let step_delta_wall_right = delta_wall_right.step();
+        let t33 = t19 - T::from_f64(2.0) * t13 * t15;
+        let delta_rate_wall_right = xdot + thetadot * t33;
+        let t34 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
+        let t35 = sin_theta * t5 - t26;
+        let t36 = cos_theta * t35 + t10;
+        let t37 = -(sin_theta * t35) + t11;
+        let slip_edge_left = sin_theta * (xdot + thetadot * t36)
+            + cos_theta * (zdot + thetadot * t37);
+        let t38 = t26 - T::from_f64(2.0) * t13 * t5;
+        let delta_rate_edge_left = t25 + t12 + thetadot * t38;
+        let t39 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
+        let t40 = v_s.hypot(slip_edge_left);
+        let t41 = -t26 + sin_theta * t20;
+        let t42 = t10 - cos_theta * t41;
+        let t43 = t11 + sin_theta * t41;
+        let slip_edge_right = sin_theta * (xdot - thetadot * t42)
+            + cos_theta * (zdot - thetadot * t43);
+        let t44 = t26 - T::from_f64(2.0) * t13 * t20;
+        let t45 = t25 + t12 + thetadot * t44;
+        let t46 = (T::from_f64(1.0) - hc_alpha * t45).max0();
+        let t47 = v_s.hypot(slip_edge_right);
+        let delta_wall_left = r + t4 - x - t16 - T::from_f64(2.0) * t9 * t29;
+        let pen_wall_left = delta_wall_left.max0();
+        let t48 = pen_wall_left * pen_wall_left.sqrt();
+        let t49 = t19 + T::from_f64(2.0) * t13 * t29;
+        let t50 = xdot + thetadot * t49;
+        let t51 = (T::from_f64(1.0) - hc_alpha * t50).max0();
+        let step_delta_wall_left = delta_wall_left.step();
+        let t52 = -t39 + T::from_f64(1.0);
+        let t53 = -t34 + T::from_f64(1.0);
+        let delta_edge_right = r + t4 + x - t23 + T::from_f64(2.0) * t9 * t20;
+        let pen_edge_right = delta_edge_right.max0();
+        let t54 = pen_edge_right * pen_edge_right.sqrt();
+        let t55 = -t46 + T::from_f64(1.0);
+        let step_delta_edge_right = delta_edge_right.step();
+        let t56 = -t51 + T::from_f64(1.0);
+        let t57 = t39 / t40;
+        let t58 = t57 * slip_edge_left;
+        let t59 = t46 / t47;
+        let t60 = t59 * slip_edge_right;
+        let t61 = step_delta_edge_left - t52;
+        let t62 = -step_delta_edge_right + t55;
+        let t63 = t24 * t61 + t54 * t62;
+        let t64 = mu * (t58 * t24 + t60 * t54);
+        let t65 = t34 / t28;
+        let t66 = t65 * slip_wall_right;
+        let t67 = t51 / t31;
+        let t68 = t67 * slip_wall_left;
         SMatrix::<
             T,
             8,
@@ -180,31 +175,37 @@ pub mod compliant_peg {
                 xdot,
                 zdot,
                 thetadot,
-                (k_edge * (t47 * (t20 * t79 - t80 * t82) + t42 * (t34 * t83 - t80 * t85))
+                (k_edge * (t21 * t63 - t64 * sin_theta)
                     + k_wall
-                        * (t38 * (T::from_f64(1.0) + t44 - t56)
-                            + t69 * (t72 - T::from_f64(1.0) + t74)) + t0 + t1) / m,
-                (k_edge
-                    * (sin_theta * (t47 * t79 + t42 * (t43 + t77))
-                        + cos_theta * (-(t82 * t47) - t85 * t42) * mu)
-                    + k_wall * (-(t87 * t38) - t89 * t69) * mu + t2 + t3) / m,
-                (m_2
+                        * (-(t32 * (-T::from_f64(1.0) + step_delta_wall_right + t34))
+                            + t48 * (t51 - T::from_f64(1.0) + step_delta_wall_left)) + t0
+                    + t1) / m,
+                -(k_edge * (sin_theta * t63 + t64 * cos_theta)
+                    + k_wall * (t66 * t32 + t68 * t48) * mu - t2 + t3) / m,
+                -(-m_2
                     + k_edge
-                        * (t47
-                            * (t48 * t79
-                                - t82 * mu * (sin_theta * t16 + cos_theta * t18))
-                            + t42
-                                * (t61 * t83
-                                    - t85 * mu * (sin_theta * t58 + cos_theta * t59)))
+                        * (t24
+                            * (t38 * t61
+                                + t58 * mu * (sin_theta * t36 + cos_theta * t37))
+                            - t54
+                                * (-(t44 * t62)
+                                    + t60 * mu * (sin_theta * t42 + cos_theta * t43)))
                     + k_wall
-                        * (t38 * (t54 * (t44 - t76) - t87 * mu * t52)
-                            + t69 * (t70 * (-t74 - t78) - t89 * mu * t66))) / j,
-                xdot * (t0 + t1) + zdot * (t2 + t3) + thetadot * m_2,
+                        * (-(t32
+                            * (-(t33 * (step_delta_wall_right - t53)) + t66 * mu * t27))
+                            + t48
+                                * (-(t49 * (step_delta_wall_left - t56)) + t68 * mu * t30)))
+                    / j,
+                xdot * (t0 + t1) + zdot * (t2 - t3) + thetadot * m_2,
                 mu
-                    * (k_edge * (t81 * t47 * (t19 * t19) + t84 * t42 * (t60 * t60))
-                        + k_wall * (t86 * t38 * (t53 * t53) + t88 * t69 * (t67 * t67)))
-                    + k_edge * (t49 * t47 * t75 + t62 * t42 * t77)
-                    + k_wall * (t55 * t38 * t76 + t71 * t69 * t78),
+                    * (k_edge
+                        * (t57 * t24 * (slip_edge_left * slip_edge_left)
+                            + t59 * t54 * (slip_edge_right * slip_edge_right))
+                        + k_wall
+                            * (t65 * t32 * (slip_wall_right * slip_wall_right)
+                                + t67 * t48 * (slip_wall_left * slip_wall_left)))
+                    - k_edge * (delta_rate_edge_left * t24 * t52 - t45 * t54 * t55)
+                    - k_wall * (delta_rate_wall_right * t32 * t53 - t50 * t48 * t56),
             ],
         )
     }
@@ -218,7 +219,7 @@ pub mod compliant_peg {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 388 add/sub, 756 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 306 `let`s.
+    /// 365 add/sub, 722 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 289 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -245,315 +246,298 @@ pub mod compliant_peg {
         let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = f1 * sin_theta;
         let t1 = f2 * cos_theta;
-        let t2 = f1 * cos_theta;
-        let t3 = -f2 * sin_theta;
-        let t4 = t2 + t3;
-        let t5 = -T::from_f64(0.5) * d;
-        let t6 = -x;
-        let t7 = -rho_h + t5 + t6;
-        let t8 = rho_h - z;
-        let t9 = sin_theta * t8;
-        let t10 = T::from_f64(0.5) * theta;
-        let (t11, t27) = t10.sin_cos();
-        let t12 = t11 * t11;
-        let t13 = cos_theta * t8;
-        let t14 = sin_theta * t7 + t13;
-        let t15 = -r;
-        let t16 = cos_theta * t14;
-        let t17 = r * sin_theta;
-        let t18 = t16 + t17;
-        let t19 = xdot + thetadot * t18;
-        let t20 = -sin_theta * t14;
-        let t21 = r * cos_theta;
-        let t22 = t20 + t21;
-        let t23 = zdot + thetadot * t22;
-        let t24 = sin_theta * t19 + cos_theta * t23;
-        let t25 = -T::from_f64(1.0) + T::from_f64(2.0) * t12;
-        let t26 = zdot * sin_theta;
-        let t28 = t11 * t27;
-        let t29 = v_s.hypot(t24);
-        let t30 = T::from_f64(1.0) / t29;
-        let t31 = sin_theta * t18 + cos_theta * t22;
-        let t32 = t24 * t24;
-        let t33 = -rho_p;
-        let t34 = l_c + t33;
-        let t35 = r + t33;
-        let t36 = sin_theta * t34;
-        let t37 = rho_p * sin_theta;
-        let t38 = l_c + t33 + t37;
-        let t39 = rho_p * t12;
-        let t40 = sin_theta * t38;
-        let t41 = cos_theta * t34;
-        let t42 = rho_h + T::from_f64(0.5) * d + t6;
-        let t43 = t13 + sin_theta * t42;
-        let t44 = cos_theta * t43;
-        let t45 = -sin_theta * t43;
-        let t46 = T::from_f64(1.0) - T::from_f64(2.0) * t12;
-        let t47 = rho_p + t15;
-        let t48 = T::from_f64(1.0) / m;
-        let t49 = T::from_f64(1.0) / j;
-        let t50 = t25 * t25;
-        let t51 = sin_theta * sin_theta;
-        let t52 = t46 * t46;
-        let t53 = cos_theta * cos_theta;
-        let t54 = zdot * cos_theta;
-        let t55 = t27 * t27;
-        let t56 = T::from_f64(1.0) / (t29 * t29 * t29);
-        let t57 = r + t5 + x + t36 - T::from_f64(2.0) * t12 * t35;
-        let t58 = t57.max0();
-        let t59 = t58 * t58.sqrt();
-        let t60 = t57.step();
-        let t61 = r + t5 + x + t9 + T::from_f64(2.0) * t12 * t42;
+        let t2 = t0 + t1;
+        let t3 = f1 * cos_theta;
+        let t4 = -f2 * sin_theta;
+        let t5 = t3 + t4;
+        let t6 = -T::from_f64(0.5) * d;
+        let t7 = -rho_h + t6 - x;
+        let t8 = T::from_f64(0.5) * theta;
+        let (t9, t10) = t8.sin_cos();
+        let t11 = t9 * t9;
+        let t12 = r * sin_theta;
+        let t13 = r * cos_theta;
+        let t14 = zdot * sin_theta;
+        let t15 = t9 * t10;
+        let t16 = l_c - rho_p;
+        let t17 = r - rho_p;
+        let t18 = sin_theta * t16;
+        let t19 = rho_p * sin_theta;
+        let t20 = l_c - rho_p + t19;
+        let t21 = r - T::from_f64(2.0) * rho_p * t11;
+        let t22 = sin_theta * t21;
+        let t23 = cos_theta * t21;
+        let t24 = sin_theta * t20;
+        let t25 = cos_theta * t16;
+        let t26 = rho_h + T::from_f64(0.5) * d - x;
+        let t27 = T::from_f64(1.0) - T::from_f64(2.0) * t11;
+        let t28 = T::from_f64(1.0) / m;
+        let t29 = T::from_f64(1.0) / j;
+        let t30 = sin_theta * sin_theta;
+        let t31 = t27 * t27;
+        let t32 = cos_theta * cos_theta;
+        let t33 = zdot * cos_theta;
+        let t34 = t10 * t10;
+        let t35 = t23 + t24;
+        let t36 = -rho_h + z;
+        let t37 = sin_theta * t36;
+        let delta_edge_left = r + t6 - x + t37 - T::from_f64(2.0) * t7 * t11;
+        let pen_edge_left = delta_edge_left.max0();
+        let t38 = pen_edge_left * pen_edge_left.sqrt();
+        let t39 = -xdot * t27;
+        let t40 = cos_theta * t36;
+        let step_delta_edge_left = delta_edge_left.step();
+        let t41 = t24 + t23;
+        let slip_wall_right = zdot - thetadot * t41;
+        let t42 = v_s.hypot(slip_wall_right);
+        let t43 = T::from_f64(1.0) / t42;
+        let t44 = slip_wall_right * slip_wall_right;
+        let t45 = -rho_p + r;
+        let t46 = -l_c + rho_p + t19;
+        let t47 = sin_theta * t46;
+        let t48 = t47 + t23;
+        let slip_wall_left = zdot + thetadot * t48;
+        let t49 = v_s.hypot(slip_wall_left);
+        let t50 = T::from_f64(1.0) / t49;
+        let t51 = slip_wall_left * slip_wall_left;
+        let delta_wall_right = r + t6 + x + t18 - T::from_f64(2.0) * t11 * t17;
+        let pen_wall_right = delta_wall_right.max0();
+        let t52 = pen_wall_right * pen_wall_right.sqrt();
+        let step_delta_wall_right = delta_wall_right.step();
+        let t53 = t25 - T::from_f64(2.0) * t15 * t17;
+        let delta_rate_wall_right = xdot + thetadot * t53;
+        let t54 = T::from_f64(1.0) + hc_alpha * delta_rate_wall_right;
+        let t55 = t54.max0();
+        let t56 = sin_theta * t7 - t40;
+        let t57 = cos_theta * t56;
+        let t58 = t57 + t12;
+        let t59 = xdot + thetadot * t58;
+        let t60 = t40 - T::from_f64(2.0) * t15 * t7;
+        let delta_rate_edge_left = t39 + t14 + thetadot * t60;
+        let t61 = T::from_f64(1.0) + hc_alpha * delta_rate_edge_left;
         let t62 = t61.max0();
-        let t63 = t62 * t62.sqrt();
-        let t64 = t61.step();
-        let t65 = -t9;
-        let t66 = r + t5 + t6 + t65 - T::from_f64(2.0) * t7 * t12;
-        let t67 = t66.max0();
-        let t68 = t67 * t67.sqrt();
-        let t69 = -t13 - T::from_f64(2.0) * t28 * t7;
-        let t70 = xdot * t25 + t26 + thetadot * t69;
-        let t71 = T::from_f64(1.0) + hc_alpha * t70;
-        let t72 = t71.max0();
-        let t73 = t66.step();
-        let t74 = r - T::from_f64(2.0) * t39;
-        let t75 = t41 - T::from_f64(2.0) * t28 * t35;
-        let t76 = xdot + thetadot * t75;
-        let t77 = T::from_f64(1.0) + hc_alpha * t76;
-        let t78 = t77.max0();
-        let t79 = -t17 + t44;
+        let t63 = -t40 + sin_theta * t26;
+        let t64 = -cos_theta * t63;
+        let t65 = t12 + t64;
+        let t66 = xdot - thetadot * t65;
+        let t67 = sin_theta * t63;
+        let t68 = t13 + t67;
+        let t69 = zdot - thetadot * t68;
+        let slip_edge_right = sin_theta * t66 + cos_theta * t69;
+        let t70 = t40 - T::from_f64(2.0) * t15 * t26;
+        let t71 = t39 + t14 + thetadot * t70;
+        let t72 = T::from_f64(1.0) - hc_alpha * t71;
+        let t73 = t72.max0();
+        let t74 = v_s.hypot(slip_edge_right);
+        let t75 = T::from_f64(1.0) / t74;
+        let t76 = sin_theta * t65 + cos_theta * t68;
+        let t77 = slip_edge_right * slip_edge_right;
+        let delta_wall_left = r + t6 - x - t18 - T::from_f64(2.0) * t11 * t45;
+        let pen_wall_left = delta_wall_left.max0();
+        let t78 = pen_wall_left * pen_wall_left.sqrt();
+        let t79 = t25 + T::from_f64(2.0) * t15 * t45;
         let t80 = xdot + thetadot * t79;
-        let t81 = -t21 + t45;
-        let t82 = zdot + thetadot * t81;
-        let t83 = sin_theta * t80 + cos_theta * t82;
-        let t84 = t13 + T::from_f64(2.0) * t28 * t42;
-        let t85 = xdot * t46 - t26 + thetadot * t84;
-        let t86 = T::from_f64(1.0) + hc_alpha * t85;
-        let t87 = t86.max0();
-        let t88 = v_s.hypot(t83);
-        let t89 = T::from_f64(1.0) / t88;
-        let t90 = sin_theta * t79 + cos_theta * t81;
-        let t91 = t83 * t83;
-        let t92 = -t36;
-        let t93 = r + t5 + t6 + t92 + T::from_f64(2.0) * t12 * t47;
-        let t94 = l_c + t33 - t37;
-        let t95 = t15 + T::from_f64(2.0) * t39;
-        let t96 = t93.max0();
-        let t97 = t96 * t96.sqrt();
-        let t98 = -t41 + T::from_f64(2.0) * t28 * t47;
-        let t99 = -xdot + thetadot * t98;
-        let t100 = T::from_f64(1.0) + hc_alpha * t99;
-        let t101 = t100.max0();
-        let t102 = t93.step();
-        let t103 = t72 - T::from_f64(1.0);
-        let t104 = t78 - T::from_f64(1.0);
-        let t105 = t87 - T::from_f64(1.0);
-        let t106 = t101 - T::from_f64(1.0);
-        let t107 = -t73;
-        let t108 = -t103;
-        let t109 = mu * sin_theta;
-        let t110 = t68 * (t107 + t108);
-        let t111 = t63 * (t64 + t105);
-        let t112 = t58.sqrt();
-        let t113 = t60 * t60;
-        let t114 = t62.sqrt();
-        let t115 = t64 * t64;
-        let t116 = -T::from_f64(1.5) * t113;
-        let t117 = t12 - t55;
-        let t118 = t7 * t117 + t9;
-        let t119 = t55 - t12;
-        let t120 = t47 * t119 + t36;
-        let t121 = t32 * t56;
-        let t122 = cos_theta * t7 + t65;
-        let t123 = cos_theta * t74;
-        let t124 = -t40 - t123;
-        let t125 = zdot + thetadot * t124;
-        let t126 = v_s.hypot(t125);
-        let t127 = T::from_f64(1.0) / t126;
-        let t128 = t125 * t125;
-        let t129 = t65 + cos_theta * t42;
-        let t130 = sin_theta * t94;
-        let t131 = cos_theta * t95;
-        let t132 = -t130 - t131;
-        let t133 = zdot + thetadot * t132;
-        let t134 = v_s.hypot(t133);
-        let t135 = T::from_f64(1.0) / t134;
-        let t136 = t133 * t133;
-        let t137 = t67.sqrt();
-        let t138 = t73 * t73;
-        let t139 = t71.step();
-        let t140 = t86.step();
-        let t141 = t96.sqrt();
-        let t142 = t102 * t102;
-        let t143 = t28 * xdot;
-        let t144 = t77.step();
-        let t145 = T::from_f64(1.0) / (t88 * t88 * t88);
-        let t146 = t100.step();
-        let t147 = -t0;
-        let t148 = -t1;
-        let t149 = T::from_f64(1.0) / (t126 * t126 * t126);
-        let t150 = T::from_f64(1.0) / (t134 * t134 * t134);
-        let t151 = t69 * t69;
-        let t152 = t75 * t75;
-        let t153 = t84 * t84;
-        let t154 = t98 * t98;
-        let t155 = t123 + t40;
-        let t156 = t131 + t130;
-        let t157 = t68 * t103;
-        let t158 = t24 * t30;
-        let t159 = t158 * t68 * t72;
-        let t160 = t83 * t89;
-        let t161 = t160 * t87 * t63;
-        let t162 = t73 * t137;
-        let t163 = t162 * (T::from_f64(1.5) * t72 - T::from_f64(1.5));
-        let t164 = t68 * t139;
-        let t165 = thetadot * hc_alpha;
-        let t166 = t28 * t165;
-        let t167 = t164 * t166;
-        let t168 = T::from_f64(2.0) * t167;
-        let t169 = t163 * t25 + t168;
-        let t170 = t64 * t114;
-        let t171 = t170 * (T::from_f64(1.5) * t87 - T::from_f64(1.5));
-        let t172 = t140 * t63;
-        let t173 = t172 * t166;
-        let t174 = -T::from_f64(2.0) * t173;
-        let t175 = t171 * t46 + t174;
-        let t176 = t162 * t72;
-        let t177 = t176 * t25;
-        let t178 = t170 * t87;
-        let t179 = t178 * t46;
-        let t180 = t158 * (-(T::from_f64(1.5) * t177) - T::from_f64(2.0) * t167)
-            + t160 * (-(T::from_f64(1.5) * t179) + T::from_f64(2.0) * t173);
-        let t181 = t137 * t138;
-        let t182 = t114 * t115;
-        let t183 = t112 * (t60 * (T::from_f64(1.5) - T::from_f64(1.5) * t78) + t116);
-        let t184 = -(T::from_f64(1.5) * t101) + T::from_f64(1.5);
-        let t185 = t165 * cos_theta;
-        let t186 = t163 * sin_theta + t185 * t164;
-        let t187 = t170 * (-(T::from_f64(1.5) * t87) + T::from_f64(1.5)) * sin_theta
-            - t185 * t172;
-        let t188 = -(t158 * t164) + t172 * t160;
-        let t189 = hc_alpha * t188;
-        let t190 = mu * cos_theta;
-        let t191 = T::from_f64(1.5) * (-(t181 * t25) + t182 * t46);
-        let t192 = -(t176 * t158) + t178 * t160;
-        let t193 = mu * t51;
-        let t194 = k_edge * t48;
-        let t195 = T::from_f64(2.0) * t143 + t54 + thetadot * t118;
-        let t196 = t164 * t195;
-        let t197 = t163 * t69 + t196 * hc_alpha;
-        let t198 = cos_theta * (r + t122) + t20;
-        let t199 = sin_theta * (t15 - t122) - t16;
-        let t200 = cos_theta * (t19 + thetadot * t199)
-            + sin_theta * (thetadot * t198 - t23);
-        let t201 = t35 * t117 + t92;
-        let t202 = t42 * t119 + t65;
-        let t203 = -(T::from_f64(2.0) * t143) - t54 + thetadot * t202;
-        let t204 = t172 * t203;
-        let t205 = t171 * t84 + t204 * hc_alpha;
-        let t206 = cos_theta * (t15 + t129) + t45;
-        let t207 = sin_theta * (r - t129) - t44;
-        let t208 = cos_theta * (t80 + thetadot * t207)
-            + sin_theta * (thetadot * t206 - t82);
-        let t209 = t72 * (-t30 + t121);
-        let t210 = hc_alpha * t139;
-        let t211 = t210 * t195;
-        let t212 = t91 * t145;
-        let t213 = t87 * (-t89 + t212);
-        let t214 = hc_alpha * t140;
-        let t215 = t214 * t203;
-        let t216 = t176 * t69;
-        let t217 = t178 * t84;
-        let t218 = t68 * (t209 * t200 - t211 * t158) + t63 * (t213 * t208 - t215 * t160)
-            + T::from_f64(1.5) * (-(t216 * t158) - t217 * t160);
-        let t219 = t181 * t69;
-        let t220 = -t197;
-        let t221 = t182 * t84;
-        let t222 = T::from_f64(1.5) * t101 - T::from_f64(1.5);
-        let t223 = T::from_f64(1.5) * t142;
-        let t224 = t144 * t59;
-        let t225 = t224 * t201;
-        let t226 = t97 * t146;
-        let t227 = t226 * t120;
-        let t228 = t209 * t68;
-        let t229 = t228 + t213 * t63;
-        let t230 = t164 * t25;
-        let t231 = t172 * t46;
-        let t232 = hc_alpha * (-(t230 * t158) - t231 * t160);
-        let t233 = k_wall * hc_alpha;
-        let t234 = sin_theta * (t190 * t229 + hc_alpha * (-t230 + t231));
-        let t235 = t210 * t69;
-        let t236 = t213 * t90;
-        let t237 = t214 * t84;
-        let t238 = t68 * (t209 * t31 - t235 * t158) + t63 * (t236 - t237 * t160);
-        let t239 = hc_alpha * (-(t230 * t69) - t231 * t84);
-        let t240 = t125 * t127;
-        let t241 = t240 * t78;
-        let t242 = t60 * t112;
-        let t243 = t133 * t135;
-        let t244 = t243 * t101;
-        let t245 = t102 * t141;
-        let t246 = t165 * mu;
-        let t247 = cos_theta * (rho_p * (-sin_theta + T::from_f64(2.0) * t28) - t38)
-            + sin_theta * t74;
-        let t248 = cos_theta * (rho_p * (sin_theta - T::from_f64(2.0) * t28) - t94)
-            + sin_theta * t95;
-        let t249 = t78 * (-t127 + t128 * t149);
-        let t250 = hc_alpha * t144;
-        let t251 = t250 * t201;
-        let t252 = t249 * t247 - t251 * t240;
-        let t253 = t101 * (-t135 + t136 * t150);
-        let t254 = hc_alpha * t146;
-        let t255 = t254 * t120;
-        let t256 = t253 * t248 - t255 * t243;
-        let t257 = t242 * t75;
-        let t258 = t245 * t98;
-        let t259 = k_edge * hc_alpha;
-        let t260 = t250 * t75;
-        let t261 = t240 * t260;
-        let t262 = t254 * t98;
-        let t263 = t243 * t262;
-        let t264 = t259 * (sin_theta * (-(t164 * t69) + t172 * t84));
-        let t265 = T::from_f64(1.5) * t78 - T::from_f64(1.5);
-        let t266 = t158 * t31;
-        let t267 = t68 * (t107 + t108 - t246 * t266 * t139);
-        let t268 = t160 * t90;
-        let t269 = t63 * (t64 + t105 + t246 * t268 * t140);
-        let t270 = t137 * (-(t69 * t138) - t266 * mu * t72 * t73);
-        let t271 = mu * t87 * (t268 * t64);
-        let t272 = mu * t124;
-        let t273 = mu * t132;
-        let t274 = t257 * t265 + t225 * t165;
-        let t275 = t258 * t222 + t227 * t165;
-        let t276 = t31 * t200;
-        let t277 = t90 * t208;
-        let t278 = t124 * t59;
-        let t279 = t132 * t97;
-        let t280 = t228 * t31 + t236 * t63;
-        let t281 = t30 * t32;
-        let t282 = t89 * t91;
-        let t283 = t63 * t105;
-        let t284 = -t283;
-        let t285 = thetadot * (t157 + t284);
-        let t286 = t78 * t127 * t128;
-        let t287 = t101 * t135 * t136;
-        let t288 = t281 * t164 - t282 * t172;
-        let t289 = t68 * t200;
-        let t290 = t56 * (t24 * t24 * t24);
-        let t291 = t63 * t208;
-        let t292 = t145 * (t83 * t83 * t83);
-        let t293 = t78 * t247;
-        let t294 = t149 * (t125 * t125 * t125);
-        let t295 = t101 * t248;
-        let t296 = t150 * (t133 * t133 * t133);
-        let t297 = t72 * (-t290 + T::from_f64(2.0) * t158) * t68
-            + t87 * (-t292 + T::from_f64(2.0) * t160) * t63;
-        let t298 = t68 * (t103 + t210 * t70);
-        let t299 = t63 * (t105 + t214 * t85);
-        let t300 = t72 * t31;
-        let t301 = t87 * t90;
-        let t302 = t124 * t78;
-        let t303 = t132 * t101;
+        let t81 = T::from_f64(1.0) - hc_alpha * t80;
+        let t82 = t81.max0();
+        let step_delta_wall_left = delta_wall_left.step();
+        let t83 = -t62 + T::from_f64(1.0);
+        let t84 = -t55 + T::from_f64(1.0);
+        let delta_edge_right = r + t6 + x - t37 + T::from_f64(2.0) * t11 * t26;
+        let pen_edge_right = delta_edge_right.max0();
+        let t85 = pen_edge_right * pen_edge_right.sqrt();
+        let t86 = -t73 + T::from_f64(1.0);
+        let step_delta_edge_right = delta_edge_right.step();
+        let t87 = -t82 + T::from_f64(1.0);
+        let t88 = t38 * (step_delta_edge_left - t83);
+        let t89 = t85 * (-step_delta_edge_right + t86);
+        let sqrt_pen_edge_left = pen_edge_left.sqrt();
+        let t90 = step_delta_edge_left * step_delta_edge_left;
+        let t91 = T::from_f64(1.0) / (t42 * t42 * t42);
+        let t92 = T::from_f64(1.0) / (t49 * t49 * t49);
+        let t93 = t23 + t47;
+        let sqrt_pen_wall_right = pen_wall_right.sqrt();
+        let t94 = step_delta_wall_right * step_delta_wall_right;
+        let t95 = -T::from_f64(1.5) * t94;
+        let t96 = sqrt_pen_edge_left * t90;
+        let t97 = r + cos_theta * t7 + t37;
+        let t98 = r - (t37 + cos_theta * t26);
+        let t99 = -t34 + t11;
+        let t100 = t45 * t99 + t18;
+        let t101 = t11 - t34;
+        let t102 = -(t7 * t101) + t37;
+        let t103 = -(t17 * t101) + t18;
+        let t104 = -(t26 * t99) + t37;
+        let t105 = T::from_f64(2.0) * t15 * xdot;
+        let t106 = t54.step();
+        let t107 = t53 * t53;
+        let t108 = sin_theta * t56;
+        let t109 = -t108 + t13;
+        let t110 = zdot + thetadot * t109;
+        let slip_edge_left = sin_theta * t59 + cos_theta * t110;
+        let t111 = v_s.hypot(slip_edge_left);
+        let t112 = T::from_f64(1.0) / t111;
+        let t113 = sin_theta * t58 + cos_theta * t109;
+        let t114 = slip_edge_left * slip_edge_left;
+        let t115 = t38 * t83;
+        let t116 = t85 * t86;
+        let t117 = slip_edge_left * t112;
+        let t118 = slip_edge_right * t75;
+        let t119 = t117 * t38 * t62 + t118 * t85 * t73;
+        let t120 = t61.step();
+        let t121 = t72.step();
+        let sqrt_pen_wall_left = pen_wall_left.sqrt();
+        let t122 = step_delta_wall_left * step_delta_wall_left;
+        let t123 = T::from_f64(1.0) / (t111 * t111 * t111);
+        let t124 = T::from_f64(1.0) / (t74 * t74 * t74);
+        let t125 = t81.step();
+        let t126 = t60 * t60;
+        let t127 = t70 * t70;
+        let t128 = t79 * t79;
+        let t129 = step_delta_edge_left * sqrt_pen_edge_left;
+        let t130 = t129 * (-(T::from_f64(1.5) * t62) + T::from_f64(1.5));
+        let t131 = thetadot * hc_alpha;
+        let t132 = t15 * t131;
+        let t133 = t38 * t120;
+        let t134 = T::from_f64(2.0) * t132 * t133;
+        let t135 = t130 * t27 + t134;
+        let sqrt_pen_edge_right = pen_edge_right.sqrt();
+        let t136 = step_delta_edge_right * step_delta_edge_right;
+        let t137 = step_delta_edge_right * sqrt_pen_edge_right;
+        let t138 = t137 * (-(T::from_f64(1.5) * t73) + T::from_f64(1.5));
+        let t139 = t85 * t121;
+        let t140 = T::from_f64(2.0) * t132 * t139;
+        let t141 = t138 * t27 + t140;
+        let t142 = t129 * t62;
+        let t143 = t137 * t73;
+        let t144 = mu * (t142 * t117 - t143 * t118);
+        let t145 = -T::from_f64(1.5) * t55;
+        let t146 = sqrt_pen_wall_right
+            * (step_delta_wall_right * (T::from_f64(1.5) + t145) + t95);
+        let t147 = -(T::from_f64(1.5) * t82) + T::from_f64(1.5);
+        let t148 = -T::from_f64(1.5) * t122;
+        let t149 = sqrt_pen_wall_left * (step_delta_wall_left * t147 + t148);
+        let t150 = t131 * cos_theta;
+        let t151 = sqrt_pen_edge_right * t136;
+        let t152 = t96 + t151;
+        let t153 = t27 * t152;
+        let t154 = sin_theta * t97 + t57;
+        let t155 = cos_theta * t98 + t67;
+        let t156 = t77 * t124;
+        let t157 = t78 * t125;
+        let t158 = t157 * t100;
+        let t159 = t114 * t123;
+        let t160 = t62 * (t112 - t159);
+        let t161 = t160 * t38;
+        let t162 = t73 * (t75 - t156);
+        let t163 = t162 * t85;
+        let t164 = t161 + t163;
+        let t165 = hc_alpha * (t133 + t139);
+        let t166 = t106 * t52;
+        let t167 = k_wall * hc_alpha;
+        let t168 = hc_alpha * t120;
+        let t169 = t168 * t60;
+        let t170 = hc_alpha * (t133 * t117 - t139 * t118);
+        let t171 = t170 * mu;
+        let t172 = t171 * thetadot;
+        let t173 = rho_p * (sin_theta - T::from_f64(2.0) * t15);
+        let t174 = t55 * (t43 - t44 * t91);
+        let t175 = t174 * t52;
+        let t176 = t82 * (t50 - t51 * t92);
+        let t177 = slip_wall_right * t43;
+        let t178 = hc_alpha * t106;
+        let t179 = t178 * t53;
+        let t180 = t177 * t179;
+        let t181 = hc_alpha * (t133 * t60 + t139 * t70);
+        let t182 = t181 * sin_theta * k_edge;
+        let t183 = step_delta_wall_left * sqrt_pen_wall_left;
+        let t184 = t117 * t113;
+        let t185 = sqrt_pen_edge_left
+            * (t60 * t90 + t184 * mu * t62 * step_delta_edge_left);
+        let t186 = t118 * t76;
+        let t187 = sqrt_pen_edge_right
+            * (t70 * t136 + t186 * mu * t73 * step_delta_edge_right);
+        let t188 = mu * t41;
+        let t189 = t177 * t55;
+        let t190 = mu * t48;
+        let t191 = slip_wall_left * t50;
+        let t192 = t191 * t82;
+        let t193 = t145 + T::from_f64(1.5);
+        let t194 = step_delta_wall_right * sqrt_pen_wall_right;
+        let t195 = t194 * t53;
+        let t196 = t183 * t79;
+        let t197 = t196 * t147 + t158 * t131;
+        let t198 = t142 * t60;
+        let t199 = t143 * t70;
+        let t200 = hc_alpha * t125;
+        let t201 = t200 * t100;
+        let t202 = t162 * t76;
+        let t203 = t202 * t85;
+        let t204 = hc_alpha * (t184 * t133 + t186 * t139);
+        let t205 = t181 * t27;
+        let t206 = t161 * t113;
+        let t207 = t48 * t78;
+        let t208 = hc_alpha * t121;
+        let t209 = t208 * t70;
+        let t210 = t112 * t114;
+        let t211 = t75 * t77;
+        let t212 = t210 * t133 - t211 * t139;
+        let t213 = t55 * t43 * t44;
+        let t214 = t82 * t50 * t51;
+        let t215 = t210 * t142 - t211 * t143;
+        let t216 = hc_alpha * (mu * t212 + t133 * delta_rate_edge_left + t139 * t71)
+            - t115 + t116;
+        let t217 = t123 * (slip_edge_left * slip_edge_left * slip_edge_left);
+        let t218 = t62 * (-t217 + T::from_f64(2.0) * t117) * t38;
+        let t219 = t124 * (slip_edge_right * slip_edge_right * slip_edge_right);
+        let t220 = t73 * (-t219 + T::from_f64(2.0) * t118) * t85;
+        let t221 = t91 * (slip_wall_right * slip_wall_right * slip_wall_right);
+        let t222 = t92 * (slip_wall_left * slip_wall_left * slip_wall_left);
+        let t223 = t62 * t113;
+        let t224 = t73 * t76;
+        let t225 = t55 * t41;
+        let t226 = -(t130 * sin_theta) + t150 * t133;
+        let t227 = -(t138 * sin_theta) + t150 * t139;
+        let t228 = k_edge * t28;
+        let t229 = t105 + t33 - thetadot * t102;
+        let t230 = t133 * t229;
+        let t231 = -(t130 * t60) + t230 * hc_alpha;
+        let t232 = -(cos_theta * t97) + t108;
+        let t233 = cos_theta * (-t59 + thetadot * t154)
+            + sin_theta * (thetadot * t232 + t110);
+        let t234 = t105 + t33 - thetadot * t104;
+        let t235 = t139 * t234;
+        let t236 = -(t138 * t70) + t235 * hc_alpha;
+        let t237 = sin_theta * t98 + t64;
+        let t238 = -(cos_theta * (t66 + thetadot * t237))
+            + sin_theta * (thetadot * t155 + t69);
+        let t239 = t168 * t229;
+        let t240 = t208 * t234;
+        let t241 = t38 * (-(t160 * t233) + t239 * t117)
+            - t85 * (t162 * t238 + t240 * t118)
+            + T::from_f64(1.5) * (t198 * t117 - t199 * t118);
+        let t242 = T::from_f64(1.5) * (t96 * t60 + t151 * t70) + t231 + t236;
+        let t243 = t166 * t103;
+        let t244 = sin_theta * (cos_theta * (-t161 - t163) * mu + t165 * t27);
+        let t245 = t38 * (t160 * t113 + t169 * t117) - t85 * (t202 + t209 * t118);
+        let t246 = -(cos_theta * (t173 + t20)) + t22;
+        let t247 = -(cos_theta * (t173 + t46)) + t22;
+        let t248 = t178 * t103;
+        let t249 = t52 * (-(t174 * t246) + t248 * t177);
+        let t250 = -t176 * t247 + t201 * t191;
+        let t251 = t200 * t79;
+        let t252 = t191 * t251;
+        let t253 = t131 * mu;
+        let t254 = t38 * (step_delta_edge_left - t83 + t253 * t184 * t120);
+        let t255 = t85 * (-step_delta_edge_right + t86 + t253 * t186 * t121);
+        let t256 = t195 * t193 + t243 * t131;
+        let t257 = t113 * t233;
+        let t258 = t76 * t238;
+        let t259 = thetadot * (t115 - t116);
+        let t260 = t38 * t233;
+        let t261 = t85 * t238;
+        let t262 = t55 * t246;
+        let t263 = t82 * t247;
+        let t264 = t48 * t82;
         SMatrix::<
             T,
             8,
@@ -584,225 +568,221 @@ pub mod compliant_peg {
                 T::from_f64(1.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t48
+                t28
                     * (k_edge
-                        * (t109 * t180 + T::from_f64(1.5) * (-(t181 * t50) - t182 * t52)
-                            - t25 * t169 - t46 * t175)
-                        + k_wall
-                            * (t183 + t141 * (t102 * t184 - T::from_f64(1.5) * t142))),
-                t194
-                    * (sin_theta * (t190 * t165 * t188 + t191)
-                        + T::from_f64(1.5) * t193 * t192 - t25 * t186 - t46 * t187),
-                t48
+                        * (t27 * (T::from_f64(1.5) * t144 * sin_theta + t135 + t141)
+                            - T::from_f64(1.5) * t152 * t31
+                            - T::from_f64(2.0) * t172 * (t15 * sin_theta))
+                        + k_wall * (t146 + t149)),
+                t228
+                    * (sin_theta * (T::from_f64(1.5) * t153 - t172 * cos_theta)
+                        + t27 * (t226 + t227) - T::from_f64(1.5) * t144 * t30),
+                t28
                     * (k_edge
-                        * (mu * (sin_theta * t218 + cos_theta * (-t159 - t161))
-                            + t28 * (T::from_f64(2.0) * t110 + T::from_f64(2.0) * t111)
-                            + t25 * (-(T::from_f64(1.5) * t219) + t220)
-                            + t46 * (-(T::from_f64(1.5) * t221) - t205))
-                        + k_wall
-                            * (t183 * t75 + t141 * (t102 * t222 + t223) * t98
-                                + t165 * (-t225 + t227)) + t2 + t3),
-                t48
-                    * (k_edge
-                        * (mu * (t51 * t229 + t232 * sin_theta)
-                            + hc_alpha * (-(t164 * t50) - t172 * t52))
-                        + t233 * (-t224 - t226)),
-                t194 * (t234 + t193 * t189),
-                t48
-                    * (k_edge * (t109 * t238 + t239)
-                        + t233 * (-(t224 * t75) + t226 * t98)),
+                        * (-(mu * (sin_theta * t241 + cos_theta * t119)) + t27 * t242
+                            + t15 * (-(T::from_f64(2.0) * t88) - T::from_f64(2.0) * t89))
+                        + k_wall * (t146 * t53 + t149 * t79 + t131 * (t243 + t158)) + t3
+                        + t4),
+                -t28
+                    * (k_edge * (mu * (t30 * t164 - sin_theta * t27 * t170) + t165 * t31)
+                        + t167 * (t166 + t157)),
+                t228 * (t244 - t171 * t30),
+                -t28
+                    * (k_edge * (sin_theta * t245 * mu - t205)
+                        + t167 * (t166 * t53 + t157 * t79)),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t48
-                    * (k_edge * (sin_theta * (t191 - t169 + t175) + t190 * t180)
-                        + T::from_f64(1.5) * (k_wall * (-(t241 * t242) + t244 * t245))
+                -t28
+                    * (k_edge
+                        * (sin_theta * (-(T::from_f64(1.5) * t153) + t135 + t141)
+                            - cos_theta
+                                * (-(t117 * (-(T::from_f64(1.5) * t142 * t27) + t134))
+                                    + t118 * (-(T::from_f64(1.5) * t143 * t27) + t140)) * mu)
+                        + T::from_f64(1.5) * (k_wall * (t189 * t194 - t192 * t183))
                             * mu),
-                t194
-                    * (sin_theta * (T::from_f64(1.5) * t190 * t192 - t186 + t187)
-                        + T::from_f64(1.5) * (-t181 - t182) * t51 + t53 * t188 * t246),
-                t48
+                -t228
+                    * (sin_theta * (T::from_f64(1.5) * t144 * cos_theta + t226 + t227)
+                        + T::from_f64(1.5) * t152 * t30 + t172 * t32),
+                -t28
+                    * (-(mu
+                        * (k_edge * (-(cos_theta * t241) + sin_theta * t119)
+                            - k_wall
+                                * (thetadot * (-t249 + t78 * t250)
+                                    + T::from_f64(1.5) * (t189 * t195 - t192 * t196))))
+                        + k_edge * (cos_theta * (t88 + t89) + sin_theta * t242) + t0
+                        + t1),
+                t28
+                    * (k_edge * (t244 + cos_theta * t27 * t171)
+                        - t167 * (t166 * t177 - t157 * t191) * mu),
+                -t28
                     * (mu
-                        * (k_edge * (cos_theta * t218 + sin_theta * (t159 + t161))
+                        * (k_edge * (t32 * t164 + sin_theta * cos_theta * t170)
+                            + k_wall * (t175 + t176 * t78)) + t165 * t30 * k_edge),
+                t28
+                    * (mu
+                        * (-(cos_theta * t245 * k_edge)
                             + k_wall
-                                * (thetadot * (t59 * t252 + t97 * t256)
-                                    + T::from_f64(1.5) * (-(t241 * t257) - t244 * t258)))
-                        + k_edge
-                            * (cos_theta * (t110 + t111)
-                                + sin_theta
-                                    * (T::from_f64(1.5) * (-t219 + t221) + t220 + t205)) + t147
-                        + t148),
-                t48
-                    * (k_edge * (t234 + t232 * t190)
-                        + t233 * (-(t224 * t240) + t226 * t243) * mu),
-                t48
-                    * (mu
-                        * (k_edge * (t53 * t229 + sin_theta * cos_theta * t189)
-                            + k_wall * (t249 * t59 + t253 * t97))
-                        + t259 * (t51 * (-t164 - t172))),
-                t48
-                    * (mu
-                        * (cos_theta * t238 * k_edge
-                            + k_wall
-                                * (t59 * (t249 * t124 - t261) + t97 * (t253 * t132 - t263)))
-                        + t264),
+                                * (-(t52 * (-(t174 * t41) + t180))
+                                    + t78 * (-(t176 * t48) + t252))) - t182),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t49
+                t29
                     * (k_edge
-                        * (t28 * (T::from_f64(2.0) * t267 + T::from_f64(2.0) * t269)
-                            + T::from_f64(1.5) * t270 * t25
-                            + T::from_f64(1.5) * (t114 * (-(t84 * t115) - t271)) * t46
-                            - t69 * t169 - t84 * t175)
+                        * (t15 * (-(T::from_f64(2.0) * t254) - T::from_f64(2.0) * t255)
+                            + t27 * (T::from_f64(1.5) * t185 + T::from_f64(1.5) * t187)
+                            - t60 * t135 - t70 * t141)
                         + k_wall
-                            * (t112
-                                * (t75 * (t116 - t265 * t60)
-                                    - T::from_f64(1.5) * t272 * t241 * t60)
-                                + t141
-                                    * (t98 * (t223 - t184 * t102)
-                                        + T::from_f64(1.5) * t273 * t244 * t102))),
-                k_edge
-                    * (cos_theta * (t267 + t269)
-                        + sin_theta
-                            * (T::from_f64(1.5) * t270
-                                + T::from_f64(1.5) * (t84 * t115 + t271) * t114)
-                        - t69 * t186 - t84 * t187) * t49,
-                t49
+                            * (sqrt_pen_wall_right
+                                * (t53 * (t95 + t193 * step_delta_wall_right)
+                                    + T::from_f64(1.5) * t188 * t189 * step_delta_wall_right)
+                                + sqrt_pen_wall_left
+                                    * (t79 * (t148 + t147 * step_delta_wall_left)
+                                        + T::from_f64(1.5) * t190 * t192 * step_delta_wall_left))),
+                -(k_edge
+                    * (cos_theta * (t254 + t255)
+                        - sin_theta
+                            * (-(T::from_f64(1.5) * t185) - T::from_f64(1.5) * t187)
+                        + t60 * t226 + t70 * t227)) * t29,
+                -t29
                     * (mu
                         * (k_edge
-                            * (t68
-                                * (t72
-                                    * (t30
-                                        * (-t276
-                                            - t24
-                                                * (cos_theta * (t18 + t199) + sin_theta * (t198 - t22)))
-                                        + t121 * t276) - t211 * t266)
-                                + t63
-                                    * (t87
-                                        * (t89
-                                            * (-t277
-                                                - t83
-                                                    * (cos_theta * (t79 + t207) + sin_theta * (t206 - t81)))
-                                            + t212 * t277) - t215 * t268)
-                                + T::from_f64(1.5) * (-(t216 * t266) - t217 * t268))
+                            * (t38
+                                * (-(t62
+                                    * (t112
+                                        * (t257
+                                            + slip_edge_left
+                                                * (-(cos_theta * (t58 - t154)) + sin_theta * (t232 + t109)))
+                                        - t159 * t257)) + t239 * t184)
+                                + t85
+                                    * (t73
+                                        * (t75
+                                            * (t258
+                                                + slip_edge_right
+                                                    * (-(cos_theta * (t65 - t237)) + sin_theta * (-t155 + t68)))
+                                            - t156 * t258) + t240 * t186)
+                                + T::from_f64(1.5) * (t198 * t184 + t199 * t186))
                             + k_wall
-                                * (thetadot * (t278 * t252 + t279 * t256)
-                                    + t241 * (-(t59 * t247) - T::from_f64(1.5) * t257 * t124)
-                                    + t244 * (-(t97 * t248) - T::from_f64(1.5) * t258 * t132)))
+                                * (thetadot * (t249 * t41 + t207 * t250)
+                                    - t189 * (-(t52 * t246) + T::from_f64(1.5) * t195 * t41)
+                                    - t192 * (t78 * t247 + T::from_f64(1.5) * t196 * t48)))
                         + k_edge
-                            * (t110 * t118 + (-t64 - t105) * t202 * t63
-                                + T::from_f64(1.5) * (-(t181 * t151) - t182 * t153)
-                                - t69 * t197 - t84 * t205)
+                            * (-(t88 * t102) - t89 * t104
+                                + T::from_f64(1.5) * (t96 * t126 + t151 * t127) + t60 * t231
+                                + t70 * t236)
                         + k_wall
-                            * ((-t60 - t104) * t201 * t59 + (-t102 - t106) * t120 * t97
+                            * (-((step_delta_wall_right - t84) * t103 * t52)
+                                + (step_delta_wall_left - t87) * t100 * t78
                                 + T::from_f64(1.5)
-                                    * (-(t112 * t113 * t152) - t141 * t142 * t154) - t75 * t274
-                                - t98 * t275)),
-                t49
-                    * (k_edge
-                        * (mu
-                            * (sin_theta * t280
-                                + hc_alpha * (-(t230 * t266) - t231 * t268)) + t239)
-                        + t233
-                            * (t224 * (-t75 - t272 * t240)
-                                + t226 * (t98 + t273 * t243))),
-                t49
+                                    * (sqrt_pen_wall_right * t94 * t107
+                                        + sqrt_pen_wall_left * t122 * t128) - t53 * t256
+                                - t79 * t197)),
+                t29
+                    * (k_edge * (mu * (sin_theta * (-t206 + t203) + t204 * t27) + t205)
+                        + t167
+                            * (t166 * (-t53 + t188 * t177)
+                                + t157 * (-t79 + t190 * t191))),
+                -t29
+                    * (mu
+                        * (k_edge * (cos_theta * (t206 - t203) + t204 * sin_theta)
+                            + k_wall * (-(t175 * t41) + t207 * t176)) + t182),
+                -t29
                     * (mu
                         * (k_edge
-                            * (cos_theta * t280
-                                + sin_theta * (-(t266 * t164) + t268 * t172) * hc_alpha)
-                            + k_wall * (t278 * t249 + t279 * t253)) + t264),
-                t49
-                    * (mu
-                        * (k_edge
-                            * (t68 * (t209 * (t31 * t31) - t235 * t266)
-                                + t63 * (t213 * (t90 * t90) - t237 * t268))
-                            + k_wall
-                                * (t59 * (t249 * (t155 * t155) - t261 * t124)
-                                    + t97 * (t253 * (t156 * t156) - t263 * t132)))
+                            * (t38 * (t160 * (t113 * t113) + t169 * t184)
+                                + t85 * (t162 * (t76 * t76) + t209 * t186))
+                            - k_wall
+                                * (t52 * (-(t174 * (t35 * t35)) + t180 * t41)
+                                    + t78 * (-(t176 * (t93 * t93)) + t252 * t48)))
                         + hc_alpha
-                            * (k_edge * (-(t164 * t151) - t172 * t153)
-                                + k_wall * (-(t224 * t152) - t226 * t154))),
+                            * (k_edge * (t133 * t126 + t139 * t127)
+                                + k_wall * (t166 * t107 + t157 * t128))),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                xdot * t4 + zdot * (t147 + t148),
-                t0 + t1,
-                t4,
+                xdot * t5 - zdot * t2,
+                t2,
+                t5,
                 m_2,
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 k_edge
                     * (mu
-                        * (t281 * (T::from_f64(1.5) * t177 + t168)
-                            + t282 * (T::from_f64(1.5) * t179 + t174))
-                        + T::from_f64(2.0) * t285 * t28 + t70 * t169 + t85 * t175)
-                    + k_wall
-                        * (T::from_f64(1.5) * (t286 * t242 - t287 * t245) * mu
-                            + t242 * t265 * t76 + t245 * t99 * t184),
+                        * (-(T::from_f64(1.5) * t215 * t27)
+                            + T::from_f64(2.0) * (t15 * t212) * t131)
+                        - T::from_f64(2.0) * t259 * t15 + delta_rate_edge_left * t135
+                        + t71 * t141)
+                    - k_wall
+                        * (-(T::from_f64(1.5) * (t213 * t194 - t214 * t183) * mu)
+                            + t194 * t193 * delta_rate_wall_right + t183 * t147 * t80),
                 k_edge
                     * (mu
-                        * (T::from_f64(1.5) * (t281 * t176 - t282 * t178) * sin_theta
-                            + cos_theta * t288 * t165) + t285 * cos_theta + t70 * t186
-                        + t85 * t187),
+                        * (T::from_f64(1.5) * t215 * sin_theta + cos_theta * t212 * t131)
+                        - t259 * cos_theta + delta_rate_edge_left * t226 + t71 * t227),
                 mu
                     * (k_edge
-                        * (t72
-                            * (t30
-                                * (T::from_f64(1.5) * t162 * t69 * t32
-                                    + T::from_f64(2.0) * t289 * t24) - t289 * t290)
-                            + t87
-                                * (t89
-                                    * (T::from_f64(1.5) * t170 * t84 * t91
-                                        + T::from_f64(2.0) * t291 * t83) - t291 * t292)
-                            + hc_alpha * (t196 * t281 + t204 * t282))
+                        * (t62
+                            * (-(t112
+                                * (-(T::from_f64(1.5) * t129 * t60 * t114)
+                                    + T::from_f64(2.0) * t260 * slip_edge_left)) + t260 * t217)
+                            - t73
+                                * (t75
+                                    * (T::from_f64(1.5) * t137 * t70 * t77
+                                        + T::from_f64(2.0) * t261 * slip_edge_right) - t261 * t219)
+                            + hc_alpha * (t230 * t210 - t235 * t211))
                         + k_wall
                             * (thetadot
-                                * (t59
-                                    * (t127 * (t251 * t128 + T::from_f64(2.0) * t293 * t125)
-                                        - t293 * t294)
-                                    + t97
-                                        * (t135 * (t255 * t136 + T::from_f64(2.0) * t295 * t133)
-                                            - t295 * t296))
-                                + T::from_f64(1.5) * (t286 * t257 + t287 * t258)))
-                    + k_edge * (t157 * t195 + t70 * t197 + t283 * t203 + t85 * t205)
+                                * (-(t52
+                                    * (t43
+                                        * (t248 * t44 - T::from_f64(2.0) * t262 * slip_wall_right)
+                                        + t262 * t221))
+                                    + t78
+                                        * (t50
+                                            * (t201 * t51 - T::from_f64(2.0) * t263 * slip_wall_left)
+                                            + t263 * t222))
+                                + T::from_f64(1.5) * (t213 * t195 - t214 * t196)))
+                    + k_edge
+                        * (-(t115 * t229) + delta_rate_edge_left * t231 + t116 * t234
+                            + t71 * t236)
+                    - k_wall
+                        * (thetadot * (-(t52 * t84 * t103) + t78 * t87 * t100)
+                            + delta_rate_wall_right * t256 + t80 * t197),
+                -(k_edge * (t27 * t216 + sin_theta * (-t218 - t220) * mu))
+                    - k_wall
+                        * (t52
+                            * (-(t178 * (mu * t43 * t44 + delta_rate_wall_right)) - t55
+                                + T::from_f64(1.0))
+                            + t78
+                                * (t200 * (mu * t50 * t51 - t80) - T::from_f64(1.0) + t82)),
+                k_edge * (sin_theta * t216 + cos_theta * (t218 + t220) * mu)
                     + k_wall
-                        * (thetadot * (t59 * t104 * t201 + t97 * t106 * t120)
-                            + t76 * t274 + t99 * t275),
-                k_edge
-                    * (mu * (sin_theta * t297 + hc_alpha * (t281 * t230 + t282 * t231))
-                        + t298 * t25 + t299 * t46)
-                    + k_wall
-                        * (t59
-                            * (t250 * (mu * t127 * t128 + t76) + t78 - T::from_f64(1.0))
-                            + t97
-                                * (t254 * (-(mu * t135 * t136) - t99) + T::from_f64(1.0)
-                                    - t101)),
-                k_edge
-                    * (sin_theta
-                        * (hc_alpha * (mu * t288 + t164 * t70 - t172 * t85) + t157
-                            + t284) + t190 * t297)
-                    + k_wall
-                        * (t78 * (-t294 + T::from_f64(2.0) * t240) * t59
-                            + t101 * (-t296 + T::from_f64(2.0) * t243) * t97) * mu,
-                mu
+                        * (t55 * (-t221 + T::from_f64(2.0) * t177) * t52
+                            + t82 * (-t222 + T::from_f64(2.0) * t191) * t78) * mu,
+                -(mu
                     * (k_edge
-                        * (t68
-                            * (t30 * (t235 * t32 + T::from_f64(2.0) * t300 * t24)
-                                - t300 * t290)
-                            + t63
-                                * (t89 * (t237 * t91 + T::from_f64(2.0) * t301 * t83)
-                                    - t301 * t292))
+                        * (t38
+                            * (-(t112
+                                * (t169 * t114 + T::from_f64(2.0) * t223 * slip_edge_left))
+                                + t223 * t217)
+                            - t85
+                                * (-(t75
+                                    * (t209 * t77 + T::from_f64(2.0) * t224 * slip_edge_right))
+                                    + t224 * t219))
                         + k_wall
-                            * (t59
-                                * (t127 * (t260 * t128 + T::from_f64(2.0) * t302 * t125)
-                                    - t302 * t294)
-                                + t97
-                                    * (t135 * (t262 * t136 + T::from_f64(2.0) * t303 * t133)
-                                        - t303 * t296))) + k_edge * (t298 * t69 + t299 * t84)
+                            * (-(t52
+                                * (t43
+                                    * (t179 * t44 - T::from_f64(2.0) * t225 * slip_wall_right)
+                                    + t225 * t221))
+                                + t78
+                                    * (t50
+                                        * (t251 * t51 - T::from_f64(2.0) * t264 * slip_wall_left)
+                                        + t264 * t222))))
+                    + k_edge
+                        * (t38 * (-t83 + t168 * delta_rate_edge_left) * t60
+                            + t85 * (t86 + t208 * t71) * t70)
                     + k_wall
-                        * (t59 * (t104 + t250 * t76) * t75
-                            + t97 * (t106 + t254 * t99) * t98),
+                        * (t52 * (-t84 + t178 * delta_rate_wall_right) * t53
+                            + t78 * (t87 + t200 * t80) * t79),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
             ],
@@ -824,7 +804,7 @@ pub mod compliant_peg {
     /// - `p0`: vector of 4
     ///
     /// # Cost
-    /// 62 add/sub, 116 mul, 8 div, 4 sqrt, 10 transcendental, 8 branches; 64 `let`s.
+    /// 60 add/sub, 112 mul, 8 div, 4 sqrt, 10 transcendental, 8 branches; 64 `let`s.
     #[inline]
     pub fn contacts<T: Real>(
         y: &SVector<T, 8>,
@@ -863,102 +843,105 @@ pub mod compliant_peg {
         let hc_alpha = p[23];
         let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = -T::from_f64(0.5) * d;
-        let t1 = -x;
-        let t2 = -rho_h + t0 + t1;
-        let t3 = rho_h - z;
-        let t4 = sin_theta * t3;
-        let t5 = T::from_f64(0.5) * theta;
-        let (t6, t15) = t5.sin_cos();
-        let t7 = t6 * t6;
-        let t8 = cos_theta * t3;
-        let t9 = sin_theta * t2 + t8;
-        let t10 = -r;
-        let t11 = r * sin_theta;
-        let t12 = r * cos_theta;
-        let t13 = sin_theta * (xdot + thetadot * (cos_theta * t9 + t11))
-            + cos_theta * (zdot + thetadot * (-(sin_theta * t9) + t12));
-        let t14 = zdot * sin_theta;
-        let t16 = t6 * t15;
-        let t17 = v_s.hypot(t13);
-        let t18 = T::from_f64(1.0) / (e_star * edge_sum);
-        let t19 = -rho_p;
-        let t20 = l_c + t19;
-        let t21 = r + t19;
-        let t22 = sin_theta * t20;
-        let t23 = rho_p * sin_theta;
-        let t24 = rho_p * t7;
-        let t25 = cos_theta * t20;
-        let t26 = T::from_f64(1.0) / (e_star * wall_sum);
-        let t27 = rho_h + T::from_f64(0.5) * d + t1;
-        let t28 = t8 + sin_theta * t27;
-        let t29 = rho_p + t10;
-        let t30 = r + t0 + x + t22 - T::from_f64(2.0) * t7 * t21;
-        let t31 = t30.max0();
-        let t32 = t31 * t31.sqrt();
-        let t33 = r + t0 + x + t4 + T::from_f64(2.0) * t7 * t27;
-        let t34 = t33.max0();
-        let t35 = t34 * t34.sqrt();
-        let t36 = r + t0 + t1 - t4 - T::from_f64(2.0) * t2 * t7;
-        let t37 = t36.max0();
-        let t38 = t37 * t37.sqrt();
-        let t39 = (T::from_f64(1.0)
-            + hc_alpha
-                * (xdot * (-T::from_f64(1.0) + T::from_f64(2.0) * t7) + t14
-                    + thetadot * (-t8 - T::from_f64(2.0) * t16 * t2)))
+        let t1 = -rho_h + t0 - x;
+        let t2 = T::from_f64(0.5) * theta;
+        let (t3, t4) = t2.sin_cos();
+        let t5 = t3 * t3;
+        let t6 = r * sin_theta;
+        let t7 = r * cos_theta;
+        let t8 = zdot * sin_theta;
+        let t9 = t3 * t4;
+        let t10 = T::from_f64(1.0) / (e_star * edge_sum);
+        let t11 = l_c - rho_p;
+        let t12 = r - rho_p;
+        let t13 = sin_theta * t11;
+        let t14 = rho_p * sin_theta;
+        let t15 = cos_theta * (r - T::from_f64(2.0) * rho_p * t5);
+        let t16 = cos_theta * t11;
+        let t17 = T::from_f64(1.0) / (e_star * wall_sum);
+        let t18 = rho_h + T::from_f64(0.5) * d - x;
+        let t19 = -rho_h + z;
+        let t20 = sin_theta * t19;
+        let delta_edge_left = r + t0 - x + t20 - T::from_f64(2.0) * t1 * t5;
+        let pen_edge_left = delta_edge_left.max0();
+        let t21 = pen_edge_left * pen_edge_left.sqrt();
+        let t22 = -xdot * (T::from_f64(1.0) - T::from_f64(2.0) * t5);
+        let t23 = cos_theta * t19;
+        let slip_wall_right = zdot - thetadot * (sin_theta * (l_c - rho_p + t14) + t15);
+        let t24 = v_s.hypot(slip_wall_right);
+        let t25 = -rho_p + r;
+        let slip_wall_left = zdot + thetadot * (sin_theta * (-l_c + rho_p + t14) + t15);
+        let t26 = v_s.hypot(slip_wall_left);
+        let delta_wall_right = r + t0 + x + t13 - T::from_f64(2.0) * t5 * t12;
+        let pen_wall_right = delta_wall_right.max0();
+        let t27 = pen_wall_right * pen_wall_right.sqrt();
+        let delta_rate_wall_right = xdot
+            + thetadot * (t16 - T::from_f64(2.0) * t9 * t12);
+        let t28 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
+        let t29 = sin_theta * t1 - t23;
+        let slip_edge_left = sin_theta * (xdot + thetadot * (cos_theta * t29 + t6))
+            + cos_theta * (zdot + thetadot * (-(sin_theta * t29) + t7));
+        let delta_rate_edge_left = t22 + t8
+            + thetadot * (t23 - T::from_f64(2.0) * t9 * t1);
+        let t30 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
+        let t31 = v_s.hypot(slip_edge_left);
+        let t32 = -t23 + sin_theta * t18;
+        let slip_edge_right = sin_theta * (xdot - thetadot * (t6 - cos_theta * t32))
+            + cos_theta * (zdot - thetadot * (t7 + sin_theta * t32));
+        let t33 = (T::from_f64(1.0)
+            - hc_alpha * (t22 + t8 + thetadot * (t23 - T::from_f64(2.0) * t9 * t18)))
             .max0();
-        let t40 = zdot
-            + thetadot
-                * (-(sin_theta * (l_c + t19 + t23))
-                    - cos_theta * (r - T::from_f64(2.0) * t24));
-        let t41 = (T::from_f64(1.0)
-            + hc_alpha * (xdot + thetadot * (t25 - T::from_f64(2.0) * t16 * t21)))
+        let t34 = v_s.hypot(slip_edge_right);
+        let delta_wall_left = r + t0 - x - t13 - T::from_f64(2.0) * t5 * t25;
+        let pen_wall_left = delta_wall_left.max0();
+        let t35 = pen_wall_left * pen_wall_left.sqrt();
+        let t36 = (T::from_f64(1.0)
+            - hc_alpha * (xdot + thetadot * (t16 + T::from_f64(2.0) * t9 * t25)))
             .max0();
-        let t42 = v_s.hypot(t40);
-        let t43 = sin_theta * (xdot + thetadot * (-t11 + cos_theta * t28))
-            + cos_theta * (zdot + thetadot * (-t12 - sin_theta * t28));
-        let t44 = (T::from_f64(1.0)
-            + hc_alpha
-                * (xdot * (T::from_f64(1.0) - T::from_f64(2.0) * t7) - t14
-                    + thetadot * (t8 + T::from_f64(2.0) * t16 * t27)))
-            .max0();
-        let t45 = v_s.hypot(t43);
-        let t46 = r + t0 + t1 - t22 + T::from_f64(2.0) * t7 * t29;
-        let t47 = zdot
-            + thetadot
-                * (-(sin_theta * (l_c + t19 - t23))
-                    - cos_theta * (t10 + T::from_f64(2.0) * t24));
-        let t48 = t46.max0();
-        let t49 = t48 * t48.sqrt();
-        let t50 = (T::from_f64(1.0)
-            + hc_alpha * (-xdot + thetadot * (-t25 + T::from_f64(2.0) * t16 * t29)))
-            .max0();
-        let t51 = v_s.hypot(t47);
-        let t52 = k_edge * t38 * t39;
-        let t53 = (T::from_f64(1.5) * t18 * t52).cbrt();
-        let t54 = e_star * edge_sum * (T::from_f64(1.0) / (edge_ma * edge_mb));
-        let t55 = k_wall * t49 * t50;
-        let t56 = (T::from_f64(1.5) * t26 * t55).cbrt();
-        let t57 = e_star * wall_sum * (T::from_f64(1.0) / (wall_ma * wall_mb));
-        let t58 = k_wall * t41 * t32;
-        let t59 = k_edge * t44 * t35;
-        let t60 = (T::from_f64(1.5) * t26 * t58).cbrt();
-        let t61 = (T::from_f64(1.5) * t18 * t59).cbrt();
-        let normal = Vector4::new(t52, t58, t59, t55);
-        let friction = Vector4::new(
-            -t52 * mu * t13 / t17,
-            -t58 * mu * t40 / t42,
-            -t59 * mu * t43 / t45,
-            -t55 * mu * t47 / t51,
+        let delta_edge_right = r + t0 + x - t20 + T::from_f64(2.0) * t5 * t18;
+        let pen_edge_right = delta_edge_right.max0();
+        let t37 = pen_edge_right * pen_edge_right.sqrt();
+        let normal_edge_left = k_edge * t21 * t30;
+        let normal_wall_left = k_wall * t35 * t36;
+        let normal_wall_right = k_wall * t28 * t27;
+        let t38 = (T::from_f64(1.5) * t10 * normal_edge_left).cbrt();
+        let t39 = e_star * edge_sum * (T::from_f64(1.0) / (edge_ma * edge_mb));
+        let t40 = (T::from_f64(1.5) * t17 * normal_wall_left).cbrt();
+        let t41 = e_star * wall_sum * (T::from_f64(1.0) / (wall_ma * wall_mb));
+        let t42 = (T::from_f64(1.5) * t17 * normal_wall_right).cbrt();
+        let normal_edge_right = k_edge * t33 * t37;
+        let t43 = (T::from_f64(1.5) * t10 * normal_edge_right).cbrt();
+        let normal = Vector4::new(
+            normal_edge_left,
+            normal_wall_right,
+            normal_edge_right,
+            normal_wall_left,
         );
-        let delta = Vector4::new(t36, t30, t33, t46);
-        let slip = Vector4::new(t13, t40, t43, t47);
-        let a = Vector4::new(edge_ma * t53, wall_ma * t60, edge_ma * t61, wall_ma * t56);
-        let b = Vector4::new(edge_mb * t53, wall_mb * t60, edge_mb * t61, wall_mb * t56);
+        let friction = Vector4::new(
+            -normal_edge_left * mu * slip_edge_left / t31,
+            -normal_wall_right * mu * slip_wall_right / t24,
+            -normal_edge_right * mu * slip_edge_right / t34,
+            -normal_wall_left * mu * slip_wall_left / t26,
+        );
+        let delta = Vector4::new(
+            delta_edge_left,
+            delta_wall_right,
+            delta_edge_right,
+            delta_wall_left,
+        );
+        let slip = Vector4::new(
+            slip_edge_left,
+            slip_wall_right,
+            slip_edge_right,
+            slip_wall_left,
+        );
+        let a = Vector4::new(edge_ma * t38, wall_ma * t42, edge_ma * t43, wall_ma * t40);
+        let b = Vector4::new(edge_mb * t38, wall_mb * t42, edge_mb * t43, wall_mb * t40);
         let p0 = Vector4::new(
-            T::from_f64(0.3183098861837907) * t54 * t53,
-            T::from_f64(0.3183098861837907) * t57 * t60,
-            T::from_f64(0.3183098861837907) * t54 * t61,
-            T::from_f64(0.3183098861837907) * t57 * t56,
+            T::from_f64(0.3183098861837907) * t39 * t38,
+            T::from_f64(0.3183098861837907) * t41 * t42,
+            T::from_f64(0.3183098861837907) * t39 * t43,
+            T::from_f64(0.3183098861837907) * t41 * t40,
         );
         (normal, friction, delta, slip, a, b, p0)
     }
@@ -974,7 +957,7 @@ pub mod compliant_peg {
     /// - `depth`: scalar
     ///
     /// # Cost
-    /// 30 add/sub, 25 mul, 0 div, 0 sqrt, 6 transcendental, 4 branches; 17 `let`s.
+    /// 30 add/sub, 25 mul, 0 div, 0 sqrt, 6 transcendental, 4 branches; 19 `let`s.
     #[inline]
     pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> (T, T, T) {
         let x = y[0];
@@ -994,26 +977,28 @@ pub mod compliant_peg {
         let k_wall = p[10];
         let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = -T::from_f64(0.5) * d;
-        let t1 = -x;
-        let t2 = sin_theta * (rho_h - z);
-        let t3 = (T::from_f64(0.5) * theta).sin();
-        let t4 = t3 * t3;
-        let t5 = -rho_p;
-        let t6 = sin_theta * (l_c + t5);
-        let t7 = (r + t0 + x + t6 - T::from_f64(2.0) * t4 * (r + t5)).max0();
-        let t8 = (r + t0 + x + t2
-            + T::from_f64(2.0) * t4 * (rho_h + T::from_f64(0.5) * d + t1))
-            .max0();
-        let t9 = (r + t0 + t1 - t2 - T::from_f64(2.0) * (-rho_h + t0 + t1) * t4).max0();
-        let t10 = (r + t0 + t1 - t6 + T::from_f64(2.0) * t4 * (rho_p - r)).max0();
-        let t11 = t7.powf(T::from_f64(2.5));
-        let t12 = t8.powf(T::from_f64(2.5));
-        let t13 = t9.powf(T::from_f64(2.5));
-        let t14 = t10.powf(T::from_f64(2.5));
+        let t1 = (T::from_f64(0.5) * theta).sin();
+        let t2 = t1 * t1;
+        let t3 = sin_theta * (l_c - rho_p);
+        let t4 = sin_theta * (-rho_h + z);
+        let delta_edge_left = r + t0 - x + t4
+            - T::from_f64(2.0) * (-rho_h + t0 - x) * t2;
+        let pen_edge_left = delta_edge_left.max0();
+        let delta_wall_right = r + t0 + x + t3 - T::from_f64(2.0) * t2 * (r - rho_p);
+        let pen_wall_right = delta_wall_right.max0();
+        let delta_wall_left = r + t0 - x - t3 - T::from_f64(2.0) * t2 * (-rho_p + r);
+        let pen_wall_left = delta_wall_left.max0();
+        let delta_edge_right = r + t0 + x - t4
+            + T::from_f64(2.0) * t2 * (rho_h + T::from_f64(0.5) * d - x);
+        let pen_edge_right = delta_edge_right.max0();
+        let t5 = pen_edge_left.powf(T::from_f64(2.5));
+        let t6 = pen_wall_right.powf(T::from_f64(2.5));
+        let t7 = pen_wall_left.powf(T::from_f64(2.5));
+        let t8 = pen_edge_right.powf(T::from_f64(2.5));
         let kinetic = T::from_f64(0.5)
             * (m * (xdot * xdot + zdot * zdot) + j * (thetadot * thetadot));
-        let potential = T::from_f64(0.4) * (t13 + t12) * k_edge
-            + T::from_f64(0.4) * (t11 + t14) * k_wall;
+        let potential = T::from_f64(0.4) * (t5 + t8) * k_edge
+            + T::from_f64(0.4) * (t6 + t7) * k_wall;
         let depth = z + l_c * cos_theta;
         (kinetic, potential, depth)
     }

@@ -53,7 +53,7 @@ pub mod compliant_peg_lean {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 58 add/sub, 81 mul, 5 div, 2 sqrt, 4 transcendental, 8 branches; 51 `let`s.
+    /// 58 add/sub, 81 mul, 5 div, 2 sqrt, 4 transcendental, 8 branches; 48 `let`s.
     #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
@@ -81,53 +81,50 @@ pub mod compliant_peg_lean {
         let t0 = f1 * sin_theta;
         let t1 = f2 * cos_theta;
         let t2 = -T::from_f64(0.5) * d;
-        let t3 = -x;
-        let t4 = -rho_h + t2 + t3;
-        let t5 = rho_h - z;
-        let t6 = T::from_f64(0.5) * theta;
-        let (t7, t19) = t6.sin_cos();
-        let t8 = t7 * t7;
-        let t9 = r + t2 + t3 - sin_theta * t5 - T::from_f64(2.0) * t4 * t8;
-        let t10 = cos_theta * t5;
-        let t11 = sin_theta * t4 + t10;
-        let t12 = cos_theta * t11 + r * sin_theta;
-        let t13 = -(sin_theta * t11) + r * cos_theta;
-        let t14 = sin_theta * (xdot + thetadot * t12)
-            + cos_theta * (zdot + thetadot * t13);
-        let t15 = t9.max0();
-        let t16 = t15 * t15.sqrt();
-        let t17 = k_edge * t16;
-        let t18 = -T::from_f64(1.0) + T::from_f64(2.0) * t8;
-        let t20 = t7 * t19;
-        let t21 = v_s.hypot(t14);
-        let t22 = t9.step();
-        let t23 = -rho_p;
-        let t24 = l_c + t23;
-        let t25 = r + t23;
-        let t26 = -(sin_theta * (l_c + t23 + rho_p * sin_theta))
-            - cos_theta * (r - T::from_f64(2.0) * rho_p * t8);
-        let t27 = zdot + thetadot * t26;
-        let t28 = v_s.hypot(t27);
-        let t29 = r + t2 + x + sin_theta * t24 - T::from_f64(2.0) * t8 * t25;
-        let t30 = t29.max0();
-        let t31 = t30 * t30.sqrt();
-        let t32 = k_wall * t31;
-        let t33 = t29.step();
-        let t34 = -t33;
-        let t35 = -t10 - T::from_f64(2.0) * t20 * t4;
-        let t36 = xdot * t18 + zdot * sin_theta + thetadot * t35;
-        let t37 = (T::from_f64(1.0) + hc_alpha * t36).max0();
-        let t38 = t37 / t21;
-        let t39 = t38 * (mu * t14);
-        let t40 = cos_theta * t24 - T::from_f64(2.0) * t20 * t25;
-        let t41 = xdot + thetadot * t40;
-        let t42 = (T::from_f64(1.0) + hc_alpha * t41).max0();
-        let t43 = t37 - T::from_f64(1.0);
-        let t44 = t42 - T::from_f64(1.0);
-        let t45 = t42 / t28;
-        let t46 = t32 * t45;
-        let t47 = mu * t27;
-        let t48 = -t22 - t43;
+        let t3 = -rho_h + t2 - x;
+        let t4 = T::from_f64(0.5) * theta;
+        let (t5, t6) = t4.sin_cos();
+        let t7 = t5 * t5;
+        let t8 = t5 * t6;
+        let t9 = l_c - rho_p;
+        let t10 = r - rho_p;
+        let t11 = -rho_h + z;
+        let delta_edge_left = r + t2 - x + sin_theta * t11 - T::from_f64(2.0) * t3 * t7;
+        let pen_edge_left = delta_edge_left.max0();
+        let t12 = pen_edge_left * pen_edge_left.sqrt();
+        let t13 = T::from_f64(1.0) - T::from_f64(2.0) * t7;
+        let t14 = cos_theta * t11;
+        let t15 = k_edge * t12;
+        let step_delta_edge_left = delta_edge_left.step();
+        let t16 = sin_theta * (l_c - rho_p + rho_p * sin_theta)
+            + cos_theta * (r - T::from_f64(2.0) * rho_p * t7);
+        let slip_wall_right = zdot - thetadot * t16;
+        let t17 = v_s.hypot(slip_wall_right);
+        let delta_wall_right = r + t2 + x + sin_theta * t9 - T::from_f64(2.0) * t7 * t10;
+        let pen_wall_right = delta_wall_right.max0();
+        let t18 = pen_wall_right * pen_wall_right.sqrt();
+        let elastic_wall_right = k_wall * t18;
+        let step_delta_wall_right = delta_wall_right.step();
+        let t19 = cos_theta * t9 - T::from_f64(2.0) * t8 * t10;
+        let delta_rate_wall_right = xdot + thetadot * t19;
+        let t20 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
+        let t21 = sin_theta * t3 - t14;
+        let t22 = cos_theta * t21 + r * sin_theta;
+        let t23 = -(sin_theta * t21) + r * cos_theta;
+        let slip_edge_left = sin_theta * (xdot + thetadot * t22)
+            + cos_theta * (zdot + thetadot * t23);
+        let t24 = t14 - T::from_f64(2.0) * t8 * t3;
+        let delta_rate_edge_left = -(xdot * t13) + zdot * sin_theta + thetadot * t24;
+        let t25 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
+        let t26 = v_s.hypot(slip_edge_left);
+        let t27 = -t25 + T::from_f64(1.0);
+        let t28 = -t20 + T::from_f64(1.0);
+        let t29 = t25 / t26;
+        let t30 = t29 * (mu * slip_edge_left);
+        let t31 = t20 / t17;
+        let t32 = elastic_wall_right * t31;
+        let t33 = mu * slip_wall_right;
+        let t34 = step_delta_edge_left - t27;
         SMatrix::<
             T,
             8,
@@ -137,16 +134,23 @@ pub mod compliant_peg_lean {
                 xdot,
                 zdot,
                 thetadot,
-                (t17 * (t18 * t48 - t39 * sin_theta)
-                    + t32 * (T::from_f64(1.0) + t34 - t42) + t0 + t1) / m,
-                (sin_theta * (t17 * t48 - f2) + cos_theta * (f1 - t39 * t17) - t46 * t47)
+                (-(t15 * (-(t13 * t34) + t30 * sin_theta))
+                    - elastic_wall_right
+                        * (-T::from_f64(1.0) + step_delta_wall_right + t20) + t0 + t1)
                     / m,
-                (m_2 + t17 * (t35 * t48 - t39 * (sin_theta * t12 + cos_theta * t13))
-                    + t32 * (t40 * (t34 - t44) - t47 * t45 * t26)) / j,
+                -(sin_theta * (t15 * t34 + f2) + cos_theta * (-f1 + t30 * t15)
+                    + t32 * t33) / m,
+                (m_2 - t15 * (t24 * t34 + t30 * (sin_theta * t22 + cos_theta * t23))
+                    + elastic_wall_right
+                        * (-(t19 * (step_delta_wall_right - t28)) + t33 * t31 * t16))
+                    / j,
                 xdot * (t0 + t1) + zdot * (f1 * cos_theta - f2 * sin_theta)
                     + thetadot * m_2,
-                mu * (t38 * t17 * (t14 * t14) + t46 * (t27 * t27)) + t17 * t36 * t43
-                    + t32 * t41 * t44,
+                mu
+                    * (t29 * t15 * (slip_edge_left * slip_edge_left)
+                        + t32 * (slip_wall_right * slip_wall_right))
+                    - t15 * delta_rate_edge_left * t27
+                    - elastic_wall_right * delta_rate_wall_right * t28,
             ],
         )
     }
@@ -160,7 +164,7 @@ pub mod compliant_peg_lean {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 199 add/sub, 446 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 172 `let`s.
+    /// 199 add/sub, 442 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 167 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -187,175 +191,170 @@ pub mod compliant_peg_lean {
         let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = f1 * sin_theta;
         let t1 = f2 * cos_theta;
-        let t2 = f1 * cos_theta;
-        let t3 = -f2 * sin_theta;
-        let t4 = t2 + t3;
+        let t2 = t0 + t1;
+        let t3 = f1 * cos_theta;
+        let t4 = f2 * sin_theta;
         let t5 = -T::from_f64(0.5) * d;
-        let t6 = -x;
-        let t7 = -rho_h + t5 + t6;
-        let t8 = rho_h - z;
-        let t9 = sin_theta * t8;
-        let t10 = T::from_f64(0.5) * theta;
-        let (t11, t23) = t10.sin_cos();
-        let t12 = t11 * t11;
-        let t13 = cos_theta * t8;
-        let t14 = sin_theta * t7 + t13;
-        let t15 = cos_theta * t14;
-        let t16 = t15 + r * sin_theta;
-        let t17 = xdot + thetadot * t16;
-        let t18 = -sin_theta * t14;
-        let t19 = t18 + r * cos_theta;
-        let t20 = zdot + thetadot * t19;
-        let t21 = sin_theta * t17 + cos_theta * t20;
-        let t22 = -T::from_f64(1.0) + T::from_f64(2.0) * t12;
-        let t24 = t11 * t23;
-        let t25 = v_s.hypot(t21);
-        let t26 = T::from_f64(1.0) / t25;
-        let t27 = sin_theta * t16 + cos_theta * t19;
-        let t28 = t21 * t21;
-        let t29 = -rho_p;
-        let t30 = l_c + t29;
-        let t31 = r + t29;
-        let t32 = sin_theta * t30;
-        let t33 = l_c + t29 + rho_p * sin_theta;
-        let t34 = r - T::from_f64(2.0) * rho_p * t12;
-        let t35 = cos_theta * t34;
-        let t36 = sin_theta * t33;
-        let t37 = T::from_f64(1.0) / m;
-        let t38 = T::from_f64(1.0) / j;
-        let t39 = t22 * t22;
-        let t40 = sin_theta * sin_theta;
-        let t41 = cos_theta * cos_theta;
-        let t42 = T::from_f64(1.0) / (t25 * t25 * t25);
-        let t43 = t35 + t36;
-        let t44 = r + t5 + x + t32 - T::from_f64(2.0) * t12 * t31;
-        let t45 = t44.max0();
-        let t46 = t45 * t45.sqrt();
-        let t47 = k_wall * t46;
-        let t48 = t44.step();
-        let t49 = -t13 - T::from_f64(2.0) * t24 * t7;
-        let t50 = xdot * t22 + zdot * sin_theta + thetadot * t49;
-        let t51 = T::from_f64(1.0) + hc_alpha * t50;
-        let t52 = t51.max0();
-        let t53 = cos_theta * t30 - T::from_f64(2.0) * t24 * t31;
-        let t54 = xdot + thetadot * t53;
-        let t55 = T::from_f64(1.0) + hc_alpha * t54;
-        let t56 = t55.max0();
-        let t57 = t52 - T::from_f64(1.0);
-        let t58 = t56 - T::from_f64(1.0);
-        let t59 = -t57;
-        let t60 = t45.sqrt();
-        let t61 = t48 * t48;
-        let t62 = -T::from_f64(1.5) * t61;
-        let t63 = t12 - t23 * t23;
-        let t64 = t7 * t63 + t9;
-        let t65 = t28 * t42;
-        let t66 = -t26 + t65;
-        let t67 = -t9;
-        let t68 = cos_theta * t7 + t67;
-        let t69 = r + t5 + t6 + t67 - T::from_f64(2.0) * t7 * t12;
-        let t70 = t69.max0();
-        let t71 = t70 * t70.sqrt();
-        let t72 = t69.step();
-        let t73 = -t36 - t35;
-        let t74 = thetadot * t73;
-        let t75 = zdot + t74;
-        let t76 = v_s.hypot(t75);
-        let t77 = T::from_f64(1.0) / t76;
-        let t78 = t75 * t75;
-        let t79 = t70.sqrt();
-        let t80 = t72 * t72;
-        let t81 = t51.step();
-        let t82 = t55.step();
-        let t83 = -t0;
-        let t84 = -t1;
-        let t85 = T::from_f64(1.0) / (t76 * t76 * t76);
-        let t86 = k_edge * t71;
-        let t87 = hc_alpha * t81;
-        let t88 = t87 * t49;
-        let t89 = -t88 * t86 * sin_theta;
-        let t90 = t49 * t49;
-        let t91 = t53 * t53;
-        let t92 = -t72;
-        let t93 = t92 + t59;
-        let t94 = t71 * t93;
-        let t95 = T::from_f64(1.5) * t52 - T::from_f64(1.5);
-        let t96 = t72 * t79;
-        let t97 = t96 * t22;
-        let t98 = thetadot * t71;
-        let t99 = t24 * t98;
-        let t100 = t87 * t99;
-        let t101 = T::from_f64(2.0) * t100;
-        let t102 = t97 * t95 + t101;
-        let t103 = t21 * t26;
-        let t104 = mu * t52;
-        let t105 = t103 * t104;
-        let t106 = t105 * sin_theta;
-        let t107 = t106 * t72;
-        let t108 = t87 * t103;
-        let t109 = t108 * mu;
-        let t110 = t60 * (t48 * (T::from_f64(1.5) - T::from_f64(1.5) * t56) + t62);
-        let t111 = t96 * sin_theta;
-        let t112 = t98 * cos_theta;
-        let t113 = t112 * t87;
-        let t114 = t111 * t95 + t113;
-        let t115 = t79 * t80;
-        let t116 = -T::from_f64(1.5) * t115 * t22;
-        let t117 = T::from_f64(2.0) * t24 * xdot + zdot * cos_theta + thetadot * t64;
-        let t118 = t96 * t49;
-        let t119 = t71 * t117;
-        let t120 = t87 * t119;
-        let t121 = t118 * t95 + t120;
-        let t122 = cos_theta * (r + t68) + t18;
-        let t123 = sin_theta * (-r - t68) - t15;
-        let t124 = cos_theta * (t17 + thetadot * t123)
-            + sin_theta * (thetadot * t122 - t20);
-        let t125 = t31 * t63 - t32;
-        let t126 = t65 * t124;
-        let t127 = t108 * sin_theta;
-        let t128 = -(T::from_f64(1.5) * t115 * t49) - t121;
-        let t129 = thetadot * t46;
-        let t130 = hc_alpha * t82;
-        let t131 = t130 * t125;
-        let t132 = t129 * t131;
-        let t133 = t47 * t130;
-        let t134 = cos_theta * t52;
-        let t135 = t104 * cos_theta;
-        let t136 = sin_theta * (t135 * t66 - t87 * t22);
-        let t137 = t130 * t53;
-        let t138 = t52 * t27;
-        let t139 = t108 * t49;
-        let t140 = t138 * t66 - t139;
-        let t141 = -t88 * t22;
-        let t142 = t48 * t60;
-        let t143 = t142 * k_wall;
-        let t144 = mu * t56;
-        let t145 = t75 * t77;
-        let t146 = t97 * t52;
-        let t147 = cos_theta * (rho_p * (-sin_theta + T::from_f64(2.0) * t24) - t33)
-            + sin_theta * t34;
-        let t148 = t108 * t117;
-        let t149 = t103 * t118;
-        let t150 = t78 * t85;
-        let t151 = t56 * (-t77 + t150);
-        let t152 = t142 * t53;
-        let t153 = t152 * t56;
-        let t154 = t151 * t73;
-        let t155 = T::from_f64(1.5) * t56 - T::from_f64(1.5);
-        let t156 = t71 * (t92 + t59 - t109 * thetadot * t27);
-        let t157 = t79 * (-(t49 * t80) - t105 * t72 * t27);
-        let t158 = t145 * t73;
-        let t159 = t152 * t155 + t132;
-        let t160 = t26 * t28;
-        let t161 = t160 * mu;
-        let t162 = t77 * t78;
-        let t163 = t71 * t124;
-        let t164 = t42 * (t21 * t21 * t21);
-        let t165 = t129 * t147;
-        let t166 = t85 * (t75 * t75 * t75);
-        let t167 = t87 * (t161 + t50) + t57;
-        let t168 = -t164 + T::from_f64(2.0) * t103;
-        let t169 = t73 * t56;
+        let t6 = -rho_h + t5 - x;
+        let t7 = T::from_f64(0.5) * theta;
+        let (t8, t9) = t7.sin_cos();
+        let t10 = t8 * t8;
+        let t11 = t8 * t9;
+        let t12 = l_c - rho_p;
+        let t13 = r - rho_p;
+        let t14 = sin_theta * t12;
+        let t15 = l_c - rho_p + rho_p * sin_theta;
+        let t16 = r - T::from_f64(2.0) * rho_p * t10;
+        let t17 = cos_theta * t16;
+        let t18 = sin_theta * t15;
+        let t19 = T::from_f64(1.0) / m;
+        let t20 = T::from_f64(1.0) / j;
+        let t21 = sin_theta * sin_theta;
+        let t22 = cos_theta * cos_theta;
+        let t23 = t17 + t18;
+        let t24 = -rho_h + z;
+        let t25 = sin_theta * t24;
+        let delta_edge_left = r + t5 - x + t25 - T::from_f64(2.0) * t6 * t10;
+        let pen_edge_left = delta_edge_left.max0();
+        let t26 = pen_edge_left * pen_edge_left.sqrt();
+        let t27 = T::from_f64(1.0) - T::from_f64(2.0) * t10;
+        let t28 = cos_theta * t24;
+        let t29 = k_edge * t26;
+        let step_delta_edge_left = delta_edge_left.step();
+        let t30 = t18 + t17;
+        let delta_wall_right = r + t5 + x + t14 - T::from_f64(2.0) * t10 * t13;
+        let pen_wall_right = delta_wall_right.max0();
+        let t31 = pen_wall_right * pen_wall_right.sqrt();
+        let elastic_wall_right = k_wall * t31;
+        let step_delta_wall_right = delta_wall_right.step();
+        let t32 = cos_theta * t12 - T::from_f64(2.0) * t11 * t13;
+        let delta_rate_wall_right = xdot + thetadot * t32;
+        let t33 = T::from_f64(1.0) + hc_alpha * delta_rate_wall_right;
+        let t34 = t33.max0();
+        let t35 = sin_theta * t6 - t28;
+        let t36 = cos_theta * t35;
+        let t37 = t36 + r * sin_theta;
+        let t38 = xdot + thetadot * t37;
+        let t39 = t28 - T::from_f64(2.0) * t11 * t6;
+        let delta_rate_edge_left = -(xdot * t27) + zdot * sin_theta + thetadot * t39;
+        let t40 = T::from_f64(1.0) + hc_alpha * delta_rate_edge_left;
+        let t41 = t40.max0();
+        let t42 = -t41 + T::from_f64(1.0);
+        let t43 = -t34 + T::from_f64(1.0);
+        let t44 = step_delta_edge_left - t42;
+        let t45 = t26 * t44;
+        let sqrt_pen_edge_left = pen_edge_left.sqrt();
+        let t46 = t27 * t27;
+        let t47 = step_delta_edge_left * step_delta_edge_left;
+        let sqrt_pen_wall_right = pen_wall_right.sqrt();
+        let t48 = step_delta_wall_right * step_delta_wall_right;
+        let t49 = r + cos_theta * t6 + t25;
+        let t50 = -T::from_f64(1.5) * t48;
+        let t51 = thetadot * t30;
+        let t52 = t10 - t9 * t9;
+        let t53 = -(t6 * t52) + t25;
+        let t54 = -(t13 * t52) + t14;
+        let t55 = t3 - t4;
+        let t56 = t33.step();
+        let t57 = t32 * t32;
+        let t58 = sin_theta * t35;
+        let t59 = -t58 + r * cos_theta;
+        let t60 = zdot + thetadot * t59;
+        let slip_edge_left = sin_theta * t38 + cos_theta * t60;
+        let t61 = v_s.hypot(slip_edge_left);
+        let t62 = T::from_f64(1.0) / t61;
+        let t63 = sin_theta * t37 + cos_theta * t59;
+        let t64 = slip_edge_left * slip_edge_left;
+        let slip_wall_right = zdot - t51;
+        let t65 = v_s.hypot(slip_wall_right);
+        let t66 = T::from_f64(1.0) / t65;
+        let t67 = slip_wall_right * slip_wall_right;
+        let t68 = t40.step();
+        let t69 = T::from_f64(1.0) / (t61 * t61 * t61);
+        let t70 = T::from_f64(1.0) / (t65 * t65 * t65);
+        let t71 = hc_alpha * t68;
+        let t72 = t71 * t39;
+        let t73 = t72 * t29 * sin_theta;
+        let t74 = t39 * t39;
+        let t75 = hc_alpha * t56;
+        let t76 = elastic_wall_right * t75;
+        let t77 = t75 * t32;
+        let t78 = T::from_f64(1.5) * t34;
+        let t79 = t78 - T::from_f64(1.5);
+        let t80 = -(T::from_f64(1.5) * t41) + T::from_f64(1.5);
+        let t81 = step_delta_edge_left * sqrt_pen_edge_left;
+        let t82 = t81 * t80;
+        let t83 = thetadot * t26;
+        let t84 = t11 * t83;
+        let t85 = T::from_f64(2.0) * t84 * t71;
+        let t86 = t82 * t27 + t85;
+        let t87 = slip_edge_left * t62;
+        let t88 = t71 * t87;
+        let t89 = t88 * t83;
+        let t90 = mu * sin_theta;
+        let t91 = t83 * cos_theta;
+        let t92 = t91 * t71;
+        let t93 = sqrt_pen_edge_left * t47;
+        let t94 = T::from_f64(1.5) * t93 * t27;
+        let t95 = mu * cos_theta;
+        let t96 = mu * t21;
+        let t97 = t87 * t41;
+        let t98 = sin_theta * t49 + t36;
+        let t99 = -T::from_f64(1.5) * t34;
+        let t100 = t64 * t69;
+        let t101 = t41 * (t62 - t100);
+        let t102 = t88 * t39;
+        let t103 = t101 * t63 + t102;
+        let t104 = t97 * step_delta_edge_left;
+        let t105 = t67 * t70;
+        let t106 = t88 * t27;
+        let t107 = t88 * sin_theta;
+        let t108 = t34 * (t66 - t105);
+        let t109 = slip_wall_right * t66;
+        let t110 = mu * t63;
+        let t111 = sqrt_pen_edge_left * (t39 * t47 + t104 * t110);
+        let t112 = mu * t34;
+        let t113 = t109 * t30;
+        let t114 = step_delta_wall_right * sqrt_pen_wall_right;
+        let t115 = t114 * t32;
+        let t116 = t81 * t39;
+        let t117 = t97 * t116;
+        let t118 = t72 * t27;
+        let t119 = t81 * t41;
+        let t120 = -(T::from_f64(1.5) * t119 * t27) + t85;
+        let t121 = t62 * t64;
+        let t122 = t121 * mu;
+        let t123 = t66 * t67;
+        let t124 = t114 * k_wall;
+        let t125 = t69 * (slip_edge_left * slip_edge_left * slip_edge_left);
+        let t126 = t41 * (-t125 + T::from_f64(2.0) * t87);
+        let t127 = t70 * (slip_wall_right * slip_wall_right * slip_wall_right);
+        let t128 = t41 * t63;
+        let t129 = t34 * t30;
+        let t130 = -(t82 * sin_theta) + t92;
+        let t131 = T::from_f64(2.0) * t11 * xdot + zdot * cos_theta - thetadot * t53;
+        let t132 = t26 * t131;
+        let t133 = t71 * t132;
+        let t134 = -(t116 * t80) + t133;
+        let t135 = -(cos_theta * t49) + t58;
+        let t136 = cos_theta * (-t38 + thetadot * t98)
+            + sin_theta * (thetadot * t135 + t60);
+        let t137 = t100 * t136;
+        let t138 = T::from_f64(1.5) * t93 * t39 + t134;
+        let t139 = thetadot * t31;
+        let t140 = t75 * t54;
+        let t141 = t139 * t140;
+        let t142 = -t101 * t95 + t71 * t27;
+        let t143 = -(cos_theta * (rho_p * (sin_theta - T::from_f64(2.0) * t11) + t15))
+            + sin_theta * t16;
+        let t144 = t88 * t131;
+        let t145 = t115 * t34;
+        let t146 = t108 * t30;
+        let t147 = t26 * (step_delta_edge_left - t42 + t110 * t88 * thetadot);
+        let t148 = t115 * (t99 + T::from_f64(1.5)) + t141;
+        let t149 = t26 * t136;
+        let t150 = t139 * t143;
+        let t151 = -t71 * (t122 + delta_rate_edge_left) + t42;
         SMatrix::<
             T,
             8,
@@ -386,139 +385,160 @@ pub mod compliant_peg_lean {
                 T::from_f64(1.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t37
+                -t19
                     * (k_edge
-                        * (T::from_f64(1.5) * (-(t39 * t80) - t107 * t22) * t79
-                            - t22 * t102 - T::from_f64(2.0) * t99 * t109 * sin_theta)
-                        + t110 * k_wall),
+                        * (-(T::from_f64(1.5) * (-(t46 * t47) + t104 * t90 * t27)
+                            * sqrt_pen_edge_left) - t27 * t86
+                            + T::from_f64(2.0) * t89 * t90 * t11)
+                        + sqrt_pen_wall_right
+                            * (step_delta_wall_right * (-T::from_f64(1.5) + t78)
+                                + T::from_f64(1.5) * t48) * k_wall),
                 k_edge
-                    * (sin_theta * (t116 - t112 * t109) - t22 * t114
-                        - T::from_f64(1.5) * t105 * t96 * t40) * t37,
-                t37
+                    * (sin_theta * (t94 - t89 * t95) + t27 * t130
+                        - T::from_f64(1.5) * t96 * t97 * t81) * t19,
+                -t19
                     * (k_edge
-                        * (t71
+                        * (t26
                             * (mu
-                                * (t52
-                                    * (t26 * (-(cos_theta * t21) - sin_theta * t124)
-                                        + t126 * sin_theta) - t127 * t117)
-                                + T::from_f64(2.0) * t24 * t93) + t22 * t128
-                            - T::from_f64(1.5) * t106 * t118)
-                        + k_wall * (t110 * t53 - t132) + t2 + t3),
-                t37 * (t86 * (mu * (t40 * t66 * t52 - t127 * t22) - t87 * t39) - t133),
-                t86 * (t136 - t109 * t40) * t37,
-                t37 * (t86 * (sin_theta * t140 * mu + t141) - t137 * t47),
+                                * (t41
+                                    * (-(t62
+                                        * (-(cos_theta * slip_edge_left) + sin_theta * t136))
+                                        + t137 * sin_theta) + t107 * t131)
+                                + T::from_f64(2.0) * t11 * t44) - t27 * t138
+                            + T::from_f64(1.5) * t117 * t90)
+                        - k_wall
+                            * (sqrt_pen_wall_right
+                                * (step_delta_wall_right * (T::from_f64(1.5) + t99) + t50)
+                                * t32 + t141) - t3 + t4),
+                -t19 * (-(t29 * (mu * (-(t101 * t21) + t107 * t27) - t71 * t46)) + t76),
+                -(t29 * (-(sin_theta * t142) + t96 * t88)) * t19,
+                -t19 * (-(t29 * (-(t90 * t103) + t118)) + t77 * elastic_wall_right),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t37
-                    * (k_edge
-                        * (sin_theta * (t116 - t102)
-                            + t103
-                                * (-(T::from_f64(1.5) * t146) - T::from_f64(2.0) * t100)
-                                * cos_theta * mu) - T::from_f64(1.5) * t143 * t144 * t145),
-                k_edge
-                    * (T::from_f64(1.5) * (-(t80 * t40) - t107 * cos_theta) * t79
-                        - sin_theta * t114 - t109 * t98 * t41) * t37,
-                t37
+                -t19
+                    * (-(k_edge * (sin_theta * (t94 - t86) - t87 * t120 * t95))
+                        + T::from_f64(1.5) * t124 * t112 * t109),
+                -(k_edge
+                    * (T::from_f64(1.5) * (t47 * t21 + t104 * t95 * sin_theta)
+                        * sqrt_pen_edge_left + sin_theta * t130 + t89 * mu * t22)) * t19,
+                -t19
                     * (mu
                         * (k_edge
-                            * (t71
-                                * (t52
-                                    * (t26 * (sin_theta * t21 - cos_theta * t124)
-                                        + t126 * cos_theta) - t148 * cos_theta)
-                                - T::from_f64(1.5) * t149 * t134)
+                            * (t26
+                                * (t41
+                                    * (-(t62 * (sin_theta * slip_edge_left + cos_theta * t136))
+                                        + t137 * cos_theta) + t144 * cos_theta)
+                                + T::from_f64(1.5) * t117 * cos_theta)
                             + k_wall
-                                * (t129 * (t151 * t147 - t131 * t145)
-                                    - T::from_f64(1.5) * t153 * t145))
-                        + k_edge * (t94 * cos_theta + sin_theta * t128) + t83 + t84),
-                t37 * (t86 * (t136 - t109 * cos_theta * t22) - t133 * t145 * mu),
-                t37
-                    * (mu * (t86 * (t41 * t66 * t52 - t127 * cos_theta) + t151 * t47)
-                        - t86 * t87 * t40),
-                t37 * (mu * (cos_theta * t140 * t86 + t47 * (t154 - t137 * t145)) + t89),
+                                * (-(t139 * (-(t108 * t143) + t140 * t109))
+                                    + T::from_f64(1.5) * t145 * t109))
+                        + k_edge * (t45 * cos_theta + sin_theta * t138) + t0 + t1),
+                -t19 * (-(t29 * (sin_theta * t142 + t106 * t95)) + t76 * t109 * mu),
+                -t19
+                    * (mu
+                        * (t29 * (t101 * t22 + t107 * cos_theta)
+                            + t108 * elastic_wall_right) + t29 * t71 * t21),
+                -t19
+                    * (mu
+                        * (cos_theta * t103 * t29
+                            + elastic_wall_right * (-t146 + t77 * t109)) + t73),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t38
+                t20
                     * (k_edge
-                        * (T::from_f64(2.0) * t156 * t24 + T::from_f64(1.5) * t157 * t22
-                            - t49 * t102)
-                        + t60
-                            * (t53 * (t62 - t155 * t48)
-                                - T::from_f64(1.5) * t144 * t158 * t48) * k_wall),
+                        * (-(T::from_f64(2.0) * t147 * t11)
+                            + T::from_f64(1.5) * t111 * t27 - t39 * t86)
+                        + sqrt_pen_wall_right
+                            * (t32 * (t50 - t79 * step_delta_wall_right)
+                                + T::from_f64(1.5) * t112 * t113 * step_delta_wall_right)
+                            * k_wall),
                 k_edge
-                    * (t156 * cos_theta + T::from_f64(1.5) * t157 * sin_theta
-                        - t49 * t114) * t38,
-                t38
+                    * (-(t147 * cos_theta) - T::from_f64(1.5) * t111 * sin_theta
+                        - t39 * t130) * t20,
+                -t20
                     * (mu
                         * (k_edge
-                            * (t71
-                                * (t52
-                                    * (t26
-                                        * (-(t27 * t124)
-                                            - t21
-                                                * (cos_theta * (t16 + t123) + sin_theta * (t122 - t19)))
-                                        + t126 * t27) - t148 * t27)
-                                - T::from_f64(1.5) * t149 * t138)
-                            + k_wall
-                                * (t46
-                                    * (t147 * (t77 * (-t75 - t74) + t74 * t150) * t56
-                                        - t131 * t158 * thetadot) - T::from_f64(1.5) * t153 * t158))
+                            * (t26
+                                * (-(t41
+                                    * (t62
+                                        * (t63 * t136
+                                            + slip_edge_left
+                                                * (-(cos_theta * (t37 - t98)) + sin_theta * (t135 + t59)))
+                                        - t137 * t63)) + t144 * t63)
+                                + T::from_f64(1.5) * t117 * t63)
+                            - k_wall
+                                * (-(t31
+                                    * (t143 * (-(t66 * (-slip_wall_right + t51)) + t51 * t105)
+                                        * t34 + t140 * t113 * thetadot))
+                                    + T::from_f64(1.5) * t145 * t113))
                         + k_edge
-                            * (t94 * t64 - T::from_f64(1.5) * t115 * t90 - t49 * t121)
+                            * (-(t45 * t53) + T::from_f64(1.5) * t93 * t74 + t39 * t134)
                         + k_wall
-                            * ((-t48 - t58) * t125 * t46
-                                - T::from_f64(1.5) * t60 * t61 * t91 - t53 * t159)),
-                t38
-                    * (t86 * (t27 * (t52 * t66 * sin_theta - t108 * t22) * mu + t141)
-                        + t133 * (-t53 - t158 * mu)),
-                t38 * (mu * (t27 * (t134 * t66 - t127) * t86 + t154 * t47) + t89),
-                t38
+                            * (-((step_delta_wall_right - t43) * t54 * t31)
+                                + T::from_f64(1.5) * sqrt_pen_wall_right * t48 * t57
+                                - t32 * t148)),
+                t20
+                    * (t29 * (t110 * (-(t101 * sin_theta) + t106) + t118)
+                        + t76 * (-t32 + t113 * mu)),
+                -t20
                     * (mu
-                        * (t86 * (t27 * t27 * t66 * t52 - t139 * t27)
-                            + t47 * (t151 * (t43 * t43) - t137 * t158))
-                        + hc_alpha * (-(t86 * t81 * t90) - t47 * t82 * t91)),
+                        * (t63 * (t101 * cos_theta + t107) * t29
+                            - t146 * elastic_wall_right) + t73),
+                -t20
+                    * (mu
+                        * (t29 * (t101 * (t63 * t63) + t102 * t63)
+                            - elastic_wall_right * (-(t108 * (t23 * t23)) + t77 * t113))
+                        + hc_alpha * (t29 * t68 * t74 + elastic_wall_right * t56 * t57)),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                xdot * t4 + zdot * (t83 + t84),
-                t0 + t1,
-                t4,
+                xdot * t55 - zdot * t2,
+                t2,
+                t55,
                 m_2,
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 k_edge
-                    * (t161 * (T::from_f64(1.5) * t146 + t101)
-                        + T::from_f64(2.0) * t99 * t57 + t50 * t102)
-                    + t143 * (T::from_f64(1.5) * t162 * t144 + t54 * t155),
+                    * (t122 * t120 - T::from_f64(2.0) * t84 * t42
+                        + delta_rate_edge_left * t86)
+                    + t124
+                        * (T::from_f64(1.5) * t123 * t112 + delta_rate_wall_right * t79),
                 k_edge
-                    * (t161 * (T::from_f64(1.5) * t111 * t52 + t113) + t112 * t57
-                        + t50 * t114),
+                    * (t122 * (T::from_f64(1.5) * t119 * sin_theta + t92) - t91 * t42
+                        + delta_rate_edge_left * t130),
                 mu
                     * (k_edge
-                        * (t52
-                            * (t26
-                                * (T::from_f64(1.5) * t118 * t28
-                                    + T::from_f64(2.0) * t163 * t21) - t163 * t164)
-                            + t120 * t160)
-                        + k_wall
-                            * (t56
-                                * (t77
-                                    * (T::from_f64(1.5) * t152 * t78
-                                        + T::from_f64(2.0) * t165 * t75) - t165 * t166)
-                                + t132 * t162)) + k_edge * (t119 * t57 + t50 * t121)
-                    + k_wall * (t129 * t58 * t125 + t54 * t159),
-                t86 * (t22 * t167 + sin_theta * t168 * t104)
-                    + t47 * (t130 * (t162 * mu + t54) + t56 - T::from_f64(1.0)),
-                t86 * (sin_theta * t167 + t135 * t168)
-                    + t47 * (-t166 + T::from_f64(2.0) * t145) * t144,
+                        * (t41
+                            * (-(t62
+                                * (-(T::from_f64(1.5) * t116 * t64)
+                                    + T::from_f64(2.0) * t149 * slip_edge_left)) + t149 * t125)
+                            + t133 * t121)
+                        - k_wall
+                            * (t34
+                                * (-(t66
+                                    * (T::from_f64(1.5) * t115 * t67
+                                        + T::from_f64(2.0) * t150 * slip_wall_right)) + t150 * t127)
+                                + t141 * t123))
+                    - k_edge * (t132 * t42 - delta_rate_edge_left * t134)
+                    + k_wall * (t139 * t43 * t54 - delta_rate_wall_right * t148),
+                t29 * (t27 * t151 + t126 * t90)
+                    + elastic_wall_right
+                        * (t75 * (t123 * mu + delta_rate_wall_right) + t34
+                            - T::from_f64(1.0)),
+                -(t29 * (sin_theta * t151 - t126 * t95))
+                    + elastic_wall_right * (-t127 + T::from_f64(2.0) * t109) * t112,
                 mu
-                    * (t86
-                        * (t26 * (t88 * t28 + T::from_f64(2.0) * t138 * t21)
-                            - t164 * t138)
-                        + t47
-                            * (t77 * (t137 * t78 + T::from_f64(2.0) * t169 * t75)
-                                - t169 * t166)) + t86 * (t57 + t87 * t50) * t49
-                    + t47 * (t58 + t130 * t54) * t53,
+                    * (-(t29
+                        * (-(t62
+                            * (t72 * t64 + T::from_f64(2.0) * t128 * slip_edge_left))
+                            + t128 * t125))
+                        + elastic_wall_right
+                            * (t66
+                                * (t77 * t67 - T::from_f64(2.0) * t129 * slip_wall_right)
+                                + t129 * t127))
+                    + t29 * (-t42 + t71 * delta_rate_edge_left) * t39
+                    + elastic_wall_right * (-t43 + t75 * delta_rate_wall_right) * t32,
                 T::from_f64(0.0),
                 T::from_f64(0.0),
             ],
@@ -579,55 +599,54 @@ pub mod compliant_peg_lean {
         let hc_alpha = p[23];
         let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = -T::from_f64(0.5) * d;
-        let t1 = -x;
-        let t2 = -rho_h + t0 + t1;
-        let t3 = rho_h - z;
-        let t4 = T::from_f64(0.5) * theta;
-        let (t5, t13) = t4.sin_cos();
-        let t6 = t5 * t5;
-        let t7 = r + t0 + t1 - sin_theta * t3 - T::from_f64(2.0) * t2 * t6;
-        let t8 = cos_theta * t3;
-        let t9 = sin_theta * t2 + t8;
-        let t10 = sin_theta * (xdot + thetadot * (cos_theta * t9 + r * sin_theta))
-            + cos_theta * (zdot + thetadot * (-(sin_theta * t9) + r * cos_theta));
-        let t11 = t7.max0();
-        let t12 = t11 * t11.sqrt();
-        let t14 = t5 * t13;
-        let t15 = v_s.hypot(t10);
-        let t16 = -rho_p;
-        let t17 = l_c + t16;
-        let t18 = r + t16;
-        let t19 = zdot
-            + thetadot
-                * (-(sin_theta * (l_c + t16 + rho_p * sin_theta))
-                    - cos_theta * (r - T::from_f64(2.0) * rho_p * t6));
-        let t20 = v_s.hypot(t19);
-        let t21 = r + t0 + x + sin_theta * t17 - T::from_f64(2.0) * t6 * t18;
-        let t22 = t21.max0();
-        let t23 = t22 * t22.sqrt();
-        let t24 = (T::from_f64(1.0)
-            + hc_alpha
-                * (xdot * (-T::from_f64(1.0) + T::from_f64(2.0) * t6) + zdot * sin_theta
-                    + thetadot * (-t8 - T::from_f64(2.0) * t14 * t2)))
-            .max0();
-        let t25 = (T::from_f64(1.0)
-            + hc_alpha
-                * (xdot + thetadot * (cos_theta * t17 - T::from_f64(2.0) * t14 * t18)))
-            .max0();
-        let t26 = k_edge * t12 * t24;
-        let t27 = (T::from_f64(1.5) * t26 / (e_star * edge_sum)).cbrt();
-        let t28 = k_wall * t25 * t23;
-        let t29 = (T::from_f64(1.5) * t28 / (e_star * wall_sum)).cbrt();
-        let normal = Vector2::new(t26, t28);
-        let friction = Vector2::new(-t26 * mu * t10 / t15, -t28 * mu * t19 / t20);
-        let delta = Vector2::new(t7, t21);
-        let slip = Vector2::new(t10, t19);
-        let a = Vector2::new(edge_ma * t27, wall_ma * t29);
-        let b = Vector2::new(edge_mb * t27, wall_mb * t29);
+        let t1 = -rho_h + t0 - x;
+        let t2 = T::from_f64(0.5) * theta;
+        let (t3, t4) = t2.sin_cos();
+        let t5 = t3 * t3;
+        let t6 = t3 * t4;
+        let t7 = l_c - rho_p;
+        let t8 = r - rho_p;
+        let t9 = -rho_h + z;
+        let delta_edge_left = r + t0 - x + sin_theta * t9 - T::from_f64(2.0) * t1 * t5;
+        let pen_edge_left = delta_edge_left.max0();
+        let t10 = pen_edge_left * pen_edge_left.sqrt();
+        let t11 = cos_theta * t9;
+        let slip_wall_right = zdot
+            - thetadot
+                * (sin_theta * (l_c - rho_p + rho_p * sin_theta)
+                    + cos_theta * (r - T::from_f64(2.0) * rho_p * t5));
+        let t12 = v_s.hypot(slip_wall_right);
+        let delta_wall_right = r + t0 + x + sin_theta * t7 - T::from_f64(2.0) * t5 * t8;
+        let pen_wall_right = delta_wall_right.max0();
+        let t13 = pen_wall_right * pen_wall_right.sqrt();
+        let delta_rate_wall_right = xdot
+            + thetadot * (cos_theta * t7 - T::from_f64(2.0) * t6 * t8);
+        let t14 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
+        let t15 = sin_theta * t1 - t11;
+        let slip_edge_left = sin_theta
+            * (xdot + thetadot * (cos_theta * t15 + r * sin_theta))
+            + cos_theta * (zdot + thetadot * (-(sin_theta * t15) + r * cos_theta));
+        let delta_rate_edge_left = -(xdot * (T::from_f64(1.0) - T::from_f64(2.0) * t5))
+            + zdot * sin_theta + thetadot * (t11 - T::from_f64(2.0) * t6 * t1);
+        let t16 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
+        let t17 = v_s.hypot(slip_edge_left);
+        let normal_edge_left = k_edge * t10 * t16;
+        let normal_wall_right = k_wall * t14 * t13;
+        let t18 = (T::from_f64(1.5) * normal_edge_left / (e_star * edge_sum)).cbrt();
+        let t19 = (T::from_f64(1.5) * normal_wall_right / (e_star * wall_sum)).cbrt();
+        let normal = Vector2::new(normal_edge_left, normal_wall_right);
+        let friction = Vector2::new(
+            -normal_edge_left * mu * slip_edge_left / t17,
+            -normal_wall_right * mu * slip_wall_right / t12,
+        );
+        let delta = Vector2::new(delta_edge_left, delta_wall_right);
+        let slip = Vector2::new(slip_edge_left, slip_wall_right);
+        let a = Vector2::new(edge_ma * t18, wall_ma * t19);
+        let b = Vector2::new(edge_mb * t18, wall_mb * t19);
         let p0 = Vector2::new(
-            T::from_f64(0.3183098861837907) * e_star * edge_sum * t27
+            T::from_f64(0.3183098861837907) * e_star * edge_sum * t18
                 / (edge_ma * edge_mb),
-            T::from_f64(0.3183098861837907) * e_star * wall_sum * t29
+            T::from_f64(0.3183098861837907) * e_star * wall_sum * t19
                 / (wall_ma * wall_mb),
         );
         (normal, friction, delta, slip, a, b, p0)
@@ -664,20 +683,19 @@ pub mod compliant_peg_lean {
         let k_wall = p[10];
         let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = -T::from_f64(0.5) * d;
-        let t1 = -x;
-        let t2 = (T::from_f64(0.5) * theta).sin();
-        let t3 = t2 * t2;
-        let t4 = (r + t0 + t1 - sin_theta * (rho_h - z)
-            - T::from_f64(2.0) * (-rho_h + t0 + t1) * t3)
-            .max0();
-        let t5 = t4.powf(T::from_f64(2.5));
-        let t6 = -rho_p;
-        let t7 = (r + t0 + x + sin_theta * (l_c + t6) - T::from_f64(2.0) * t3 * (r + t6))
-            .max0();
-        let t8 = t7.powf(T::from_f64(2.5));
+        let t1 = (T::from_f64(0.5) * theta).sin();
+        let t2 = t1 * t1;
+        let delta_edge_left = r + t0 - x + sin_theta * (-rho_h + z)
+            - T::from_f64(2.0) * (-rho_h + t0 - x) * t2;
+        let pen_edge_left = delta_edge_left.max0();
+        let delta_wall_right = r + t0 + x + sin_theta * (l_c - rho_p)
+            - T::from_f64(2.0) * t2 * (r - rho_p);
+        let pen_wall_right = delta_wall_right.max0();
+        let t3 = pen_edge_left.powf(T::from_f64(2.5));
+        let t4 = pen_wall_right.powf(T::from_f64(2.5));
         let kinetic = T::from_f64(0.5)
             * (m * (xdot * xdot + zdot * zdot) + j * (thetadot * thetadot));
-        let potential = T::from_f64(0.4) * (k_edge * t5 + k_wall * t8);
+        let potential = T::from_f64(0.4) * (k_edge * t3 + k_wall * t4);
         let depth = z + l_c * cos_theta;
         (kinetic, potential, depth)
     }

@@ -44,14 +44,14 @@ pub mod double_pendulum {
         let sin_theta1 = theta1.sin();
         let sin_theta2 = theta2.sin();
         let t0 = theta1 - theta2;
-        let (t2, t1) = t0.sin_cos();
+        let (t1, t2) = t0.sin_cos();
         let t3 = m1 + m2;
         let t4 = m2 * l2;
-        let t5 = t4 * l1 * t1;
+        let t5 = t4 * l1 * t2;
         let mass = Matrix2::new(l1 * l1 * t3, t5, t5, m2 * (l2 * l2));
         let forcing = Vector2::new(
-            l1 * (-(g * sin_theta1 * t3) - t4 * (theta2dot * theta2dot) * t2),
-            t4 * (l1 * (theta1dot * theta1dot) * t2 - g * sin_theta2),
+            -(l1 * (g * sin_theta1 * t3 + t4 * (theta2dot * theta2dot) * t1)),
+            t4 * (l1 * (theta1dot * theta1dot) * t1 - g * sin_theta2),
         );
         (mass, forcing)
     }
@@ -82,17 +82,17 @@ pub mod double_pendulum {
         let sin_theta1 = theta1.sin();
         let sin_theta2 = theta2.sin();
         let t0 = theta1 - theta2;
-        let (t2, t1) = t0.sin_cos();
+        let (t1, t2) = t0.sin_cos();
         let t3 = m2 * m2;
         let t4 = m1 + m2;
-        let t5 = -(g * sin_theta1 * t4) - m2 * l2 * (theta2dot * theta2dot) * t2;
-        let t6 = l1 * (theta1dot * theta1dot) * t2 - g * sin_theta2;
-        let t7 = m2 * t4 - t3 * (t1 * t1);
+        let t5 = l1 * (theta1dot * theta1dot) * t1 - g * sin_theta2;
+        let t6 = g * sin_theta1 * t4 + m2 * l2 * (theta2dot * theta2dot) * t1;
+        let t7 = m2 * t4 - t3 * (t2 * t2);
         Vector4::new(
             theta1dot,
             theta2dot,
-            (m2 * t5 - t3 * t1 * t6) / (l1 * t7),
-            m2 * (t4 * t6 - t1 * t5) / (t7 * l2),
+            -(m2 * t6 + t3 * t2 * t5) / (l1 * t7),
+            m2 * (t4 * t5 + t2 * t6) / (t7 * l2),
         )
     }
     /// G = ∂f/∂x − Σ_j (∂M_{·j}/∂x) q̈_j (n × 2n) at the accelerations `qdd`;
@@ -109,7 +109,7 @@ pub mod double_pendulum {
     /// - `terms`: 2×4 matrix
     ///
     /// # Cost
-    /// 8 add/sub, 22 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 12 `let`s.
+    /// 6 add/sub, 22 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 10 `let`s.
     #[inline]
     pub fn jacobian_terms<T: Real>(
         x: &SVector<T, 4>,
@@ -130,22 +130,20 @@ pub mod double_pendulum {
         let cos_theta1 = theta1.cos();
         let cos_theta2 = theta2.cos();
         let t0 = theta1 - theta2;
-        let (t2, t1) = t0.sin_cos();
+        let (t1, t2) = t0.sin_cos();
         let t3 = m2 * l2;
-        let t4 = theta2ddot * t2;
-        let t5 = theta2dot * theta2dot * t1;
-        let t6 = theta1ddot * t2;
-        let t7 = theta1dot * theta1dot * t1;
-        let t8 = t3 * l1;
-        let t9 = t8 * t2;
+        let t4 = theta1ddot * t1 + theta1dot * theta1dot * t2;
+        let t5 = theta2ddot * t1 - theta2dot * theta2dot * t2;
+        let t6 = t3 * l1;
+        let t7 = t6 * t1;
         Matrix2x4::new(
-            l1 * (t3 * (t4 - t5) - g * cos_theta1 * (m1 + m2)),
-            t8 * (-t4 + t5),
+            -(l1 * (-(t3 * t5) + g * cos_theta1 * (m1 + m2))),
+            -(t6 * t5),
             T::from_f64(0.0),
-            -T::from_f64(2.0) * t9 * theta2dot,
-            t8 * (t6 + t7),
-            t3 * (l1 * (-t6 - t7) - g * cos_theta2),
-            T::from_f64(2.0) * t9 * theta1dot,
+            -T::from_f64(2.0) * t7 * theta2dot,
+            t6 * t4,
+            -(t3 * (l1 * t4 + g * cos_theta2)),
+            T::from_f64(2.0) * t7 * theta1dot,
             T::from_f64(0.0),
         )
     }
@@ -181,6 +179,6 @@ pub mod double_pendulum {
         m2
             * (T::from_f64(0.5) * (t1 + theta2dot * theta2dot * (l2 * l2))
                 + theta1dot * theta2dot * l1 * l2 * t2) + T::from_f64(0.5) * t1 * m1
-            + g * (-(t0 * m1) + m2 * (-t0 - l2 * cos_theta2))
+            - g * (t0 * m1 + m2 * (t0 + l2 * cos_theta2))
     }
 }

@@ -58,6 +58,6 @@ pub mod hertz {
         let e_star = c[1];
         let c_dstar = c[4];
         let t0 = (T::from_f64(8.0) / (c_sum * (c_dstar * c_dstar * c_dstar))).sqrt();
-        T::from_f64(0.6666666666666666) * e_star * t0
+        T::from_f64(2.0 / 3.0) * e_star * t0
     }
 }

@@ -52,18 +52,18 @@ pub mod quasi_static {
         let m = p[3];
         let j = p[4];
         let (sin_theta, cos_theta) = theta.sin_cos();
-        let t0 = cos_theta - mu * sin_theta;
-        let t1 = -sin_theta - mu * cos_theta;
-        let t2 = f2 * sin_theta;
-        let t3 = xdd * m - f1 * sin_theta - f2 * cos_theta;
-        let t4 = ydd * m;
-        let t5 = -f1 * cos_theta;
-        let t6 = t2 + t4 + t5 - mu * t3;
-        let t7 = t0 * (t2 + t4 + t5) - t1 * t3;
-        let t8 = T::from_f64(1.0) / (mu * (cos_theta + t0) + sin_theta);
+        let t0 = f2 * sin_theta;
+        let t1 = ydd * m;
+        let t2 = -f1 * cos_theta;
+        let t3 = sin_theta + mu * cos_theta;
+        let t4 = -cos_theta + mu * sin_theta;
+        let t5 = -(xdd * m) + f1 * sin_theta + f2 * cos_theta;
+        let t6 = t0 + t1 + t2 + mu * t5;
+        let t7 = t4 * (t0 + t1 + t2) + t3 * t5;
+        let t8 = T::from_f64(1.0) / (mu * (cos_theta - t4) + sin_theta);
         let f_a = -t6 * t8;
-        let f_b = -t8 * t7;
-        let moment = t8 * (-(t6 * (-l_c + mu * r + l)) - t7 * (r * t1 + l_c * t0))
+        let f_b = t8 * t7;
+        let moment = -(t8 * (t6 * (-l_c + mu * r + l) + t7 * (r * t3 + l_c * t4)))
             + thdd * j;
         (f_a, f_b, moment)
     }
@@ -100,9 +100,9 @@ pub mod quasi_static {
         let m = p[3];
         let j = p[4];
         let (sin_theta, cos_theta) = theta.sin_cos();
-        let t0 = m * (xdd * cos_theta - ydd * sin_theta) - f2;
-        let f_a = t0;
-        let moment = thdd * j + (-l_c + mu * r + l) * t0;
+        let t0 = -(m * (xdd * cos_theta - ydd * sin_theta)) + f2;
+        let f_a = -t0;
+        let moment = thdd * j - (-l_c + mu * r + l) * t0;
         (f_a, moment)
     }
     /// Eq. 54: tip force f_b (N) from the normal balance and input moment about C (N m), one-point contact at the tip corner B.
@@ -140,7 +140,7 @@ pub mod quasi_static {
         let t0 = f1 * sin_theta + f2 * cos_theta - xdd * m;
         let f_b = t0;
         let moment = thdd * j
-            + (r * (-sin_theta - mu * cos_theta) + l_c * (cos_theta - mu * sin_theta))
+            - (r * (sin_theta + mu * cos_theta) + l_c * (-cos_theta + mu * sin_theta))
                 * t0;
         (f_b, moment)
     }
@@ -157,7 +157,7 @@ pub mod quasi_static {
     /// - `moment`: scalar
     ///
     /// # Cost
-    /// 9 add/sub, 13 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 7 `let`s.
+    /// 8 add/sub, 13 mul, 1 div, 0 sqrt, 1 transcendental, 0 branches; 7 `let`s.
     #[inline]
     pub fn whitney_tip<T: Real>(
         pose: &SVector<T, 2>,
@@ -171,14 +171,14 @@ pub mod quasi_static {
         let mu = q[0];
         let r = q[1];
         let (sin_theta, cos_theta) = theta.sin_cos();
-        let t0 = mu * cos_theta;
+        let t0 = sin_theta + mu * cos_theta;
         let t1 = mu * sin_theta - cos_theta;
-        let t2 = -fz - mu * fx;
-        let t3 = T::from_f64(1.0) / (mu * (cos_theta - t1) + sin_theta);
-        let t4 = -((-sin_theta - t0) * fx) + fz * t1;
-        let f_tip = -t4 * t3;
-        let f_edge = -t3 * t2;
-        let moment = t3 * (t4 * r * (sin_theta + t0) + t2 * (-(mu * r) - l));
+        let t2 = t0 * fx + fz * t1;
+        let t3 = fz + mu * fx;
+        let t4 = T::from_f64(1.0) / (mu * (cos_theta - t1) + sin_theta);
+        let f_tip = -t2 * t4;
+        let f_edge = t4 * t3;
+        let moment = t4 * (t2 * r * t0 + t3 * (mu * r + l));
         (f_tip, f_edge, moment)
     }
 }

@@ -42,7 +42,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 86 add/sub, 160 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 72 `let`s.
+    /// 78 add/sub, 151 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 66 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -76,128 +76,120 @@ pub mod rigid_peg {
         let t_b2_n = t[7];
         let t_b2_z = t[8];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t12) = t1.sin_cos();
-        let t5 = t4 * t4;
-        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
-        let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = t6 * t7;
-        let t9 = sin_gamma * sin_gamma;
-        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t11 = T::from_f64(0.5) * d_hole;
-        let t13 = cos_gamma * t10;
-        let t14 = t12 * t12;
-        let t15 = cos_gamma * cos_gamma;
-        let t16 = gammadot * gammadot;
-        let t17 = psidot * psidot;
-        let t18 = d_peg * d_peg;
-        let t19 = T::from_f64(0.75) * t18 + h * h;
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let t0 = sin_half_gamma * sin_half_gamma;
+        let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
+        let t1 = T::from_f64(1.0) / sin_gamma;
+        let t2 = e * t1;
+        let t3 = sin_gamma * sin_gamma;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let t4 = cos_gamma * cos_gamma;
+        let t5 = gammadot * gammadot;
+        let t6 = psidot * psidot;
+        let t7 = d_peg * d_peg;
+        let t8 = T::from_f64(0.75) * t7 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t20 = f_x * cos_psi;
-        let t21 = f_y * sin_psi;
-        let t22 = f_y * cos_psi;
-        let t23 = -f_x * sin_psi;
-        let t24 = sin_gamma * cos_gamma;
-        let t25 = f * t_k_n;
-        let t26 = T::from_f64(0.5) * t6;
-        let t27 = T::from_f64(0.08333333333333333) * t19;
-        let t28 = t2 * t3;
-        let t29 = t28 * d_hole;
-        let t30 = t29 * t7;
-        let t31 = t29 * t13;
-        let t32 = (-T::from_f64(2.0) * t31 * (d_hole + T::from_f64(2.0) * t31)).sqrt();
-        let t33 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
-        let t34 = t30.hypot(t11);
-        let t35 = T::from_f64(1.0) / t34;
-        let t36 = t32 * t35;
-        let t37 = d_peg * t4 * t12;
-        let t38 = t37 * t7;
-        let t39 = t13 * t6;
-        let t40 = t38 - T::from_f64(0.5) * t39;
-        let t41 = sin_gamma * t40;
-        let t42 = sin_gamma * t33;
-        let t43 = -t38 + T::from_f64(0.5) * t39;
-        let t44 = t15 / (sin_gamma * sin_gamma * sin_gamma);
-        let t45 = t44 * t6;
-        let t46 = t13 * t37;
-        let t47 = h - t8;
-        let t48 = t47 * t47;
-        let t49 = t30 * t35;
-        let t50 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t51 = cos_gamma * t50 + t41;
-        let t52 = cos_gamma * (t29 * t10 + t43);
-        let t53 = t11 + t52 - t42;
-        let t54 = -t50;
-        let t55 = sin_gamma
-            * (t54 + t7 * (T::from_f64(0.5) * (t14 - t5) * d_peg + t26) + t45
-                - T::from_f64(2.0) * t46) + T::from_f64(2.0) * cos_gamma * t40;
-        let t56 = -t33;
-        let t57 = d_hole
-            * (t28 * (-t7 - T::from_f64(2.0) * t44) - T::from_f64(0.5) * cos_gamma * t7)
-            + cos_gamma
-                * (t56
-                    + t7
-                        * (T::from_f64(0.5) * (-t14 + t5) * d_peg
-                            - T::from_f64(0.5) * t6) - t45 + T::from_f64(2.0) * t46)
-            - T::from_f64(2.0) * sin_gamma * t43;
-        let t58 = sin_gamma * t50;
-        let t59 = cos_gamma * (t33 + t50) - t30 + t41;
-        let t60 = sin_gamma * (t56 + t54);
-        let t61 = t7 * (t26 + t29 * cos_gamma) * t7;
-        let t62 = t11 + t52 + t60 + t61;
-        let t63 = t51 * t55;
-        let t64 = t57 * (d_hole + T::from_f64(2.0) * t52 - T::from_f64(2.0) * t42);
-        let t65 = T::from_f64(0.25) * t9 * (t39 - T::from_f64(2.0) * t38)
-            * (T::from_f64(2.0) * h - T::from_f64(2.0) * t8);
-        let t66 = t61 * t35;
-        let t67 = m * gammadot * psidot;
+        let t9 = f_x * cos_psi;
+        let t10 = f_y * sin_psi;
+        let t11 = f_x * sin_psi;
+        let t12 = sin_gamma * cos_gamma;
+        let t13 = -f_y * cos_psi;
+        let t14 = f * t_k_n;
+        let t15 = T::from_f64(0.5) * e;
+        let t16 = T::from_f64(1.0 / 12.0) * t8;
+        let t17 = sin_sum * sin_diff;
+        let t18 = t17 * d_hole;
+        let neg_a1 = t18 * t1;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t2;
+        let ob = neg_a1.hypot(half_d);
+        let t19 = T::from_f64(1.0) / ob;
+        let t20 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t21 = t20 * t1;
+        let t22 = sin_gamma * lever;
+        let t23 = t4 / (sin_gamma * sin_gamma * sin_gamma);
+        let t24 = h - t2;
+        let t25 = t24 * t24;
+        let t26 = neg_a1 * t19;
+        let t27 = t1 * (t15 + t18 * cos_gamma) * t1;
+        let t28 = -t27 * t19;
+        let t29 = lever - lever;
+        let t30 = sin_gamma * t29;
+        let t31 = m * gammadot * psidot;
+        let t32 = t1 * t1;
+        let t33 = cos_gamma * t32;
+        let t34 = t18 * t33;
+        let bb1 = (-T::from_f64(2.0) * t34 * (d_hole + T::from_f64(2.0) * t34)).sqrt();
+        let t35 = bb1 * t19;
+        let t36 = t33 * e;
+        let t37 = t21 - T::from_f64(0.5) * t36;
+        let t38 = sin_gamma * t37;
+        let t39 = cos_gamma * (t18 * t32 - t37);
+        let t40 = half_d + t39 - t22;
+        let t41 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
+            * (-t36 + T::from_f64(2.0) * t21);
+        let t42 = -(cos_gamma * lever) + t38;
+        let t43 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t15) + t23 * e
+            - T::from_f64(2.0) * t20 * t33;
+        let t44 = sin_gamma * t43 + T::from_f64(2.0) * cos_gamma * t37;
+        let t45 = cos_gamma * t29 - neg_a1 + t38;
+        let t46 = d_hole
+            * (t17 * (t1 + T::from_f64(2.0) * t23) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t43 - T::from_f64(2.0) * t38;
+        let t47 = half_d + t39 - t30 + t27;
+        let t48 = t42 * t44;
+        let t49 = (d_hole + T::from_f64(2.0) * t39 - T::from_f64(2.0) * t22) * t46;
         let a = Matrix5::new(
-            m * (t27 + t51 * t51 + t53 * t53),
+            m * (t16 + t42 * t42 + t40 * t40),
             T::from_f64(0.0),
-            f * (-(t_k_eta * t59) - t_k_z * (t52 + t60)),
-            f * (-(t_b1_eta * t59) - t_b1_z * t62),
-            f * (-(t_b2_eta * t59) - t_b2_z * t62),
+            -(f * (t_k_eta * t45 - t_k_z * (-t39 + t30))),
+            -(f * (t_b1_eta * t45 + t_b1_z * t47)),
+            -(f * (t_b2_eta * t45 + t_b2_z * t47)),
             T::from_f64(0.0),
-            m * (t9 * (T::from_f64(0.25) * t48 + t27) + T::from_f64(0.125) * t15 * t18),
-            T::from_f64(0.5) * t25 * d_hole,
-            f * (t_b1_eta * t32 - t61 * t_b1_n),
-            f * (-(t_b2_eta * t32) - t61 * t_b2_n),
-            m * t51,
+            m * (t3 * (T::from_f64(0.25) * t25 + t16) + T::from_f64(0.125) * t4 * t7),
+            T::from_f64(0.5) * t14 * d_hole,
+            f * (t_b1_eta * bb1 - t27 * t_b1_n),
+            -(f * (t_b2_eta * bb1 + t27 * t_b2_n)),
+            m * t42,
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) + t66,
-            -(f * t_b2_eta) + t66,
+            -(f * t_b1_eta) - t28,
+            -(f * t_b2_eta) - t28,
             T::from_f64(0.0),
-            t58 * m,
-            -t25,
-            -(f * t_b1_n) + t36,
-            -(f * t_b2_n) - t36,
-            m * t53,
+            -t22 * m,
+            -t14,
+            t35 - f * t_b1_n,
+            -(f * t_b2_n) - t35,
+            m * t40,
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            -(f * t_b1_z) + t49,
-            -(f * t_b2_z) + t49,
+            -(f * t_b1_z) + t26,
+            -(f * t_b2_z) + t26,
         );
         let b = Vector5::new(
             m_gamma
-                + m
-                    * (t17 * (-(T::from_f64(0.125) * t18) + t27) * t24
+                - m
+                    * (-(t6 * (-(T::from_f64(0.125) * t7) + t16) * t12)
                         + T::from_f64(0.5)
-                            * (t16 * (T::from_f64(2.0) * t63 + t64)
-                                + t17 * (T::from_f64(0.5) * t24 * t48 + t65)
-                                - t16 * (T::from_f64(4.0) * t63 + T::from_f64(2.0) * t64))
-                        - g * t53) + t51 * (t20 + t21) + f_z * t53,
-            m_psi + t58 * (t22 + t23)
-                - t67
-                    * (t24
-                        * (T::from_f64(0.5) * t48 - T::from_f64(0.25) * t18
-                            + T::from_f64(0.16666666666666666) * t19) + t65),
-            t20 + t21 - m * (t55 * t16 - t58 * t17),
-            t22 + t23 - t67 * t51 * (T::from_f64(1.0) + T::from_f64(1.0)),
-            f_z - m * g - m * t16 * t57,
+                            * (-(t5 * (T::from_f64(2.0) * t48 - t49)
+                                + t6
+                                    * (T::from_f64(0.5) * t12 * t25 - T::from_f64(0.25) * t41))
+                                + t5 * (T::from_f64(4.0) * t48 - T::from_f64(2.0) * t49))
+                        + g * t40) + t42 * (t9 + t10) + f_z * t40,
+            m_psi + t22 * (t13 + t11)
+                + t31
+                    * (-(t12
+                        * (T::from_f64(0.5) * t25 - T::from_f64(0.25) * t7
+                            + T::from_f64(1.0 / 6.0) * t8)) + T::from_f64(0.25) * t41),
+            t9 + t10 - m * (t44 * t5 + t22 * t6),
+            -t13 - t11 - t31 * t42 * (T::from_f64(1.0) + T::from_f64(1.0)),
+            f_z - m * g + m * t5 * t46,
         );
         (a, b)
     }
@@ -216,7 +208,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 89 add/sub, 161 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 72 `let`s.
+    /// 81 add/sub, 153 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 66 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -251,134 +243,126 @@ pub mod rigid_peg {
         let t_b2_n = t[7];
         let t_b2_z = t[8];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t12) = t1.sin_cos();
-        let t5 = t4 * t4;
-        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
-        let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = t6 * t7;
-        let t9 = sin_gamma * sin_gamma;
-        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t11 = T::from_f64(0.5) * d_hole;
-        let t13 = cos_gamma * t10;
-        let t14 = t12 * t12;
-        let t15 = cos_gamma * cos_gamma;
-        let t16 = gammadot * gammadot;
-        let t17 = psidot * psidot;
-        let t18 = d_peg * d_peg;
-        let t19 = T::from_f64(0.75) * t18 + h * h;
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let t0 = sin_half_gamma * sin_half_gamma;
+        let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
+        let t1 = T::from_f64(1.0) / sin_gamma;
+        let t2 = e * t1;
+        let t3 = sin_gamma * sin_gamma;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let t4 = cos_gamma * cos_gamma;
+        let t5 = gammadot * gammadot;
+        let t6 = psidot * psidot;
+        let t7 = d_peg * d_peg;
+        let t8 = T::from_f64(0.75) * t7 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t20 = f_x * cos_psi;
-        let t21 = f_y * sin_psi;
-        let t22 = f_y * cos_psi;
-        let t23 = -f_x * sin_psi;
-        let t24 = sin_gamma * cos_gamma;
-        let t25 = f * t_k_n;
-        let t26 = T::from_f64(0.5) * t6;
-        let t27 = T::from_f64(0.08333333333333333) * t19;
-        let t28 = t2 * t3;
-        let t29 = t28 * d_hole;
-        let t30 = t29 * t7;
-        let t31 = t29 * t13;
-        let t32 = (-T::from_f64(2.0) * t31 * (d_hole + T::from_f64(2.0) * t31)).sqrt();
-        let t33 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
-        let t34 = t30.hypot(t11);
-        let t35 = T::from_f64(1.0) / t34;
-        let t36 = t32 * t35;
-        let t37 = d_peg * t4 * t12;
-        let t38 = t37 * t7;
-        let t39 = t13 * t6;
-        let t40 = t38 - T::from_f64(0.5) * t39;
-        let t41 = sin_gamma * t40;
-        let t42 = sin_gamma * t33;
-        let t43 = -t38 + T::from_f64(0.5) * t39;
-        let t44 = t15 / (sin_gamma * sin_gamma * sin_gamma);
-        let t45 = t44 * t6;
-        let t46 = t13 * t37;
-        let t47 = h - t8;
-        let t48 = t47 * t47;
-        let t49 = t30 * t35;
-        let t50 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t51 = cos_gamma * t50 + t41;
-        let t52 = cos_gamma * (t29 * t10 + t43);
-        let t53 = t11 + t52 - t42;
-        let t54 = -t50;
-        let t55 = sin_gamma
-            * (t54 + t7 * (T::from_f64(0.5) * (t14 - t5) * d_peg + t26) + t45
-                - T::from_f64(2.0) * t46) + T::from_f64(2.0) * cos_gamma * t40;
-        let t56 = -t33;
-        let t57 = d_hole
-            * (t28 * (-t7 - T::from_f64(2.0) * t44) - T::from_f64(0.5) * cos_gamma * t7)
-            + cos_gamma
-                * (t56
-                    + t7
-                        * (T::from_f64(0.5) * (-t14 + t5) * d_peg
-                            - T::from_f64(0.5) * t6) - t45 + T::from_f64(2.0) * t46)
-            - T::from_f64(2.0) * sin_gamma * t43;
-        let t58 = sin_gamma * t50;
-        let t59 = cos_gamma * (t33 + t50) - t30 + t41;
-        let t60 = sin_gamma * (t56 + t54);
-        let t61 = t7 * (t26 + t29 * cos_gamma) * t7;
-        let t62 = t11 + t52 + t60 + t61;
-        let t63 = t51 * t55;
-        let t64 = t57 * (d_hole + T::from_f64(2.0) * t52 - T::from_f64(2.0) * t42);
-        let t65 = T::from_f64(0.25) * t9 * (t39 - T::from_f64(2.0) * t38)
-            * (T::from_f64(2.0) * h - T::from_f64(2.0) * t8);
-        let t66 = t61 * t35;
-        let t67 = gammadot * psidot;
+        let t9 = f_x * cos_psi;
+        let t10 = f_y * sin_psi;
+        let t11 = f_y * cos_psi;
+        let t12 = f_x * sin_psi;
+        let t13 = sin_gamma * cos_gamma;
+        let t14 = f * t_k_n;
+        let t15 = T::from_f64(0.5) * e;
+        let t16 = T::from_f64(1.0 / 12.0) * t8;
+        let t17 = sin_sum * sin_diff;
+        let t18 = t17 * d_hole;
+        let neg_a1 = t18 * t1;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t2;
+        let ob = neg_a1.hypot(half_d);
+        let t19 = T::from_f64(1.0) / ob;
+        let t20 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t21 = t20 * t1;
+        let t22 = sin_gamma * lever;
+        let t23 = t4 / (sin_gamma * sin_gamma * sin_gamma);
+        let t24 = h - t2;
+        let t25 = t24 * t24;
+        let t26 = neg_a1 * t19;
+        let t27 = t1 * (t15 + t18 * cos_gamma) * t1;
+        let t28 = -t27 * t19;
+        let t29 = lever - lever;
+        let t30 = sin_gamma * t29;
+        let t31 = t1 * t1;
+        let t32 = cos_gamma * t31;
+        let t33 = t18 * t32;
+        let bb1 = (-T::from_f64(2.0) * t33 * (d_hole + T::from_f64(2.0) * t33)).sqrt();
+        let t34 = bb1 * t19;
+        let t35 = t32 * e;
+        let t36 = t21 - T::from_f64(0.5) * t35;
+        let t37 = sin_gamma * t36;
+        let t38 = cos_gamma * (t18 * t31 - t36);
+        let t39 = half_d + t38 - t22;
+        let t40 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
+            * (-t35 + T::from_f64(2.0) * t21);
+        let t41 = -(cos_gamma * lever) + t37;
+        let t42 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t15) + t23 * e
+            - T::from_f64(2.0) * t20 * t32;
+        let t43 = sin_gamma * t42 + T::from_f64(2.0) * cos_gamma * t36;
+        let t44 = cos_gamma * t29 - neg_a1 + t37;
+        let t45 = d_hole
+            * (t17 * (t1 + T::from_f64(2.0) * t23) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t42 - T::from_f64(2.0) * t37;
+        let t46 = half_d + t38 - t30 + t27;
+        let t47 = t41 * t43;
+        let t48 = (d_hole + T::from_f64(2.0) * t38 - T::from_f64(2.0) * t22) * t45;
+        let t49 = gammadot * psidot;
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
-            f * (-(t_k_eta * t59) - t_k_z * (t52 + t60)),
-            f * (-(t_b1_eta * t59) - t_b1_z * t62),
-            f * (-(t_b2_eta * t59) - t_b2_z * t62),
+            -(f * (t_k_eta * t44 - t_k_z * (-t38 + t30))),
+            -(f * (t_b1_eta * t44 + t_b1_z * t46)),
+            -(f * (t_b2_eta * t44 + t_b2_z * t46)),
             T::from_f64(0.0),
             -T::from_f64(1.0),
-            T::from_f64(0.5) * t25 * d_hole,
-            f * (t_b1_eta * t32 - t61 * t_b1_n),
-            f * (-(t_b2_eta * t32) - t61 * t_b2_n),
+            T::from_f64(0.5) * t14 * d_hole,
+            f * (t_b1_eta * bb1 - t27 * t_b1_n),
+            -(f * (t_b2_eta * bb1 + t27 * t_b2_n)),
             T::from_f64(0.0),
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) + t66,
-            -(f * t_b2_eta) + t66,
+            -(f * t_b1_eta) - t28,
+            -(f * t_b2_eta) - t28,
             T::from_f64(0.0),
             T::from_f64(0.0),
-            -t25,
-            -(f * t_b1_n) + t36,
-            -(f * t_b2_n) - t36,
+            -t14,
+            t34 - f * t_b1_n,
+            -(f * t_b2_n) - t34,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            -(f * t_b1_z) + t49,
-            -(f * t_b2_z) + t49,
+            -(f * t_b1_z) + t26,
+            -(f * t_b2_z) + t26,
         );
         let b = Vector5::new(
-            m
-                * (t17 * (-(T::from_f64(0.125) * t18) + t27) * t24
+            -(m
+                * (t6 * (T::from_f64(0.125) * t7 - T::from_f64(1.0 / 12.0) * t8) * t13
                     + T::from_f64(0.5)
-                        * (t16 * (T::from_f64(2.0) * t63 + t64)
-                            + t17 * (T::from_f64(0.5) * t24 * t48 + t65)
-                            - t16 * (T::from_f64(4.0) * t63 + T::from_f64(2.0) * t64))
-                    - g * t53 - gammaddot * (t27 + t51 * t51 + t53 * t53))
-                + t51 * (t20 + t21) + f_z * t53,
+                        * (-(t5 * (T::from_f64(2.0) * t47 - t48)
+                            + t6
+                                * (T::from_f64(0.5) * t13 * t25 - T::from_f64(0.25) * t40))
+                            + t5 * (T::from_f64(4.0) * t47 - T::from_f64(2.0) * t48))
+                    + g * t39 + gammaddot * (t16 + t41 * t41 + t39 * t39)))
+                + t41 * (t9 + t10) + f_z * t39,
             m
-                * (-(t67
-                    * (t24
-                        * (T::from_f64(0.5) * t48 - T::from_f64(0.25) * t18
-                            + T::from_f64(0.16666666666666666) * t19) + t65))
+                * (t49
+                    * (-(t13
+                        * (T::from_f64(0.5) * t25 - T::from_f64(0.25) * t7
+                            + T::from_f64(1.0 / 6.0) * t8)) + T::from_f64(0.25) * t40)
                     - psiddot
-                        * (t9 * (T::from_f64(0.25) * t48 + t27)
-                            + T::from_f64(0.125) * t15 * t18)) + t58 * (t22 + t23),
-            t20 + t21 - m * (t55 * t16 + gammaddot * t51 - t58 * t17),
-            t22 + t23
-                - m
-                    * (t67 * (t51 * (T::from_f64(1.0) + T::from_f64(1.0)))
-                        + t58 * psiddot),
-            f_z - m * g - m * (t16 * t57 + gammaddot * t53),
+                        * (t3 * (T::from_f64(0.25) * t25 + t16)
+                            + T::from_f64(0.125) * t4 * t7)) + t22 * (-t11 + t12),
+            t9 + t10 - m * (t43 * t5 + gammaddot * t41 + t22 * t6),
+            t11 - t12
+                + m
+                    * (-(t49 * ((T::from_f64(1.0) + T::from_f64(1.0)) * t41))
+                        + t22 * psiddot),
+            f_z - m * g - m * (-(t5 * t45) + gammaddot * t39),
         );
         (a, b)
     }
@@ -392,7 +376,7 @@ pub mod rigid_peg {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 24 add/sub, 45 mul, 2 div, 1 sqrt, 4 transcendental, 0 branches; 29 `let`s.
+    /// 22 add/sub, 39 mul, 1 div, 1 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 4>,
@@ -406,45 +390,42 @@ pub mod rigid_peg {
         let h = p[2];
         let gamma0 = p[6];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t9) = t1.sin_cos();
-        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
-        let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = t5 * t6;
-        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t10 = cos_gamma * t8;
-        let t11 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
-        let t12 = t10 * t5;
-        let t13 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7;
-        let t14 = sin_gamma * t13;
-        let t15 = d_hole * t2 * t3;
-        let t16 = t15 * t10;
-        let t17 = (-T::from_f64(2.0) * t16 * (d_hole + T::from_f64(2.0) * t16)).sqrt();
-        let t18 = d_peg * t4 * (t6 * t9);
-        let t19 = psidot * t17;
-        let t20 = T::from_f64(0.5) * d_hole
-            + cos_gamma * (t15 * t8 + -t18 + T::from_f64(0.5) * t12) - sin_gamma * t11;
-        let t21 = -t14;
-        let t22 = -(T::from_f64(0.5) * d_hole) + t21;
-        let t23 = gammadot
-            * (cos_gamma * t13 + sin_gamma * (t18 - T::from_f64(0.5) * t12)
-                - (t15 * t6 - cos_gamma * t11));
-        let t24 = t6 * t6 * (T::from_f64(0.5) * t5 + t15 * cos_gamma) + t21;
-        let t25 = psidot * (t14 + t24);
-        let t26 = gammadot * (t20 + t24);
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let e = d_hole - d_peg
+            + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
+        let t0 = T::from_f64(1.0) / sin_gamma;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t0;
+        let t1 = sin_gamma * lever;
+        let t2 = -cos_gamma * lever;
+        let t3 = t0 * t0;
+        let t4 = cos_gamma * t3;
+        let t5 = d_hole * sin_sum * sin_diff;
+        let t6 = half_d - t1;
+        let t7 = t0 * t0 * (T::from_f64(0.5) * e + t5 * cos_gamma) + t1;
+        let t8 = -psidot * (t1 - t7);
+        let t9 = t5 * t4;
+        let bb1 = (-T::from_f64(2.0) * t9 * (d_hole + T::from_f64(2.0) * t9)).sqrt();
+        let t10 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+            - T::from_f64(0.5) * t4 * e;
+        let t11 = psidot * bb1;
+        let t12 = half_d + cos_gamma * (t5 * t3 - t10) - t1;
+        let t13 = gammadot * (-(t2 + sin_gamma * t10) + t5 * t0 + t2);
+        let t14 = gammadot * (t12 + t7);
         Matrix3::new(
-            t23,
-            psidot * (t14 + t22),
-            gammadot * (t20 + t22),
-            t23 - t19,
-            t25,
-            t26,
-            t23 + t19,
-            t25,
-            t26,
+            -t13,
+            -psidot * (t1 + t6),
+            gammadot * (t12 - t6),
+            -t13 - t11,
+            t8,
+            t14,
+            t11 - t13,
+            t8,
+            t14,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -458,7 +439,7 @@ pub mod rigid_peg {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 23 add/sub, 52 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 26 `let`s.
+    /// 21 add/sub, 48 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -471,35 +452,35 @@ pub mod rigid_peg {
         let g = p[4];
         let gamma0 = p[6];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t9) = t1.sin_cos();
-        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
-        let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = t5 * t6;
-        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t10 = gammadot * gammadot;
-        let t11 = psidot * psidot;
-        let t12 = d_peg * d_peg;
-        let t13 = sin_gamma * sin_gamma * t11;
-        let t14 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
-        let t15 = h - t7;
-        let t16 = d_hole * t2 * t3;
-        let t17 = d_peg * t4 * (t6 * t9);
-        let t18 = T::from_f64(0.0625) * (cos_gamma * cos_gamma) * t11 * t12;
-        let t19 = T::from_f64(0.041666666666666664) * (T::from_f64(0.75) * t12 + h * h)
-            * (t10 + t13);
-        let t20 = cos_gamma * t5 * t8;
-        let t21 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7)
-            + sin_gamma * (t17 - T::from_f64(0.5) * t20);
-        let t22 = T::from_f64(0.5) * d_hole
-            + cos_gamma * (t16 * t8 + -t17 + T::from_f64(0.5) * t20) - sin_gamma * t14;
-        let t23 = T::from_f64(0.5)
-            * (t10 * (t21 * t21 + t22 * t22) + T::from_f64(0.25) * t13 * (t15 * t15));
-        let kinetic = m * (t23 + t18 + t19);
-        let total = m * (t23 + t18 + t19 + g * (-(t16 * t6) + cos_gamma * t14));
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let e = d_hole - d_peg
+            + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
+        let t0 = T::from_f64(1.0) / sin_gamma;
+        let t1 = e * t0;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let t2 = gammadot * gammadot;
+        let t3 = psidot * psidot;
+        let t4 = d_peg * d_peg;
+        let t5 = sin_gamma * sin_gamma * t3;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t1;
+        let t6 = -cos_gamma * lever;
+        let t7 = h - t1;
+        let t8 = t0 * t0;
+        let t9 = d_hole * sin_sum * sin_diff;
+        let t10 = T::from_f64(0.0625) * (cos_gamma * cos_gamma) * t3 * t4;
+        let t11 = T::from_f64(1.0 / 24.0) * (T::from_f64(0.75) * t4 + h * h) * (t2 + t5);
+        let t12 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+            - T::from_f64(0.5) * cos_gamma * e * t8;
+        let t13 = half_d + cos_gamma * (t9 * t8 - t12) - sin_gamma * lever;
+        let t14 = t6 + sin_gamma * t12;
+        let t15 = T::from_f64(0.5)
+            * (t2 * (t14 * t14 + t13 * t13) + T::from_f64(0.25) * t5 * (t7 * t7));
+        let kinetic = m * (t15 + t10 + t11);
+        let total = m * (t15 + t10 + t11 - g * (t9 * t0 + t6));
         (kinetic, total)
     }
     /// Planar geometry at γ (m): a1, a2 (paper (1)), S1, S2 (2), b = BB1, sin τ, cos τ, η_C, z_C (3), KL, BL (5), η_L, z_L (4b).
@@ -512,7 +493,7 @@ pub mod rigid_peg {
     /// - `geo`: vector of 13
     ///
     /// # Cost
-    /// 10 add/sub, 35 mul, 4 div, 1 sqrt, 5 transcendental, 0 branches; 20 `let`s.
+    /// 10 add/sub, 35 mul, 3 div, 1 sqrt, 5 transcendental, 0 branches; 21 `let`s.
     #[inline]
     pub fn geometry<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> SVector<T, 13> {
         let gamma = x[0];
@@ -521,43 +502,45 @@ pub mod rigid_peg {
         let h = p[2];
         let gamma0 = p[6];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let t4 = t1.sin();
-        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
-        let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = t5 * t6;
-        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t9 = T::from_f64(0.5) * t7;
-        let t10 = d_hole * t2 * t3;
-        let t11 = t10 * t6;
-        let t12 = t10 * cos_gamma;
-        let t13 = -t11;
-        let t14 = t12 * t8;
-        let t15 = (-T::from_f64(2.0) * t14 * (d_hole + T::from_f64(2.0) * t14)).sqrt();
-        let t16 = t6 * (T::from_f64(0.5) * t5 + t12) * t6;
-        let t17 = t16.hypot(t11);
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let sin_half_gamma = half_gamma.sin();
+        let e = d_hole - d_peg
+            + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
+        let t0 = T::from_f64(1.0) / sin_gamma;
+        let t1 = e * t0;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t1;
+        let t2 = t0 * t0;
+        let t3 = d_hole * sin_sum * sin_diff;
+        let neg_a1 = t3 * t0;
+        let t4 = t3 * cos_gamma;
+        let a2 = T::from_f64(0.5) * t1;
+        let s1 = t0 * (T::from_f64(0.5) * e + t4) * t0;
+        let s2 = t0 * (T::from_f64(0.5) * cos_gamma * e + t3) * t0;
+        let t5 = s1.hypot(neg_a1);
+        let t6 = t4 * t2;
+        let bb1 = (-T::from_f64(2.0) * t6 * (d_hole + T::from_f64(2.0) * t6)).sqrt();
         SMatrix::<
             T,
             13,
             1,
         >::from_row_slice(
             &[
-                t13,
-                t9,
-                t16,
-                t6 * (T::from_f64(0.5) * cos_gamma * t5 + t10) * t6,
-                t15,
-                T::from_f64(2.0) * t15 / d_hole,
-                T::from_f64(2.0) * t16 / d_hole,
-                sin_gamma * (-(T::from_f64(0.5) * h) + t9),
-                t13 + cos_gamma * (T::from_f64(0.5) * h - T::from_f64(0.5) * t7),
-                -T::from_f64(2.0) * t10 * t8,
-                T::from_f64(2.0) * t17,
-                -t16,
-                -T::from_f64(2.0) * t11,
+                -neg_a1,
+                a2,
+                s1,
+                s2,
+                bb1,
+                T::from_f64(2.0) * bb1 / d_hole,
+                T::from_f64(2.0) * s1 / d_hole,
+                sin_gamma * (-(T::from_f64(0.5) * h) + a2),
+                cos_gamma * lever - neg_a1,
+                -T::from_f64(2.0) * t3 * t2,
+                T::from_f64(2.0) * t5,
+                -s1,
+                -T::from_f64(2.0) * neg_a1,
             ],
         )
     }

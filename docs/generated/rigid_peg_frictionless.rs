@@ -29,7 +29,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 65 add/sub, 130 mul, 5 div, 1 sqrt, 6 transcendental, 0 branches; 63 `let`s.
+    /// 58 add/sub, 121 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -52,119 +52,113 @@ pub mod rigid_peg_frictionless {
         let f_y = loads[3];
         let f_z = loads[4];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t12) = t1.sin_cos();
-        let t5 = t4 * t4;
-        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
-        let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = t6 * t7;
-        let t9 = sin_gamma * sin_gamma;
-        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t11 = T::from_f64(0.5) * d_hole;
-        let t13 = cos_gamma * t10;
-        let t14 = t12 * t12;
-        let t15 = cos_gamma * cos_gamma;
-        let t16 = gammadot * gammadot;
-        let t17 = psidot * psidot;
-        let t18 = d_peg * d_peg;
-        let t19 = T::from_f64(0.75) * t18 + h * h;
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let t0 = sin_half_gamma * sin_half_gamma;
+        let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
+        let t1 = T::from_f64(1.0) / sin_gamma;
+        let t2 = e * t1;
+        let t3 = sin_gamma * sin_gamma;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let t4 = cos_gamma * cos_gamma;
+        let t5 = gammadot * gammadot;
+        let t6 = psidot * psidot;
+        let t7 = d_peg * d_peg;
+        let t8 = T::from_f64(0.75) * t7 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t20 = f_x * cos_psi;
-        let t21 = f_y * sin_psi;
-        let t22 = f_y * cos_psi;
-        let t23 = -f_x * sin_psi;
-        let t24 = sin_gamma * cos_gamma;
-        let t25 = T::from_f64(0.5) * t6;
-        let t26 = T::from_f64(0.08333333333333333) * t19;
-        let t27 = t2 * t3;
-        let t28 = t27 * d_hole;
-        let t29 = t13 * t28;
-        let t30 = (-T::from_f64(2.0) * t29 * (d_hole + T::from_f64(2.0) * t29)).sqrt();
-        let t31 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
-        let t32 = (t28 * t7).hypot(t11);
-        let t33 = t30 / t32;
-        let t34 = d_peg * t4 * t12;
-        let t35 = t34 * t7;
-        let t36 = t13 * t6;
-        let t37 = t35 - T::from_f64(0.5) * t36;
-        let t38 = sin_gamma * t31;
-        let t39 = -t35 + T::from_f64(0.5) * t36;
-        let t40 = t15 / (sin_gamma * sin_gamma * sin_gamma);
-        let t41 = t40 * t6;
-        let t42 = t13 * t34;
-        let t43 = h - t8;
-        let t44 = t43 * t43;
-        let t45 = t7 / t32;
-        let t46 = t45 * t28;
-        let t47 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t48 = cos_gamma * t47 + sin_gamma * t37;
-        let t49 = cos_gamma * (t28 * t10 + t39);
-        let t50 = t11 + t49 - t38;
-        let t51 = sin_gamma
-            * (-t47 + t7 * (T::from_f64(0.5) * (t14 - t5) * d_peg + t25) + t41
-                - T::from_f64(2.0) * t42) + T::from_f64(2.0) * cos_gamma * t37;
-        let t52 = d_hole
-            * (t27 * (-t7 - T::from_f64(2.0) * t40) - T::from_f64(0.5) * cos_gamma * t7)
-            + cos_gamma
-                * (-t31
-                    + t7
-                        * (T::from_f64(0.5) * (-t14 + t5) * d_peg
-                            - T::from_f64(0.5) * t6) - t41 + T::from_f64(2.0) * t42)
-            - T::from_f64(2.0) * sin_gamma * t39;
-        let t53 = sin_gamma * t47;
-        let t54 = t48 * t51;
-        let t55 = t52 * (d_hole + T::from_f64(2.0) * t49 - T::from_f64(2.0) * t38);
-        let t56 = T::from_f64(0.25) * t9 * (t36 - T::from_f64(2.0) * t35)
-            * (T::from_f64(2.0) * h - T::from_f64(2.0) * t8);
-        let t57 = t7 * (t25 + t28 * cos_gamma) * t45;
-        let t58 = m * gammadot * psidot;
+        let t9 = f_x * cos_psi;
+        let t10 = f_y * sin_psi;
+        let t11 = f_x * sin_psi;
+        let t12 = sin_gamma * cos_gamma;
+        let t13 = -f_y * cos_psi;
+        let t14 = T::from_f64(0.5) * e;
+        let t15 = T::from_f64(1.0 / 12.0) * t8;
+        let t16 = sin_sum * sin_diff;
+        let t17 = t16 * d_hole;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t2;
+        let ob = (t17 * t1).hypot(half_d);
+        let t18 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t19 = t18 * t1;
+        let t20 = sin_gamma * lever;
+        let t21 = t4 / (sin_gamma * sin_gamma * sin_gamma);
+        let t22 = h - t2;
+        let t23 = t22 * t22;
+        let t24 = t1 / ob;
+        let t25 = t24 * t17;
+        let t26 = t1 * (t14 + t17 * cos_gamma) * t24;
+        let t27 = m * gammadot * psidot;
+        let t28 = t1 * t1;
+        let t29 = cos_gamma * t28;
+        let t30 = t17 * t29;
+        let bb1 = (-T::from_f64(2.0) * t30 * (d_hole + T::from_f64(2.0) * t30)).sqrt();
+        let t31 = bb1 / ob;
+        let t32 = t29 * e;
+        let t33 = t19 - T::from_f64(0.5) * t32;
+        let t34 = sin_gamma * t33;
+        let t35 = cos_gamma * (t17 * t28 - t33);
+        let t36 = half_d + t35 - t20;
+        let t37 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
+            * (-t32 + T::from_f64(2.0) * t19);
+        let t38 = -(cos_gamma * lever) + t34;
+        let t39 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t14) + t21 * e
+            - T::from_f64(2.0) * t18 * t29;
+        let t40 = sin_gamma * t39 + T::from_f64(2.0) * cos_gamma * t33;
+        let t41 = d_hole
+            * (t16 * (t1 + T::from_f64(2.0) * t21) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t39 - T::from_f64(2.0) * t34;
+        let t42 = t38 * t40;
+        let t43 = (d_hole + T::from_f64(2.0) * t35 - T::from_f64(2.0) * t20) * t41;
         let a = Matrix5::new(
-            m * (t26 + t48 * t48 + t50 * t50),
+            m * (t15 + t38 * t38 + t36 * t36),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * (t9 * (T::from_f64(0.25) * t44 + t26) + T::from_f64(0.125) * t15 * t18),
+            m * (t3 * (T::from_f64(0.25) * t23 + t15) + T::from_f64(0.125) * t4 * t7),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * t48,
+            m * t38,
             T::from_f64(0.0),
             -cos_gamma,
-            t57,
-            t57,
+            t26,
+            t26,
             T::from_f64(0.0),
-            t53 * m,
+            -t20 * m,
             T::from_f64(0.0),
-            t33,
-            -t33,
-            m * t50,
+            t31,
+            -t31,
+            m * t36,
             T::from_f64(0.0),
             -sin_gamma,
-            t46,
-            t46,
+            t25,
+            t25,
         );
         let b = Vector5::new(
             m_gamma
-                + m
-                    * (t17 * (-(T::from_f64(0.125) * t18) + t26) * t24
+                - m
+                    * (-(t6 * (-(T::from_f64(0.125) * t7) + t15) * t12)
                         + T::from_f64(0.5)
-                            * (t16 * (T::from_f64(2.0) * t54 + t55)
-                                + t17 * (T::from_f64(0.5) * t24 * t44 + t56)
-                                - t16 * (T::from_f64(4.0) * t54 + T::from_f64(2.0) * t55))
-                        - g * t50) + t48 * (t20 + t21) + f_z * t50,
-            m_psi + t53 * (t22 + t23)
-                - t58
-                    * (t24
-                        * (T::from_f64(0.5) * t44 - T::from_f64(0.25) * t18
-                            + T::from_f64(0.16666666666666666) * t19) + t56),
-            t20 + t21 - m * (t51 * t16 - t53 * t17),
-            t22 + t23 - t58 * t48 * (T::from_f64(1.0) + T::from_f64(1.0)),
-            f_z - m * g - m * t16 * t52,
+                            * (-(t5 * (T::from_f64(2.0) * t42 - t43)
+                                + t6
+                                    * (T::from_f64(0.5) * t12 * t23 - T::from_f64(0.25) * t37))
+                                + t5 * (T::from_f64(4.0) * t42 - T::from_f64(2.0) * t43))
+                        + g * t36) + t38 * (t9 + t10) + f_z * t36,
+            m_psi + t20 * (t13 + t11)
+                + t27
+                    * (-(t12
+                        * (T::from_f64(0.5) * t23 - T::from_f64(0.25) * t7
+                            + T::from_f64(1.0 / 6.0) * t8)) + T::from_f64(0.25) * t37),
+            t9 + t10 - m * (t40 * t5 + t20 * t6),
+            -t13 - t11 - t27 * t38 * (T::from_f64(1.0) + T::from_f64(1.0)),
+            f_z - m * g + m * t5 * t41,
         );
         (a, b)
     }
@@ -182,7 +176,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 68 add/sub, 131 mul, 5 div, 1 sqrt, 6 transcendental, 0 branches; 63 `let`s.
+    /// 61 add/sub, 123 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -206,75 +200,68 @@ pub mod rigid_peg_frictionless {
         let f_y = loads[3];
         let f_z = loads[4];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t12) = t1.sin_cos();
-        let t5 = t4 * t4;
-        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
-        let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = t6 * t7;
-        let t9 = sin_gamma * sin_gamma;
-        let t10 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t11 = T::from_f64(0.5) * d_hole;
-        let t13 = cos_gamma * t10;
-        let t14 = t12 * t12;
-        let t15 = cos_gamma * cos_gamma;
-        let t16 = gammadot * gammadot;
-        let t17 = psidot * psidot;
-        let t18 = d_peg * d_peg;
-        let t19 = T::from_f64(0.75) * t18 + h * h;
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let t0 = sin_half_gamma * sin_half_gamma;
+        let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
+        let t1 = T::from_f64(1.0) / sin_gamma;
+        let t2 = e * t1;
+        let t3 = sin_gamma * sin_gamma;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let t4 = cos_gamma * cos_gamma;
+        let t5 = gammadot * gammadot;
+        let t6 = psidot * psidot;
+        let t7 = d_peg * d_peg;
+        let t8 = T::from_f64(0.75) * t7 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t20 = f_x * cos_psi;
-        let t21 = f_y * sin_psi;
-        let t22 = f_y * cos_psi;
-        let t23 = -f_x * sin_psi;
-        let t24 = sin_gamma * cos_gamma;
-        let t25 = T::from_f64(0.5) * t6;
-        let t26 = T::from_f64(0.08333333333333333) * t19;
-        let t27 = t2 * t3;
-        let t28 = t27 * d_hole;
-        let t29 = t13 * t28;
-        let t30 = (-T::from_f64(2.0) * t29 * (d_hole + T::from_f64(2.0) * t29)).sqrt();
-        let t31 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
-        let t32 = (t28 * t7).hypot(t11);
-        let t33 = t30 / t32;
-        let t34 = d_peg * t4 * t12;
-        let t35 = t34 * t7;
-        let t36 = t13 * t6;
-        let t37 = t35 - T::from_f64(0.5) * t36;
-        let t38 = sin_gamma * t31;
-        let t39 = -t35 + T::from_f64(0.5) * t36;
-        let t40 = t15 / (sin_gamma * sin_gamma * sin_gamma);
-        let t41 = t40 * t6;
-        let t42 = t13 * t34;
-        let t43 = h - t8;
-        let t44 = t43 * t43;
-        let t45 = t7 / t32;
-        let t46 = t45 * t28;
-        let t47 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t48 = cos_gamma * t47 + sin_gamma * t37;
-        let t49 = cos_gamma * (t28 * t10 + t39);
-        let t50 = t11 + t49 - t38;
-        let t51 = sin_gamma
-            * (-t47 + t7 * (T::from_f64(0.5) * (t14 - t5) * d_peg + t25) + t41
-                - T::from_f64(2.0) * t42) + T::from_f64(2.0) * cos_gamma * t37;
-        let t52 = d_hole
-            * (t27 * (-t7 - T::from_f64(2.0) * t40) - T::from_f64(0.5) * cos_gamma * t7)
-            + cos_gamma
-                * (-t31
-                    + t7
-                        * (T::from_f64(0.5) * (-t14 + t5) * d_peg
-                            - T::from_f64(0.5) * t6) - t41 + T::from_f64(2.0) * t42)
-            - T::from_f64(2.0) * sin_gamma * t39;
-        let t53 = sin_gamma * t47;
-        let t54 = t48 * t51;
-        let t55 = t52 * (d_hole + T::from_f64(2.0) * t49 - T::from_f64(2.0) * t38);
-        let t56 = T::from_f64(0.25) * t9 * (t36 - T::from_f64(2.0) * t35)
-            * (T::from_f64(2.0) * h - T::from_f64(2.0) * t8);
-        let t57 = t7 * (t25 + t28 * cos_gamma) * t45;
-        let t58 = gammadot * psidot;
+        let t9 = f_x * cos_psi;
+        let t10 = f_y * sin_psi;
+        let t11 = f_y * cos_psi;
+        let t12 = f_x * sin_psi;
+        let t13 = sin_gamma * cos_gamma;
+        let t14 = T::from_f64(0.5) * e;
+        let t15 = T::from_f64(1.0 / 12.0) * t8;
+        let t16 = sin_sum * sin_diff;
+        let t17 = t16 * d_hole;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t2;
+        let ob = (t17 * t1).hypot(half_d);
+        let t18 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t19 = t18 * t1;
+        let t20 = sin_gamma * lever;
+        let t21 = t4 / (sin_gamma * sin_gamma * sin_gamma);
+        let t22 = h - t2;
+        let t23 = t22 * t22;
+        let t24 = t1 / ob;
+        let t25 = t24 * t17;
+        let t26 = t1 * (t14 + t17 * cos_gamma) * t24;
+        let t27 = t1 * t1;
+        let t28 = cos_gamma * t27;
+        let t29 = t17 * t28;
+        let bb1 = (-T::from_f64(2.0) * t29 * (d_hole + T::from_f64(2.0) * t29)).sqrt();
+        let t30 = bb1 / ob;
+        let t31 = t28 * e;
+        let t32 = t19 - T::from_f64(0.5) * t31;
+        let t33 = sin_gamma * t32;
+        let t34 = cos_gamma * (t17 * t27 - t32);
+        let t35 = half_d + t34 - t20;
+        let t36 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
+            * (-t31 + T::from_f64(2.0) * t19);
+        let t37 = -(cos_gamma * lever) + t33;
+        let t38 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t14) + t21 * e
+            - T::from_f64(2.0) * t18 * t28;
+        let t39 = sin_gamma * t38 + T::from_f64(2.0) * cos_gamma * t32;
+        let t40 = d_hole
+            * (t16 * (t1 + T::from_f64(2.0) * t21) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t38 - T::from_f64(2.0) * t33;
+        let t41 = t37 * t39;
+        let t42 = (d_hole + T::from_f64(2.0) * t34 - T::from_f64(2.0) * t20) * t40;
+        let t43 = gammadot * psidot;
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
@@ -289,42 +276,43 @@ pub mod rigid_peg_frictionless {
             T::from_f64(0.0),
             T::from_f64(0.0),
             -cos_gamma,
-            t57,
-            t57,
+            t26,
+            t26,
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            t33,
-            -t33,
+            t30,
+            -t30,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -sin_gamma,
-            t46,
-            t46,
+            t25,
+            t25,
         );
         let b = Vector5::new(
-            m
-                * (t17 * (-(T::from_f64(0.125) * t18) + t26) * t24
+            -(m
+                * (t6 * (T::from_f64(0.125) * t7 - T::from_f64(1.0 / 12.0) * t8) * t13
                     + T::from_f64(0.5)
-                        * (t16 * (T::from_f64(2.0) * t54 + t55)
-                            + t17 * (T::from_f64(0.5) * t24 * t44 + t56)
-                            - t16 * (T::from_f64(4.0) * t54 + T::from_f64(2.0) * t55))
-                    - g * t50 - gammaddot * (t26 + t48 * t48 + t50 * t50))
-                + t48 * (t20 + t21) + f_z * t50,
+                        * (-(t5 * (T::from_f64(2.0) * t41 - t42)
+                            + t6
+                                * (T::from_f64(0.5) * t13 * t23 - T::from_f64(0.25) * t36))
+                            + t5 * (T::from_f64(4.0) * t41 - T::from_f64(2.0) * t42))
+                    + g * t35 + gammaddot * (t15 + t37 * t37 + t35 * t35)))
+                + t37 * (t9 + t10) + f_z * t35,
             m
-                * (-(t58
-                    * (t24
-                        * (T::from_f64(0.5) * t44 - T::from_f64(0.25) * t18
-                            + T::from_f64(0.16666666666666666) * t19) + t56))
+                * (t43
+                    * (-(t13
+                        * (T::from_f64(0.5) * t23 - T::from_f64(0.25) * t7
+                            + T::from_f64(1.0 / 6.0) * t8)) + T::from_f64(0.25) * t36)
                     - psiddot
-                        * (t9 * (T::from_f64(0.25) * t44 + t26)
-                            + T::from_f64(0.125) * t15 * t18)) + t53 * (t22 + t23),
-            t20 + t21 - m * (t51 * t16 + gammaddot * t48 - t53 * t17),
-            t22 + t23
-                - m
-                    * (t58 * (t48 * (T::from_f64(1.0) + T::from_f64(1.0)))
-                        + t53 * psiddot),
-            f_z - m * g - m * (t16 * t52 + gammaddot * t50),
+                        * (t3 * (T::from_f64(0.25) * t23 + t15)
+                            + T::from_f64(0.125) * t4 * t7)) + t20 * (-t11 + t12),
+            t9 + t10 - m * (t39 * t5 + gammaddot * t37 + t20 * t6),
+            t11 - t12
+                + m
+                    * (-(t43 * ((T::from_f64(1.0) + T::from_f64(1.0)) * t37))
+                        + t20 * psiddot),
+            f_z - m * g - m * (-(t5 * t40) + gammaddot * t35),
         );
         (a, b)
     }
@@ -338,7 +326,7 @@ pub mod rigid_peg_frictionless {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 24 add/sub, 45 mul, 2 div, 1 sqrt, 4 transcendental, 0 branches; 29 `let`s.
+    /// 22 add/sub, 39 mul, 1 div, 1 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 4>,
@@ -352,45 +340,42 @@ pub mod rigid_peg_frictionless {
         let h = p[2];
         let gamma0 = p[6];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t9) = t1.sin_cos();
-        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
-        let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = t5 * t6;
-        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t10 = cos_gamma * t8;
-        let t11 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
-        let t12 = t10 * t5;
-        let t13 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7;
-        let t14 = sin_gamma * t13;
-        let t15 = d_hole * t2 * t3;
-        let t16 = t15 * t10;
-        let t17 = (-T::from_f64(2.0) * t16 * (d_hole + T::from_f64(2.0) * t16)).sqrt();
-        let t18 = d_peg * t4 * (t6 * t9);
-        let t19 = psidot * t17;
-        let t20 = T::from_f64(0.5) * d_hole
-            + cos_gamma * (t15 * t8 + -t18 + T::from_f64(0.5) * t12) - sin_gamma * t11;
-        let t21 = -t14;
-        let t22 = -(T::from_f64(0.5) * d_hole) + t21;
-        let t23 = gammadot
-            * (cos_gamma * t13 + sin_gamma * (t18 - T::from_f64(0.5) * t12)
-                - (t15 * t6 - cos_gamma * t11));
-        let t24 = t6 * t6 * (T::from_f64(0.5) * t5 + t15 * cos_gamma) + t21;
-        let t25 = psidot * (t14 + t24);
-        let t26 = gammadot * (t20 + t24);
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let e = d_hole - d_peg
+            + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
+        let t0 = T::from_f64(1.0) / sin_gamma;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t0;
+        let t1 = sin_gamma * lever;
+        let t2 = -cos_gamma * lever;
+        let t3 = t0 * t0;
+        let t4 = cos_gamma * t3;
+        let t5 = d_hole * sin_sum * sin_diff;
+        let t6 = half_d - t1;
+        let t7 = t0 * t0 * (T::from_f64(0.5) * e + t5 * cos_gamma) + t1;
+        let t8 = -psidot * (t1 - t7);
+        let t9 = t5 * t4;
+        let bb1 = (-T::from_f64(2.0) * t9 * (d_hole + T::from_f64(2.0) * t9)).sqrt();
+        let t10 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+            - T::from_f64(0.5) * t4 * e;
+        let t11 = psidot * bb1;
+        let t12 = half_d + cos_gamma * (t5 * t3 - t10) - t1;
+        let t13 = gammadot * (-(t2 + sin_gamma * t10) + t5 * t0 + t2);
+        let t14 = gammadot * (t12 + t7);
         Matrix3::new(
-            t23,
-            psidot * (t14 + t22),
-            gammadot * (t20 + t22),
-            t23 - t19,
-            t25,
-            t26,
-            t23 + t19,
-            t25,
-            t26,
+            -t13,
+            -psidot * (t1 + t6),
+            gammadot * (t12 - t6),
+            -t13 - t11,
+            t8,
+            t14,
+            t11 - t13,
+            t8,
+            t14,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -404,7 +389,7 @@ pub mod rigid_peg_frictionless {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 23 add/sub, 52 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 26 `let`s.
+    /// 21 add/sub, 48 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -417,35 +402,35 @@ pub mod rigid_peg_frictionless {
         let g = p[4];
         let gamma0 = p[6];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t9) = t1.sin_cos();
-        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
-        let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = t5 * t6;
-        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t10 = gammadot * gammadot;
-        let t11 = psidot * psidot;
-        let t12 = d_peg * d_peg;
-        let t13 = sin_gamma * sin_gamma * t11;
-        let t14 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
-        let t15 = h - t7;
-        let t16 = d_hole * t2 * t3;
-        let t17 = d_peg * t4 * (t6 * t9);
-        let t18 = T::from_f64(0.0625) * (cos_gamma * cos_gamma) * t11 * t12;
-        let t19 = T::from_f64(0.041666666666666664) * (T::from_f64(0.75) * t12 + h * h)
-            * (t10 + t13);
-        let t20 = cos_gamma * t5 * t8;
-        let t21 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7)
-            + sin_gamma * (t17 - T::from_f64(0.5) * t20);
-        let t22 = T::from_f64(0.5) * d_hole
-            + cos_gamma * (t16 * t8 + -t17 + T::from_f64(0.5) * t20) - sin_gamma * t14;
-        let t23 = T::from_f64(0.5)
-            * (t10 * (t21 * t21 + t22 * t22) + T::from_f64(0.25) * t13 * (t15 * t15));
-        let kinetic = m * (t23 + t18 + t19);
-        let total = m * (t23 + t18 + t19 + g * (-(t16 * t6) + cos_gamma * t14));
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let e = d_hole - d_peg
+            + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
+        let t0 = T::from_f64(1.0) / sin_gamma;
+        let t1 = e * t0;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let t2 = gammadot * gammadot;
+        let t3 = psidot * psidot;
+        let t4 = d_peg * d_peg;
+        let t5 = sin_gamma * sin_gamma * t3;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t1;
+        let t6 = -cos_gamma * lever;
+        let t7 = h - t1;
+        let t8 = t0 * t0;
+        let t9 = d_hole * sin_sum * sin_diff;
+        let t10 = T::from_f64(0.0625) * (cos_gamma * cos_gamma) * t3 * t4;
+        let t11 = T::from_f64(1.0 / 24.0) * (T::from_f64(0.75) * t4 + h * h) * (t2 + t5);
+        let t12 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+            - T::from_f64(0.5) * cos_gamma * e * t8;
+        let t13 = half_d + cos_gamma * (t9 * t8 - t12) - sin_gamma * lever;
+        let t14 = t6 + sin_gamma * t12;
+        let t15 = T::from_f64(0.5)
+            * (t2 * (t14 * t14 + t13 * t13) + T::from_f64(0.25) * t5 * (t7 * t7));
+        let kinetic = m * (t15 + t10 + t11);
+        let total = m * (t15 + t10 + t11 - g * (t9 * t0 + t6));
         (kinetic, total)
     }
 }

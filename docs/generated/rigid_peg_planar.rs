@@ -32,7 +32,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 58 add/sub, 103 mul, 5 div, 0 sqrt, 5 transcendental, 0 branches; 47 `let`s.
+    /// 50 add/sub, 94 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 39 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -57,82 +57,72 @@ pub mod rigid_peg_planar {
         let t_b_eta = t[2];
         let t_b_z = t[3];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t11) = t1.sin_cos();
-        let t5 = t4 * t4;
-        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
-        let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = t6 * t7;
-        let t9 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t10 = T::from_f64(0.5) * d_hole;
-        let t12 = cos_gamma * t9;
-        let t13 = t11 * t11;
-        let t14 = gammadot * gammadot;
-        let t15 = T::from_f64(0.5) * t6;
-        let t16 = t2 * t3;
-        let t17 = t16 * d_hole;
-        let t18 = t17 * t7;
-        let t19 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
-        let t20 = t18.hypot(t10);
-        let t21 = d_peg * t4 * t11;
-        let t22 = t21 * t7;
-        let t23 = t12 * t6;
-        let t24 = t22 - T::from_f64(0.5) * t23;
-        let t25 = sin_gamma * t24;
-        let t26 = sin_gamma * t19;
-        let t27 = -t22 + T::from_f64(0.5) * t23;
-        let t28 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t29 = t28 * t6;
-        let t30 = t12 * t21;
-        let t31 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t32 = cos_gamma * t31 + t25;
-        let t33 = cos_gamma * (t17 * t9 + t27);
-        let t34 = t10 + t33 - t26;
-        let t35 = -t31;
-        let t36 = sin_gamma
-            * (t35 + t7 * (T::from_f64(0.5) * (t13 - t5) * d_peg + t15) + t29
-                - T::from_f64(2.0) * t30) + T::from_f64(2.0) * cos_gamma * t24;
-        let t37 = -t19;
-        let t38 = d_hole
-            * (t16 * (-t7 - T::from_f64(2.0) * t28) - T::from_f64(0.5) * cos_gamma * t7)
-            + cos_gamma
-                * (t37
-                    + t7
-                        * (T::from_f64(0.5) * (-t13 + t5) * d_peg
-                            - T::from_f64(0.5) * t6) - t29 + T::from_f64(2.0) * t30)
-            - T::from_f64(2.0) * sin_gamma * t27;
-        let t39 = cos_gamma * (t19 + t31) - t18 + t25;
-        let t40 = sin_gamma * (t37 + t35);
-        let t41 = t7 * (t15 + t17 * cos_gamma) * t7;
-        let t42 = t32 * t36;
-        let t43 = t38 * (d_hole + T::from_f64(2.0) * t33 - T::from_f64(2.0) * t26);
-        let t44 = m * t14;
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let t0 = sin_half_gamma * sin_half_gamma;
+        let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
+        let t1 = T::from_f64(1.0) / sin_gamma;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t1;
+        let t2 = sin_gamma * lever;
+        let t3 = gammadot * gammadot;
+        let t4 = T::from_f64(0.5) * e;
+        let t5 = lever - lever;
+        let t6 = sin_gamma * t5;
+        let t7 = sin_sum * sin_diff;
+        let t8 = t7 * d_hole;
+        let neg_a1 = t8 * t1;
+        let ob = neg_a1.hypot(half_d);
+        let t9 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t10 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t11 = t1 * (t4 + t8 * cos_gamma) * t1;
+        let t12 = m * t3;
+        let t13 = t1 * t1;
+        let t14 = cos_gamma * t13;
+        let t15 = t9 * t1 - T::from_f64(0.5) * t14 * e;
+        let t16 = sin_gamma * t15;
+        let t17 = cos_gamma * (t8 * t13 - t15);
+        let t18 = half_d + t17 - t2;
+        let t19 = -(cos_gamma * lever) + t16;
+        let t20 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t4) + t10 * e
+            - T::from_f64(2.0) * t9 * t14;
+        let t21 = sin_gamma * t20 + T::from_f64(2.0) * cos_gamma * t15;
+        let t22 = cos_gamma * t5 - neg_a1 + t16;
+        let t23 = d_hole
+            * (t7 * (t1 + T::from_f64(2.0) * t10) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t20 - T::from_f64(2.0) * t16;
+        let t24 = t19 * t21;
+        let t25 = (d_hole + T::from_f64(2.0) * t17 - T::from_f64(2.0) * t2) * t23;
         let a = Matrix3::new(
             m
-                * (T::from_f64(0.08333333333333333)
-                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t32 * t32
-                    + t34 * t34),
-            f * (-(t_k_eta * t39) - t_k_z * (t33 + t40)),
-            T::from_f64(2.0) * (-(t39 * t_b_eta) - (t10 + t33 + t40 + t41) * t_b_z) * f,
-            m * t32,
-            -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t5,
-            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t41 / t20,
-            m * t34,
+                * (T::from_f64(1.0 / 12.0)
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t19 * t19
+                    + t18 * t18),
+            -(f * (t_k_eta * t22 - t_k_z * (-t17 + t6))),
+            -T::from_f64(2.0)
+                * (f * (t22 * t_b_eta + (half_d + t17 - t6 + t11) * t_b_z)),
+            m * t19,
+            -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t0,
+            T::from_f64(2.0) * t11 / ob - T::from_f64(2.0) * f * t_b_eta,
+            m * t18,
             -(f * t_k_z) - sin_gamma,
-            -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * t18 / t20,
+            -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * neg_a1 / ob,
         );
         let b = Vector3::new(
             m_gamma
-                + m
+                - m
                     * (T::from_f64(0.5)
-                        * (-(T::from_f64(4.0) * t42 + T::from_f64(2.0) * t43)
-                            + T::from_f64(2.0) * t42 + t43) * t14 - g * t34) + f_z * t34
-                + f_x * t32,
-            f_x - t44 * t36,
-            f_z - m * g - t44 * t38,
+                        * (T::from_f64(4.0) * t24 - T::from_f64(2.0) * t25
+                            - (T::from_f64(2.0) * t24 - t25)) * t3 + g * t18) + f_z * t18
+                + f_x * t19,
+            f_x - t12 * t21,
+            f_z - m * g + t12 * t23,
         );
         (a, b)
     }
@@ -151,7 +141,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 60 add/sub, 104 mul, 5 div, 0 sqrt, 5 transcendental, 0 branches; 46 `let`s.
+    /// 52 add/sub, 95 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 38 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -177,80 +167,70 @@ pub mod rigid_peg_planar {
         let t_b_eta = t[2];
         let t_b_z = t[3];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t11) = t1.sin_cos();
-        let t5 = t4 * t4;
-        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
-        let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = t6 * t7;
-        let t9 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t10 = T::from_f64(0.5) * d_hole;
-        let t12 = cos_gamma * t9;
-        let t13 = t11 * t11;
-        let t14 = gammadot * gammadot;
-        let t15 = T::from_f64(0.5) * t6;
-        let t16 = t2 * t3;
-        let t17 = t16 * d_hole;
-        let t18 = t17 * t7;
-        let t19 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
-        let t20 = t18.hypot(t10);
-        let t21 = d_peg * t4 * t11;
-        let t22 = t21 * t7;
-        let t23 = t12 * t6;
-        let t24 = t22 - T::from_f64(0.5) * t23;
-        let t25 = sin_gamma * t24;
-        let t26 = sin_gamma * t19;
-        let t27 = -t22 + T::from_f64(0.5) * t23;
-        let t28 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t29 = t28 * t6;
-        let t30 = t12 * t21;
-        let t31 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t32 = cos_gamma * t31 + t25;
-        let t33 = cos_gamma * (t17 * t9 + t27);
-        let t34 = t10 + t33 - t26;
-        let t35 = -t31;
-        let t36 = sin_gamma
-            * (t35 + t7 * (T::from_f64(0.5) * (t13 - t5) * d_peg + t15) + t29
-                - T::from_f64(2.0) * t30) + T::from_f64(2.0) * cos_gamma * t24;
-        let t37 = -t19;
-        let t38 = d_hole
-            * (t16 * (-t7 - T::from_f64(2.0) * t28) - T::from_f64(0.5) * cos_gamma * t7)
-            + cos_gamma
-                * (t37
-                    + t7
-                        * (T::from_f64(0.5) * (-t13 + t5) * d_peg
-                            - T::from_f64(0.5) * t6) - t29 + T::from_f64(2.0) * t30)
-            - T::from_f64(2.0) * sin_gamma * t27;
-        let t39 = cos_gamma * (t19 + t31) - t18 + t25;
-        let t40 = sin_gamma * (t37 + t35);
-        let t41 = t7 * (t15 + t17 * cos_gamma) * t7;
-        let t42 = t32 * t36;
-        let t43 = t38 * (d_hole + T::from_f64(2.0) * t33 - T::from_f64(2.0) * t26);
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let t0 = sin_half_gamma * sin_half_gamma;
+        let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
+        let t1 = T::from_f64(1.0) / sin_gamma;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t1;
+        let t2 = sin_gamma * lever;
+        let t3 = gammadot * gammadot;
+        let t4 = T::from_f64(0.5) * e;
+        let t5 = lever - lever;
+        let t6 = sin_gamma * t5;
+        let t7 = sin_sum * sin_diff;
+        let t8 = t7 * d_hole;
+        let neg_a1 = t8 * t1;
+        let ob = neg_a1.hypot(half_d);
+        let t9 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t10 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t11 = t1 * (t4 + t8 * cos_gamma) * t1;
+        let t12 = t1 * t1;
+        let t13 = cos_gamma * t12;
+        let t14 = t9 * t1 - T::from_f64(0.5) * t13 * e;
+        let t15 = sin_gamma * t14;
+        let t16 = cos_gamma * (t8 * t12 - t14);
+        let t17 = half_d + t16 - t2;
+        let t18 = -(cos_gamma * lever) + t15;
+        let t19 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t4) + t10 * e
+            - T::from_f64(2.0) * t9 * t13;
+        let t20 = sin_gamma * t19 + T::from_f64(2.0) * cos_gamma * t14;
+        let t21 = cos_gamma * t5 - neg_a1 + t15;
+        let t22 = d_hole
+            * (t7 * (t1 + T::from_f64(2.0) * t10) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t19 - T::from_f64(2.0) * t15;
+        let t23 = t18 * t20;
+        let t24 = (d_hole + T::from_f64(2.0) * t16 - T::from_f64(2.0) * t2) * t22;
         let a = Matrix3::new(
             -T::from_f64(1.0),
-            f * (-(t_k_eta * t39) - t_k_z * (t33 + t40)),
-            T::from_f64(2.0) * (-(t39 * t_b_eta) - (t10 + t33 + t40 + t41) * t_b_z) * f,
+            -(f * (t_k_eta * t21 - t_k_z * (-t16 + t6))),
+            -T::from_f64(2.0)
+                * (f * (t21 * t_b_eta + (half_d + t16 - t6 + t11) * t_b_z)),
             T::from_f64(0.0),
-            -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t5,
-            -(T::from_f64(2.0) * f * t_b_eta) + T::from_f64(2.0) * t41 / t20,
+            -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t0,
+            T::from_f64(2.0) * t11 / ob - T::from_f64(2.0) * f * t_b_eta,
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * t18 / t20,
+            -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * neg_a1 / ob,
         );
         let b = Vector3::new(
-            m
+            -(m
                 * (T::from_f64(0.5)
-                    * (-(T::from_f64(4.0) * t42 + T::from_f64(2.0) * t43)
-                        + T::from_f64(2.0) * t42 + t43) * t14 - g * t34
-                    - gammaddot
-                        * (T::from_f64(0.08333333333333333)
-                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t32 * t32
-                            + t34 * t34)) + f_z * t34 + f_x * t32,
-            f_x - m * (t36 * t14 + gammaddot * t32),
-            f_z - m * g - m * (t14 * t38 + gammaddot * t34),
+                    * (T::from_f64(4.0) * t23 - T::from_f64(2.0) * t24
+                        - (T::from_f64(2.0) * t23 - t24)) * t3 + g * t17
+                    + gammaddot
+                        * (T::from_f64(1.0 / 12.0)
+                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t18 * t18
+                            + t17 * t17))) + f_z * t17 + f_x * t18,
+            f_x - m * (t20 * t3 + gammaddot * t18),
+            f_z - m * g - m * (-(t3 * t22) + gammaddot * t17),
         );
         (a, b)
     }
@@ -264,7 +244,7 @@ pub mod rigid_peg_planar {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 19 add/sub, 38 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 21 `let`s.
+    /// 17 add/sub, 32 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 20 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 2>,
@@ -277,38 +257,36 @@ pub mod rigid_peg_planar {
         let h = p[2];
         let gamma0 = p[6];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t9) = t1.sin_cos();
-        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
-        let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = t5 * t6;
-        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
-        let t11 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7;
-        let t12 = d_hole * t2 * t3;
-        let t13 = d_peg * t4 * (t6 * t9);
-        let t14 = cos_gamma * t5 * t8;
-        let t15 = T::from_f64(0.5) * d_hole
-            + cos_gamma * (t12 * t8 + -t13 + T::from_f64(0.5) * t14) - sin_gamma * t10;
-        let t16 = -sin_gamma * t11;
-        let t17 = gammadot
-            * (cos_gamma * t11 + sin_gamma * (t13 - T::from_f64(0.5) * t14)
-                - (t12 * t6 - cos_gamma * t10));
-        let t18 = gammadot
-            * (t15 + t6 * t6 * (T::from_f64(0.5) * t5 + t12 * cos_gamma) + t16);
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let e = d_hole - d_peg
+            + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
+        let t0 = T::from_f64(1.0) / sin_gamma;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t0;
+        let t1 = sin_gamma * lever;
+        let t2 = -cos_gamma * lever;
+        let t3 = t0 * t0;
+        let t4 = d_hole * sin_sum * sin_diff;
+        let t5 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+            - T::from_f64(0.5) * cos_gamma * e * t3;
+        let t6 = half_d + cos_gamma * (t4 * t3 - t5) - t1;
+        let t7 = -gammadot * (-(t2 + sin_gamma * t5) + t4 * t0 + t2);
+        let t8 = gammadot
+            * (t6 + t0 * t0 * (T::from_f64(0.5) * e + t4 * cos_gamma) + t1);
         Matrix3::new(
-            t17,
+            t7,
             T::from_f64(0.0),
-            gammadot * (t15 + -(T::from_f64(0.5) * d_hole) + t16),
-            t17,
+            gammadot * (t6 - (half_d - t1)),
+            t7,
             T::from_f64(0.0),
-            t18,
-            t17,
+            t8,
+            t7,
             T::from_f64(0.0),
-            t18,
+            t8,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -322,7 +300,7 @@ pub mod rigid_peg_planar {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 17 add/sub, 41 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 19 `let`s.
+    /// 15 add/sub, 37 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 19 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -334,29 +312,29 @@ pub mod rigid_peg_planar {
         let g = p[4];
         let gamma0 = p[6];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t9) = t1.sin_cos();
-        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
-        let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = t5 * t6;
-        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
-        let t11 = d_hole * t2 * t3;
-        let t12 = d_peg * t4 * (t6 * t9);
-        let t13 = cos_gamma * t5 * t8;
-        let t14 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7)
-            + sin_gamma * (t12 - T::from_f64(0.5) * t13);
-        let t15 = T::from_f64(0.5) * d_hole
-            + cos_gamma * (t11 * t8 + -t12 + T::from_f64(0.5) * t13) - sin_gamma * t10;
-        let t16 = gammadot * gammadot
-            * (T::from_f64(0.5) * (t14 * t14 + t15 * t15)
-                + T::from_f64(0.041666666666666664)
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let e = d_hole - d_peg
+            + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
+        let t0 = T::from_f64(1.0) / sin_gamma;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t0;
+        let t1 = -cos_gamma * lever;
+        let t2 = t0 * t0;
+        let t3 = d_hole * sin_sum * sin_diff;
+        let t4 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+            - T::from_f64(0.5) * cos_gamma * e * t2;
+        let t5 = t1 + sin_gamma * t4;
+        let t6 = half_d + cos_gamma * (t3 * t2 - t4) - sin_gamma * lever;
+        let t7 = gammadot * gammadot
+            * (T::from_f64(0.5) * (t5 * t5 + t6 * t6)
+                + T::from_f64(1.0 / 24.0)
                     * (T::from_f64(0.75) * (d_peg * d_peg) + h * h));
-        let kinetic = t16 * m;
-        let total = m * (t16 + g * (-(t11 * t6) + cos_gamma * t10));
+        let kinetic = t7 * m;
+        let total = -m * (-t7 + g * (t3 * t0 + t1));
         (kinetic, total)
     }
 }

@@ -29,7 +29,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 44 add/sub, 89 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 41 `let`s.
+    /// 37 add/sub, 80 mul, 3 div, 0 sqrt, 5 transcendental, 0 branches; 35 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -48,76 +48,67 @@ pub mod rigid_peg_planar_frictionless {
         let f_x = loads[1];
         let f_z = loads[2];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t11) = t1.sin_cos();
-        let t5 = t4 * t4;
-        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
-        let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = t6 * t7;
-        let t9 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t10 = T::from_f64(0.5) * d_hole;
-        let t12 = cos_gamma * t9;
-        let t13 = t11 * t11;
-        let t14 = gammadot * gammadot;
-        let t15 = T::from_f64(0.5) * t6;
-        let t16 = t2 * t3;
-        let t17 = t16 * d_hole;
-        let t18 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
-        let t19 = (t17 * t7).hypot(t10);
-        let t20 = d_peg * t4 * t11;
-        let t21 = t20 * t7;
-        let t22 = t12 * t6;
-        let t23 = t21 - T::from_f64(0.5) * t22;
-        let t24 = sin_gamma * t18;
-        let t25 = -t21 + T::from_f64(0.5) * t22;
-        let t26 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t27 = t26 * t6;
-        let t28 = t12 * t20;
-        let t29 = t7 / t19;
-        let t30 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t31 = cos_gamma * t30 + sin_gamma * t23;
-        let t32 = cos_gamma * (t17 * t9 + t25);
-        let t33 = t10 + t32 - t24;
-        let t34 = sin_gamma
-            * (-t30 + t7 * (T::from_f64(0.5) * (t13 - t5) * d_peg + t15) + t27
-                - T::from_f64(2.0) * t28) + T::from_f64(2.0) * cos_gamma * t23;
-        let t35 = d_hole
-            * (t16 * (-t7 - T::from_f64(2.0) * t26) - T::from_f64(0.5) * cos_gamma * t7)
-            + cos_gamma
-                * (-t18
-                    + t7
-                        * (T::from_f64(0.5) * (-t13 + t5) * d_peg
-                            - T::from_f64(0.5) * t6) - t27 + T::from_f64(2.0) * t28)
-            - T::from_f64(2.0) * sin_gamma * t25;
-        let t36 = t31 * t34;
-        let t37 = t35 * (d_hole + T::from_f64(2.0) * t32 - T::from_f64(2.0) * t24);
-        let t38 = m * t14;
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let t0 = sin_half_gamma * sin_half_gamma;
+        let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
+        let t1 = T::from_f64(1.0) / sin_gamma;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t1;
+        let t2 = sin_gamma * lever;
+        let t3 = gammadot * gammadot;
+        let t4 = T::from_f64(0.5) * e;
+        let t5 = sin_sum * sin_diff;
+        let t6 = t5 * d_hole;
+        let ob = (t6 * t1).hypot(half_d);
+        let t7 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t8 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t9 = t1 / ob;
+        let t10 = m * t3;
+        let t11 = t1 * t1;
+        let t12 = cos_gamma * t11;
+        let t13 = t7 * t1 - T::from_f64(0.5) * t12 * e;
+        let t14 = sin_gamma * t13;
+        let t15 = cos_gamma * (t6 * t11 - t13);
+        let t16 = half_d + t15 - t2;
+        let t17 = -(cos_gamma * lever) + t14;
+        let t18 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t4) + t8 * e
+            - T::from_f64(2.0) * t7 * t12;
+        let t19 = sin_gamma * t18 + T::from_f64(2.0) * cos_gamma * t13;
+        let t20 = d_hole
+            * (t5 * (t1 + T::from_f64(2.0) * t8) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t18 - T::from_f64(2.0) * t14;
+        let t21 = t17 * t19;
+        let t22 = (d_hole + T::from_f64(2.0) * t15 - T::from_f64(2.0) * t2) * t20;
         let a = Matrix3::new(
             m
-                * (T::from_f64(0.08333333333333333)
-                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t31 * t31
-                    + t33 * t33),
+                * (T::from_f64(1.0 / 12.0)
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t17 * t17
+                    + t16 * t16),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * t31,
-            -T::from_f64(1.0) + T::from_f64(2.0) * t5,
-            T::from_f64(2.0) * (t7 * (t15 + t17 * cos_gamma)) * t29,
-            m * t33,
+            m * t17,
+            T::from_f64(2.0) * t0 - T::from_f64(1.0),
+            T::from_f64(2.0) * (t1 * (t4 + t6 * cos_gamma)) * t9,
+            m * t16,
             -sin_gamma,
-            T::from_f64(2.0) * t29 * t17,
+            T::from_f64(2.0) * t9 * t6,
         );
         let b = Vector3::new(
             m_gamma
-                + m
+                - m
                     * (T::from_f64(0.5)
-                        * (-(T::from_f64(4.0) * t36 + T::from_f64(2.0) * t37)
-                            + T::from_f64(2.0) * t36 + t37) * t14 - g * t33) + f_z * t33
-                + f_x * t31,
-            f_x - t38 * t34,
-            f_z - m * g - t38 * t35,
+                        * (T::from_f64(4.0) * t21 - T::from_f64(2.0) * t22
+                            - (T::from_f64(2.0) * t21 - t22)) * t3 + g * t16) + f_z * t16
+                + f_x * t17,
+            f_x - t10 * t19,
+            f_z - m * g + t10 * t20,
         );
         (a, b)
     }
@@ -135,7 +126,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 46 add/sub, 90 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 40 `let`s.
+    /// 39 add/sub, 81 mul, 3 div, 0 sqrt, 5 transcendental, 0 branches; 34 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -155,74 +146,65 @@ pub mod rigid_peg_planar_frictionless {
         let f_x = loads[1];
         let f_z = loads[2];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t11) = t1.sin_cos();
-        let t5 = t4 * t4;
-        let t6 = d_hole - d_peg + T::from_f64(2.0) * d_peg * t5;
-        let t7 = T::from_f64(1.0) / sin_gamma;
-        let t8 = t6 * t7;
-        let t9 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t10 = T::from_f64(0.5) * d_hole;
-        let t12 = cos_gamma * t9;
-        let t13 = t11 * t11;
-        let t14 = gammadot * gammadot;
-        let t15 = T::from_f64(0.5) * t6;
-        let t16 = t2 * t3;
-        let t17 = t16 * d_hole;
-        let t18 = T::from_f64(0.5) * h - T::from_f64(0.5) * t8;
-        let t19 = (t17 * t7).hypot(t10);
-        let t20 = d_peg * t4 * t11;
-        let t21 = t20 * t7;
-        let t22 = t12 * t6;
-        let t23 = t21 - T::from_f64(0.5) * t22;
-        let t24 = sin_gamma * t18;
-        let t25 = -t21 + T::from_f64(0.5) * t22;
-        let t26 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t27 = t26 * t6;
-        let t28 = t12 * t20;
-        let t29 = t7 / t19;
-        let t30 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t8;
-        let t31 = cos_gamma * t30 + sin_gamma * t23;
-        let t32 = cos_gamma * (t17 * t9 + t25);
-        let t33 = t10 + t32 - t24;
-        let t34 = sin_gamma
-            * (-t30 + t7 * (T::from_f64(0.5) * (t13 - t5) * d_peg + t15) + t27
-                - T::from_f64(2.0) * t28) + T::from_f64(2.0) * cos_gamma * t23;
-        let t35 = d_hole
-            * (t16 * (-t7 - T::from_f64(2.0) * t26) - T::from_f64(0.5) * cos_gamma * t7)
-            + cos_gamma
-                * (-t18
-                    + t7
-                        * (T::from_f64(0.5) * (-t13 + t5) * d_peg
-                            - T::from_f64(0.5) * t6) - t27 + T::from_f64(2.0) * t28)
-            - T::from_f64(2.0) * sin_gamma * t25;
-        let t36 = t31 * t34;
-        let t37 = t35 * (d_hole + T::from_f64(2.0) * t32 - T::from_f64(2.0) * t24);
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let t0 = sin_half_gamma * sin_half_gamma;
+        let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
+        let t1 = T::from_f64(1.0) / sin_gamma;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t1;
+        let t2 = sin_gamma * lever;
+        let t3 = gammadot * gammadot;
+        let t4 = T::from_f64(0.5) * e;
+        let t5 = sin_sum * sin_diff;
+        let t6 = t5 * d_hole;
+        let ob = (t6 * t1).hypot(half_d);
+        let t7 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t8 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t9 = t1 / ob;
+        let t10 = t1 * t1;
+        let t11 = cos_gamma * t10;
+        let t12 = t7 * t1 - T::from_f64(0.5) * t11 * e;
+        let t13 = sin_gamma * t12;
+        let t14 = cos_gamma * (t6 * t10 - t12);
+        let t15 = half_d + t14 - t2;
+        let t16 = -(cos_gamma * lever) + t13;
+        let t17 = lever
+            + t1
+                * (-(T::from_f64(0.5)
+                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t4) + t8 * e
+            - T::from_f64(2.0) * t7 * t11;
+        let t18 = sin_gamma * t17 + T::from_f64(2.0) * cos_gamma * t12;
+        let t19 = d_hole
+            * (t5 * (t1 + T::from_f64(2.0) * t8) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t17 - T::from_f64(2.0) * t13;
+        let t20 = t16 * t18;
+        let t21 = (d_hole + T::from_f64(2.0) * t14 - T::from_f64(2.0) * t2) * t19;
         let a = Matrix3::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            -T::from_f64(1.0) + T::from_f64(2.0) * t5,
-            T::from_f64(2.0) * (t7 * (t15 + t17 * cos_gamma)) * t29,
+            T::from_f64(2.0) * t0 - T::from_f64(1.0),
+            T::from_f64(2.0) * (t1 * (t4 + t6 * cos_gamma)) * t9,
             T::from_f64(0.0),
             -sin_gamma,
-            T::from_f64(2.0) * t29 * t17,
+            T::from_f64(2.0) * t9 * t6,
         );
         let b = Vector3::new(
-            m
+            -(m
                 * (T::from_f64(0.5)
-                    * (-(T::from_f64(4.0) * t36 + T::from_f64(2.0) * t37)
-                        + T::from_f64(2.0) * t36 + t37) * t14 - g * t33
-                    - gammaddot
-                        * (T::from_f64(0.08333333333333333)
-                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t31 * t31
-                            + t33 * t33)) + f_z * t33 + f_x * t31,
-            f_x - m * (t34 * t14 + gammaddot * t31),
-            f_z - m * g - m * (t14 * t35 + gammaddot * t33),
+                    * (T::from_f64(4.0) * t20 - T::from_f64(2.0) * t21
+                        - (T::from_f64(2.0) * t20 - t21)) * t3 + g * t15
+                    + gammaddot
+                        * (T::from_f64(1.0 / 12.0)
+                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t16 * t16
+                            + t15 * t15))) + f_z * t15 + f_x * t16,
+            f_x - m * (t18 * t3 + gammaddot * t16),
+            f_z - m * g - m * (-(t3 * t19) + gammaddot * t15),
         );
         (a, b)
     }
@@ -236,7 +218,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 19 add/sub, 38 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 21 `let`s.
+    /// 17 add/sub, 32 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 20 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 2>,
@@ -249,38 +231,36 @@ pub mod rigid_peg_planar_frictionless {
         let h = p[2];
         let gamma0 = p[6];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t9) = t1.sin_cos();
-        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
-        let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = t5 * t6;
-        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
-        let t11 = -(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7;
-        let t12 = d_hole * t2 * t3;
-        let t13 = d_peg * t4 * (t6 * t9);
-        let t14 = cos_gamma * t5 * t8;
-        let t15 = T::from_f64(0.5) * d_hole
-            + cos_gamma * (t12 * t8 + -t13 + T::from_f64(0.5) * t14) - sin_gamma * t10;
-        let t16 = -sin_gamma * t11;
-        let t17 = gammadot
-            * (cos_gamma * t11 + sin_gamma * (t13 - T::from_f64(0.5) * t14)
-                - (t12 * t6 - cos_gamma * t10));
-        let t18 = gammadot
-            * (t15 + t6 * t6 * (T::from_f64(0.5) * t5 + t12 * cos_gamma) + t16);
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let e = d_hole - d_peg
+            + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
+        let t0 = T::from_f64(1.0) / sin_gamma;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t0;
+        let t1 = sin_gamma * lever;
+        let t2 = -cos_gamma * lever;
+        let t3 = t0 * t0;
+        let t4 = d_hole * sin_sum * sin_diff;
+        let t5 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+            - T::from_f64(0.5) * cos_gamma * e * t3;
+        let t6 = half_d + cos_gamma * (t4 * t3 - t5) - t1;
+        let t7 = -gammadot * (-(t2 + sin_gamma * t5) + t4 * t0 + t2);
+        let t8 = gammadot
+            * (t6 + t0 * t0 * (T::from_f64(0.5) * e + t4 * cos_gamma) + t1);
         Matrix3::new(
-            t17,
+            t7,
             T::from_f64(0.0),
-            gammadot * (t15 + -(T::from_f64(0.5) * d_hole) + t16),
-            t17,
+            gammadot * (t6 - (half_d - t1)),
+            t7,
             T::from_f64(0.0),
-            t18,
-            t17,
+            t8,
+            t7,
             T::from_f64(0.0),
-            t18,
+            t8,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -294,7 +274,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 17 add/sub, 41 mul, 2 div, 0 sqrt, 4 transcendental, 0 branches; 19 `let`s.
+    /// 15 add/sub, 37 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 19 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -306,29 +286,29 @@ pub mod rigid_peg_planar_frictionless {
         let g = p[4];
         let gamma0 = p[6];
         let (sin_gamma, cos_gamma) = gamma.sin_cos();
-        let t0 = T::from_f64(0.5) * gamma0;
-        let t1 = T::from_f64(0.5) * gamma;
-        let t2 = (t0 + t1).sin();
-        let t3 = (t0 - T::from_f64(0.5) * gamma).sin();
-        let (t4, t9) = t1.sin_cos();
-        let t5 = d_hole - d_peg + T::from_f64(2.0) * d_peg * (t4 * t4);
-        let t6 = T::from_f64(1.0) / sin_gamma;
-        let t7 = t5 * t6;
-        let t8 = T::from_f64(1.0) / (sin_gamma * sin_gamma);
-        let t10 = T::from_f64(0.5) * h - T::from_f64(0.5) * t7;
-        let t11 = d_hole * t2 * t3;
-        let t12 = d_peg * t4 * (t6 * t9);
-        let t13 = cos_gamma * t5 * t8;
-        let t14 = cos_gamma * (-(T::from_f64(0.5) * h) + T::from_f64(0.5) * t7)
-            + sin_gamma * (t12 - T::from_f64(0.5) * t13);
-        let t15 = T::from_f64(0.5) * d_hole
-            + cos_gamma * (t11 * t8 + -t12 + T::from_f64(0.5) * t13) - sin_gamma * t10;
-        let t16 = gammadot * gammadot
-            * (T::from_f64(0.5) * (t14 * t14 + t15 * t15)
-                + T::from_f64(0.041666666666666664)
+        let half_gamma0 = T::from_f64(0.5) * gamma0;
+        let half_gamma = T::from_f64(0.5) * gamma;
+        let sin_sum = (half_gamma0 + half_gamma).sin();
+        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
+        let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
+        let e = d_hole - d_peg
+            + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
+        let t0 = T::from_f64(1.0) / sin_gamma;
+        let half_d = T::from_f64(0.5) * d_hole;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t0;
+        let t1 = -cos_gamma * lever;
+        let t2 = t0 * t0;
+        let t3 = d_hole * sin_sum * sin_diff;
+        let t4 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+            - T::from_f64(0.5) * cos_gamma * e * t2;
+        let t5 = t1 + sin_gamma * t4;
+        let t6 = half_d + cos_gamma * (t3 * t2 - t4) - sin_gamma * lever;
+        let t7 = gammadot * gammadot
+            * (T::from_f64(0.5) * (t5 * t5 + t6 * t6)
+                + T::from_f64(1.0 / 24.0)
                     * (T::from_f64(0.75) * (d_peg * d_peg) + h * h));
-        let kinetic = t16 * m;
-        let total = m * (t16 + g * (-(t11 * t6) + cos_gamma * t10));
+        let kinetic = t7 * m;
+        let total = -m * (-t7 + g * (t3 * t0 + t1));
         (kinetic, total)
     }
 }

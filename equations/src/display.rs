@@ -39,33 +39,14 @@ enum Prec {
     Atom,
 }
 
-/// Name of a one-argument function as printed.
+/// Name of a one-argument function as printed ([`Unary::spec`]).
 pub fn unary_name(op: Unary) -> &'static str {
-    match op {
-        Unary::Sin => "sin",
-        Unary::Cos => "cos",
-        Unary::Tan => "tan",
-        Unary::Asin => "asin",
-        Unary::Acos => "acos",
-        Unary::Atan => "atan",
-        Unary::Exp => "exp",
-        Unary::Expm1 => "expm1",
-        Unary::Ln => "ln",
-        Unary::Ln1p => "ln1p",
-        Unary::Abs => "abs",
-        Unary::Sign => "sign",
-        Unary::Tanh => "tanh",
-        Unary::Max0 => "max0",
-        Unary::Step => "step",
-    }
+    op.spec().name
 }
 
-/// Name of a two-argument function as printed.
+/// Name of a two-argument function as printed ([`Binary::spec`]).
 pub fn binary_name(op: Binary) -> &'static str {
-    match op {
-        Binary::Atan2 => "atan2",
-        Binary::Hypot => "hypot",
-    }
+    op.spec().name
 }
 
 /// The expression `id` in infix notation.

@@ -5,90 +5,25 @@
 //! of roots into a flat, topologically ordered program once, so that repeated
 //! evaluation does no hashing and no recursion.
 
-use crate::graph::{Binary, Graph, Id, Node, Sym, Unary};
+use crate::graph::{Binary, Graph, Id, Node, PowForm, Sym, Unary};
 
-/// Value of a one-argument function; the definitions the generated code uses.
+/// Value of a one-argument function: the table row's
+/// [`eval`](crate::graph::FuncSpec::eval), the definition the generated code
+/// uses (`max0`, `step` and `sign` propagate NaN).
 pub fn unary(op: Unary, x: f64) -> f64 {
-    match op {
-        Unary::Sin => x.sin(),
-        Unary::Cos => x.cos(),
-        Unary::Tan => x.tan(),
-        Unary::Asin => x.asin(),
-        Unary::Acos => x.acos(),
-        Unary::Atan => x.atan(),
-        Unary::Exp => x.exp(),
-        Unary::Expm1 => x.exp_m1(),
-        Unary::Ln => x.ln(),
-        Unary::Ln1p => x.ln_1p(),
-        Unary::Abs => x.abs(),
-        Unary::Sign => {
-            if x > 0.0 {
-                1.0
-            } else if x < 0.0 {
-                -1.0
-            } else {
-                x * 0.0
-            }
-        }
-        Unary::Tanh => x.tanh(),
-        // NaN propagates through both (f64::max would swallow it).
-        Unary::Max0 => {
-            if x > 0.0 || x.is_nan() {
-                x
-            } else {
-                0.0
-            }
-        }
-        Unary::Step => {
-            if x > 0.0 {
-                1.0
-            } else if x.is_nan() {
-                x
-            } else {
-                0.0
-            }
-        }
-    }
+    (op.spec().eval)(x)
 }
 
-/// Value of a two-argument function.
+/// Value of a two-argument function ([`Binary::spec`]).
 pub fn binary(op: Binary, a: f64, b: f64) -> f64 {
-    match op {
-        Binary::Atan2 => a.atan2(b),
-        Binary::Hypot => a.hypot(b),
-    }
+    (op.spec().eval)(a, b)
 }
 
-/// The exponent emitted as `cbrt` (the `f64` nearest 1/3).
-pub const ONE_THIRD: f64 = 1.0 / 3.0;
-/// The exponent emitted as `cbrt(x)²` (the `f64` nearest 2/3).
-pub const TWO_THIRDS: f64 = 2.0 / 3.0;
-
-/// Value of `base ^ exponent` as the emitter computes it: exponent `0.5` is
-/// `b.sqrt()`, `-0.5` is `1.0 / b.sqrt()`, `1.5` is `b * b.sqrt()`, `1/3`
-/// is `b.cbrt()` and `2/3` is `c * c` with `c = b.cbrt()` (the real cube
-/// root: defined for `b < 0`, where `powf` is NaN, and about 4× cheaper),
-/// an integer exponent `n` with `|n| <= 64` is `b.powi(n)` (which the
-/// emitter writes as `b * b`, `b * b * b` for `n = 2, 3`: the same bits),
-/// anything else `b.powf(e)`. The generated code must make the same
-/// choices, or generated and interpreted values differ in the last bits.
+/// Value of `base ^ exponent` as the emitter computes it: the form
+/// [`PowForm::of`] chooses for the exponent (`sqrt`, `cbrt`, `powi`, ...),
+/// the one table of the interpreter, emitter, scheduler and counter.
 pub fn pow(b: f64, e: f64) -> f64 {
-    if e == 0.5 {
-        b.sqrt()
-    } else if e == -0.5 {
-        1.0 / b.sqrt()
-    } else if e == 1.5 {
-        b * b.sqrt()
-    } else if e == ONE_THIRD {
-        b.cbrt()
-    } else if e == TWO_THIRDS {
-        let c = b.cbrt();
-        c * c
-    } else if e.fract() == 0.0 && e.abs() <= 64.0 {
-        b.powi(e as i32)
-    } else {
-        b.powf(e)
-    }
+    PowForm::of(Some(e)).eval(b, e)
 }
 
 /// The order in which the terms of a sum are added (left to right) by the

@@ -40,6 +40,26 @@ impl<'g> Expr<'g> {
         self.g.node(self.id)
     }
 
+    /// `self`, with `name` recorded as the name of its value in generated
+    /// code (`let delta = ..;`): a model names its main intermediates so
+    /// that the emitted code reads like the derivation. The expression is
+    /// returned unchanged (same node, same id; simplification and
+    /// hash-consing do not see names); the first name given to a value
+    /// wins, and the emitter makes it a valid, unique Rust identifier.
+    ///
+    /// ```
+    /// use pegdyn_equations::Graph;
+    /// let g = Graph::new();
+    /// let (x, y) = (g.var("x"), g.var("y"));
+    /// let d = (x - y).named("delta");
+    /// assert_eq!(d, x - y);
+    /// assert_eq!(g.label(d.id()).as_deref(), Some("delta"));
+    /// ```
+    pub fn named(self, name: &str) -> Expr<'g> {
+        self.g.set_label(self.id, name);
+        self
+    }
+
     /// The value, if this expression is a constant.
     pub fn as_const(self) -> Option<f64> {
         match self.g.node(self.id) {

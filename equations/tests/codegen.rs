@@ -35,6 +35,20 @@ fn emitted(build: impl for<'g> Fn(&'g Graph, Expr<'g>, Expr<'g>, Expr<'g>) -> Ex
 }
 
 #[test]
+fn a_model_name_names_the_let_and_the_functions_of_it() {
+    let code = emitted(|_, a, b, c| {
+        let d = (a - b).named("diff");
+        assert_eq!(d, a - b); // naming changes no node
+        (d.sin() + c) * d.cos()
+    });
+    assert!(code.contains("let diff = a - b;"), "{code}");
+    assert!(
+        code.contains("let (sin_diff, cos_diff) = diff.sin_cos();"),
+        "{code}"
+    );
+}
+
+#[test]
 fn canonical_forms_are_emitted_as_written_by_hand() {
     // (expression, text the emitted function must contain)
     let rows: Vec<(String, &str)> = vec![
@@ -72,6 +86,12 @@ fn canonical_forms_are_emitted_as_written_by_hand() {
         (emitted(|_, a, _, _| a.powf(2.0 / 3.0)), "a.cbrt().powi(2)"),
         (emitted(|_, a, _, _| a.max0()), "let max0_a = a.max0();"),
         (emitted(|_, a, b, c| (a - b) * (b - c)), "(a - b) * (b - c)"),
+        // Exact small rationals print as a quotient, dyadic ones as decimals.
+        (
+            emitted(|_, a, _, _| a / 12.0),
+            "T::from_f64(1.0 / 12.0) * a",
+        ),
+        (emitted(|_, a, _, _| a / 8.0), "T::from_f64(0.125) * a"),
     ];
     for (code, want) in &rows {
         assert!(code.contains(want), "expected `{want}` in:\n{code}");

@@ -6,18 +6,23 @@
 //! a division, `x^0.5` becomes `x.sqrt()`, `x^(1/3)` becomes `x.cbrt()`, `x²` becomes
 //! `x * x`. Code is
 //! generic over the scalar `T: Real` of the runtime crate: constants are
-//! `T::from_f64(c)`, functions are `Real` methods. The semantics of
-//! `max0`, `step` and `sign` (methods of `Real`) are exactly those of
-//! [`crate::eval::unary`] (NaN propagates). Operations are counted as they
-//! are emitted, so the counts are those of the code.
+//! `T::from_f64(c)`, functions are `Real` methods. Every function and power
+//! is written and charged as its row of [`crate::graph::func`] says, the
+//! table the interpreter evaluates with (`max0`, `step` and `sign`
+//! propagate NaN). Operations are counted as they are emitted, so the
+//! counts are those of the code.
+
+use std::collections::HashMap;
 
 use proc_macro2::{Ident, Literal, TokenStream};
 use quote::quote;
 
+use super::lower::product_key;
 use super::ops::OpCounts;
-use super::schedule::{Names, Schedule, as_integer, const_exponent, is_repeated_mul};
-use super::tokens::{constant, ident, let_base, lit_signed, method, one};
-use crate::graph::{Binary, Graph, Id, Node, Sym, Unary};
+use super::schedule::{Names, Schedule, pow_form, snake_case};
+use super::tokens::{constant, ident, let_base, lit_signed, one};
+use crate::graph::func::is_repeated_mul;
+use crate::graph::{Graph, Id, Node, PowForm, Sym, Unary};
 
 /// Binding strength of an emitted fragment, loosest first.
 #[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Debug)]
@@ -58,35 +63,123 @@ pub struct Emitter<'a> {
     names: Vec<Option<Ident>>,
     /// Operations emitted so far.
     pub ops: OpCounts,
+    /// Sine ↔ cosine bound together ([`sin_cos_partners`]).
+    partner: HashMap<Id, Id>,
+}
+
+/// Sine and cosine of one argument that are both bound: emitted as one
+/// `sin_cos` call. Each maps to its partner.
+fn sin_cos_partners(g: &Graph, sched: &Schedule) -> HashMap<Id, Id> {
+    let mut partner = HashMap::new();
+    for &id in &sched.lets {
+        let Node::Unary(Unary::Sin, u) = g.node(id) else {
+            continue;
+        };
+        if let Some(c) = g.find(&Node::Unary(Unary::Cos, u))
+            && c.index() < sched.live.len()
+            && sched.live[c.index()]
+            && sched.is_named(c)
+        {
+            partner.insert(id, c);
+            partner.insert(c, id);
+        }
+    }
+    partner
+}
+
+/// Named products by [`product_key`]: `(coefficient bits, leaf factors)`.
+type ProductNames = HashMap<(u64, Vec<Id>), String>;
+
+/// The model's named products, so that a lowered product with the same
+/// leaves (grouped otherwise by the lowering) finds its name.
+fn labelled_products(g: &Graph) -> ProductNames {
+    let mut out = HashMap::new();
+    for (id, label) in g.labels() {
+        if let Some((c, fs)) = product_key(g, id) {
+            out.entry((c.to_bits(), fs)).or_insert(label);
+        }
+    }
+    out
+}
+
+/// The model's name for the value `id` (snake_case): its own label, or
+/// that of a named product with the same leaves, `neg_<name>` for its
+/// negation.
+fn model_name(g: &Graph, id: Id, products: &ProductNames) -> Option<String> {
+    if let Some(l) = g.label(id) {
+        return Some(snake_case(&l));
+    }
+    let (c, fs) = product_key(g, id)?;
+    if let Some(l) = products.get(&(c.to_bits(), fs.clone())) {
+        return Some(snake_case(l));
+    }
+    let l = products.get(&((-c).to_bits(), fs))?;
+    Some(format!("neg_{}", snake_case(l)))
 }
 
 impl<'a> Emitter<'a> {
     /// An emitter for `sched`; `sym_name` gives the local name of each symbol.
+    ///
+    /// A `let` is called by the model's name for its value
+    /// ([`Graph::label`], made a fresh snake_case identifier), else
+    /// `sin_x`, `cos_x`, `sqrt_x` for a function of a symbol or of a value
+    /// with a model name `x`, else `t0`, `t1`, ... in evaluation order; a
+    /// sine and cosine bound together are named sine first.
     pub fn new(
         g: &'a Graph,
         sched: &'a Schedule,
         names: &mut Names,
         sym_name: &dyn Fn(Sym) -> String,
     ) -> Emitter<'a> {
+        let partner = sin_cos_partners(g, sched);
+        let by_product = labelled_products(g);
         let mut out: Vec<Option<Ident>> = vec![None; sched.live.len()];
-        for (i, slot) in out.iter_mut().enumerate() {
-            if !sched.named[i] {
+        // Readable names (symbols, model names and functions of them).
+        let mut readable: HashMap<Id, String> = HashMap::new();
+        for i in 0..out.len() {
+            let id = Id(i as u32);
+            if !sched.named[i] || out[i].is_some() {
                 continue;
             }
-            let name = match g.node(Id(i as u32)) {
-                Node::Sym(s) => sym_name(s),
-                node => match let_base(g, &node, sym_name) {
-                    Some(base) => names.fresh(&base),
-                    None => names.numbered("t"),
-                },
-            };
-            *slot = Some(ident(&name));
+            let mut group = vec![id];
+            if let Some(&other) = partner.get(&id) {
+                group = match g.node(id) {
+                    Node::Unary(Unary::Sin, _) => vec![id, other],
+                    _ => vec![other, id],
+                };
+            }
+            for id in group {
+                let node = g.node(id);
+                let name = match &node {
+                    Node::Sym(s) => {
+                        let n = sym_name(*s);
+                        readable.insert(id, n.clone());
+                        n
+                    }
+                    node => {
+                        let base = model_name(g, id, &by_product).or_else(|| {
+                            let arg = |a: Id| readable.get(&a).cloned();
+                            let_base(g, node, &arg)
+                        });
+                        match base {
+                            Some(base) => {
+                                let n = names.fresh(&base);
+                                readable.insert(id, n.clone());
+                                n
+                            }
+                            None => names.numbered("t"),
+                        }
+                    }
+                };
+                out[id.index()] = Some(ident(&name));
+            }
         }
         Emitter {
             g,
             sched,
             names: out,
             ops: OpCounts::default(),
+            partner,
         }
     }
 
@@ -103,23 +196,9 @@ impl<'a> Emitter<'a> {
     pub fn lets(&mut self) -> Vec<TokenStream> {
         let sched = self.sched;
         let g = self.g;
-        let mut partner: std::collections::HashMap<Id, Id> = std::collections::HashMap::new();
-        for &id in &sched.lets {
-            let Node::Unary(Unary::Sin, u) = g.node(id) else {
-                continue;
-            };
-            if let Some(c) = g.find(&Node::Unary(Unary::Cos, u))
-                && c.index() < sched.live.len()
-                && sched.live[c.index()]
-                && sched.is_named(c)
-            {
-                partner.insert(id, c);
-                partner.insert(c, id);
-            }
-        }
         let mut out = Vec::with_capacity(sched.lets.len());
         for &id in &sched.lets {
-            let Some(&other) = partner.get(&id) else {
+            let Some(&other) = self.partner.get(&id) else {
                 let value = self.node(id).ts;
                 let name = self.name(id);
                 out.push(quote!(let #name = #value;));
@@ -166,18 +245,19 @@ impl<'a> Emitter<'a> {
             }
             // Lowered sums are already in evaluation order (`lower::horner`).
             Node::Add(xs) => self.sum(&xs),
-            Node::Mul(xs) => self.product(&xs, None),
+            Node::Mul(xs) => match self.negated_sum(id) {
+                Some(f) => f,
+                None => self.product(&xs, None),
+            },
             Node::Pow(b, e) => self.power(b, e),
             Node::Unary(op, a) => self.unary(op, a),
             Node::Binary(op, a, b) => {
-                self.ops.transcendental += 1;
+                let spec = op.spec();
+                self.ops.charge(spec.cost);
                 let a = self.frag(a).at(Prec::Atom);
                 let b = self.frag(b).ts;
-                let ts = match op {
-                    Binary::Atan2 => quote!(#a.atan2(#b)),
-                    Binary::Hypot => quote!(#a.hypot(#b)),
-                };
-                Frag::new(ts, Prec::Atom)
+                let m = ident(spec.method);
+                Frag::new(quote!(#a.#m(#b)), Prec::Atom)
             }
         }
     }
@@ -204,6 +284,34 @@ impl<'a> Emitter<'a> {
         }
         self.ops.mul += f.common.len();
         Frag::new(quote!(#ts * #inner), Prec::Product)
+    }
+
+    /// The negation `(−1)·S` of an inlined sum written with its terms'
+    /// signs flipped (`b - a` for `−(a − b)`; two terms swap so that the
+    /// positive one leads, which is exact), when `S` is not factored.
+    fn negated_sum(&mut self, id: Id) -> Option<Frag> {
+        let s = super::lower::sign::negated(self.g, id)?;
+        if self.sched.is_named(s) {
+            return None;
+        }
+        let Node::Add(xs) = self.g.node(s) else {
+            return None;
+        };
+        let sched = self.sched;
+        if crate::eval::factor_sum(self.g, &xs, |t| sched.is_named(t)).is_some() {
+            return None;
+        }
+        let mut terms: Vec<(bool, Frag)> = xs
+            .iter()
+            .map(|&x| {
+                let (neg, f) = self.signed_term(x);
+                (!neg, f)
+            })
+            .collect();
+        if terms.len() == 2 && terms[0].0 && !terms[1].0 {
+            terms.swap(0, 1);
+        }
+        Some(self.signed_sum(terms))
     }
 
     /// `t₁ ± t₂ ± …` from (is negative, magnitude) pairs.
@@ -317,99 +425,68 @@ impl<'a> Emitter<'a> {
         let Node::Pow(b, e) = self.g.node(f) else {
             return None;
         };
-        let n = const_exponent(self.g, e).and_then(as_integer)?;
-        (n < 0).then(|| self.int_power(b, -n))
+        match pow_form(self.g, e) {
+            PowForm::Int(n) if n < 0 => Some(self.int_power(b, n.unsigned_abs())),
+            _ => None,
+        }
     }
 
-    /// `b^n` for an integer `n >= 1`.
-    fn int_power(&mut self, b: Id, n: i32) -> Frag {
+    /// `b^n` for an integer `n >= 1`, charged as [`PowForm::Int`].
+    fn int_power(&mut self, b: Id, n: u32) -> Frag {
         let base = self.frag(b);
+        self.ops.charge(PowForm::Int(n as i32).cost());
         if n == 1 {
             return base;
         }
         let base = base.at(Prec::Atom);
-        if is_repeated_mul(f64::from(n)) {
-            self.ops.mul += n as usize - 1;
-            return Frag::new(
-                if n == 2 {
-                    quote!(#base * #base)
-                } else {
-                    quote!(#base * #base * #base)
-                },
-                Prec::Product,
-            );
+        if is_repeated_mul(n) {
+            let tail = (1..n).map(|_| quote!(* #base));
+            return Frag::new(quote!(#base #(#tail)*), Prec::Product);
         }
-        self.ops.mul += OpCounts::powi_muls(n as u32);
-        let n = Literal::i32_unsuffixed(n);
+        let n = Literal::u32_unsuffixed(n);
         Frag::new(quote!(#base.powi(#n)), Prec::Atom)
     }
 
-    /// `b^e` standing alone (not a denominator of a product).
+    /// `b^e` standing alone (not a denominator of a product), in the form
+    /// [`PowForm`] gives.
     fn power(&mut self, b: Id, e: Id) -> Frag {
-        let Some(n) = const_exponent(self.g, e) else {
-            self.ops.transcendental += 1;
-            let base = self.frag(b).at(Prec::Atom);
-            let e = self.frag(e).ts;
-            return Frag::new(quote!(#base.powf(#e)), Prec::Atom);
-        };
-        if let Some(k) = as_integer(n) {
+        let form = pow_form(self.g, e);
+        if let PowForm::Int(k) = form {
             if k >= 0 {
-                return self.int_power(b, k);
+                return self.int_power(b, k as u32);
             }
             self.ops.div += 1;
-            let d = self.int_power(b, -k).at(Prec::Atom);
+            let d = self.int_power(b, k.unsigned_abs()).at(Prec::Atom);
             let one = one();
             return Frag::new(quote!(#one / #d), Prec::Product);
         }
+        self.ops.charge(form.cost());
         let base = self.frag(b).at(Prec::Atom);
-        if n == 0.5 {
-            self.ops.sqrt += 1;
-            Frag::new(quote!(#base.sqrt()), Prec::Atom)
-        } else if n == -0.5 {
-            self.ops.sqrt += 1;
-            self.ops.div += 1;
-            let one = one();
-            Frag::new(quote!(#one / #base.sqrt()), Prec::Product)
-        } else if n == 1.5 {
-            self.ops.sqrt += 1;
-            self.ops.mul += 1;
-            Frag::new(quote!(#base * #base.sqrt()), Prec::Product)
-        } else if n == crate::eval::ONE_THIRD {
-            self.ops.transcendental += 1;
-            Frag::new(quote!(#base.cbrt()), Prec::Atom)
-        } else if n == crate::eval::TWO_THIRDS {
-            self.ops.transcendental += 1;
-            self.ops.mul += 1;
-            Frag::new(quote!(#base.cbrt().powi(2)), Prec::Atom)
-        } else {
-            self.ops.transcendental += 1;
-            let n = lit_signed(n);
-            Frag::new(quote!(#base.powf(#n)), Prec::Atom)
+        let one = one();
+        match form {
+            PowForm::Sqrt => Frag::new(quote!(#base.sqrt()), Prec::Atom),
+            PowForm::RecipSqrt => Frag::new(quote!(#one / #base.sqrt()), Prec::Product),
+            PowForm::SqrtCubed => Frag::new(quote!(#base * #base.sqrt()), Prec::Product),
+            PowForm::Cbrt => Frag::new(quote!(#base.cbrt()), Prec::Atom),
+            PowForm::CbrtSquared => Frag::new(quote!(#base.cbrt().powi(2)), Prec::Atom),
+            PowForm::Powf(Some(n)) => {
+                let n = lit_signed(n);
+                Frag::new(quote!(#base.powf(#n)), Prec::Atom)
+            }
+            PowForm::Powf(None) | PowForm::Int(_) => {
+                let e = self.frag(e).ts;
+                Frag::new(quote!(#base.powf(#e)), Prec::Atom)
+            }
         }
     }
 
-    /// A one-argument function as a `Real` method call (`max0`, `step` and
-    /// `sign` with the semantics of [`crate::eval::unary`]).
+    /// A one-argument function as the `Real` method of its table row
+    /// ([`Unary::spec`]), charged the row's cost.
     fn unary(&mut self, op: Unary, a: Id) -> Frag {
+        let spec = op.spec();
+        self.ops.charge(spec.cost);
         let x = self.frag(a).at(Prec::Atom);
-        let call = |m: &str| {
-            let m = ident(m);
-            Frag::new(quote!(#x.#m()), Prec::Atom)
-        };
-        match op {
-            Unary::Abs => call("abs"),
-            Unary::Max0 => {
-                self.ops.branch += 1;
-                call("max0")
-            }
-            Unary::Step | Unary::Sign => {
-                self.ops.branch += 2;
-                call(method(op))
-            }
-            _ => {
-                self.ops.transcendental += 1;
-                call(method(op))
-            }
-        }
+        let m = ident(spec.method);
+        Frag::new(quote!(#x.#m()), Prec::Atom)
     }
 }

@@ -105,7 +105,7 @@ pub fn function(
         .flat_map(|(_, o)| o.ids().iter().copied())
         .collect();
     let roots = super::lower::lower(g, &roots);
-    let sched = Schedule::new(g, &roots);
+    let sched = Schedule::for_code(g, &roots);
     // Output names are locals only when there are several outputs.
     let out_locals = spec
         .outputs

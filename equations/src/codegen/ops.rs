@@ -3,15 +3,14 @@
 use std::fmt;
 use std::ops::AddAssign;
 
+use crate::graph::Cost;
+
 /// Floating-point operations one call of a generated function performs, as
 /// emitted (each `let` counted once, inlined expressions once).
 ///
-/// `abs` and negation are not counted (sign-bit operations); `powi(n)` counts
-/// as the multiplications of square-and-multiply; `powf`, `cbrt`, `exp`,
-/// `ln`, trigonometric functions, `atan2` and `hypot` are transcendental
-/// calls, and `sin_cos` (emitted when a sine and a cosine of the same
-/// argument are both used) is one call, not two;
-/// each `if` is a branch (`max0`, `step` and `sign` contain them).
+/// Functions and powers are charged their [`Cost`] from the one table of
+/// [`crate::graph::func`]; `sin_cos` (emitted when a sine and a cosine of
+/// the same argument are both used) is one call, not two.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct OpCounts {
     /// Additions and subtractions.
@@ -29,14 +28,14 @@ pub struct OpCounts {
 }
 
 impl OpCounts {
-    /// Multiplications for `x.powi(n)` by square-and-multiply (1/x counted
-    /// separately as a division by the caller).
-    pub fn powi_muls(n: u32) -> usize {
-        if n <= 1 {
-            return 0;
-        }
-        let bits = 32 - n.leading_zeros() as usize;
-        (bits - 1) + (n.count_ones() as usize - 1)
+    /// Adds the cost of one function application (from the table of
+    /// [`crate::graph::func`]).
+    pub fn charge(&mut self, c: Cost) {
+        self.mul += c.mul;
+        self.div += c.div;
+        self.sqrt += c.sqrt;
+        self.transcendental += c.transcendental;
+        self.branch += c.branch;
     }
 
     /// Total of all counted operations.

@@ -10,29 +10,26 @@
 
 use std::collections::BTreeSet;
 
-use crate::graph::{Graph, Id, Node, Sym, Unary};
+use crate::graph::{Graph, Id, Node, PowForm, Sym};
 
 /// The constant exponent of a power node, if any.
 pub(crate) fn const_exponent(g: &Graph, e: Id) -> Option<f64> {
     g.expr(e).as_const()
 }
 
-/// Integer powers emitted as repeated multiplication (`x * x`, `x * x * x`).
-pub(crate) fn is_repeated_mul(n: f64) -> bool {
-    n.abs() == 2.0 || n.abs() == 3.0
+/// How the power node `b^e` is computed ([`PowForm`]).
+pub(crate) fn pow_form(g: &Graph, e: Id) -> PowForm {
+    PowForm::of(const_exponent(g, e))
 }
 
-/// Integer exponents emitted with `powi` (or multiplication / division).
-pub(crate) fn as_integer(n: f64) -> Option<i32> {
-    (n.fract() == 0.0 && n.abs() <= 64.0).then_some(n as i32)
-}
-
-/// Nodes that always get a `let`: calls, roots, branches.
+/// Nodes that always get a `let`: calls, roots, branches (the table's
+/// [`FuncSpec::is_call`](crate::graph::FuncSpec::is_call),
+/// [`PowForm::is_call`]).
 fn expensive(g: &Graph, node: &Node) -> bool {
     match node {
-        Node::Unary(op, _) => *op != Unary::Abs,
-        Node::Binary(..) => true,
-        Node::Pow(_, e) => const_exponent(g, *e).and_then(as_integer).is_none(),
+        Node::Unary(op, _) => op.spec().is_call(),
+        Node::Binary(op, ..) => op.spec().is_call(),
+        Node::Pow(_, e) => pow_form(g, *e).is_call(),
         _ => false,
     }
 }
@@ -53,10 +50,7 @@ const MAX_DIVIDING_USERS: u32 = 2;
 /// Operands that must be a name because the emitted form repeats them.
 fn repeated_operand(g: &Graph, node: &Node) -> Option<Id> {
     match node {
-        Node::Pow(b, e) => match const_exponent(g, *e) {
-            Some(n) if is_repeated_mul(n) || n == 1.5 => Some(*b),
-            _ => None,
-        },
+        Node::Pow(b, e) if pow_form(g, *e).repeats_base() => Some(*b),
         _ => None,
     }
 }
@@ -75,21 +69,41 @@ pub struct Schedule {
 }
 
 impl Schedule {
-    /// Plans the evaluation of `roots`.
+    /// Plans the evaluation of `roots` by the interpreter
+    /// ([`crate::eval::Tape`]): a value is named when it is used more than
+    /// once or is a call.
     pub fn new(g: &Graph, roots: &[Id]) -> Schedule {
+        Schedule::plan(g, roots, false)
+    }
+
+    /// Plans the emitted code of (lowered) `roots`: as [`Schedule::new`],
+    /// and besides, a pure negation `(−1)·x` is never bound (each user
+    /// writes `-x`, a free sign flip, and `x` counts its users' uses), and a
+    /// value the model named ([`Graph::label`]) gets its `let`.
+    pub fn for_code(g: &Graph, roots: &[Id]) -> Schedule {
+        Schedule::plan(g, roots, true)
+    }
+
+    fn plan(g: &Graph, roots: &[Id], code: bool) -> Schedule {
         let n = roots.iter().map(|r| r.index() + 1).max().unwrap_or(0);
         let mut live = vec![false; n];
         let mut uses = vec![0u32; n];
+        let mut negation = vec![false; n];
         for r in roots {
             live[r.index()] = true;
             uses[r.index()] += 1;
         }
         for i in (0..n).rev() {
             if live[i] {
-                g.with_node(Id(i as u32), |node| {
+                let id = Id(i as u32);
+                let neg = code && super::lower::sign::negated(g, id).is_some();
+                negation[i] = neg;
+                // An inlined negation passes its users on to its operand.
+                let weight = if neg { uses[i] } else { 1 };
+                g.with_node(id, |node| {
                     node.for_each_child(|c| {
                         live[c.index()] = true;
-                        uses[c.index()] += 1;
+                        uses[c.index()] += weight;
                     })
                 });
             }
@@ -115,7 +129,12 @@ impl Schedule {
                             named[b.index()] |= !atomic;
                         }
                     }
-                    _ => named[i] |= uses[i] > 1 || expensive(g, node),
+                    _ if negation[i] => {}
+                    _ => {
+                        named[i] |= uses[i] > 1
+                            || expensive(g, node)
+                            || (code && g.label(Id(i as u32)).is_some());
+                    }
                 }
                 if let Some(a) = repeated_operand(g, node) {
                     let atomic = g.with_node(a, |n| matches!(n, Node::Const(_)));

@@ -5,8 +5,8 @@ use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::quote;
 
 use super::emit::{Frag, Prec};
-use super::schedule::const_exponent;
-use crate::graph::{Graph, Id, Node, Sym, Unary};
+use super::schedule::pow_form;
+use crate::graph::{Graph, Id, Node, PowForm};
 
 /// The Rust keywords, strict and reserved (edition 2024), none of which
 /// may name a model symbol or a generated `let`: the one list read by the
@@ -34,52 +34,60 @@ pub(crate) fn ident(s: &str) -> Ident {
     Ident::new(s, Span::call_site())
 }
 
-/// The `pegdyn::scalar::Real` method implementing a transcendental function.
-pub(crate) fn method(op: Unary) -> &'static str {
-    match op {
-        Unary::Sin => "sin",
-        Unary::Cos => "cos",
-        Unary::Tan => "tan",
-        Unary::Asin => "asin",
-        Unary::Acos => "acos",
-        Unary::Atan => "atan",
-        Unary::Exp => "exp",
-        Unary::Expm1 => "exp_m1",
-        Unary::Ln => "ln",
-        Unary::Ln1p => "ln_1p",
-        Unary::Tanh => "tanh",
-        Unary::Abs => "abs",
-        Unary::Sign => "sign",
-        Unary::Max0 => "max0",
-        Unary::Step => "step",
-    }
-}
-
 /// A readable base name for a `let`: `sin_theta` for a function of a
-/// symbol, `sqrt_x` for its root; `None` for a numbered temporary.
-pub(crate) fn let_base(g: &Graph, node: &Node, sym_name: &dyn Fn(Sym) -> String) -> Option<String> {
-    let sym = |a: Id| match g.node(a) {
-        Node::Sym(s) => Some(sym_name(s)),
-        _ => None,
-    };
+/// value with a readable name (`arg`: a symbol or a model-named value),
+/// `sqrt_x` for its root; `None` for a numbered temporary.
+pub(crate) fn let_base(
+    g: &Graph,
+    node: &Node,
+    arg: &dyn Fn(Id) -> Option<String>,
+) -> Option<String> {
     match node {
-        Node::Unary(op, a) => sym(*a).map(|s| format!("{}_{s}", method(*op))),
-        Node::Pow(b, e) if const_exponent(g, *e) == Some(0.5) => {
-            sym(*b).map(|s| format!("sqrt_{s}"))
-        }
+        Node::Unary(op, a) => arg(*a).map(|s| format!("{}_{s}", op.spec().method)),
+        Node::Pow(b, e) if pow_form(g, *e) == PowForm::Sqrt => arg(*b).map(|s| format!("sqrt_{s}")),
         _ => None,
     }
 }
 
 /// A constant of the scalar type `T`: `T::from_f64(c)`, negative ones as
-/// `-T::from_f64(c)`.
+/// `-T::from_f64(c)`; an exact small rational whose decimal form is long
+/// as `T::from_f64(1.0 / 12.0)` (the same `f64`: the division of two exact
+/// integers rounds once, as the literal does).
 pub(crate) fn constant(v: f64) -> Frag {
-    let l = lit(v.abs());
+    let a = v.abs();
+    let value = match rational(a) {
+        Some((p, q)) => {
+            let (p, q) = (lit(p as f64), lit(q as f64));
+            quote!(#p / #q)
+        }
+        None => {
+            let l = lit(a);
+            quote!(#l)
+        }
+    };
     if v < 0.0 {
-        Frag::new(quote!(-T::from_f64(#l)), Prec::Prefix)
+        Frag::new(quote!(-T::from_f64(#value)), Prec::Prefix)
     } else {
-        Frag::new(quote!(T::from_f64(#l)), Prec::Atom)
+        Frag::new(quote!(T::from_f64(#value)), Prec::Atom)
     }
+}
+
+/// Denominators tried for a rational constant.
+const MAX_DENOMINATOR: u32 = 1000;
+/// Decimal forms up to this many characters print as they are (`0.5`,
+/// `0.125`, `1.25`).
+const SHORT_DECIMAL: usize = 8;
+
+/// `Some((p, q))` when `a ≥ 0` is exactly the `f64` nearest `p / q` for a
+/// small denominator `q > 1` (smallest first) and its decimal form is long.
+fn rational(a: f64) -> Option<(u32, u32)> {
+    if format!("{a}").len() <= SHORT_DECIMAL {
+        return None;
+    }
+    (2..=MAX_DENOMINATOR).find_map(|q| {
+        let p = (a * f64::from(q)).round();
+        ((1.0..1e6).contains(&p) && p / f64::from(q) == a).then_some((p as u32, q))
+    })
 }
 
 /// The constant 1 of the scalar type (numerator of a reciprocal).

@@ -18,6 +18,7 @@ struct Inner {
     memo: HashMap<Node, Id>,
     syms: Vec<SymInfo>,
     sym_by_name: HashMap<String, Sym>,
+    labels: HashMap<Id, String>,
 }
 
 /// A hash-consed arena of expression nodes.
@@ -161,6 +162,40 @@ impl Graph {
     /// The symbol called `name`, if any.
     pub fn lookup(&self, name: &str) -> Option<Sym> {
         self.inner.borrow().sym_by_name.get(name).copied()
+    }
+
+    /// Gives node `id` the name `label` for the generated code, unless it
+    /// already has one (the first name wins). A label is a side note: it
+    /// changes no node, no id and no simplification; the emitter uses it for
+    /// the `let` that binds the value (see [`Expr::named`](crate::Expr::named)).
+    /// Symbols and constants keep their own spelling.
+    pub fn set_label(&self, id: Id, label: &str) {
+        if self.with_node(id, |n| matches!(n, Node::Sym(_) | Node::Const(_))) {
+            return;
+        }
+        self.inner
+            .borrow_mut()
+            .labels
+            .entry(id)
+            .or_insert_with(|| label.to_owned());
+    }
+
+    /// The name given to node `id`, if any ([`Graph::set_label`]).
+    pub fn label(&self, id: Id) -> Option<String> {
+        self.inner.borrow().labels.get(&id).cloned()
+    }
+
+    /// Every named node and its name, in arena order.
+    pub fn labels(&self) -> Vec<(Id, String)> {
+        let mut v: Vec<(Id, String)> = self
+            .inner
+            .borrow()
+            .labels
+            .iter()
+            .map(|(&id, l)| (id, l.clone()))
+            .collect();
+        v.sort();
+        v
     }
 
     /// Name and kind of a symbol.

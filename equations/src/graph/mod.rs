@@ -12,7 +12,9 @@
 //! exactly when their ids are equal.
 
 mod arena;
+pub mod func;
 mod node;
 
 pub use arena::{Graph, SymInfo};
+pub use func::{Cost, FuncSpec, PowForm};
 pub use node::{Binary, Const, Id, Node, Sym, SymKind, Unary};

@@ -2,7 +2,9 @@
 //! products) rewritten into the shape a person would write by hand, so
 //! that the emitted code does the same work as a hand-derived form.
 //!
-//! Three rewrites, each over the nodes reachable from a function's outputs:
+//! Three rewrites, each over the nodes reachable from a function's outputs,
+//! with the signs of sums normalized before and after the first (`sign`:
+//! one value per ± pair, so that `S` and `−S` are one `let`):
 //!
 //! 1. **Sums are factored** greedily (multivariate Horner, `horner`): in a
 //!    sum of products, the factor shared by the most terms is taken out,
@@ -29,6 +31,7 @@
 mod cancel;
 mod horner;
 mod pairs;
+pub(crate) mod sign;
 
 use std::collections::HashMap;
 
@@ -37,15 +40,38 @@ use crate::simplify::{konst, term_parts};
 
 /// The lowered roots of `roots` (same values, same order).
 pub fn lower(g: &Graph, roots: &[Id]) -> Vec<Id> {
-    let factored = rebuild(g, roots, |g, _, node, _| match node {
+    let signed = sign::fold_negations(g, roots);
+    let factored = rebuild(g, &signed, |g, _, node, _| match node {
         Node::Add(xs) => horner::factor_sum(g, &xs),
         node => g.intern(node),
     });
+    let factored = sign::fold_negations(g, &factored);
     let cancelled = rebuild(g, &factored, |g, _, node, _| match node {
         Node::Mul(_) => cancel::cancel_parameters(g, g.intern(node)),
         node => g.intern(node),
     });
-    pairs::share_products(g, &cancelled)
+    let shared = pairs::share_products(g, &cancelled);
+    reuse_reciprocals(g, &shared)
+}
+
+/// `b⁻²` written `(b⁻¹)²` where the function binds `b⁻¹` anyway: the
+/// reciprocal is computed once (a multiplication instead of a second
+/// division).
+fn reuse_reciprocals(g: &Graph, roots: &[Id]) -> Vec<Id> {
+    // Only a reciprocal bound to a `let` of its own (more users than the
+    // scheduler turns into divisions) is worth reusing.
+    let uses = sign::use_counts(g, roots);
+    let is_live = |id: Id| uses.get(id.index()).copied().unwrap_or(0) > 2;
+    rebuild(g, roots, |g, _, node, _| {
+        if let Node::Pow(b, e) = node
+            && crate::simplify::const_of(g, e) == Some(-2.0)
+            && let Some(r) = g.find(&Node::Pow(b, konst(g, -1.0)))
+            && is_live(r)
+        {
+            return g.intern(Node::Pow(r, konst(g, 2.0)));
+        }
+        g.intern(node)
+    })
 }
 
 /// Rebuilds the nodes reachable from `roots` in arena (children-first)
@@ -67,6 +93,11 @@ pub(super) fn rebuild(
                 f(g, id, mapped, &map)
             }
         };
+        if new != id
+            && let Some(label) = g.label(id)
+        {
+            g.set_label(new, &label); // the model's name follows the value
+        }
         map.insert(id, new);
     }
     roots.iter().map(|r| map[r]).collect()
@@ -143,6 +174,18 @@ fn merge_powers(g: &Graph, fs: Vec<Id>) -> Vec<Id> {
         }
     }
     out
+}
+
+/// A product as its coefficient and its sorted leaf factors, nested
+/// products flattened: equal for a canonical product and a lowered one that
+/// groups the same factors differently (`None` for a non-product).
+pub(crate) fn product_key(g: &Graph, id: Id) -> Option<(f64, Vec<Id>)> {
+    if !matches!(g.node(id), Node::Mul(_)) {
+        return None;
+    }
+    let (c, mut fs) = flat_factors(g, id);
+    fs.sort_unstable();
+    Some((c, fs))
 }
 
 /// The coefficient and factors of a product, nested products flattened.

@@ -136,12 +136,18 @@ pub fn build<'g>(g: &'g Graph, contacts: &[Contact]) -> PlanarPeg<'g> {
         } else {
             (p("k_wall"), &wall)
         };
+        let tag = c.name();
+        kin.delta.named(&format!("delta_{tag}"));
+        kin.delta.max0().named(&format!("pen_{tag}"));
+        kin.slip.named(&format!("slip_{tag}"));
         let v = hertz::potential(k, kin.delta);
         let elastic = hertz::load(k, kin.delta);
         // Hunt–Crossley: f = k δ^{3/2} max(0, 1 + α δ̇); the damping part
         // f − k δ^{3/2} never makes the contact pull.
         let ddelta = kin.delta.dt(&pairs);
-        let fn_ = elastic * (1.0 + alpha * ddelta).max0();
+        let fn_ = (elastic.named(&format!("elastic_{tag}"))
+            * (1.0 + alpha * ddelta.named(&format!("delta_rate_{tag}"))).max0())
+        .named(&format!("normal_{tag}"));
         let damping = fn_ - elastic;
         // Regularized Coulomb friction along the tangent, against the slip.
         let ft = -mu * fn_ * kin.slip / kin.slip.hypot(vs);

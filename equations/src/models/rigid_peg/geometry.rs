@@ -142,20 +142,29 @@ impl<'g> Geometry<'g> {
     pub fn new(g: &'g Graph, p: &Params<'g>, gamma: Expr<'g>) -> Geometry<'g> {
         let (dh, dp, h) = (p.hole, p.peg, p.height);
         let (s, co) = (gamma.sin(), gamma.cos());
-        let c = 2.0 * dh * (0.5 * (gamma + p.gamma0)).sin() * (0.5 * (gamma - p.gamma0)).sin();
-        let e = (dh - dp) + 2.0 * dp * (0.5 * gamma).sin().square();
-        let a1 = c / (2.0 * s);
-        let a2 = e / (2.0 * s);
-        let s1 = (a2 - a1 * co) / s;
-        let s2 = (a2 * co - a1) / s;
-        let gap = c * co / s.square();
-        let b = (gap * (dh - gap)).sqrt();
-        let half = 0.5 * dh;
-        let lever = 0.5 * h - a2;
+        // Names for the generated code (the values are unchanged).
+        (0.5 * p.gamma0).named("half_gamma0");
+        let half_gamma = (0.5 * gamma).named("half_gamma");
+        let c = 2.0
+            * dh
+            * (0.5 * (gamma + p.gamma0)).sin().named("sin_sum")
+            * (0.5 * (gamma - p.gamma0)).sin();
+        // sin(½(γ − γ0)) is stored as −sin(½(γ0 − γ)).
+        (0.5 * (p.gamma0 - gamma)).sin().named("sin_diff");
+        let c = c.named("delta");
+        let e = ((dh - dp) + 2.0 * dp * half_gamma.sin().square()).named("e");
+        let a1 = (c / (2.0 * s)).named("a1");
+        let a2 = (e / (2.0 * s)).named("a2");
+        let s1 = ((a2 - a1 * co) / s).named("s1");
+        let s2 = ((a2 * co - a1) / s).named("s2");
+        let gap = (c * co / s.square()).named("gap");
+        let b = (gap * (dh - gap)).sqrt().named("bb1");
+        let half = (0.5 * dh).named("half_d");
+        let lever = (0.5 * h - a2).named("lever");
         let eta_c = -lever * s;
         let z_c = lever * co + a1;
         let zero = g.constant(0.0);
-        let ob = half.hypot(a1);
+        let ob = half.hypot(a1).named("ob");
         let normal_b = |sign: f64| [-s1 / ob, sign * b / ob, a1 / ob];
         Geometry {
             c,
