@@ -169,8 +169,27 @@ fn scene_field(field: &str) -> String {
     format!("{t}.{mapped}")
 }
 
-fn to_scene_error(e: HertzError) -> SceneErrors {
+fn to_scene_error(e: HertzError, p: &InsertParams) -> SceneErrors {
     match e {
+        // The model's peg radius and mass are derived from the scene's
+        // clearance ratio and density: say so rather than print the derived
+        // value as if it were the scene's.
+        HertzError::Invalid {
+            field,
+            value,
+            reason,
+        } if matches!(field.as_str(), "peg_radius" | "mass" | "inertia") => {
+            let own = if field == "peg_radius" {
+                p.clearance_ratio
+            } else {
+                p.density
+            };
+            SceneErrors::from(SceneError::invalid(
+                scene_field(&field),
+                own,
+                format!("gives {field} = {value:e}, which {reason}"),
+            ))
+        }
         HertzError::Invalid {
             field,
             value,
@@ -205,8 +224,27 @@ impl InsertCompliantScene {
             c.in_range(&f("com_height"), lc, 0.0, len);
         }
         c.extend(self.integrator.check("integrator"));
-        c.finish()?;
         let r = 0.5 * d * (1.0 - cr);
+        crate::scene::ranges::check_compliant(
+            &mut c,
+            "insert_compliant",
+            &crate::scene::ranges::CompliantFields {
+                hole_diameter: d,
+                clearance_ratio: cr,
+                peg_length: len,
+                peg_fillet: p.peg_fillet,
+                hole_fillet: p.hole_fillet,
+                youngs_modulus: [
+                    p.peg_material.youngs_modulus,
+                    p.hole_material.youngs_modulus,
+                ],
+                poisson_ratio: [p.peg_material.poisson_ratio, p.hole_material.poisson_ratio],
+                load: p.axial_force.abs() + p.radial_force.abs() + p.torque.abs() / r,
+                initial_depth: p.initial_depth,
+                target_depth: p.target_depth,
+            },
+        );
+        c.finish()?;
         let mass = p.density * std::f64::consts::PI * r * r * len;
         let spec = CompliantSpec {
             geometry: PegHoleGeometry {
@@ -235,9 +273,9 @@ impl InsertCompliantScene {
                 ContactsSpec::Lean => ContactSet::Lean,
             },
         };
-        let params = CompliantParams::try_new(spec).map_err(to_scene_error)?;
+        let params = CompliantParams::try_new(spec).map_err(|e| to_scene_error(e, p))?;
         let initial = if p.initial_tilt > 0.0 {
-            PegState::two_point(&params, p.initial_tilt, 0.0).map_err(to_scene_error)?
+            PegState::two_point(&params, p.initial_tilt, 0.0).map_err(|e| to_scene_error(e, p))?
         } else {
             PegState::centred(&params, p.initial_depth)
         };
@@ -265,6 +303,10 @@ impl InsertCompliantScene {
 }
 
 impl Scene for Ready {
+    fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
+        self.scene.integrator.work("integrator")
+    }
+
     fn describe(&self) -> String {
         let p = &self.scene.insert_compliant;
         format!(

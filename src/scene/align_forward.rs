@@ -228,6 +228,10 @@ impl AlignForwardScene {
 }
 
 impl Scene for AlignForwardScene {
+    fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
+        self.integrator.work("integrator")
+    }
+
     fn describe(&self) -> String {
         let (p, i, l) = (self.peg.params(), &self.initial, &self.loads);
         format!(
@@ -248,7 +252,7 @@ impl Scene for AlignForwardScene {
         let model = self.forward_model()?;
         let spec = &self.integrator;
         let (method, mut options): (_, Options) = solver_config(spec)?;
-        options.output = OutputMode::AtTimes(spec.output_times());
+        options.output = OutputMode::AtTimes(spec.output_times().collect());
         let x0 = self.initial_state();
         ctx.progress.set_span(spec.t0, spec.t_end);
         let progress = &mut ctx.progress;

@@ -117,6 +117,10 @@ impl DoublePendulumScene {
 }
 
 impl Scene for DoublePendulumScene {
+    fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
+        self.integrator.work("integrator")
+    }
+
     fn describe(&self) -> String {
         let p = &self.double_pendulum;
         format!(

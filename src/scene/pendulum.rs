@@ -102,6 +102,10 @@ impl PendulumScene {
 }
 
 impl Scene for PendulumScene {
+    fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
+        self.integrator.work("integrator")
+    }
+
     fn describe(&self) -> String {
         let p = &self.pendulum;
         format!(
