@@ -123,3 +123,27 @@ fn degenerate_arguments_that_used_to_loop_return_nan() {
         Err(HertzError::LineContact { .. })
     ));
 }
+
+/// A pendulum released from rest with a tolerance far below f64
+/// resolution, or with a first-step hint of 1e-300 s, takes steps instead
+/// of stopping at t0 ("step size too small" before any step).
+#[test]
+fn first_step_from_rest_is_not_below_the_step_floor() {
+    use nalgebra::Vector2;
+    use pegdyn::integrate::{Method, Options, Solver, StopReason};
+    use pegdyn::system::FnSystem;
+    let g = 9.80665;
+    let pendulum = FnSystem(move |_t: f64, x: &Vector2<f64>| Vector2::new(x[1], -g * x[0].sin()));
+    for (atol, h0) in [(1e-25, None), (1e-12, Some(1e-300))] {
+        let mut options = Options::with_tolerances(1e-10, atol);
+        options.h0 = h0;
+        let sol = Solver::new(Method::Dopri5, options)
+            .solve(&pendulum, 0.0, Vector2::new(1.0, 0.0), 1.0)
+            .unwrap();
+        assert_eq!(sol.stop, StopReason::ReachedEnd, "atol {atol:e}, h0 {h0:?}");
+        assert!(sol.stats.steps > 10);
+        // The small-angle period is 2.006 s: at t = 1 s the pendulum has
+        // swung to the other side.
+        assert!(sol.x_final[0] < -0.9, "{}", sol.x_final[0]);
+    }
+}

@@ -191,7 +191,9 @@ pub fn try_solve(ratio: f64) -> Result<Ellipticity, HertzError> {
     let el = from_log_kappa(s);
     // Without convergence the bracket is still a valid answer if it has
     // shrunk to a few ulps of the root's function value.
-    if !converged && !(f_lo.abs().min(f_hi.abs()) < 1e-12) {
+    if !converged
+        && f_lo.abs().min(f_hi.abs()).partial_cmp(&1e-12) != Some(std::cmp::Ordering::Less)
+    {
         return Err(no_convergence);
     }
     if [

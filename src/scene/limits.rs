@@ -104,7 +104,7 @@ impl Limits {
         let mut errors = Vec::new();
         for item in work {
             let bound = self.get(item.limit).unwrap_or(0) as f64;
-            if !(item.count <= bound) {
+            if item.count.is_nan() || item.count > bound {
                 errors.push(SceneError::invalid(
                     item.field.clone(),
                     Raw(format!("{:e}", item.count)),
@@ -121,7 +121,7 @@ impl Limits {
         }
         let bytes: f64 = work.iter().map(|w| w.count * w.bytes_each).sum();
         let mib = bytes / (1024.0 * 1024.0);
-        if !(mib <= self.max_memory_mb as f64) {
+        if mib.is_nan() || mib > self.max_memory_mb as f64 {
             let worst = work
                 .iter()
                 .max_by(|a, b| (a.count * a.bytes_each).total_cmp(&(b.count * b.bytes_each)));

@@ -111,7 +111,7 @@ pub fn check_compliant(c: &mut Checker, table: &str, f: &CompliantFields) {
     if e_star.is_finite() && e_star > 0.0 && radius > 0.0 && f.load.is_finite() && f.load > 0.0 {
         let a = (3.0 * f.load * radius / (4.0 * e_star)).cbrt();
         let ratio = a / radius;
-        if !(ratio <= MAX_CONTACT_OVER_RADIUS) {
+        if ratio.is_nan() || ratio > MAX_CONTACT_OVER_RADIUS {
             let field = if f.peg_fillet <= f.hole_fillet {
                 "peg_fillet"
             } else {
