@@ -254,12 +254,15 @@ impl Scene for Fig9Scene {
             (None, n) => ("gamma.count", n.unwrap_or(2) as f64),
         };
         // One row of a dozen numbers per grid point, and the plot's copy.
-        vec![crate::scene::limits::WorkItem::new(
-            field,
-            "max_grid_points",
-            gammas * self.motion.psidot.len() as f64,
-            256.0,
-        )]
+        vec![
+            crate::scene::limits::WorkItem::new(
+                field,
+                "max_grid_points",
+                gammas * self.motion.psidot.len() as f64,
+                256.0,
+            )
+            .with_value(gammas),
+        ]
     }
 
     fn describe(&self) -> String {

@@ -208,13 +208,19 @@ impl IntegratorSpec {
                 "max_output_samples",
                 samples,
                 512.0,
-            ),
+            )
+            .with_value(if self.output_interval.is_some() {
+                self.output_interval()
+            } else {
+                self.t_end
+            }),
             WorkItem::new(
                 format!("{table}.max_steps"),
                 "max_steps",
                 self.max_steps as f64,
                 0.0,
-            ),
+            )
+            .with_value(self.max_steps as f64),
         ]
     }
 

@@ -131,7 +131,7 @@ impl Scene for JammingScene {
         )];
         if let Some(s) = &self.sweep {
             let n = s.n as f64;
-            work.push(WorkItem::new("sweep.n", "max_runs", n * n, 256.0));
+            work.push(WorkItem::new("sweep.n", "max_runs", n * n, 256.0).with_value(n));
         }
         work
     }

@@ -20,7 +20,7 @@
 //! use pegdyn::scene::limits::{Limits, WorkItem};
 //! let work = [WorkItem::new("integrator.output_interval", "max_output_samples", 1e12, 256.0)];
 //! let e = Limits::default().check(&work).unwrap_err().to_string();
-//! assert!(e.contains("integrator.output_interval") && e.contains("1e12"), "{e}");
+//! assert!(e.contains("integrator.output_interval") && e.contains("1.000e12"), "{e}");
 //! ```
 
 use serde::Deserialize;
@@ -66,6 +66,8 @@ pub struct WorkItem {
     pub count: f64,
     /// Estimated bytes stored per counted item (0 when nothing is stored).
     pub bytes_each: f64,
+    /// The field's own value, shown in the error (else the estimate is).
+    pub value: Option<f64>,
 }
 
 impl WorkItem {
@@ -77,7 +79,21 @@ impl WorkItem {
             limit,
             count,
             bytes_each,
+            value: None,
         }
+    }
+
+    /// The same item, showing the field's own value `v` in errors.
+    pub fn with_value(mut self, v: f64) -> Self {
+        self.value = Some(v);
+        self
+    }
+
+    fn shown(&self) -> Raw {
+        Raw(match self.value {
+            Some(v) => format!("{v:?}"),
+            None => format!("{:.4e}", self.count),
+        })
     }
 }
 
@@ -107,7 +123,7 @@ impl Limits {
             if item.count.is_nan() || item.count > bound {
                 errors.push(SceneError::invalid(
                     item.field.clone(),
-                    Raw(format!("{:e}", item.count)),
+                    item.shown(),
                     format!(
                         "asks for about {:.3e} {} ({}), above the limit {bound:e}; \
                          raise `[limits] {} = ...` if this is intended",
@@ -127,7 +143,7 @@ impl Limits {
                 .max_by(|a, b| (a.count * a.bytes_each).total_cmp(&(b.count * b.bytes_each)));
             errors.push(SceneError::invalid(
                 worst.map_or("limits", |w| w.field.as_str()),
-                Raw(format!("{mib:.3e} MiB")),
+                worst.map_or_else(|| Raw(format!("{mib:.3e} MiB")), WorkItem::shown),
                 format!(
                     "the stored results would need about {mib:.3e} MiB, above the limit of {} MiB; \
                      raise `[limits] max_memory_mb = ...` if this is intended",
@@ -184,7 +200,7 @@ mod tests {
         let text = e.to_string();
         assert_eq!(e.errors.len(), 3, "{text}");
         assert!(
-            text.contains("gamma.count") && text.contains("9.2e18"),
+            text.contains("gamma.count") && text.contains("9.200e18"),
             "{text}"
         );
         assert!(
