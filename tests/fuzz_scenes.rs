@@ -17,7 +17,7 @@ fn number_spans_find_the_values_of_a_scene() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(fuzz::cases(96)))]
+    #![proptest_config(ProptestConfig::with_cases(fuzz::cases(512)))]
 
     /// Arbitrary TOML never makes the parser or the validator panic.
     #[test]
@@ -27,7 +27,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(fuzz::cases(12)))]
+    #![proptest_config(ProptestConfig::with_cases(fuzz::cases(128)))]
 
     /// Extreme but well-typed scenes are refused with a reason, or run to
     /// a summary or a typed error, leaving only complete, finite files.
