@@ -312,13 +312,13 @@ impl Scene for Ready {
         format!(
             "compliant peg-in-hole D = {} m, c = {}, mu = {}, f1 = {} N, f2 = {} N, M = {} N m, \
              start tilt {} rad, k_edge = {:.3e} N/m^1.5; {}",
-            p.hole_diameter,
-            p.clearance_ratio,
-            p.friction,
-            p.axial_force,
-            p.radial_force,
-            p.torque,
-            p.initial_tilt,
+            crate::scene::summary::significant(p.hole_diameter),
+            crate::scene::summary::significant(p.clearance_ratio),
+            crate::scene::summary::significant(p.friction),
+            crate::scene::summary::significant(p.axial_force),
+            crate::scene::summary::significant(p.radial_force),
+            crate::scene::summary::significant(p.torque),
+            crate::scene::summary::significant(p.initial_tilt),
             self.built.params.pair.edge.stiffness(),
             self.scene.integrator.describe()
         )

@@ -236,14 +236,14 @@ impl Scene for AlignForwardScene {
         let (p, i, l) = (self.peg.params(), &self.initial, &self.loads);
         format!(
             "rigid peg forward dynamics: D = {} m, d = {} m, H = {} m, f = {}, gamma(0) = {} rad, psidot(0) = {} 1/s, M_gamma = {} N m, M_psi = {} N m; {}",
-            p.hole_diameter,
-            p.peg_diameter,
-            p.height,
-            p.friction,
-            i.gamma,
-            i.psidot,
-            l.m_gamma,
-            l.m_psi,
+            crate::scene::summary::significant(p.hole_diameter),
+            crate::scene::summary::significant(p.peg_diameter),
+            crate::scene::summary::significant(p.height),
+            crate::scene::summary::significant(p.friction),
+            crate::scene::summary::significant(i.gamma),
+            crate::scene::summary::significant(i.psidot),
+            crate::scene::summary::significant(l.m_gamma),
+            crate::scene::summary::significant(l.m_psi),
             self.integrator.describe()
         )
     }

@@ -269,11 +269,11 @@ impl Scene for Fig9Scene {
         let p = self.peg.params();
         format!(
             "rigid peg on the hole edge (Fig. 9): D = {} m, d = {} m, H = {} m, f = {}, gammadot = {} 1/s, psidot = {:?} 1/s",
-            p.hole_diameter,
-            p.peg_diameter,
-            p.height,
-            p.friction,
-            self.motion.gammadot,
+            crate::scene::summary::significant(p.hole_diameter),
+            crate::scene::summary::significant(p.peg_diameter),
+            crate::scene::summary::significant(p.height),
+            crate::scene::summary::significant(p.friction),
+            crate::scene::summary::significant(self.motion.gammadot),
             self.motion.psidot
         )
     }

@@ -230,7 +230,11 @@ impl IntegratorSpec {
             (Method::Rk4, Some(h)) => format!("rk4 h={h:e} s"),
             (m, _) => format!("{} rtol={:e} atol={:e}", m.name(), self.rtol, self.atol),
         };
-        format!("{m}, t in [{}, {}] s", self.t0, self.t_end)
+        format!(
+            "{m}, t in [{}, {}] s",
+            crate::scene::summary::significant(self.t0),
+            crate::scene::summary::significant(self.t_end)
+        )
     }
 }
 
