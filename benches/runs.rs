@@ -93,7 +93,7 @@ fn rigid_run(
     rtol: f64,
 ) -> Trajectory {
     let mut o = Options::with_tolerances(rtol, rtol * spec.atol / spec.rtol);
-    o.output = OutputMode::AtTimes(spec.output_times());
+    o.output = OutputMode::AtTimes(spec.output_times().collect());
     simulate(model, x0, spec.t0, spec.t_end, method, &o).expect("valid scene")
 }
 

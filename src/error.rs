@@ -188,6 +188,33 @@ pub enum OutputError {
         /// The plotting library's message.
         message: String,
     },
+    /// A value to be written is NaN or infinite: the run went non-finite.
+    /// The file is not written (its partial temporary copy is removed).
+    #[error(
+        "{path}: column `{column}` is {value} in data row {row} (first column = {first}); \
+         the model left the finite range there — likely an extreme scene value \
+         (a rate, load, modulus or scale of zero or of many decades); nothing was written to this file"
+    )]
+    NonFinite {
+        /// The output file.
+        path: PathBuf,
+        /// The first non-finite column's name.
+        column: String,
+        /// Its value (`NaN`, `inf`, `-inf`).
+        value: String,
+        /// 0-based data row index.
+        row: usize,
+        /// The row's first column (time or the swept variable), as written.
+        first: String,
+    },
+    /// The output would replace the scene file the run was started from.
+    #[error(
+        "refusing to write {path}: it is the scene file itself; choose another --out directory"
+    )]
+    WouldOverwriteScene {
+        /// The output file (the scene file).
+        path: PathBuf,
+    },
     /// A plot has no finite data point to scale its axes by.
     #[error("cannot draw {path}: panel {panel:?} has no finite data point")]
     EmptyPlot {

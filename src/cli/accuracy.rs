@@ -18,6 +18,15 @@ pub fn accuracy(csv: Option<&Path>, only: Option<&str>) -> ExitCode {
             return ExitCode::FAILURE;
         }
     };
+    if let Some(sub) = only
+        && report.functions.is_empty()
+    {
+        errln!(
+            "error: --only {sub:?} matches no grid point label: nothing to measure \
+             (labels are printed in the table's `worst at` column of a full run)"
+        );
+        return ExitCode::FAILURE;
+    }
     if !pegdyn::generated::SOURCE.contains("Stable numerical rewrites: OFF") {
         outln!("stable numerical rewrites: on");
     } else {
@@ -26,7 +35,7 @@ pub fn accuracy(csv: Option<&Path>, only: Option<&str>) -> ExitCode {
     outln!("rounding error of the f64 evaluation against double-double, same f64 inputs\n");
     outln!("{report}");
     if let Some(path) = csv
-        && let Err(e) = std::fs::write(path, report.to_csv())
+        && let Err(e) = pegdyn::output::atomic::write(path, report.to_csv().as_bytes())
     {
         errln!("error: cannot write {}: {e}", path.display());
         return ExitCode::FAILURE;

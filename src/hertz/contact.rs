@@ -66,8 +66,10 @@ impl HertzContact {
     /// Sets up the contact of two bodies of curvatures `curv` and materials
     /// `body1`, `body2`.
     ///
-    /// Refuses non-finite curvatures (field `curvature`) and contacts where
-    /// a relative curvature is not positive ([`HertzError::NotPointContact`]).
+    /// Refuses non-finite curvatures (field `curvature`), contacts where
+    /// a relative curvature is not positive ([`HertzError::NotPointContact`])
+    /// and line contacts ([`HertzError::LineContact`], `B/A` above
+    /// [`ellipticity::MAX_RATIO`]).
     ///
     /// ```
     /// use pegdyn::hertz::{Curvatures, EllipticityMethod, HertzContact, Material};
@@ -110,17 +112,48 @@ impl HertzContact {
         if !(a > 0.0 && b > 0.0) {
             return Err(HertzError::NotPointContact { a, b });
         }
+        if b / a > ellipticity::MAX_RATIO {
+            return Err(HertzError::LineContact {
+                ratio: b / a,
+                limit: ellipticity::MAX_RATIO,
+            });
+        }
+        let sum_curvature = 2.0 * (a + b);
+        if !sum_curvature.is_finite() {
+            return Err(HertzError::Invalid {
+                field: "curvature".to_owned(),
+                value: sum_curvature,
+                reason: "the curvature sum overflows f64",
+            });
+        }
+        let modulus = contact_modulus(body1, body2);
+        if !(modulus.is_finite() && modulus > 0.0) {
+            return Err(HertzError::Invalid {
+                field: "youngs_modulus".to_owned(),
+                value: modulus,
+                reason: "the contact modulus E* must be finite and > 0",
+            });
+        }
         let ellipticity = match method {
-            EllipticityMethod::Exact => ellipticity::solve(b / a),
+            EllipticityMethod::Exact => ellipticity::try_solve(b / a)?,
             EllipticityMethod::HamrockBrewe => ellipticity::hamrock_brewe(b / a),
         };
-        Ok(HertzContact {
-            sum_curvature: 2.0 * (a + b),
+        let contact = HertzContact {
+            sum_curvature,
             relative: (a, b),
-            contact_modulus: contact_modulus(body1, body2),
+            contact_modulus: modulus,
             ellipticity,
             coefficients: Coefficients::of(&ellipticity),
-        })
+        };
+        let k = contact.stiffness();
+        if !(k.is_finite() && k > 0.0) {
+            return Err(HertzError::Invalid {
+                field: "curvature".to_owned(),
+                value: sum_curvature,
+                reason: "the contact stiffness E* sqrt(8/sum of curvatures) leaves the f64 range",
+            });
+        }
+        Ok(contact)
     }
 
     /// `(3Q / (2 Σρ E*))^{1/3}`, the length scale of (9)–(10) (m).

@@ -19,12 +19,33 @@
 /// `TOL⁶ ≈ 1e-18`.
 const TOL: f64 = 1e-3;
 
+/// Iteration cap of the duplication loops. Each duplication divides the
+/// relative spread of the arguments by about 4, so valid arguments (finite,
+/// at most one zero, ratios within the f64 range) converge in fewer than 40
+/// steps; arguments outside the domain return NaN at the cap instead of
+/// looping forever.
+pub const MAX_DUPLICATIONS: usize = 100;
+
+/// Whether `(x, y, z)` lies in the domain of `R_F` (all finite and `≥ 0`,
+/// at most one of them zero).
+fn rf_domain(x: f64, y: f64, z: f64) -> bool {
+    let zeros = [x, y, z].iter().filter(|v| **v == 0.0).count();
+    [x, y, z].iter().all(|v| v.is_finite() && *v >= 0.0) && zeros <= 1
+}
+
 /// Carlson's symmetric integral
 /// `R_F(x, y, z) = ½ ∫₀^∞ dt / √((t + x)(t + y)(t + z))`,
 /// for `x, y, z ≥ 0` with at most one of them zero.
+///
+/// Returns NaN outside that domain (negative, non-finite, or two zero
+/// arguments) and if the duplication does not settle within
+/// [`MAX_DUPLICATIONS`] steps; it never loops unboundedly.
 pub fn carlson_rf(x: f64, y: f64, z: f64) -> f64 {
+    if !rf_domain(x, y, z) {
+        return f64::NAN;
+    }
     let (mut x, mut y, mut z) = (x, y, z);
-    loop {
+    for _ in 0..MAX_DUPLICATIONS {
         let a = (x + y + z) / 3.0;
         let (dx, dy, dz) = (1.0 - x / a, 1.0 - y / a, 1.0 - z / a);
         if dx.abs().max(dy.abs()).max(dz.abs()) < TOL {
@@ -39,16 +60,23 @@ pub fn carlson_rf(x: f64, y: f64, z: f64) -> f64 {
         y = 0.25 * (y + lambda);
         z = 0.25 * (z + lambda);
     }
+    f64::NAN
 }
 
 /// Carlson's symmetric integral of the second kind
 /// `R_D(x, y, z) = (3/2) ∫₀^∞ dt / (√((t + x)(t + y)) (t + z)^{3/2})`,
 /// for `x, y ≥ 0` (not both zero) and `z > 0`.
+///
+/// Returns NaN outside that domain and if the duplication does not settle
+/// within [`MAX_DUPLICATIONS`] steps.
 pub fn carlson_rd(x: f64, y: f64, z: f64) -> f64 {
+    if !(rf_domain(x, y, z) && z > 0.0) {
+        return f64::NAN;
+    }
     let (mut x, mut y, mut z) = (x, y, z);
     let mut sum = 0.0;
     let mut fac = 1.0;
-    loop {
+    for _ in 0..MAX_DUPLICATIONS {
         let a = (x + y + 3.0 * z) / 5.0;
         let (dx, dy, dz) = (1.0 - x / a, 1.0 - y / a, 1.0 - z / a);
         if dx.abs().max(dy.abs()).max(dz.abs()) < TOL {
@@ -72,6 +100,7 @@ pub fn carlson_rd(x: f64, y: f64, z: f64) -> f64 {
         y = 0.25 * (y + lambda);
         z = 0.25 * (z + lambda);
     }
+    f64::NAN
 }
 
 /// The complete elliptic integrals of one parameter, with the two
@@ -90,7 +119,8 @@ pub struct CompleteIntegrals {
 
 /// `K`, `E` and the two differences at parameter `m = e²` given through its
 /// complement `mc = 1 − m` (pass the complement so that `m` close to 1 keeps
-/// its digits). Requires `0 < mc ≤ 1`.
+/// its digits). Requires `0 < mc ≤ 1`; outside it (or for NaN) every
+/// field is NaN.
 ///
 /// ```
 /// use pegdyn::hertz::elliptic::complete_integrals;
@@ -99,6 +129,14 @@ pub struct CompleteIntegrals {
 /// assert!((i.e - 1.350_643_881_047_675_5).abs() < 1e-15);
 /// ```
 pub fn complete_integrals(mc: f64) -> CompleteIntegrals {
+    if !(mc > 0.0 && mc <= 1.0) {
+        return CompleteIntegrals {
+            k: f64::NAN,
+            e: f64::NAN,
+            k_minus_e_over_m: f64::NAN,
+            e_minus_mc_k_over_m: f64::NAN,
+        };
+    }
     let m = 1.0 - mc;
     let k = carlson_rf(0.0, mc, 1.0);
     let k_minus_e_over_m = carlson_rd(0.0, mc, 1.0) / 3.0;

@@ -16,7 +16,18 @@
 //! [`hamrock_brewe`] is the cheaper curve fit.
 
 use super::elliptic::{CompleteIntegrals, carlson_rd, complete_integrals};
+use super::error::HertzError;
 use std::f64::consts::PI;
+
+/// The largest curvature ratio `B/A` [`try_solve`] accepts. At `B/A = 10¹²`
+/// the ellipse's axis ratio `a/b` is about `10⁷` and `1 − m ≈ 10⁻¹⁴`: beyond
+/// it the contact is a line contact and `1 − m` underflows the digits the
+/// integrals need.
+pub const MAX_RATIO: f64 = 1e12;
+
+/// Iteration cap of the bracketed root search in [`try_solve`] (the Illinois
+/// iteration needs about 10 steps to reach rounding).
+pub const MAX_ITERATIONS: usize = 200;
 
 /// The shape of the contact ellipse and the elliptic integrals at its
 /// eccentricity.
@@ -58,7 +69,9 @@ fn from_log_kappa(s: f64) -> Ellipticity {
 
 /// The exact ellipticity for the curvature ratio `ratio = B/A ≥ 1`.
 ///
-/// Values below 1 are treated as 1 (a circle); callers order `A ≤ B`.
+/// Values in `(0, 1]` are treated as 1 (a circle); callers order `A ≤ B`.
+/// Input [`try_solve`] refuses (NaN, `≤ 0`, above [`MAX_RATIO`]) gives an
+/// all-NaN result; use [`try_solve`] to learn why.
 /// The result satisfies `B/A` to a relative error of a few ulps.
 ///
 /// ```
@@ -69,33 +82,94 @@ fn from_log_kappa(s: f64) -> Ellipticity {
 /// assert!((el.kappa - 1.486 / 0.717).abs() < 0.01);
 /// ```
 pub fn solve(ratio: f64) -> Ellipticity {
-    // ratio ≤ 1 and NaN both mean "circle"; callers order A ≤ B.
-    if ratio.is_nan() || ratio <= 1.0 {
-        return from_log_kappa(0.0);
+    match try_solve(ratio) {
+        Ok(el) => el,
+        Err(_) => Ellipticity {
+            kappa: f64::NAN,
+            k: f64::NAN,
+            e: f64::NAN,
+            k_minus_e_over_m: f64::NAN,
+            e_minus_mc_k_over_m: f64::NAN,
+        },
     }
+}
+
+/// [`solve`] with its failures typed: the exact ellipticity for the
+/// curvature ratio `ratio = B/A`, `1 ≤ ratio ≤` [`MAX_RATIO`] (values in
+/// `(0, 1]` mean a circle).
+///
+/// # Errors
+/// [`HertzError::Invalid`] (field `curvature_ratio`) for NaN or a ratio
+/// `≤ 0`; [`HertzError::LineContact`] above [`MAX_RATIO`] (including +inf);
+/// [`HertzError::NoConvergence`] if the root search does not settle within
+/// [`MAX_ITERATIONS`] steps.
+///
+/// ```
+/// use pegdyn::hertz::ellipticity::try_solve;
+/// assert!(try_solve(3.0).is_ok());
+/// assert!(try_solve(f64::NAN).is_err());
+/// assert!(try_solve(1e200).is_err());
+/// ```
+pub fn try_solve(ratio: f64) -> Result<Ellipticity, HertzError> {
+    if ratio.is_nan() || ratio <= 0.0 {
+        return Err(HertzError::Invalid {
+            field: "curvature_ratio".to_owned(),
+            value: ratio,
+            reason: "must be a positive number",
+        });
+    }
+    if ratio > MAX_RATIO {
+        return Err(HertzError::LineContact {
+            ratio,
+            limit: MAX_RATIO,
+        });
+    }
+    // ratio ≤ 1 means "circle"; callers order A ≤ B.
+    if ratio <= 1.0 {
+        return Ok(from_log_kappa(0.0));
+    }
+    let no_convergence = HertzError::NoConvergence {
+        kernel: "ellipticity solve",
+        input: ratio,
+        iterations: MAX_ITERATIONS,
+    };
     let target = ratio.ln();
     let h = |s: f64| log_ratio(s) - target;
     // ln(B/A) grows about 1.5 times as fast as ln(a/b): the bracket [0, ln ratio]
-    // holds the root whenever ratio > 1; widen it only as a safeguard.
+    // holds the root whenever ratio > 1; widen it only as a safeguard, a
+    // bounded number of times.
     let (mut lo, mut hi) = (0.0_f64, target.max(1e-300));
     let (mut f_lo, mut f_hi) = (h(lo), h(hi));
+    let mut widenings = 0;
     while f_hi < 0.0 {
+        widenings += 1;
+        if widenings > 60 {
+            return Err(no_convergence);
+        }
         lo = hi;
         f_lo = f_hi;
         hi *= 2.0;
         f_hi = h(hi);
     }
+    if !(f_lo.is_finite() && f_hi.is_finite()) {
+        return Err(no_convergence);
+    }
     // Illinois (modified regula falsi): superlinear, never leaves the bracket.
     let mut side = 0i8;
-    for _ in 0..200 {
+    let mut converged = false;
+    for _ in 0..MAX_ITERATIONS {
         if hi - lo <= 4.0 * f64::EPSILON * hi {
+            converged = true;
             break;
         }
         let s = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
         let s = if s > lo && s < hi { s } else { 0.5 * (lo + hi) };
         let f = h(s);
         if f == 0.0 {
-            return from_log_kappa(s);
+            return Ok(from_log_kappa(s));
+        }
+        if f.is_nan() {
+            return Err(no_convergence);
         }
         if f < 0.0 {
             lo = s;
@@ -114,7 +188,28 @@ pub fn solve(ratio: f64) -> Ellipticity {
         }
     }
     let s = if f_lo.abs() < f_hi.abs() { lo } else { hi };
-    from_log_kappa(s)
+    let el = from_log_kappa(s);
+    // Without convergence the bracket is still a valid answer if it has
+    // shrunk to a few ulps of the root's function value.
+    if !converged
+        && f_lo.abs().min(f_hi.abs()).partial_cmp(&1e-12) != Some(std::cmp::Ordering::Less)
+    {
+        return Err(no_convergence);
+    }
+    if [
+        el.kappa,
+        el.k,
+        el.e,
+        el.k_minus_e_over_m,
+        el.e_minus_mc_k_over_m,
+    ]
+    .iter()
+    .all(|v| v.is_finite())
+    {
+        Ok(el)
+    } else {
+        Err(no_convergence)
+    }
 }
 
 /// The Hamrock–Brewe curve fits (B. J. Hamrock, D. Brewe, *Simplified

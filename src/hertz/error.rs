@@ -25,6 +25,29 @@ pub enum HertzError {
         /// The larger relative curvature `B` (1/m).
         b: f64,
     },
+    /// The curvature ratio `B/A` is so large that the contact ellipse is
+    /// effectively a line (`a/b` beyond about `10⁷`), where Hertz's point
+    /// contact does not apply and the elliptic integrals lose their digits.
+    #[error(
+        "curvature ratio B/A = {ratio:e} exceeds {limit:e}: the contact is a line contact, \
+         outside Hertz's elliptical point-contact solution"
+    )]
+    LineContact {
+        /// The ratio `B/A` given.
+        ratio: f64,
+        /// The largest ratio accepted ([`super::ellipticity::MAX_RATIO`]).
+        limit: f64,
+    },
+    /// An iterative kernel did not converge within its iteration cap.
+    #[error("{kernel} did not converge within {iterations} iterations for input {input:e}")]
+    NoConvergence {
+        /// The kernel, e.g. `ellipticity solve`.
+        kernel: &'static str,
+        /// The input it was given.
+        input: f64,
+        /// The iteration cap reached.
+        iterations: usize,
+    },
 }
 
 impl HertzError {

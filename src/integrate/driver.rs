@@ -195,6 +195,14 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
             &mut stats,
         ),
     };
+    if fixed.is_none() {
+        // A first step (a user hint, or the estimate from a state at rest
+        // with a tolerance far below f64 resolution) under the step-size
+        // floor would stop the run at t0 before any step: start above the
+        // floor and let the controller reject it if it is too large.
+        let floor0 = 16.0 * f64::EPSILON * t0.abs().max(t_end.abs()).max(f64::MIN_POSITIVE);
+        h = h.max(64.0 * floor0).min(h_max);
+    }
     let needs_dense = !events.is_empty() || recorder.times.is_some();
     let mut last_rejected = false;
     let mut last_nonfinite = false;

@@ -35,14 +35,33 @@ pub fn format_f64(v: f64) -> String {
     }
 }
 
-/// Writes a CSV file row by row.
+/// Writes a CSV file row by row, under a temporary name that
+/// [`CsvWriter::finish`] renames into place ([`super::atomic`]): a file that
+/// is not finished (an error, a non-finite value) never appears.
+///
+/// Every value must be finite: a NaN or infinity is refused with
+/// [`OutputError::NonFinite`] naming the column and row, so that no CSV of
+/// NaN is ever left behind.
 #[derive(Debug)]
 pub struct CsvWriter {
     path: PathBuf,
+    tmp: PathBuf,
     out: BufWriter<File>,
+    header: Vec<String>,
     columns: usize,
     rows: usize,
     line: String,
+    done: bool,
+    infinite_ok: Vec<bool>,
+}
+
+impl Drop for CsvWriter {
+    fn drop(&mut self) {
+        if !self.done {
+            // Best effort: an unfinished temporary file is garbage.
+            let _ = std::fs::remove_file(&self.tmp);
+        }
+    }
 }
 
 impl CsvWriter {
@@ -53,16 +72,34 @@ impl CsvWriter {
             path: path.to_path_buf(),
             source,
         };
-        let file = File::create(path).map_err(io)?;
+        if super::atomic::is_protected(path) {
+            return Err(OutputError::WouldOverwriteScene {
+                path: path.to_path_buf(),
+            });
+        }
+        let tmp = super::atomic::temp_path(path);
+        let file = File::create(&tmp).map_err(io)?;
         let mut w = CsvWriter {
             path: path.to_path_buf(),
+            tmp,
             out: BufWriter::new(file),
+            header: header.iter().map(|h| (*h).to_owned()).collect(),
             columns: header.len(),
             rows: 0,
             line: String::new(),
+            done: false,
+            infinite_ok: vec![false; header.len()],
         };
         writeln!(w.out, "{}", header.join(",")).map_err(io)?;
         Ok(w)
+    }
+
+    /// Lets column `name` hold ±infinity where the table means it (e.g. "no
+    /// finite angle exists"); NaN stays refused.
+    pub fn allow_infinite(&mut self, name: &str) {
+        for (ok, h) in self.infinite_ok.iter_mut().zip(&self.header) {
+            *ok |= h == name;
+        }
     }
 
     /// Appends one row; it must have as many values as the header.
@@ -74,6 +111,12 @@ impl CsvWriter {
                 got: values.len(),
                 expected: self.columns,
             });
+        }
+        let bad = |(i, v): (usize, &f64)| {
+            v.is_nan() || (v.is_infinite() && !self.infinite_ok.get(i).copied().unwrap_or(false))
+        };
+        if let Some(i) = values.iter().enumerate().position(bad) {
+            return Err(self.non_finite(i, &format_f64(values[i]), &format_f64(values[0])));
         }
         self.line.clear();
         for (i, v) in values.iter().enumerate() {
@@ -104,6 +147,14 @@ impl CsvWriter {
                 expected: self.columns,
             });
         }
+        let bad = |(i, c): (usize, &&str)| {
+            let c = c.trim_start_matches(['-', '+']).to_ascii_lowercase();
+            let infinite = c == "inf" || c == "infinity";
+            c == "nan" || (infinite && !self.infinite_ok.get(i).copied().unwrap_or(false))
+        };
+        if let Some(i) = cells.iter().enumerate().position(bad) {
+            return Err(self.non_finite(i, cells[i], cells[0]));
+        }
         self.line.clear();
         self.line.push_str(&cells.join(","));
         self.line.push('\n');
@@ -116,18 +167,33 @@ impl CsvWriter {
             })
     }
 
+    fn non_finite(&self, column: usize, value: &str, first: &str) -> OutputError {
+        OutputError::NonFinite {
+            path: self.path.clone(),
+            column: self.header.get(column).cloned().unwrap_or_default(),
+            value: value.to_owned(),
+            row: self.rows,
+            first: first.to_owned(),
+        }
+    }
+
     /// Number of data rows written so far.
     pub fn rows(&self) -> usize {
         self.rows
     }
 
-    /// Flushes the file; returns its path.
+    /// Flushes the file and renames it into place; returns its path.
     pub fn finish(mut self) -> Result<PathBuf, OutputError> {
         self.out.flush().map_err(|source| OutputError::Io {
             path: self.path.clone(),
             source,
         })?;
-        Ok(self.path)
+        self.done = true;
+        if let Err(e) = super::atomic::commit(&self.tmp, &self.path) {
+            let _ = std::fs::remove_file(&self.tmp);
+            return Err(e);
+        }
+        Ok(self.path.clone())
     }
 }
 

@@ -40,10 +40,7 @@ impl Figure {
     /// Renders and writes to `path`.
     pub fn save(&self, path: &Path) -> Result<(), OutputError> {
         let svg = self.render_for(path)?;
-        std::fs::write(path, svg).map_err(|source| OutputError::Io {
-            path: path.to_path_buf(),
-            source,
-        })
+        super::atomic::write(path, svg.as_bytes())
     }
 
     fn render_for(&self, path: &Path) -> Result<String, OutputError> {

@@ -131,6 +131,13 @@ pub fn simulate_with_progress(
     };
     let (mut t, mut x) = (t0, x0);
     loop {
+        // One step budget for the whole trajectory, across restarts and
+        // stops: the work of a run stays bounded by `options.max_steps`.
+        let used = out.stats.steps + out.stats.rejected;
+        if used >= options.max_steps {
+            out.stop = ForwardStop::Integrator(StopReason::MaxSteps { t, steps: used });
+            return Ok(out);
+        }
         let mut start = None;
         if model.friction == FrictionLaw::Coulomb && model.speed(&x) <= model.v_stop {
             x[2] = 0.0;
@@ -186,6 +193,7 @@ pub fn simulate_with_progress(
             return Ok(out);
         }
         let mut opts = options.clone();
+        opts.max_steps = options.max_steps - used;
         if let OutputMode::AtTimes(ts) = &options.output {
             opts.output = OutputMode::AtTimes(ts.iter().copied().filter(|&s| s >= t).collect());
         }

@@ -228,18 +228,22 @@ impl AlignForwardScene {
 }
 
 impl Scene for AlignForwardScene {
+    fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
+        self.integrator.work("integrator")
+    }
+
     fn describe(&self) -> String {
         let (p, i, l) = (self.peg.params(), &self.initial, &self.loads);
         format!(
             "rigid peg forward dynamics: D = {} m, d = {} m, H = {} m, f = {}, gamma(0) = {} rad, psidot(0) = {} 1/s, M_gamma = {} N m, M_psi = {} N m; {}",
-            p.hole_diameter,
-            p.peg_diameter,
-            p.height,
-            p.friction,
-            i.gamma,
-            i.psidot,
-            l.m_gamma,
-            l.m_psi,
+            crate::scene::summary::significant(p.hole_diameter),
+            crate::scene::summary::significant(p.peg_diameter),
+            crate::scene::summary::significant(p.height),
+            crate::scene::summary::significant(p.friction),
+            crate::scene::summary::significant(i.gamma),
+            crate::scene::summary::significant(i.psidot),
+            crate::scene::summary::significant(l.m_gamma),
+            crate::scene::summary::significant(l.m_psi),
             self.integrator.describe()
         )
     }
@@ -248,7 +252,7 @@ impl Scene for AlignForwardScene {
         let model = self.forward_model()?;
         let spec = &self.integrator;
         let (method, mut options): (_, Options) = solver_config(spec)?;
-        options.output = OutputMode::AtTimes(spec.output_times());
+        options.output = OutputMode::AtTimes(spec.output_times().collect());
         let x0 = self.initial_state();
         ctx.progress.set_span(spec.t0, spec.t_end);
         let progress = &mut ctx.progress;

@@ -2,6 +2,7 @@
 //! source spans, the `kind` tag, and translation of TOML/serde errors into
 //! [`SceneError`]s that name the field by its dotted path.
 
+use serde::Deserialize;
 use serde::de::DeserializeOwned;
 use toml::Spanned;
 use toml::de::{DeTable, DeValue};
@@ -9,7 +10,7 @@ use toml::de::{DeTable, DeValue};
 use crate::error::{Located, Location, SceneError, SceneErrors};
 
 /// Top-level keys every scene may have, whatever its kind.
-pub const COMMON_KEYS: [&str; 2] = ["kind", "description"];
+pub const COMMON_KEYS: [&str; 3] = ["kind", "description", "limits"];
 
 /// A syntactically valid scene file.
 pub struct Document<'a> {
@@ -71,6 +72,29 @@ impl<'a> Document<'a> {
     /// The optional free-text description.
     pub fn description(&self) -> Option<&str> {
         self.description.as_deref()
+    }
+
+    /// The optional `[limits]` table ([`crate::scene::limits::Limits`]),
+    /// defaults where absent.
+    ///
+    /// # Errors
+    /// A wrong type or an unknown key in `[limits]`, located.
+    pub fn limits(&self) -> Result<crate::scene::limits::Limits, SceneErrors> {
+        #[derive(serde::Deserialize)]
+        struct Common {
+            #[serde(default)]
+            limits: crate::scene::limits::Limits,
+        }
+        let root = self.root.clone();
+        Common::deserialize(toml::de::Deserializer::from(root))
+            .map(|c| c.limits)
+            .map_err(|e| {
+                let at = e.span().map(|s| location(self.text, s.start));
+                let error = translate(e);
+                self.locate_all(SceneErrors {
+                    errors: vec![Located { error, at }],
+                })
+            })
     }
 
     /// Deserializes the kind-specific part of the document (everything but

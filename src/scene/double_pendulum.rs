@@ -85,16 +85,20 @@ impl DoublePendulumScene {
 }
 
 impl Scene for DoublePendulumScene {
+    fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
+        self.integrator.work("integrator")
+    }
+
     fn describe(&self) -> String {
         let p = &self.double_pendulum;
         format!(
             "double pendulum m = ({}, {}) kg, l = ({}, {}) m, released at ({}°, {}°); {}",
-            p.mass1,
-            p.mass2,
-            p.length1,
-            p.length2,
-            p.theta1_deg,
-            p.theta2_deg,
+            crate::scene::summary::significant(p.mass1),
+            crate::scene::summary::significant(p.mass2),
+            crate::scene::summary::significant(p.length1),
+            crate::scene::summary::significant(p.length2),
+            crate::scene::summary::significant(p.theta1_deg),
+            crate::scene::summary::significant(p.theta2_deg),
             self.integrator.describe()
         )
     }

@@ -86,7 +86,17 @@ impl PegTable {
         c.positive("peg.peg_diameter", self.peg_diameter);
         c.positive("peg.height", self.height);
         c.positive("peg.mass", self.mass);
-        c.non_negative("peg.gravity", self.gravity);
+        // Every reported column is a reaction divided by m g: without
+        // gravity there is no force scale to report in.
+        if self.gravity.is_finite() && self.gravity <= 0.0 {
+            c.push(SceneError::invalid(
+                "peg.gravity",
+                self.gravity,
+                "must be > 0: fig9 reports every reaction divided by m g, which is zero without gravity",
+            ));
+        } else {
+            c.finite("peg.gravity", self.gravity);
+        }
         c.non_negative("peg.friction", self.friction);
         if self.peg_diameter >= self.hole_diameter {
             c.push(SceneError::invalid(
@@ -238,15 +248,32 @@ impl Fig9Scene {
 }
 
 impl Scene for Fig9Scene {
+    fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
+        let (field, gammas) = match (&self.gamma.values, self.gamma.count) {
+            (Some(v), _) => ("gamma.values", v.len() as f64),
+            (None, n) => ("gamma.count", n.unwrap_or(2) as f64),
+        };
+        // One row of a dozen numbers per grid point, and the plot's copy.
+        vec![
+            crate::scene::limits::WorkItem::new(
+                field,
+                "max_grid_points",
+                gammas * self.motion.psidot.len() as f64,
+                256.0,
+            )
+            .with_value(gammas),
+        ]
+    }
+
     fn describe(&self) -> String {
         let p = self.peg.params();
         format!(
             "rigid peg on the hole edge (Fig. 9): D = {} m, d = {} m, H = {} m, f = {}, gammadot = {} 1/s, psidot = {:?} 1/s",
-            p.hole_diameter,
-            p.peg_diameter,
-            p.height,
-            p.friction,
-            self.motion.gammadot,
+            crate::scene::summary::significant(p.hole_diameter),
+            crate::scene::summary::significant(p.peg_diameter),
+            crate::scene::summary::significant(p.height),
+            crate::scene::summary::significant(p.friction),
+            crate::scene::summary::significant(self.motion.gammadot),
             self.motion.psidot
         )
     }

@@ -16,7 +16,49 @@
 use serde::Deserialize;
 
 use crate::error::{SceneError, SceneErrors};
+use crate::scene::limits::{WorkItem, sample_count};
 use crate::scene::validate::Checker;
+
+/// The output times of an [`IntegratorSpec`]: `t0 + i dt` for
+/// `i = 0, …, n`, then `t_end` if the span is not a whole number of
+/// intervals. An iterator, so that the times are never held all at once
+/// unless the caller collects them.
+#[derive(Debug, Clone)]
+pub struct OutputTimes {
+    t0: f64,
+    dt: f64,
+    t_end: f64,
+    next: u64,
+    n: u64,
+    extra: bool,
+}
+
+impl Iterator for OutputTimes {
+    type Item = f64;
+
+    fn next(&mut self) -> Option<f64> {
+        if self.next <= self.n {
+            let t = self.t0 + self.next as f64 * self.dt;
+            self.next += 1;
+            Some(t)
+        } else if self.extra {
+            self.extra = false;
+            Some(self.t_end)
+        } else {
+            None
+        }
+    }
+
+    fn size_hint(&self) -> (usize, Option<usize>) {
+        let left = self
+            .n
+            .saturating_add(1)
+            .saturating_sub(self.next)
+            .saturating_add(u64::from(self.extra));
+        let left = usize::try_from(left).unwrap_or(usize::MAX);
+        (left, Some(left))
+    }
+}
 
 /// Integration method selected by `integrator.method`.
 ///
@@ -177,15 +219,58 @@ impl IntegratorSpec {
             .unwrap_or((self.t_end - self.t0) / 1000.0)
     }
 
-    /// Output sample times `t0, t0 + dt, ...`, ending exactly at `t_end`.
-    pub fn output_times(&self) -> Vec<f64> {
+    /// Output sample times `t0, t0 + dt, ...`, ending exactly at `t_end`,
+    /// generated lazily (nothing is allocated here; the number of samples
+    /// is bounded by `[limits] max_output_samples`, see [`IntegratorSpec::work`]).
+    pub fn output_times(&self) -> OutputTimes {
         let dt = self.output_interval();
-        let n = ((self.t_end - self.t0) / dt).floor() as usize;
-        let mut ts: Vec<f64> = (0..=n).map(|i| self.t0 + i as f64 * dt).collect();
-        if ts.last().is_some_and(|&t| self.t_end - t > 1e-9 * dt) {
-            ts.push(self.t_end);
+        let n = ((self.t_end - self.t0) / dt).floor();
+        // A span that is not a number of whole steps gets t_end appended.
+        let last = if n >= 0.0 { n } else { 0.0 };
+        let extra = self.t_end - (self.t0 + last * dt) > 1e-9 * dt;
+        OutputTimes {
+            t0: self.t0,
+            dt,
+            t_end: self.t_end,
+            next: 0,
+            // `as` saturates: an infinite count stays a (lazy) huge one.
+            n: last as u64,
+            extra,
         }
-        ts
+    }
+
+    /// The work this table asks for: the stored output samples (field
+    /// `output_interval`, or `t_end` when the interval is the default) and
+    /// the step budget (`max_steps`). `table` is the table's dotted name.
+    pub fn work(&self, table: &str) -> Vec<WorkItem> {
+        let samples = sample_count(self.t0, self.t_end, self.output_interval());
+        let sample_field = if self.output_interval.is_some() {
+            "output_interval"
+        } else {
+            "t_end"
+        };
+        vec![
+            // A sample stores the time, a state of a few dozen numbers and
+            // its output columns: 512 bytes is a generous bound.
+            WorkItem::new(
+                format!("{table}.{sample_field}"),
+                "max_output_samples",
+                samples,
+                512.0,
+            )
+            .with_value(if self.output_interval.is_some() {
+                self.output_interval()
+            } else {
+                self.t_end
+            }),
+            WorkItem::new(
+                format!("{table}.max_steps"),
+                "max_steps",
+                self.max_steps as f64,
+                0.0,
+            )
+            .with_value(self.max_steps as f64),
+        ]
     }
 
     /// One-line description, e.g. `dopri5 rtol=1e-9 atol=1e-12, t in [0, 10] s`.
@@ -194,7 +279,11 @@ impl IntegratorSpec {
             (Method::Rk4, Some(h)) => format!("rk4 h={h:e} s"),
             (m, _) => format!("{} rtol={:e} atol={:e}", m.name(), self.rtol, self.atol),
         };
-        format!("{m}, t in [{}, {}] s", self.t0, self.t_end)
+        format!(
+            "{m}, t in [{}, {}] s",
+            crate::scene::summary::significant(self.t0),
+            crate::scene::summary::significant(self.t_end)
+        )
     }
 }
 
@@ -217,7 +306,7 @@ mod tests {
 
     #[test]
     fn output_times_end_at_t_end() {
-        let ts = spec(Method::Dopri5).output_times();
+        let ts: Vec<f64> = spec(Method::Dopri5).output_times().collect();
         assert_eq!(ts.len(), 5);
         assert_eq!(ts[4], 1.0);
         assert!((ts[3] - 0.9).abs() < 1e-15);
@@ -235,6 +324,19 @@ mod tests {
         assert_eq!(why, "named by the scene");
         let toml_spec: IntegratorSpec = toml::from_str("t_end = 1.0").unwrap();
         assert_eq!(toml_spec.method, Method::Auto);
+    }
+
+    #[test]
+    fn output_times_are_lazy_for_absurd_spans() {
+        let mut s = spec(Method::Dopri5);
+        s.t_end = 1e9;
+        s.output_interval = Some(1e-300);
+        let mut ts = s.output_times();
+        assert_eq!(ts.next(), Some(0.0));
+        assert_eq!(ts.next(), Some(1e-300));
+        let w = s.work("integrator");
+        assert_eq!(w[0].field, "integrator.output_interval");
+        assert!(w[0].count.is_infinite());
     }
 
     #[test]

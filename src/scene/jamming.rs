@@ -120,6 +120,23 @@ impl JammingScene {
 }
 
 impl Scene for JammingScene {
+    fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
+        use crate::scene::limits::WorkItem;
+        let mut work = vec![WorkItem::new(
+            "jamming.c",
+            "max_grid_points",
+            self.jamming.c.len() as f64
+                * self.jamming.mu.len() as f64
+                * self.jamming.l_m.len() as f64,
+            256.0,
+        )];
+        if let Some(s) = &self.sweep {
+            let n = s.n as f64;
+            work.push(WorkItem::new("sweep.n", "max_runs", n * n, 256.0).with_value(n));
+        }
+        work
+    }
+
     fn describe(&self) -> String {
         let p = &self.jamming;
         let mut text = format!(
@@ -163,6 +180,8 @@ impl Scene for JammingScene {
 
         let path = ctx.out_dir.join("wedging.csv");
         let mut w = CsvWriter::create(&path, &["c", "mu", "theta_wedge_rad"])?;
+        // `inf`: no tilt wedges the peg (documented above), not an overflow.
+        w.allow_infinite("theta_wedge_rad");
         for row in &wedging {
             let theta = row.theta.map_or_else(|| "inf".to_string(), format_f64);
             w.row_cells(&[&format_f64(row.c), &format_f64(row.mu), &theta])?;

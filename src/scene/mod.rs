@@ -35,8 +35,10 @@ pub mod integrator;
 pub mod jamming;
 pub(crate) mod jamming_figure;
 pub mod jamming_sweep;
+pub mod limits;
 pub mod pendulum;
 mod progress;
+pub mod ranges;
 pub(crate) mod simulate;
 mod summary;
 pub mod validate;
@@ -57,6 +59,12 @@ pub trait Scene: fmt::Debug {
     fn describe(&self) -> String;
     /// Integrates the scene and writes its outputs through `ctx`.
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError>;
+    /// The work the scene asks for (samples, steps, grid points, runs),
+    /// compared with the scene's `[limits]` before it may run
+    /// ([`limits::Limits::check`]).
+    fn work(&self) -> Vec<limits::WorkItem> {
+        Vec::new()
+    }
 }
 
 /// One entry of the scene-kind registry.
@@ -107,6 +115,9 @@ pub fn parse_named(text: &str, name: &str) -> Result<LoadedScene, SceneErrors> {
         }))
     })?;
     let scene = (kind.parse)(&doc).map_err(|e| doc.locate_all(e))?;
+    doc.limits()?
+        .check(&scene.work())
+        .map_err(|e| doc.locate_all(e))?;
     Ok(LoadedScene {
         name: name.to_string(),
         kind: kind.name,

@@ -77,15 +77,19 @@ impl PendulumScene {
 }
 
 impl Scene for PendulumScene {
+    fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
+        self.integrator.work("integrator")
+    }
+
     fn describe(&self) -> String {
         let p = &self.pendulum;
         format!(
             "simple pendulum L = {} m, m = {} kg, g = {} m/s², released at {}° with {} rad/s; {}",
-            p.length,
-            p.mass,
-            p.gravity,
-            p.theta0_deg,
-            p.omega0,
+            crate::scene::summary::significant(p.length),
+            crate::scene::summary::significant(p.mass),
+            crate::scene::summary::significant(p.gravity),
+            crate::scene::summary::significant(p.theta0_deg),
+            crate::scene::summary::significant(p.omega0),
             self.integrator.describe()
         )
     }

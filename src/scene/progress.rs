@@ -14,6 +14,24 @@ pub struct Progress {
     t_end: f64,
     last: Option<Instant>,
     shown: bool,
+    started: Option<Instant>,
+}
+
+/// The estimated time left when `fraction` of the work took `elapsed`:
+/// `elapsed (1 − f) / f`, e.g. `ETA 3m20s`; empty before any progress.
+pub fn eta(elapsed: Duration, fraction: f64) -> String {
+    if !(fraction > 0.0 && fraction < 1.0) {
+        return String::new();
+    }
+    let left = elapsed.as_secs_f64() * (1.0 - fraction) / fraction;
+    let s = left.round() as u64;
+    if s >= 3600 {
+        format!(", ETA {}h{:02}m", s / 3600, (s % 3600) / 60)
+    } else if s >= 60 {
+        format!(", ETA {}m{:02}s", s / 60, s % 60)
+    } else {
+        format!(", ETA {s}s")
+    }
 }
 
 const EVERY: Duration = Duration::from_millis(100);
@@ -27,6 +45,7 @@ impl Progress {
             t_end: 1.0,
             last: None,
             shown: false,
+            started: None,
         }
     }
 
@@ -39,6 +58,7 @@ impl Progress {
     pub fn set_span(&mut self, t0: f64, t_end: f64) {
         self.t0 = t0;
         self.t_end = t_end;
+        self.started = Some(Instant::now());
     }
 
     /// Reports simulated time `t`, s (throttled).
@@ -53,9 +73,15 @@ impl Progress {
         } else {
             100.0
         };
+        let started = *self.started.get_or_insert_with(Instant::now);
+        let left = eta(started.elapsed(), pct / 100.0);
         let mut err = std::io::stderr().lock();
         // Progress output is best effort: a failed write to stderr is ignored.
-        let _ = write!(err, "\r  t = {t:.4} s / {:.4} s ({pct:5.1}%)", self.t_end);
+        let _ = write!(
+            err,
+            "\r  t = {t:.4e} s / {:.4e} s ({pct:5.1}%{left})   ",
+            self.t_end
+        );
         let _ = err.flush();
         self.shown = true;
     }
@@ -69,9 +95,11 @@ impl Progress {
         }
         self.last = Some(Instant::now());
         let pct = 100.0 * done as f64 / total.max(1) as f64;
+        let started = *self.started.get_or_insert_with(Instant::now);
+        let left = eta(started.elapsed(), pct / 100.0);
         let mut err = std::io::stderr().lock();
         // Progress output is best effort: a failed write to stderr is ignored.
-        let _ = write!(err, "\r  {what} {done}/{total} ({pct:5.1}%)");
+        let _ = write!(err, "\r  {what} {done}/{total} ({pct:5.1}%{left})   ");
         let _ = err.flush();
         self.shown = true;
     }
@@ -79,7 +107,7 @@ impl Progress {
     /// Clears the progress line, if one was printed.
     pub fn finish(&mut self) {
         if self.shown {
-            let _ = write!(std::io::stderr(), "\r{:60}\r", "");
+            let _ = write!(std::io::stderr(), "\r{:80}\r", "");
             self.shown = false;
         }
     }
@@ -88,5 +116,19 @@ impl Progress {
 impl Drop for Progress {
     fn drop(&mut self) {
         self.finish();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn eta_scales_elapsed_by_the_work_left() {
+        assert_eq!(eta(Duration::from_secs(10), 0.25), ", ETA 30s");
+        assert_eq!(eta(Duration::from_secs(100), 0.5), ", ETA 1m40s");
+        assert_eq!(eta(Duration::from_secs(3600), 0.5), ", ETA 1h00m");
+        assert_eq!(eta(Duration::from_secs(1), 0.0), "");
+        assert_eq!(eta(Duration::from_secs(1), f64::NAN), "");
     }
 }

@@ -9,6 +9,7 @@ use crate::integrate::{
     self, Event, IntegrateError, Options, OutputMode, Solution, Solver, StopReason,
 };
 use crate::scene::integrator::DefaultMethod;
+use crate::scene::summary::significant;
 use crate::scene::{IntegrationSummary, IntegratorSpec, Method, Progress};
 use crate::system::OdeSystem;
 
@@ -33,7 +34,7 @@ pub fn solver_config(spec: &IntegratorSpec) -> Result<(integrate::Method, Option
     };
     let mut options = Options::with_tolerances(spec.rtol, spec.atol);
     options.max_steps = spec.max_steps;
-    options.output = OutputMode::AtTimes(spec.output_times());
+    options.output = OutputMode::AtTimes(spec.output_times().collect());
     if spec.method.is_adaptive() {
         options.h0 = spec.h;
     }
@@ -69,15 +70,25 @@ pub fn describe_stop(stop: &StopReason, event_names: &[&str]) -> String {
     match *stop {
         StopReason::ReachedEnd => "reached t_end".into(),
         StopReason::Event { index, t } => match event_names.get(index) {
-            Some(name) => format!("event `{name}` at t = {t} s"),
-            None => format!("event #{index} at t = {t} s"),
+            Some(name) => format!("event `{name}` at t = {} s", significant(t)),
+            None => format!("event #{index} at t = {} s", significant(t)),
         },
         StopReason::StepSizeTooSmall { t, h } => {
-            format!("step size too small (h = {h:e} s) at t = {t} s")
+            format!(
+                "step size too small (h = {h:.3e} s) at t = {} s",
+                significant(t)
+            )
         }
-        StopReason::NonFinite { t } => format!("state became non-finite after t = {t} s"),
+        StopReason::NonFinite { t } => format!(
+            "state became non-finite after t = {} s (an extreme scene value: rates, loads or \
+             moduli over many decades, or a tolerance below f64 resolution)",
+            significant(t)
+        ),
         StopReason::MaxSteps { t, steps } => {
-            format!("step budget of {steps} steps exhausted at t = {t} s")
+            format!(
+                "step budget of {steps} steps exhausted at t = {} s",
+                significant(t)
+            )
         }
     }
 }

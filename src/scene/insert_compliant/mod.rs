@@ -204,8 +204,27 @@ fn scene_field(field: &str) -> String {
     format!("{t}.{mapped}")
 }
 
-fn to_scene_error(e: HertzError) -> SceneErrors {
+fn to_scene_error(e: HertzError, p: &InsertParams) -> SceneErrors {
     match e {
+        // The model's peg radius and mass are derived from the scene's
+        // clearance ratio and density: say so rather than print the derived
+        // value as if it were the scene's.
+        HertzError::Invalid {
+            field,
+            value,
+            reason,
+        } if matches!(field.as_str(), "peg_radius" | "mass" | "inertia") => {
+            let own = if field == "peg_radius" {
+                p.clearance_ratio
+            } else {
+                p.density
+            };
+            SceneErrors::from(SceneError::invalid(
+                scene_field(&field),
+                own,
+                format!("gives {field} = {value:e}, which {reason}"),
+            ))
+        }
         HertzError::Invalid {
             field,
             value,
@@ -240,8 +259,27 @@ impl InsertCompliantScene {
             c.in_range(&f("com_height"), lc, 0.0, len);
         }
         c.extend(self.integrator.check("integrator"));
-        c.finish()?;
         let r = 0.5 * d * (1.0 - cr);
+        crate::scene::ranges::check_compliant(
+            &mut c,
+            "insert_compliant",
+            &crate::scene::ranges::CompliantFields {
+                hole_diameter: d,
+                clearance_ratio: cr,
+                peg_length: len,
+                peg_fillet: p.peg_fillet,
+                hole_fillet: p.hole_fillet,
+                youngs_modulus: [
+                    p.peg_material.youngs_modulus,
+                    p.hole_material.youngs_modulus,
+                ],
+                poisson_ratio: [p.peg_material.poisson_ratio, p.hole_material.poisson_ratio],
+                load: p.axial_force.abs() + p.radial_force.abs() + p.torque.abs() / r,
+                initial_depth: p.initial_depth,
+                target_depth: p.target_depth,
+            },
+        );
+        c.finish()?;
         let mass = p.density * std::f64::consts::PI * r * r * len;
         let spec = CompliantSpec {
             geometry: PegHoleGeometry {
@@ -270,9 +308,9 @@ impl InsertCompliantScene {
                 ContactsSpec::Lean => ContactSet::Lean,
             },
         };
-        let params = CompliantParams::try_new(spec).map_err(to_scene_error)?;
+        let params = CompliantParams::try_new(spec).map_err(|e| to_scene_error(e, p))?;
         let initial = if p.initial_tilt > 0.0 {
-            PegState::two_point(&params, p.initial_tilt, 0.0).map_err(to_scene_error)?
+            PegState::two_point(&params, p.initial_tilt, 0.0).map_err(|e| to_scene_error(e, p))?
         } else {
             PegState::centred(&params, p.initial_depth)
         };
@@ -300,18 +338,22 @@ impl InsertCompliantScene {
 }
 
 impl Scene for Ready {
+    fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
+        self.scene.integrator.work("integrator")
+    }
+
     fn describe(&self) -> String {
         let p = &self.scene.insert_compliant;
         format!(
             "compliant peg-in-hole D = {} m, c = {}, mu = {}, f1 = {} N, f2 = {} N, M = {} N m, \
              start tilt {} rad, k_edge = {:.3e} N/m^1.5; {} ({})",
-            p.hole_diameter,
-            p.clearance_ratio,
-            p.friction,
-            p.axial_force,
-            p.radial_force,
-            p.torque,
-            p.initial_tilt,
+            crate::scene::summary::significant(p.hole_diameter),
+            crate::scene::summary::significant(p.clearance_ratio),
+            crate::scene::summary::significant(p.friction),
+            crate::scene::summary::significant(p.axial_force),
+            crate::scene::summary::significant(p.radial_force),
+            crate::scene::summary::significant(p.torque),
+            crate::scene::summary::significant(p.initial_tilt),
             self.built.params.pair.edge.stiffness(),
             self.integrator.describe(),
             self.method_reason

@@ -1,0 +1,231 @@
+//! Bounded work, announced: every scene estimates its work (output samples,
+//! integrator steps, grid points, runs of a sweep, memory) before it runs,
+//! and a scene whose estimate exceeds a limit is refused by `pegdyn check`
+//! and `pegdyn run` with the field and the estimate named — unless the scene
+//! raises the limit in its `[limits]` table:
+//!
+//! ```toml
+//! [limits]
+//! max_output_samples = 1_000_000   # stored output times of one integration
+//! max_steps = 10_000_000           # integrator.max_steps
+//! max_grid_points = 1_000_000      # points of a parameter grid (fig9 gamma x psidot)
+//! max_runs = 2_500                 # integrations of a sweep (jamming sweep n^2)
+//! max_memory_mb = 1_024            # estimated memory of the stored results, MiB
+//! ```
+//!
+//! The estimates are computed in floating point from the scene's fields,
+//! so that a count of `1e300` is an estimate, never an allocation.
+//!
+//! ```
+//! use pegdyn::scene::limits::{Limits, WorkItem};
+//! let work = [WorkItem::new("integrator.output_interval", "max_output_samples", 1e12, 256.0)];
+//! let e = Limits::default().check(&work).unwrap_err().to_string();
+//! assert!(e.contains("integrator.output_interval") && e.contains("1.000e12"), "{e}");
+//! ```
+
+use serde::Deserialize;
+
+use crate::error::{SceneError, SceneErrors};
+
+/// The `[limits]` table: upper bounds on the work one scene may ask for.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Limits {
+    /// Largest number of stored output samples of one integration.
+    pub max_output_samples: u64,
+    /// Largest integrator step budget (`integrator.max_steps`).
+    pub max_steps: u64,
+    /// Largest number of points of a parameter grid.
+    pub max_grid_points: u64,
+    /// Largest number of integrations of a sweep.
+    pub max_runs: u64,
+    /// Largest estimated memory of the stored results, MiB.
+    pub max_memory_mb: u64,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits {
+            max_output_samples: 1_000_000,
+            max_steps: 10_000_000,
+            max_grid_points: 1_000_000,
+            max_runs: 2_500,
+            max_memory_mb: 1_024,
+        }
+    }
+}
+
+/// One item of a scene's work estimate.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WorkItem {
+    /// The scene field that sets this amount of work, e.g. `gamma.count`.
+    pub field: String,
+    /// The `[limits]` key that bounds it, e.g. `max_grid_points`.
+    pub limit: &'static str,
+    /// The estimated count (samples, steps, points or runs).
+    pub count: f64,
+    /// Estimated bytes stored per counted item (0 when nothing is stored).
+    pub bytes_each: f64,
+    /// The field's own value, shown in the error (else the estimate is).
+    pub value: Option<f64>,
+}
+
+impl WorkItem {
+    /// An item: `count` units of work set by `field`, bounded by `limit`,
+    /// storing `bytes_each` bytes per unit.
+    pub fn new(field: impl Into<String>, limit: &'static str, count: f64, bytes_each: f64) -> Self {
+        WorkItem {
+            field: field.into(),
+            limit,
+            count,
+            bytes_each,
+            value: None,
+        }
+    }
+
+    /// The same item, showing the field's own value `v` in errors.
+    pub fn with_value(mut self, v: f64) -> Self {
+        self.value = Some(v);
+        self
+    }
+
+    fn shown(&self) -> Raw {
+        Raw(match self.value {
+            Some(v) => format!("{v:?}"),
+            None => format!("{:.4e}", self.count),
+        })
+    }
+}
+
+impl Limits {
+    /// The bound of the limit named `key` (`None` for an unknown key).
+    pub fn get(&self, key: &str) -> Option<u64> {
+        match key {
+            "max_output_samples" => Some(self.max_output_samples),
+            "max_steps" => Some(self.max_steps),
+            "max_grid_points" => Some(self.max_grid_points),
+            "max_runs" => Some(self.max_runs),
+            "max_memory_mb" => Some(self.max_memory_mb),
+            _ => None,
+        }
+    }
+
+    /// Compares the estimate `work` with the limits; every item above its
+    /// limit, and the total memory above `max_memory_mb`, is one error
+    /// naming the field, the estimate and the `[limits]` key that raises it.
+    ///
+    /// # Errors
+    /// All the violations at once.
+    pub fn check(&self, work: &[WorkItem]) -> Result<(), SceneErrors> {
+        let mut errors = Vec::new();
+        for item in work {
+            let bound = self.get(item.limit).unwrap_or(0) as f64;
+            if item.count.is_nan() || item.count > bound {
+                errors.push(SceneError::invalid(
+                    item.field.clone(),
+                    item.shown(),
+                    format!(
+                        "asks for about {:.3e} {} ({}), above the limit {bound:e}; \
+                         raise `[limits] {} = ...` if this is intended",
+                        item.count,
+                        unit(item.limit),
+                        item.limit,
+                        item.limit,
+                    ),
+                ));
+            }
+        }
+        let bytes: f64 = work.iter().map(|w| w.count * w.bytes_each).sum();
+        let mib = bytes / (1024.0 * 1024.0);
+        if mib.is_nan() || mib > self.max_memory_mb as f64 {
+            let worst = work
+                .iter()
+                .max_by(|a, b| (a.count * a.bytes_each).total_cmp(&(b.count * b.bytes_each)));
+            errors.push(SceneError::invalid(
+                worst.map_or("limits", |w| w.field.as_str()),
+                worst.map_or_else(|| Raw(format!("{mib:.3e} MiB")), WorkItem::shown),
+                format!(
+                    "the stored results would need about {mib:.3e} MiB, above the limit of {} MiB; \
+                     raise `[limits] max_memory_mb = ...` if this is intended",
+                    self.max_memory_mb
+                ),
+            ));
+        }
+        if errors.is_empty() {
+            Ok(())
+        } else {
+            Err(SceneErrors::new(errors))
+        }
+    }
+}
+
+/// A value shown as written (its `Debug` is its text, without quotes).
+struct Raw(String);
+
+impl std::fmt::Debug for Raw {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+fn unit(limit: &str) -> &'static str {
+    match limit {
+        "max_output_samples" => "output samples",
+        "max_steps" => "integrator steps",
+        "max_grid_points" => "grid points",
+        "max_runs" => "runs",
+        _ => "units",
+    }
+}
+
+/// The number of output samples of a span `t_end − t0` sampled every `dt`
+/// (the count [`crate::scene::IntegratorSpec::output_times`] yields), as
+/// f64 so that absurd spans give an estimate instead of an overflow.
+pub fn sample_count(t0: f64, t_end: f64, dt: f64) -> f64 {
+    ((t_end - t0) / dt).floor() + 2.0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_violation_is_reported_with_field_and_estimate() {
+        let work = [
+            WorkItem::new("gamma.count", "max_grid_points", 9.2e18, 64.0),
+            WorkItem::new("integrator.max_steps", "max_steps", 1e3, 0.0),
+            WorkItem::new("sweep.n", "max_runs", f64::INFINITY, 0.0),
+        ];
+        let e = Limits::default().check(&work).unwrap_err();
+        let text = e.to_string();
+        assert_eq!(e.errors.len(), 3, "{text}");
+        assert!(
+            text.contains("gamma.count") && text.contains("9.200e18"),
+            "{text}"
+        );
+        assert!(
+            text.contains("sweep.n") && text.contains("max_runs"),
+            "{text}"
+        );
+        assert!(text.contains("max_memory_mb"), "{text}");
+    }
+
+    #[test]
+    fn raised_limits_accept_and_nan_is_refused() {
+        let work = [WorkItem::new("gamma.count", "max_grid_points", 2e6, 8.0)];
+        assert!(Limits::default().check(&work).is_err());
+        let raised = Limits {
+            max_grid_points: 3_000_000,
+            ..Limits::default()
+        };
+        assert!(raised.check(&work).is_ok());
+        let nan = [WorkItem::new("x", "max_runs", f64::NAN, 0.0)];
+        assert!(raised.check(&nan).is_err());
+    }
+
+    #[test]
+    fn sample_count_matches_the_grid() {
+        assert_eq!(sample_count(0.0, 1.0, 0.3), 5.0);
+        assert!(sample_count(0.0, 1e9, 1e-300).is_infinite());
+    }
+}

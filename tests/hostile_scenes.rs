@@ -1,0 +1,267 @@
+//! The classes of hostile-but-valid scenes, end to end through the
+//! `pegdyn` binary: each is refused by `check` with the field and its own
+//! value, or runs and leaves complete, honest outputs.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn pegdyn(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_pegdyn"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("the pegdyn binary runs")
+}
+
+fn dir(test: &str) -> PathBuf {
+    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("hostile-{test}"));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+/// The shipped scene `name` with `from` replaced by `to` (must occur).
+fn variant(name: &str, from: &str, to: &str) -> String {
+    let text = std::fs::read_to_string(
+        Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.toml")),
+    )
+    .unwrap();
+    assert!(text.contains(from), "{name} has no {from:?}");
+    text.replacen(from, to, 1)
+}
+
+/// `pegdyn check` on `text` fails naming every `(field, value)`.
+fn refused(test: &str, text: &str, expect: &[&str]) {
+    let d = dir(test);
+    let path = d.join("scene.toml");
+    std::fs::write(&path, text).unwrap();
+    let out = pegdyn(&["check", path.to_str().unwrap()]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    for e in expect {
+        assert!(stderr.contains(e), "missing {e:?} in:\n{stderr}");
+    }
+}
+
+#[test]
+fn hangs_and_aborts_are_refused_by_check() {
+    // Degenerate fillet: used to hang the elliptic-integral iteration.
+    refused(
+        "fillet",
+        &variant(
+            "insert_compliant",
+            "peg_fillet = 0.0002",
+            "peg_fillet = 1e-200",
+        ),
+        &["insert_compliant.peg_fillet` = 1e-200", "Hertz"],
+    );
+    // Output times: 1e9 s at the shipped interval, and an interval of 1e-300 s.
+    refused(
+        "t_end",
+        &variant("pendulum", "t_end = 10.0", "t_end = 1e9"),
+        &[
+            "integrator.output_interval",
+            "1.000e11 output samples",
+            "max_memory_mb",
+        ],
+    );
+    refused(
+        "interval",
+        &variant(
+            "pendulum",
+            "output_interval = 0.01",
+            "output_interval = 1e-300",
+        ),
+        &[
+            "integrator.output_interval` = 1e-300",
+            "1.000e301",
+            "[limits] max_output_samples",
+        ],
+    );
+    // Grids: fig9 count of i64::MAX, a jamming sweep of 1000 x 1000 runs.
+    refused(
+        "count",
+        &variant("fig9", "count = 400", "count = 9223372036854775807"),
+        &["gamma.count", "9.223372036854776e18", "max_grid_points"],
+    );
+    refused(
+        "sweep",
+        &variant("jamming", "n = 13", "n = 1000"),
+        &["sweep.n` = 1000.0", "1.000e6", "max_runs"],
+    );
+}
+
+#[test]
+fn limits_table_raises_a_limit() {
+    let text = variant("fig9", "count = 400", "count = 2000000")
+        + "\n[limits]\nmax_grid_points = 5_000_000\n";
+    let d = dir("limits");
+    let path = d.join("scene.toml");
+    std::fs::write(&path, &text).unwrap();
+    let out = pegdyn(&["check", path.to_str().unwrap()]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let bad = text.replace("max_grid_points = 5_000_000", "max_grid_pts = 5");
+    refused("limits_typo", &bad, &["limits.max_grid_pts"]);
+}
+
+#[test]
+fn wrong_physics_is_refused_with_the_scene_value() {
+    refused(
+        "depth",
+        &variant(
+            "insert_compliant",
+            "target_depth = 0.03",
+            "target_depth = 0.5",
+        ),
+        &["insert_compliant.target_depth` = 0.5", "peg_length"],
+    );
+    refused(
+        "clearance",
+        &variant(
+            "insert_compliant",
+            "clearance_ratio = 0.002",
+            "clearance_ratio = 1e-15",
+        ),
+        &["insert_compliant.clearance_ratio` = 1e-15", "1e-9"],
+    );
+    refused(
+        "clearance0",
+        &variant(
+            "insert_compliant",
+            "clearance_ratio = 0.002",
+            "clearance_ratio = 0.0",
+        ),
+        &["insert_compliant.clearance_ratio` = 0.0"],
+    );
+    refused(
+        "modulus",
+        &variant(
+            "insert_compliant",
+            "youngs_modulus = 210e9",
+            "youngs_modulus = 1e-30",
+        ),
+        &["peg_material.youngs_modulus` = 1e-30"],
+    );
+    refused(
+        "gravity",
+        &variant("fig9", "gravity = 9.81", "gravity = 0.0"),
+        &["peg.gravity` = 0.0", "m g"],
+    );
+}
+
+#[test]
+fn non_finite_results_stop_the_run_and_write_no_nan() {
+    // Precession of 1e200 1/s: the reactions overflow.
+    let d = dir("psidot");
+    let path = d.join("fast.toml");
+    std::fs::write(
+        &path,
+        variant("fig9", "psidot = [0.0, 10.0]", "psidot = [0.0, 1e200]"),
+    )
+    .unwrap();
+    let out_dir = d.join("out");
+    let out = pegdyn(&[
+        "run",
+        path.to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    // A typed reason (here the rigid model's own refusal), never a NaN file.
+    assert!(stderr.contains("error: "), "{stderr}");
+    assert!(!out_dir.join("fast.csv").exists() && !out_dir.join("fast.svg").exists());
+    let manifest = std::fs::read_to_string(out_dir.join("fast.run.toml")).unwrap();
+    let m: toml::Table = manifest.parse().unwrap();
+    assert!(
+        m["status"].as_str().unwrap().starts_with("failed:"),
+        "{manifest}"
+    );
+    assert_eq!(m["files"].as_array().map(Vec::len), Some(0), "{manifest}");
+}
+
+#[test]
+fn a_non_finite_value_leaves_no_file_and_names_its_column() {
+    use pegdyn::error::OutputError;
+    use pegdyn::output::csv::CsvWriter;
+    let d = dir("csv_nan");
+    let path = d.join("x.csv");
+    let mut w = CsvWriter::create(&path, &["t_s", "force_n"]).unwrap();
+    w.row(&[0.0, 1.0]).unwrap();
+    let e = w.row(&[0.5, f64::NAN]).unwrap_err();
+    drop(w);
+    match &e {
+        OutputError::NonFinite {
+            column, row, first, ..
+        } => {
+            assert_eq!(
+                (column.as_str(), *row, first.as_str()),
+                ("force_n", 1, "0.5")
+            );
+        }
+        other => panic!("{other}"),
+    }
+    assert!(e.to_string().contains("nothing was written"), "{e}");
+    let left: Vec<_> = std::fs::read_dir(&d).unwrap().collect();
+    assert!(left.is_empty(), "{left:?}");
+}
+
+#[test]
+fn outputs_are_recorded_and_never_replace_the_scene() {
+    let d = dir("outputs");
+    // A scene saved under an output's name in the output directory.
+    let scene = d.join("p.svg");
+    let text = variant("pendulum", "t_end = 10.0", "t_end = 0.5");
+    std::fs::write(&scene, &text).unwrap();
+    let out = pegdyn(&["run", scene.to_str().unwrap(), "--out", d.to_str().unwrap()]);
+    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(std::fs::read_to_string(&scene).unwrap(), text);
+    // A normal run: manifest with the files; an earlier run's file is stale.
+    let scene = d.join("p.toml");
+    std::fs::write(&scene, &text).unwrap();
+    let out_dir = d.join("out");
+    std::fs::create_dir_all(&out_dir).unwrap();
+    std::fs::write(out_dir.join("p_old.csv"), "t\n").unwrap();
+    let out = pegdyn(&[
+        "run",
+        scene.to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    assert!(stderr.contains("p_old.csv"), "{stderr}");
+    let m: toml::Table = std::fs::read_to_string(out_dir.join("p.run.toml"))
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert_eq!(m["status"].as_str(), Some("ok"));
+    let files: Vec<&str> = m["files"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter_map(|v| v.as_str())
+        .collect();
+    assert_eq!(files, ["p.csv", "p.svg"]);
+    assert_eq!(m["stale"][0].as_str(), Some("p_old.csv"));
+    assert!(m["scene_hash"].as_str().unwrap().starts_with("fnv1a64:"));
+    // No temporary file is left.
+    let names: Vec<String> = std::fs::read_dir(&out_dir)
+        .unwrap()
+        .filter_map(Result::ok)
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .collect();
+    assert!(names.iter().all(|n| !n.starts_with('.')), "{names:?}");
+}
+
+#[test]
+fn accuracy_with_a_filter_matching_nothing_is_an_error() {
+    let out = pegdyn(&["accuracy", "--only", "NO-SUCH-LABEL-ANYWHERE"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("matches no grid point"), "{stderr}");
+}
