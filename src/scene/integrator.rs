@@ -153,6 +153,10 @@ pub struct IntegratorSpec {
     pub max_steps: usize,
 }
 
+/// Smallest accepted relative tolerance: ten times f64's rounding unit
+/// u = 2^-53 ≈ 1.1e-16, below which no step can meet the error test.
+pub const MIN_RTOL: f64 = 1e-15;
+
 fn default_rtol() -> f64 {
     1e-8
 }
@@ -187,6 +191,12 @@ impl IntegratorSpec {
             let rtol = c.positive(&f("rtol"), self.rtol);
             if rtol >= 1.0 {
                 c.push(SceneError::invalid(f("rtol"), rtol, "must be less than 1"));
+            } else if rtol > 0.0 && rtol < MIN_RTOL {
+                c.push(SceneError::invalid(
+                    f("rtol"),
+                    rtol,
+                    "must be at least 1e-15: a relative error below f64's rounding unit (1.1e-16) cannot be met, and the step control shrinks the step without end",
+                ));
             }
             c.positive(&f("atol"), self.atol);
         }
@@ -344,6 +354,9 @@ mod tests {
         let e = spec(Method::Rk4).check("integrator").unwrap_err();
         assert!(e.to_string().contains("integrator.h"), "{e}");
         let mut s = spec(Method::Dopri5);
+        s.rtol = 1e-293;
+        let e = s.check("integrator").unwrap_err().to_string();
+        assert!(e.contains("integrator.rtol") && e.contains("1e-15"), "{e}");
         s.rtol = -1e-6;
         s.t_end = -1.0;
         let e = s.check("integrator").unwrap_err().to_string();

@@ -36,8 +36,8 @@ use std::sync::Mutex;
 
 use serde::Deserialize;
 
-use crate::integrate::Method;
 use crate::error::{RunError, SceneError, SceneErrors};
+use crate::integrate::Method;
 use crate::jamming::PegHole;
 use crate::jamming::diagram::whitney_parallelogram;
 use crate::jamming::dynamic::{self, DynamicPoint, SweepSetup, SweepSpec};

@@ -14,14 +14,14 @@
 
 use crate::expr::Expr;
 
-pub use crate::models::hertz::{
-    HertzCoefficients, HertzState, load as hertz_load, potential as hertz_potential,
-    state as hertz_state, stiffness as hertz_stiffness,
-};
 /// Contact geometry of the compliant planar peg: penetrations (exact signed
 /// circle–line distances) and sliding velocities of the four peg/hole
 /// contacts as expressions of the peg's coordinates `x, z, theta`.
 pub use crate::models::compliant_peg::geometry::{Contact, ContactKinematics, PegFrame};
+pub use crate::models::hertz::{
+    HertzCoefficients, HertzState, load as hertz_load, potential as hertz_potential,
+    state as hertz_state, stiffness as hertz_stiffness,
+};
 /// Geometry of the rigid three-point peg (peg and hole frames, the three
 /// contact points, vector helpers).
 pub use crate::models::rigid_peg::geometry as rigid_peg_geometry;
