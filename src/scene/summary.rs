@@ -112,7 +112,7 @@ impl fmt::Display for RunSummary {
 /// a summary never prints hundreds of digits.
 ///
 /// ```
-/// use pegdyn::scene::summary::significant;
+/// use pegdyn::scene::significant;
 /// assert_eq!(significant(0.123456789), "0.123457");
 /// assert_eq!(significant(1e200), "1e200");
 /// assert_eq!(significant(2.5), "2.5");
