@@ -3,11 +3,14 @@
 //! nodes, L-stability, observed order 4, its step counts against RODAS3 on a
 //! stiff problem at a tight tolerance, and events on its dense output.
 
-use nalgebra::{Matrix1, SMatrix, SVector, Vector1, Vector2};
+use nalgebra::{Vector1, Vector2};
 use pegdyn::integrate::tableau::RosenbrockTableau;
 use pegdyn::integrate::{Direction, Event, Method, Options, Solver, StopReason, solve};
 use pegdyn::reference_problems::{Pendulum, VanDerPol};
-use pegdyn::system::OdeSystem;
+
+#[path = "common/rosenbrock.rs"]
+mod rosenbrock;
+use rosenbrock::{Modulated, fixed_step, stability, stiff_accuracy_defect};
 
 const S: usize = 6;
 
@@ -79,31 +82,12 @@ fn rodas4_stage_nodes_match_the_published_ones() {
     }
 }
 
-/// Stability function `R(z) = 1 + z bᵀ (I − zB)⁻¹ 𝟙`, `B = α + Γ`.
-fn stability(t: &RosenbrockTableau<S>, z: f64) -> f64 {
-    let mut m = SMatrix::<f64, S, S>::identity();
-    for i in 0..S {
-        for j in 0..i {
-            m[(i, j)] -= z * (t.alpha[i][j] + t.gamma_lower[i][j]);
-        }
-        m[(i, i)] -= z * t.gamma;
-    }
-    let y = m
-        .lu()
-        .solve(&SVector::<f64, S>::repeat(1.0))
-        .expect("regular");
-    1.0 + z * SVector::<f64, S>::from(t.b).dot(&y)
-}
-
 #[test]
 fn rodas4_is_stiffly_accurate_and_l_stable_on_the_negative_real_axis() {
     let t = RosenbrockTableau::rodas4();
     // Stiffly accurate: b is the last row of B = α + Γ, hence R(∞) = 0.
-    for j in 0..S {
-        let last =
-            t.alpha[S - 1][j] + t.gamma_lower[S - 1][j] + if j == S - 1 { t.gamma } else { 0.0 };
-        assert!((t.b[j] - last).abs() < 1e-12, "b[{j}] = {}", t.b[j]);
-    }
+    let defect = stiff_accuracy_defect(&t);
+    assert!(defect < 1e-12, "stiff-accuracy defect {defect:e}");
     assert!(stability(&t, -1e8).abs() < 1e-6);
     for k in 0..200 {
         let z = -10f64.powf(-3.0 + 0.05 * f64::from(k));
@@ -112,30 +96,6 @@ fn rodas4_is_stiffly_accurate_and_l_stable_on_the_negative_real_axis() {
     // Consistent with e^z to fourth order near 0.
     let z: f64 = -1e-2;
     assert!((stability(&t, z) - z.exp()).abs() < 1e-10);
-}
-
-/// ẋ = cos(t)·x (non-autonomous), exact x₀ e^{sin t}; exact Jacobian and
-/// ∂f/∂t so the order is not blurred by finite differences.
-struct Modulated;
-impl OdeSystem<1> for Modulated {
-    fn rhs(&self, t: f64, x: &SVector<f64, 1>) -> SVector<f64, 1> {
-        x * t.cos()
-    }
-    fn jacobian(&self, t: f64, _x: &SVector<f64, 1>) -> SMatrix<f64, 1, 1> {
-        Matrix1::new(t.cos())
-    }
-    fn time_derivative(&self, t: f64, x: &SVector<f64, 1>) -> SVector<f64, 1> {
-        -x * t.sin()
-    }
-}
-
-/// Effectively fixed steps: huge tolerances, `h0 = h_max = h`.
-fn fixed_step(h: f64) -> Options {
-    Options {
-        h0: Some(h),
-        h_max: Some(h),
-        ..Options::with_tolerances(1e6, 1e6)
-    }
 }
 
 #[test]

@@ -4,11 +4,15 @@
 
 use std::f64::consts::FRAC_PI_2;
 
-use nalgebra::{Matrix1, SMatrix, SVector, Vector1, Vector2};
+use nalgebra::{Vector1, Vector2};
 use pegdyn::integrate::tableau::RosenbrockTableau;
 use pegdyn::integrate::{Direction, Event, Method, Options, Solver, StopReason, solve};
 use pegdyn::reference_problems::{HarmonicOscillator, Pendulum, StiffLinear, VanDerPol};
 use pegdyn::system::OdeSystem;
+
+#[path = "common/rosenbrock.rs"]
+mod rosenbrock;
+use rosenbrock::{Modulated, fixed_step, stability, stiff_accuracy_defect};
 
 /// Rosenbrock order conditions (Hairer & Wanner II, §IV.7, Table 7.1) with
 /// `βᵢⱼ = αᵢⱼ + γᵢⱼ` (j < i), `β'ᵢ = Σⱼ<ᵢ βᵢⱼ`, `αᵢ = Σⱼ αᵢⱼ`:
@@ -44,30 +48,11 @@ fn rodas3_tableau_is_third_order_with_second_order_embedding() {
     );
 }
 
-/// Stability function `R(z) = 1 + z bᵀ (I − zB)⁻¹ 𝟙`, `B = α + Γ`.
-fn stability(t: &RosenbrockTableau<4>, z: f64) -> f64 {
-    let mut m = SMatrix::<f64, 4, 4>::identity();
-    for i in 0..4 {
-        for j in 0..i {
-            m[(i, j)] -= z * (t.alpha[i][j] + t.gamma_lower[i][j]);
-        }
-        m[(i, i)] -= z * t.gamma;
-    }
-    let y = m
-        .lu()
-        .solve(&SVector::<f64, 4>::repeat(1.0))
-        .expect("regular");
-    1.0 + z * SVector::<f64, 4>::from(t.b).dot(&y)
-}
-
 #[test]
 fn rodas3_is_l_stable_on_the_negative_real_axis() {
     let t = RosenbrockTableau::rodas3();
     // Stiffly accurate: b is the last row of B = α + Γ, hence R(∞) = 0.
-    for j in 0..4 {
-        let last = t.alpha[3][j] + t.gamma_lower[3][j] + if j == 3 { t.gamma } else { 0.0 };
-        assert!((t.b[j] - last).abs() < 1e-15);
-    }
+    assert!(stiff_accuracy_defect(&t) < 1e-15);
     assert!(stability(&t, -1e8).abs() < 1e-6);
     for k in 0..200 {
         let z = -10f64.powf(-3.0 + 0.05 * f64::from(k));
@@ -76,30 +61,6 @@ fn rodas3_is_l_stable_on_the_negative_real_axis() {
     // Consistent with e^z to third order near 0.
     let z: f64 = -1e-2;
     assert!((stability(&t, z) - z.exp()).abs() < 1e-8);
-}
-
-/// ẋ = cos(t)·x (non-autonomous), exact x₀ e^{sin t}; exact Jacobian and
-/// ∂f/∂t so the order is not blurred by finite differences.
-struct Modulated;
-impl OdeSystem<1> for Modulated {
-    fn rhs(&self, t: f64, x: &SVector<f64, 1>) -> SVector<f64, 1> {
-        x * t.cos()
-    }
-    fn jacobian(&self, t: f64, _x: &SVector<f64, 1>) -> SMatrix<f64, 1, 1> {
-        Matrix1::new(t.cos())
-    }
-    fn time_derivative(&self, t: f64, x: &SVector<f64, 1>) -> SVector<f64, 1> {
-        -x * t.sin()
-    }
-}
-
-/// Rodas3 with effectively fixed steps: huge tolerances, `h0 = h_max = h`.
-fn fixed_step(h: f64) -> Options {
-    Options {
-        h0: Some(h),
-        h_max: Some(h),
-        ..Options::with_tolerances(1e6, 1e6)
-    }
 }
 
 #[test]
