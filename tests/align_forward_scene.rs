@@ -3,21 +3,13 @@
 //! values; bad scenes are refused by the CLI naming the field.
 
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
 
-fn pegdyn(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_pegdyn"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("the pegdyn binary runs")
-}
+#[path = "common/cli.rs"]
+mod cli_common;
+use cli_common::{fresh_dir, pegdyn};
 
 fn dir(test: &str) -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join(format!("align-forward-{test}"));
-    let _ = std::fs::remove_dir_all(&d);
-    std::fs::create_dir_all(&d).unwrap();
-    d
+    fresh_dir("align-forward", test)
 }
 
 const SCENE: &str = "scenes/align_forward.toml";

@@ -5,13 +5,9 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-fn pegdyn(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_pegdyn"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("the pegdyn binary runs")
-}
+#[path = "common/cli.rs"]
+mod cli_common;
+use cli_common::pegdyn;
 
 fn fixture(name: &str) -> String {
     format!("tests/fixtures/{name}")
