@@ -23,18 +23,10 @@ use crate::generated::compliant_peg_3d as generated;
 use nalgebra::{SVector, Vector1, Vector3};
 use std::f64::consts::TAU;
 
-/// The contact pairs.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Pair {
-    /// The hole's mouth-edge torus against the peg's cylindrical side.
-    EdgeSide,
-    /// The peg's bottom-rim torus against the bore wall.
-    RimWall,
-    /// The peg's bottom-rim torus against the block's top face.
-    RimTop,
-    /// The peg's bottom-rim torus against the bore bottom.
-    RimBottom,
-}
+/// The contact pairs (the generator's own definition).
+#[path = "../../equations/src/models/compliant_peg_3d/pair.rs"]
+mod pair;
+pub use pair::Pair;
 
 /// Output of one generated pair function: gap, `g′`, `g″`, gradient in the
 /// pose, force direction, contact point, axial coordinate.
@@ -49,19 +41,6 @@ type PairEval = (
 );
 
 impl Pair {
-    /// Every pair.
-    pub const ALL: [Pair; 4] = [Pair::EdgeSide, Pair::RimWall, Pair::RimTop, Pair::RimBottom];
-
-    /// Short name (CSV columns, events).
-    pub fn name(self) -> &'static str {
-        match self {
-            Pair::EdgeSide => "edge_side",
-            Pair::RimWall => "rim_wall",
-            Pair::RimTop => "rim_top",
-            Pair::RimBottom => "rim_bottom",
-        }
-    }
-
     /// The generated function of this pair at pose `x` and angle `a`.
     pub fn eval(self, x: &SVector<f64, 7>, a: f64, p: &SVector<f64, 16>) -> PairEval {
         let a = Vector1::new(a);

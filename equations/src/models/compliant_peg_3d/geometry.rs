@@ -45,33 +45,7 @@ pub const POSE: [&str; 7] = ["px", "py", "pz", "q0", "q1", "q2", "q3"];
 /// depth `h_b` (all m).
 pub const GEOMETRY: [&str; 6] = ["r", "L", "rho_p", "R", "rho_h", "h_b"];
 
-/// The contact pairs, each a function of the pose and one angle.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Pair {
-    /// The hole's mouth-edge torus against the peg's cylindrical side.
-    EdgeSide,
-    /// The peg's bottom-rim torus against the bore wall.
-    RimWall,
-    /// The peg's bottom-rim torus against the block's top face.
-    RimTop,
-    /// The peg's bottom-rim torus against the bore bottom.
-    RimBottom,
-}
-
-impl Pair {
-    /// Every pair, in emission order.
-    pub const ALL: [Pair; 4] = [Pair::EdgeSide, Pair::RimWall, Pair::RimTop, Pair::RimBottom];
-
-    /// The generated function's name.
-    pub fn name(self) -> &'static str {
-        match self {
-            Pair::EdgeSide => "edge_side",
-            Pair::RimWall => "rim_wall",
-            Pair::RimTop => "rim_top",
-            Pair::RimBottom => "rim_bottom",
-        }
-    }
-}
+pub use super::pair::Pair;
 
 fn dot<'g>(a: &V3<'g>, b: &V3<'g>) -> Expr<'g> {
     a[0] * b[0] + a[1] * b[1] + a[2] * b[2]

@@ -27,6 +27,7 @@
 //! Units: SI.
 
 pub mod geometry;
+pub mod pair;
 
 use crate::expr::Expr;
 use crate::graph::Graph;
