@@ -49,7 +49,7 @@ use std::path::{Path, PathBuf};
 pub use document::Document;
 pub use integrator::{IntegratorSpec, Method};
 pub use progress::Progress;
-pub use summary::{IntegrationSummary, Metric, RunSummary, significant};
+pub use summary::{EventRecord, IntegrationSummary, Metric, RunSummary, significant};
 
 use crate::error::{RunError, SceneError, SceneErrors};
 
