@@ -89,26 +89,36 @@ def casadi_rigid():
     return ca.Function("forward", args, [ca.vertcat(a, b)], {"cse": True})
 
 
-def casadi_vectorized(fn, n):
-    """``fn`` on n points: inputs (N, len) numpy arrays (transposed to
-    CasADi's one column per point), output (N, total) numpy."""
+def casadi_numpy(fn, n, xs):
+    """``fn`` mapped over n points, called as a numpy user calls it: the
+    (N, len) arrays in (transposed to CasADi's one column per point),
+    an (N, total) array out."""
     mapped = fn.map(n, "serial")
+    return lambda: mapped(*[x.T for x in xs]).full().T, np.asarray
 
-    def call(*xs):
-        return mapped(*[x.T for x in xs]).full().T
 
-    return call
+def casadi_dm(fn, n, xs):
+    """The same map called on inputs already converted to ``casadi.DM``,
+    its DM result kept (CasADi's evaluation alone)."""
+    import casadi as ca
+
+    mapped = fn.map(n, "serial")
+    args = [ca.DM(np.ascontiguousarray(x.T)) for x in xs]
+    return lambda: mapped(*args), lambda v: v.full().T
 
 
 def peers():
-    """Optional peers: {(module, name): {peer: factory(n) -> callable(*xs)}}."""
+    """Optional peers: {(module, name): {peer: factory(n, xs) -> (thunk,
+    to_numpy)}}: ``thunk()`` evaluates at the points ``xs`` (timed),
+    ``to_numpy(thunk())`` gives the (N, total) values."""
     out = {("pendulum", "energy"): {}, ("rigid_peg", "forward"): {}}
     try:
         import sympy  # noqa: F401
 
         lam = sympy_energy()
-        out[("pendulum", "energy")]["SymPy lambdify"] = (
-            lambda n: lambda x, p: lam(x[:, 0], x[:, 1], p[:, 0], p[:, 1], p[:, 2])
+        out[("pendulum", "energy")]["SymPy lambdify"] = lambda n, xs: (
+            lambda: lam(xs[0][:, 0], xs[0][:, 1], xs[1][:, 0], xs[1][:, 1], xs[1][:, 2]),
+            np.asarray,
         )
     except ImportError:
         pass
@@ -119,15 +129,17 @@ def peers():
     sys.path.insert(0, str(ROOT / "benches" / "peers"))
     for key, build in [(("pendulum", "energy"), casadi_pendulum), (("rigid_peg", "forward"), casadi_rigid)]:
         fn = build()
-        out[key]["CasADi map"] = lambda n, fn=fn: casadi_vectorized(fn, n)
+        out[key]["CasADi (numpy)"] = lambda n, xs, fn=fn: casadi_numpy(fn, n, xs)
+        out[key]["CasADi (DM)"] = lambda n, xs, fn=fn: casadi_dm(fn, n, xs)
     return out
 
 
-def agreement(f, peer, xs):
+def agreement(f, factory, xs):
     """Largest difference of the peer's values from pegdyn's, relative to
     the largest |value| of each output entry over the points."""
     ours = f.raw(*xs)
-    theirs = np.asarray(peer(*xs), dtype=float).reshape(ours.shape)
+    thunk, to_numpy = factory(len(xs[0]), xs)
+    theirs = np.asarray(to_numpy(thunk()), dtype=float).reshape(ours.shape)
     scale = np.maximum(np.abs(ours).max(axis=0), 1e-300)
     return float((np.abs(theirs - ours) / scale).max())
 
@@ -143,7 +155,7 @@ def vectorized():
         f = pegdyn.function(module, name)
         for peer, factory in table[(module, name)].items():
             xs = make(rng, 1000)
-            print(f"# {f.path} vs {peer}: max relative difference {agreement(f, factory(1000), xs):.1e} (1000 points)")
+            print(f"# {f.path} vs {peer}: max relative difference {agreement(f, factory, xs):.1e} (1000 points)")
         for n in (1, 1_000, 1_000_000):
             xs = make(rng, n)
             reps = 3 if n == 1_000_000 else 200
@@ -155,8 +167,8 @@ def vectorized():
                 if factory is None:
                     cells.append(f"{'-':>16}")
                     continue
-                call = factory(n)
-                cells.append(f"{best(lambda: call(*xs), reps) * 1e9 / n:16.1f}")
+                thunk, _ = factory(n, xs)
+                cells.append(f"{best(thunk, reps) * 1e9 / n:16.1f}")
             print(f"{f.path:26} {n:>8} {py:14.1f} {rs:12.1f} " + " ".join(cells))
 
 
@@ -205,7 +217,9 @@ if __name__ == "__main__":
     ap = argparse.ArgumentParser()
     ap.add_argument("--runs", type=int, default=10_000)
     ap.add_argument("--skip-dask", action="store_true")
+    ap.add_argument("--functions-only", action="store_true")
     a = ap.parse_args()
     vectorized()
-    no_output()
-    sweep(a.runs, dask=not a.skip_dask)
+    if not a.functions_only:
+        no_output()
+        sweep(a.runs, dask=not a.skip_dask)
