@@ -1,14 +1,15 @@
 //! Runs without files: a [`Capture`] stands for an output directory that
 //! exists only in memory.
 //!
-//! A scene writes its outputs through [`super::csv::CsvWriter`] and
-//! [`super::plot::Figure::save`] into paths under `RunContext::out_dir`.
-//! When that directory is a capture's [`Capture::dir`], the CSV writer keeps
-//! the rows in memory (or drops them) instead of creating a file, and a
-//! figure is checked (an empty panel is refused as when drawing) but not
-//! drawn. Every scene kind therefore runs in memory without knowing it, with
-//! the same checks as on disk: a non-finite value is refused naming column
-//! and row, exactly as for a file.
+//! A scene writes its outputs through [`super::csv::CsvWriter`],
+//! [`super::plot::Figure::save`] and [`super::atomic::write`] into paths
+//! under `RunContext::out_dir`. When that directory is a capture's
+//! [`Capture::dir`], the CSV writer keeps the rows in memory (or drops
+//! them) instead of creating a file, a figure is checked (an empty panel is
+//! refused as when drawing) but not drawn, and `atomic::write` writes
+//! nothing. Every scene kind that writes through these three therefore runs
+//! in memory without knowing it, with the same checks as on disk: a
+//! non-finite value is refused naming column and row, exactly as for a file.
 //!
 //! A captured number is the `f64` the scene computed; a file holds its
 //! shortest round-trip decimal, which parses back to the same bits, so a
