@@ -6,7 +6,7 @@ The same objects as the ``pegdyn`` command line, as Python values:
 
 >>> import pegdyn
 >>> scene = pegdyn.load("scenes/pendulum.toml")      # or loads(text), from_dict(d)
->>> result = scene.run()                              # Result: columns, outcome, summary
+>>> result = scene.run()                              # in memory: columns, outcome, events, summary
 >>> result.columns["theta_rad"][:3]                   # numpy arrays
 >>> f = pegdyn.function("pendulum", "energy")         # a generated function
 >>> f(states, params)                                 # one row per point

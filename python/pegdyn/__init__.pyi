@@ -3,7 +3,7 @@
 import os
 from dataclasses import dataclass
 from types import SimpleNamespace
-from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence, Tuple, Union, overload
+from typing import Any, Dict, Iterator, List, Mapping, NamedTuple, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -38,10 +38,12 @@ class Scene:
     def with_values(self, values: Mapping[str, Any]) -> Scene: ...
     def run(self, out: Optional[PathLike] = None) -> Result: ...
 
-@dataclass(frozen=True)
-class Event:
-    name: str
+class Event(NamedTuple):
     t: float
+    name: str
+    details: Dict[str, Any]
+    @property
+    def terminal(self) -> bool: ...
 
 @dataclass(frozen=True)
 class Outcome:

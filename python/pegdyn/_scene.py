@@ -3,11 +3,8 @@
 from __future__ import annotations
 
 import os
-import re
-import shutil
-import tempfile
 from dataclasses import dataclass
-from typing import Any, Dict, List, Mapping, Optional, Tuple, Union
+from typing import Any, Dict, List, Mapping, NamedTuple, Optional, Tuple, Union
 
 from . import _pegdyn as _core
 
@@ -57,8 +54,10 @@ class Scene:
 
         ``out``: a directory to write ``<name>.csv``, ``<name>.svg`` (and
         the scene's other files) into, as ``pegdyn run --out`` does; the
-        paths are in ``Result.paths``. Without it the files go to a
-        temporary directory that is removed after reading them back.
+        paths are in ``Result.paths``. Without it nothing is written: the
+        tables are kept in memory (the same numbers the files would hold,
+        bit for bit) and figures are not drawn (only checked, so a run
+        fails the same way as with files).
 
         The run releases the GIL; Ctrl-C (KeyboardInterrupt) returns at
         once (the abandoned integration finishes in a background thread
@@ -67,13 +66,9 @@ class Scene:
         see ``Result.outcome.success``.
         """
         if out is None:
-            tmp = tempfile.mkdtemp(prefix="pegdyn-run-")
-            try:
-                return _result(_core.run(self.text, self.name, tmp), self.name, keep_paths=False)
-            finally:
-                shutil.rmtree(tmp, ignore_errors=True)
+            return _result(_core.run(self.text, self.name, None), self.name)
         os.makedirs(out, exist_ok=True)
-        return _result(_core.run(self.text, self.name, os.fspath(out)), self.name, keep_paths=True)
+        return _result(_core.run(self.text, self.name, os.fspath(out)), self.name)
 
     def __reduce__(self):
         return (Scene, (self.text, self.name))
@@ -110,12 +105,26 @@ def from_dict(d: Mapping[str, Any], name: str = "scene") -> Scene:
     return Scene(_core.to_toml(dict(d)), name)
 
 
-@dataclass(frozen=True)
-class Event:
-    """The event that ended an integration: its ``name`` and time ``t`` (s)."""
+class Event(NamedTuple):
+    """An event that fired during an integration, as ``(t, name, details)``.
 
-    name: str
+    - ``t``: located time (s);
+    - ``name``: the scene's name for it (``#index`` when unnamed);
+    - ``details``: ``terminal`` (True when it ended the integration) and
+      named numbers: for an integrator event ``direction`` (+1 rising
+      through zero, -1 falling) and the state there, ``x[0]``, ``x[1]``,
+      ... in the scene's state order; for the rigid peg's restarts from
+      rest ``direction_gamma`` and ``direction_psi``.
+    """
+
     t: float
+    name: str
+    details: Dict[str, Any]
+
+    @property
+    def terminal(self) -> bool:
+        """Whether this event ended the integration."""
+        return bool(self.details.get("terminal", False))
 
 
 @dataclass(frozen=True)
@@ -133,9 +142,6 @@ class Outcome:
     rhs_calls: Optional[int] = None
 
 
-_EVENT = re.compile(r"event `([^`]*)` at t = (\S+) s")
-
-
 @dataclass
 class Result:
     """What a run produced.
@@ -143,8 +149,8 @@ class Result:
     - ``columns``: the main table ``<name>.csv`` as a dict of numpy float64
       arrays (text columns as lists of str), exactly the numbers written;
     - ``tables``: every CSV the run wrote, by file stem;
-    - ``outcome``: an :class:`Outcome`; ``events``: the terminal
-      :class:`Event` (a list, empty when the run reached its end time);
+    - ``outcome``: an :class:`Outcome`; ``events``: every :class:`Event`
+      that fired, in time order (a terminal one last);
     - ``metrics``: scalar results ``{name: value}``; ``units`` their units;
     - ``summary``: the raw summary dict; ``text``: what ``pegdyn run`` prints;
     - ``paths``: files written (empty when ``run`` had no ``out``).
@@ -168,18 +174,19 @@ class Result:
         return pd.DataFrame(self.columns if table is None else self.tables[table])
 
 
-def _result(summary: Dict[str, Any], name: str, keep_paths: bool) -> Result:
+def _result(summary: Dict[str, Any], name: str) -> Result:
     outputs = list(summary["outputs"])
-    tables: Dict[str, Dict[str, Any]] = {}
-    for p in outputs:
-        if p.endswith(".csv"):
-            tables[os.path.splitext(os.path.basename(p))[0]] = _core.read_csv(p)
+    tables: Dict[str, Dict[str, Any]] = summary["tables"] or {}
+    if summary["tables"] is None:
+        for p in outputs:
+            if p.endswith(".csv"):
+                tables[os.path.splitext(os.path.basename(p))[0]] = _core.read_csv(p)
     # The main table is `<name>.csv` when the scene writes one, else the first.
     main = tables.get(name, next(iter(tables.values()), {}))
     integ = summary["integration"]
+    events = [Event(t, n, dict(d)) for t, n, d in summary["events"]]
     if integ is None:
         outcome = Outcome(success=bool(summary["success"]))
-        events: List[Event] = []
     else:
         outcome = Outcome(
             success=integ["success"],
@@ -190,8 +197,6 @@ def _result(summary: Dict[str, Any], name: str, keep_paths: bool) -> Result:
             rejected=integ["rejected"],
             rhs_calls=integ["rhs_calls"],
         )
-        m = _EVENT.search(integ["stop"])
-        events = [Event(m.group(1), float(m.group(2)))] if m else []
     return Result(
         columns=main,
         tables=tables,
@@ -201,5 +206,5 @@ def _result(summary: Dict[str, Any], name: str, keep_paths: bool) -> Result:
         units={n: u for n, _, u in summary["metrics"]},
         summary=summary,
         text=summary["text"],
-        paths=outputs if keep_paths else [],
+        paths=outputs,
     )

@@ -12,10 +12,11 @@ use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
+use pegdyn::output::memory::{Capture, Keep, Table};
 use pegdyn::scene::{self, Progress, RunContext, RunSummary};
 
 use crate::errors::{RunError, scene_error};
-use crate::value;
+use crate::{table, value};
 
 /// check(text, name, prefix=None) -> (kind, description, describe)
 ///
@@ -87,28 +88,54 @@ pub fn interruptible<T: Send + 'static>(
 pub enum Outcome {
     Invalid(pegdyn::error::SceneErrors),
     Failed(String),
-    Done(RunSummary),
+    /// The summary and, for a run in memory with [`Keep::Tables`], the
+    /// tables it wrote.
+    Done(RunSummary, Vec<Table>),
 }
 
-/// Parses `text` and runs it into `out_dir` (created), silently.
-pub fn run_text(text: &str, name: &str, out_dir: PathBuf) -> Outcome {
+/// Where a run's outputs go.
+pub enum Output {
+    /// Files in this directory (created), as `pegdyn run --out`.
+    Dir(PathBuf),
+    /// No file: tables kept in memory or dropped.
+    Memory(Keep),
+}
+
+/// Parses `text` and runs it silently, writing into `out`.
+pub fn run_text(text: &str, name: &str, out: Output) -> Outcome {
     let loaded = match scene::parse_named(text, name) {
         Ok(s) => s,
         Err(e) => return Outcome::Invalid(e),
     };
-    if let Err(e) = std::fs::create_dir_all(&out_dir) {
-        return Outcome::Failed(format!(
-            "cannot create output directory {}: {e}",
-            out_dir.display()
-        ));
-    }
+    let (out_dir, capture) = match out {
+        Output::Dir(dir) => {
+            if let Err(e) = std::fs::create_dir_all(&dir) {
+                return Outcome::Failed(format!(
+                    "cannot create output directory {}: {e}",
+                    dir.display()
+                ));
+            }
+            (dir, None)
+        }
+        Output::Memory(keep) => {
+            let c = Capture::new(keep);
+            (c.dir().to_path_buf(), Some(c))
+        }
+    };
     let mut ctx = RunContext {
         out_dir,
         name: loaded.name.clone(),
         progress: Progress::silent(),
     };
     match loaded.scene.run(&mut ctx) {
-        Ok(s) => Outcome::Done(s),
+        Ok(mut s) => match capture {
+            Some(c) => {
+                // Nothing was written: no paths to report.
+                s.outputs.clear();
+                Outcome::Done(s, c.into_tables())
+            }
+            None => Outcome::Done(s, Vec::new()),
+        },
         Err(e) => Outcome::Failed(e.to_string()),
     }
 }
@@ -132,6 +159,16 @@ pub fn summary_dict<'py>(py: Python<'py>, s: &RunSummary) -> PyResult<Bound<'py,
         }
         None => d.set_item("integration", py.None())?,
     }
+    let events = PyList::empty(py);
+    for e in s.integration.iter().flat_map(|i| &i.events) {
+        let details = PyDict::new(py);
+        details.set_item("terminal", e.terminal)?;
+        for (k, v) in &e.details {
+            details.set_item(k, v)?;
+        }
+        events.append((e.t, e.name.as_str(), details))?;
+    }
+    d.set_item("events", events)?;
     let metrics = PyList::empty(py);
     for m in &s.metrics {
         metrics.append((m.name.as_str(), m.value, m.unit))?;
@@ -148,21 +185,35 @@ pub fn summary_dict<'py>(py: Python<'py>, s: &RunSummary) -> PyResult<Bound<'py,
     Ok(d)
 }
 
-/// run(text, name, out_dir) -> dict
+/// run(text, name, out_dir=None) -> dict
 ///
-/// Runs the scene into `out_dir` with the GIL released (Ctrl-C returns at
-/// once); returns the summary dict of [`summary_dict`]. Raises SceneError
-/// for an invalid scene and RunError when the run fails.
+/// Runs the scene with the GIL released (Ctrl-C returns at once) into
+/// `out_dir`, or, without it, in memory (no file is written); returns the
+/// summary dict of [`summary_dict`] plus `tables`: None with `out_dir`,
+/// else `{file stem: {column: array | list[str]}}` in the order the run
+/// finished them. Raises SceneError for an invalid scene and RunError
+/// when the run fails.
 #[pyfunction]
+#[pyo3(signature = (text, name, out_dir=None))]
 pub fn run<'py>(
     py: Python<'py>,
     text: String,
     name: String,
-    out_dir: PathBuf,
+    out_dir: Option<PathBuf>,
 ) -> PyResult<Bound<'py, PyDict>> {
-    match interruptible(py, move || run_text(&text, &name, out_dir))? {
+    let in_memory = out_dir.is_none();
+    let out = out_dir.map_or(Output::Memory(Keep::Tables), Output::Dir);
+    match interruptible(py, move || run_text(&text, &name, out))? {
         Outcome::Invalid(e) => Err(scene_error(py, &e, None)),
         Outcome::Failed(msg) => Err(RunError::new_err(msg)),
-        Outcome::Done(s) => summary_dict(py, &s),
+        Outcome::Done(s, tables) => {
+            let d = summary_dict(py, &s)?;
+            if in_memory {
+                d.set_item("tables", table::tables_dict(py, tables)?)?;
+            } else {
+                d.set_item("tables", py.None())?;
+            }
+            Ok(d)
+        }
     }
 }

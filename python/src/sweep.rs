@@ -2,9 +2,6 @@
 //! run in parallel with rayon. The Python `pegdyn.sweep` calls this for
 //! the whole sweep (local) or once per batch on each Dask worker.
 
-use std::path::PathBuf;
-use std::sync::atomic::{AtomicUsize, Ordering};
-
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -12,7 +9,9 @@ use rayon::prelude::*;
 
 use pegdyn::scene::RunSummary;
 
-use crate::scene::{Outcome, interruptible, run_text};
+use pegdyn::output::memory::Keep;
+
+use crate::scene::{Outcome, Output, interruptible, run_text};
 use crate::value;
 
 /// One finished point.
@@ -37,14 +36,6 @@ fn set(doc: &mut toml::Table, key: &str, v: toml::Value) -> Result<(), String> {
     }
     t.insert(last.to_string(), v);
     Ok(())
-}
-
-static DIRS: AtomicUsize = AtomicUsize::new(0);
-
-/// A fresh scratch directory for one run's files (removed after the run).
-fn scratch() -> PathBuf {
-    let k = DIRS.fetch_add(1, Ordering::Relaxed);
-    std::env::temp_dir().join(format!("pegdyn-sweep-{}-{k}", std::process::id()))
 }
 
 fn run_point(
@@ -72,12 +63,9 @@ fn run_point(
             };
         }
     };
-    let dir = scratch();
-    let outcome = run_text(&text, name, dir.clone());
-    // Scratch files are best-effort cleanup: a leftover directory is harmless.
-    let _ = std::fs::remove_dir_all(&dir);
-    let result = match outcome {
-        Outcome::Done(s) => Ok(s),
+    // Only the summary is kept: the run writes no file and keeps no table.
+    let result = match run_text(&text, name, Output::Memory(Keep::Nothing)) {
+        Outcome::Done(s, _) => Ok(s),
         Outcome::Invalid(e) => Err(("invalid".into(), e.to_string())),
         Outcome::Failed(m) => Err(("failed".into(), m)),
     };

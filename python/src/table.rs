@@ -1,4 +1,5 @@
-//! Reading back the CSV files a run wrote. `pegdyn` prints every `f64` in the
+//! The tables of a run as Python values: captured in memory
+//! ([`tables_dict`]), or read back from the CSV files a run wrote. `pegdyn` prints every `f64` in the
 //! shortest form that parses back to the same bits, so the arrays hold
 //! exactly the numbers the run computed.
 
@@ -6,6 +7,30 @@ use numpy::IntoPyArray;
 use pyo3::exceptions::{PyOSError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+
+use pegdyn::output::memory;
+
+/// tables_dict: `{file stem: {column: float64 array | list[str]}}`, the
+/// captured tables in order (the same values [`read_csv`] reads from the
+/// files of the same run).
+pub fn tables_dict<'py>(
+    py: Python<'py>,
+    tables: Vec<memory::Table>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let out = PyDict::new(py);
+    for t in tables {
+        let stem = t.stem();
+        let cols = PyDict::new(py);
+        for (name, col) in t.header.iter().zip(t.columns) {
+            match col {
+                memory::Column::Numbers(v) => cols.set_item(name, v.into_pyarray(py))?,
+                memory::Column::Text(v) => cols.set_item(name, v)?,
+            }
+        }
+        out.set_item(stem, cols)?;
+    }
+    Ok(out)
+}
 
 /// One column: numbers, or text when any cell is not a number.
 enum Column {

@@ -24,6 +24,14 @@ def test_every_shipped_scene_is_found():
     assert {p.stem for p in SCENES} >= {"pendulum", "fig9", "jamming", "insert_compliant"}
 
 
+def test_every_scene_kind_has_a_shipped_scene():
+    # The package wraps kinds through the runtime's registry: a new kind
+    # needs no Python change, only a scene in scenes/ for the comparison
+    # with the CLI below to cover it.
+    shipped = {pegdyn.load(p).kind for p in SCENES}
+    assert shipped == {k for k, _ in pegdyn.kinds()}
+
+
 def cli_run(cli, scene, tmp_path):
     src = tmp_path / f"{scene.name}.toml"
     src.write_text(scene.text)
@@ -46,6 +54,9 @@ def test_run_agrees_with_cli_csv(path, cli, tmp_path):
     proc, out = cli_run(cli, scene, tmp_path)
     result = scene.run()
     assert result.paths == []
+    # In memory: no "wrote" line, and the same tables as from the files.
+    assert "wrote" not in result.text
+    assert "pegdyn-memory" not in result.text
     cli_csvs = sorted(out.glob("*.csv"))
     assert cli_csvs, proc.stderr
     assert sorted(result.tables) == [c.stem for c in cli_csvs]
@@ -82,6 +93,23 @@ def test_run_with_out_writes_the_cli_files(cli, tmp_path):
     assert py_csv == (cli_out / "pendulum.csv").read_bytes()
 
 
+@pytest.mark.parametrize("stem", ["pendulum", "jamming"])
+def test_run_in_memory_equals_run_to_files(stem, tmp_path):
+    scene = scene_for(next(p for p in SCENES if p.stem == stem))
+    mem, files = scene.run(), scene.run(out=tmp_path)
+    assert sorted(files.paths) == sorted(str(p) for p in tmp_path.iterdir())
+    assert list(mem.tables) == [t for t in mem.tables if t in files.tables]
+    assert sorted(mem.tables) == sorted(files.tables)
+    for name, table in files.tables.items():
+        assert list(mem.tables[name]) == list(table)
+        for col, v in table.items():
+            if isinstance(v, list):
+                assert mem.tables[name][col] == v
+            else:
+                assert mem.tables[name][col].tobytes() == v.tobytes(), (name, col)
+    assert mem.metrics == files.metrics and mem.events == files.events
+
+
 def test_loads_and_from_dict_round_trip():
     base = pegdyn.load(next(p for p in SCENES if p.stem == "pendulum"))
     d = {
@@ -97,7 +125,21 @@ def test_loads_and_from_dict_round_trip():
     # Energy is conserved to the tolerance: a real value, not a shape check.
     e = a.columns["energy_J"]
     assert abs(e[-1] - e[0]) < 1e-8 * abs(e[0])
-    assert a.outcome.t_end == 2.0 and a.events == []
+    assert a.outcome.t_end == 2.0
+    # From 60 degrees at rest, theta rises through zero once in 2 s, three
+    # quarters of a period in: a passing (non-terminal) event.
+    [ev] = a.events
+    t, name, details = ev
+    assert name == "theta_zero_rising" and not ev.terminal
+    assert details["direction"] == 1.0 and abs(details["x[0]"]) < 1e-9
+    assert 0.5 < details["x[1]"] and 1.0 < t < 2.0
+    # Exact period 4 sqrt(L/g) K(sin(theta0/2)), K by the arithmetic-geometric mean.
+    k = math.sin(math.radians(60.0) / 2)
+    x, y = 1.0, math.sqrt(1 - k * k)
+    for _ in range(8):
+        x, y = (x + y) / 2, math.sqrt(x * y)
+    period = 4 * math.sqrt(1.0 / 9.80665) * math.pi / (2 * x)
+    assert t == pytest.approx(0.75 * period, rel=1e-7)
 
 
 def test_scene_pickles_as_its_text():
@@ -108,15 +150,23 @@ def test_scene_pickles_as_its_text():
     assert t == s and t.kind == "fig9"
 
 
-def test_terminal_event_is_reported():
-    s = pegdyn.load(next(p for p in SCENES if p.stem == "align_forward"))
+def test_every_event_is_reported_and_a_terminal_one_last():
+    s = pegdyn.load(next(p for p in SCENES if p.stem == "pendulum"))
     r = s.run()
-    if r.events:
-        ev = r.events[0]
-        assert ev.t == pytest.approx(r.outcome.t_end)
-        assert ev.name in r.outcome.stop
-    else:
-        assert "event" not in r.outcome.stop
+    period = r.metrics["period (measured)"]
+    times = [e.t for e in r.events]
+    assert len(times) >= 2 and all(e.name == "theta_zero_rising" for e in r.events)
+    assert not any(e.terminal for e in r.events)
+    # Upward zero crossings one period apart.
+    np.testing.assert_allclose(np.diff(times), period, rtol=1e-6)
+    assert all(e.details["direction"] == 1.0 for e in r.events)
+    # The inserted peg's scene ends on its terminal event, reported last.
+    ins = pegdyn.load(next(p for p in SCENES if p.stem == "insert_compliant")).run()
+    stop = ins.outcome.stop
+    if "event" in stop:
+        last = ins.events[-1]
+        assert last.terminal and last.name in stop and last.t == ins.outcome.t_end
+    assert sum(e.terminal for e in ins.events) == (1 if "event" in stop else 0)
 
 
 def test_to_pandas_when_installed():

@@ -73,12 +73,16 @@ pub fn commit(tmp: &Path, path: &Path) -> Result<(), OutputError> {
     Ok(())
 }
 
-/// Writes `bytes` to `path` atomically (temporary file, then rename).
+/// Writes `bytes` to `path` atomically (temporary file, then rename); a
+/// path in a [`super::memory::Capture`] directory writes nothing.
 ///
 /// # Errors
 /// As [`commit`], and [`OutputError::Io`] if the temporary file cannot be
 /// written.
 pub fn write(path: &Path, bytes: &[u8]) -> Result<(), OutputError> {
+    if super::memory::is_memory(path) {
+        return Ok(());
+    }
     let tmp = temp_path(path);
     if let Err(source) = std::fs::write(&tmp, bytes) {
         let _ = std::fs::remove_file(&tmp);

@@ -21,6 +21,7 @@ use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
+use super::memory::TableSink;
 use crate::error::OutputError;
 
 /// Formats `v` so that `v.to_string().parse::<f64>() == v` bit for bit:
@@ -42,11 +43,14 @@ pub fn format_f64(v: f64) -> String {
 /// Every value must be finite: a NaN or infinity is refused with
 /// [`OutputError::NonFinite`] naming the column and row, so that no CSV of
 /// NaN is ever left behind.
+///
+/// A path in a [`super::memory::Capture`] directory is never created: the
+/// rows (checked the same way) go to the capture instead.
 #[derive(Debug)]
 pub struct CsvWriter {
     path: PathBuf,
     tmp: PathBuf,
-    out: BufWriter<File>,
+    out: Sink,
     header: Vec<String>,
     columns: usize,
     rows: usize,
@@ -55,9 +59,16 @@ pub struct CsvWriter {
     infinite_ok: Vec<bool>,
 }
 
+/// Where the rows go: a file, or a table held in memory.
+#[derive(Debug)]
+enum Sink {
+    File(BufWriter<File>),
+    Memory(Option<TableSink>),
+}
+
 impl Drop for CsvWriter {
     fn drop(&mut self) {
-        if !self.done {
+        if !self.done && matches!(self.out, Sink::File(_)) {
             // Best effort: an unfinished temporary file is garbage.
             let _ = std::fs::remove_file(&self.tmp);
         }
@@ -72,6 +83,20 @@ impl CsvWriter {
             path: path.to_path_buf(),
             source,
         };
+        let header: Vec<String> = header.iter().map(|h| (*h).to_owned()).collect();
+        if let Some(sink) = TableSink::for_path(path, &header) {
+            return Ok(CsvWriter {
+                path: path.to_path_buf(),
+                tmp: path.to_path_buf(),
+                out: Sink::Memory(Some(sink)),
+                columns: header.len(),
+                infinite_ok: vec![false; header.len()],
+                header,
+                rows: 0,
+                line: String::new(),
+                done: false,
+            });
+        }
         if super::atomic::is_protected(path) {
             return Err(OutputError::WouldOverwriteScene {
                 path: path.to_path_buf(),
@@ -82,15 +107,17 @@ impl CsvWriter {
         let mut w = CsvWriter {
             path: path.to_path_buf(),
             tmp,
-            out: BufWriter::new(file),
-            header: header.iter().map(|h| (*h).to_owned()).collect(),
+            out: Sink::File(BufWriter::new(file)),
             columns: header.len(),
+            infinite_ok: vec![false; header.len()],
+            header,
             rows: 0,
             line: String::new(),
             done: false,
-            infinite_ok: vec![false; header.len()],
         };
-        writeln!(w.out, "{}", header.join(",")).map_err(io)?;
+        if let Sink::File(out) = &mut w.out {
+            writeln!(out, "{}", w.header.join(",")).map_err(io)?;
+        }
         Ok(w)
     }
 
@@ -118,6 +145,11 @@ impl CsvWriter {
         if let Some(i) = values.iter().enumerate().position(bad) {
             return Err(self.non_finite(i, &format_f64(values[i]), &format_f64(values[0])));
         }
+        if let Sink::Memory(Some(m)) = &mut self.out {
+            m.numbers(values);
+            self.rows += 1;
+            return Ok(());
+        }
         self.line.clear();
         for (i, v) in values.iter().enumerate() {
             if i > 0 {
@@ -127,8 +159,14 @@ impl CsvWriter {
         }
         self.line.push('\n');
         self.rows += 1;
-        self.out
-            .write_all(self.line.as_bytes())
+        self.write_line()
+    }
+
+    fn write_line(&mut self) -> Result<(), OutputError> {
+        let Sink::File(out) = &mut self.out else {
+            return Ok(());
+        };
+        out.write_all(self.line.as_bytes())
             .map_err(|source| OutputError::Io {
                 path: self.path.clone(),
                 source,
@@ -155,16 +193,16 @@ impl CsvWriter {
         if let Some(i) = cells.iter().enumerate().position(bad) {
             return Err(self.non_finite(i, cells[i], cells[0]));
         }
+        if let Sink::Memory(Some(m)) = &mut self.out {
+            m.text(cells);
+            self.rows += 1;
+            return Ok(());
+        }
         self.line.clear();
         self.line.push_str(&cells.join(","));
         self.line.push('\n');
         self.rows += 1;
-        self.out
-            .write_all(self.line.as_bytes())
-            .map_err(|source| OutputError::Io {
-                path: self.path.clone(),
-                source,
-            })
+        self.write_line()
     }
 
     fn non_finite(&self, column: usize, value: &str, first: &str) -> OutputError {
@@ -184,7 +222,17 @@ impl CsvWriter {
 
     /// Flushes the file and renames it into place; returns its path.
     pub fn finish(mut self) -> Result<PathBuf, OutputError> {
-        self.out.flush().map_err(|source| OutputError::Io {
+        let out = match &mut self.out {
+            Sink::File(out) => out,
+            Sink::Memory(m) => {
+                if let Some(m) = m.take() {
+                    m.finish();
+                }
+                self.done = true;
+                return Ok(self.path.clone());
+            }
+        };
+        out.flush().map_err(|source| OutputError::Io {
             path: self.path.clone(),
             source,
         })?;

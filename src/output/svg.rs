@@ -38,9 +38,30 @@ impl Figure {
     }
 
     /// Renders and writes to `path`.
+    ///
+    /// A path in a [`super::memory::Capture`] directory is not drawn: only
+    /// the check that every panel has a drawable point is made.
     pub fn save(&self, path: &Path) -> Result<(), OutputError> {
+        if super::memory::is_memory(path) {
+            return self.check_drawable(path);
+        }
         let svg = self.render_for(path)?;
         super::atomic::write(path, svg.as_bytes())
+    }
+
+    /// Refuses a panel without a drawable point, as drawing does.
+    fn check_drawable(&self, path: &Path) -> Result<(), OutputError> {
+        for panel in &self.panels {
+            let x = bounds(panel, panel.x_scale, |p| p.0);
+            let y = bounds(panel, panel.y_scale, |p| p.1);
+            if x.is_none() || y.is_none() {
+                return Err(OutputError::EmptyPlot {
+                    path: path.to_path_buf(),
+                    panel: panel.title.clone(),
+                });
+            }
+        }
+        Ok(())
     }
 
     fn render_for(&self, path: &Path) -> Result<String, OutputError> {

@@ -42,13 +42,15 @@ use crate::integrate::{Options, OutputMode};
 use crate::output::csv::CsvWriter;
 use crate::output::plot::{Figure, Panel, Series};
 use crate::rigid_peg::forward::{ForwardModel, FrictionLaw};
-use crate::rigid_peg::trajectory::simulate_with_progress;
+use crate::rigid_peg::stop::ForwardStop;
+use crate::rigid_peg::trajectory::{Restart, simulate_with_progress};
 use crate::rigid_peg::{Loads, RigidError};
 use crate::scene::fig9::PegTable;
 use crate::scene::simulate::solver_config;
 use crate::scene::validate::Checker;
 use crate::scene::{
-    Document, IntegrationSummary, IntegratorSpec, Kind, Metric, RunContext, RunSummary, Scene,
+    Document, EventRecord, IntegrationSummary, IntegratorSpec, Kind, Metric, RunContext,
+    RunSummary, Scene,
 };
 
 /// Registry entry.
@@ -120,6 +122,33 @@ pub struct FrictionTable {
     /// Regularization velocity scale, m/s.
     #[serde(default = "default_v_s")]
     pub v_s: f64,
+}
+
+/// The restarts from rest (`restart_from_rest`, with the new direction û
+/// in (γ, ψ)) and, for a planned stop other than the end time, the stop
+/// itself (terminal, named as [`ForwardStop::name`]).
+fn events(restarts: &[Restart], stop: &ForwardStop, t_stop: f64) -> Vec<EventRecord> {
+    let mut out: Vec<EventRecord> = restarts
+        .iter()
+        .map(|r| EventRecord {
+            name: "restart_from_rest".into(),
+            t: r.t,
+            terminal: false,
+            details: vec![
+                ("direction_gamma".into(), r.direction[0]),
+                ("direction_psi".into(), r.direction[1]),
+            ],
+        })
+        .collect();
+    if stop.is_success() && !matches!(stop, ForwardStop::ReachedEnd { .. }) {
+        out.push(EventRecord {
+            name: stop.name(),
+            t: t_stop,
+            terminal: true,
+            details: Vec::new(),
+        });
+    }
+    out
 }
 
 fn default_v_stop() -> f64 {
@@ -312,6 +341,7 @@ impl Scene for AlignForwardScene {
             steps: tr.stats.steps,
             rejected: tr.stats.rejected,
             rhs_calls: tr.stats.rhs_calls,
+            events: events(&tr.restarts, &tr.stop, t_final),
         };
         let mut metrics = vec![
             Metric::new(format!("event `{}` at t", tr.stop.name()), t_final, "s"),

@@ -49,7 +49,7 @@ use std::path::{Path, PathBuf};
 pub use document::Document;
 pub use integrator::{IntegratorSpec, Method};
 pub use progress::Progress;
-pub use summary::{IntegrationSummary, Metric, RunSummary, significant};
+pub use summary::{EventRecord, IntegrationSummary, Metric, RunSummary, significant};
 
 use crate::error::{RunError, SceneError, SceneErrors};
 
@@ -141,7 +141,9 @@ pub fn load(path: &Path) -> Result<LoadedScene, SceneErrors> {
 /// What a running scene gets from the caller.
 #[derive(Debug)]
 pub struct RunContext {
-    /// Directory for the outputs (exists when the run starts).
+    /// Directory for the outputs: exists when the run starts, or is a
+    /// [`crate::output::memory::Capture`] directory held in memory (write
+    /// only through `CsvWriter`, `Figure::save` and `atomic::write`).
     pub out_dir: PathBuf,
     /// Scene name (file stem), the stem of every output file.
     pub name: String,

@@ -10,7 +10,7 @@ use crate::integrate::{
 };
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::summary::significant;
-use crate::scene::{IntegrationSummary, IntegratorSpec, Method, Progress};
+use crate::scene::{EventRecord, IntegrationSummary, IntegratorSpec, Method, Progress};
 use crate::system::OdeSystem;
 
 /// The integrator method and options described by `spec`.
@@ -107,7 +107,41 @@ pub fn integration_summary<const N: usize>(
         steps: sol.stats.steps,
         rejected: sol.stats.rejected,
         rhs_calls: sol.stats.rhs_calls,
+        events: event_records(sol, event_names),
     }
+}
+
+/// Every event of `sol` in time order, named by `event_names` (`#index`
+/// when missing); the last is terminal when the integration stopped on it.
+pub fn event_records<const N: usize>(sol: &Solution<N>, event_names: &[&str]) -> Vec<EventRecord> {
+    let terminal_at = match sol.stop {
+        StopReason::Event { index, t } => Some((index, t)),
+        _ => None,
+    };
+    let last = sol.events.len().checked_sub(1);
+    sol.events
+        .iter()
+        .enumerate()
+        .map(|(k, hit)| {
+            let name = event_names
+                .get(hit.index)
+                .map_or_else(|| format!("#{}", hit.index), |n| (*n).to_string());
+            let direction = if hit.rising { 1.0 } else { -1.0 };
+            let mut details = vec![("direction".to_string(), direction)];
+            details.extend(
+                hit.x
+                    .iter()
+                    .enumerate()
+                    .map(|(i, v)| (format!("x[{i}]"), *v)),
+            );
+            EventRecord {
+                name,
+                t: hit.t,
+                terminal: Some(k) == last && terminal_at == Some((hit.index, hit.t)),
+                details,
+            }
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -177,6 +211,56 @@ mod tests {
             summary.stop
         );
         assert!(summary.rhs_calls > summary.steps);
+        let [hit] = &summary.events[..] else {
+            panic!("{:?}", summary.events)
+        };
+        assert_eq!(
+            (hit.name.as_str(), hit.t, hit.terminal),
+            ("ground", summary.t_end, true)
+        );
+        assert_eq!(hit.details[0], ("direction".to_string(), -1.0));
+        assert_eq!(hit.details[1].0, "x[0]");
+        assert!(hit.details[1].1.abs() < 1e-9, "{:?}", hit.details);
+    }
+
+    #[test]
+    fn passing_events_are_reported_before_the_terminal_one() {
+        // Falling body from 1 m: passes 0.5 m at sqrt(1/g), lands at sqrt(2/g).
+        let g = 9.81;
+        let fall = FnSystem(move |_t: f64, x: &Vector2<f64>| Vector2::new(x[1], -g));
+        let half = Event::new(|_t, x: &Vector2<f64>| x[0] - 0.5);
+        let ground = Event::new(|_t, x: &Vector2<f64>| x[0]).terminal();
+        let s = spec(Method::Dopri5, None);
+        let mut progress = Progress::silent();
+        let sol = integrate(
+            &fall,
+            Vector2::new(1.0, 0.0),
+            &s,
+            vec![half, ground],
+            &mut progress,
+        )
+        .unwrap();
+        let events = event_records(&sol, &["half_way"]);
+        let got: Vec<(&str, bool)> = events
+            .iter()
+            .map(|e| (e.name.as_str(), e.terminal))
+            .collect();
+        assert_eq!(got, [("half_way", false), ("#1", true)]);
+        assert!(
+            (events[0].t - (1.0 / g).sqrt()).abs() < 1e-9,
+            "{}",
+            events[0].t
+        );
+        assert!(
+            (events[0].details[1].1 - 0.5).abs() < 1e-9,
+            "{:?}",
+            events[0].details
+        );
+        assert!(
+            (events[1].t - (2.0 / g).sqrt()).abs() < 1e-9,
+            "{}",
+            events[1].t
+        );
     }
 
     #[test]

@@ -47,15 +47,34 @@ pub struct IntegrationSummary {
     pub rejected: usize,
     /// Right-hand-side evaluations.
     pub rhs_calls: usize,
+    /// Every event that fired, in time order; a terminal event is last.
+    /// (`pegdyn run` prints only [`IntegrationSummary::stop`].)
+    pub events: Vec<EventRecord>,
+}
+
+/// One event that fired during an integration.
+#[derive(Debug, Clone, PartialEq)]
+pub struct EventRecord {
+    /// The scene's name for it (`#index` when the scene names none).
+    pub name: String,
+    /// Located time, s.
+    pub t: f64,
+    /// Whether it ended the integration.
+    pub terminal: bool,
+    /// Named numbers describing it: for an integrator event `direction`
+    /// (+1 when the event function rose through zero, −1 when it fell) and
+    /// the state there, `x[0]`, `x[1]`, … in the scene's state order.
+    pub details: Vec<(String, f64)>,
 }
 
 impl IntegrationSummary {
     /// Appends a later integration (e.g. the next contact phase): counters
-    /// add up, the end time, stop reason and success are the later one's.
+    /// add up, events are appended, the end time, stop reason and success are the later one's.
     pub fn merge(&mut self, later: IntegrationSummary) {
         self.steps += later.steps;
         self.rejected += later.rejected;
         self.rhs_calls += later.rhs_calls;
+        self.events.extend(later.events);
         self.t_end = later.t_end;
         self.stop = later.stop;
         self.success = later.success;
@@ -154,6 +173,12 @@ mod tests {
             steps,
             rejected: 1,
             rhs_calls: 6 * steps,
+            events: vec![EventRecord {
+                name: "hit".into(),
+                t: t_end,
+                terminal: !success,
+                details: vec![],
+            }],
         }
     }
 
@@ -163,6 +188,8 @@ mod tests {
         a.merge(part(5, 2.5, false));
         assert_eq!((a.steps, a.rejected, a.rhs_calls), (15, 2, 90));
         assert_eq!((a.t_end, a.success), (2.5, false));
+        let times: Vec<(f64, bool)> = a.events.iter().map(|e| (e.t, e.terminal)).collect();
+        assert_eq!(times, [(1.0, false), (2.5, true)]);
     }
 
     #[test]
