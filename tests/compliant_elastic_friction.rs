@@ -206,3 +206,60 @@ fn regularized_law_approaches_the_elastic_one_as_v_s_shrinks() {
     }
     assert!(diffs[3] < 2e-7, "{diffs:?}");
 }
+
+#[test]
+fn elastic_sweep_classes_match_the_regularized_ones_away_from_the_boundary() {
+    use pegdyn::jamming::PegHole;
+    use pegdyn::jamming::dynamic::{self, SweepSetup, SweepSpec};
+    // The shipped sweep of scenes/jamming.toml on a 3 x 3 grid (corners and
+    // centre of its load range: every point far from the parallelogram's
+    // boundary).
+    let setup = SweepSetup::new(SweepSpec {
+        peg: PegHole::try_new(0.0125, 0.01, 0.3).unwrap(),
+        depth: 0.01,
+        fz: 20.0,
+        peg_length: 0.1,
+        t_max: 0.3,
+        advance: 0.001,
+        window: 0.05,
+        integrator: Method::Rodas4,
+        early_stop: true,
+    })
+    .unwrap();
+    let classes = |s: &SweepSetup| -> Vec<_> {
+        dynamic::run(s, 4.5, 6.0, 3, |_, _| {})
+            .unwrap()
+            .1
+            .iter()
+            .map(|p| p.point.class)
+            .collect()
+    };
+    let regularized = classes(&setup);
+    let elastic = classes(
+        &setup
+            .clone()
+            .with_friction_law(FrictionLaw::Elastic)
+            .unwrap(),
+    );
+    assert_eq!(elastic, regularized);
+    let stuck = elastic.iter().filter(|c| c.is_stuck()).count();
+    assert!(stuck > 0 && stuck < elastic.len(), "{elastic:?}");
+}
+
+#[test]
+fn insert_compliant_scene_takes_the_elastic_law() {
+    use pegdyn::scene::document::Document;
+    use pegdyn::scene::insert_compliant::InsertCompliantScene;
+    let text = include_str!("../scenes/insert_compliant.toml").replace(
+        "[insert_compliant]",
+        "[insert_compliant]\nfriction_law = \"elastic\"\ntangential_damping = 2e-4",
+    );
+    let scene: InsertCompliantScene = Document::parse(&text).and_then(|d| d.body()).unwrap();
+    let built = scene.build().unwrap();
+    assert_eq!(built.params.spec.friction_law, FrictionLaw::Elastic);
+    assert_eq!(built.params.spec.tangential_damping, 2e-4);
+    let bad = text.replace("tangential_damping = 2e-4", "tangential_damping = -1.0");
+    let scene: InsertCompliantScene = Document::parse(&bad).and_then(|d| d.body()).unwrap();
+    let err = scene.build().unwrap_err().to_string();
+    assert!(err.contains("insert_compliant.tangential_damping"), "{err}");
+}

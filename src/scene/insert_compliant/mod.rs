@@ -377,7 +377,7 @@ impl Scene for Ready {
         let p = &self.scene.insert_compliant;
         format!(
             "compliant peg-in-hole D = {} m, c = {}, mu = {}, f1 = {} N, f2 = {} N, M = {} N m, \
-             start tilt {} rad, k_edge = {:.3e} N/m^1.5; {} ({})",
+             start tilt {} rad, k_edge = {:.3e} N/m^1.5, {} friction; {} ({})",
             crate::scene::summary::significant(p.hole_diameter),
             crate::scene::summary::significant(p.clearance_ratio),
             crate::scene::summary::significant(p.friction),
@@ -386,6 +386,10 @@ impl Scene for Ready {
             crate::scene::summary::significant(p.torque),
             crate::scene::summary::significant(p.initial_tilt),
             self.built.params.pair.edge.stiffness(),
+            match self.built.params.spec.friction_law {
+                FrictionLaw::Regularized => "regularized",
+                FrictionLaw::Elastic => "elastic",
+            },
             self.integrator.describe(),
             self.method_reason
         )
