@@ -104,6 +104,27 @@ fn generated_compliant_rhs_and_jacobian_allocate_nothing() {
 }
 
 #[test]
+fn elastic_friction_adapter_and_samples_allocate_nothing() {
+    use pegdyn::compliant_peg::{ElasticSystem, FrictionLaw};
+    let mut spec = CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, 0.1);
+    spec.friction_law = FrictionLaw::Elastic;
+    let params = CompliantParams::try_new(spec).expect("reference spec");
+    let load = Load {
+        axial: 5.0,
+        radial: 0.0,
+        torque: -0.002,
+    };
+    let start = PegState::two_point(&params, 0.01, 0.0).expect("two-point start");
+    let sys = ElasticSystem::new(&params, &load);
+    let y = start.to_vector_elastic();
+    assert_eq!(allocs_of(|| sys.rhs(0.0, black_box(&y))), 0);
+    assert_eq!(allocs_of(|| sys.jacobian(0.0, black_box(&y))), 0);
+    assert_eq!(allocs_of(|| sys.sample(black_box(&y))), 0);
+    let (regularized, _, y8) = scene(ContactSet::All);
+    assert_eq!(allocs_of(|| regularized.sample(black_box(&y8))), 0);
+}
+
+#[test]
 fn compliant_ode_adapters_allocate_nothing() {
     for contacts in [ContactSet::All, ContactSet::Lean] {
         let (sys, _, y) = scene(contacts);

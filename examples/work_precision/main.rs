@@ -50,8 +50,9 @@ struct Args {
     #[arg(long, default_value_t = 5.0)]
     double_pendulum_t_end: f64,
     /// Comma-separated problems to run (`pendulum`, `double_pendulum`,
-    /// `insert_compliant`, `rigid_forward`, `rigid_rocking`,
-    /// `rigid_events`); all when absent.
+    /// `insert_compliant`, `insert_compliant_elastic`, `jammed`,
+    /// `jammed_elastic`, `rigid_forward`, `rigid_rocking`, `rigid_events`);
+    /// all when absent.
     #[arg(long, value_delimiter = ',')]
     only: Vec<String>,
 }
@@ -68,13 +69,14 @@ struct Study {
 
 fn study<const N: usize, S: OdeSystem<N>>(pb: &Problem<N, S>, repeats: usize) -> Study {
     let times: Vec<f64> = (0..=100).map(|k| pb.t_end * k as f64 / 100.0).collect();
-    let reference_sol = run(pb, Method::Dopri5, pb.reference_rtol, &times);
+    let reference_sol = run(pb, pb.reference_method, pb.reference_rtol, &times);
     let reference = trajectory(&reference_sol, &times);
-    let check_sol = run(pb, Method::Dopri5, 10.0 * pb.reference_rtol, &times);
+    let check_sol = run(pb, pb.reference_method, 10.0 * pb.reference_rtol, &times);
     let reference_error = errors(&trajectory(&check_sol, &times), &reference, pb.coords.0);
     eprintln!(
-        "{}: reference DOPRI5 rtol {:e}, {} steps; error estimate (vs rtol {:e}) end {:.1e}, max {:.1e}",
+        "{}: reference {} rtol {:e}, {} steps; error estimate (vs rtol {:e}) end {:.1e}, max {:.1e}",
         pb.name,
+        method_name(pb.reference_method),
         pb.reference_rtol,
         reference_sol.stats.steps,
         10.0 * pb.reference_rtol,
@@ -120,11 +122,21 @@ fn study<const N: usize, S: OdeSystem<N>>(pb: &Problem<N, S>, repeats: usize) ->
         about: pb.about,
         unit: pb.coords.1,
         reference: format!(
-            "DOPRI5 rtol {:e} ({} steps)",
-            pb.reference_rtol, reference_sol.stats.steps
+            "{} rtol {:e} ({} steps)",
+            method_name(pb.reference_method),
+            pb.reference_rtol,
+            reference_sol.stats.steps
         ),
         reference_error,
         points,
+    }
+}
+
+fn method_name(m: Method) -> &'static str {
+    match m {
+        Method::Rodas4 => "RODAS4",
+        Method::Rodas3 => "RODAS3",
+        _ => "DOPRI5",
     }
 }
 
@@ -229,6 +241,15 @@ fn main() -> ExitCode {
     }
     if wanted("insert_compliant") {
         studies.push(study(&problems::insertion(), args.repeats));
+    }
+    if wanted("insert_compliant_elastic") {
+        studies.push(study(&problems::insertion_elastic(), args.repeats));
+    }
+    if wanted("jammed") {
+        studies.push(study(&problems::jammed(), args.repeats));
+    }
+    if wanted("jammed_elastic") {
+        studies.push(study(&problems::jammed_elastic(), args.repeats));
     }
     if wanted("rigid_forward") {
         studies.push(study(&problems::rigid_forward(), args.repeats));

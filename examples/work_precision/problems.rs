@@ -2,7 +2,11 @@
 //! state components whose error is reported, and the method settings.
 
 use nalgebra::SVector;
-use pegdyn::compliant_peg::CompliantSystem;
+use pegdyn::compliant_peg::{CompliantSystem, ElasticSystem, FrictionLaw, Load};
+use pegdyn::integrate::Method;
+use pegdyn::jamming::PegHole;
+use pegdyn::jamming::dynamic::{SweepSetup, SweepSpec};
+use pegdyn::jamming::forces::{Wrench, to_paper_frame};
 use pegdyn::rigid_peg::forward::{ForwardModel, PegSystem};
 use pegdyn::rigid_peg::{Loads, PegParams};
 use pegdyn::scene::align_forward::AlignForwardScene;
@@ -34,9 +38,12 @@ pub struct Problem<const N: usize, S> {
     pub dopri5_rtols: &'static [f64],
     /// Tolerances of the RODAS3 and RODAS4 runs.
     pub rodas3_rtols: &'static [f64],
-    /// Reference: DOPRI5 at this rtol; its error is estimated against a run
-    /// at 10× this rtol.
+    /// Reference: `reference_method` at this rtol; its error is estimated
+    /// against a run at 10× this rtol.
     pub reference_rtol: f64,
+    /// The reference's method (DOPRI5, or RODAS4 where DOPRI5 cannot
+    /// finish: a stuck peg under the regularized friction law).
+    pub reference_method: Method,
 }
 
 const DOPRI5_RTOLS: &[f64] = &[
@@ -65,6 +72,7 @@ pub fn pendulum() -> Problem<2, PendulumSystem> {
         dopri5_rtols: DOPRI5_RTOLS,
         rodas3_rtols: RODAS3_RTOLS,
         reference_rtol: 1e-14,
+        reference_method: Method::Dopri5,
     }
 }
 
@@ -96,6 +104,7 @@ pub fn double_pendulum(t_end: f64) -> Problem<4, DoublePendulumSystem> {
         dopri5_rtols: DOPRI5_RTOLS,
         rodas3_rtols: RODAS3_RTOLS,
         reference_rtol: 1e-14,
+        reference_method: Method::Dopri5,
     }
 }
 
@@ -124,6 +133,7 @@ pub fn insertion() -> Problem<8, CompliantSystem> {
         dopri5_rtols: DOPRI5_RTOLS,
         rodas3_rtols: RODAS3_RTOLS,
         reference_rtol: 1e-14,
+        reference_method: Method::Dopri5,
     }
 }
 
@@ -179,6 +189,7 @@ pub fn rigid_forward() -> Problem<4, RigidSystem> {
         dopri5_rtols: DOPRI5_RTOLS,
         rodas3_rtols: RODAS3_RTOLS,
         reference_rtol: 1e-14,
+        reference_method: Method::Dopri5,
     }
 }
 
@@ -207,5 +218,111 @@ pub fn rigid_rocking() -> Problem<4, RigidSystem> {
         dopri5_rtols: DOPRI5_RTOLS,
         rodas3_rtols: RODAS3_RTOLS,
         reference_rtol: 1e-14,
+        reference_method: Method::Dopri5,
+    }
+}
+
+/// `scenes/insert_compliant.toml` with the elastic friction law
+/// (Hertz–Mindlin capped by Coulomb), to 0.1 s.
+pub fn insertion_elastic() -> Problem<12, ElasticSystem> {
+    let text = include_str!("../../scenes/insert_compliant.toml");
+    let scene: pegdyn::scene::insert_compliant::InsertCompliantScene =
+        pegdyn::scene::document::Document::parse(text)
+            .and_then(|d| d.body())
+            .expect("shipped scene parses");
+    let built = scene.build().expect("shipped scene is valid");
+    let mut spec = built.params.spec;
+    spec.friction_law = FrictionLaw::Elastic;
+    let params = pegdyn::compliant_peg::CompliantParams::try_new(spec).expect("valid elastic law");
+    Problem {
+        name: "insert_compliant_elastic",
+        about: "the compliant insertion above with the elastic friction law (Hertz-Mindlin capped by \
+                Coulomb, 12 states)",
+        system: ElasticSystem::new(&params, &built.load),
+        y0: built.initial.to_vector_elastic(),
+        t_end: 0.1,
+        coords: (&[0, 1, 2], "m or rad"),
+        atol_scale: 1e-4,
+        rk4_steps: &[],
+        dopri5_rtols: &[1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9],
+        rodas3_rtols: &[1e-3, 1e-4, 1e-5, 1e-6],
+        reference_rtol: 1e-10,
+        reference_method: Method::Rodas4,
+    }
+}
+
+/// The stuck run of the shipped jamming sweep (`scenes/jamming.toml`:
+/// steel peg r = 12.5 mm, c = 0.01, μ = 0.3, F_z = 20 N, load ratio
+/// (0, 1.5 × the parallelogram's top corner moment)) from its two-point
+/// start, its load and the setup with friction law `law`.
+fn jammed_setup(law: FrictionLaw) -> (SweepSetup, Load) {
+    let setup = SweepSetup::new(SweepSpec {
+        peg: PegHole::try_new(0.0125, 0.01, 0.3).expect("valid peg"),
+        depth: 0.01,
+        fz: 20.0,
+        peg_length: 0.1,
+        t_max: 0.3,
+        advance: 0.001,
+        window: 0.05,
+        integrator: Method::Rodas4,
+        early_stop: false,
+    })
+    .and_then(|s| s.with_friction_law(law))
+    .expect("valid sweep");
+    let fz = setup.spec.fz;
+    let w = Wrench {
+        fx: 0.0,
+        fz,
+        m: 1.5 * setup.diagram.corners[2][1] * setup.spec.peg.r() * fz,
+    };
+    let (axial, radial, torque) = to_paper_frame(&w, setup.theta, setup.params.spec.com_height);
+    (
+        setup,
+        Load {
+            axial,
+            radial,
+            torque,
+        },
+    )
+}
+
+const JAMMED_ABOUT: &str = "the stuck run of the jamming sweep (scenes/jamming.toml, load ratio (0, 1.5 x the \
+     top corner moment)) over 0.05 s from its two-point start: impacts, then held";
+
+/// The jammed peg under the regularized law (`v_s = 1e-5 m/s`), to 0.05 s.
+pub fn jammed() -> Problem<8, CompliantSystem> {
+    let (setup, load) = jammed_setup(FrictionLaw::Regularized);
+    Problem {
+        name: "jammed",
+        about: JAMMED_ABOUT,
+        system: CompliantSystem::new(&setup.params, &load),
+        y0: setup.start.to_vector(),
+        t_end: 0.05,
+        coords: (&[0, 1, 2], "m or rad"),
+        atol_scale: 1e-4,
+        rk4_steps: &[],
+        dopri5_rtols: &[1e-4],
+        rodas3_rtols: RODAS3_RTOLS,
+        reference_rtol: 1e-10,
+        reference_method: Method::Rodas4,
+    }
+}
+
+/// The jammed peg under the elastic law, to 0.05 s.
+pub fn jammed_elastic() -> Problem<12, ElasticSystem> {
+    let (setup, load) = jammed_setup(FrictionLaw::Elastic);
+    Problem {
+        name: "jammed_elastic",
+        about: "the same jammed peg with the elastic friction law",
+        system: ElasticSystem::new(&setup.params, &load),
+        y0: setup.start.to_vector_elastic(),
+        t_end: 0.05,
+        coords: (&[0, 1, 2], "m or rad"),
+        atol_scale: 1e-4,
+        rk4_steps: &[],
+        dopri5_rtols: &[1e-4, 1e-5, 1e-6, 1e-7, 1e-8],
+        rodas3_rtols: RODAS3_RTOLS,
+        reference_rtol: 1e-10,
+        reference_method: Method::Rodas4,
     }
 }

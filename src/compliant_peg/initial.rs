@@ -39,6 +39,15 @@ impl PegState {
         ])
     }
 
+    /// The elastic-friction model's state
+    /// ([`super::elastic`]): zero work, dissipation and tangential
+    /// utilisations (unloaded tangential springs).
+    pub fn to_vector_elastic(&self) -> SVector<f64, { super::elastic::N_STATE_ELASTIC }> {
+        let mut y = SVector::<f64, { super::elastic::N_STATE_ELASTIC }>::zeros();
+        y.fixed_rows_mut::<8>(0).copy_from(&self.to_vector());
+        y
+    }
+
     /// The peg at rest, upright on the hole's axis, its bottom face at
     /// depth `depth` (m).
     pub fn centred(params: &CompliantParams, depth: f64) -> PegState {

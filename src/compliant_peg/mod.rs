@@ -2,17 +2,20 @@
 //! with contact deformation" (sections 2–3): contact
 //! geometry and Hertz stiffness ([`geometry`]), checked parameters
 //! ([`params`]), the generated model as an ODE system ([`system`]), initial
-//! states ([`initial`]) and classified insertion runs ([`simulate`]).
+//! states ([`initial`]) and classified insertion runs ([`simulate`]); the
+//! stick-capable friction law's system in [`elastic`].
 //! See `docs/compliant.md` and `docs/contact-geometry.md`.
 
+pub mod elastic;
 pub mod geometry;
 pub mod initial;
 pub mod params;
 pub mod simulate;
 pub mod system;
 
+pub use elastic::{ElasticSystem, N_STATE_ELASTIC};
 pub use geometry::{ContactPair, DEFAULT_FILLET, PegHoleGeometry};
 pub use initial::PegState;
-pub use params::{CompliantParams, CompliantSpec, ContactSet, Load};
+pub use params::{CompliantParams, CompliantSpec, ContactSet, FrictionLaw, Load};
 pub use simulate::{InsertionOptions, InsertionOutcome, InsertionRun, Settle, simulate_insertion};
 pub use system::{CompliantSystem, Sample};

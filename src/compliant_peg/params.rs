@@ -10,6 +10,31 @@ use crate::hertz::{EllipticityMethod, HertzContact, HertzError, Material};
 /// Number of model parameters (`P_NAMES`).
 pub const N_PARAMS: usize = 24;
 
+/// Number of parameters of the elastic-friction model
+/// (`compliant_peg_elastic::P_NAMES`: [`N_PARAMS`] and `g_star`,
+/// `delta_floor`, `tau_t`).
+pub const N_PARAMS_ELASTIC: usize = 27;
+
+/// Penetration floor `δ_0` (m) of the elastic friction law's utilisation
+/// rate: below it the rate uses `δ_0` instead of `δ` (out of contact the
+/// normal force, and so the friction force, is zero anyway).
+pub const DELTA_FLOOR: f64 = 1e-9;
+
+/// The tangential friction law at the contacts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum FrictionLaw {
+    /// Regularized Coulomb `F = −μ f v/√(v² + v_s²)`: no extra state; a
+    /// stuck contact creeps at a speed of the order of `v_s`, and the
+    /// viscous branch (slope `μ f / v_s`) is stiff.
+    #[default]
+    Regularized,
+    /// Hertz–Mindlin tangential compliance (`k_t = 8 G* a`) capped by
+    /// Coulomb: a stuck contact holds without creep and slides at
+    /// `μ f`; one utilisation state per contact, always all four contacts.
+    /// See `docs/compliant.md`.
+    Elastic,
+}
+
 /// Which contacts the model includes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub enum ContactSet {
@@ -46,7 +71,18 @@ pub struct CompliantSpec {
     /// Hunt–Crossley damping coefficient `α ≥ 0` (s/m): the normal force is
     /// `k δ^{3/2} max(0, 1 + α δ̇)`. 0 (the default) gives elastic contacts.
     pub damping: f64,
+    /// The tangential friction law (default regularized).
+    pub friction_law: FrictionLaw,
+    /// Damping time `τ_t ≥ 0` (s) of the elastic law's tangential springs:
+    /// damping `η = τ_t k_t` on their stick motion (default
+    /// [`TANGENTIAL_DAMPING`]; unused by the regularized law).
+    pub tangential_damping: f64,
 }
+
+/// Default damping time `τ_t` (s) of the elastic law's tangential springs:
+/// about a tenth of critical damping for the reference steel peg
+/// (`k_t ≈ 3·10⁶ N/m`, `m ≈ 0.4 kg`: `2√(m/k_t) ≈ 7·10⁻⁴ s`).
+pub const TANGENTIAL_DAMPING: f64 = 1e-4;
 
 /// Validated parameters with the Hertz contacts set up.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -100,6 +136,8 @@ impl CompliantSpec {
             reference_tilt: 0.0,
             contacts: ContactSet::All,
             damping: 0.0,
+            friction_law: FrictionLaw::Regularized,
+            tangential_damping: TANGENTIAL_DAMPING,
         }
     }
 }
@@ -146,6 +184,20 @@ impl CompliantParams {
             return Err(invalid(
                 "friction",
                 spec.friction,
+                "must be finite and >= 0",
+            ));
+        }
+        if spec.friction_law == FrictionLaw::Elastic && spec.friction <= 0.0 {
+            return Err(invalid(
+                "friction",
+                spec.friction,
+                "must be > 0 with the elastic friction law (use the regularized law without friction)",
+            ));
+        }
+        if !(spec.tangential_damping.is_finite() && spec.tangential_damping >= 0.0) {
+            return Err(invalid(
+                "tangential_damping",
+                spec.tangential_damping,
                 "must be finite and >= 0",
             ));
         }
@@ -206,6 +258,9 @@ impl CompliantParams {
             "M" => load.torque,
             "e_star" => self.pair.edge.contact_modulus,
             "hc_alpha" => s.damping,
+            "g_star" => self.shear_modulus(),
+            "delta_floor" => DELTA_FLOOR,
+            "tau_t" => s.tangential_damping,
             _ => {
                 let (which, what) = name.split_once('_')?;
                 match which {
@@ -225,10 +280,30 @@ impl CompliantParams {
         SVector::from_fn(|i, _| self.value(P_NAMES[i], load).unwrap_or(f64::NAN))
     }
 
-    /// Names of `P_NAMES` that [`vector`](Self::vector) does not know (empty).
+    /// Effective shear modulus `G*` (Pa) of Mindlin's tangential stiffness
+    /// `k_t = 8 G* a`: `1/G* = (2 − ν₁)/G₁ + (2 − ν₂)/G₂`, `G = E/(2(1 + ν))`.
+    pub fn shear_modulus(&self) -> f64 {
+        let part = |m: &crate::hertz::Material| {
+            let g = m.youngs_modulus / (2.0 * (1.0 + m.poisson_ratio));
+            (2.0 - m.poisson_ratio) / g
+        };
+        1.0 / (part(&self.spec.peg) + part(&self.spec.hole))
+    }
+
+    /// The elastic-friction model's parameter vector (order of
+    /// `compliant_peg_elastic::P_NAMES`) under `load`.
+    pub fn vector_elastic(&self, load: &Load) -> SVector<f64, N_PARAMS_ELASTIC> {
+        use crate::generated::compliant_peg_elastic::P_NAMES as NAMES;
+        SVector::from_fn(|i, _| self.value(NAMES[i], load).unwrap_or(f64::NAN))
+    }
+
+    /// Names of `P_NAMES` (of both models) that [`vector`](Self::vector)
+    /// and [`vector_elastic`](Self::vector_elastic) do not know (empty).
     pub fn unknown_names(&self) -> Vec<&'static str> {
+        use crate::generated::compliant_peg_elastic::P_NAMES as NAMES;
         P_NAMES
             .iter()
+            .chain(NAMES.iter())
             .copied()
             .filter(|n| self.value(n, &Load::default()).is_none())
             .collect()

@@ -28,17 +28,22 @@
 //! With `opts.settle` a stuck run is classified before its window ends,
 //! once it has settled (see [`Settle`]).
 //!
+//! With the elastic friction law (`params.spec.friction_law`) a stuck peg
+//! does not creep; the run integrates its 12 states and reports the first 8.
+//!
 //! With the regularized friction law a stuck peg creeps at a speed of the
 //! order of `v_s`; `stall_distance` must exceed `v_s · window` times the
 //! friction utilisation to see the stall (defaults: `v_s = 1e-5 m/s` in
 //! scenes, window 20 ms, stall distance 2 µm).
 
+use super::elastic::{ElasticSystem, N_STATE_ELASTIC};
 use super::initial::PegState;
-use super::params::{CompliantParams, Load};
+use super::params::{CompliantParams, FrictionLaw, Load};
 use super::system::{CompliantSystem, N_STATE, Sample};
 use crate::integrate::{
     Direction, Event, IntegrateError, Method, Options, Solver, Stats, StopReason,
 };
+use crate::system::OdeSystem;
 use nalgebra::SVector;
 
 /// Options of [`simulate_insertion`].
@@ -180,7 +185,8 @@ pub struct InsertionRun {
     pub outcome: InsertionOutcome,
     /// Time and state at the end.
     pub t: f64,
-    /// State at the end.
+    /// State at the end (the elastic law's first 8 components:
+    /// coordinates, velocities, work, dissipation).
     pub y: SVector<f64, N_STATE>,
     /// Contact and energy quantities at the end.
     pub last: Sample,
@@ -231,18 +237,58 @@ pub fn simulate_insertion(
     initial: &PegState,
     opts: &InsertionOptions,
 ) -> Result<InsertionRun, IntegrateError> {
-    let sys = CompliantSystem::new(params, load);
+    match params.spec.friction_law {
+        FrictionLaw::Regularized => {
+            let sys = CompliantSystem::new(params, load);
+            run(&sys, params, load, initial.to_vector(), opts)
+        }
+        FrictionLaw::Elastic => {
+            let sys = ElasticSystem::new(params, load);
+            run(&sys, params, load, initial.to_vector_elastic(), opts)
+        }
+    }
+}
+
+/// A compliant-peg system of `N` states whose first 8 are those of
+/// [`CompliantSystem`].
+trait PegSystem<const N: usize>: OdeSystem<N> {
+    fn sample_of(&self, y: &SVector<f64, N>) -> Sample;
+}
+
+impl PegSystem<N_STATE> for CompliantSystem {
+    fn sample_of(&self, y: &SVector<f64, N_STATE>) -> Sample {
+        self.sample(y)
+    }
+}
+
+impl PegSystem<N_STATE_ELASTIC> for ElasticSystem {
+    fn sample_of(&self, y: &SVector<f64, N_STATE_ELASTIC>) -> Sample {
+        self.sample(y)
+    }
+}
+
+fn first8<const N: usize>(y: &SVector<f64, N>) -> SVector<f64, N_STATE> {
+    SVector::from_fn(|i, _| y[i])
+}
+
+fn run<const N: usize, S: PegSystem<N>>(
+    sys: &S,
+    params: &CompliantParams,
+    load: &Load,
+    y0: SVector<f64, N>,
+    opts: &InsertionOptions,
+) -> Result<InsertionRun, IntegrateError> {
     let lc = params.spec.com_height;
     let exit_depth = params.spec.geometry.hole_fillet;
     let target = opts.target_depth;
-    let depth = move |y: &SVector<f64, N_STATE>| y[1] + lc * y[2].cos();
+    let depth = move |y: &SVector<f64, N>| y[1] + lc * y[2].cos();
     let mut stats = Stats::default();
-    let (mut t, mut y) = (0.0, initial.to_vector());
-    let finish = |outcome, t, y: SVector<f64, N_STATE>, stats| InsertionRun {
+    let (mut t, mut y) = (0.0, y0);
+    let finish = |outcome, t, y: SVector<f64, N>, stats| InsertionRun {
         outcome,
         t,
-        y,
-        last: sys.sample(&y),
+        y: first8(&y),
+        last: sys.sample_of(&y),
         stats,
     };
     let method = opts.integrator;
@@ -254,7 +300,7 @@ pub fn simulate_insertion(
     let v_max = opts.stall_distance / opts.window;
     // Start of the current classification window: time and depth.
     let (mut t_w, mut d_w) = (t, depth(&y));
-    let mut last = sys.sample(&y);
+    let mut last = sys.sample_of(&y);
     while t < opts.t_max {
         let window_end = (t_w + opts.window).min(opts.t_max);
         let t_end = (t + chunk).min(window_end);
@@ -271,7 +317,7 @@ pub fn simulate_insertion(
                     .direction(Direction::Falling)
                     .terminal(),
             );
-        let sol = solver.solve(&sys, t, y, t_end)?;
+        let sol = solver.solve(sys, t, y, t_end)?;
         stats += &sol.stats;
         let d0 = depth(&y);
         (t, y) = (sol.t_final, sol.x_final);
@@ -286,7 +332,7 @@ pub fn simulate_insertion(
             reason => return Ok(finish(InsertionOutcome::Failed { reason }, t, y, stats)),
         }
         let d1 = depth(&y);
-        let now = sys.sample(&y);
+        let now = sys.sample_of(&y);
         let window_done = t >= window_end;
         let stuck = if window_done {
             d1 - d_w < opts.stall_distance
@@ -308,25 +354,26 @@ pub fn simulate_insertion(
         if stuck {
             let s = now;
             let (f_edge, f_wall, theta) = (s.f_edge, s.f_wall, y[2]);
-            let outcome = if f_edge > 0.0 && f_wall > 0.0 && contact_line_in_cones(params, &y) {
-                InsertionOutcome::Wedged {
-                    t,
-                    depth: d1,
-                    theta,
-                    f_edge,
-                    f_wall,
-                }
-            } else if f_edge > 0.0 || f_wall > 0.0 {
-                InsertionOutcome::Jammed {
-                    t,
-                    depth: d1,
-                    theta,
-                    f_edge,
-                    f_wall,
-                }
-            } else {
-                InsertionOutcome::Stalled { t, depth: d1 }
-            };
+            let outcome =
+                if f_edge > 0.0 && f_wall > 0.0 && contact_line_in_cones(params, &first8(&y)) {
+                    InsertionOutcome::Wedged {
+                        t,
+                        depth: d1,
+                        theta,
+                        f_edge,
+                        f_wall,
+                    }
+                } else if f_edge > 0.0 || f_wall > 0.0 {
+                    InsertionOutcome::Jammed {
+                        t,
+                        depth: d1,
+                        theta,
+                        f_edge,
+                        f_wall,
+                    }
+                } else {
+                    InsertionOutcome::Stalled { t, depth: d1 }
+                };
             return Ok(finish(outcome, t, y, stats));
         }
         if window_done {

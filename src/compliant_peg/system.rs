@@ -52,12 +52,59 @@ pub struct Sample {
     pub work: f64,
     /// Energy dissipated by friction since the start (J), `S_μ` of (64).
     pub dissipation: f64,
+    /// Energy stored in the tangential springs of the elastic friction law
+    /// (J; 0 with the regularized law).
+    pub tangential: f64,
 }
 
 impl Sample {
-    /// `T + P − W + S`: constant along a solution (energy balance).
+    /// `T + P + E_t − W + S`: constant along a solution (energy balance).
     pub fn balance(&self) -> f64 {
-        self.kinetic + self.potential - self.work + self.dissipation
+        self.kinetic + self.potential + self.tangential - self.work + self.dissipation
+    }
+}
+
+/// Per-contact outputs of a generated `contacts` function (in the order
+/// edge_left, wall_right[, edge_right, wall_left]): normal force, friction,
+/// penetration, maximum pressure.
+pub(crate) struct PerContact<'a> {
+    pub f: &'a [f64],
+    pub ft: &'a [f64],
+    pub d: &'a [f64],
+    pub p0: &'a [f64],
+}
+
+/// The [`Sample`] of per-contact outputs and energies: "edge" and "wall"
+/// are the contact of each pair with the larger penetration.
+pub(crate) fn assemble(
+    c: &PerContact<'_>,
+    (kinetic, potential, depth): (f64, f64, f64),
+    (work, dissipation, tangential): (f64, f64, f64),
+) -> Sample {
+    let d = c.d;
+    let pick = |first: usize| {
+        let mut k = first;
+        if d.len() > first + 2 && d[first + 2] > d[first] {
+            k = first + 2;
+        }
+        k
+    };
+    let (a, b) = (pick(0), pick(1));
+    Sample {
+        depth,
+        f_edge: c.f[a],
+        f_wall: c.f[b],
+        friction_edge: c.ft[a],
+        friction_wall: c.ft[b],
+        p0_edge: c.p0[a],
+        p0_wall: c.p0[b],
+        delta_edge: d[a],
+        delta_wall: d[b],
+        kinetic,
+        potential,
+        work,
+        dissipation,
+        tangential,
     }
 }
 
@@ -76,50 +123,19 @@ impl CompliantSystem {
             ContactSet::All => all::energy(y, &self.p),
             ContactSet::Lean => lean::energy(y, &self.p),
         };
-        // Per contact, in the order edge_left, wall_right[, edge_right, wall_left].
-        let (f, ft, d, p0): (Vec<f64>, Vec<f64>, Vec<f64>, Vec<f64>) = match self.contacts {
+        let per = |f: &[f64], ft: &[f64], d: &[f64], p0: &[f64]| {
+            let c = PerContact { f, ft, d, p0 };
+            assemble(&c, (kinetic, potential, depth), (y[6], y[7], 0.0))
+        };
+        match self.contacts {
             ContactSet::All => {
                 let (f, ft, d, _, _, _, p0) = all::contacts(y, &self.p);
-                (
-                    f.as_slice().to_vec(),
-                    ft.as_slice().to_vec(),
-                    d.as_slice().to_vec(),
-                    p0.as_slice().to_vec(),
-                )
+                per(f.as_slice(), ft.as_slice(), d.as_slice(), p0.as_slice())
             }
             ContactSet::Lean => {
                 let (f, ft, d, _, _, _, p0) = lean::contacts(y, &self.p);
-                (
-                    f.as_slice().to_vec(),
-                    ft.as_slice().to_vec(),
-                    d.as_slice().to_vec(),
-                    p0.as_slice().to_vec(),
-                )
+                per(f.as_slice(), ft.as_slice(), d.as_slice(), p0.as_slice())
             }
-        };
-        // The active one of each pair: larger penetration.
-        let pick = |first: usize| {
-            let mut k = first;
-            if d.len() > first + 2 && d[first + 2] > d[first] {
-                k = first + 2;
-            }
-            k
-        };
-        let (a, b) = (pick(0), pick(1));
-        Sample {
-            depth,
-            f_edge: f[a],
-            f_wall: f[b],
-            friction_edge: ft[a],
-            friction_wall: ft[b],
-            p0_edge: p0[a],
-            p0_wall: p0[b],
-            delta_edge: d[a],
-            delta_wall: d[b],
-            kinetic,
-            potential,
-            work: y[6],
-            dissipation: y[7],
         }
     }
 }

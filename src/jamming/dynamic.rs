@@ -99,6 +99,18 @@ impl SweepSetup {
         })
     }
 
+    /// The same sweep with the contacts' friction law `law` (the default
+    /// is the regularized law; see [`crate::compliant_peg::FrictionLaw`]).
+    pub fn with_friction_law(
+        mut self,
+        law: crate::compliant_peg::FrictionLaw,
+    ) -> Result<Self, SetupError> {
+        let mut spec = self.params.spec;
+        spec.friction_law = law;
+        self.params = CompliantParams::try_new(spec)?;
+        Ok(self)
+    }
+
     /// One run from the reference lean under load ratio `q`.
     pub fn run_one(&self, q: Ratio) -> Result<RunClass, IntegrateError> {
         let fz = self.spec.fz;

@@ -145,12 +145,16 @@ impl Scene for JammingScene {
         );
         if let Some(s) = &self.sweep {
             text.push_str(&format!(
-                "; dynamic sweep {n} x {n} at c = {}, mu = {}, l = {} m, {} ({})",
+                "; dynamic sweep {n} x {n} at c = {}, mu = {}, l = {} m, {} ({}), {} friction",
                 s.c,
                 s.mu,
                 s.l_m,
                 s.method().name(),
                 s.method_reason(),
+                match s.friction_law {
+                    jamming_sweep::SweepFrictionLaw::Regularized => "regularized",
+                    jamming_sweep::SweepFrictionLaw::Elastic => "elastic",
+                },
                 n = s.n
             ));
         }

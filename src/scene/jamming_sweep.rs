@@ -18,6 +18,8 @@
 //! method = "rodas4"      # optional: "rodas4" (default) | "rodas3" | "dopri5"
 //! early_stop = true      # optional (default true): classify a stuck run once
 //!                        # it has settled (compliant_peg::Settle), not at its window's end
+//! friction_law = "regularized"  # optional: "regularized" (default) | "elastic"
+//!                        # (Hertz–Mindlin capped by Coulomb: sticks without creep)
 //! ```
 //!
 //! Without `method` every run uses RODAS4 with the generated exact
@@ -82,6 +84,20 @@ pub struct SweepParams {
     /// Early stop of settled runs (default true).
     #[serde(default = "yes")]
     pub early_stop: bool,
+    /// Friction law of the contacts (default regularized).
+    #[serde(default)]
+    pub friction_law: SweepFrictionLaw,
+}
+
+/// `sweep.friction_law`: the tangential law at the contacts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum SweepFrictionLaw {
+    /// Regularized Coulomb with `v_s = 1e-5 m/s`.
+    #[default]
+    Regularized,
+    /// Hertz–Mindlin tangential compliance capped by Coulomb.
+    Elastic,
 }
 
 fn yes() -> bool {
@@ -175,13 +191,19 @@ impl SweepParams {
             integrator: self.method().integrator(),
             early_stop: self.early_stop,
         };
-        SweepSetup::new(spec).map_err(|e| {
-            SceneErrors::from(SceneError::invalid(
-                "sweep",
-                self.l_m,
-                format!("the compliant model refused the sweep: {e}"),
-            ))
-        })
+        let law = match self.friction_law {
+            SweepFrictionLaw::Regularized => crate::compliant_peg::FrictionLaw::Regularized,
+            SweepFrictionLaw::Elastic => crate::compliant_peg::FrictionLaw::Elastic,
+        };
+        SweepSetup::new(spec)
+            .and_then(|s| s.with_friction_law(law))
+            .map_err(|e| {
+                SceneErrors::from(SceneError::invalid(
+                    "sweep",
+                    self.l_m,
+                    format!("the compliant model refused the sweep: {e}"),
+                ))
+            })
     }
 }
 

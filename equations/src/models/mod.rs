@@ -27,6 +27,7 @@ pub const ALL: &[ModelFn] = &[
     hertz::module,
     compliant_peg::variants::module,
     compliant_peg::variants::module_lean,
+    compliant_peg::variants::module_elastic,
     quasi_static::module,
     rigid_peg::variants::module,
     rigid_peg::variants::module_frictionless,

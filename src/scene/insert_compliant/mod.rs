@@ -15,6 +15,8 @@
 //! hole_fillet = 0.0002      # m (default 0.2 mm)
 //! friction = 0.1            # Coulomb mu
 //! slip_velocity = 1e-5      # v_s of the regularized friction law, m/s
+//! friction_law = "regularized" # "regularized" | "elastic" (Hertz–Mindlin capped by Coulomb)
+//! tangential_damping = 1e-4 # tau_t of the elastic law's tangential springs, s
 //! contacts = "all"          # "all" | "lean"
 //! contact_damping = 0.0     # Hunt–Crossley alpha, s/m (default 0: elastic)
 //! axial_force = 5.0         # f1, N (into the hole)
@@ -41,7 +43,8 @@ pub mod output;
 use output::write_outputs;
 
 use crate::compliant_peg::{
-    CompliantParams, CompliantSpec, CompliantSystem, ContactSet, Load, PegHoleGeometry, PegState,
+    CompliantParams, CompliantSpec, CompliantSystem, ContactSet, ElasticSystem, FrictionLaw, Load,
+    PegHoleGeometry, PegState,
 };
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::hertz::{HertzError, Material};
@@ -83,6 +86,10 @@ fn default_slip() -> f64 {
     1e-5
 }
 
+fn default_tangential_damping() -> f64 {
+    crate::compliant_peg::params::TANGENTIAL_DAMPING
+}
+
 /// A material table.
 #[derive(Debug, Clone, Copy, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -102,6 +109,18 @@ pub enum ContactsSpec {
     All,
     /// The two of a lean with θ > 0.
     Lean,
+}
+
+/// The tangential friction law.
+#[derive(Debug, Clone, Copy, Deserialize, Default, PartialEq, Eq)]
+#[serde(rename_all = "lowercase")]
+pub enum FrictionLawSpec {
+    /// Regularized Coulomb (velocity scale `slip_velocity`).
+    #[default]
+    Regularized,
+    /// Hertz–Mindlin tangential compliance capped by Coulomb (sticks
+    /// without creep; all four contacts).
+    Elastic,
 }
 
 /// The `[insert_compliant]` table (SI units).
@@ -129,6 +148,13 @@ pub struct InsertParams {
     #[serde(default = "default_slip")]
     /// Slip velocity v_s of the regularized friction law, m/s (default 1e-5).
     pub slip_velocity: f64,
+    #[serde(default)]
+    /// The friction law (default regularized).
+    pub friction_law: FrictionLawSpec,
+    #[serde(default = "default_tangential_damping")]
+    /// Damping time τ_t of the elastic law's tangential springs, s
+    /// (default 1e-4).
+    pub tangential_damping: f64,
     #[serde(default)]
     /// Which contacts to generate (default all four).
     pub contacts: ContactsSpec,
@@ -303,6 +329,11 @@ impl InsertCompliantScene {
             slip_velocity: p.slip_velocity,
             reference_tilt: 0.0,
             damping: p.contact_damping,
+            tangential_damping: p.tangential_damping,
+            friction_law: match p.friction_law {
+                FrictionLawSpec::Regularized => FrictionLaw::Regularized,
+                FrictionLawSpec::Elastic => FrictionLaw::Elastic,
+            },
             contacts: match p.contacts {
                 ContactsSpec::All => ContactSet::All,
                 ContactsSpec::Lean => ContactSet::Lean,
@@ -346,7 +377,7 @@ impl Scene for Ready {
         let p = &self.scene.insert_compliant;
         format!(
             "compliant peg-in-hole D = {} m, c = {}, mu = {}, f1 = {} N, f2 = {} N, M = {} N m, \
-             start tilt {} rad, k_edge = {:.3e} N/m^1.5; {} ({})",
+             start tilt {} rad, k_edge = {:.3e} N/m^1.5, {} friction; {} ({})",
             crate::scene::summary::significant(p.hole_diameter),
             crate::scene::summary::significant(p.clearance_ratio),
             crate::scene::summary::significant(p.friction),
@@ -355,6 +386,10 @@ impl Scene for Ready {
             crate::scene::summary::significant(p.torque),
             crate::scene::summary::significant(p.initial_tilt),
             self.built.params.pair.edge.stiffness(),
+            match self.built.params.spec.friction_law {
+                FrictionLaw::Regularized => "regularized",
+                FrictionLaw::Elastic => "elastic",
+            },
             self.integrator.describe(),
             self.method_reason
         )
@@ -366,26 +401,43 @@ impl Scene for Ready {
             load,
             initial,
         } = self.built;
-        let sys = CompliantSystem::new(&params, &load);
         let (lc, target) = (
             params.spec.com_height,
             self.scene.insert_compliant.target_depth,
         );
-        let inserted = Event::new(move |_t, y| y[1] + lc * y[2].cos() - target)
-            .direction(Direction::Rising)
-            .terminal();
-        let sol = integrate(
-            &sys,
-            initial.to_vector(),
-            &self.integrator,
-            vec![inserted],
-            &mut ctx.progress,
-        )?;
-        let mut out = RunSummary {
-            integration: Some(integration_summary(&self.integrator, &sol, &["inserted"])),
-            ..RunSummary::default()
-        };
-        write_outputs(ctx, &sys, &sol, &mut out)?;
+        let mut out = RunSummary::default();
+        match params.spec.friction_law {
+            FrictionLaw::Regularized => {
+                let sys = CompliantSystem::new(&params, &load);
+                let inserted = Event::new(move |_t, y| y[1] + lc * y[2].cos() - target)
+                    .direction(Direction::Rising)
+                    .terminal();
+                let sol = integrate(
+                    &sys,
+                    initial.to_vector(),
+                    &self.integrator,
+                    vec![inserted],
+                    &mut ctx.progress,
+                )?;
+                out.integration = Some(integration_summary(&self.integrator, &sol, &["inserted"]));
+                write_outputs(ctx, |y| sys.sample(y), &sol, &mut out)?;
+            }
+            FrictionLaw::Elastic => {
+                let sys = ElasticSystem::new(&params, &load);
+                let inserted = Event::new(move |_t, y| y[1] + lc * y[2].cos() - target)
+                    .direction(Direction::Rising)
+                    .terminal();
+                let sol = integrate(
+                    &sys,
+                    initial.to_vector_elastic(),
+                    &self.integrator,
+                    vec![inserted],
+                    &mut ctx.progress,
+                )?;
+                out.integration = Some(integration_summary(&self.integrator, &sol, &["inserted"]));
+                write_outputs(ctx, |y| sys.sample(y), &sol, &mut out)?;
+            }
+        }
         Ok(out)
     }
 }

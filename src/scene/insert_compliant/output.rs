@@ -3,9 +3,13 @@
 //! CSV columns: `t_s, x_m, z_m, theta_rad, depth_m, f_A_N, f_B_N, p0_A_Pa,
 //! p0_B_Pa, delta_A_m, delta_B_m, kinetic_J, potential_J, work_J,
 //! dissipation_J, balance_J` (A: the loaded edge contact, B: the loaded
-//! wall contact; `balance = T + P − W + S`, constant along a solution).
+//! wall contact; `balance = T + P + E_t − W + S`, constant along a
+//! solution, `E_t` the energy stored in the tangential springs of the
+//! elastic friction law, 0 with the regularized law).
 
-use crate::compliant_peg::system::{CompliantSystem, N_STATE};
+use nalgebra::SVector;
+
+use crate::compliant_peg::system::Sample;
 use crate::error::RunError;
 use crate::integrate::Solution;
 use crate::output::csv::CsvWriter;
@@ -33,22 +37,20 @@ const HEADER: [&str; 16] = [
 
 /// Writes `<name>.csv` and `<name>.svg` and adds the run's metrics
 /// (energy-balance drift, peak forces and pressures) to `out`.
-pub fn write_outputs(
+/// `sample` gives the contact and energy quantities of a state (of either
+/// friction law's system).
+pub fn write_outputs<const N: usize>(
     ctx: &RunContext,
-    sys: &CompliantSystem,
-    sol: &Solution<N_STATE>,
+    sample: impl Fn(&SVector<f64, N>) -> Sample,
+    sol: &Solution<N>,
     out: &mut RunSummary,
 ) -> Result<(), RunError> {
     let mut csv = CsvWriter::create(&ctx.output("csv"), &HEADER)?;
     let mut cols: Vec<Vec<(f64, f64)>> = vec![Vec::new(); HEADER.len()];
     let (mut drift, mut work_scale, mut f_max, mut p_max) = (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
-    let h0 = sol
-        .x
-        .first()
-        .map(|y| sys.sample(y).balance())
-        .unwrap_or(0.0);
+    let h0 = sol.x.first().map(|y| sample(y).balance()).unwrap_or(0.0);
     for (&t, y) in sol.t.iter().zip(&sol.x) {
-        let s = sys.sample(y);
+        let s = sample(y);
         let row = [
             t,
             y[0],

@@ -23,6 +23,7 @@
 //! that `T + V − W + S` is constant along every solution.
 //! Units: SI (kg, kg·m², m, rad, N, N·m, J).
 
+pub mod elastic;
 pub mod geometry;
 pub mod variants;
 
@@ -77,6 +78,24 @@ pub const PARAMS: [&str; 24] = [
     "hc_alpha",
 ];
 
+/// Extra parameters of the elastic friction law (after [`PARAMS`]): the
+/// effective shear modulus `G*` (Pa), the penetration floor `δ_0` (m)
+/// of the utilisation rate and the tangential damping time `τ_t` (s) (see
+/// [`elastic`]).
+pub const ELASTIC_PARAMS: [&str; 3] = ["g_star", "delta_floor", "tau_t"];
+
+/// The friction law of the tangential contact forces.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FrictionLaw {
+    /// Regularized Coulomb `−μ f v/√(v² + v_s²)`: no extra state; a stuck
+    /// contact creeps at a speed `∝ v_s`.
+    Regularized,
+    /// Hertz–Mindlin tangential compliance capped by Coulomb ([`elastic`]):
+    /// one utilisation state `u_<contact>` per contact after the 8 states,
+    /// parameters [`ELASTIC_PARAMS`] after [`PARAMS`].
+    Elastic,
+}
+
 /// Everything the generated functions output, as expressions.
 pub struct PlanarPeg<'g> {
     /// The state symbols, in [`STATE`] order.
@@ -85,9 +104,10 @@ pub struct PlanarPeg<'g> {
     pub params: Vec<Expr<'g>>,
     /// The contacts included, in output order.
     pub contacts: Vec<Contact>,
-    /// Right-hand side `ẏ = f(y)` of the 8 states.
+    /// Right-hand side `ẏ = f(y)` of the 8 states (and the utilisations of
+    /// the elastic law).
     pub rhs: Vec<Expr<'g>>,
-    /// Exact Jacobian `∂f/∂y`, rows of 8.
+    /// Exact Jacobian `∂f/∂y`, square.
     pub jacobian: Vec<Vec<Expr<'g>>>,
     /// Normal force `f_c = k max(δ,0)^{3/2} max(0, 1 + α δ̇)` per contact (N).
     pub normal: Vec<Expr<'g>>,
@@ -99,6 +119,9 @@ pub struct PlanarPeg<'g> {
     pub slip: Vec<Expr<'g>>,
     /// Hertz ellipse and pressure per contact at load `f_c`.
     pub ellipse: Vec<HertzState<'g>>,
+    /// Stored tangential energy `Σ E_t` of the elastic law (J; 0 for the
+    /// regularized law).
+    pub tangential: Expr<'g>,
     /// Kinetic energy `T` (59) (J).
     pub kinetic: Expr<'g>,
     /// Contact potential `P = Σ ∫ f dδ` (63) (J).
@@ -108,11 +131,24 @@ pub struct PlanarPeg<'g> {
 }
 
 /// Builds the model with the given contacts (a scene that only leans one way
-/// generates only the two contacts of that lean).
+/// generates only the two contacts of that lean) and the regularized
+/// friction law.
 pub fn build<'g>(g: &'g Graph, contacts: &[Contact]) -> PlanarPeg<'g> {
+    build_law(g, contacts, FrictionLaw::Regularized)
+}
+
+/// Builds the model with the given contacts and friction law.
+pub fn build_law<'g>(g: &'g Graph, contacts: &[Contact], law: FrictionLaw) -> PlanarPeg<'g> {
     let f = PegFrame::new(g);
-    let state: Vec<Expr<'g>> = STATE.iter().map(|n| g.var(n)).collect();
-    let params: Vec<Expr<'g>> = PARAMS.iter().map(|n| g.param(n)).collect();
+    let elastic_law = law == FrictionLaw::Elastic;
+    let mut state: Vec<Expr<'g>> = STATE.iter().map(|n| g.var(n)).collect();
+    let mut params: Vec<Expr<'g>> = PARAMS.iter().map(|n| g.param(n)).collect();
+    if elastic_law {
+        state.extend(contacts.iter().map(|c| g.var(&format!("u_{}", c.name()))));
+        params.extend(ELASTIC_PARAMS.iter().map(|n| g.param(n)));
+    }
+    let mut rates = vec![];
+    let mut stored = vec![];
     let p = |n: &str| g.param(n);
     let (m, j, mu, vs, alpha) = (p("m"), p("J"), p("mu"), p("v_s"), p("hc_alpha"));
     let q = [f.x, f.z, f.theta];
@@ -149,13 +185,42 @@ pub fn build<'g>(g: &'g Graph, contacts: &[Contact]) -> PlanarPeg<'g> {
             * (1.0 + alpha * ddelta.named(&format!("delta_rate_{tag}"))).max0())
         .named(&format!("normal_{tag}"));
         let damping = fn_ - elastic;
-        // Regularized Coulomb friction along the tangent, against the slip.
-        let ft = -mu * fn_ * kin.slip / kin.slip.hypot(vs);
-        for i in 0..3 {
-            gen_force[i] = gen_force[i] - v.diff(q[i]) - damping * kin.delta.diff(q[i])
-                + ft * kin.slip.diff(qd[i]);
-        }
-        dissipation_rate.push(-ft * kin.slip + damping * ddelta);
+        let ft = if elastic_law {
+            let floor = p("delta_floor");
+            let floored = kin.delta.hypot(floor);
+            let t = elastic::tangential(&elastic::TangentialInputs {
+                kin: &kin,
+                floor_rate: floored.dt(&pairs),
+                floored,
+                u: g.var(&format!("u_{tag}")),
+                k,
+                normal: elastic,
+                coeffs,
+                mu,
+                g_star: p("g_star"),
+                tau: p("tau_t"),
+            });
+            for i in 0..3 {
+                gen_force[i] = gen_force[i]
+                    - v.diff(q[i])
+                    - damping * kin.delta.diff(q[i])
+                    - t.normal_extra * kin.delta.diff(q[i])
+                    + t.force * kin.slip.diff(qd[i]);
+            }
+            dissipation_rate.push(t.dissipation + damping * ddelta);
+            rates.push(t.rate);
+            stored.push(t.energy);
+            t.force
+        } else {
+            // Regularized Coulomb friction along the tangent, against the slip.
+            let ft = -mu * fn_ * kin.slip / kin.slip.hypot(vs);
+            for i in 0..3 {
+                gen_force[i] = gen_force[i] - v.diff(q[i]) - damping * kin.delta.diff(q[i])
+                    + ft * kin.slip.diff(qd[i]);
+            }
+            dissipation_rate.push(-ft * kin.slip + damping * ddelta);
+            ft
+        };
         potentials.push(v);
         ellipse.push(hertz::state(fn_, coeffs));
         normal.push(fn_);
@@ -164,7 +229,7 @@ pub fn build<'g>(g: &'g Graph, contacts: &[Contact]) -> PlanarPeg<'g> {
         slip.push(kin.slip);
     }
     let power = g.sum((0..3).map(|i| applied[i] * qd[i]));
-    let rhs = vec![
+    let mut rhs = vec![
         f.xdot,
         f.zdot,
         f.thetadot,
@@ -174,6 +239,7 @@ pub fn build<'g>(g: &'g Graph, contacts: &[Contact]) -> PlanarPeg<'g> {
         power,
         g.sum(dissipation_rate),
     ];
+    rhs.extend(rates);
     let jacobian = rhs
         .iter()
         .map(|fi| state.iter().map(|&y| fi.diff(y)).collect())
@@ -190,6 +256,7 @@ pub fn build<'g>(g: &'g Graph, contacts: &[Contact]) -> PlanarPeg<'g> {
         delta,
         slip,
         ellipse,
+        tangential: g.sum(stored),
         kinetic,
         potential: g.sum(potentials),
         depth: f.depth(),

@@ -1,0 +1,72 @@
+//! The compliant peg with the stick-capable friction law (Hertz–Mindlin
+//! tangential compliance capped by Coulomb) as an [`OdeSystem`].
+//!
+//! State `y = (x, z, θ, ẋ, ż, θ̇, W, S, u_edge_left, u_wall_right,
+//! u_edge_right, u_wall_left)`: the 8 states of [`super::system`] and the
+//! utilisation `u = ξ/ξ_max ∈ [−1, 1]` of each contact's tangential spring
+//! (friction force `−μ N u`). The equations are in
+//! `equations/src/models/compliant_peg/elastic.rs` and `docs/compliant.md`.
+
+use nalgebra::{SMatrix, SVector};
+
+use super::params::{CompliantParams, Load, N_PARAMS_ELASTIC};
+use super::system::{PerContact, Sample, assemble};
+use crate::generated::compliant_peg_elastic as gen_elastic;
+use crate::system::OdeSystem;
+
+/// Number of states of the elastic-friction model.
+pub const N_STATE_ELASTIC: usize = 12;
+
+/// The elastic-friction model with its parameter vector fixed (constant loads).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ElasticSystem {
+    p: SVector<f64, N_PARAMS_ELASTIC>,
+}
+
+impl ElasticSystem {
+    /// The system of `params` under the constant `load` (always all four
+    /// contacts, whatever `params.spec.contacts` says).
+    pub fn new(params: &CompliantParams, load: &Load) -> ElasticSystem {
+        ElasticSystem {
+            p: params.vector_elastic(load),
+        }
+    }
+
+    /// Contact, energy and depth quantities at state `y`; `tangential` is
+    /// the energy stored in the tangential springs.
+    pub fn sample(&self, y: &SVector<f64, N_STATE_ELASTIC>) -> Sample {
+        let (kinetic, potential, depth, tangential) = gen_elastic::energy(y, &self.p);
+        let (f, ft, d, _, _, _, p0) = gen_elastic::contacts(y, &self.p);
+        let c = PerContact {
+            f: f.as_slice(),
+            ft: ft.as_slice(),
+            d: d.as_slice(),
+            p0: p0.as_slice(),
+        };
+        assemble(&c, (kinetic, potential, depth), (y[6], y[7], tangential))
+    }
+}
+
+impl OdeSystem<N_STATE_ELASTIC> for ElasticSystem {
+    fn rhs(&self, _t: f64, y: &SVector<f64, N_STATE_ELASTIC>) -> SVector<f64, N_STATE_ELASTIC> {
+        gen_elastic::rhs(y, &self.p)
+    }
+
+    /// The exact Jacobian generated from the expression trees.
+    fn jacobian(
+        &self,
+        _t: f64,
+        y: &SVector<f64, N_STATE_ELASTIC>,
+    ) -> SMatrix<f64, N_STATE_ELASTIC, N_STATE_ELASTIC> {
+        gen_elastic::jacobian(y, &self.p)
+    }
+
+    /// Zero: the loads are constant, the system autonomous.
+    fn time_derivative(
+        &self,
+        _t: f64,
+        _y: &SVector<f64, N_STATE_ELASTIC>,
+    ) -> SVector<f64, N_STATE_ELASTIC> {
+        SVector::zeros()
+    }
+}
