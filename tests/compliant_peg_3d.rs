@@ -57,10 +57,22 @@ fn brute_gap(
             match pair {
                 Pair::RimWall => big_r - prm.rim_fillet - c.xy().norm(),
                 Pair::RimTop => c.z - prm.rim_fillet,
+                Pair::RimEdge => {
+                    (c - mouth_closest(prm, &c)).norm() - prm.rim_fillet - prm.mouth_fillet
+                }
                 _ => c.z - prm.rim_fillet + prm.bore_depth,
             }
         }
     }
+}
+
+/// The point of the mouth fillet's tube-centre circle closest to `c`: the
+/// circle's point in the direction of `c`'s projection on the circle's plane.
+fn mouth_closest(prm: &Peg3dParams, c: &Vector3<f64>) -> Vector3<f64> {
+    let centre = Vector3::new(0.0, 0.0, -prm.mouth_fillet);
+    let mut proj = c - centre;
+    proj.z = 0.0;
+    centre + proj.normalize() * (prm.bore_radius() + prm.mouth_fillet)
 }
 
 const DENSE: usize = 20_000;
@@ -148,6 +160,15 @@ fn check_pose(prm: &Peg3dParams, p: Vector3<f64>, q: UnitQuaternion<f64>) -> usi
                         prm.rim_fillet - 0.5 * prm.length,
                     );
                     -Vector3::new(c.x, c.y, 0.0).normalize()
+                }
+                Pair::RimEdge => {
+                    let rr = prm.peg_radius() - prm.rim_fillet;
+                    let c = p + q * Vector3::new(
+                        rr * m.cos(),
+                        rr * m.sin(),
+                        prm.rim_fillet - 0.5 * prm.length,
+                    );
+                    (c - mouth_closest(prm, &c)).normalize()
                 }
                 _ => Vector3::z(),
             };
@@ -469,4 +490,112 @@ fn landing_with_curvature_hertz_runs_and_dissipates() {
     );
     assert!(peak > prm.mass * prm.gravity, "peak {peak} N");
     assert!(last > 0.0);
+}
+
+#[test]
+fn closed_form_mouth_point_is_the_closest_of_a_dense_sampling() {
+    // The rim-against-mouth gap takes the closest point of the mouth
+    // fillet's tube-centre circle in closed form; a dense sampling of that
+    // circle agrees (distance to 1e-12 m) at points around the mouth.
+    let prm = fig9();
+    let rm = prm.bore_radius() + prm.mouth_fillet;
+    let mut rng = Rng(4242);
+    for _ in 0..20 {
+        let c = Vector3::new(
+            rng.uniform(-0.03, 0.03),
+            rng.uniform(-0.03, 0.03),
+            rng.uniform(-0.005, 0.005),
+        );
+        let exact = (c - mouth_closest(&prm, &c)).norm();
+        let n = 200_000;
+        let sampled = (0..n)
+            .map(|k| {
+                let t = k as f64 * TAU / n as f64;
+                (c - Vector3::new(rm * t.cos(), rm * t.sin(), -prm.mouth_fillet)).norm()
+            })
+            .fold(f64::MAX, f64::min);
+        // Sampling error of a minimum of the distance: at most
+        // rm |c_xy| h² / (2 |c − m|) for half a sample step h/2.
+        let h = TAU / n as f64;
+        assert!(
+            exact <= sampled + 1e-15 && sampled - exact < rm * c.xy().norm() * h * h / exact,
+            "{exact} vs {sampled}"
+        );
+    }
+}
+
+#[test]
+fn aligned_rim_on_the_mouth_fillet_touches_at_the_analytic_depth_and_curvatures() {
+    // Aligned peg shifted by e along x so that its rim tube-centre circle
+    // passes s = 0.5 mm inside the mouth's tube-centre circle at β = 0 and
+    // dz above it: the tube centres are sqrt(s² + dz²) apart, the closest
+    // pair of all (the rim circle's radial distance is largest at β = 0).
+    let prm = fig9();
+    let (rho_p, rho_h) = (prm.rim_fillet, prm.mouth_fillet);
+    let rr = prm.peg_radius() - rho_p;
+    let rm = prm.bore_radius() + rho_h;
+    let s = 5e-4;
+    let depth = 10e-6;
+    let dist = rho_p + rho_h - depth;
+    let dz = (dist * dist - s * s).sqrt();
+    let e = rm - s - rr;
+    let z = -rho_h + dz + 0.5 * prm.length - rho_p;
+    let p = Vector3::new(e, 0.0, z);
+    let q = UnitQuaternion::identity();
+    let sys = Peg3d::new(prm);
+    let y = pose_state(p, q, Vector3::zeros(), Vector3::zeros());
+    let c: Vec<_> = sys
+        .contacts(&y)
+        .into_iter()
+        .filter(|c| c.pair == Pair::RimEdge)
+        .collect();
+    assert_eq!(c.len(), 1, "{c:?}");
+    let c = c[0];
+    assert!(c.angle.min(TAU - c.angle) < 1e-9, "angle {}", c.angle);
+    assert!((c.penetration - depth).abs() < 1e-15, "{}", c.penetration);
+    let n = Vector3::new(-s, 0.0, dz) / dist;
+    assert!((c.normal - n).norm() < 1e-12, "normal {}", c.normal);
+    // Midway point: the mouth tube centre + (ρ_h − depth/2) n.
+    let mid = Vector3::new(rm, 0.0, -rho_h) + n * (rho_h - 0.5 * depth);
+    assert!((c.point - mid).norm() < 1e-14, "point {} vs {mid}", c.point);
+    // Curvatures: meridians 1/ρ_p and 1/ρ_h; the parallels, by Meusnier,
+    // (N·ê_ρ)/ρ with the rim's outward normal −n about the peg's axis and
+    // the mouth's n about the hole's axis; both parallels along y (ω = 0).
+    let rim_pt = mid - n * (0.5 * depth);
+    let mouth_pt = mid + n * (0.5 * depth);
+    let curv = pegdyn::compliant_peg_3d::curvature::at(&prm, &c, &p, &Vector3::z());
+    let kp_rim = (s / dist) / (rim_pt.x - e);
+    let kp_mouth = (-s / dist) / mouth_pt.x;
+    for (got, want) in [
+        (curv.body1[0], kp_rim),
+        (curv.body1[1], 1.0 / rho_p),
+        (curv.body2[0], kp_mouth),
+        (curv.body2[1], 1.0 / rho_h),
+    ] {
+        assert!((got - want).abs() < 1e-9 * want.abs(), "{got} vs {want}");
+    }
+    assert!(curv.angle.abs() < 1e-9, "angle {}", curv.angle);
+    // And the brute-force comparison at this pose and tilted neighbours.
+    check_pose(&prm, p, q);
+    let mut rng = Rng(99);
+    let mut met = 0;
+    for _ in 0..12 {
+        let q = orientation(
+            rng.uniform(0.0, 0.4),
+            rng.uniform(0.0, TAU),
+            rng.uniform(0.0, TAU),
+        );
+        // Put the rim's lowest-outermost point near the mouth fillet.
+        let p = p + Vector3::new(rng.uniform(-1e-3, 1e-3), rng.uniform(-1e-3, 1e-3), 0.0);
+        check_pose(&prm, p, q);
+        let sys = Peg3d::new(prm);
+        let y = pose_state(p, q, Vector3::zeros(), Vector3::zeros());
+        met += sys
+            .contacts(&y)
+            .iter()
+            .filter(|c| c.pair == Pair::RimEdge)
+            .count();
+    }
+    eprintln!("rim on the mouth: {met} rim-edge contacts over 12 tilted poses");
+    assert!(met >= 3, "only {met} rim-edge contacts");
 }

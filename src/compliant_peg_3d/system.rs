@@ -77,7 +77,7 @@ pub struct Peg3d {
     /// The parameters.
     pub params: Peg3dParams,
     p: SVector<f64, 16>,
-    searches: RefCell<[Search; 4]>,
+    searches: RefCell<[Search; Pair::ALL.len()]>,
     error: RefCell<Option<HertzError>>,
 }
 

@@ -104,6 +104,10 @@ fn pair_function(g: &Graph, which: Pair) -> FnSpec {
         Pair::RimBottom => {
             "the peg's rim torus against the bore bottom z = -h_b, angle along the rim circle"
         }
+        Pair::RimEdge => {
+            "the peg's rim torus against the mouth-edge torus, angle along the rim circle (body), \
+             closest mouth-circle point in closed form"
+        }
     };
     FnSpec::new(
         which.name(),
