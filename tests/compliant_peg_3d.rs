@@ -599,3 +599,130 @@ fn aligned_rim_on_the_mouth_fillet_touches_at_the_analytic_depth_and_curvatures(
     eprintln!("rim on the mouth: {met} rim-edge contacts over 12 tilted poses");
     assert!(met >= 3, "only {met} rim-edge contacts");
 }
+
+/// The family of poses where the rim's two points on the mouth fillet
+/// (B1, B2) merge: tilt `gamma` about `y` with the rim point at body angle
+/// 0 highest and outermost, its tube centre held `s` inside and `h` above
+/// the mouth's tube-centre circle at angle 0 (`√(s² + h²) = ρ_p + ρ_h − δ`).
+fn rim_on_mouth(prm: &Peg3dParams, gamma: f64, depth: f64) -> SVector<f64, 15> {
+    let (rho_p, rho_h) = (prm.rim_fillet, prm.mouth_fillet);
+    let rr = prm.peg_radius() - rho_p;
+    let dist = rho_p + rho_h - depth;
+    let (s, h) = (dist * 0.5_f64.sin(), dist * 0.5_f64.cos());
+    let centre = Vector3::new(prm.bore_radius() + rho_h - s, 0.0, -rho_h + h);
+    let q = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), -gamma);
+    let p = centre - q * Vector3::new(rr, 0.0, rho_p - 0.5 * prm.length);
+    pose_state(p, q, Vector3::zeros(), Vector3::zeros())
+}
+
+#[test]
+fn rim_points_on_the_mouth_merge_without_a_force_jump() {
+    let mut prm = fig9();
+    let k = 2e10;
+    prm.hertz = HertzMode::Fixed(k);
+    let sys = Peg3d::new(prm);
+    let count = |g: f64| {
+        sys.contacts(&rim_on_mouth(&prm, g, 10e-6))
+            .iter()
+            .filter(|c| c.pair == Pair::RimEdge)
+            .count()
+    };
+    assert_eq!(count(0.02), 1);
+    assert_eq!(count(0.04), 2);
+    // Net normal force of the pair (points less subtracted cols) along a
+    // fine sweep through the merge, against the naive sum of the points.
+    let (mut prev, mut prev_naive) = (None::<f64>, None::<f64>);
+    let (mut jump, mut jump_naive, mut scale) = (0.0_f64, 0.0_f64, 0.0_f64);
+    let mut split = 0;
+    let n = 3000;
+    for i in 0..=n {
+        let g = 0.02 + 0.02 * i as f64 / n as f64;
+        let y = rim_on_mouth(&prm, g, 10e-6);
+        let f = sys.forces(&y).unwrap();
+        let rim: Vec<_> = f
+            .iter()
+            .filter(|f| f.contact.pair == Pair::RimEdge)
+            .collect();
+        let sum: f64 = rim.iter().map(|f| f.normal_force - f.col_force).sum();
+        let naive: f64 = rim
+            .iter()
+            .map(|f| k * f.contact.penetration.powf(1.5))
+            .sum();
+        split += usize::from(rim.iter().any(|f| f.contact.saddle.is_some()));
+        if let (Some(a), Some(b)) = (prev, prev_naive) {
+            jump = jump.max((sum - a).abs());
+            jump_naive = jump_naive.max((naive - b).abs());
+        }
+        scale = scale.max(sum);
+        prev = Some(sum);
+        prev_naive = Some(naive);
+    }
+    eprintln!(
+        "merge sweep: peak {scale:.4} N, largest step {jump:.3e} N (naive {jump_naive:.3e} N), \
+         {split} poses with a shared col"
+    );
+    assert!(split > 10, "the col rule never acted ({split} poses)");
+    // At the merge the naive sum jumps by one point's force (632 N at 10 µm);
+    // the net force moves by less than a twentieth of that per step.
+    assert!(jump_naive > 600.0, "the naive sum did not jump");
+    assert!(jump < 0.05 * jump_naive, "step {jump} N");
+}
+
+#[test]
+fn forces_with_a_shared_col_are_minus_the_gradient_of_the_potential() {
+    // With a fixed stiffness and the peg at rest, the contact wrench is
+    // −∂V/∂(pose) of V = Σ (2/5) k δ_eff^{5/2}: translations along the hole
+    // axes give the force, rotations about them (about the centre of mass)
+    // the moment; central differences, step 1e-9 m and 1e-9 rad.
+    let mut prm = fig9();
+    prm.hertz = HertzMode::Fixed(2e10);
+    let sys = Peg3d::new(prm);
+    let mut checked = 0;
+    for gamma in [0.025, 0.03, 0.035, 0.04] {
+        let y = rim_on_mouth(&prm, gamma, 10e-6);
+        let f = sys.forces(&y).unwrap();
+        checked += f.iter().filter(|f| f.contact.saddle.is_some()).count();
+        let w = Peg3d::wrench(&y, &f);
+        let pot = |y: &SVector<f64, 15>| -> f64 {
+            sys.forces(y).unwrap().iter().map(|f| f.potential).sum()
+        };
+        let h = 1e-9;
+        for axis in 0..3 {
+            let mut e = Vector3::zeros();
+            e[axis] = 1.0;
+            let shifted = |s: f64| {
+                let mut z = y;
+                for k in 0..3 {
+                    z[k] += s * e[k];
+                }
+                z
+            };
+            let force = -(pot(&shifted(h)) - pot(&shifted(-h))) / (2.0 * h);
+            let turned = |s: f64| {
+                let q = UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(
+                    y[3], y[4], y[5], y[6],
+                ));
+                let q = UnitQuaternion::from_scaled_axis(e * s) * q;
+                let mut z = y;
+                z[3] = q.w;
+                z[4] = q.i;
+                z[5] = q.j;
+                z[6] = q.k;
+                z
+            };
+            let moment = -(pot(&turned(h)) - pot(&turned(-h))) / (2.0 * h);
+            let fs = w.fixed_rows::<3>(0).norm();
+            assert!(
+                (force - w[axis]).abs() < 1e-5 * fs,
+                "γ = {gamma}: F{axis} {force} vs {}",
+                w[axis]
+            );
+            assert!(
+                (moment - w[3 + axis]).abs() < 1e-5 * fs * 0.05,
+                "γ = {gamma}: T{axis} {moment} vs {}",
+                w[3 + axis]
+            );
+        }
+    }
+    assert!(checked >= 2, "only {checked} contacts with a col");
+}

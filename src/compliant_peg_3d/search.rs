@@ -18,6 +18,7 @@
 //! Only penetrating minima (`g < 0`) on the part of each surface that
 //! exists (see [`Pair::valid`]) become contacts.
 
+use super::merge::{self, Saddle};
 use super::params::Peg3dParams;
 use crate::generated::compliant_peg_3d as generated;
 use nalgebra::{SVector, Vector1, Vector3};
@@ -127,6 +128,10 @@ pub struct ContactPoint {
     pub normal: Vector3<f64>,
     /// Contact point, hole frame (m).
     pub point: Vector3<f64>,
+    /// The col between this point and the next point of the same pair
+    /// (in angle) when the overlap between them is connected: its overlap
+    /// is subtracted once ([`super::merge`]); `None` otherwise.
+    pub saddle: Option<Saddle>,
 }
 
 /// Number of scan samples per circle.
@@ -250,6 +255,7 @@ impl Search {
     ) {
         let minima = self.minima(pair, prm, x, p);
         let axis = super::system::axis_of(x);
+        let first = out.len();
         for &a in &minima {
             let (gap, _, _, gradient, normal, point, axial) = pair.eval(x, a, p);
             if gap < 0.0
@@ -263,8 +269,10 @@ impl Search {
                     gradient,
                     normal,
                     point,
+                    saddle: None,
                 });
             }
         }
+        merge::assign(pair, x, p, &mut out[first..]);
     }
 }

@@ -12,6 +12,8 @@
 //! Q   = max(0, Q_e (1 + α δ̇))              (Hunt–Crossley damping α, s/m)
 //! v_t = v_c − (n·v_c) n,   F_t = −μ Q v_t / √(|v_t|² + v_s²)
 //! F   = Q n + F_t,   T = (x_c − p) × F     (about the centre of mass)
+//! and, for a point with a subtracted col (`super::merge`), the elastic
+//! force `−k_c δ_c^{3/2} n_c` at the col point.
 //! Ṡ   = (Q − Q_e) δ̇ − F_t·v_t ≥ 0          (damping and friction)
 //! ```
 //!
@@ -68,8 +70,12 @@ pub struct ContactForce {
     pub friction: Vector3<f64>,
     /// Hertz stiffness `k` used (N/m^{3/2}).
     pub stiffness: f64,
-    /// Elastic energy `(2/5) k δ^{5/2}` (J).
+    /// Elastic energy `(2/5) k δ^{5/2} − (2/5) k_c δ_c^{5/2}` (J), the
+    /// second term for the contact's subtracted col ([`super::merge`]).
     pub potential: f64,
+    /// Elastic force `k_c δ_c^{3/2}` (N) of the contact's subtracted col,
+    /// applied as `−k_c δ_c^{3/2} n_c` at the col point; 0 without a col.
+    pub col_force: f64,
 }
 
 /// The compliant 3-D peg.
@@ -161,6 +167,23 @@ impl Peg3d {
             let vc = v + om.cross(&(c.point - centre));
             let vn = c.normal.dot(&vc);
             let ddot = -vn;
+            let (col_force, col_potential) = match &c.saddle {
+                Some(s) => {
+                    let at_col = ContactPoint {
+                        angle: s.angle,
+                        penetration: s.penetration,
+                        gradient: s.gradient,
+                        normal: s.normal,
+                        point: s.point,
+                        saddle: None,
+                        ..c
+                    };
+                    let kc = self.stiffness(&at_col, &x)?;
+                    let dc = s.penetration;
+                    (kc * dc * dc.sqrt(), 0.4 * kc * dc * dc * dc.sqrt())
+                }
+                None => (0.0, 0.0),
+            };
             let qn = (qe * (1.0 + prm.damping * ddot)).max(0.0);
             let vt = vc - c.normal * vn;
             let ft = vt
@@ -171,7 +194,8 @@ impl Peg3d {
                 normal_force: qn,
                 friction: ft,
                 stiffness: k,
-                potential: 0.4 * k * d * d * d.sqrt(),
+                potential: 0.4 * k * d * d * d.sqrt() - col_potential,
+                col_force,
             });
         }
         Ok(out)
@@ -193,11 +217,21 @@ impl Peg3d {
             let torque = arm.cross(&force);
             let vc = v + om.cross(&arm);
             let ddot = -c.normal.dot(&vc);
-            let qe = f.stiffness * c.penetration * c.penetration.sqrt();
+            let d = c.penetration;
+            let qe = f.stiffness * d * d.sqrt();
             let vt = vc - c.normal * c.normal.dot(&vc);
             for k in 0..3 {
                 w[k] += force[k];
                 w[3 + k] += torque[k];
+            }
+            if let Some(s) = &c.saddle {
+                // The subtracted col: −k_c δ_c^{3/2} n_c at the col point.
+                let back = -s.normal * f.col_force;
+                let t = (s.point - centre).cross(&back);
+                for k in 0..3 {
+                    w[k] += back[k];
+                    w[3 + k] += t[k];
+                }
             }
             w[6] += (f.normal_force - qe) * ddot - f.friction.dot(&vt);
         }
