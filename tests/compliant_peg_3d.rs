@@ -726,3 +726,41 @@ fn forces_with_a_shared_col_are_minus_the_gradient_of_the_potential() {
     }
     assert!(checked >= 2, "only {checked} contacts with a col");
 }
+
+#[test]
+fn pruned_pairs_never_hide_a_contact() {
+    // Over random poses around the mouth, inside the bore, near its bottom
+    // and above the block, the contacts with the pruning bounds equal those
+    // of a full scan of every pair.
+    let prm = fig9();
+    let pv = Peg3d::new(prm).param_vector().to_owned();
+    let mut rng = Rng(0x9_2E);
+    let (mut skipped, mut contacts) = (0, 0);
+    for _ in 0..200 {
+        let q = orientation(
+            rng.uniform(0.0, 0.6),
+            rng.uniform(0.0, TAU),
+            rng.uniform(0.0, TAU),
+        );
+        let p = Vector3::new(
+            rng.uniform(-0.03, 0.03),
+            rng.uniform(-0.03, 0.03),
+            rng.uniform(-0.08, 0.06),
+        );
+        let y = pose_state(p, q, Vector3::zeros(), Vector3::zeros());
+        let x = Peg3d::pose(&y);
+        let pruned = Peg3d::new(prm).contacts(&y);
+        let mut full = Vec::new();
+        for pair in Pair::ALL {
+            Search::default().find(pair, &prm, &x, &pv, &mut full);
+            skipped += usize::from(!pegdyn::compliant_peg_3d::prune::can_touch(pair, &prm, &x));
+        }
+        assert_eq!(pruned, full, "pose {p} {q}");
+        contacts += full.len();
+    }
+    eprintln!("pruning: {skipped} of 1000 pair scans skipped, {contacts} contacts");
+    assert!(
+        contacts > 20 && skipped > 300,
+        "{contacts} contacts, {skipped} skipped"
+    );
+}

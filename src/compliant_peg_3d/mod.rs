@@ -9,6 +9,7 @@
 //!   Newton in the edge angle, warm-started, with a bracketing scan.
 //! - [`merge`]: the continuous rule by which two points of one pair share
 //!   their force as they merge (prominence above the col between them).
+//! - [`prune`]: cheap bounds that skip the pairs a pose cannot touch.
 //! - [`curvature`]: the principal curvatures of both surfaces at a contact
 //!   point, for the Hertz ellipse.
 //! - [`system`]: contact forces (Hertz, Hunt–Crossley damping, regularized
@@ -20,6 +21,7 @@
 pub mod curvature;
 pub mod merge;
 pub mod params;
+pub mod prune;
 pub mod search;
 pub mod system;
 

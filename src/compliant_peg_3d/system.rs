@@ -24,6 +24,7 @@
 
 use super::curvature;
 use super::params::{HertzMode, Peg3dParams};
+use super::prune;
 use super::search::{ContactPoint, Pair, Search};
 use crate::generated::compliant_peg_3d as generated;
 use crate::hertz::{EllipticityMethod, HertzContact, HertzError};
@@ -127,7 +128,11 @@ impl Peg3d {
         let mut out = Vec::new();
         let mut s = self.searches.borrow_mut();
         for (k, pair) in Pair::ALL.iter().enumerate() {
-            s[k].find(*pair, &self.params, &x, &self.p, &mut out);
+            if prune::can_touch(*pair, &self.params, &x) {
+                s[k].find(*pair, &self.params, &x, &self.p, &mut out);
+            } else {
+                s[k] = Search::default();
+            }
         }
         out
     }
