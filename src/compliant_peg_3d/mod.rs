@@ -9,6 +9,8 @@
 //!   Newton in the edge angle, warm-started, with a bracketing scan.
 //! - [`merge`]: the continuous rule by which two points of one pair share
 //!   their force as they merge (prominence above the col between them).
+//! - [`jacobian`]: the exact Jacobian, the generated partial derivatives
+//!   and the chain rule through the contact wrench, in [`dual`] numbers.
 //! - [`prune`]: cheap bounds that skip the pairs a pose cannot touch.
 //! - [`curvature`]: the principal curvatures of both surfaces at a contact
 //!   point, for the Hertz ellipse.
@@ -19,6 +21,8 @@
 //! See `docs/compliant-peg-3d.md`.
 
 pub mod curvature;
+pub mod dual;
+pub mod jacobian;
 pub mod merge;
 pub mod params;
 pub mod prune;

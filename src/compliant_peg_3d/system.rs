@@ -23,13 +23,14 @@
 //! the same wrench.
 
 use super::curvature;
+use super::jacobian;
 use super::params::{HertzMode, Peg3dParams};
 use super::prune;
 use super::search::{ContactPoint, Pair, Search};
 use crate::generated::compliant_peg_3d as generated;
 use crate::hertz::{EllipticityMethod, HertzContact, HertzError};
 use crate::system::OdeSystem;
-use nalgebra::{SVector, UnitQuaternion, Vector3};
+use nalgebra::{SMatrix, SVector, UnitQuaternion, Vector3};
 use std::cell::RefCell;
 
 /// The peg's axis `a = R(q) e_z` of a pose `(p, q)`.
@@ -266,6 +267,15 @@ impl OdeSystem<15> for Peg3d {
                 }
                 SVector::repeat(f64::NAN)
             }
+        }
+    }
+
+    /// The exact Jacobian ([`super::jacobian`]); NaN after a Hertz setup
+    /// error, like the right-hand side.
+    fn jacobian(&self, _t: f64, y: &SVector<f64, 15>) -> SMatrix<f64, 15, 15> {
+        match self.forces(y) {
+            Ok(f) => jacobian::of(self, y, &f),
+            Err(_) => SMatrix::repeat(f64::NAN),
         }
     }
 

@@ -133,9 +133,9 @@ fn pair_function(g: &Graph, which: Pair) -> FnSpec {
     )
 }
 
-fn dynamics_functions(g: &Graph) -> Vec<FnSpec> {
-    let y: Vec<Expr<'_>> = STATE.iter().map(|n| g.var(n)).collect();
-    let w: Vec<Expr<'_>> = WRENCH.iter().map(|n| g.var(n)).collect();
+fn dynamics_functions<'g>(g: &'g Graph) -> Vec<FnSpec> {
+    let y: Vec<Expr<'g>> = STATE.iter().map(|n| g.var(n)).collect();
+    let w: Vec<Expr<'g>> = WRENCH.iter().map(|n| g.var(n)).collect();
     let pr = params(g);
     let par = |n: &str| g.param(n);
     let (m, jt, ja, grav) = (par("m"), par("J_t"), par("J_a"), par("g"));
@@ -170,6 +170,11 @@ fn dynamics_functions(g: &Graph) -> Vec<FnSpec> {
             + ma[2] * om_world[2],
     );
     rhs.push(w[6]);
+    let jac = |wrt: &[Expr<'g>]| -> Vec<Vec<Expr<'g>>> {
+        rhs.iter()
+            .map(|f| wrt.iter().map(|&x| f.diff(x)).collect())
+            .collect()
+    };
     let kinetic = 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
         + 0.5 * (jt * (om[0] * om[0] + om[1] * om[1]) + ja * om[2] * om[2]);
     vec![
@@ -184,6 +189,20 @@ fn dynamics_functions(g: &Graph) -> Vec<FnSpec> {
                 Input::new("p", &pr),
             ],
             vec![("ydot", Output::vector(&rhs))],
+        ),
+        FnSpec::new(
+            "rhs_jacobian",
+            "Exact partial derivatives of `rhs`: dy = d(ydot)/dy (15 x 15) at a fixed wrench and \
+             dw = d(ydot)/dw (15 x 7); the runtime adds dw times the wrench's own derivative in y.",
+            vec![
+                Input::new("y", &y),
+                Input::new("w", &w),
+                Input::new("p", &pr),
+            ],
+            vec![
+                ("dy", Output::matrix(&jac(&y))),
+                ("dw", Output::matrix(&jac(&w))),
+            ],
         ),
         FnSpec::new(
             "energy",
