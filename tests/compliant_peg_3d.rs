@@ -764,3 +764,37 @@ fn pruned_pairs_never_hide_a_contact() {
         "{contacts} contacts, {skipped} skipped"
     );
 }
+
+#[test]
+fn curvature_stiffness_leaves_a_small_energy_defect() {
+    // With the stiffness from the curvatures at every evaluation, the force
+    // k δ^{3/2} n leaves out −(2/5) δ^{5/2} ∂k/∂(pose): the balance, exact
+    // for a fixed k, then drifts by about the variation of k (0.3 % here)
+    // times the elastic energy.
+    let prm = fig9();
+    let (sys, y0) = landing(prm);
+    let e0 = sys.energy_balance(&y0).unwrap();
+    let sol = solve(
+        &sys,
+        Method::Dopri5,
+        (0.0, y0),
+        0.02,
+        &Options::with_tolerances(1e-11, 1e-13),
+    )
+    .unwrap();
+    assert!(sol.stop.is_success(), "{:?}", sol.stop);
+    let (mut worst, mut peak, mut k) = (0.0_f64, 0.0_f64, (f64::MAX, 0.0_f64));
+    for y in &sol.x {
+        worst = worst.max((sys.energy_balance(y).unwrap() - e0).abs());
+        for f in sys.forces(y).unwrap() {
+            peak = peak.max(f.potential);
+            k = (k.0.min(f.stiffness), k.1.max(f.stiffness));
+        }
+    }
+    let spread = (k.1 - k.0) / k.0;
+    eprintln!(
+        "curvature stiffness: balance defect {worst:e} J, peak elastic energy {peak:e} J, k spread {spread:e}"
+    );
+    assert!(peak > 1e-3, "peak elastic energy {peak} J");
+    assert!(worst < 2.0 * spread * peak, "defect {worst} J");
+}
