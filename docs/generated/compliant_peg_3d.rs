@@ -497,6 +497,163 @@ pub mod compliant_peg_3d {
             + t12 * (t22 + t19 - T::from_f64(0.5) * (t16 + pz));
         (gap, d1, d2, grad, normal, point, axial)
     }
+    /// Contact pair: the peg's rim torus against the mouth-edge torus, angle along the rim circle (body), closest mouth-circle point in closed form. Gap g (m, negative = penetration), dg/dangle and d2g/dangle2 (m/rad, m/rad^2), gradient dg/d(px, py, pz, q0..q3), unit force direction on the peg, contact point (m) and its axial coordinate along the peg from the centre of mass (m).
+    ///
+    /// # Inputs
+    /// - `x` = (`px`, `py`, `pz`, `q0`, `q1`, `q2`, `q3`)
+    /// - `a` = (`angle`)
+    /// - `p` = (`r`, `L`, `rho_p`, `R`, `rho_h`, `h_b`, `m`, `J_t`, `J_a`, `g`, `fa_x`, `fa_y`, `fa_z`, `ma_x`, `ma_y`, `ma_z`)
+    ///
+    /// # Outputs
+    /// - `gap`: scalar
+    /// - `d1`: scalar
+    /// - `d2`: scalar
+    /// - `grad`: vector of 7
+    /// - `normal`: vector of 3
+    /// - `point`: vector of 3
+    /// - `axial`: scalar
+    ///
+    /// # Cost
+    /// 81 add/sub, 151 mul, 4 div, 0 sqrt, 3 transcendental, 0 branches; 67 `let`s.
+    #[inline]
+    pub fn rim_edge<T: Real>(
+        x: &SVector<T, 7>,
+        a: &SVector<T, 1>,
+        p: &SVector<T, 16>,
+    ) -> (T, T, T, SVector<T, 7>, SVector<T, 3>, SVector<T, 3>, T) {
+        let px = x[0];
+        let py = x[1];
+        let pz = x[2];
+        let q0 = x[3];
+        let q1 = x[4];
+        let q2 = x[5];
+        let q3 = x[6];
+        let angle = a[0];
+        let r = p[0];
+        let l = p[1];
+        let rho_p = p[2];
+        let r_2 = p[3];
+        let rho_h = p[4];
+        let t0 = q2 * q2;
+        let t1 = q3 * q3;
+        let t2 = q1 * q2;
+        let t3 = q0 * q3;
+        let t4 = q1 * q3;
+        let t5 = q0 * q2;
+        let t6 = t4 + t5;
+        let t7 = t2 + t3;
+        let t8 = q1 * q1;
+        let t9 = q2 * q3;
+        let t10 = q0 * q1;
+        let t11 = t9 + t10;
+        let (sin_angle, cos_angle) = angle.sin_cos();
+        let t12 = r - rho_p;
+        let t13 = -(T::from_f64(2.0) * (t0 + t8)) + T::from_f64(1.0);
+        let t14 = -rho_p + T::from_f64(0.5) * l;
+        let t15 = T::from_f64(2.0) * q0 * t14;
+        let t16 = q1 * t14;
+        let t17 = -q3 * t14;
+        let t18 = -(T::from_f64(2.0) * (t0 + t1)) + T::from_f64(1.0);
+        let t19 = -(T::from_f64(2.0) * (t1 + t8)) + T::from_f64(1.0);
+        let t20 = T::from_f64(2.0) * t7 * cos_angle + t19 * sin_angle;
+        let t21 = T::from_f64(2.0) * t7 * sin_angle - t19 * cos_angle;
+        let t22 = t12 * t21;
+        let t23 = q2 * t14;
+        let t24 = q3 * sin_angle;
+        let t25 = q3 * cos_angle;
+        let t26 = -t9 + t10;
+        let t27 = -t2 + t3;
+        let t28 = -t4 + t5;
+        let t29 = -(t18 * cos_angle) + T::from_f64(2.0) * t27 * sin_angle;
+        let t30 = t18 * sin_angle + T::from_f64(2.0) * t27 * cos_angle;
+        let t31 = t12 * t30;
+        let t32 = -(t28 * cos_angle) + t11 * sin_angle;
+        let t33 = t12 * t29 - px + T::from_f64(2.0) * t6 * t14;
+        let t34 = t12 * t20 + py + T::from_f64(2.0) * t26 * t14;
+        let t35 = (-t33).hypot(t34);
+        let t36 = T::from_f64(1.0) / t35;
+        let t37 = t33 * t30 - t34 * t21;
+        let t38 = q2 * cos_angle;
+        let t39 = q1 * sin_angle;
+        let t40 = q2 * sin_angle;
+        let t41 = q1 * cos_angle;
+        let t42 = q0 * sin_angle;
+        let t43 = q0 * cos_angle;
+        let t44 = t28 * sin_angle + t11 * cos_angle;
+        let t45 = -t12 * t37;
+        let t46 = -T::from_f64(2.0) * t44 * t12;
+        let t47 = rho_h + T::from_f64(2.0) * t32 * t12 + pz - t13 * t14;
+        let t48 = r_2 + rho_h - t35;
+        let t49 = t47.hypot(t48);
+        let t50 = T::from_f64(1.0) / t49;
+        let t51 = (rho_h + r_2 - t35) * t50;
+        let t52 = t51 * t36;
+        let t53 = t47 * t50;
+        let t54 = -(T::from_f64(0.5) * (-rho_h + rho_p)) + T::from_f64(0.5) * t49;
+        let t55 = t36 * (r_2 + rho_h - t51 * t54);
+        let t56 = t55 * t33;
+        let t57 = t55 * t34;
+        let t58 = -t53 * t54;
+        let t59 = -T::from_f64(2.0) * t44 * t47;
+        let t60 = t36 * t48;
+        let t61 = t60 * t37;
+        let t62 = t12 * (t61 + t59);
+        let t63 = t12 * t47;
+        let t64 = t60 * t50;
+        let gap = -rho_h - rho_p + t49;
+        let d1 = -(t12 * (t59 + t61)) * t50;
+        let d2 = -(t62 * t62 / (t49 * t49 * t49))
+            - t50
+                * (-(t45 * t45 * (t48 / (t35 * t35 * t35) + t36 * t36))
+                    + T::from_f64(2.0) * t63 * t32 - t46 * t46
+                    + t60 * (-(t12 * (t33 * t29 + t34 * t20)) + t31 * t31 + t22 * t22));
+        let grad = SMatrix::<
+            T,
+            7,
+            1,
+        >::from_row_slice(
+            &[
+                t64 * t33,
+                -t64 * t34,
+                t53,
+                -T::from_f64(2.0) * t50
+                    * (-(t63 * (t39 - t38))
+                        + t60 * (t33 * (t24 * t12 + t23) + t34 * (t25 * t12 + t16))),
+                t50
+                    * ((T::from_f64(2.0) * (t25 + t42) * t12 + T::from_f64(4.0) * t16)
+                        * t47
+                        + t60
+                            * (T::from_f64(2.0) * t33 * (t40 * t12 + t17)
+                                - t34
+                                    * (-(t12
+                                        * (-(T::from_f64(2.0) * t38) + T::from_f64(4.0) * t39))
+                                        + t15))),
+                -t50
+                    * (-((-(T::from_f64(2.0) * (t43 - t24) * t12)
+                        + T::from_f64(4.0) * t23) * t47)
+                        + t60
+                            * (t33
+                                * (-(t12
+                                    * (-(T::from_f64(4.0) * t38) + T::from_f64(2.0) * t39))
+                                    + t15) + T::from_f64(2.0) * t34 * (t17 + t41 * t12))),
+                -t50
+                    * (-(T::from_f64(2.0) * t63 * (t40 + t41))
+                        + t60
+                            * (t33
+                                * (t12 * (T::from_f64(4.0) * t25 + T::from_f64(2.0) * t42)
+                                    + T::from_f64(2.0) * t16)
+                                - t34
+                                    * (-(t12
+                                        * (T::from_f64(2.0) * t43 - T::from_f64(4.0) * t24))
+                                        + T::from_f64(2.0) * t23))),
+            ],
+        );
+        let normal = Vector3::new(t52 * t33, -t52 * t34, t53);
+        let point = Vector3::new(-t56, t57, -rho_h - t58);
+        let axial = -(T::from_f64(2.0) * (t6 * (t56 + px) - t26 * (-t57 + py)))
+            - t13 * (rho_h + pz + t58);
+        (gap, d1, d2, grad, normal, point, axial)
+    }
     /// Newton-Euler right-hand side of y = (p, q, v, omega_body, work, dissipation) under the contact wrench w = (F, T about the centre of mass, hole frame; dissipation rate), the applied loads and gravity along -z. SI units.
     ///
     /// # Inputs
@@ -592,6 +749,461 @@ pub mod compliant_peg_3d {
                 sdot,
             ],
         )
+    }
+    /// Exact partial derivatives of `rhs`: dy = d(ydot)/dy (15 x 15) at a fixed wrench and dw = d(ydot)/dw (15 x 7); the runtime adds dw times the wrench's own derivative in y.
+    ///
+    /// # Inputs
+    /// - `y` = (`px`, `py`, `pz`, `q0`, `q1`, `q2`, `q3`, `vx`, `vy`, `vz`, `wx`, `wy`, `wz`, `work`, `dissipation`)
+    /// - `w` = (`Fx`, `Fy`, `Fz`, `Tx`, `Ty`, `Tz`, `Sdot`)
+    /// - `p` = (`r`, `L`, `rho_p`, `R`, `rho_h`, `h_b`, `m`, `J_t`, `J_a`, `g`, `fa_x`, `fa_y`, `fa_z`, `ma_x`, `ma_y`, `ma_z`)
+    ///
+    /// # Outputs
+    /// - `dy`: 15×15 matrix
+    /// - `dw`: 15×7 matrix
+    ///
+    /// # Cost
+    /// 67 add/sub, 141 mul, 3 div, 0 sqrt, 0 transcendental, 0 branches; 61 `let`s.
+    #[inline]
+    pub fn rhs_jacobian<T: Real>(
+        y: &SVector<T, 15>,
+        w: &SVector<T, 7>,
+        p: &SVector<T, 16>,
+    ) -> (SMatrix<T, 15, 15>, SMatrix<T, 15, 7>) {
+        let q0 = y[3];
+        let q1 = y[4];
+        let q2 = y[5];
+        let q3 = y[6];
+        let wx = y[10];
+        let wy = y[11];
+        let wz = y[12];
+        let tx = w[3];
+        let ty = w[4];
+        let tz = w[5];
+        let m = p[6];
+        let j_t = p[7];
+        let j_a = p[8];
+        let fa_x = p[10];
+        let fa_y = p[11];
+        let fa_z = p[12];
+        let ma_x = p[13];
+        let ma_y = p[14];
+        let ma_z = p[15];
+        let t0 = q2 * q2;
+        let t1 = q3 * q3;
+        let t2 = q1 * q2;
+        let t3 = q0 * q3;
+        let t4 = q1 * q3;
+        let t5 = q0 * q2;
+        let t6 = t4 + t5;
+        let t7 = t2 + t3;
+        let t8 = q1 * q1;
+        let t9 = q2 * q3;
+        let t10 = q0 * q1;
+        let t11 = t9 + t10;
+        let t12 = ma_x + tx;
+        let t13 = ma_y + ty;
+        let t14 = ma_z + tz;
+        let t15 = q1 * wx;
+        let t16 = q2 * wy;
+        let t17 = q3 * wz;
+        let t18 = q0 * wx;
+        let t19 = q2 * wz;
+        let t20 = q3 * wy;
+        let t21 = q0 * wy;
+        let t22 = q3 * wx;
+        let t23 = q1 * wz;
+        let t24 = q0 * wz;
+        let t25 = q1 * wy;
+        let t26 = q2 * wx;
+        let t27 = T::from_f64(1.0) / m;
+        let t28 = T::from_f64(1.0) / j_t;
+        let t29 = T::from_f64(1.0) / j_a;
+        let t30 = -T::from_f64(0.5) * wx;
+        let t31 = -T::from_f64(0.5) * wy;
+        let t32 = -T::from_f64(0.5) * wz;
+        let t33 = -T::from_f64(0.5) * q1;
+        let t34 = -T::from_f64(0.5) * q2;
+        let t35 = -T::from_f64(0.5) * q3;
+        let t36 = T::from_f64(0.5) * wx;
+        let t37 = T::from_f64(0.5) * wz;
+        let t38 = T::from_f64(0.5) * q0;
+        let t39 = T::from_f64(0.5) * wy;
+        let t40 = q3 * t13;
+        let t41 = q2 * t14;
+        let t42 = q2 * t13;
+        let t43 = q3 * t14;
+        let t44 = q2 * t12;
+        let t45 = q1 * t13;
+        let t46 = q0 * t14;
+        let t47 = q3 * t12;
+        let t48 = q0 * t13;
+        let t49 = q1 * t14;
+        let t50 = q1 * t12;
+        let t51 = q0 * t12;
+        let t52 = -(T::from_f64(2.0) * (t0 + t8)) + T::from_f64(1.0);
+        let t53 = -(T::from_f64(2.0) * (t0 + t1)) + T::from_f64(1.0);
+        let t54 = -(T::from_f64(2.0) * (t1 + t8)) + T::from_f64(1.0);
+        let t55 = -t9 + t10;
+        let t56 = -t2 + t3;
+        let t57 = -t4 + t5;
+        let t58 = j_t - j_a;
+        let t59 = -j_a + j_t;
+        let t60 = wz * t28;
+        let dy = SMatrix::<
+            T,
+            15,
+            15,
+        >::from_row_slice(
+            &[
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(1.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(1.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(1.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t30,
+                t31,
+                t32,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t33,
+                t34,
+                t35,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t36,
+                T::from_f64(0.0),
+                t37,
+                t31,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t38,
+                t35,
+                T::from_f64(0.5) * q2,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t39,
+                t32,
+                T::from_f64(0.0),
+                t36,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.5) * q3,
+                t38,
+                t33,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t37,
+                t39,
+                t30,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t34,
+                T::from_f64(0.5) * q1,
+                t38,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -T::from_f64(2.0) * t28 * (-t40 + t41),
+                T::from_f64(2.0) * t28 * (t42 + t43),
+                -t28 * (T::from_f64(2.0) * (-t45 + t46) + T::from_f64(4.0) * t44),
+                -t28 * (-(T::from_f64(2.0) * (t48 + t49)) + T::from_f64(4.0) * t47),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t60 * t58,
+                wy * t58 * t28,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(2.0) * t28 * (t49 - t47),
+                -t28 * (-(T::from_f64(2.0) * (t44 + t46)) + T::from_f64(4.0) * t45),
+                T::from_f64(2.0) * t28 * (t43 + t50),
+                -t28 * (T::from_f64(2.0) * (t51 - t41) + T::from_f64(4.0) * t40),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -t60 * t59,
+                T::from_f64(0.0),
+                -(wx * t59) * t28,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -T::from_f64(2.0) * t29 * (-t44 + t45),
+                -t29 * (T::from_f64(2.0) * (-t47 + t48) + T::from_f64(4.0) * t49),
+                -t29 * (-(T::from_f64(2.0) * (t40 + t51)) + T::from_f64(4.0) * t41),
+                T::from_f64(2.0) * t29 * (t42 + t50),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(2.0)
+                    * (ma_x * (-t20 + t19) - ma_y * (-t22 + t23) + ma_z * (-t26 + t25)),
+                T::from_f64(2.0) * ma_x * (t16 + t17)
+                    - ma_y * (T::from_f64(2.0) * (-t26 + t24) + T::from_f64(4.0) * t25)
+                    - ma_z
+                        * (-(T::from_f64(2.0) * (t22 + t21)) + T::from_f64(4.0) * t23),
+                -(ma_x * (-(T::from_f64(2.0) * (t25 + t24)) + T::from_f64(4.0) * t26))
+                    + T::from_f64(2.0) * ma_y * (t17 + t15)
+                    - ma_z * (T::from_f64(2.0) * (t18 - t20) + T::from_f64(4.0) * t19),
+                -(ma_x * (T::from_f64(2.0) * (t21 - t23) + T::from_f64(4.0) * t22))
+                    - ma_y * (-(T::from_f64(2.0) * (t19 + t18)) + T::from_f64(4.0) * t20)
+                    + T::from_f64(2.0) * ma_z * (t16 + t15),
+                fa_x,
+                fa_y,
+                fa_z,
+                T::from_f64(2.0) * (ma_y * t7 - ma_z * t57) + ma_x * t53,
+                -(T::from_f64(2.0) * (ma_x * t56 - ma_z * t11)) + ma_y * t54,
+                T::from_f64(2.0) * (ma_x * t6 - ma_y * t55) + ma_z * t52,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+            ],
+        );
+        let dw = SMatrix::<
+            T,
+            15,
+            7,
+        >::from_row_slice(
+            &[
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t27,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t27,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t27,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t53 * t28,
+                T::from_f64(2.0) * t7 * t28,
+                -T::from_f64(2.0) * t57 * t28,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -T::from_f64(2.0) * t56 * t28,
+                t54 * t28,
+                T::from_f64(2.0) * t11 * t28,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(2.0) * t6 * t29,
+                -T::from_f64(2.0) * t55 * t29,
+                t52 * t29,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(1.0),
+            ],
+        );
+        (dy, dw)
     }
     /// Kinetic energy (J) and gravitational potential m g p_z (J).
     ///

@@ -62,6 +62,21 @@ pub fn at(
                 angle: angle_between(&t, axis),
             }
         }
+        Pair::RimEdge => {
+            // Rim fillet (body 1, outward normal −n) against the mouth
+            // fillet (body 2, outward normal n), each surface point half
+            // the penetration from the midway point.
+            let n = c.normal;
+            let rim = c.point - n * (0.5 * c.penetration);
+            let mouth = c.point + n * (0.5 * c.penetration);
+            let (kp1, km1, t1) = torus(centre, axis, &rim, &(-n), prm.rim_fillet);
+            let (kp2, km2, t2) = torus(&Vector3::zeros(), &ez, &mouth, &n, prm.mouth_fillet);
+            Curvatures {
+                body1: [kp1, km1],
+                body2: [kp2, km2],
+                angle: angle_between(&t1, &t2),
+            }
+        }
         Pair::RimWall | Pair::RimTop | Pair::RimBottom => {
             let n = -c.normal;
             let surface = c.point + n * (0.5 * c.penetration);

@@ -7,6 +7,11 @@
 //!   generated functions' parameter vector.
 //! - [`search`]: the local maxima of penetration of each contact pair by
 //!   Newton in the edge angle, warm-started, with a bracketing scan.
+//! - [`merge`]: the continuous rule by which two points of one pair share
+//!   their force as they merge (prominence above the col between them).
+//! - [`jacobian`]: the exact Jacobian, the generated partial derivatives
+//!   and the chain rule through the contact wrench, in [`dual`] numbers.
+//! - [`prune`]: cheap bounds that skip the pairs a pose cannot touch.
 //! - [`curvature`]: the principal curvatures of both surfaces at a contact
 //!   point, for the Hertz ellipse.
 //! - [`system`]: contact forces (Hertz, Hunt–Crossley damping, regularized
@@ -16,10 +21,15 @@
 //! See `docs/compliant-peg-3d.md`.
 
 pub mod curvature;
+pub mod dual;
+pub mod jacobian;
+pub mod merge;
 pub mod params;
+pub mod prune;
 pub mod search;
 pub mod system;
 
+pub use merge::Saddle;
 pub use params::{HertzMode, Peg3dParams};
 pub use search::{ContactPoint, Pair, Search};
 pub use system::{Peg3d, pose_state};

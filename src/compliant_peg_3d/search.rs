@@ -18,6 +18,7 @@
 //! Only penetrating minima (`g < 0`) on the part of each surface that
 //! exists (see [`Pair::valid`]) become contacts.
 
+use super::merge::{self, Saddle};
 use super::params::Peg3dParams;
 use crate::generated::compliant_peg_3d as generated;
 use nalgebra::{SVector, Vector1, Vector3};
@@ -49,6 +50,7 @@ impl Pair {
             Pair::RimWall => generated::rim_wall(x, &a, p),
             Pair::RimTop => generated::rim_top(x, &a, p),
             Pair::RimBottom => generated::rim_bottom(x, &a, p),
+            Pair::RimEdge => generated::rim_edge(x, &a, p),
         }
     }
 
@@ -66,7 +68,10 @@ impl Pair {
     /// rim fillet; the rim fillet is the quarter facing down and outwards
     /// (`n·a ≥ 0`: the pushed direction has no component down the axis);
     /// the bore wall spans `−h_b ≤ z ≤ −ρ_h`; the top face lies outside
-    /// radius `R + ρ_h`, the bore bottom inside `R`.
+    /// radius `R + ρ_h`, the bore bottom inside `R`; the rim against the
+    /// mouth needs both quarters: `n_z ≥ 0`, `n` pointing inwards
+    /// (`n·(x, y) ≤ 0` at the point) and `n·a ≥ 0` (the rim's outward
+    /// half is checked by [`Pair::rim_faces_out`], which needs the pose).
     pub fn valid(
         self,
         prm: &Peg3dParams,
@@ -87,7 +92,24 @@ impl Pair {
             }
             Pair::RimTop => axis.z >= 0.0 && radial >= prm.bore_radius() + prm.mouth_fillet,
             Pair::RimBottom => axis.z >= 0.0 && radial <= prm.bore_radius(),
+            Pair::RimEdge => n.z >= 0.0 && n.xy().dot(&pt.xy()) <= 0.0 && n.dot(axis) >= 0.0,
         }
+    }
+
+    /// Whether the rim fillet's surface point of a contact at `pt` lies on
+    /// the rim's outer half (the torus's inner half is the flat bottom
+    /// face): the outward normal `−n` of the rim has a non-negative
+    /// component along the outward radial direction from the peg's axis,
+    /// `−n·((pt − p) − ((pt − p)·a) a) ≥ 0`. True for the pairs that do not
+    /// involve the rim against a torus.
+    pub fn rim_faces_out(self, x: &SVector<f64, 7>, n: &Vector3<f64>, pt: &Vector3<f64>) -> bool {
+        if self != Pair::RimEdge {
+            return true;
+        }
+        let axis = super::system::axis_of(x);
+        let rel = pt - Vector3::new(x[0], x[1], x[2]);
+        let radial = rel - axis * rel.dot(&axis);
+        -n.dot(&radial) >= 0.0
     }
 }
 
@@ -106,6 +128,10 @@ pub struct ContactPoint {
     pub normal: Vector3<f64>,
     /// Contact point, hole frame (m).
     pub point: Vector3<f64>,
+    /// The col between this point and the next point of the same pair
+    /// (in angle) when the overlap between them is connected: its overlap
+    /// is subtracted once ([`super::merge`]); `None` otherwise.
+    pub saddle: Option<Saddle>,
 }
 
 /// Number of scan samples per circle.
@@ -229,9 +255,13 @@ impl Search {
     ) {
         let minima = self.minima(pair, prm, x, p);
         let axis = super::system::axis_of(x);
+        let first = out.len();
         for &a in &minima {
             let (gap, _, _, gradient, normal, point, axial) = pair.eval(x, a, p);
-            if gap < 0.0 && pair.valid(prm, &axis, &normal, &point, axial) {
+            if gap < 0.0
+                && pair.valid(prm, &axis, &normal, &point, axial)
+                && pair.rim_faces_out(x, &normal, &point)
+            {
                 out.push(ContactPoint {
                     pair,
                     angle: a,
@@ -239,8 +269,10 @@ impl Search {
                     gradient,
                     normal,
                     point,
+                    saddle: None,
                 });
             }
         }
+        merge::assign(pair, x, p, &mut out[first..]);
     }
 }

@@ -12,6 +12,8 @@
 //! Q   = max(0, Q_e (1 + α δ̇))              (Hunt–Crossley damping α, s/m)
 //! v_t = v_c − (n·v_c) n,   F_t = −μ Q v_t / √(|v_t|² + v_s²)
 //! F   = Q n + F_t,   T = (x_c − p) × F     (about the centre of mass)
+//! and, for a point with a subtracted col (`super::merge`), the elastic
+//! force `−k_c δ_c^{3/2} n_c` at the col point.
 //! Ṡ   = (Q − Q_e) δ̇ − F_t·v_t ≥ 0          (damping and friction)
 //! ```
 //!
@@ -21,12 +23,14 @@
 //! the same wrench.
 
 use super::curvature;
+use super::jacobian;
 use super::params::{HertzMode, Peg3dParams};
+use super::prune;
 use super::search::{ContactPoint, Pair, Search};
 use crate::generated::compliant_peg_3d as generated;
 use crate::hertz::{EllipticityMethod, HertzContact, HertzError};
 use crate::system::OdeSystem;
-use nalgebra::{SVector, UnitQuaternion, Vector3};
+use nalgebra::{SMatrix, SVector, UnitQuaternion, Vector3};
 use std::cell::RefCell;
 
 /// The peg's axis `a = R(q) e_z` of a pose `(p, q)`.
@@ -68,8 +72,12 @@ pub struct ContactForce {
     pub friction: Vector3<f64>,
     /// Hertz stiffness `k` used (N/m^{3/2}).
     pub stiffness: f64,
-    /// Elastic energy `(2/5) k δ^{5/2}` (J).
+    /// Elastic energy `(2/5) k δ^{5/2} − (2/5) k_c δ_c^{5/2}` (J), the
+    /// second term for the contact's subtracted col ([`super::merge`]).
     pub potential: f64,
+    /// Elastic force `k_c δ_c^{3/2}` (N) of the contact's subtracted col,
+    /// applied as `−k_c δ_c^{3/2} n_c` at the col point; 0 without a col.
+    pub col_force: f64,
 }
 
 /// The compliant 3-D peg.
@@ -77,7 +85,7 @@ pub struct Peg3d {
     /// The parameters.
     pub params: Peg3dParams,
     p: SVector<f64, 16>,
-    searches: RefCell<[Search; 4]>,
+    searches: RefCell<[Search; Pair::ALL.len()]>,
     error: RefCell<Option<HertzError>>,
 }
 
@@ -121,7 +129,11 @@ impl Peg3d {
         let mut out = Vec::new();
         let mut s = self.searches.borrow_mut();
         for (k, pair) in Pair::ALL.iter().enumerate() {
-            s[k].find(*pair, &self.params, &x, &self.p, &mut out);
+            if prune::can_touch(*pair, &self.params, &x) {
+                s[k].find(*pair, &self.params, &x, &self.p, &mut out);
+            } else {
+                s[k] = Search::default();
+            }
         }
         out
     }
@@ -161,6 +173,23 @@ impl Peg3d {
             let vc = v + om.cross(&(c.point - centre));
             let vn = c.normal.dot(&vc);
             let ddot = -vn;
+            let (col_force, col_potential) = match &c.saddle {
+                Some(s) => {
+                    let at_col = ContactPoint {
+                        angle: s.angle,
+                        penetration: s.penetration,
+                        gradient: s.gradient,
+                        normal: s.normal,
+                        point: s.point,
+                        saddle: None,
+                        ..c
+                    };
+                    let kc = self.stiffness(&at_col, &x)?;
+                    let dc = s.penetration;
+                    (kc * dc * dc.sqrt(), 0.4 * kc * dc * dc * dc.sqrt())
+                }
+                None => (0.0, 0.0),
+            };
             let qn = (qe * (1.0 + prm.damping * ddot)).max(0.0);
             let vt = vc - c.normal * vn;
             let ft = vt
@@ -171,7 +200,8 @@ impl Peg3d {
                 normal_force: qn,
                 friction: ft,
                 stiffness: k,
-                potential: 0.4 * k * d * d * d.sqrt(),
+                potential: 0.4 * k * d * d * d.sqrt() - col_potential,
+                col_force,
             });
         }
         Ok(out)
@@ -193,11 +223,21 @@ impl Peg3d {
             let torque = arm.cross(&force);
             let vc = v + om.cross(&arm);
             let ddot = -c.normal.dot(&vc);
-            let qe = f.stiffness * c.penetration * c.penetration.sqrt();
+            let d = c.penetration;
+            let qe = f.stiffness * d * d.sqrt();
             let vt = vc - c.normal * c.normal.dot(&vc);
             for k in 0..3 {
                 w[k] += force[k];
                 w[3 + k] += torque[k];
+            }
+            if let Some(s) = &c.saddle {
+                // The subtracted col: −k_c δ_c^{3/2} n_c at the col point.
+                let back = -s.normal * f.col_force;
+                let t = (s.point - centre).cross(&back);
+                for k in 0..3 {
+                    w[k] += back[k];
+                    w[3 + k] += t[k];
+                }
             }
             w[6] += (f.normal_force - qe) * ddot - f.friction.dot(&vt);
         }
@@ -227,6 +267,15 @@ impl OdeSystem<15> for Peg3d {
                 }
                 SVector::repeat(f64::NAN)
             }
+        }
+    }
+
+    /// The exact Jacobian ([`super::jacobian`]); NaN after a Hertz setup
+    /// error, like the right-hand side.
+    fn jacobian(&self, _t: f64, y: &SVector<f64, 15>) -> SMatrix<f64, 15, 15> {
+        match self.forces(y) {
+            Ok(f) => jacobian::of(self, y, &f),
+            Err(_) => SMatrix::repeat(f64::NAN),
         }
     }
 

@@ -112,7 +112,17 @@ pub struct ModelBuilder<'g> {
     energy: Option<Expr<'g>>,
     outputs: Outputs,
     extras: Vec<(String, String, Output)>,
+    functions: Vec<Function<'g>>,
     names: Vec<String>,
+}
+
+/// A function declared with [`ModelBuilder::function`]: its own inputs
+/// (before the parameters) and several named outputs.
+struct Function<'g> {
+    name: String,
+    doc: String,
+    inputs: Vec<(String, Vec<Expr<'g>>)>,
+    outputs: Vec<(String, Output)>,
 }
 
 impl<'g> ModelBuilder<'g> {
@@ -130,6 +140,7 @@ impl<'g> ModelBuilder<'g> {
             energy: None,
             outputs: Outputs::default(),
             extras: Vec::new(),
+            functions: Vec::new(),
             names: Vec::new(),
         }
     }
@@ -250,6 +261,62 @@ impl<'g> ModelBuilder<'g> {
         self.extras.push((name.to_owned(), doc.to_owned(), output));
     }
 
+    /// Declares the input symbol `name` that is neither a state component
+    /// nor a parameter (an angle a function is evaluated at, a force given
+    /// from outside), with `doc` (meaning, units); it is used in the inputs
+    /// of [`ModelBuilder::function`].
+    pub fn symbol(&mut self, name: &str, doc: &str) -> Result<Expr<'g>, GenError> {
+        self.claim(name)?;
+        let _ = doc;
+        Ok(self.g.var(name))
+    }
+
+    /// A named function `name(inputs..., p[, t]) -> (outputs...)` with its
+    /// own inputs (each a name and its symbols, declared with
+    /// [`ModelBuilder::state`] or [`ModelBuilder::symbol`]) followed by the
+    /// parameter vector `p` (and the time when the model uses it), and
+    /// several named outputs; documented by `doc`. Functions are emitted
+    /// after the dynamics' functions, in declaration order. A model made
+    /// only of such functions needs no dynamics when its adapter is off
+    /// ([`Outputs::adapter`]): its right-hand side can then take an input
+    /// besides the state, such as a wrench summed at run time.
+    ///
+    /// # Errors
+    /// [`GenError::Model`] for a function or input name that is not an
+    /// ASCII identifier, or a function declared twice.
+    pub fn function(
+        &mut self,
+        name: &str,
+        doc: &str,
+        inputs: &[(&str, &[Expr<'g>])],
+        outputs: Vec<(&str, Output)>,
+    ) -> Result<(), GenError> {
+        let ident = |n: &str| {
+            !n.is_empty()
+                && n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+                && n.starts_with(|c: char| c.is_ascii_alphabetic())
+        };
+        if !ident(name) || self.functions.iter().any(|f| f.name == name) {
+            return Err(self.error(name, name, "not an identifier, or declared twice"));
+        }
+        if let Some((bad, _)) = inputs.iter().find(|(n, _)| !ident(n) || *n == "p") {
+            return Err(self.error(name, bad, "input name not an identifier (or `p`)"));
+        }
+        self.functions.push(Function {
+            name: name.to_owned(),
+            doc: doc.to_owned(),
+            inputs: inputs
+                .iter()
+                .map(|(n, e)| ((*n).to_owned(), e.to_vec()))
+                .collect(),
+            outputs: outputs
+                .into_iter()
+                .map(|(n, o)| (n.to_owned(), o))
+                .collect(),
+        });
+        Ok(())
+    }
+
     /// The state symbols, in order.
     fn state_exprs(&self) -> Vec<Expr<'g>> {
         if self.coords.is_empty() {
@@ -262,15 +329,20 @@ impl<'g> ModelBuilder<'g> {
     /// Builds the module and the adapter layout.
     pub(crate) fn finish(self) -> Result<(Module, Layout), GenError> {
         let g = self.g;
-        let Some(dynamics) = self.dynamics.clone() else {
-            return Err(self.error(
-                "dynamics",
-                &self.name,
-                "no dynamics: call `lagrange` or `explicit`",
-            ));
+        let functions_only = !self.functions.is_empty() && !self.outputs.adapter;
+        let dynamics = match self.dynamics.clone() {
+            Some(d) => Some(d),
+            None if functions_only => None,
+            None => {
+                return Err(self.error(
+                    "dynamics",
+                    &self.name,
+                    "no dynamics: call `lagrange` or `explicit`",
+                ));
+            }
         };
         let state = self.state_exprs();
-        if state.is_empty() {
+        if state.is_empty() && !functions_only {
             return Err(self.error("state", &self.name, "no coordinate or state declared"));
         }
         let mut o = self.outputs;
@@ -295,7 +367,8 @@ impl<'g> ModelBuilder<'g> {
         let time_sym: Option<Sym> = self.time.map(sym_of);
         let mut fns = Vec::new();
         let (dof, closed_rhs) = match dynamics {
-            Dynamics::Lagrange { t, v, forces } => {
+            None => (None, false),
+            Some(Dynamics::Lagrange { t, v, forces }) => {
                 if !self.states.is_empty() {
                     let name = self.states[0].0.to_string();
                     return Err(self.error(
@@ -381,7 +454,7 @@ impl<'g> ModelBuilder<'g> {
                 }
                 (Some(n), closed)
             }
-            Dynamics::Explicit(rhs) => {
+            Some(Dynamics::Explicit(rhs)) => {
                 if !self.coords.is_empty() {
                     let name = self.coords[0].0.q.to_string();
                     return Err(self.error(
@@ -450,6 +523,21 @@ impl<'g> ModelBuilder<'g> {
                 doc(text),
                 inputs(None),
                 vec![(name.as_str(), output.clone())],
+            ));
+        }
+        for f in &self.functions {
+            let mut ins: Vec<Input> = f.inputs.iter().map(|(n, e)| Input::new(n, e)).collect();
+            ins.push(p.clone());
+            ins.extend(t_in.clone());
+            ins.retain(|i| !i.syms.is_empty());
+            fns.push(FnSpec::new(
+                &f.name,
+                doc(&f.doc),
+                ins,
+                f.outputs
+                    .iter()
+                    .map(|(n, o)| (n.as_str(), o.clone()))
+                    .collect(),
             ));
         }
         let state_docs = match dof {

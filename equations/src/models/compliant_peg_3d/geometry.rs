@@ -27,6 +27,16 @@
 //!   0)/ρ_c`.
 //! - peg rim vs a horizontal plane `z = z₀` (the top face `z₀ = 0`, the bore
 //!   bottom `z₀ = −h_b`): `g = c_z − ρ_p − z₀`; `n = e_z`.
+//! - peg rim vs mouth edge (torus against torus): the distance between the
+//!   two tori is the distance between their tube-centre circles minus both
+//!   tube radii. Along the rim circle `c(β)`, the closest point of the
+//!   mouth circle (radius `R+ρ_h` about `e_z`, height `−ρ_h`) is in closed
+//!   form: it lies in the meridian half-plane through `c`, at
+//!   `m = (R+ρ_h) ê + (0, 0, −ρ_h)` with `ê = (c_x, c_y, 0)/ρ_c`, so
+//!   `|c − m|² = (ρ_c − R − ρ_h)² + (c_z + ρ_h)²` and
+//!   `g = |c − m| − ρ_p − ρ_h`; `n = (c − m)/|c − m|`. A local minimum of
+//!   `g` in `β` is then a joint stationary point in both circles' angles, so
+//!   the envelope theorem gives the pose gradient as for the other pairs.
 //!
 //! Units: m, rad.
 
@@ -135,7 +145,7 @@ pub fn pair<'g>(
                 axial,
             }
         }
-        Pair::RimWall | Pair::RimTop | Pair::RimBottom => {
+        Pair::RimWall | Pair::RimTop | Pair::RimBottom | Pair::RimEdge => {
             let rr = r - rho_p;
             let body = [rr * c, rr * s, rho_p - 0.5 * len];
             let off = rotate(q, &body);
@@ -147,6 +157,25 @@ pub fn pair<'g>(
                     let normal = [-centre[0] / rad, -centre[1] / rad, zero];
                     let mid = 0.5 * (bore + rad + rho_p);
                     let point = [-mid * normal[0], -mid * normal[1], centre[2]];
+                    (gap, normal, point)
+                }
+                Pair::RimEdge => {
+                    let rad = (centre[0] * centre[0] + centre[1] * centre[1]).sqrt();
+                    let rm = bore + rho_h;
+                    let dr = rad - rm;
+                    let dz = centre[2] + rho_h;
+                    let dist = (dr * dr + dz * dz).sqrt();
+                    let gap = dist - rho_p - rho_h;
+                    let radial = [centre[0] / rad, centre[1] / rad];
+                    let normal = [dr * radial[0] / dist, dr * radial[1] / dist, dz / dist];
+                    // Midway between the mouth surface (m + ρ_h n) and the
+                    // rim surface (c − ρ_p n).
+                    let half = 0.5 * (rho_h + dist - rho_p);
+                    let point = [
+                        rm * radial[0] + half * normal[0],
+                        rm * radial[1] + half * normal[1],
+                        -rho_h + half * normal[2],
+                    ];
                     (gap, normal, point)
                 }
                 _ => {

@@ -29,10 +29,41 @@
 pub mod geometry;
 pub mod pair;
 
+use crate::GenError;
+use crate::builder::{ModelBuilder, Outputs};
 use crate::expr::Expr;
 use crate::graph::Graph;
-use crate::model::{FnSpec, Input, Module, Output};
+use crate::model::{Module, Output};
 use geometry::{GEOMETRY, POSE, Pair};
+
+/// The module's name.
+pub const NAME: &str = "compliant_peg_3d";
+
+/// The module's documentation.
+pub const DOC: &str = "Compliant 3-D peg-in-hole: contact-pair gaps along the edge circles and \
+                       Newton-Euler dynamics in centre of mass, unit quaternion and body angular \
+                       velocity. Inputs: pose x (see X_NAMES), edge angle a, state y, contact \
+                       wrench w, parameters p (see P_NAMES). SI units.";
+
+/// What each parameter is, in the order of [`GEOMETRY`] then [`DYNAMICS`].
+const PARAM_DOCS: [&str; 16] = [
+    "peg radius r, m",
+    "peg length L, m",
+    "fillet radius of the peg's bottom rim rho_p, m",
+    "bore radius R, m",
+    "fillet radius of the hole's mouth edge rho_h, m",
+    "bore depth h_b, m",
+    "mass m, kg",
+    "transverse moment of inertia about the centre of mass, kg m^2",
+    "axial moment of inertia, kg m^2",
+    "gravitational acceleration along -z, m/s^2",
+    "applied force x, N",
+    "applied force y, N",
+    "applied force z, N",
+    "applied moment x, N m",
+    "applied moment y, N m",
+    "applied moment z, N m",
+];
 
 /// Names of the state components, in order.
 pub const STATE: [&str; 15] = [
@@ -66,14 +97,6 @@ pub const DYNAMICS: [&str; 10] = [
     "m", "J_t", "J_a", "g", "fa_x", "fa_y", "fa_z", "ma_x", "ma_y", "ma_z",
 ];
 
-fn params(g: &Graph) -> Vec<Expr<'_>> {
-    GEOMETRY
-        .iter()
-        .chain(DYNAMICS.iter())
-        .map(|n| g.param(n))
-        .collect()
-}
-
 fn cross<'g>(a: &[Expr<'g>; 3], b: &[Expr<'g>; 3]) -> [Expr<'g>; 3] {
     [
         a[1] * b[2] - a[2] * b[1],
@@ -82,15 +105,19 @@ fn cross<'g>(a: &[Expr<'g>; 3], b: &[Expr<'g>; 3]) -> [Expr<'g>; 3] {
     ]
 }
 
-fn pair_function(g: &Graph, which: Pair) -> FnSpec {
-    let pose: Vec<Expr<'_>> = POSE.iter().map(|n| g.var(n)).collect();
-    let angle = g.var("angle");
+fn pair_function<'g>(
+    m: &mut ModelBuilder<'g>,
+    which: Pair,
+    pose: &[Expr<'g>],
+    angle: Expr<'g>,
+) -> Result<(), GenError> {
+    let g = m.g();
     let p = [pose[0], pose[1], pose[2]];
     let q = [pose[3], pose[4], pose[5], pose[6]];
     let geo = geometry::pair(g, which, &p, &q, angle);
     let d1 = geo.gap.diff(angle);
     let d2 = d1.diff(angle);
-    let grad: Vec<Expr<'_>> = pose.iter().map(|&x| geo.gap.diff(x)).collect();
+    let grad: Vec<Expr<'g>> = pose.iter().map(|&x| geo.gap.diff(x)).collect();
     let what = match which {
         Pair::EdgeSide => {
             "the mouth-edge torus against the peg's side, angle along the mouth-edge circle"
@@ -104,19 +131,19 @@ fn pair_function(g: &Graph, which: Pair) -> FnSpec {
         Pair::RimBottom => {
             "the peg's rim torus against the bore bottom z = -h_b, angle along the rim circle"
         }
+        Pair::RimEdge => {
+            "the peg's rim torus against the mouth-edge torus, angle along the rim circle (body), \
+             closest mouth-circle point in closed form"
+        }
     };
-    FnSpec::new(
+    m.function(
         which.name(),
-        format!(
+        &format!(
             "Contact pair: {what}. Gap g (m, negative = penetration), dg/dangle and d2g/dangle2 (m/rad, \
              m/rad^2), gradient dg/d(px, py, pz, q0..q3), unit force direction on the peg, contact \
              point (m) and its axial coordinate along the peg from the centre of mass (m)."
         ),
-        vec![
-            Input::new("x", &pose),
-            Input::new("a", &[angle]),
-            Input::new("p", &params(g)),
-        ],
+        &[("x", pose), ("a", &[angle])],
         vec![
             ("gap", Output::scalar(geo.gap)),
             ("d1", Output::scalar(d1)),
@@ -129,10 +156,12 @@ fn pair_function(g: &Graph, which: Pair) -> FnSpec {
     )
 }
 
-fn dynamics_functions(g: &Graph) -> Vec<FnSpec> {
-    let y: Vec<Expr<'_>> = STATE.iter().map(|n| g.var(n)).collect();
-    let w: Vec<Expr<'_>> = WRENCH.iter().map(|n| g.var(n)).collect();
-    let pr = params(g);
+fn dynamics_functions<'g>(
+    mb: &mut ModelBuilder<'g>,
+    y: &[Expr<'g>],
+    w: &[Expr<'g>],
+) -> Result<(), GenError> {
+    let g = mb.g();
     let par = |n: &str| g.param(n);
     let (m, jt, ja, grav) = (par("m"), par("J_t"), par("J_a"), par("g"));
     let q = [y[3], y[4], y[5], y[6]];
@@ -166,45 +195,96 @@ fn dynamics_functions(g: &Graph) -> Vec<FnSpec> {
             + ma[2] * om_world[2],
     );
     rhs.push(w[6]);
+    let jac = |wrt: &[Expr<'g>]| -> Vec<Vec<Expr<'g>>> {
+        rhs.iter()
+            .map(|f| wrt.iter().map(|&x| f.diff(x)).collect())
+            .collect()
+    };
     let kinetic = 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2])
         + 0.5 * (jt * (om[0] * om[0] + om[1] * om[1]) + ja * om[2] * om[2]);
-    vec![
-        FnSpec::new(
-            "rhs",
-            "Newton-Euler right-hand side of y = (p, q, v, omega_body, work, dissipation) under the \
+    mb.function(
+        "rhs",
+        "Newton-Euler right-hand side of y = (p, q, v, omega_body, work, dissipation) under the \
              contact wrench w = (F, T about the centre of mass, hole frame; dissipation rate), the \
              applied loads and gravity along -z. SI units.",
-            vec![
-                Input::new("y", &y),
-                Input::new("w", &w),
-                Input::new("p", &pr),
-            ],
-            vec![("ydot", Output::vector(&rhs))],
-        ),
-        FnSpec::new(
-            "energy",
-            "Kinetic energy (J) and gravitational potential m g p_z (J).",
-            vec![Input::new("y", &y), Input::new("p", &pr)],
-            vec![
-                ("kinetic", Output::scalar(kinetic)),
-                ("gravity", Output::scalar(m * grav * y[2])),
-            ],
-        ),
-    ]
+        &[("y", y), ("w", w)],
+        vec![("ydot", Output::vector(&rhs))],
+    )?;
+    mb.function(
+        "rhs_jacobian",
+        "Exact partial derivatives of `rhs`: dy = d(ydot)/dy (15 x 15) at a fixed wrench and \
+             dw = d(ydot)/dw (15 x 7); the runtime adds dw times the wrench's own derivative in y.",
+        &[("y", y), ("w", w)],
+        vec![
+            ("dy", Output::matrix(&jac(y))),
+            ("dw", Output::matrix(&jac(w))),
+        ],
+    )?;
+    mb.function(
+        "energy",
+        "Kinetic energy (J) and gravitational potential m g p_z (J).",
+        &[("y", y)],
+        vec![
+            ("kinetic", Output::scalar(kinetic)),
+            ("gravity", Output::scalar(m * grav * y[2])),
+        ],
+    )
 }
 
-/// The module `compliant_peg_3d`: one function per contact pair, the
-/// Newton–Euler right-hand side and the energy.
+/// Declares the compliant 3-D peg through the public builder: parameters
+/// with their meaning, the pose, angle, state and wrench symbols, one
+/// function per contact pair, the Newton–Euler right-hand side with the
+/// wrench as an input, its exact partial derivatives and the energy (no
+/// adapter: the runtime sums the contact wrench). A downstream build script
+/// can declare the same model with
+/// `generator.model(NAME, DOC, compliant_peg_3d::declare)`.
+///
+/// # Errors
+/// Those of [`ModelBuilder`] (a name declared twice).
+pub fn declare(m: &mut ModelBuilder<'_>) -> Result<(), GenError> {
+    // Symbols are declared where the expressions first use them (pose,
+    // angle, parameters, the pair functions; then the rest of the state and
+    // the wrench), which fixes the order of terms in the emitted code.
+    m.outputs(Outputs {
+        rhs: false,
+        mass_forcing: false,
+        jacobian: false,
+        energy: false,
+        adapter: false,
+    });
+    let mut y = Vec::with_capacity(STATE.len());
+    for name in &STATE[..POSE.len()] {
+        y.push(m.symbol(name, "pose component (see the module's state layout)")?);
+    }
+    let angle = m.symbol("angle", "angle along the pair's edge circle, rad")?;
+    for (name, doc) in GEOMETRY.iter().chain(DYNAMICS.iter()).zip(PARAM_DOCS) {
+        m.parameter(name, doc)?;
+    }
+    let pose = y.clone();
+    for pair in Pair::ALL {
+        pair_function(m, pair, &pose, angle)?;
+    }
+    for name in &STATE[POSE.len()..] {
+        y.push(m.symbol(name, "state component (see the module's state layout)")?);
+    }
+    let mut w = Vec::with_capacity(WRENCH.len());
+    for name in WRENCH {
+        w.push(m.symbol(name, "contact wrench component (see WRENCH)")?);
+    }
+    dynamics_functions(m, &y, &w)
+}
+
+/// The module `compliant_peg_3d` in `g`, declared by [`declare`]: one
+/// function per contact pair, the Newton–Euler right-hand side, its
+/// partial derivatives and the energy.
+///
+/// # Panics
+/// Never for this fixed model ([`declare`] declares every name once).
 pub fn module(g: &Graph) -> Module {
-    let mut functions: Vec<FnSpec> = Pair::ALL.iter().map(|&p| pair_function(g, p)).collect();
-    functions.extend(dynamics_functions(g));
-    Module {
-        name: "compliant_peg_3d".to_owned(),
-        doc: "Compliant 3-D peg-in-hole: contact-pair gaps along the edge circles and Newton-Euler \
-              dynamics in centre of mass, unit quaternion and body angular velocity. Inputs: pose x \
-              (see X_NAMES), edge angle a, state y, contact wrench w, parameters p (see P_NAMES). \
-              SI units."
-            .to_owned(),
-        functions,
+    let mut b = ModelBuilder::new(g, NAME, DOC);
+    let built = declare(&mut b).and_then(|()| b.finish());
+    match built {
+        Ok((module, _)) => module,
+        Err(e) => panic!("the compliant 3-D peg's declaration is inconsistent: {e}"),
     }
 }

@@ -14,11 +14,20 @@ pub enum Pair {
     RimTop,
     /// The peg's bottom-rim torus against the bore bottom.
     RimBottom,
+    /// The peg's bottom-rim torus against the hole's mouth-edge torus (a
+    /// peg landing on, or leaning its rim on, the filleted mouth).
+    RimEdge,
 }
 
 impl Pair {
     /// Every pair, in emission order.
-    pub const ALL: [Pair; 4] = [Pair::EdgeSide, Pair::RimWall, Pair::RimTop, Pair::RimBottom];
+    pub const ALL: [Pair; 5] = [
+        Pair::EdgeSide,
+        Pair::RimWall,
+        Pair::RimTop,
+        Pair::RimBottom,
+        Pair::RimEdge,
+    ];
 
     /// The generated function's name (also the CSV column and event name).
     pub fn name(self) -> &'static str {
@@ -27,6 +36,7 @@ impl Pair {
             Pair::RimWall => "rim_wall",
             Pair::RimTop => "rim_top",
             Pair::RimBottom => "rim_bottom",
+            Pair::RimEdge => "rim_edge",
         }
     }
 }

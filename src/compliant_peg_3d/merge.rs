@@ -1,0 +1,121 @@
+//! Continuous merging of two contact points of one pair (B1 and B2 of the
+//! three-point lean meeting at the two-point configuration).
+//!
+//! Two penetrating minima `α₁`, `α₂` of one pair's gap `g(α)` are separated
+//! by a maximum `α_c` (a col of the overlap). Counting each minimum as a
+//! full Hertz point makes the summed force jump when they merge: just
+//! before, two points of depth `δ`; just after, one. The rule used instead
+//! is inclusion–exclusion of the two overlaps: with `f(δ) = (2/5) k δ^{5/2}`,
+//!
+//! ```text
+//! V = Σ_minima f(δ_i) − Σ_cols f(max(0, δ_c))
+//! ```
+//!
+//! over the cols between consecutive penetrating minima along the circle
+//! (when every col of a circle with two or more minima penetrates, the
+//! overlap is one ring and the col of least penetration is not subtracted).
+//! `V` is symmetric in the points, continuous and continuously
+//! differentiable where the points exist: as the stretch between two points
+//! starts to overlap `f(δ_c)` rises from zero with zero slope; when a
+//! minimum and its col annihilate (a fold) `f(δ_i) − f(δ_c) → 0`; when both
+//! minima and the col meet (the symmetric pitchfork at `γ₀`) the three
+//! terms leave `f(δ)`, the one point's.
+//!
+//! Since `α_i` and `α_c` are stationary points of `g`, the envelope theorem
+//! gives `−∂V/∂(pose) = Σ k δ_i^{3/2} ∂g(α_i)/∂pose − Σ k δ_c^{3/2}
+//! ∂g(α_c)/∂pose`: a force `Q_i n_i` at each point and `−k δ_c^{3/2} n_c`
+//! at each subtracted col. [`super::system`] applies the col's force
+//! (elastic only: no damping, no friction) with the point it is attached to
+//! (the minimum before it in angle).
+
+use super::search::{ContactPoint, Pair};
+use nalgebra::{SVector, Vector3};
+use std::f64::consts::TAU;
+
+/// A col attached to a contact point: the penetrating maximum of the gap
+/// between it and the next minimum of the same pair, whose overlap is
+/// subtracted once ([`assign`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Saddle {
+    /// Angle along the pair's edge circle (rad, in `[0, 2π)`).
+    pub angle: f64,
+    /// Penetration at the col `δ_col > 0` (m).
+    pub penetration: f64,
+    /// Gradient of the gap in the pose `(p, q)` at the col.
+    pub gradient: SVector<f64, 7>,
+    /// Unit force direction at the col, hole frame.
+    pub normal: Vector3<f64>,
+    /// The col's contact point, hole frame (m).
+    pub point: Vector3<f64>,
+}
+
+/// The maximum of `g` in `(lo, hi)` with `g′(lo) > 0 > g′(hi)`: Newton on
+/// `g′` with bisection on its sign. Returns the angle (unwrapped).
+fn col(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, mut lo: f64, mut hi: f64) -> f64 {
+    let mut a = 0.5 * (lo + hi);
+    for _ in 0..80 {
+        let (_, d1, d2, ..) = pair.eval(x, a, p);
+        if d1 > 0.0 {
+            lo = a;
+        } else {
+            hi = a;
+        }
+        let newton = a - d1 / d2;
+        let next = if d2 < 0.0 && newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+        if (next - a).abs() <= 1e-14 * (1.0 + a.abs()) || hi - lo <= 1e-14 {
+            return next;
+        }
+        a = next;
+    }
+    a
+}
+
+/// Sets the [`ContactPoint::saddle`] of the points in `points` (the
+/// penetrating, valid minima of one pair, in any order; sorted by angle on
+/// return) by the inclusion–exclusion rule of this module: the col after
+/// each point in angle, when it penetrates and is subtracted.
+pub fn assign(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, points: &mut [ContactPoint]) {
+    let n = points.len();
+    if n < 2 {
+        return;
+    }
+    points.sort_by(|a, b| a.angle.total_cmp(&b.angle));
+    // The col between point k and point k+1 (cyclically), with its
+    // penetration (≤ 0 when the profile leaves the overlap between them).
+    let cols: Vec<(f64, f64)> = (0..n)
+        .map(|k| {
+            let lo = points[k].angle;
+            let mut hi = points[(k + 1) % n].angle;
+            if hi <= lo {
+                hi += TAU;
+            }
+            let a = col(pair, x, p, lo, hi);
+            (a, -pair.eval(x, a, p).0)
+        })
+        .collect();
+    // One ring: keep the least penetrating col.
+    let keep = if cols.iter().all(|c| c.1 > 0.0) {
+        (0..n).min_by(|&a, &b| cols[a].1.total_cmp(&cols[b].1))
+    } else {
+        None
+    };
+    for (k, pt) in points.iter_mut().enumerate() {
+        let (a, depth) = cols[k];
+        pt.saddle = None;
+        if depth > 0.0 && keep != Some(k) {
+            let a = a.rem_euclid(TAU);
+            let (_, _, _, gradient, normal, point, _) = pair.eval(x, a, p);
+            pt.saddle = Some(Saddle {
+                angle: a,
+                penetration: depth,
+                gradient,
+                normal,
+                point,
+            });
+        }
+    }
+}
