@@ -17,6 +17,7 @@
 
 pub mod curvature;
 pub mod params;
+pub mod prescribed;
 pub mod search;
 pub mod system;
 
