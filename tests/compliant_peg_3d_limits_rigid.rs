@@ -62,14 +62,14 @@ fn gaps(sys: &PrescribedPeg, c: &Vector3<f64>) -> [f64; 3] {
     let mut g = [f64::NAN; 3];
     for a in Search::default().minima(Pair::EdgeSide, prm, &x, pv) {
         let (gap, _, _, _, n, pt, axial) = Pair::EdgeSide.eval(&x, a, pv);
-        if Pair::EdgeSide.valid(prm, &axis, &n, &pt, axial) && !(gap >= g[0]) {
+        if Pair::EdgeSide.valid(prm, &axis, &n, &pt, axial) && (g[0].is_nan() || gap < g[0]) {
             g[0] = gap;
         }
     }
     let e_n = Vector3::new(-sys.motion.psi.sin(), sys.motion.psi.cos(), 0.0);
     for m in rim_mouth_minima(prm, c, &q, 1e-3) {
         let k = if m.point.dot(&e_n) >= 0.0 { 1 } else { 2 };
-        if m.valid && !(m.gap >= g[k]) {
+        if m.valid && (g[k].is_nan() || m.gap < g[k]) {
             g[k] = m.gap;
         }
     }
@@ -300,4 +300,32 @@ fn rigid_limit_with_precession_unloads_b1_towards_gamma0() {
     let (ratio0, ratio1) = (first[1] / first[2], last[1] / last[2]);
     eprintln!("N_B1/N_B2: {ratio0:.4} at γ = 0.06, {ratio1:.4} at γ = 0.0455");
     assert!(ratio1 < ratio0 - 0.04, "{ratio0} {ratio1}");
+}
+
+#[test]
+fn prescribed_peg_refuses_a_curvature_or_invalid_stiffness() {
+    let motion = Motion {
+        gamma: 0.3,
+        gammadot: GAMMADOT,
+        psi: 0.0,
+        psidot: 0.0,
+    };
+    let mut prm = Peg3dParams::steel(0.04995, 0.07, 0.05, 1e-5, 1e-5, 0.1);
+    for (mode, value) in [
+        (HertzMode::Curvature, 0.0),
+        (HertzMode::Fixed(-1.0), -1.0),
+        (HertzMode::Fixed(0.0), 0.0),
+    ] {
+        prm.hertz = mode;
+        match PrescribedPeg::try_new(prm, motion) {
+            Err(pegdyn::hertz::HertzError::Invalid {
+                field, value: v, ..
+            }) => {
+                assert_eq!(field, "hertz");
+                assert_eq!(v, value);
+            }
+            Err(e) => panic!("{mode:?}: {e:?}"),
+            Ok(_) => panic!("{mode:?} accepted"),
+        }
+    }
 }

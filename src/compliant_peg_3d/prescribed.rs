@@ -35,7 +35,7 @@
 
 use super::params::{HertzMode, Peg3dParams};
 use super::search::Pair;
-use super::system::{Peg3d, axis_of, pose_state};
+use super::system::{Peg3d, pose_state};
 use crate::hertz::HertzError;
 use crate::system::OdeSystem;
 use nalgebra::{SVector, UnitQuaternion, Vector3};
@@ -262,6 +262,15 @@ pub struct SiteForce {
     pub dissipation: f64,
 }
 
+/// The refusal of [`HertzMode::Curvature`] (field `hertz`).
+fn curvature_mode() -> HertzError {
+    HertzError::Invalid {
+        field: "hertz".to_owned(),
+        value: 0.0,
+        reason: "the prescribed-orientation peg needs a fixed stiffness (HertzMode::Fixed)",
+    }
+}
+
 /// The compliant 3-D peg whose orientation follows [`Motion`].
 pub struct PrescribedPeg {
     /// The peg; its `hertz` must be [`HertzMode::Fixed`].
@@ -288,11 +297,7 @@ impl PrescribedPeg {
                 value: k,
                 reason: "the fixed stiffness must be finite and > 0",
             }),
-            HertzMode::Curvature => Err(HertzError::Invalid {
-                field: "hertz".to_owned(),
-                value: f64::NAN,
-                reason: "the prescribed-orientation peg needs a fixed stiffness",
-            }),
+            HertzMode::Curvature => Err(curvature_mode()),
         }
     }
 
@@ -311,7 +316,8 @@ impl PrescribedPeg {
     /// Every contact force at time `t`, state `y`.
     ///
     /// # Errors
-    /// As [`Peg3d::forces`].
+    /// As [`Peg3d::forces`]; [`HertzError::Invalid`] (field `hertz`) when
+    /// the parameters were changed to [`HertzMode::Curvature`].
     pub fn forces(&self, t: f64, y: &SVector<f64, 7>) -> Result<Vec<SiteForce>, HertzError> {
         let full = self.full_state(t, y);
         let prm = &self.peg.params;
@@ -343,9 +349,8 @@ impl PrescribedPeg {
                 dissipation: w[6],
             });
         }
-        let k = match prm.hertz {
-            HertzMode::Fixed(k) => k,
-            HertzMode::Curvature => f64::NAN,
+        let HertzMode::Fixed(k) = prm.hertz else {
+            return Err(curvature_mode());
         };
         for c in rim_mouth(prm, &centre, &q) {
             let d = c.penetration;
@@ -369,16 +374,11 @@ impl PrescribedPeg {
         }
         Ok(out)
     }
-
-    /// The peg's axis at time `t`.
-    pub fn axis(&self, t: f64) -> Vector3<f64> {
-        let q = self.motion.orientation(t);
-        let x = SVector::<f64, 7>::from_column_slice(&[0.0, 0.0, 0.0, q.w, q.i, q.j, q.k]);
-        axis_of(&x)
-    }
 }
 
 impl OdeSystem<7> for PrescribedPeg {
+    /// `(v, (Σ F_contact + F_a)/m − g e_z, Ṡ)`; NaN (which stops the
+    /// integrators) when [`PrescribedPeg::forces`] fails.
     fn rhs(&self, t: f64, y: &SVector<f64, 7>) -> SVector<f64, 7> {
         let Ok(forces) = self.forces(t, y) else {
             return SVector::repeat(f64::NAN);
