@@ -329,3 +329,104 @@ fn prescribed_peg_refuses_a_curvature_or_invalid_stiffness() {
         }
     }
 }
+
+#[test]
+fn rim_mouth_pair_matches_brute_force_and_its_direction_is_the_gap_gradient() {
+    // Poses of the lean: the rigid pose at γ with ψ and a spin-free
+    // orientation, the centre moved by up to ±50 µm. For each, the minima of
+    // the rim–mouth gap against a dense double sampling of the two
+    // tube-centre circles, and the force direction against the gradient of
+    // the smallest gap in the centre position (envelope theorem).
+    let rigid = PegParams::fig9();
+    let rho = 2e-5;
+    let prm = Peg3dParams::steel(
+        rigid.peg_diameter,
+        rigid.height,
+        rigid.hole_diameter,
+        rho,
+        rho,
+        0.1,
+    );
+    let (rr, rc) = (prm.peg_radius() - rho, prm.bore_radius() + rho);
+    let (n_beta, n_alpha) = (1500, 1500);
+    let mut checked = 0;
+    for (i, gamma) in [0.05, 0.08, 0.12, 0.2, 0.3].into_iter().enumerate() {
+        let psi = 0.7 * i as f64;
+        let motion = Motion {
+            gamma,
+            gammadot: 0.0,
+            psi,
+            psidot: 0.0,
+        };
+        let q = motion.orientation(0.0);
+        let pose = Pose::try_new(&rigid, gamma, psi).unwrap();
+        let shift = Vector3::new(3e-5, -2e-5, -5e-5 * (i as f64 - 2.0) / 2.0);
+        let c = pose.c + shift;
+        let found = rim_mouth_minima(&prm, &c, &q, 1e-3);
+        // Brute force: the smallest distance between the two circles on a
+        // 1500 × 1500 grid of (β, α), then twice on a 400 × 400 grid of
+        // ±2 cells around the best pair (cells 100 times smaller each time).
+        let tau = std::f64::consts::TAU;
+        let rim = |b: f64| c + q * Vector3::new(rr * b.cos(), rr * b.sin(), rho - 0.5 * prm.length);
+        let mouth = |a: f64| Vector3::new(rc * a.cos(), rc * a.sin(), -rho);
+        let mut best_pair = (0.0, 0.0, f64::MAX);
+        let mut centre = (0.0, 0.0);
+        let mut span = tau;
+        for (level, n) in [(0, n_beta), (1, 400), (2, 400)] {
+            let h = span / n as f64;
+            let (b0, a0) = if level == 0 {
+                (0.0, 0.0)
+            } else {
+                (centre.0 - 0.5 * span, centre.1 - 0.5 * span)
+            };
+            let mouth_pts: Vec<Vector3<f64>> = (0..n_alpha.min(n))
+                .map(|k| mouth(a0 + k as f64 * h))
+                .collect();
+            for kb in 0..n {
+                let b = b0 + kb as f64 * h;
+                let p = rim(b);
+                for (ka, m) in mouth_pts.iter().enumerate() {
+                    let dist = (p - m).norm();
+                    if dist < best_pair.2 {
+                        best_pair = (b, a0 + ka as f64 * h, dist);
+                    }
+                }
+            }
+            centre = (best_pair.0, best_pair.1);
+            span = 4.0 * h;
+        }
+        let brute = best_pair.2 - 2.0 * rho;
+        let best = found.iter().map(|m| m.gap).fold(f64::MAX, f64::min);
+        // The finest cells are 2.7e-8 rad: 7e-10 m along the circles.
+        assert!(
+            best <= brute + 1e-12 && best >= brute - 1e-9,
+            "γ = {gamma}: found {best:e}, brute force {brute:e}"
+        );
+        // Direction = gradient of the smallest gap in the centre.
+        let m = found.iter().min_by(|a, b| a.gap.total_cmp(&b.gap)).unwrap();
+        let d = 1e-9;
+        let grad = Vector3::from_fn(|j, _| {
+            let mut e = Vector3::zeros();
+            e[j] = d;
+            let g = |cc: Vector3<f64>| {
+                rim_mouth_minima(&prm, &cc, &q, 1e-3)
+                    .iter()
+                    .map(|m| m.gap)
+                    .fold(f64::MAX, f64::min)
+            };
+            (g(c + e) - g(c - e)) / (2.0 * d)
+        });
+        assert!(
+            (grad - m.normal).norm() < 1e-5,
+            "γ = {gamma}: gradient {grad} vs direction {}",
+            m.normal
+        );
+        eprintln!(
+            "γ = {gamma}: {} minima, smallest gap {best:.3e} m (brute force {brute:.3e}), gradient error {:.1e}",
+            found.len(),
+            (grad - m.normal).norm()
+        );
+        checked += 1;
+    }
+    assert_eq!(checked, 5);
+}
