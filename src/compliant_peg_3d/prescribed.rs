@@ -20,7 +20,8 @@
 //! ```
 //!
 //! with the contact forces of [`Peg3d::forces`] (its pairs mouth edge vs
-//! peg side, rim vs bore wall, top face and bore bottom) plus one pair of
+//! peg side, rim vs bore wall, top face and bore bottom; any further pair of
+//! [`Peg3d`] is left out, so that it is never counted twice) plus one pair of
 //! this module: the peg's bottom-rim torus against the hole's mouth-edge
 //! torus ([`rim_mouth`]), where the rigid three-point peg's bottom edge rests
 //! on the hole edge at B1 and B2. Its gap is exact: the distance between the
@@ -30,7 +31,7 @@
 //! `√((|c_xy| − R − ρ_h)² + (c_z + ρ_h)²)`, so the gap is a function of the
 //! rim angle `β` alone; its local minima are found by a scan and golden
 //! section. Its normal force uses the stiffness `k` of
-//! [`HertzMode::Fixed`](super::HertzMode::Fixed) and the same damping and
+//! [`HertzMode::Fixed`] and the same damping and
 //! friction law as the other pairs (see [`super::system`]).
 
 use super::params::{HertzMode, Peg3dParams};
