@@ -25,6 +25,7 @@ pub mod dual;
 pub mod jacobian;
 pub mod merge;
 pub mod params;
+pub mod prescribed;
 pub mod prune;
 pub mod search;
 pub mod system;
