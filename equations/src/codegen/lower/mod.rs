@@ -29,6 +29,7 @@
 //! lowered code against. None of the rewrites adds a multiplication.
 
 mod cancel;
+mod combine;
 mod horner;
 mod pairs;
 pub(crate) mod sign;
@@ -43,9 +44,16 @@ pub fn lower(g: &Graph, roots: &[Id]) -> Vec<Id> {
     let signed = sign::fold_negations(g, roots);
     let factored = rebuild(g, &signed, |g, _, node, _| match node {
         Node::Add(xs) => horner::factor_sum(g, &xs),
+        Node::Mul(xs)
+            if xs
+                .iter()
+                .any(|&x| crate::simplify::const_of(g, x) == Some(0.0)) =>
+        {
+            konst(g, 0.0) // a factor cancelled to zero (`horner::like_terms`)
+        }
         node => g.intern(node),
     });
-    let factored = sign::fold_negations(g, &factored);
+    let factored = combine::combine_like_terms(g, &sign::fold_negations(g, &factored));
     let cancelled = rebuild(g, &factored, |g, _, node, _| match node {
         Node::Mul(_) => cancel::cancel_parameters(g, g.intern(node)),
         node => g.intern(node),
