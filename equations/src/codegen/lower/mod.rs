@@ -21,6 +21,11 @@
 //!    own and replaces the pair everywhere; repeated until no pair recurs
 //!    (greedy pair extraction). `m₂·l₁·l₂` in five terms is computed once.
 //!
+//! After the second sign folding, like terms meet (`combine`): two terms
+//! that the folding made one value add their coefficients (`x − x` is
+//! gone, `x + x` is `2x`), and sums of the same terms in another order are
+//! one value.
+//!
 //! The new nodes are interned without simplification (the simplifier would
 //! flatten them back), so they live beside the canonical ones in the same
 //! arena and only the emitter sees them. The interpreter
