@@ -114,7 +114,7 @@ fn labelled_products(g: &Graph) -> ProductNames {
 /// How a value relates to a named product with the same leaves, as a name
 /// prefix: the ratio of the coefficients (`−x` is `neg_x`, `x/2` is
 /// `half_x`); `None` for other ratios.
-fn scale_prefix(ratio: f64) -> Option<&'static str> {
+pub(crate) fn scale_prefix(ratio: f64) -> Option<&'static str> {
     Some(match ratio {
         1.0 => "",
         -1.0 => "neg_",
@@ -154,6 +154,7 @@ impl<'a> Emitter<'a> {
     ) -> Emitter<'a> {
         let partner = sin_cos_partners(g, sched);
         let by_product = labelled_products(g);
+        let by_value = super::value_names::ValueNames::new(g, &sched.lets);
         let mut out: Vec<Option<Ident>> = vec![None; sched.live.len()];
         // Readable names (symbols, model names and functions of them).
         let mut readable: HashMap<Id, String> = HashMap::new();
@@ -178,10 +179,12 @@ impl<'a> Emitter<'a> {
                         n
                     }
                     node => {
-                        let base = model_name(g, id, &by_product).or_else(|| {
-                            let arg = |a: Id| readable.get(&a).cloned();
-                            let_base(g, node, &arg)
-                        });
+                        let base = model_name(g, id, &by_product)
+                            .or_else(|| by_value.get(id).map(str::to_owned))
+                            .or_else(|| {
+                                let arg = |a: Id| readable.get(&a).cloned();
+                                let_base(g, node, &arg)
+                            });
                         match base {
                             Some(base) => {
                                 let n = names.fresh(&base);

@@ -22,6 +22,7 @@ pub mod ops;
 pub mod registry;
 pub mod schedule;
 mod tokens;
+mod value_names;
 pub mod verify;
 
 use std::path::Path;
