@@ -53,7 +53,7 @@ pub mod compliant_peg {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 105 add/sub, 140 mul, 7 div, 4 sqrt, 6 transcendental, 16 branches; 89 `let`s.
+    /// 104 add/sub, 137 mul, 7 div, 4 sqrt, 6 transcendental, 16 branches; 90 `let`s.
     #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
@@ -94,78 +94,79 @@ pub mod compliant_peg {
         let t14 = l_c - rho_p;
         let t15 = r - rho_p;
         let t16 = sin_theta * t14;
-        let t17 = rho_p * sin_theta;
-        let t18 = cos_theta * (r - T::from_f64(2.0) * rho_p * t9);
-        let t19 = cos_theta * t14;
-        let t20 = rho_h + T::from_f64(0.5) * d - x;
-        let t21 = T::from_f64(1.0) - T::from_f64(2.0) * t9;
-        let t22 = -rho_h + z;
-        let t23 = sin_theta * t22;
-        let delta_edge_left = r + t4 - x + t23 - T::from_f64(2.0) * t5 * t9;
+        let t17 = -T::from_f64(2.0) * t9 * t15;
+        let t18 = rho_p * sin_theta;
+        let t19 = cos_theta * (r - T::from_f64(2.0) * rho_p * t9);
+        let t20 = cos_theta * t14;
+        let t21 = rho_h + T::from_f64(0.5) * d - x;
+        let t22 = T::from_f64(1.0) - T::from_f64(2.0) * t9;
+        let t23 = z - rho_h;
+        let t24 = sin_theta * t23;
+        let delta_edge_left = r + t4 - x + t24 - T::from_f64(2.0) * t5 * t9;
         let pen_edge_left = delta_edge_left.max0();
-        let t24 = pen_edge_left * pen_edge_left.sqrt();
-        let t25 = -xdot * t21;
-        let t26 = cos_theta * t22;
+        let t25 = pen_edge_left * pen_edge_left.sqrt();
+        let t26 = -xdot * t22;
+        let t27 = cos_theta * t23;
         let step_delta_edge_left = delta_edge_left.step();
-        let t27 = sin_theta * (l_c - rho_p + t17) + t18;
-        let slip_wall_right = zdot - thetadot * t27;
-        let t28 = v_s.hypot(slip_wall_right);
-        let t29 = -rho_p + r;
-        let t30 = sin_theta * (-l_c + rho_p + t17) + t18;
+        let t28 = sin_theta * (l_c - rho_p + t18) + t19;
+        let slip_wall_right = zdot - thetadot * t28;
+        let t29 = v_s.hypot(slip_wall_right);
+        let t30 = sin_theta * (-l_c + rho_p + t18) + t19;
         let slip_wall_left = zdot + thetadot * t30;
         let t31 = v_s.hypot(slip_wall_left);
-        let delta_wall_right = r + t4 + x + t16 - T::from_f64(2.0) * t9 * t15;
+        let delta_wall_right = r + t4 + x + t16 + t17;
         let pen_wall_right = delta_wall_right.max0();
         let t32 = pen_wall_right * pen_wall_right.sqrt();
         let step_delta_wall_right = delta_wall_right.step();
-        let t33 = t19 - T::from_f64(2.0) * t13 * t15;
-        let delta_rate_wall_right = xdot + thetadot * t33;
-        let t34 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
-        let t35 = sin_theta * t5 - t26;
-        let t36 = cos_theta * t35 + t10;
-        let t37 = -(sin_theta * t35) + t11;
-        let slip_edge_left = sin_theta * (xdot + thetadot * t36)
-            + cos_theta * (zdot + thetadot * t37);
-        let t38 = t26 - T::from_f64(2.0) * t13 * t5;
-        let delta_rate_edge_left = t25 + t12 + thetadot * t38;
-        let t39 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
-        let t40 = v_s.hypot(slip_edge_left);
-        let t41 = -t26 + sin_theta * t20;
-        let t42 = t10 - cos_theta * t41;
-        let t43 = t11 + sin_theta * t41;
-        let slip_edge_right = sin_theta * (xdot - thetadot * t42)
-            + cos_theta * (zdot - thetadot * t43);
-        let t44 = t26 - T::from_f64(2.0) * t13 * t20;
-        let t45 = t25 + t12 + thetadot * t44;
-        let t46 = (T::from_f64(1.0) - hc_alpha * t45).max0();
+        let t33 = t13 * t15;
+        let t34 = t20 - T::from_f64(2.0) * t33;
+        let delta_rate_wall_right = xdot + thetadot * t34;
+        let t35 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
+        let t36 = sin_theta * t5 - t27;
+        let t37 = cos_theta * t36 + t10;
+        let t38 = t11 - sin_theta * t36;
+        let slip_edge_left = sin_theta * (xdot + thetadot * t37)
+            + cos_theta * (zdot + thetadot * t38);
+        let t39 = t27 - T::from_f64(2.0) * t13 * t5;
+        let delta_rate_edge_left = t26 + t12 + thetadot * t39;
+        let t40 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
+        let t41 = v_s.hypot(slip_edge_left);
+        let t42 = sin_theta * t21 - t27;
+        let t43 = t10 - cos_theta * t42;
+        let t44 = t11 + sin_theta * t42;
+        let slip_edge_right = sin_theta * (xdot - thetadot * t43)
+            + cos_theta * (zdot - thetadot * t44);
+        let t45 = t27 - T::from_f64(2.0) * t13 * t21;
+        let neg_delta_rate_edge_right = t26 + t12 + thetadot * t45;
+        let t46 = (T::from_f64(1.0) - hc_alpha * neg_delta_rate_edge_right).max0();
         let t47 = v_s.hypot(slip_edge_right);
-        let delta_wall_left = r + t4 - x - t16 - T::from_f64(2.0) * t9 * t29;
-        let pen_wall_left = delta_wall_left.max0();
-        let t48 = pen_wall_left * pen_wall_left.sqrt();
-        let t49 = t19 + T::from_f64(2.0) * t13 * t29;
-        let t50 = xdot + thetadot * t49;
-        let t51 = (T::from_f64(1.0) - hc_alpha * t50).max0();
-        let step_delta_wall_left = delta_wall_left.step();
-        let t52 = -t39 + T::from_f64(1.0);
-        let t53 = -t34 + T::from_f64(1.0);
-        let delta_edge_right = r + t4 + x - t23 + T::from_f64(2.0) * t9 * t20;
+        let t48 = T::from_f64(1.0) - t40;
+        let t49 = T::from_f64(1.0) - t35;
+        let delta_edge_right = r + t4 + x - t24 + T::from_f64(2.0) * t9 * t21;
         let pen_edge_right = delta_edge_right.max0();
-        let t54 = pen_edge_right * pen_edge_right.sqrt();
-        let t55 = -t46 + T::from_f64(1.0);
+        let t50 = pen_edge_right * pen_edge_right.sqrt();
+        let t51 = T::from_f64(1.0) - t46;
         let step_delta_edge_right = delta_edge_right.step();
-        let t56 = -t51 + T::from_f64(1.0);
-        let t57 = t39 / t40;
-        let t58 = t57 * slip_edge_left;
-        let t59 = t46 / t47;
-        let t60 = t59 * slip_edge_right;
-        let t61 = step_delta_edge_left - t52;
-        let t62 = -step_delta_edge_right + t55;
-        let t63 = t24 * t61 + t54 * t62;
-        let t64 = mu * (t58 * t24 + t60 * t54);
-        let t65 = t34 / t28;
-        let t66 = t65 * slip_wall_right;
-        let t67 = t51 / t31;
-        let t68 = t67 * slip_wall_left;
+        let t52 = t40 / t41;
+        let t53 = t52 * slip_edge_left;
+        let t54 = t46 / t47;
+        let t55 = t54 * slip_edge_right;
+        let t56 = step_delta_edge_left - t48;
+        let t57 = t51 - step_delta_edge_right;
+        let t58 = t25 * t56 + t50 * t57;
+        let t59 = mu * (t53 * t25 + t55 * t50);
+        let t60 = t35 / t29;
+        let t61 = t60 * slip_wall_right;
+        let delta_wall_left = r + t4 - x - t16 + t17;
+        let pen_wall_left = delta_wall_left.max0();
+        let t62 = pen_wall_left * pen_wall_left.sqrt();
+        let t63 = t20 + T::from_f64(2.0) * t33;
+        let neg_delta_rate_wall_left = xdot + thetadot * t63;
+        let t64 = (T::from_f64(1.0) - hc_alpha * neg_delta_rate_wall_left).max0();
+        let step_delta_wall_left = delta_wall_left.step();
+        let t65 = T::from_f64(1.0) - t64;
+        let t66 = t64 / t31;
+        let t67 = t66 * slip_wall_left;
         SMatrix::<
             T,
             8,
@@ -175,37 +176,40 @@ pub mod compliant_peg {
                 xdot,
                 zdot,
                 thetadot,
-                (k_edge * (t21 * t63 - t64 * sin_theta)
+                (k_edge * (t22 * t58 - t59 * sin_theta)
                     + k_wall
-                        * (-(t32 * (-T::from_f64(1.0) + step_delta_wall_right + t34))
-                            + t48 * (t51 - T::from_f64(1.0) + step_delta_wall_left)) + t0
-                    + t1) / m,
-                -(k_edge * (sin_theta * t63 + t64 * cos_theta)
-                    + k_wall * (t66 * t32 + t68 * t48) * mu - t2 + t3) / m,
+                        * (t62 * (t64 - T::from_f64(1.0) + step_delta_wall_left)
+                            - t32 * (-T::from_f64(1.0) + step_delta_wall_right + t35))
+                    + t0 + t1) / m,
+                -(k_edge * (sin_theta * t58 + t59 * cos_theta)
+                    + k_wall * (t61 * t32 + t67 * t62) * mu - t2 + t3) / m,
                 -(-m_2
                     + k_edge
-                        * (t24
-                            * (t38 * t61
-                                + t58 * mu * (sin_theta * t36 + cos_theta * t37))
-                            - t54
-                                * (-(t44 * t62)
-                                    + t60 * mu * (sin_theta * t42 + cos_theta * t43)))
+                        * (t25
+                            * (t39 * t56
+                                + t53 * mu * (sin_theta * t37 + cos_theta * t38))
+                            - t50
+                                * (t55 * mu * (sin_theta * t43 + cos_theta * t44)
+                                    - t45 * t57))
                     + k_wall
-                        * (-(t32
-                            * (-(t33 * (step_delta_wall_right - t53)) + t66 * mu * t27))
-                            + t48
-                                * (-(t49 * (step_delta_wall_left - t56)) + t68 * mu * t30)))
+                        * (t62 * (t67 * mu * t30 - t63 * (step_delta_wall_left - t65))
+                            - t32
+                                * (t61 * mu * t28 - t34 * (step_delta_wall_right - t49))))
                     / j,
                 xdot * (t0 + t1) + zdot * (t2 - t3) + thetadot * m_2,
                 mu
                     * (k_edge
-                        * (t57 * t24 * (slip_edge_left * slip_edge_left)
-                            + t59 * t54 * (slip_edge_right * slip_edge_right))
+                        * (t52 * t25 * (slip_edge_left * slip_edge_left)
+                            + t54 * t50 * (slip_edge_right * slip_edge_right))
                         + k_wall
-                            * (t65 * t32 * (slip_wall_right * slip_wall_right)
-                                + t67 * t48 * (slip_wall_left * slip_wall_left)))
-                    - k_edge * (delta_rate_edge_left * t24 * t52 - t45 * t54 * t55)
-                    - k_wall * (delta_rate_wall_right * t32 * t53 - t50 * t48 * t56),
+                            * (t60 * t32 * (slip_wall_right * slip_wall_right)
+                                + t66 * t62 * (slip_wall_left * slip_wall_left)))
+                    - k_edge
+                        * (delta_rate_edge_left * t25 * t48
+                            - neg_delta_rate_edge_right * t50 * t51)
+                    - k_wall
+                        * (delta_rate_wall_right * t32 * t49
+                            - neg_delta_rate_wall_left * t62 * t65),
             ],
         )
     }
@@ -219,7 +223,7 @@ pub mod compliant_peg {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 365 add/sub, 722 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 289 `let`s.
+    /// 360 add/sub, 717 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 285 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -262,12 +266,12 @@ pub mod compliant_peg {
         let t16 = l_c - rho_p;
         let t17 = r - rho_p;
         let t18 = sin_theta * t16;
-        let t19 = rho_p * sin_theta;
-        let t20 = l_c - rho_p + t19;
-        let t21 = r - T::from_f64(2.0) * rho_p * t11;
-        let t22 = sin_theta * t21;
-        let t23 = cos_theta * t21;
-        let t24 = sin_theta * t20;
+        let t19 = -T::from_f64(2.0) * t11 * t17;
+        let t20 = rho_p * sin_theta;
+        let t21 = l_c - rho_p + t20;
+        let t22 = r - T::from_f64(2.0) * rho_p * t11;
+        let t23 = sin_theta * t22;
+        let t24 = cos_theta * t22;
         let t25 = cos_theta * t16;
         let t26 = rho_h + T::from_f64(0.5) * d - x;
         let t27 = T::from_f64(1.0) - T::from_f64(2.0) * t11;
@@ -277,267 +281,262 @@ pub mod compliant_peg {
         let t31 = t27 * t27;
         let t32 = cos_theta * cos_theta;
         let t33 = zdot * cos_theta;
-        let t34 = t10 * t10;
-        let t35 = t23 + t24;
-        let t36 = -rho_h + z;
-        let t37 = sin_theta * t36;
-        let delta_edge_left = r + t6 - x + t37 - T::from_f64(2.0) * t7 * t11;
+        let t34 = t24 + sin_theta * t21;
+        let t35 = z - rho_h;
+        let t36 = sin_theta * t35;
+        let delta_edge_left = r + t6 - x + t36 - T::from_f64(2.0) * t7 * t11;
         let pen_edge_left = delta_edge_left.max0();
-        let t38 = pen_edge_left * pen_edge_left.sqrt();
-        let t39 = -xdot * t27;
-        let t40 = cos_theta * t36;
+        let t37 = pen_edge_left * pen_edge_left.sqrt();
+        let t38 = -xdot * t27;
+        let t39 = cos_theta * t35;
         let step_delta_edge_left = delta_edge_left.step();
-        let t41 = t24 + t23;
-        let slip_wall_right = zdot - thetadot * t41;
-        let t42 = v_s.hypot(slip_wall_right);
+        let t40 = -l_c + rho_p + t20;
+        let t41 = sin_theta * t40 + t24;
+        let slip_wall_left = zdot + thetadot * t41;
+        let t42 = v_s.hypot(slip_wall_left);
         let t43 = T::from_f64(1.0) / t42;
-        let t44 = slip_wall_right * slip_wall_right;
-        let t45 = -rho_p + r;
-        let t46 = -l_c + rho_p + t19;
-        let t47 = sin_theta * t46;
-        let t48 = t47 + t23;
-        let slip_wall_left = zdot + thetadot * t48;
-        let t49 = v_s.hypot(slip_wall_left);
-        let t50 = T::from_f64(1.0) / t49;
-        let t51 = slip_wall_left * slip_wall_left;
-        let delta_wall_right = r + t6 + x + t18 - T::from_f64(2.0) * t11 * t17;
+        let t44 = slip_wall_left * slip_wall_left;
+        let delta_wall_right = r + t6 + x + t18 + t19;
         let pen_wall_right = delta_wall_right.max0();
-        let t52 = pen_wall_right * pen_wall_right.sqrt();
+        let t45 = pen_wall_right * pen_wall_right.sqrt();
         let step_delta_wall_right = delta_wall_right.step();
-        let t53 = t25 - T::from_f64(2.0) * t15 * t17;
-        let delta_rate_wall_right = xdot + thetadot * t53;
-        let t54 = T::from_f64(1.0) + hc_alpha * delta_rate_wall_right;
-        let t55 = t54.max0();
-        let t56 = sin_theta * t7 - t40;
-        let t57 = cos_theta * t56;
-        let t58 = t57 + t12;
-        let t59 = xdot + thetadot * t58;
-        let t60 = t40 - T::from_f64(2.0) * t15 * t7;
-        let delta_rate_edge_left = t39 + t14 + thetadot * t60;
-        let t61 = T::from_f64(1.0) + hc_alpha * delta_rate_edge_left;
-        let t62 = t61.max0();
-        let t63 = -t40 + sin_theta * t26;
-        let t64 = -cos_theta * t63;
-        let t65 = t12 + t64;
-        let t66 = xdot - thetadot * t65;
-        let t67 = sin_theta * t63;
-        let t68 = t13 + t67;
-        let t69 = zdot - thetadot * t68;
-        let slip_edge_right = sin_theta * t66 + cos_theta * t69;
-        let t70 = t40 - T::from_f64(2.0) * t15 * t26;
-        let t71 = t39 + t14 + thetadot * t70;
-        let t72 = T::from_f64(1.0) - hc_alpha * t71;
-        let t73 = t72.max0();
-        let t74 = v_s.hypot(slip_edge_right);
-        let t75 = T::from_f64(1.0) / t74;
-        let t76 = sin_theta * t65 + cos_theta * t68;
-        let t77 = slip_edge_right * slip_edge_right;
-        let delta_wall_left = r + t6 - x - t18 - T::from_f64(2.0) * t11 * t45;
-        let pen_wall_left = delta_wall_left.max0();
-        let t78 = pen_wall_left * pen_wall_left.sqrt();
-        let t79 = t25 + T::from_f64(2.0) * t15 * t45;
-        let t80 = xdot + thetadot * t79;
-        let t81 = T::from_f64(1.0) - hc_alpha * t80;
-        let t82 = t81.max0();
-        let step_delta_wall_left = delta_wall_left.step();
-        let t83 = -t62 + T::from_f64(1.0);
-        let t84 = -t55 + T::from_f64(1.0);
-        let delta_edge_right = r + t6 + x - t37 + T::from_f64(2.0) * t11 * t26;
+        let t46 = t15 * t17;
+        let t47 = t25 - T::from_f64(2.0) * t46;
+        let delta_rate_wall_right = xdot + thetadot * t47;
+        let t48 = T::from_f64(1.0) + hc_alpha * delta_rate_wall_right;
+        let t49 = t48.max0();
+        let t50 = sin_theta * t7 - t39;
+        let t51 = cos_theta * t50;
+        let t52 = t51 + t12;
+        let t53 = xdot + thetadot * t52;
+        let t54 = t39 - T::from_f64(2.0) * t15 * t7;
+        let delta_rate_edge_left = t38 + t14 + thetadot * t54;
+        let t55 = T::from_f64(1.0) + hc_alpha * delta_rate_edge_left;
+        let t56 = t55.max0();
+        let t57 = sin_theta * t26 - t39;
+        let t58 = -cos_theta * t57;
+        let t59 = t12 + t58;
+        let t60 = xdot - thetadot * t59;
+        let t61 = sin_theta * t57;
+        let t62 = t13 + t61;
+        let t63 = zdot - thetadot * t62;
+        let slip_edge_right = sin_theta * t60 + cos_theta * t63;
+        let t64 = t39 - T::from_f64(2.0) * t15 * t26;
+        let neg_delta_rate_edge_right = t38 + t14 + thetadot * t64;
+        let t65 = T::from_f64(1.0) - hc_alpha * neg_delta_rate_edge_right;
+        let t66 = t65.max0();
+        let t67 = v_s.hypot(slip_edge_right);
+        let t68 = T::from_f64(1.0) / t67;
+        let t69 = sin_theta * t59 + cos_theta * t62;
+        let t70 = slip_edge_right * slip_edge_right;
+        let t71 = T::from_f64(1.0) - t56;
+        let t72 = T::from_f64(1.0) - t49;
+        let delta_edge_right = r + t6 + x - t36 + T::from_f64(2.0) * t11 * t26;
         let pen_edge_right = delta_edge_right.max0();
-        let t85 = pen_edge_right * pen_edge_right.sqrt();
-        let t86 = -t73 + T::from_f64(1.0);
+        let t73 = pen_edge_right * pen_edge_right.sqrt();
+        let t74 = T::from_f64(1.0) - t66;
         let step_delta_edge_right = delta_edge_right.step();
-        let t87 = -t82 + T::from_f64(1.0);
-        let t88 = t38 * (step_delta_edge_left - t83);
-        let t89 = t85 * (-step_delta_edge_right + t86);
+        let t75 = t37 * (step_delta_edge_left - t71);
+        let t76 = t73 * (t74 - step_delta_edge_right);
+        let delta_wall_left = r + t6 - x - t18 + t19;
+        let pen_wall_left = delta_wall_left.max0();
+        let t77 = pen_wall_left * pen_wall_left.sqrt();
+        let t78 = t25 + T::from_f64(2.0) * t46;
+        let neg_delta_rate_wall_left = xdot + thetadot * t78;
+        let t79 = T::from_f64(1.0) - hc_alpha * neg_delta_rate_wall_left;
+        let t80 = t79.max0();
+        let step_delta_wall_left = delta_wall_left.step();
+        let t81 = T::from_f64(1.0) - t80;
         let sqrt_pen_edge_left = pen_edge_left.sqrt();
-        let t90 = step_delta_edge_left * step_delta_edge_left;
-        let t91 = T::from_f64(1.0) / (t42 * t42 * t42);
-        let t92 = T::from_f64(1.0) / (t49 * t49 * t49);
-        let t93 = t23 + t47;
+        let t82 = step_delta_edge_left * step_delta_edge_left;
+        let t83 = T::from_f64(1.0) / (t42 * t42 * t42);
         let sqrt_pen_wall_right = pen_wall_right.sqrt();
-        let t94 = step_delta_wall_right * step_delta_wall_right;
-        let t95 = -T::from_f64(1.5) * t94;
-        let t96 = sqrt_pen_edge_left * t90;
-        let t97 = r + cos_theta * t7 + t37;
-        let t98 = r - (t37 + cos_theta * t26);
-        let t99 = -t34 + t11;
-        let t100 = t45 * t99 + t18;
-        let t101 = t11 - t34;
-        let t102 = -(t7 * t101) + t37;
-        let t103 = -(t17 * t101) + t18;
-        let t104 = -(t26 * t99) + t37;
-        let t105 = T::from_f64(2.0) * t15 * xdot;
-        let t106 = t54.step();
-        let t107 = t53 * t53;
-        let t108 = sin_theta * t56;
-        let t109 = -t108 + t13;
-        let t110 = zdot + thetadot * t109;
-        let slip_edge_left = sin_theta * t59 + cos_theta * t110;
-        let t111 = v_s.hypot(slip_edge_left);
-        let t112 = T::from_f64(1.0) / t111;
-        let t113 = sin_theta * t58 + cos_theta * t109;
-        let t114 = slip_edge_left * slip_edge_left;
-        let t115 = t38 * t83;
-        let t116 = t85 * t86;
-        let t117 = slip_edge_left * t112;
-        let t118 = slip_edge_right * t75;
-        let t119 = t117 * t38 * t62 + t118 * t85 * t73;
-        let t120 = t61.step();
-        let t121 = t72.step();
-        let sqrt_pen_wall_left = pen_wall_left.sqrt();
-        let t122 = step_delta_wall_left * step_delta_wall_left;
-        let t123 = T::from_f64(1.0) / (t111 * t111 * t111);
-        let t124 = T::from_f64(1.0) / (t74 * t74 * t74);
-        let t125 = t81.step();
-        let t126 = t60 * t60;
-        let t127 = t70 * t70;
-        let t128 = t79 * t79;
-        let t129 = step_delta_edge_left * sqrt_pen_edge_left;
-        let t130 = t129 * (-(T::from_f64(1.5) * t62) + T::from_f64(1.5));
-        let t131 = thetadot * hc_alpha;
-        let t132 = t15 * t131;
-        let t133 = t38 * t120;
-        let t134 = T::from_f64(2.0) * t132 * t133;
-        let t135 = t130 * t27 + t134;
+        let t84 = step_delta_wall_right * step_delta_wall_right;
+        let t85 = -T::from_f64(1.5) * t84;
+        let t86 = sqrt_pen_edge_left * t82;
+        let t87 = r + cos_theta * t7 + t36;
+        let t88 = r - (t36 + cos_theta * t26);
+        let t89 = t11 - t10 * t10;
+        let t90 = t36 - t26 * t89;
+        let slip_wall_right = zdot - thetadot * t34;
+        let t91 = v_s.hypot(slip_wall_right);
+        let t92 = T::from_f64(1.0) / t91;
+        let t93 = slip_wall_right * slip_wall_right;
+        let t94 = T::from_f64(1.0) / (t91 * t91 * t91);
+        let t95 = t17 * t89;
+        let t96 = t95 + t18;
+        let t97 = t36 - t7 * t89;
+        let t98 = T::from_f64(2.0) * t15 * xdot;
+        let t99 = t48.step();
+        let t100 = t47 * t47;
+        let t101 = sin_theta * t50;
+        let t102 = t13 - t101;
+        let t103 = zdot + thetadot * t102;
+        let slip_edge_left = sin_theta * t53 + cos_theta * t103;
+        let t104 = v_s.hypot(slip_edge_left);
+        let t105 = T::from_f64(1.0) / t104;
+        let t106 = sin_theta * t52 + cos_theta * t102;
+        let t107 = slip_edge_left * slip_edge_left;
+        let t108 = t37 * t71;
+        let t109 = t73 * t74;
+        let t110 = slip_edge_left * t105;
+        let t111 = slip_edge_right * t68;
+        let t112 = t110 * t37 * t56 + t111 * t73 * t66;
+        let t113 = t55.step();
+        let t114 = t65.step();
+        let t115 = T::from_f64(1.0) / (t104 * t104 * t104);
+        let t116 = T::from_f64(1.0) / (t67 * t67 * t67);
+        let t117 = t54 * t54;
+        let t118 = t64 * t64;
+        let t119 = step_delta_edge_left * sqrt_pen_edge_left;
+        let t120 = t119 * (T::from_f64(1.5) - T::from_f64(1.5) * t56);
+        let t121 = thetadot * hc_alpha;
+        let t122 = t15 * t121;
+        let t123 = t37 * t113;
+        let t124 = T::from_f64(2.0) * t122 * t123;
+        let t125 = t120 * t27 + t124;
         let sqrt_pen_edge_right = pen_edge_right.sqrt();
-        let t136 = step_delta_edge_right * step_delta_edge_right;
-        let t137 = step_delta_edge_right * sqrt_pen_edge_right;
-        let t138 = t137 * (-(T::from_f64(1.5) * t73) + T::from_f64(1.5));
-        let t139 = t85 * t121;
-        let t140 = T::from_f64(2.0) * t132 * t139;
-        let t141 = t138 * t27 + t140;
-        let t142 = t129 * t62;
-        let t143 = t137 * t73;
-        let t144 = mu * (t142 * t117 - t143 * t118);
-        let t145 = -T::from_f64(1.5) * t55;
-        let t146 = sqrt_pen_wall_right
-            * (step_delta_wall_right * (T::from_f64(1.5) + t145) + t95);
-        let t147 = -(T::from_f64(1.5) * t82) + T::from_f64(1.5);
-        let t148 = -T::from_f64(1.5) * t122;
-        let t149 = sqrt_pen_wall_left * (step_delta_wall_left * t147 + t148);
-        let t150 = t131 * cos_theta;
-        let t151 = sqrt_pen_edge_right * t136;
-        let t152 = t96 + t151;
-        let t153 = t27 * t152;
-        let t154 = sin_theta * t97 + t57;
-        let t155 = cos_theta * t98 + t67;
-        let t156 = t77 * t124;
-        let t157 = t78 * t125;
-        let t158 = t157 * t100;
-        let t159 = t114 * t123;
-        let t160 = t62 * (t112 - t159);
-        let t161 = t160 * t38;
-        let t162 = t73 * (t75 - t156);
-        let t163 = t162 * t85;
-        let t164 = t161 + t163;
-        let t165 = hc_alpha * (t133 + t139);
-        let t166 = t106 * t52;
-        let t167 = k_wall * hc_alpha;
-        let t168 = hc_alpha * t120;
-        let t169 = t168 * t60;
-        let t170 = hc_alpha * (t133 * t117 - t139 * t118);
-        let t171 = t170 * mu;
-        let t172 = t171 * thetadot;
-        let t173 = rho_p * (sin_theta - T::from_f64(2.0) * t15);
-        let t174 = t55 * (t43 - t44 * t91);
-        let t175 = t174 * t52;
-        let t176 = t82 * (t50 - t51 * t92);
-        let t177 = slip_wall_right * t43;
-        let t178 = hc_alpha * t106;
-        let t179 = t178 * t53;
-        let t180 = t177 * t179;
-        let t181 = hc_alpha * (t133 * t60 + t139 * t70);
-        let t182 = t181 * sin_theta * k_edge;
-        let t183 = step_delta_wall_left * sqrt_pen_wall_left;
-        let t184 = t117 * t113;
-        let t185 = sqrt_pen_edge_left
-            * (t60 * t90 + t184 * mu * t62 * step_delta_edge_left);
-        let t186 = t118 * t76;
-        let t187 = sqrt_pen_edge_right
-            * (t70 * t136 + t186 * mu * t73 * step_delta_edge_right);
-        let t188 = mu * t41;
-        let t189 = t177 * t55;
-        let t190 = mu * t48;
-        let t191 = slip_wall_left * t50;
-        let t192 = t191 * t82;
-        let t193 = t145 + T::from_f64(1.5);
-        let t194 = step_delta_wall_right * sqrt_pen_wall_right;
-        let t195 = t194 * t53;
-        let t196 = t183 * t79;
-        let t197 = t196 * t147 + t158 * t131;
-        let t198 = t142 * t60;
-        let t199 = t143 * t70;
-        let t200 = hc_alpha * t125;
-        let t201 = t200 * t100;
-        let t202 = t162 * t76;
-        let t203 = t202 * t85;
-        let t204 = hc_alpha * (t184 * t133 + t186 * t139);
-        let t205 = t181 * t27;
-        let t206 = t161 * t113;
-        let t207 = t48 * t78;
-        let t208 = hc_alpha * t121;
-        let t209 = t208 * t70;
-        let t210 = t112 * t114;
-        let t211 = t75 * t77;
-        let t212 = t210 * t133 - t211 * t139;
-        let t213 = t55 * t43 * t44;
-        let t214 = t82 * t50 * t51;
-        let t215 = t210 * t142 - t211 * t143;
-        let t216 = hc_alpha * (mu * t212 + t133 * delta_rate_edge_left + t139 * t71)
-            - t115 + t116;
-        let t217 = t123 * (slip_edge_left * slip_edge_left * slip_edge_left);
-        let t218 = t62 * (-t217 + T::from_f64(2.0) * t117) * t38;
-        let t219 = t124 * (slip_edge_right * slip_edge_right * slip_edge_right);
-        let t220 = t73 * (-t219 + T::from_f64(2.0) * t118) * t85;
-        let t221 = t91 * (slip_wall_right * slip_wall_right * slip_wall_right);
-        let t222 = t92 * (slip_wall_left * slip_wall_left * slip_wall_left);
-        let t223 = t62 * t113;
-        let t224 = t73 * t76;
-        let t225 = t55 * t41;
-        let t226 = -(t130 * sin_theta) + t150 * t133;
-        let t227 = -(t138 * sin_theta) + t150 * t139;
-        let t228 = k_edge * t28;
-        let t229 = t105 + t33 - thetadot * t102;
-        let t230 = t133 * t229;
-        let t231 = -(t130 * t60) + t230 * hc_alpha;
-        let t232 = -(cos_theta * t97) + t108;
-        let t233 = cos_theta * (-t59 + thetadot * t154)
-            + sin_theta * (thetadot * t232 + t110);
-        let t234 = t105 + t33 - thetadot * t104;
-        let t235 = t139 * t234;
-        let t236 = -(t138 * t70) + t235 * hc_alpha;
-        let t237 = sin_theta * t98 + t64;
-        let t238 = -(cos_theta * (t66 + thetadot * t237))
-            + sin_theta * (thetadot * t155 + t69);
-        let t239 = t168 * t229;
-        let t240 = t208 * t234;
-        let t241 = t38 * (-(t160 * t233) + t239 * t117)
-            - t85 * (t162 * t238 + t240 * t118)
-            + T::from_f64(1.5) * (t198 * t117 - t199 * t118);
-        let t242 = T::from_f64(1.5) * (t96 * t60 + t151 * t70) + t231 + t236;
-        let t243 = t166 * t103;
-        let t244 = sin_theta * (cos_theta * (-t161 - t163) * mu + t165 * t27);
-        let t245 = t38 * (t160 * t113 + t169 * t117) - t85 * (t202 + t209 * t118);
-        let t246 = -(cos_theta * (t173 + t20)) + t22;
-        let t247 = -(cos_theta * (t173 + t46)) + t22;
-        let t248 = t178 * t103;
-        let t249 = t52 * (-(t174 * t246) + t248 * t177);
-        let t250 = -t176 * t247 + t201 * t191;
-        let t251 = t200 * t79;
-        let t252 = t191 * t251;
-        let t253 = t131 * mu;
-        let t254 = t38 * (step_delta_edge_left - t83 + t253 * t184 * t120);
-        let t255 = t85 * (-step_delta_edge_right + t86 + t253 * t186 * t121);
-        let t256 = t195 * t193 + t243 * t131;
-        let t257 = t113 * t233;
-        let t258 = t76 * t238;
-        let t259 = thetadot * (t115 - t116);
-        let t260 = t38 * t233;
-        let t261 = t85 * t238;
-        let t262 = t55 * t246;
-        let t263 = t82 * t247;
-        let t264 = t48 * t82;
+        let t126 = step_delta_edge_right * step_delta_edge_right;
+        let t127 = step_delta_edge_right * sqrt_pen_edge_right;
+        let t128 = t127 * (T::from_f64(1.5) - T::from_f64(1.5) * t66);
+        let t129 = t73 * t114;
+        let t130 = T::from_f64(2.0) * t122 * t129;
+        let t131 = t128 * t27 + t130;
+        let t132 = t119 * t56;
+        let t133 = t127 * t66;
+        let t134 = mu * (t132 * t110 - t133 * t111);
+        let t135 = T::from_f64(1.5) - T::from_f64(1.5) * t49;
+        let t136 = sqrt_pen_wall_right * (step_delta_wall_right * t135 + t85);
+        let t137 = t121 * cos_theta;
+        let t138 = sqrt_pen_edge_right * t126;
+        let t139 = t86 + t138;
+        let t140 = t27 * t139;
+        let t141 = sin_theta * t87 + t51;
+        let t142 = cos_theta * t88 + t61;
+        let t143 = t70 * t116;
+        let t144 = t107 * t115;
+        let t145 = t56 * (t105 - t144);
+        let t146 = t145 * t37;
+        let t147 = t66 * (t68 - t143);
+        let t148 = t147 * t73;
+        let t149 = t146 + t148;
+        let t150 = hc_alpha * (t123 + t129);
+        let t151 = t99 * t45;
+        let t152 = hc_alpha * t113;
+        let t153 = t152 * t54;
+        let t154 = hc_alpha * (t123 * t110 - t129 * t111);
+        let t155 = t154 * mu;
+        let t156 = t155 * thetadot;
+        let t157 = rho_p * (sin_theta - T::from_f64(2.0) * t15);
+        let t158 = hc_alpha * (t123 * t54 + t129 * t64);
+        let t159 = t158 * sin_theta * k_edge;
+        let t160 = t110 * t106;
+        let t161 = sqrt_pen_edge_left
+            * (t54 * t82 + t160 * mu * t56 * step_delta_edge_left);
+        let t162 = t111 * t69;
+        let t163 = sqrt_pen_edge_right
+            * (t64 * t126 + t162 * mu * t66 * step_delta_edge_right);
+        let t164 = t132 * t54;
+        let t165 = t133 * t64;
+        let t166 = t147 * t69;
+        let t167 = t166 * t73;
+        let t168 = hc_alpha * (t160 * t123 + t162 * t129);
+        let t169 = t158 * t27;
+        let t170 = mu * t41;
+        let t171 = slip_wall_left * t43;
+        let t172 = t146 * t106;
+        let t173 = hc_alpha * t114;
+        let t174 = t173 * t64;
+        let t175 = t105 * t107;
+        let t176 = t68 * t70;
+        let t177 = t175 * t123 - t176 * t129;
+        let t178 = t175 * t132 - t176 * t133;
+        let t179 = hc_alpha
+            * (mu * t177 + t123 * delta_rate_edge_left
+                + t129 * neg_delta_rate_edge_right) - t108 + t109;
+        let t180 = t43 * t44;
+        let t181 = t115 * (slip_edge_left * slip_edge_left * slip_edge_left);
+        let t182 = t56 * (T::from_f64(2.0) * t110 - t181) * t37;
+        let t183 = t116 * (slip_edge_right * slip_edge_right * slip_edge_right);
+        let t184 = t66 * (T::from_f64(2.0) * t111 - t183) * t73;
+        let t185 = t83 * (slip_wall_left * slip_wall_left * slip_wall_left);
+        let t186 = t56 * t106;
+        let t187 = t66 * t69;
+        let t188 = hc_alpha * t99;
+        let t189 = t137 * t123 - t120 * sin_theta;
+        let t190 = t137 * t129 - t128 * sin_theta;
+        let t191 = k_edge * t28;
+        let t192 = t101 - cos_theta * t87;
+        let t193 = cos_theta * (thetadot * t141 - t53)
+            + sin_theta * (thetadot * t192 + t103);
+        let t194 = t98 + t33 - thetadot * t90;
+        let t195 = t129 * t194;
+        let t196 = t195 * hc_alpha - t128 * t64;
+        let t197 = sin_theta * t88 + t58;
+        let t198 = sin_theta * (thetadot * t142 + t63)
+            - cos_theta * (t60 + thetadot * t197);
+        let t199 = t173 * t194;
+        let t200 = sin_theta * (cos_theta * (-t146 - t148) * mu + t150 * t27);
+        let t201 = t37 * (t145 * t106 + t153 * t110) - t73 * (t166 + t174 * t111);
+        let t202 = t23 - cos_theta * (t157 + t21);
+        let t203 = t23 - cos_theta * (t157 + t40);
+        let t204 = t121 * mu;
+        let t205 = t37 * (step_delta_edge_left - t71 + t204 * t160 * t113);
+        let t206 = t73 * (-step_delta_edge_right + t74 + t204 * t162 * t114);
+        let t207 = t106 * t193;
+        let t208 = t69 * t198;
+        let t209 = thetadot * (t108 - t109);
+        let t210 = t37 * t193;
+        let t211 = t73 * t198;
+        let sqrt_pen_wall_left = pen_wall_left.sqrt();
+        let t212 = step_delta_wall_left * step_delta_wall_left;
+        let t213 = t79.step();
+        let t214 = t78 * t78;
+        let t215 = T::from_f64(1.5) - T::from_f64(1.5) * t80;
+        let t216 = -T::from_f64(1.5) * t212;
+        let t217 = sqrt_pen_wall_left * (step_delta_wall_left * t215 + t216);
+        let t218 = t77 * t213;
+        let t219 = t218 * t96;
+        let t220 = k_wall * hc_alpha;
+        let t221 = t49 * (t92 - t93 * t94);
+        let t222 = t221 * t45;
+        let t223 = t80 * (t43 - t44 * t83);
+        let t224 = slip_wall_right * t92;
+        let t225 = t188 * t47;
+        let t226 = t224 * t225;
+        let t227 = step_delta_wall_left * sqrt_pen_wall_left;
+        let t228 = mu * t34;
+        let t229 = t224 * t49;
+        let t230 = t171 * t80;
+        let t231 = step_delta_wall_right * sqrt_pen_wall_right;
+        let t232 = t231 * t47;
+        let t233 = t227 * t78;
+        let t234 = t233 * t215 + t219 * t121;
+        let t235 = hc_alpha * t213;
+        let t236 = t235 * t96;
+        let t237 = t41 * t77;
+        let t238 = t49 * t92 * t93;
+        let t239 = t180 * t80;
+        let t240 = t94 * (slip_wall_right * slip_wall_right * slip_wall_right);
+        let t241 = t49 * t34;
+        let t242 = t98 + t33 - thetadot * t97;
+        let t243 = t123 * t242;
+        let t244 = t243 * hc_alpha - t120 * t54;
+        let t245 = t18 - t95;
+        let t246 = t152 * t242;
+        let t247 = t37 * (t246 * t110 - t145 * t193) - t73 * (t147 * t198 + t199 * t111)
+            + T::from_f64(1.5) * (t164 * t110 - t165 * t111);
+        let t248 = T::from_f64(1.5) * (t86 * t54 + t138 * t64) + t244 + t196;
+        let t249 = t151 * t245;
+        let t250 = t188 * t245;
+        let t251 = t45 * (t250 * t224 - t221 * t202);
+        let t252 = t236 * t171 - t223 * t203;
+        let t253 = t235 * t78;
+        let t254 = t171 * t253;
+        let t255 = t232 * t135 + t249 * t121;
+        let t256 = t49 * t202;
+        let t257 = t80 * t203;
+        let t258 = t41 * t80;
         SMatrix::<
             T,
             8,
@@ -570,132 +569,131 @@ pub mod compliant_peg {
                 T::from_f64(0.0),
                 t28
                     * (k_edge
-                        * (t27 * (T::from_f64(1.5) * t144 * sin_theta + t135 + t141)
-                            - T::from_f64(1.5) * t152 * t31
-                            - T::from_f64(2.0) * t172 * (t15 * sin_theta))
-                        + k_wall * (t146 + t149)),
-                t228
-                    * (sin_theta * (T::from_f64(1.5) * t153 - t172 * cos_theta)
-                        + t27 * (t226 + t227) - T::from_f64(1.5) * t144 * t30),
+                        * (t27 * (T::from_f64(1.5) * t134 * sin_theta + t125 + t131)
+                            - T::from_f64(1.5) * t139 * t31
+                            - T::from_f64(2.0) * t156 * (t15 * sin_theta))
+                        + k_wall * (t136 + t217)),
+                t191
+                    * (sin_theta * (T::from_f64(1.5) * t140 - t156 * cos_theta)
+                        + t27 * (t189 + t190) - T::from_f64(1.5) * t134 * t30),
                 t28
                     * (k_edge
-                        * (-(mu * (sin_theta * t241 + cos_theta * t119)) + t27 * t242
-                            + t15 * (-(T::from_f64(2.0) * t88) - T::from_f64(2.0) * t89))
-                        + k_wall * (t146 * t53 + t149 * t79 + t131 * (t243 + t158)) + t3
+                        * (-(mu * (sin_theta * t247 + cos_theta * t112)) + t27 * t248
+                            + t15 * (-(T::from_f64(2.0) * t75) - T::from_f64(2.0) * t76))
+                        + k_wall * (t136 * t47 + t217 * t78 + t121 * (t249 + t219)) + t3
                         + t4),
                 -t28
-                    * (k_edge * (mu * (t30 * t164 - sin_theta * t27 * t170) + t165 * t31)
-                        + t167 * (t166 + t157)),
-                t228 * (t244 - t171 * t30),
+                    * (k_edge * (mu * (t30 * t149 - sin_theta * t27 * t154) + t150 * t31)
+                        + t220 * (t151 + t218)),
+                t191 * (t200 - t155 * t30),
                 -t28
-                    * (k_edge * (sin_theta * t245 * mu - t205)
-                        + t167 * (t166 * t53 + t157 * t79)),
+                    * (k_edge * (sin_theta * t201 * mu - t169)
+                        + t220 * (t151 * t47 + t218 * t78)),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 -t28
                     * (k_edge
-                        * (sin_theta * (-(T::from_f64(1.5) * t153) + t135 + t141)
+                        * (sin_theta * (-(T::from_f64(1.5) * t140) + t125 + t131)
                             - cos_theta
-                                * (-(t117 * (-(T::from_f64(1.5) * t142 * t27) + t134))
-                                    + t118 * (-(T::from_f64(1.5) * t143 * t27) + t140)) * mu)
-                        + T::from_f64(1.5) * (k_wall * (t189 * t194 - t192 * t183))
+                                * (t111 * (t130 - T::from_f64(1.5) * t133 * t27)
+                                    - t110 * (t124 - T::from_f64(1.5) * t132 * t27)) * mu)
+                        + T::from_f64(1.5) * (k_wall * (t229 * t231 - t230 * t227))
                             * mu),
-                -t228
-                    * (sin_theta * (T::from_f64(1.5) * t144 * cos_theta + t226 + t227)
-                        + T::from_f64(1.5) * t152 * t30 + t172 * t32),
+                -t191
+                    * (sin_theta * (T::from_f64(1.5) * t134 * cos_theta + t189 + t190)
+                        + T::from_f64(1.5) * t139 * t30 + t156 * t32),
                 -t28
                     * (-(mu
-                        * (k_edge * (-(cos_theta * t241) + sin_theta * t119)
+                        * (k_edge * (sin_theta * t112 - cos_theta * t247)
                             - k_wall
-                                * (thetadot * (-t249 + t78 * t250)
-                                    + T::from_f64(1.5) * (t189 * t195 - t192 * t196))))
-                        + k_edge * (cos_theta * (t88 + t89) + sin_theta * t242) + t0
+                                * (thetadot * (t77 * t252 - t251)
+                                    + T::from_f64(1.5) * (t229 * t232 - t230 * t233))))
+                        + k_edge * (cos_theta * (t75 + t76) + sin_theta * t248) + t0
                         + t1),
                 t28
-                    * (k_edge * (t244 + cos_theta * t27 * t171)
-                        - t167 * (t166 * t177 - t157 * t191) * mu),
+                    * (k_edge * (t200 + cos_theta * t27 * t155)
+                        - t220 * (t151 * t224 - t218 * t171) * mu),
                 -t28
                     * (mu
-                        * (k_edge * (t32 * t164 + sin_theta * cos_theta * t170)
-                            + k_wall * (t175 + t176 * t78)) + t165 * t30 * k_edge),
+                        * (k_edge * (t32 * t149 + sin_theta * cos_theta * t154)
+                            + k_wall * (t222 + t223 * t77)) + t150 * t30 * k_edge),
                 t28
                     * (mu
-                        * (-(cos_theta * t245 * k_edge)
-                            + k_wall
-                                * (-(t52 * (-(t174 * t41) + t180))
-                                    + t78 * (-(t176 * t48) + t252))) - t182),
+                        * (k_wall
+                            * (t77 * (t254 - t223 * t41) - t45 * (t226 - t221 * t34))
+                            - cos_theta * t201 * k_edge) - t159),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 t29
                     * (k_edge
-                        * (t15 * (-(T::from_f64(2.0) * t254) - T::from_f64(2.0) * t255)
-                            + t27 * (T::from_f64(1.5) * t185 + T::from_f64(1.5) * t187)
-                            - t60 * t135 - t70 * t141)
+                        * (t15 * (-(T::from_f64(2.0) * t205) - T::from_f64(2.0) * t206)
+                            + t27 * (T::from_f64(1.5) * t161 + T::from_f64(1.5) * t163)
+                            - t54 * t125 - t64 * t131)
                         + k_wall
                             * (sqrt_pen_wall_right
-                                * (t53 * (t95 + t193 * step_delta_wall_right)
-                                    + T::from_f64(1.5) * t188 * t189 * step_delta_wall_right)
+                                * (t47 * (t85 + t135 * step_delta_wall_right)
+                                    + T::from_f64(1.5) * t228 * t229 * step_delta_wall_right)
                                 + sqrt_pen_wall_left
-                                    * (t79 * (t148 + t147 * step_delta_wall_left)
-                                        + T::from_f64(1.5) * t190 * t192 * step_delta_wall_left))),
+                                    * (t78 * (t216 + t215 * step_delta_wall_left)
+                                        + T::from_f64(1.5) * t170 * t230 * step_delta_wall_left))),
                 -(k_edge
-                    * (cos_theta * (t254 + t255)
+                    * (cos_theta * (t205 + t206)
                         - sin_theta
-                            * (-(T::from_f64(1.5) * t185) - T::from_f64(1.5) * t187)
-                        + t60 * t226 + t70 * t227)) * t29,
+                            * (-(T::from_f64(1.5) * t161) - T::from_f64(1.5) * t163)
+                        + t54 * t189 + t64 * t190)) * t29,
                 -t29
                     * (mu
                         * (k_edge
-                            * (t38
-                                * (-(t62
-                                    * (t112
-                                        * (t257
-                                            + slip_edge_left
-                                                * (-(cos_theta * (t58 - t154)) + sin_theta * (t232 + t109)))
-                                        - t159 * t257)) + t239 * t184)
-                                + t85
-                                    * (t73
-                                        * (t75
-                                            * (t258
+                            * (t37
+                                * (t246 * t160
+                                    - t56
+                                        * (t105
+                                            * (t207
+                                                + slip_edge_left
+                                                    * (sin_theta * (t192 + t102) - cos_theta * (t52 - t141)))
+                                            - t144 * t207))
+                                + t73
+                                    * (t66
+                                        * (t68
+                                            * (t208
                                                 + slip_edge_right
-                                                    * (-(cos_theta * (t65 - t237)) + sin_theta * (-t155 + t68)))
-                                            - t156 * t258) + t240 * t186)
-                                + T::from_f64(1.5) * (t198 * t184 + t199 * t186))
+                                                    * (sin_theta * (t62 - t142) - cos_theta * (t59 - t197)))
+                                            - t143 * t208) + t199 * t162)
+                                + T::from_f64(1.5) * (t164 * t160 + t165 * t162))
                             + k_wall
-                                * (thetadot * (t249 * t41 + t207 * t250)
-                                    - t189 * (-(t52 * t246) + T::from_f64(1.5) * t195 * t41)
-                                    - t192 * (t78 * t247 + T::from_f64(1.5) * t196 * t48)))
+                                * (thetadot * (t251 * t34 + t237 * t252)
+                                    - t229 * (T::from_f64(1.5) * t232 * t34 - t45 * t202)
+                                    - t230 * (t77 * t203 + T::from_f64(1.5) * t233 * t41)))
                         + k_edge
-                            * (-(t88 * t102) - t89 * t104
-                                + T::from_f64(1.5) * (t96 * t126 + t151 * t127) + t60 * t231
-                                + t70 * t236)
+                            * (-(t75 * t97) - t76 * t90
+                                + T::from_f64(1.5) * (t86 * t117 + t138 * t118) + t54 * t244
+                                + t64 * t196)
                         + k_wall
-                            * (-((step_delta_wall_right - t84) * t103 * t52)
-                                + (step_delta_wall_left - t87) * t100 * t78
+                            * (-((step_delta_wall_right - t72) * t245 * t45)
+                                + (step_delta_wall_left - t81) * t96 * t77
                                 + T::from_f64(1.5)
-                                    * (sqrt_pen_wall_right * t94 * t107
-                                        + sqrt_pen_wall_left * t122 * t128) - t53 * t256
-                                - t79 * t197)),
+                                    * (sqrt_pen_wall_right * t84 * t100
+                                        + sqrt_pen_wall_left * t212 * t214) - t47 * t255
+                                - t78 * t234)),
                 t29
-                    * (k_edge * (mu * (sin_theta * (-t206 + t203) + t204 * t27) + t205)
-                        + t167
-                            * (t166 * (-t53 + t188 * t177)
-                                + t157 * (-t79 + t190 * t191))),
+                    * (k_edge * (mu * (sin_theta * (t167 - t172) + t168 * t27) + t169)
+                        + t220
+                            * (t151 * (t228 * t224 - t47) + t218 * (t170 * t171 - t78))),
                 -t29
                     * (mu
-                        * (k_edge * (cos_theta * (t206 - t203) + t204 * sin_theta)
-                            + k_wall * (-(t175 * t41) + t207 * t176)) + t182),
+                        * (k_edge * (cos_theta * (t172 - t167) + t168 * sin_theta)
+                            + k_wall * (t237 * t223 - t222 * t34)) + t159),
                 -t29
                     * (mu
                         * (k_edge
-                            * (t38 * (t160 * (t113 * t113) + t169 * t184)
-                                + t85 * (t162 * (t76 * t76) + t209 * t186))
+                            * (t37 * (t145 * (t106 * t106) + t153 * t160)
+                                + t73 * (t147 * (t69 * t69) + t174 * t162))
                             - k_wall
-                                * (t52 * (-(t174 * (t35 * t35)) + t180 * t41)
-                                    + t78 * (-(t176 * (t93 * t93)) + t252 * t48)))
+                                * (t45 * (t226 * t34 - t221 * (t34 * t34))
+                                    + t77 * (t254 * t41 - t223 * (t41 * t41))))
                         + hc_alpha
-                            * (k_edge * (t133 * t126 + t139 * t127)
-                                + k_wall * (t166 * t107 + t157 * t128))),
+                            * (k_edge * (t123 * t117 + t129 * t118)
+                                + k_wall * (t151 * t100 + t218 * t214))),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
@@ -708,81 +706,86 @@ pub mod compliant_peg {
                 T::from_f64(0.0),
                 k_edge
                     * (mu
-                        * (-(T::from_f64(1.5) * t215 * t27)
-                            + T::from_f64(2.0) * (t15 * t212) * t131)
-                        - T::from_f64(2.0) * t259 * t15 + delta_rate_edge_left * t135
-                        + t71 * t141)
+                        * (T::from_f64(2.0) * (t15 * t177) * t121
+                            - T::from_f64(1.5) * t178 * t27)
+                        - T::from_f64(2.0) * t209 * t15 + delta_rate_edge_left * t125
+                        + neg_delta_rate_edge_right * t131)
                     - k_wall
-                        * (-(T::from_f64(1.5) * (t213 * t194 - t214 * t183) * mu)
-                            + t194 * t193 * delta_rate_wall_right + t183 * t147 * t80),
+                        * (-(T::from_f64(1.5) * (t238 * t231 - t239 * t227) * mu)
+                            + t231 * t135 * delta_rate_wall_right
+                            + t227 * t215 * neg_delta_rate_wall_left),
                 k_edge
                     * (mu
-                        * (T::from_f64(1.5) * t215 * sin_theta + cos_theta * t212 * t131)
-                        - t259 * cos_theta + delta_rate_edge_left * t226 + t71 * t227),
+                        * (T::from_f64(1.5) * t178 * sin_theta + cos_theta * t177 * t121)
+                        - t209 * cos_theta + delta_rate_edge_left * t189
+                        + neg_delta_rate_edge_right * t190),
                 mu
                     * (k_edge
-                        * (t62
-                            * (-(t112
-                                * (-(T::from_f64(1.5) * t129 * t60 * t114)
-                                    + T::from_f64(2.0) * t260 * slip_edge_left)) + t260 * t217)
-                            - t73
-                                * (t75
-                                    * (T::from_f64(1.5) * t137 * t70 * t77
-                                        + T::from_f64(2.0) * t261 * slip_edge_right) - t261 * t219)
-                            + hc_alpha * (t230 * t210 - t235 * t211))
+                        * (t56
+                            * (t210 * t181
+                                - t105
+                                    * (T::from_f64(2.0) * t210 * slip_edge_left
+                                        - T::from_f64(1.5) * t119 * t54 * t107))
+                            - t66
+                                * (t68
+                                    * (T::from_f64(1.5) * t127 * t64 * t70
+                                        + T::from_f64(2.0) * t211 * slip_edge_right) - t211 * t183)
+                            + hc_alpha * (t243 * t175 - t195 * t176))
                         + k_wall
                             * (thetadot
-                                * (-(t52
+                                * (t77
                                     * (t43
-                                        * (t248 * t44 - T::from_f64(2.0) * t262 * slip_wall_right)
-                                        + t262 * t221))
-                                    + t78
-                                        * (t50
-                                            * (t201 * t51 - T::from_f64(2.0) * t263 * slip_wall_left)
-                                            + t263 * t222))
-                                + T::from_f64(1.5) * (t213 * t195 - t214 * t196)))
+                                        * (t236 * t44 - T::from_f64(2.0) * t257 * slip_wall_left)
+                                        + t257 * t185)
+                                    - t45
+                                        * (t92
+                                            * (t250 * t93 - T::from_f64(2.0) * t256 * slip_wall_right)
+                                            + t256 * t240))
+                                + T::from_f64(1.5) * (t238 * t232 - t239 * t233)))
                     + k_edge
-                        * (-(t115 * t229) + delta_rate_edge_left * t231 + t116 * t234
-                            + t71 * t236)
+                        * (-(t108 * t242) + delta_rate_edge_left * t244 + t109 * t194
+                            + neg_delta_rate_edge_right * t196)
                     - k_wall
-                        * (thetadot * (-(t52 * t84 * t103) + t78 * t87 * t100)
-                            + delta_rate_wall_right * t256 + t80 * t197),
-                -(k_edge * (t27 * t216 + sin_theta * (-t218 - t220) * mu))
+                        * (thetadot * (t77 * t81 * t96 - t45 * t72 * t245)
+                            + delta_rate_wall_right * t255
+                            + neg_delta_rate_wall_left * t234),
+                -(k_edge * (t27 * t179 + sin_theta * (-t182 - t184) * mu))
                     - k_wall
-                        * (t52
-                            * (-(t178 * (mu * t43 * t44 + delta_rate_wall_right)) - t55
+                        * (t45
+                            * (-(t188 * (mu * t92 * t93 + delta_rate_wall_right)) - t49
                                 + T::from_f64(1.0))
-                            + t78
-                                * (t200 * (mu * t50 * t51 - t80) - T::from_f64(1.0) + t82)),
-                k_edge * (sin_theta * t216 + cos_theta * (t218 + t220) * mu)
+                            + t77
+                                * (t235 * (t180 * mu - neg_delta_rate_wall_left)
+                                    - T::from_f64(1.0) + t80)),
+                k_edge * (sin_theta * t179 + cos_theta * (t182 + t184) * mu)
                     + k_wall
-                        * (t55 * (-t221 + T::from_f64(2.0) * t177) * t52
-                            + t82 * (-t222 + T::from_f64(2.0) * t191) * t78) * mu,
+                        * (t49 * (T::from_f64(2.0) * t224 - t240) * t45
+                            + t80 * (T::from_f64(2.0) * t171 - t185) * t77) * mu,
                 -(mu
                     * (k_edge
-                        * (t38
-                            * (-(t112
-                                * (t169 * t114 + T::from_f64(2.0) * t223 * slip_edge_left))
-                                + t223 * t217)
-                            - t85
-                                * (-(t75
-                                    * (t209 * t77 + T::from_f64(2.0) * t224 * slip_edge_right))
-                                    + t224 * t219))
+                        * (t37
+                            * (t186 * t181
+                                - t105
+                                    * (t153 * t107 + T::from_f64(2.0) * t186 * slip_edge_left))
+                            - t73
+                                * (t187 * t183
+                                    - t68
+                                        * (t174 * t70 + T::from_f64(2.0) * t187 * slip_edge_right)))
                         + k_wall
-                            * (-(t52
+                            * (t77
                                 * (t43
-                                    * (t179 * t44 - T::from_f64(2.0) * t225 * slip_wall_right)
-                                    + t225 * t221))
-                                + t78
-                                    * (t50
-                                        * (t251 * t51 - T::from_f64(2.0) * t264 * slip_wall_left)
-                                        + t264 * t222))))
+                                    * (t253 * t44 - T::from_f64(2.0) * t258 * slip_wall_left)
+                                    + t258 * t185)
+                                - t45
+                                    * (t92
+                                        * (t225 * t93 - T::from_f64(2.0) * t241 * slip_wall_right)
+                                        + t241 * t240))))
                     + k_edge
-                        * (t38 * (-t83 + t168 * delta_rate_edge_left) * t60
-                            + t85 * (t86 + t208 * t71) * t70)
+                        * (t37 * (t152 * delta_rate_edge_left - t71) * t54
+                            + t73 * (t74 + t173 * neg_delta_rate_edge_right) * t64)
                     + k_wall
-                        * (t52 * (-t84 + t178 * delta_rate_wall_right) * t53
-                            + t78 * (t87 + t200 * t80) * t79),
+                        * (t45 * (t188 * delta_rate_wall_right - t72) * t47
+                            + t77 * (t81 + t235 * neg_delta_rate_wall_left) * t78),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
             ],
@@ -804,7 +807,7 @@ pub mod compliant_peg {
     /// - `p0`: vector of 4
     ///
     /// # Cost
-    /// 60 add/sub, 112 mul, 8 div, 4 sqrt, 10 transcendental, 8 branches; 64 `let`s.
+    /// 59 add/sub, 109 mul, 8 div, 4 sqrt, 10 transcendental, 8 branches; 65 `let`s.
     #[inline]
     pub fn contacts<T: Real>(
         y: &SVector<T, 8>,
@@ -855,62 +858,62 @@ pub mod compliant_peg {
         let t11 = l_c - rho_p;
         let t12 = r - rho_p;
         let t13 = sin_theta * t11;
-        let t14 = rho_p * sin_theta;
-        let t15 = cos_theta * (r - T::from_f64(2.0) * rho_p * t5);
-        let t16 = cos_theta * t11;
-        let t17 = T::from_f64(1.0) / (e_star * wall_sum);
-        let t18 = rho_h + T::from_f64(0.5) * d - x;
-        let t19 = -rho_h + z;
-        let t20 = sin_theta * t19;
-        let delta_edge_left = r + t0 - x + t20 - T::from_f64(2.0) * t1 * t5;
+        let t14 = -T::from_f64(2.0) * t5 * t12;
+        let t15 = rho_p * sin_theta;
+        let t16 = cos_theta * (r - T::from_f64(2.0) * rho_p * t5);
+        let t17 = cos_theta * t11;
+        let t18 = T::from_f64(1.0) / (e_star * wall_sum);
+        let t19 = rho_h + T::from_f64(0.5) * d - x;
+        let t20 = z - rho_h;
+        let t21 = sin_theta * t20;
+        let delta_edge_left = r + t0 - x + t21 - T::from_f64(2.0) * t1 * t5;
         let pen_edge_left = delta_edge_left.max0();
-        let t21 = pen_edge_left * pen_edge_left.sqrt();
-        let t22 = -xdot * (T::from_f64(1.0) - T::from_f64(2.0) * t5);
-        let t23 = cos_theta * t19;
-        let slip_wall_right = zdot - thetadot * (sin_theta * (l_c - rho_p + t14) + t15);
-        let t24 = v_s.hypot(slip_wall_right);
-        let t25 = -rho_p + r;
-        let slip_wall_left = zdot + thetadot * (sin_theta * (-l_c + rho_p + t14) + t15);
+        let t22 = pen_edge_left * pen_edge_left.sqrt();
+        let t23 = -xdot * (T::from_f64(1.0) - T::from_f64(2.0) * t5);
+        let t24 = cos_theta * t20;
+        let slip_wall_right = zdot - thetadot * (sin_theta * (l_c - rho_p + t15) + t16);
+        let t25 = v_s.hypot(slip_wall_right);
+        let slip_wall_left = zdot + thetadot * (sin_theta * (-l_c + rho_p + t15) + t16);
         let t26 = v_s.hypot(slip_wall_left);
-        let delta_wall_right = r + t0 + x + t13 - T::from_f64(2.0) * t5 * t12;
+        let delta_wall_right = r + t0 + x + t13 + t14;
         let pen_wall_right = delta_wall_right.max0();
         let t27 = pen_wall_right * pen_wall_right.sqrt();
-        let delta_rate_wall_right = xdot
-            + thetadot * (t16 - T::from_f64(2.0) * t9 * t12);
-        let t28 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
-        let t29 = sin_theta * t1 - t23;
-        let slip_edge_left = sin_theta * (xdot + thetadot * (cos_theta * t29 + t6))
-            + cos_theta * (zdot + thetadot * (-(sin_theta * t29) + t7));
-        let delta_rate_edge_left = t22 + t8
-            + thetadot * (t23 - T::from_f64(2.0) * t9 * t1);
-        let t30 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
-        let t31 = v_s.hypot(slip_edge_left);
-        let t32 = -t23 + sin_theta * t18;
-        let slip_edge_right = sin_theta * (xdot - thetadot * (t6 - cos_theta * t32))
-            + cos_theta * (zdot - thetadot * (t7 + sin_theta * t32));
-        let t33 = (T::from_f64(1.0)
-            - hc_alpha * (t22 + t8 + thetadot * (t23 - T::from_f64(2.0) * t9 * t18)))
+        let t28 = t9 * t12;
+        let delta_rate_wall_right = xdot + thetadot * (t17 - T::from_f64(2.0) * t28);
+        let t29 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
+        let t30 = sin_theta * t1 - t24;
+        let slip_edge_left = sin_theta * (xdot + thetadot * (cos_theta * t30 + t6))
+            + cos_theta * (zdot + thetadot * (t7 - sin_theta * t30));
+        let delta_rate_edge_left = t23 + t8
+            + thetadot * (t24 - T::from_f64(2.0) * t9 * t1);
+        let t31 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
+        let t32 = v_s.hypot(slip_edge_left);
+        let t33 = sin_theta * t19 - t24;
+        let slip_edge_right = sin_theta * (xdot - thetadot * (t6 - cos_theta * t33))
+            + cos_theta * (zdot - thetadot * (t7 + sin_theta * t33));
+        let t34 = (T::from_f64(1.0)
+            - hc_alpha * (t23 + t8 + thetadot * (t24 - T::from_f64(2.0) * t9 * t19)))
             .max0();
-        let t34 = v_s.hypot(slip_edge_right);
-        let delta_wall_left = r + t0 - x - t13 - T::from_f64(2.0) * t5 * t25;
-        let pen_wall_left = delta_wall_left.max0();
-        let t35 = pen_wall_left * pen_wall_left.sqrt();
-        let t36 = (T::from_f64(1.0)
-            - hc_alpha * (xdot + thetadot * (t16 + T::from_f64(2.0) * t9 * t25)))
-            .max0();
-        let delta_edge_right = r + t0 + x - t20 + T::from_f64(2.0) * t5 * t18;
+        let t35 = v_s.hypot(slip_edge_right);
+        let delta_edge_right = r + t0 + x - t21 + T::from_f64(2.0) * t5 * t19;
         let pen_edge_right = delta_edge_right.max0();
-        let t37 = pen_edge_right * pen_edge_right.sqrt();
-        let normal_edge_left = k_edge * t21 * t30;
-        let normal_wall_left = k_wall * t35 * t36;
-        let normal_wall_right = k_wall * t28 * t27;
-        let t38 = (T::from_f64(1.5) * t10 * normal_edge_left).cbrt();
-        let t39 = e_star * edge_sum * (T::from_f64(1.0) / (edge_ma * edge_mb));
-        let t40 = (T::from_f64(1.5) * t17 * normal_wall_left).cbrt();
-        let t41 = e_star * wall_sum * (T::from_f64(1.0) / (wall_ma * wall_mb));
-        let t42 = (T::from_f64(1.5) * t17 * normal_wall_right).cbrt();
-        let normal_edge_right = k_edge * t33 * t37;
+        let t36 = pen_edge_right * pen_edge_right.sqrt();
+        let delta_wall_left = r + t0 - x - t13 + t14;
+        let pen_wall_left = delta_wall_left.max0();
+        let t37 = pen_wall_left * pen_wall_left.sqrt();
+        let t38 = (T::from_f64(1.0)
+            - hc_alpha * (xdot + thetadot * (t17 + T::from_f64(2.0) * t28)))
+            .max0();
+        let normal_edge_left = k_edge * t22 * t31;
+        let normal_wall_right = k_wall * t29 * t27;
+        let t39 = (T::from_f64(1.5) * t10 * normal_edge_left).cbrt();
+        let t40 = e_star * edge_sum * (T::from_f64(1.0) / (edge_ma * edge_mb));
+        let t41 = (T::from_f64(1.5) * t18 * normal_wall_right).cbrt();
+        let t42 = e_star * wall_sum * (T::from_f64(1.0) / (wall_ma * wall_mb));
+        let normal_edge_right = k_edge * t34 * t36;
         let t43 = (T::from_f64(1.5) * t10 * normal_edge_right).cbrt();
+        let normal_wall_left = k_wall * t37 * t38;
+        let t44 = (T::from_f64(1.5) * t18 * normal_wall_left).cbrt();
         let normal = Vector4::new(
             normal_edge_left,
             normal_wall_right,
@@ -918,9 +921,9 @@ pub mod compliant_peg {
             normal_wall_left,
         );
         let friction = Vector4::new(
-            -normal_edge_left * mu * slip_edge_left / t31,
-            -normal_wall_right * mu * slip_wall_right / t24,
-            -normal_edge_right * mu * slip_edge_right / t34,
+            -normal_edge_left * mu * slip_edge_left / t32,
+            -normal_wall_right * mu * slip_wall_right / t25,
+            -normal_edge_right * mu * slip_edge_right / t35,
             -normal_wall_left * mu * slip_wall_left / t26,
         );
         let delta = Vector4::new(
@@ -935,13 +938,13 @@ pub mod compliant_peg {
             slip_edge_right,
             slip_wall_left,
         );
-        let a = Vector4::new(edge_ma * t38, wall_ma * t42, edge_ma * t43, wall_ma * t40);
-        let b = Vector4::new(edge_mb * t38, wall_mb * t42, edge_mb * t43, wall_mb * t40);
+        let a = Vector4::new(edge_ma * t39, wall_ma * t41, edge_ma * t43, wall_ma * t44);
+        let b = Vector4::new(edge_mb * t39, wall_mb * t41, edge_mb * t43, wall_mb * t44);
         let p0 = Vector4::new(
-            T::from_f64(0.3183098861837907) * t39 * t38,
-            T::from_f64(0.3183098861837907) * t41 * t42,
-            T::from_f64(0.3183098861837907) * t39 * t43,
-            T::from_f64(0.3183098861837907) * t41 * t40,
+            T::from_f64(0.3183098861837907) * t40 * t39,
+            T::from_f64(0.3183098861837907) * t42 * t41,
+            T::from_f64(0.3183098861837907) * t40 * t43,
+            T::from_f64(0.3183098861837907) * t42 * t44,
         );
         (normal, friction, delta, slip, a, b, p0)
     }
@@ -957,7 +960,7 @@ pub mod compliant_peg {
     /// - `depth`: scalar
     ///
     /// # Cost
-    /// 30 add/sub, 25 mul, 0 div, 0 sqrt, 6 transcendental, 4 branches; 19 `let`s.
+    /// 29 add/sub, 23 mul, 0 div, 0 sqrt, 6 transcendental, 4 branches; 20 `let`s.
     #[inline]
     pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> (T, T, T) {
         let x = y[0];
@@ -980,25 +983,26 @@ pub mod compliant_peg {
         let t1 = (T::from_f64(0.5) * theta).sin();
         let t2 = t1 * t1;
         let t3 = sin_theta * (l_c - rho_p);
-        let t4 = sin_theta * (-rho_h + z);
-        let delta_edge_left = r + t0 - x + t4
+        let t4 = -T::from_f64(2.0) * t2 * (r - rho_p);
+        let t5 = sin_theta * (z - rho_h);
+        let delta_edge_left = r + t0 - x + t5
             - T::from_f64(2.0) * (-rho_h + t0 - x) * t2;
         let pen_edge_left = delta_edge_left.max0();
-        let delta_wall_right = r + t0 + x + t3 - T::from_f64(2.0) * t2 * (r - rho_p);
+        let delta_wall_right = r + t0 + x + t3 + t4;
         let pen_wall_right = delta_wall_right.max0();
-        let delta_wall_left = r + t0 - x - t3 - T::from_f64(2.0) * t2 * (-rho_p + r);
-        let pen_wall_left = delta_wall_left.max0();
-        let delta_edge_right = r + t0 + x - t4
+        let delta_edge_right = r + t0 + x - t5
             + T::from_f64(2.0) * t2 * (rho_h + T::from_f64(0.5) * d - x);
         let pen_edge_right = delta_edge_right.max0();
-        let t5 = pen_edge_left.powf(T::from_f64(2.5));
-        let t6 = pen_wall_right.powf(T::from_f64(2.5));
-        let t7 = pen_wall_left.powf(T::from_f64(2.5));
+        let delta_wall_left = r + t0 - x - t3 + t4;
+        let pen_wall_left = delta_wall_left.max0();
+        let t6 = pen_edge_left.powf(T::from_f64(2.5));
+        let t7 = pen_wall_right.powf(T::from_f64(2.5));
         let t8 = pen_edge_right.powf(T::from_f64(2.5));
+        let t9 = pen_wall_left.powf(T::from_f64(2.5));
         let kinetic = T::from_f64(0.5)
             * (m * (xdot * xdot + zdot * zdot) + j * (thetadot * thetadot));
-        let potential = T::from_f64(0.4) * (t5 + t8) * k_edge
-            + T::from_f64(0.4) * (t6 + t7) * k_wall;
+        let potential = T::from_f64(0.4) * (t6 + t8) * k_edge
+            + T::from_f64(0.4) * (t7 + t9) * k_wall;
         let depth = z + l_c * cos_theta;
         (kinetic, potential, depth)
     }
