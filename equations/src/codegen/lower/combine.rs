@@ -72,3 +72,41 @@ fn combine_sum(g: &Graph, xs: &[Id]) -> Id {
         _ => sum_node(g, out),
     }
 }
+
+/// A term `−c·x` of a sum (`c ≠ 1`) whose positive `c·x` the code computes
+/// anyway written as the negation of that value (`a − ½γ` subtracts the
+/// bound `half_gamma` instead of computing `−½γ` again): a free sign flip
+/// for a multiplication.
+pub(super) fn reuse_positive_terms(g: &Graph, roots: &[Id]) -> Vec<Id> {
+    let live = g.reachable(roots);
+    let is_live = |id: Id| live.get(id.index()).copied().unwrap_or(false);
+    rebuild(g, roots, |g, _, node, _| match node {
+        Node::Add(xs) => {
+            let mut changed = false;
+            let terms: Vec<Id> = xs
+                .iter()
+                .map(|&t| {
+                    let (c, fs) = crate::simplify::term_parts(g, t);
+                    if c >= 0.0 || c == -1.0 || fs.is_empty() {
+                        return t;
+                    }
+                    let mut pos = vec![konst(g, -c)];
+                    pos.extend(fs);
+                    match g.find(&Node::Mul(pos.into_boxed_slice())) {
+                        Some(p) if is_live(p) => {
+                            changed = true;
+                            g.intern(Node::Mul(vec![konst(g, -1.0), p].into_boxed_slice()))
+                        }
+                        _ => t,
+                    }
+                })
+                .collect();
+            if changed {
+                sum_node(g, terms)
+            } else {
+                g.intern(Node::Add(xs))
+            }
+        }
+        node => g.intern(node),
+    })
+}

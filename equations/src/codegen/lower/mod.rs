@@ -64,7 +64,7 @@ pub fn lower(g: &Graph, roots: &[Id]) -> Vec<Id> {
         node => g.intern(node),
     });
     let shared = pairs::share_products(g, &cancelled);
-    reuse_reciprocals(g, &shared)
+    combine::reuse_positive_terms(g, &reuse_reciprocals(g, &shared))
 }
 
 /// `b⁻²` written `(b⁻¹)²` where the function binds `b⁻¹` anyway: the
