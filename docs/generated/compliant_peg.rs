@@ -53,7 +53,7 @@ pub mod compliant_peg {
     /// - `ydot`: vector of 8
     ///
     /// # Cost
-    /// 104 add/sub, 137 mul, 7 div, 4 sqrt, 6 transcendental, 16 branches; 90 `let`s.
+    /// 104 add/sub, 135 mul, 7 div, 4 sqrt, 6 transcendental, 16 branches; 90 `let`s.
     #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SVector<T, 8> {
         let x = y[0];
@@ -82,91 +82,91 @@ pub mod compliant_peg {
         let t1 = f2 * cos_theta;
         let t2 = f1 * cos_theta;
         let t3 = f2 * sin_theta;
-        let t4 = -T::from_f64(0.5) * d;
-        let t5 = -rho_h + t4 - x;
-        let t6 = T::from_f64(0.5) * theta;
-        let (t7, t8) = t6.sin_cos();
-        let t9 = t7 * t7;
-        let t10 = r * sin_theta;
-        let t11 = r * cos_theta;
-        let t12 = zdot * sin_theta;
-        let t13 = t7 * t8;
-        let t14 = l_c - rho_p;
-        let t15 = r - rho_p;
-        let t16 = sin_theta * t14;
-        let t17 = -T::from_f64(2.0) * t9 * t15;
-        let t18 = rho_p * sin_theta;
-        let t19 = cos_theta * (r - T::from_f64(2.0) * rho_p * t9);
-        let t20 = cos_theta * t14;
-        let t21 = rho_h + T::from_f64(0.5) * d - x;
-        let t22 = T::from_f64(1.0) - T::from_f64(2.0) * t9;
-        let t23 = z - rho_h;
-        let t24 = sin_theta * t23;
-        let delta_edge_left = r + t4 - x + t24 - T::from_f64(2.0) * t5 * t9;
+        let t4 = T::from_f64(0.5) * d;
+        let t5 = T::from_f64(0.5) * theta;
+        let (t6, t7) = t5.sin_cos();
+        let t8 = t6 * t6;
+        let t9 = r * sin_theta;
+        let t10 = r * cos_theta;
+        let t11 = zdot * sin_theta;
+        let t12 = t6 * t7;
+        let t13 = l_c - rho_p;
+        let t14 = r - rho_p;
+        let t15 = sin_theta * t13;
+        let t16 = -T::from_f64(2.0) * t8 * t14;
+        let t17 = rho_p * sin_theta;
+        let t18 = cos_theta * (r - T::from_f64(2.0) * rho_p * t8);
+        let t19 = cos_theta * t13;
+        let t20 = rho_h + t4 - x;
+        let t21 = T::from_f64(1.0) - T::from_f64(2.0) * t8;
+        let t22 = z - rho_h;
+        let t23 = sin_theta * t22;
+        let t24 = -xdot * t21;
+        let t25 = cos_theta * t22;
+        let t26 = sin_theta * (l_c - rho_p + t17) + t18;
+        let slip_wall_right = zdot - thetadot * t26;
+        let t27 = v_s.hypot(slip_wall_right);
+        let t28 = sin_theta * (-l_c + rho_p + t17) + t18;
+        let slip_wall_left = zdot + thetadot * t28;
+        let t29 = v_s.hypot(slip_wall_left);
+        let t30 = sin_theta * t20 - t25;
+        let t31 = t9 - cos_theta * t30;
+        let t32 = t10 + sin_theta * t30;
+        let slip_edge_right = sin_theta * (xdot - thetadot * t31)
+            + cos_theta * (zdot - thetadot * t32);
+        let t33 = t25 - T::from_f64(2.0) * t12 * t20;
+        let neg_delta_rate_edge_right = t24 + t11 + thetadot * t33;
+        let t34 = (T::from_f64(1.0) - hc_alpha * neg_delta_rate_edge_right).max0();
+        let t35 = v_s.hypot(slip_edge_right);
+        let t36 = T::from_f64(1.0) - t34;
+        let t37 = t34 / t35;
+        let t38 = t37 * slip_edge_right;
+        let t39 = T::from_f64(2.0) * (t12 * t14);
+        let t40 = t19 + t39;
+        let neg_delta_rate_wall_left = xdot + thetadot * t40;
+        let t41 = (T::from_f64(1.0) - hc_alpha * neg_delta_rate_wall_left).max0();
+        let t42 = T::from_f64(1.0) - t41;
+        let t43 = t41 / t29;
+        let t44 = t43 * slip_wall_left;
+        let t45 = -rho_h - t4 - x;
+        let delta_edge_left = r - t4 - x + t23 - T::from_f64(2.0) * t45 * t8;
         let pen_edge_left = delta_edge_left.max0();
-        let t25 = pen_edge_left * pen_edge_left.sqrt();
-        let t26 = -xdot * t22;
-        let t27 = cos_theta * t23;
+        let t46 = pen_edge_left * pen_edge_left.sqrt();
         let step_delta_edge_left = delta_edge_left.step();
-        let t28 = sin_theta * (l_c - rho_p + t18) + t19;
-        let slip_wall_right = zdot - thetadot * t28;
-        let t29 = v_s.hypot(slip_wall_right);
-        let t30 = sin_theta * (-l_c + rho_p + t18) + t19;
-        let slip_wall_left = zdot + thetadot * t30;
-        let t31 = v_s.hypot(slip_wall_left);
-        let delta_wall_right = r + t4 + x + t16 + t17;
+        let delta_wall_right = r - t4 + x + t15 + t16;
         let pen_wall_right = delta_wall_right.max0();
-        let t32 = pen_wall_right * pen_wall_right.sqrt();
+        let t47 = pen_wall_right * pen_wall_right.sqrt();
         let step_delta_wall_right = delta_wall_right.step();
-        let t33 = t13 * t15;
-        let t34 = t20 - T::from_f64(2.0) * t33;
-        let delta_rate_wall_right = xdot + thetadot * t34;
-        let t35 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
-        let t36 = sin_theta * t5 - t27;
-        let t37 = cos_theta * t36 + t10;
-        let t38 = t11 - sin_theta * t36;
-        let slip_edge_left = sin_theta * (xdot + thetadot * t37)
-            + cos_theta * (zdot + thetadot * t38);
-        let t39 = t27 - T::from_f64(2.0) * t13 * t5;
-        let delta_rate_edge_left = t26 + t12 + thetadot * t39;
-        let t40 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
-        let t41 = v_s.hypot(slip_edge_left);
-        let t42 = sin_theta * t21 - t27;
-        let t43 = t10 - cos_theta * t42;
-        let t44 = t11 + sin_theta * t42;
-        let slip_edge_right = sin_theta * (xdot - thetadot * t43)
-            + cos_theta * (zdot - thetadot * t44);
-        let t45 = t27 - T::from_f64(2.0) * t13 * t21;
-        let neg_delta_rate_edge_right = t26 + t12 + thetadot * t45;
-        let t46 = (T::from_f64(1.0) - hc_alpha * neg_delta_rate_edge_right).max0();
-        let t47 = v_s.hypot(slip_edge_right);
-        let t48 = T::from_f64(1.0) - t40;
-        let t49 = T::from_f64(1.0) - t35;
-        let delta_edge_right = r + t4 + x - t24 + T::from_f64(2.0) * t9 * t21;
+        let t48 = t19 - t39;
+        let delta_rate_wall_right = xdot + thetadot * t48;
+        let t49 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
+        let t50 = sin_theta * t45 - t25;
+        let t51 = cos_theta * t50 + t9;
+        let t52 = t10 - sin_theta * t50;
+        let slip_edge_left = sin_theta * (xdot + thetadot * t51)
+            + cos_theta * (zdot + thetadot * t52);
+        let t53 = t25 - T::from_f64(2.0) * t12 * t45;
+        let delta_rate_edge_left = t24 + t11 + thetadot * t53;
+        let t54 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
+        let t55 = v_s.hypot(slip_edge_left);
+        let t56 = T::from_f64(1.0) - t54;
+        let t57 = T::from_f64(1.0) - t49;
+        let delta_edge_right = r - t4 + x - t23 + T::from_f64(2.0) * t8 * t20;
         let pen_edge_right = delta_edge_right.max0();
-        let t50 = pen_edge_right * pen_edge_right.sqrt();
-        let t51 = T::from_f64(1.0) - t46;
+        let t58 = pen_edge_right * pen_edge_right.sqrt();
         let step_delta_edge_right = delta_edge_right.step();
-        let t52 = t40 / t41;
-        let t53 = t52 * slip_edge_left;
-        let t54 = t46 / t47;
-        let t55 = t54 * slip_edge_right;
-        let t56 = step_delta_edge_left - t48;
-        let t57 = t51 - step_delta_edge_right;
-        let t58 = t25 * t56 + t50 * t57;
-        let t59 = mu * (t53 * t25 + t55 * t50);
-        let t60 = t35 / t29;
-        let t61 = t60 * slip_wall_right;
-        let delta_wall_left = r + t4 - x - t16 + t17;
+        let t59 = t54 / t55;
+        let t60 = t59 * slip_edge_left;
+        let t61 = step_delta_edge_left - t56;
+        let t62 = t36 - step_delta_edge_right;
+        let t63 = t46 * t61 + t58 * t62;
+        let t64 = mu * (t60 * t46 + t38 * t58);
+        let t65 = t49 / t27;
+        let t66 = t65 * slip_wall_right;
+        let delta_wall_left = r - t4 - x - t15 + t16;
         let pen_wall_left = delta_wall_left.max0();
-        let t62 = pen_wall_left * pen_wall_left.sqrt();
-        let t63 = t20 + T::from_f64(2.0) * t33;
-        let neg_delta_rate_wall_left = xdot + thetadot * t63;
-        let t64 = (T::from_f64(1.0) - hc_alpha * neg_delta_rate_wall_left).max0();
+        let t67 = pen_wall_left * pen_wall_left.sqrt();
         let step_delta_wall_left = delta_wall_left.step();
-        let t65 = T::from_f64(1.0) - t64;
-        let t66 = t64 / t31;
-        let t67 = t66 * slip_wall_left;
         SMatrix::<
             T,
             8,
@@ -176,40 +176,40 @@ pub mod compliant_peg {
                 xdot,
                 zdot,
                 thetadot,
-                (k_edge * (t22 * t58 - t59 * sin_theta)
+                (k_edge * (t21 * t63 - t64 * sin_theta)
                     + k_wall
-                        * (t62 * (t64 - T::from_f64(1.0) + step_delta_wall_left)
-                            - t32 * (-T::from_f64(1.0) + step_delta_wall_right + t35))
+                        * (t67 * (t41 - T::from_f64(1.0) + step_delta_wall_left)
+                            - t47 * (-T::from_f64(1.0) + step_delta_wall_right + t49))
                     + t0 + t1) / m,
-                -(k_edge * (sin_theta * t58 + t59 * cos_theta)
-                    + k_wall * (t61 * t32 + t67 * t62) * mu - t2 + t3) / m,
+                -(k_edge * (sin_theta * t63 + t64 * cos_theta)
+                    + k_wall * (t66 * t47 + t44 * t67) * mu - t2 + t3) / m,
                 -(-m_2
                     + k_edge
-                        * (t25
-                            * (t39 * t56
-                                + t53 * mu * (sin_theta * t37 + cos_theta * t38))
-                            - t50
-                                * (t55 * mu * (sin_theta * t43 + cos_theta * t44)
-                                    - t45 * t57))
+                        * (t46
+                            * (t53 * t61
+                                + t60 * mu * (sin_theta * t51 + cos_theta * t52))
+                            - t58
+                                * (t38 * mu * (sin_theta * t31 + cos_theta * t32)
+                                    - t33 * t62))
                     + k_wall
-                        * (t62 * (t67 * mu * t30 - t63 * (step_delta_wall_left - t65))
-                            - t32
-                                * (t61 * mu * t28 - t34 * (step_delta_wall_right - t49))))
+                        * (t67 * (t44 * mu * t28 - t40 * (step_delta_wall_left - t42))
+                            - t47
+                                * (t66 * mu * t26 - t48 * (step_delta_wall_right - t57))))
                     / j,
                 xdot * (t0 + t1) + zdot * (t2 - t3) + thetadot * m_2,
                 mu
                     * (k_edge
-                        * (t52 * t25 * (slip_edge_left * slip_edge_left)
-                            + t54 * t50 * (slip_edge_right * slip_edge_right))
+                        * (t59 * t46 * (slip_edge_left * slip_edge_left)
+                            + t37 * t58 * (slip_edge_right * slip_edge_right))
                         + k_wall
-                            * (t60 * t32 * (slip_wall_right * slip_wall_right)
-                                + t66 * t62 * (slip_wall_left * slip_wall_left)))
+                            * (t65 * t47 * (slip_wall_right * slip_wall_right)
+                                + t43 * t67 * (slip_wall_left * slip_wall_left)))
                     - k_edge
-                        * (delta_rate_edge_left * t25 * t48
-                            - neg_delta_rate_edge_right * t50 * t51)
+                        * (delta_rate_edge_left * t46 * t56
+                            - neg_delta_rate_edge_right * t58 * t36)
                     - k_wall
-                        * (delta_rate_wall_right * t32 * t49
-                            - neg_delta_rate_wall_left * t62 * t65),
+                        * (delta_rate_wall_right * t47 * t57
+                            - neg_delta_rate_wall_left * t67 * t42),
             ],
         )
     }
@@ -223,7 +223,7 @@ pub mod compliant_peg {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 360 add/sub, 717 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 285 `let`s.
+    /// 360 add/sub, 715 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 285 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -254,289 +254,289 @@ pub mod compliant_peg {
         let t3 = f1 * cos_theta;
         let t4 = -f2 * sin_theta;
         let t5 = t3 + t4;
-        let t6 = -T::from_f64(0.5) * d;
-        let t7 = -rho_h + t6 - x;
-        let t8 = T::from_f64(0.5) * theta;
-        let (t9, t10) = t8.sin_cos();
-        let t11 = t9 * t9;
-        let t12 = r * sin_theta;
-        let t13 = r * cos_theta;
-        let t14 = zdot * sin_theta;
-        let t15 = t9 * t10;
-        let t16 = l_c - rho_p;
-        let t17 = r - rho_p;
-        let t18 = sin_theta * t16;
-        let t19 = -T::from_f64(2.0) * t11 * t17;
-        let t20 = rho_p * sin_theta;
-        let t21 = l_c - rho_p + t20;
-        let t22 = r - T::from_f64(2.0) * rho_p * t11;
-        let t23 = sin_theta * t22;
-        let t24 = cos_theta * t22;
-        let t25 = cos_theta * t16;
-        let t26 = rho_h + T::from_f64(0.5) * d - x;
-        let t27 = T::from_f64(1.0) - T::from_f64(2.0) * t11;
-        let t28 = T::from_f64(1.0) / m;
-        let t29 = T::from_f64(1.0) / j;
-        let t30 = sin_theta * sin_theta;
-        let t31 = t27 * t27;
-        let t32 = cos_theta * cos_theta;
-        let t33 = zdot * cos_theta;
-        let t34 = t24 + sin_theta * t21;
-        let t35 = z - rho_h;
-        let t36 = sin_theta * t35;
-        let delta_edge_left = r + t6 - x + t36 - T::from_f64(2.0) * t7 * t11;
+        let t6 = T::from_f64(0.5) * d;
+        let t7 = T::from_f64(0.5) * theta;
+        let (t8, t9) = t7.sin_cos();
+        let t10 = t8 * t8;
+        let t11 = r * sin_theta;
+        let t12 = r * cos_theta;
+        let t13 = zdot * sin_theta;
+        let t14 = t8 * t9;
+        let t15 = l_c - rho_p;
+        let t16 = r - rho_p;
+        let t17 = sin_theta * t15;
+        let t18 = -T::from_f64(2.0) * t10 * t16;
+        let t19 = rho_p * sin_theta;
+        let t20 = l_c - rho_p + t19;
+        let t21 = r - T::from_f64(2.0) * rho_p * t10;
+        let t22 = sin_theta * t21;
+        let t23 = cos_theta * t21;
+        let t24 = cos_theta * t15;
+        let t25 = rho_h + t6 - x;
+        let t26 = T::from_f64(1.0) - T::from_f64(2.0) * t10;
+        let t27 = T::from_f64(1.0) / m;
+        let t28 = T::from_f64(1.0) / j;
+        let t29 = sin_theta * sin_theta;
+        let t30 = t26 * t26;
+        let t31 = cos_theta * cos_theta;
+        let t32 = zdot * cos_theta;
+        let t33 = t23 + sin_theta * t20;
+        let t34 = z - rho_h;
+        let t35 = sin_theta * t34;
+        let t36 = -xdot * t26;
+        let t37 = cos_theta * t34;
+        let t38 = -l_c + rho_p + t19;
+        let t39 = sin_theta * t38 + t23;
+        let slip_wall_left = zdot + thetadot * t39;
+        let t40 = v_s.hypot(slip_wall_left);
+        let t41 = T::from_f64(1.0) / t40;
+        let t42 = slip_wall_left * slip_wall_left;
+        let t43 = sin_theta * t25 - t37;
+        let t44 = -cos_theta * t43;
+        let t45 = t11 + t44;
+        let t46 = xdot - thetadot * t45;
+        let t47 = sin_theta * t43;
+        let t48 = t12 + t47;
+        let t49 = zdot - thetadot * t48;
+        let slip_edge_right = sin_theta * t46 + cos_theta * t49;
+        let t50 = t37 - T::from_f64(2.0) * t14 * t25;
+        let neg_delta_rate_edge_right = t36 + t13 + thetadot * t50;
+        let t51 = T::from_f64(1.0) - hc_alpha * neg_delta_rate_edge_right;
+        let t52 = t51.max0();
+        let t53 = v_s.hypot(slip_edge_right);
+        let t54 = T::from_f64(1.0) / t53;
+        let t55 = sin_theta * t45 + cos_theta * t48;
+        let t56 = slip_edge_right * slip_edge_right;
+        let t57 = T::from_f64(1.0) - t52;
+        let t58 = T::from_f64(2.0) * (t14 * t16);
+        let t59 = t24 + t58;
+        let neg_delta_rate_wall_left = xdot + thetadot * t59;
+        let t60 = T::from_f64(1.0) - hc_alpha * neg_delta_rate_wall_left;
+        let t61 = t60.max0();
+        let t62 = T::from_f64(1.0) - t61;
+        let t63 = -rho_h - t6 - x;
+        let delta_edge_left = r - t6 - x + t35 - T::from_f64(2.0) * t63 * t10;
         let pen_edge_left = delta_edge_left.max0();
-        let t37 = pen_edge_left * pen_edge_left.sqrt();
-        let t38 = -xdot * t27;
-        let t39 = cos_theta * t35;
+        let t64 = pen_edge_left * pen_edge_left.sqrt();
         let step_delta_edge_left = delta_edge_left.step();
-        let t40 = -l_c + rho_p + t20;
-        let t41 = sin_theta * t40 + t24;
-        let slip_wall_left = zdot + thetadot * t41;
-        let t42 = v_s.hypot(slip_wall_left);
-        let t43 = T::from_f64(1.0) / t42;
-        let t44 = slip_wall_left * slip_wall_left;
-        let delta_wall_right = r + t6 + x + t18 + t19;
+        let delta_wall_right = r - t6 + x + t17 + t18;
         let pen_wall_right = delta_wall_right.max0();
-        let t45 = pen_wall_right * pen_wall_right.sqrt();
+        let t65 = pen_wall_right * pen_wall_right.sqrt();
         let step_delta_wall_right = delta_wall_right.step();
-        let t46 = t15 * t17;
-        let t47 = t25 - T::from_f64(2.0) * t46;
-        let delta_rate_wall_right = xdot + thetadot * t47;
-        let t48 = T::from_f64(1.0) + hc_alpha * delta_rate_wall_right;
-        let t49 = t48.max0();
-        let t50 = sin_theta * t7 - t39;
-        let t51 = cos_theta * t50;
-        let t52 = t51 + t12;
-        let t53 = xdot + thetadot * t52;
-        let t54 = t39 - T::from_f64(2.0) * t15 * t7;
-        let delta_rate_edge_left = t38 + t14 + thetadot * t54;
-        let t55 = T::from_f64(1.0) + hc_alpha * delta_rate_edge_left;
-        let t56 = t55.max0();
-        let t57 = sin_theta * t26 - t39;
-        let t58 = -cos_theta * t57;
-        let t59 = t12 + t58;
-        let t60 = xdot - thetadot * t59;
-        let t61 = sin_theta * t57;
-        let t62 = t13 + t61;
-        let t63 = zdot - thetadot * t62;
-        let slip_edge_right = sin_theta * t60 + cos_theta * t63;
-        let t64 = t39 - T::from_f64(2.0) * t15 * t26;
-        let neg_delta_rate_edge_right = t38 + t14 + thetadot * t64;
-        let t65 = T::from_f64(1.0) - hc_alpha * neg_delta_rate_edge_right;
-        let t66 = t65.max0();
-        let t67 = v_s.hypot(slip_edge_right);
-        let t68 = T::from_f64(1.0) / t67;
-        let t69 = sin_theta * t59 + cos_theta * t62;
-        let t70 = slip_edge_right * slip_edge_right;
-        let t71 = T::from_f64(1.0) - t56;
-        let t72 = T::from_f64(1.0) - t49;
-        let delta_edge_right = r + t6 + x - t36 + T::from_f64(2.0) * t11 * t26;
+        let t66 = t24 - t58;
+        let delta_rate_wall_right = xdot + thetadot * t66;
+        let t67 = T::from_f64(1.0) + hc_alpha * delta_rate_wall_right;
+        let t68 = t67.max0();
+        let t69 = sin_theta * t63 - t37;
+        let t70 = cos_theta * t69;
+        let t71 = t70 + t11;
+        let t72 = xdot + thetadot * t71;
+        let t73 = t37 - T::from_f64(2.0) * t14 * t63;
+        let delta_rate_edge_left = t36 + t13 + thetadot * t73;
+        let t74 = T::from_f64(1.0) + hc_alpha * delta_rate_edge_left;
+        let t75 = t74.max0();
+        let t76 = T::from_f64(1.0) - t75;
+        let t77 = T::from_f64(1.0) - t68;
+        let delta_edge_right = r - t6 + x - t35 + T::from_f64(2.0) * t10 * t25;
         let pen_edge_right = delta_edge_right.max0();
-        let t73 = pen_edge_right * pen_edge_right.sqrt();
-        let t74 = T::from_f64(1.0) - t66;
+        let t78 = pen_edge_right * pen_edge_right.sqrt();
         let step_delta_edge_right = delta_edge_right.step();
-        let t75 = t37 * (step_delta_edge_left - t71);
-        let t76 = t73 * (t74 - step_delta_edge_right);
-        let delta_wall_left = r + t6 - x - t18 + t19;
+        let t79 = t64 * (step_delta_edge_left - t76);
+        let t80 = t78 * (t57 - step_delta_edge_right);
+        let delta_wall_left = r - t6 - x - t17 + t18;
         let pen_wall_left = delta_wall_left.max0();
-        let t77 = pen_wall_left * pen_wall_left.sqrt();
-        let t78 = t25 + T::from_f64(2.0) * t46;
-        let neg_delta_rate_wall_left = xdot + thetadot * t78;
-        let t79 = T::from_f64(1.0) - hc_alpha * neg_delta_rate_wall_left;
-        let t80 = t79.max0();
+        let t81 = pen_wall_left * pen_wall_left.sqrt();
         let step_delta_wall_left = delta_wall_left.step();
-        let t81 = T::from_f64(1.0) - t80;
+        let t82 = T::from_f64(1.0) / (t40 * t40 * t40);
+        let t83 = r - (t35 + cos_theta * t25);
+        let t84 = t10 - t9 * t9;
+        let t85 = t35 - t25 * t84;
+        let slip_wall_right = zdot - thetadot * t33;
+        let t86 = v_s.hypot(slip_wall_right);
+        let t87 = T::from_f64(1.0) / t86;
+        let t88 = slip_wall_right * slip_wall_right;
+        let t89 = T::from_f64(1.0) / (t86 * t86 * t86);
+        let t90 = t16 * t84;
+        let t91 = t90 + t17;
+        let t92 = T::from_f64(2.0) * t14 * xdot;
+        let t93 = slip_edge_right * t54;
+        let t94 = t51.step();
+        let t95 = T::from_f64(1.0) / (t53 * t53 * t53);
+        let t96 = t50 * t50;
+        let t97 = thetadot * hc_alpha;
+        let t98 = t14 * t97;
+        let t99 = t97 * cos_theta;
+        let t100 = cos_theta * t83 + t47;
+        let t101 = t56 * t95;
+        let t102 = t52 * (t54 - t101);
+        let t103 = rho_p * (sin_theta - T::from_f64(2.0) * t14);
+        let t104 = t93 * t55;
+        let t105 = t102 * t55;
+        let t106 = mu * t39;
+        let t107 = slip_wall_left * t41;
+        let t108 = hc_alpha * t94;
+        let t109 = t108 * t50;
+        let t110 = t54 * t56;
+        let t111 = t41 * t42;
+        let t112 = t95 * (slip_edge_right * slip_edge_right * slip_edge_right);
+        let t113 = t82 * (slip_wall_left * slip_wall_left * slip_wall_left);
+        let t114 = t52 * t55;
+        let t115 = k_edge * t27;
+        let t116 = t92 + t32 - thetadot * t85;
+        let t117 = sin_theta * t83 + t44;
+        let t118 = sin_theta * (thetadot * t100 + t49)
+            - cos_theta * (t46 + thetadot * t117);
+        let t119 = t108 * t116;
+        let t120 = t22 - cos_theta * (t103 + t20);
+        let t121 = t22 - cos_theta * (t103 + t38);
+        let t122 = t97 * mu;
+        let t123 = t55 * t118;
+        let t124 = t60.step();
+        let t125 = t59 * t59;
+        let t126 = T::from_f64(1.5) - T::from_f64(1.5) * t61;
+        let t127 = k_wall * hc_alpha;
+        let t128 = t61 * (t41 - t42 * t82);
+        let t129 = slip_wall_right * t87;
+        let t130 = mu * t33;
+        let t131 = t107 * t61;
+        let t132 = hc_alpha * t124;
+        let t133 = t132 * t91;
+        let t134 = t111 * t61;
+        let t135 = t89 * (slip_wall_right * slip_wall_right * slip_wall_right);
+        let t136 = t17 - t90;
+        let t137 = t133 * t107 - t128 * t121;
+        let t138 = t132 * t59;
+        let t139 = t107 * t138;
+        let t140 = t61 * t121;
+        let t141 = t39 * t61;
         let sqrt_pen_edge_left = pen_edge_left.sqrt();
-        let t82 = step_delta_edge_left * step_delta_edge_left;
-        let t83 = T::from_f64(1.0) / (t42 * t42 * t42);
+        let t142 = step_delta_edge_left * step_delta_edge_left;
         let sqrt_pen_wall_right = pen_wall_right.sqrt();
-        let t84 = step_delta_wall_right * step_delta_wall_right;
-        let t85 = -T::from_f64(1.5) * t84;
-        let t86 = sqrt_pen_edge_left * t82;
-        let t87 = r + cos_theta * t7 + t36;
-        let t88 = r - (t36 + cos_theta * t26);
-        let t89 = t11 - t10 * t10;
-        let t90 = t36 - t26 * t89;
-        let slip_wall_right = zdot - thetadot * t34;
-        let t91 = v_s.hypot(slip_wall_right);
-        let t92 = T::from_f64(1.0) / t91;
-        let t93 = slip_wall_right * slip_wall_right;
-        let t94 = T::from_f64(1.0) / (t91 * t91 * t91);
-        let t95 = t17 * t89;
-        let t96 = t95 + t18;
-        let t97 = t36 - t7 * t89;
-        let t98 = T::from_f64(2.0) * t15 * xdot;
-        let t99 = t48.step();
-        let t100 = t47 * t47;
-        let t101 = sin_theta * t50;
-        let t102 = t13 - t101;
-        let t103 = zdot + thetadot * t102;
-        let slip_edge_left = sin_theta * t53 + cos_theta * t103;
-        let t104 = v_s.hypot(slip_edge_left);
-        let t105 = T::from_f64(1.0) / t104;
-        let t106 = sin_theta * t52 + cos_theta * t102;
-        let t107 = slip_edge_left * slip_edge_left;
-        let t108 = t37 * t71;
-        let t109 = t73 * t74;
-        let t110 = slip_edge_left * t105;
-        let t111 = slip_edge_right * t68;
-        let t112 = t110 * t37 * t56 + t111 * t73 * t66;
-        let t113 = t55.step();
-        let t114 = t65.step();
-        let t115 = T::from_f64(1.0) / (t104 * t104 * t104);
-        let t116 = T::from_f64(1.0) / (t67 * t67 * t67);
-        let t117 = t54 * t54;
-        let t118 = t64 * t64;
-        let t119 = step_delta_edge_left * sqrt_pen_edge_left;
-        let t120 = t119 * (T::from_f64(1.5) - T::from_f64(1.5) * t56);
-        let t121 = thetadot * hc_alpha;
-        let t122 = t15 * t121;
-        let t123 = t37 * t113;
-        let t124 = T::from_f64(2.0) * t122 * t123;
-        let t125 = t120 * t27 + t124;
+        let t143 = step_delta_wall_right * step_delta_wall_right;
+        let t144 = -T::from_f64(1.5) * t143;
+        let t145 = sqrt_pen_edge_left * t142;
+        let t146 = r + cos_theta * t63 + t35;
+        let t147 = t35 - t63 * t84;
+        let t148 = t67.step();
+        let t149 = t66 * t66;
+        let t150 = sin_theta * t69;
+        let t151 = t12 - t150;
+        let t152 = zdot + thetadot * t151;
+        let slip_edge_left = sin_theta * t72 + cos_theta * t152;
+        let t153 = v_s.hypot(slip_edge_left);
+        let t154 = T::from_f64(1.0) / t153;
+        let t155 = sin_theta * t71 + cos_theta * t151;
+        let t156 = slip_edge_left * slip_edge_left;
+        let t157 = t64 * t76;
+        let t158 = t78 * t57;
+        let t159 = slip_edge_left * t154;
+        let t160 = t159 * t64 * t75 + t93 * t78 * t52;
+        let t161 = t74.step();
+        let t162 = T::from_f64(1.0) / (t153 * t153 * t153);
+        let t163 = t73 * t73;
+        let t164 = step_delta_edge_left * sqrt_pen_edge_left;
+        let t165 = t164 * (T::from_f64(1.5) - T::from_f64(1.5) * t75);
+        let t166 = t64 * t161;
+        let t167 = T::from_f64(2.0) * t98 * t166;
+        let t168 = t165 * t26 + t167;
         let sqrt_pen_edge_right = pen_edge_right.sqrt();
-        let t126 = step_delta_edge_right * step_delta_edge_right;
-        let t127 = step_delta_edge_right * sqrt_pen_edge_right;
-        let t128 = t127 * (T::from_f64(1.5) - T::from_f64(1.5) * t66);
-        let t129 = t73 * t114;
-        let t130 = T::from_f64(2.0) * t122 * t129;
-        let t131 = t128 * t27 + t130;
-        let t132 = t119 * t56;
-        let t133 = t127 * t66;
-        let t134 = mu * (t132 * t110 - t133 * t111);
-        let t135 = T::from_f64(1.5) - T::from_f64(1.5) * t49;
-        let t136 = sqrt_pen_wall_right * (step_delta_wall_right * t135 + t85);
-        let t137 = t121 * cos_theta;
-        let t138 = sqrt_pen_edge_right * t126;
-        let t139 = t86 + t138;
-        let t140 = t27 * t139;
-        let t141 = sin_theta * t87 + t51;
-        let t142 = cos_theta * t88 + t61;
-        let t143 = t70 * t116;
-        let t144 = t107 * t115;
-        let t145 = t56 * (t105 - t144);
-        let t146 = t145 * t37;
-        let t147 = t66 * (t68 - t143);
-        let t148 = t147 * t73;
-        let t149 = t146 + t148;
-        let t150 = hc_alpha * (t123 + t129);
-        let t151 = t99 * t45;
-        let t152 = hc_alpha * t113;
-        let t153 = t152 * t54;
-        let t154 = hc_alpha * (t123 * t110 - t129 * t111);
-        let t155 = t154 * mu;
-        let t156 = t155 * thetadot;
-        let t157 = rho_p * (sin_theta - T::from_f64(2.0) * t15);
-        let t158 = hc_alpha * (t123 * t54 + t129 * t64);
-        let t159 = t158 * sin_theta * k_edge;
-        let t160 = t110 * t106;
-        let t161 = sqrt_pen_edge_left
-            * (t54 * t82 + t160 * mu * t56 * step_delta_edge_left);
-        let t162 = t111 * t69;
-        let t163 = sqrt_pen_edge_right
-            * (t64 * t126 + t162 * mu * t66 * step_delta_edge_right);
-        let t164 = t132 * t54;
-        let t165 = t133 * t64;
-        let t166 = t147 * t69;
-        let t167 = t166 * t73;
-        let t168 = hc_alpha * (t160 * t123 + t162 * t129);
-        let t169 = t158 * t27;
-        let t170 = mu * t41;
-        let t171 = slip_wall_left * t43;
-        let t172 = t146 * t106;
-        let t173 = hc_alpha * t114;
-        let t174 = t173 * t64;
-        let t175 = t105 * t107;
-        let t176 = t68 * t70;
-        let t177 = t175 * t123 - t176 * t129;
-        let t178 = t175 * t132 - t176 * t133;
-        let t179 = hc_alpha
-            * (mu * t177 + t123 * delta_rate_edge_left
-                + t129 * neg_delta_rate_edge_right) - t108 + t109;
-        let t180 = t43 * t44;
-        let t181 = t115 * (slip_edge_left * slip_edge_left * slip_edge_left);
-        let t182 = t56 * (T::from_f64(2.0) * t110 - t181) * t37;
-        let t183 = t116 * (slip_edge_right * slip_edge_right * slip_edge_right);
-        let t184 = t66 * (T::from_f64(2.0) * t111 - t183) * t73;
-        let t185 = t83 * (slip_wall_left * slip_wall_left * slip_wall_left);
-        let t186 = t56 * t106;
-        let t187 = t66 * t69;
-        let t188 = hc_alpha * t99;
-        let t189 = t137 * t123 - t120 * sin_theta;
-        let t190 = t137 * t129 - t128 * sin_theta;
-        let t191 = k_edge * t28;
-        let t192 = t101 - cos_theta * t87;
-        let t193 = cos_theta * (thetadot * t141 - t53)
-            + sin_theta * (thetadot * t192 + t103);
-        let t194 = t98 + t33 - thetadot * t90;
-        let t195 = t129 * t194;
-        let t196 = t195 * hc_alpha - t128 * t64;
-        let t197 = sin_theta * t88 + t58;
-        let t198 = sin_theta * (thetadot * t142 + t63)
-            - cos_theta * (t60 + thetadot * t197);
-        let t199 = t173 * t194;
-        let t200 = sin_theta * (cos_theta * (-t146 - t148) * mu + t150 * t27);
-        let t201 = t37 * (t145 * t106 + t153 * t110) - t73 * (t166 + t174 * t111);
-        let t202 = t23 - cos_theta * (t157 + t21);
-        let t203 = t23 - cos_theta * (t157 + t40);
-        let t204 = t121 * mu;
-        let t205 = t37 * (step_delta_edge_left - t71 + t204 * t160 * t113);
-        let t206 = t73 * (-step_delta_edge_right + t74 + t204 * t162 * t114);
-        let t207 = t106 * t193;
-        let t208 = t69 * t198;
-        let t209 = thetadot * (t108 - t109);
-        let t210 = t37 * t193;
-        let t211 = t73 * t198;
+        let t169 = step_delta_edge_right * step_delta_edge_right;
+        let t170 = step_delta_edge_right * sqrt_pen_edge_right;
+        let t171 = t170 * (T::from_f64(1.5) - T::from_f64(1.5) * t52);
+        let t172 = t78 * t94;
+        let t173 = T::from_f64(2.0) * t98 * t172;
+        let t174 = t171 * t26 + t173;
+        let t175 = t164 * t75;
+        let t176 = t170 * t52;
+        let t177 = mu * (t175 * t159 - t176 * t93);
+        let t178 = T::from_f64(1.5) - T::from_f64(1.5) * t68;
+        let t179 = sqrt_pen_wall_right * (step_delta_wall_right * t178 + t144);
+        let t180 = sqrt_pen_edge_right * t169;
+        let t181 = t145 + t180;
+        let t182 = t26 * t181;
+        let t183 = sin_theta * t146 + t70;
+        let t184 = t156 * t162;
+        let t185 = t75 * (t154 - t184);
+        let t186 = t185 * t64;
+        let t187 = t102 * t78;
+        let t188 = t186 + t187;
+        let t189 = hc_alpha * (t166 + t172);
+        let t190 = t148 * t65;
+        let t191 = hc_alpha * t161;
+        let t192 = t191 * t73;
+        let t193 = hc_alpha * (t166 * t159 - t172 * t93);
+        let t194 = t193 * mu;
+        let t195 = t194 * thetadot;
+        let t196 = hc_alpha * (t166 * t73 + t172 * t50);
+        let t197 = t196 * sin_theta * k_edge;
+        let t198 = t159 * t155;
+        let t199 = sqrt_pen_edge_left
+            * (t73 * t142 + t198 * mu * t75 * step_delta_edge_left);
+        let t200 = sqrt_pen_edge_right
+            * (t50 * t169 + t104 * mu * t52 * step_delta_edge_right);
+        let t201 = t175 * t73;
+        let t202 = t176 * t50;
+        let t203 = t105 * t78;
+        let t204 = hc_alpha * (t198 * t166 + t104 * t172);
+        let t205 = t196 * t26;
+        let t206 = t186 * t155;
+        let t207 = t154 * t156;
+        let t208 = t207 * t166 - t110 * t172;
+        let t209 = t207 * t175 - t110 * t176;
+        let t210 = hc_alpha
+            * (mu * t208 + t166 * delta_rate_edge_left
+                + t172 * neg_delta_rate_edge_right) - t157 + t158;
+        let t211 = t162 * (slip_edge_left * slip_edge_left * slip_edge_left);
+        let t212 = t75 * (T::from_f64(2.0) * t159 - t211) * t64;
+        let t213 = t52 * (T::from_f64(2.0) * t93 - t112) * t78;
+        let t214 = t75 * t155;
+        let t215 = hc_alpha * t148;
+        let t216 = t99 * t166 - t165 * sin_theta;
+        let t217 = t99 * t172 - t171 * sin_theta;
+        let t218 = t150 - cos_theta * t146;
+        let t219 = cos_theta * (thetadot * t183 - t72)
+            + sin_theta * (thetadot * t218 + t152);
+        let t220 = t172 * t116;
+        let t221 = t220 * hc_alpha - t171 * t50;
+        let t222 = sin_theta * (cos_theta * (-t186 - t187) * mu + t189 * t26);
+        let t223 = t64 * (t185 * t155 + t192 * t159) - t78 * (t105 + t109 * t93);
+        let t224 = t64 * (step_delta_edge_left - t76 + t122 * t198 * t161);
+        let t225 = t78 * (-step_delta_edge_right + t57 + t122 * t104 * t94);
+        let t226 = t155 * t219;
+        let t227 = thetadot * (t157 - t158);
+        let t228 = t64 * t219;
+        let t229 = t78 * t118;
         let sqrt_pen_wall_left = pen_wall_left.sqrt();
-        let t212 = step_delta_wall_left * step_delta_wall_left;
-        let t213 = t79.step();
-        let t214 = t78 * t78;
-        let t215 = T::from_f64(1.5) - T::from_f64(1.5) * t80;
-        let t216 = -T::from_f64(1.5) * t212;
-        let t217 = sqrt_pen_wall_left * (step_delta_wall_left * t215 + t216);
-        let t218 = t77 * t213;
-        let t219 = t218 * t96;
-        let t220 = k_wall * hc_alpha;
-        let t221 = t49 * (t92 - t93 * t94);
-        let t222 = t221 * t45;
-        let t223 = t80 * (t43 - t44 * t83);
-        let t224 = slip_wall_right * t92;
-        let t225 = t188 * t47;
-        let t226 = t224 * t225;
-        let t227 = step_delta_wall_left * sqrt_pen_wall_left;
-        let t228 = mu * t34;
-        let t229 = t224 * t49;
-        let t230 = t171 * t80;
-        let t231 = step_delta_wall_right * sqrt_pen_wall_right;
-        let t232 = t231 * t47;
-        let t233 = t227 * t78;
-        let t234 = t233 * t215 + t219 * t121;
-        let t235 = hc_alpha * t213;
-        let t236 = t235 * t96;
-        let t237 = t41 * t77;
-        let t238 = t49 * t92 * t93;
-        let t239 = t180 * t80;
-        let t240 = t94 * (slip_wall_right * slip_wall_right * slip_wall_right);
-        let t241 = t49 * t34;
-        let t242 = t98 + t33 - thetadot * t97;
-        let t243 = t123 * t242;
-        let t244 = t243 * hc_alpha - t120 * t54;
-        let t245 = t18 - t95;
-        let t246 = t152 * t242;
-        let t247 = t37 * (t246 * t110 - t145 * t193) - t73 * (t147 * t198 + t199 * t111)
-            + T::from_f64(1.5) * (t164 * t110 - t165 * t111);
-        let t248 = T::from_f64(1.5) * (t86 * t54 + t138 * t64) + t244 + t196;
-        let t249 = t151 * t245;
-        let t250 = t188 * t245;
-        let t251 = t45 * (t250 * t224 - t221 * t202);
-        let t252 = t236 * t171 - t223 * t203;
-        let t253 = t235 * t78;
-        let t254 = t171 * t253;
-        let t255 = t232 * t135 + t249 * t121;
-        let t256 = t49 * t202;
-        let t257 = t80 * t203;
-        let t258 = t41 * t80;
+        let t230 = step_delta_wall_left * step_delta_wall_left;
+        let t231 = -T::from_f64(1.5) * t230;
+        let t232 = sqrt_pen_wall_left * (step_delta_wall_left * t126 + t231);
+        let t233 = t81 * t124;
+        let t234 = t233 * t91;
+        let t235 = t68 * (t87 - t88 * t89);
+        let t236 = t235 * t65;
+        let t237 = t215 * t66;
+        let t238 = t129 * t237;
+        let t239 = step_delta_wall_left * sqrt_pen_wall_left;
+        let t240 = t129 * t68;
+        let t241 = step_delta_wall_right * sqrt_pen_wall_right;
+        let t242 = t241 * t66;
+        let t243 = t239 * t59;
+        let t244 = t243 * t126 + t234 * t97;
+        let t245 = t39 * t81;
+        let t246 = t68 * t87 * t88;
+        let t247 = t68 * t33;
+        let t248 = t92 + t32 - thetadot * t147;
+        let t249 = t166 * t248;
+        let t250 = t249 * hc_alpha - t165 * t73;
+        let t251 = t191 * t248;
+        let t252 = t64 * (t251 * t159 - t185 * t219) - t78 * (t102 * t118 + t119 * t93)
+            + T::from_f64(1.5) * (t201 * t159 - t202 * t93);
+        let t253 = T::from_f64(1.5) * (t145 * t73 + t180 * t50) + t250 + t221;
+        let t254 = t190 * t136;
+        let t255 = t215 * t136;
+        let t256 = t65 * (t255 * t129 - t235 * t120);
+        let t257 = t242 * t178 + t254 * t97;
+        let t258 = t68 * t120;
         SMatrix::<
             T,
             8,
@@ -567,133 +567,133 @@ pub mod compliant_peg {
                 T::from_f64(1.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t28
+                t27
                     * (k_edge
-                        * (t27 * (T::from_f64(1.5) * t134 * sin_theta + t125 + t131)
-                            - T::from_f64(1.5) * t139 * t31
-                            - T::from_f64(2.0) * t156 * (t15 * sin_theta))
-                        + k_wall * (t136 + t217)),
-                t191
-                    * (sin_theta * (T::from_f64(1.5) * t140 - t156 * cos_theta)
-                        + t27 * (t189 + t190) - T::from_f64(1.5) * t134 * t30),
-                t28
+                        * (t26 * (T::from_f64(1.5) * t177 * sin_theta + t168 + t174)
+                            - T::from_f64(1.5) * t181 * t30
+                            - T::from_f64(2.0) * t195 * (t14 * sin_theta))
+                        + k_wall * (t179 + t232)),
+                t115
+                    * (sin_theta * (T::from_f64(1.5) * t182 - t195 * cos_theta)
+                        + t26 * (t216 + t217) - T::from_f64(1.5) * t177 * t29),
+                t27
                     * (k_edge
-                        * (-(mu * (sin_theta * t247 + cos_theta * t112)) + t27 * t248
-                            + t15 * (-(T::from_f64(2.0) * t75) - T::from_f64(2.0) * t76))
-                        + k_wall * (t136 * t47 + t217 * t78 + t121 * (t249 + t219)) + t3
+                        * (-(mu * (sin_theta * t252 + cos_theta * t160)) + t26 * t253
+                            + t14 * (-(T::from_f64(2.0) * t79) - T::from_f64(2.0) * t80))
+                        + k_wall * (t179 * t66 + t232 * t59 + t97 * (t254 + t234)) + t3
                         + t4),
-                -t28
-                    * (k_edge * (mu * (t30 * t149 - sin_theta * t27 * t154) + t150 * t31)
-                        + t220 * (t151 + t218)),
-                t191 * (t200 - t155 * t30),
-                -t28
-                    * (k_edge * (sin_theta * t201 * mu - t169)
-                        + t220 * (t151 * t47 + t218 * t78)),
+                -t27
+                    * (k_edge * (mu * (t29 * t188 - sin_theta * t26 * t193) + t189 * t30)
+                        + t127 * (t190 + t233)),
+                t115 * (t222 - t194 * t29),
+                -t27
+                    * (k_edge * (sin_theta * t223 * mu - t205)
+                        + t127 * (t190 * t66 + t233 * t59)),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                -t28
+                -t27
                     * (k_edge
-                        * (sin_theta * (-(T::from_f64(1.5) * t140) + t125 + t131)
+                        * (sin_theta * (-(T::from_f64(1.5) * t182) + t168 + t174)
                             - cos_theta
-                                * (t111 * (t130 - T::from_f64(1.5) * t133 * t27)
-                                    - t110 * (t124 - T::from_f64(1.5) * t132 * t27)) * mu)
-                        + T::from_f64(1.5) * (k_wall * (t229 * t231 - t230 * t227))
+                                * (t93 * (t173 - T::from_f64(1.5) * t176 * t26)
+                                    - t159 * (t167 - T::from_f64(1.5) * t175 * t26)) * mu)
+                        + T::from_f64(1.5) * (k_wall * (t240 * t241 - t131 * t239))
                             * mu),
-                -t191
-                    * (sin_theta * (T::from_f64(1.5) * t134 * cos_theta + t189 + t190)
-                        + T::from_f64(1.5) * t139 * t30 + t156 * t32),
-                -t28
+                -t115
+                    * (sin_theta * (T::from_f64(1.5) * t177 * cos_theta + t216 + t217)
+                        + T::from_f64(1.5) * t181 * t29 + t195 * t31),
+                -t27
                     * (-(mu
-                        * (k_edge * (sin_theta * t112 - cos_theta * t247)
+                        * (k_edge * (sin_theta * t160 - cos_theta * t252)
                             - k_wall
-                                * (thetadot * (t77 * t252 - t251)
-                                    + T::from_f64(1.5) * (t229 * t232 - t230 * t233))))
-                        + k_edge * (cos_theta * (t75 + t76) + sin_theta * t248) + t0
+                                * (thetadot * (t81 * t137 - t256)
+                                    + T::from_f64(1.5) * (t240 * t242 - t131 * t243))))
+                        + k_edge * (cos_theta * (t79 + t80) + sin_theta * t253) + t0
                         + t1),
-                t28
-                    * (k_edge * (t200 + cos_theta * t27 * t155)
-                        - t220 * (t151 * t224 - t218 * t171) * mu),
-                -t28
+                t27
+                    * (k_edge * (t222 + cos_theta * t26 * t194)
+                        - t127 * (t190 * t129 - t233 * t107) * mu),
+                -t27
                     * (mu
-                        * (k_edge * (t32 * t149 + sin_theta * cos_theta * t154)
-                            + k_wall * (t222 + t223 * t77)) + t150 * t30 * k_edge),
-                t28
+                        * (k_edge * (t31 * t188 + sin_theta * cos_theta * t193)
+                            + k_wall * (t236 + t128 * t81)) + t189 * t29 * k_edge),
+                t27
                     * (mu
                         * (k_wall
-                            * (t77 * (t254 - t223 * t41) - t45 * (t226 - t221 * t34))
-                            - cos_theta * t201 * k_edge) - t159),
+                            * (t81 * (t139 - t128 * t39) - t65 * (t238 - t235 * t33))
+                            - cos_theta * t223 * k_edge) - t197),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t29
+                t28
                     * (k_edge
-                        * (t15 * (-(T::from_f64(2.0) * t205) - T::from_f64(2.0) * t206)
-                            + t27 * (T::from_f64(1.5) * t161 + T::from_f64(1.5) * t163)
-                            - t54 * t125 - t64 * t131)
+                        * (t14 * (-(T::from_f64(2.0) * t224) - T::from_f64(2.0) * t225)
+                            + t26 * (T::from_f64(1.5) * t199 + T::from_f64(1.5) * t200)
+                            - t73 * t168 - t50 * t174)
                         + k_wall
                             * (sqrt_pen_wall_right
-                                * (t47 * (t85 + t135 * step_delta_wall_right)
-                                    + T::from_f64(1.5) * t228 * t229 * step_delta_wall_right)
+                                * (t66 * (t144 + t178 * step_delta_wall_right)
+                                    + T::from_f64(1.5) * t130 * t240 * step_delta_wall_right)
                                 + sqrt_pen_wall_left
-                                    * (t78 * (t216 + t215 * step_delta_wall_left)
-                                        + T::from_f64(1.5) * t170 * t230 * step_delta_wall_left))),
+                                    * (t59 * (t231 + t126 * step_delta_wall_left)
+                                        + T::from_f64(1.5) * t106 * t131 * step_delta_wall_left))),
                 -(k_edge
-                    * (cos_theta * (t205 + t206)
+                    * (cos_theta * (t224 + t225)
                         - sin_theta
-                            * (-(T::from_f64(1.5) * t161) - T::from_f64(1.5) * t163)
-                        + t54 * t189 + t64 * t190)) * t29,
-                -t29
+                            * (-(T::from_f64(1.5) * t199) - T::from_f64(1.5) * t200)
+                        + t73 * t216 + t50 * t217)) * t28,
+                -t28
                     * (mu
                         * (k_edge
-                            * (t37
-                                * (t246 * t160
-                                    - t56
-                                        * (t105
-                                            * (t207
+                            * (t64
+                                * (t251 * t198
+                                    - t75
+                                        * (t154
+                                            * (t226
                                                 + slip_edge_left
-                                                    * (sin_theta * (t192 + t102) - cos_theta * (t52 - t141)))
-                                            - t144 * t207))
-                                + t73
-                                    * (t66
-                                        * (t68
-                                            * (t208
+                                                    * (sin_theta * (t218 + t151) - cos_theta * (t71 - t183)))
+                                            - t184 * t226))
+                                + t78
+                                    * (t52
+                                        * (t54
+                                            * (t123
                                                 + slip_edge_right
-                                                    * (sin_theta * (t62 - t142) - cos_theta * (t59 - t197)))
-                                            - t143 * t208) + t199 * t162)
-                                + T::from_f64(1.5) * (t164 * t160 + t165 * t162))
+                                                    * (sin_theta * (t48 - t100) - cos_theta * (t45 - t117)))
+                                            - t101 * t123) + t119 * t104)
+                                + T::from_f64(1.5) * (t201 * t198 + t202 * t104))
                             + k_wall
-                                * (thetadot * (t251 * t34 + t237 * t252)
-                                    - t229 * (T::from_f64(1.5) * t232 * t34 - t45 * t202)
-                                    - t230 * (t77 * t203 + T::from_f64(1.5) * t233 * t41)))
+                                * (thetadot * (t256 * t33 + t245 * t137)
+                                    - t240 * (T::from_f64(1.5) * t242 * t33 - t65 * t120)
+                                    - t131 * (t81 * t121 + T::from_f64(1.5) * t243 * t39)))
                         + k_edge
-                            * (-(t75 * t97) - t76 * t90
-                                + T::from_f64(1.5) * (t86 * t117 + t138 * t118) + t54 * t244
-                                + t64 * t196)
+                            * (-(t79 * t147) - t80 * t85
+                                + T::from_f64(1.5) * (t145 * t163 + t180 * t96) + t73 * t250
+                                + t50 * t221)
                         + k_wall
-                            * (-((step_delta_wall_right - t72) * t245 * t45)
-                                + (step_delta_wall_left - t81) * t96 * t77
+                            * (-((step_delta_wall_right - t77) * t136 * t65)
+                                + (step_delta_wall_left - t62) * t91 * t81
                                 + T::from_f64(1.5)
-                                    * (sqrt_pen_wall_right * t84 * t100
-                                        + sqrt_pen_wall_left * t212 * t214) - t47 * t255
-                                - t78 * t234)),
-                t29
-                    * (k_edge * (mu * (sin_theta * (t167 - t172) + t168 * t27) + t169)
-                        + t220
-                            * (t151 * (t228 * t224 - t47) + t218 * (t170 * t171 - t78))),
-                -t29
+                                    * (sqrt_pen_wall_right * t143 * t149
+                                        + sqrt_pen_wall_left * t230 * t125) - t66 * t257
+                                - t59 * t244)),
+                t28
+                    * (k_edge * (mu * (sin_theta * (t203 - t206) + t204 * t26) + t205)
+                        + t127
+                            * (t190 * (t130 * t129 - t66) + t233 * (t106 * t107 - t59))),
+                -t28
                     * (mu
-                        * (k_edge * (cos_theta * (t172 - t167) + t168 * sin_theta)
-                            + k_wall * (t237 * t223 - t222 * t34)) + t159),
-                -t29
+                        * (k_edge * (cos_theta * (t206 - t203) + t204 * sin_theta)
+                            + k_wall * (t245 * t128 - t236 * t33)) + t197),
+                -t28
                     * (mu
                         * (k_edge
-                            * (t37 * (t145 * (t106 * t106) + t153 * t160)
-                                + t73 * (t147 * (t69 * t69) + t174 * t162))
+                            * (t64 * (t185 * (t155 * t155) + t192 * t198)
+                                + t78 * (t102 * (t55 * t55) + t109 * t104))
                             - k_wall
-                                * (t45 * (t226 * t34 - t221 * (t34 * t34))
-                                    + t77 * (t254 * t41 - t223 * (t41 * t41))))
+                                * (t65 * (t238 * t33 - t235 * (t33 * t33))
+                                    + t81 * (t139 * t39 - t128 * (t39 * t39))))
                         + hc_alpha
-                            * (k_edge * (t123 * t117 + t129 * t118)
-                                + k_wall * (t151 * t100 + t218 * t214))),
+                            * (k_edge * (t166 * t163 + t172 * t96)
+                                + k_wall * (t190 * t149 + t233 * t125))),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
@@ -706,86 +706,86 @@ pub mod compliant_peg {
                 T::from_f64(0.0),
                 k_edge
                     * (mu
-                        * (T::from_f64(2.0) * (t15 * t177) * t121
-                            - T::from_f64(1.5) * t178 * t27)
-                        - T::from_f64(2.0) * t209 * t15 + delta_rate_edge_left * t125
-                        + neg_delta_rate_edge_right * t131)
+                        * (T::from_f64(2.0) * (t14 * t208) * t97
+                            - T::from_f64(1.5) * t209 * t26)
+                        - T::from_f64(2.0) * t227 * t14 + delta_rate_edge_left * t168
+                        + neg_delta_rate_edge_right * t174)
                     - k_wall
-                        * (-(T::from_f64(1.5) * (t238 * t231 - t239 * t227) * mu)
-                            + t231 * t135 * delta_rate_wall_right
-                            + t227 * t215 * neg_delta_rate_wall_left),
+                        * (-(T::from_f64(1.5) * (t246 * t241 - t134 * t239) * mu)
+                            + t241 * t178 * delta_rate_wall_right
+                            + t239 * t126 * neg_delta_rate_wall_left),
                 k_edge
                     * (mu
-                        * (T::from_f64(1.5) * t178 * sin_theta + cos_theta * t177 * t121)
-                        - t209 * cos_theta + delta_rate_edge_left * t189
-                        + neg_delta_rate_edge_right * t190),
+                        * (T::from_f64(1.5) * t209 * sin_theta + cos_theta * t208 * t97)
+                        - t227 * cos_theta + delta_rate_edge_left * t216
+                        + neg_delta_rate_edge_right * t217),
                 mu
                     * (k_edge
-                        * (t56
-                            * (t210 * t181
-                                - t105
-                                    * (T::from_f64(2.0) * t210 * slip_edge_left
-                                        - T::from_f64(1.5) * t119 * t54 * t107))
-                            - t66
-                                * (t68
-                                    * (T::from_f64(1.5) * t127 * t64 * t70
-                                        + T::from_f64(2.0) * t211 * slip_edge_right) - t211 * t183)
-                            + hc_alpha * (t243 * t175 - t195 * t176))
+                        * (t75
+                            * (t228 * t211
+                                - t154
+                                    * (T::from_f64(2.0) * t228 * slip_edge_left
+                                        - T::from_f64(1.5) * t164 * t73 * t156))
+                            - t52
+                                * (t54
+                                    * (T::from_f64(1.5) * t170 * t50 * t56
+                                        + T::from_f64(2.0) * t229 * slip_edge_right) - t229 * t112)
+                            + hc_alpha * (t249 * t207 - t220 * t110))
                         + k_wall
                             * (thetadot
-                                * (t77
-                                    * (t43
-                                        * (t236 * t44 - T::from_f64(2.0) * t257 * slip_wall_left)
-                                        + t257 * t185)
-                                    - t45
-                                        * (t92
-                                            * (t250 * t93 - T::from_f64(2.0) * t256 * slip_wall_right)
-                                            + t256 * t240))
-                                + T::from_f64(1.5) * (t238 * t232 - t239 * t233)))
+                                * (t81
+                                    * (t41
+                                        * (t133 * t42 - T::from_f64(2.0) * t140 * slip_wall_left)
+                                        + t140 * t113)
+                                    - t65
+                                        * (t87
+                                            * (t255 * t88 - T::from_f64(2.0) * t258 * slip_wall_right)
+                                            + t258 * t135))
+                                + T::from_f64(1.5) * (t246 * t242 - t134 * t243)))
                     + k_edge
-                        * (-(t108 * t242) + delta_rate_edge_left * t244 + t109 * t194
-                            + neg_delta_rate_edge_right * t196)
+                        * (-(t157 * t248) + delta_rate_edge_left * t250 + t158 * t116
+                            + neg_delta_rate_edge_right * t221)
                     - k_wall
-                        * (thetadot * (t77 * t81 * t96 - t45 * t72 * t245)
-                            + delta_rate_wall_right * t255
-                            + neg_delta_rate_wall_left * t234),
-                -(k_edge * (t27 * t179 + sin_theta * (-t182 - t184) * mu))
+                        * (thetadot * (t81 * t62 * t91 - t65 * t77 * t136)
+                            + delta_rate_wall_right * t257
+                            + neg_delta_rate_wall_left * t244),
+                -(k_edge * (t26 * t210 + sin_theta * (-t212 - t213) * mu))
                     - k_wall
-                        * (t45
-                            * (-(t188 * (mu * t92 * t93 + delta_rate_wall_right)) - t49
+                        * (t65
+                            * (-(t215 * (mu * t87 * t88 + delta_rate_wall_right)) - t68
                                 + T::from_f64(1.0))
-                            + t77
-                                * (t235 * (t180 * mu - neg_delta_rate_wall_left)
-                                    - T::from_f64(1.0) + t80)),
-                k_edge * (sin_theta * t179 + cos_theta * (t182 + t184) * mu)
+                            + t81
+                                * (t132 * (t111 * mu - neg_delta_rate_wall_left)
+                                    - T::from_f64(1.0) + t61)),
+                k_edge * (sin_theta * t210 + cos_theta * (t212 + t213) * mu)
                     + k_wall
-                        * (t49 * (T::from_f64(2.0) * t224 - t240) * t45
-                            + t80 * (T::from_f64(2.0) * t171 - t185) * t77) * mu,
+                        * (t68 * (T::from_f64(2.0) * t129 - t135) * t65
+                            + t61 * (T::from_f64(2.0) * t107 - t113) * t81) * mu,
                 -(mu
                     * (k_edge
-                        * (t37
-                            * (t186 * t181
-                                - t105
-                                    * (t153 * t107 + T::from_f64(2.0) * t186 * slip_edge_left))
-                            - t73
-                                * (t187 * t183
-                                    - t68
-                                        * (t174 * t70 + T::from_f64(2.0) * t187 * slip_edge_right)))
+                        * (t64
+                            * (t214 * t211
+                                - t154
+                                    * (t192 * t156 + T::from_f64(2.0) * t214 * slip_edge_left))
+                            - t78
+                                * (t114 * t112
+                                    - t54
+                                        * (t109 * t56 + T::from_f64(2.0) * t114 * slip_edge_right)))
                         + k_wall
-                            * (t77
-                                * (t43
-                                    * (t253 * t44 - T::from_f64(2.0) * t258 * slip_wall_left)
-                                    + t258 * t185)
-                                - t45
-                                    * (t92
-                                        * (t225 * t93 - T::from_f64(2.0) * t241 * slip_wall_right)
-                                        + t241 * t240))))
+                            * (t81
+                                * (t41
+                                    * (t138 * t42 - T::from_f64(2.0) * t141 * slip_wall_left)
+                                    + t141 * t113)
+                                - t65
+                                    * (t87
+                                        * (t237 * t88 - T::from_f64(2.0) * t247 * slip_wall_right)
+                                        + t247 * t135))))
                     + k_edge
-                        * (t37 * (t152 * delta_rate_edge_left - t71) * t54
-                            + t73 * (t74 + t173 * neg_delta_rate_edge_right) * t64)
+                        * (t64 * (t191 * delta_rate_edge_left - t76) * t73
+                            + t78 * (t57 + t108 * neg_delta_rate_edge_right) * t50)
                     + k_wall
-                        * (t45 * (t188 * delta_rate_wall_right - t72) * t47
-                            + t77 * (t81 + t235 * neg_delta_rate_wall_left) * t78),
+                        * (t65 * (t215 * delta_rate_wall_right - t77) * t66
+                            + t81 * (t62 + t132 * neg_delta_rate_wall_left) * t59),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
             ],
@@ -807,7 +807,7 @@ pub mod compliant_peg {
     /// - `p0`: vector of 4
     ///
     /// # Cost
-    /// 59 add/sub, 109 mul, 8 div, 4 sqrt, 10 transcendental, 8 branches; 65 `let`s.
+    /// 59 add/sub, 107 mul, 8 div, 4 sqrt, 10 transcendental, 8 branches; 65 `let`s.
     #[inline]
     pub fn contacts<T: Real>(
         y: &SVector<T, 8>,
@@ -845,75 +845,73 @@ pub mod compliant_peg {
         let wall_mb = p[21];
         let hc_alpha = p[23];
         let (sin_theta, cos_theta) = theta.sin_cos();
-        let t0 = -T::from_f64(0.5) * d;
-        let t1 = -rho_h + t0 - x;
-        let t2 = T::from_f64(0.5) * theta;
-        let (t3, t4) = t2.sin_cos();
-        let t5 = t3 * t3;
-        let t6 = r * sin_theta;
-        let t7 = r * cos_theta;
-        let t8 = zdot * sin_theta;
-        let t9 = t3 * t4;
-        let t10 = T::from_f64(1.0) / (e_star * edge_sum);
-        let t11 = l_c - rho_p;
-        let t12 = r - rho_p;
-        let t13 = sin_theta * t11;
-        let t14 = -T::from_f64(2.0) * t5 * t12;
-        let t15 = rho_p * sin_theta;
-        let t16 = cos_theta * (r - T::from_f64(2.0) * rho_p * t5);
-        let t17 = cos_theta * t11;
-        let t18 = T::from_f64(1.0) / (e_star * wall_sum);
-        let t19 = rho_h + T::from_f64(0.5) * d - x;
-        let t20 = z - rho_h;
-        let t21 = sin_theta * t20;
-        let delta_edge_left = r + t0 - x + t21 - T::from_f64(2.0) * t1 * t5;
+        let t0 = T::from_f64(0.5) * d;
+        let t1 = T::from_f64(0.5) * theta;
+        let (t2, t3) = t1.sin_cos();
+        let t4 = t2 * t2;
+        let t5 = r * sin_theta;
+        let t6 = r * cos_theta;
+        let t7 = zdot * sin_theta;
+        let t8 = t2 * t3;
+        let t9 = T::from_f64(1.0) / (e_star * edge_sum);
+        let t10 = l_c - rho_p;
+        let t11 = r - rho_p;
+        let t12 = sin_theta * t10;
+        let t13 = -T::from_f64(2.0) * t4 * t11;
+        let t14 = rho_p * sin_theta;
+        let t15 = cos_theta * (r - T::from_f64(2.0) * rho_p * t4);
+        let t16 = cos_theta * t10;
+        let t17 = T::from_f64(1.0) / (e_star * wall_sum);
+        let t18 = rho_h + t0 - x;
+        let t19 = z - rho_h;
+        let t20 = sin_theta * t19;
+        let t21 = -xdot * (T::from_f64(1.0) - T::from_f64(2.0) * t4);
+        let t22 = cos_theta * t19;
+        let slip_wall_right = zdot - thetadot * (sin_theta * (l_c - rho_p + t14) + t15);
+        let t23 = v_s.hypot(slip_wall_right);
+        let slip_wall_left = zdot + thetadot * (sin_theta * (-l_c + rho_p + t14) + t15);
+        let t24 = v_s.hypot(slip_wall_left);
+        let t25 = sin_theta * t18 - t22;
+        let slip_edge_right = sin_theta * (xdot - thetadot * (t5 - cos_theta * t25))
+            + cos_theta * (zdot - thetadot * (t6 + sin_theta * t25));
+        let t26 = (T::from_f64(1.0)
+            - hc_alpha * (t21 + t7 + thetadot * (t22 - T::from_f64(2.0) * t8 * t18)))
+            .max0();
+        let t27 = v_s.hypot(slip_edge_right);
+        let t28 = T::from_f64(2.0) * (t8 * t11);
+        let t29 = (T::from_f64(1.0) - hc_alpha * (xdot + thetadot * (t16 + t28))).max0();
+        let t30 = -rho_h - t0 - x;
+        let delta_edge_left = r - t0 - x + t20 - T::from_f64(2.0) * t30 * t4;
         let pen_edge_left = delta_edge_left.max0();
-        let t22 = pen_edge_left * pen_edge_left.sqrt();
-        let t23 = -xdot * (T::from_f64(1.0) - T::from_f64(2.0) * t5);
-        let t24 = cos_theta * t20;
-        let slip_wall_right = zdot - thetadot * (sin_theta * (l_c - rho_p + t15) + t16);
-        let t25 = v_s.hypot(slip_wall_right);
-        let slip_wall_left = zdot + thetadot * (sin_theta * (-l_c + rho_p + t15) + t16);
-        let t26 = v_s.hypot(slip_wall_left);
-        let delta_wall_right = r + t0 + x + t13 + t14;
+        let t31 = pen_edge_left * pen_edge_left.sqrt();
+        let delta_wall_right = r - t0 + x + t12 + t13;
         let pen_wall_right = delta_wall_right.max0();
-        let t27 = pen_wall_right * pen_wall_right.sqrt();
-        let t28 = t9 * t12;
-        let delta_rate_wall_right = xdot + thetadot * (t17 - T::from_f64(2.0) * t28);
-        let t29 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
-        let t30 = sin_theta * t1 - t24;
-        let slip_edge_left = sin_theta * (xdot + thetadot * (cos_theta * t30 + t6))
-            + cos_theta * (zdot + thetadot * (t7 - sin_theta * t30));
-        let delta_rate_edge_left = t23 + t8
-            + thetadot * (t24 - T::from_f64(2.0) * t9 * t1);
-        let t31 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
-        let t32 = v_s.hypot(slip_edge_left);
-        let t33 = sin_theta * t19 - t24;
-        let slip_edge_right = sin_theta * (xdot - thetadot * (t6 - cos_theta * t33))
-            + cos_theta * (zdot - thetadot * (t7 + sin_theta * t33));
-        let t34 = (T::from_f64(1.0)
-            - hc_alpha * (t23 + t8 + thetadot * (t24 - T::from_f64(2.0) * t9 * t19)))
-            .max0();
-        let t35 = v_s.hypot(slip_edge_right);
-        let delta_edge_right = r + t0 + x - t21 + T::from_f64(2.0) * t5 * t19;
+        let t32 = pen_wall_right * pen_wall_right.sqrt();
+        let delta_rate_wall_right = xdot + thetadot * (t16 - t28);
+        let t33 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
+        let t34 = sin_theta * t30 - t22;
+        let slip_edge_left = sin_theta * (xdot + thetadot * (cos_theta * t34 + t5))
+            + cos_theta * (zdot + thetadot * (t6 - sin_theta * t34));
+        let delta_rate_edge_left = t21 + t7
+            + thetadot * (t22 - T::from_f64(2.0) * t8 * t30);
+        let t35 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
+        let t36 = v_s.hypot(slip_edge_left);
+        let delta_edge_right = r - t0 + x - t20 + T::from_f64(2.0) * t4 * t18;
         let pen_edge_right = delta_edge_right.max0();
-        let t36 = pen_edge_right * pen_edge_right.sqrt();
-        let delta_wall_left = r + t0 - x - t13 + t14;
+        let t37 = pen_edge_right * pen_edge_right.sqrt();
+        let delta_wall_left = r - t0 - x - t12 + t13;
         let pen_wall_left = delta_wall_left.max0();
-        let t37 = pen_wall_left * pen_wall_left.sqrt();
-        let t38 = (T::from_f64(1.0)
-            - hc_alpha * (xdot + thetadot * (t17 + T::from_f64(2.0) * t28)))
-            .max0();
-        let normal_edge_left = k_edge * t22 * t31;
-        let normal_wall_right = k_wall * t29 * t27;
-        let t39 = (T::from_f64(1.5) * t10 * normal_edge_left).cbrt();
-        let t40 = e_star * edge_sum * (T::from_f64(1.0) / (edge_ma * edge_mb));
-        let t41 = (T::from_f64(1.5) * t18 * normal_wall_right).cbrt();
-        let t42 = e_star * wall_sum * (T::from_f64(1.0) / (wall_ma * wall_mb));
-        let normal_edge_right = k_edge * t34 * t36;
-        let t43 = (T::from_f64(1.5) * t10 * normal_edge_right).cbrt();
-        let normal_wall_left = k_wall * t37 * t38;
-        let t44 = (T::from_f64(1.5) * t18 * normal_wall_left).cbrt();
+        let t38 = pen_wall_left * pen_wall_left.sqrt();
+        let t39 = e_star * edge_sum * (T::from_f64(1.0) / (edge_ma * edge_mb));
+        let t40 = e_star * wall_sum * (T::from_f64(1.0) / (wall_ma * wall_mb));
+        let normal_edge_left = k_edge * t31 * t35;
+        let normal_wall_right = k_wall * t33 * t32;
+        let t41 = (T::from_f64(1.5) * t9 * normal_edge_left).cbrt();
+        let t42 = (T::from_f64(1.5) * t17 * normal_wall_right).cbrt();
+        let normal_edge_right = k_edge * t26 * t37;
+        let t43 = (T::from_f64(1.5) * t9 * normal_edge_right).cbrt();
+        let normal_wall_left = k_wall * t38 * t29;
+        let t44 = (T::from_f64(1.5) * t17 * normal_wall_left).cbrt();
         let normal = Vector4::new(
             normal_edge_left,
             normal_wall_right,
@@ -921,10 +919,10 @@ pub mod compliant_peg {
             normal_wall_left,
         );
         let friction = Vector4::new(
-            -normal_edge_left * mu * slip_edge_left / t32,
-            -normal_wall_right * mu * slip_wall_right / t25,
-            -normal_edge_right * mu * slip_edge_right / t35,
-            -normal_wall_left * mu * slip_wall_left / t26,
+            -normal_edge_left * mu * slip_edge_left / t36,
+            -normal_wall_right * mu * slip_wall_right / t23,
+            -normal_edge_right * mu * slip_edge_right / t27,
+            -normal_wall_left * mu * slip_wall_left / t24,
         );
         let delta = Vector4::new(
             delta_edge_left,
@@ -938,13 +936,13 @@ pub mod compliant_peg {
             slip_edge_right,
             slip_wall_left,
         );
-        let a = Vector4::new(edge_ma * t39, wall_ma * t41, edge_ma * t43, wall_ma * t44);
-        let b = Vector4::new(edge_mb * t39, wall_mb * t41, edge_mb * t43, wall_mb * t44);
+        let a = Vector4::new(edge_ma * t41, wall_ma * t42, edge_ma * t43, wall_ma * t44);
+        let b = Vector4::new(edge_mb * t41, wall_mb * t42, edge_mb * t43, wall_mb * t44);
         let p0 = Vector4::new(
-            T::from_f64(0.3183098861837907) * t40 * t39,
-            T::from_f64(0.3183098861837907) * t42 * t41,
-            T::from_f64(0.3183098861837907) * t40 * t43,
-            T::from_f64(0.3183098861837907) * t42 * t44,
+            T::from_f64(0.3183098861837907) * t39 * t41,
+            T::from_f64(0.3183098861837907) * t40 * t42,
+            T::from_f64(0.3183098861837907) * t39 * t43,
+            T::from_f64(0.3183098861837907) * t40 * t44,
         );
         (normal, friction, delta, slip, a, b, p0)
     }
@@ -960,7 +958,7 @@ pub mod compliant_peg {
     /// - `depth`: scalar
     ///
     /// # Cost
-    /// 29 add/sub, 23 mul, 0 div, 0 sqrt, 6 transcendental, 4 branches; 20 `let`s.
+    /// 29 add/sub, 22 mul, 0 div, 0 sqrt, 6 transcendental, 4 branches; 20 `let`s.
     #[inline]
     pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> (T, T, T) {
         let x = y[0];
@@ -979,21 +977,21 @@ pub mod compliant_peg {
         let k_edge = p[9];
         let k_wall = p[10];
         let (sin_theta, cos_theta) = theta.sin_cos();
-        let t0 = -T::from_f64(0.5) * d;
+        let t0 = T::from_f64(0.5) * d;
         let t1 = (T::from_f64(0.5) * theta).sin();
         let t2 = t1 * t1;
         let t3 = sin_theta * (l_c - rho_p);
         let t4 = -T::from_f64(2.0) * t2 * (r - rho_p);
         let t5 = sin_theta * (z - rho_h);
-        let delta_edge_left = r + t0 - x + t5
-            - T::from_f64(2.0) * (-rho_h + t0 - x) * t2;
+        let delta_edge_left = r - t0 - x + t5
+            - T::from_f64(2.0) * (-rho_h - t0 - x) * t2;
         let pen_edge_left = delta_edge_left.max0();
-        let delta_wall_right = r + t0 + x + t3 + t4;
+        let delta_wall_right = r - t0 + x + t3 + t4;
         let pen_wall_right = delta_wall_right.max0();
-        let delta_edge_right = r + t0 + x - t5
-            + T::from_f64(2.0) * t2 * (rho_h + T::from_f64(0.5) * d - x);
+        let delta_edge_right = r - t0 + x - t5
+            + T::from_f64(2.0) * t2 * (rho_h + t0 - x);
         let pen_edge_right = delta_edge_right.max0();
-        let delta_wall_left = r + t0 - x - t3 + t4;
+        let delta_wall_left = r - t0 - x - t3 + t4;
         let pen_wall_left = delta_wall_left.max0();
         let t6 = pen_edge_left.powf(T::from_f64(2.5));
         let t7 = pen_wall_right.powf(T::from_f64(2.5));

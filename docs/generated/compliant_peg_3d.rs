@@ -192,7 +192,7 @@ pub mod compliant_peg_3d {
     /// - `axial`: scalar
     ///
     /// # Cost
-    /// 55 add/sub, 108 mul, 2 div, 0 sqrt, 2 transcendental, 0 branches; 47 `let`s.
+    /// 55 add/sub, 107 mul, 2 div, 0 sqrt, 2 transcendental, 0 branches; 47 `let`s.
     #[inline]
     pub fn rim_wall<T: Real>(
         x: &SVector<T, 7>,
@@ -243,7 +243,8 @@ pub mod compliant_peg_3d {
         let t28 = T::from_f64(2.0) * t27 * sin_angle - t17 * cos_angle;
         let t29 = t17 * sin_angle + T::from_f64(2.0) * t27 * cos_angle;
         let t30 = t11 * t29;
-        let t31 = t11 * ((t9 + t10) * sin_angle - (t5 - t4) * cos_angle);
+        let t31 = T::from_f64(2.0)
+            * (t11 * ((t9 + t10) * sin_angle - (t5 - t4) * cos_angle));
         let t32 = t11 * t28 - px + T::from_f64(2.0) * t6 * t13;
         let t33 = t11 * t19 + py + T::from_f64(2.0) * t26 * t13;
         let t34 = (-t32).hypot(t33);
@@ -295,9 +296,9 @@ pub mod compliant_peg_3d {
             ],
         );
         let normal = Vector3::new(t36, -t37, T::from_f64(0.0));
-        let point = Vector3::new(-t39, t40, T::from_f64(2.0) * t31 + pz - t22);
+        let point = Vector3::new(-t39, t40, t31 + pz - t22);
         let axial = -(T::from_f64(2.0) * (t6 * (px + t39) - t26 * (py - t40)))
-            - t12 * (t22 - T::from_f64(2.0) * t31);
+            - t12 * (t22 - t31);
         (gap, d1, d2, grad, normal, point, axial)
     }
     /// Contact pair: the peg's rim torus against the block's top face z = 0, angle along the rim circle. Gap g (m, negative = penetration), dg/dangle and d2g/dangle2 (m/rad, m/rad^2), gradient dg/d(px, py, pz, q0..q3), unit force direction on the peg, contact point (m) and its axial coordinate along the peg from the centre of mass (m).

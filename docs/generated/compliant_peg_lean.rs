@@ -165,7 +165,7 @@ pub mod compliant_peg_lean {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 196 add/sub, 441 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 164 `let`s.
+    /// 196 add/sub, 439 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 165 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -246,8 +246,8 @@ pub mod compliant_peg_lean {
         let t43 = step_delta_edge_left * step_delta_edge_left;
         let sqrt_pen_wall_right = pen_wall_right.sqrt();
         let t44 = step_delta_wall_right * step_delta_wall_right;
-        let t45 = r + cos_theta * t6 + t23;
-        let t46 = -T::from_f64(1.5) * t44;
+        let t45 = T::from_f64(1.5) * t44;
+        let t46 = r + cos_theta * t6 + t23;
         let t47 = t10 - t9 * t9;
         let t48 = t23 - t6 * t47;
         let t49 = t14 - t13 * t47;
@@ -272,65 +272,65 @@ pub mod compliant_peg_lean {
         let t67 = hc_alpha * t52;
         let t68 = elastic_wall_right * t67;
         let t69 = t67 * t28;
-        let t70 = T::from_f64(1.5) * t30 - T::from_f64(1.5);
-        let t71 = T::from_f64(1.5) - T::from_f64(1.5) * t37;
-        let t72 = step_delta_edge_left * sqrt_pen_edge_left;
-        let t73 = t72 * t71;
-        let t74 = thetadot * t24;
-        let t75 = t11 * t74;
-        let t76 = T::from_f64(2.0) * t75 * t63;
-        let t77 = t73 * t25 + t76;
-        let t78 = slip_edge_left * t58;
-        let t79 = t63 * t78;
-        let t80 = t79 * t74;
-        let t81 = mu * sin_theta;
-        let t82 = t74 * cos_theta;
-        let t83 = t82 * t63;
-        let t84 = sqrt_pen_edge_left * t43;
-        let t85 = T::from_f64(1.5) * t84 * t25;
-        let t86 = mu * cos_theta;
-        let t87 = mu * t19;
-        let t88 = t78 * t37;
-        let t89 = sin_theta * t45 + t32;
-        let t90 = T::from_f64(1.5) - T::from_f64(1.5) * t30;
+        let t70 = T::from_f64(1.5) * t30;
+        let t71 = t70 - T::from_f64(1.5);
+        let t72 = T::from_f64(1.5) - T::from_f64(1.5) * t37;
+        let t73 = step_delta_edge_left * sqrt_pen_edge_left;
+        let t74 = t73 * t72;
+        let t75 = thetadot * t24;
+        let t76 = t11 * t75;
+        let t77 = T::from_f64(2.0) * t76 * t63;
+        let t78 = t74 * t25 + t77;
+        let t79 = slip_edge_left * t58;
+        let t80 = t63 * t79;
+        let t81 = t80 * t75;
+        let t82 = mu * sin_theta;
+        let t83 = t75 * cos_theta;
+        let t84 = t83 * t63;
+        let t85 = sqrt_pen_edge_left * t43;
+        let t86 = T::from_f64(1.5) * t85 * t25;
+        let t87 = mu * cos_theta;
+        let t88 = mu * t19;
+        let t89 = t79 * t37;
+        let t90 = sin_theta * t46 + t32;
         let t91 = t60 * t62;
         let t92 = t37 * (t58 - t91);
-        let t93 = t79 * t35;
+        let t93 = t80 * t35;
         let t94 = t92 * t59 + t93;
-        let t95 = t88 * step_delta_edge_left;
-        let t96 = t79 * t25;
-        let t97 = t79 * sin_theta;
+        let t95 = t89 * step_delta_edge_left;
+        let t96 = t80 * t25;
+        let t97 = t80 * sin_theta;
         let t98 = mu * t59;
         let t99 = sqrt_pen_edge_left * (t35 * t43 + t95 * t98);
-        let t100 = step_delta_wall_right * t70;
-        let t101 = t72 * t35;
-        let t102 = t88 * t101;
+        let t100 = step_delta_wall_right * t71;
+        let t101 = t73 * t35;
+        let t102 = t89 * t101;
         let t103 = t64 * t25;
-        let t104 = t72 * t37;
-        let t105 = t76 - T::from_f64(1.5) * t104 * t25;
+        let t104 = t73 * t37;
+        let t105 = t77 - T::from_f64(1.5) * t104 * t25;
         let t106 = t58 * t60;
         let t107 = t106 * mu;
         let t108 = t62 * (slip_edge_left * slip_edge_left * slip_edge_left);
-        let t109 = t37 * (T::from_f64(2.0) * t78 - t108);
+        let t109 = t37 * (T::from_f64(2.0) * t79 - t108);
         let t110 = t37 * t59;
-        let t111 = t83 - t73 * sin_theta;
+        let t111 = t84 - t74 * sin_theta;
         let t112 = T::from_f64(2.0) * t11 * xdot + zdot * cos_theta - thetadot * t48;
         let t113 = t24 * t112;
         let t114 = t63 * t113;
-        let t115 = t114 - t101 * t71;
-        let t116 = t54 - cos_theta * t45;
-        let t117 = cos_theta * (thetadot * t89 - t34)
+        let t115 = t114 - t101 * t72;
+        let t116 = t54 - cos_theta * t46;
+        let t117 = cos_theta * (thetadot * t90 - t34)
             + sin_theta * (thetadot * t116 + t56);
         let t118 = t91 * t117;
-        let t119 = T::from_f64(1.5) * t84 * t35 + t115;
+        let t119 = T::from_f64(1.5) * t85 * t35 + t115;
         let t120 = thetadot * t27;
         let t121 = t67 * t49;
         let t122 = t120 * t121;
-        let t123 = t63 * t25 - t92 * t86;
+        let t123 = t63 * t25 - t92 * t87;
         let t124 = sin_theta * t16
             - cos_theta * (rho_p * (sin_theta - T::from_f64(2.0) * t11) + t15);
-        let t125 = t79 * t112;
-        let t126 = t24 * (step_delta_edge_left - t38 + t98 * t79 * thetadot);
+        let t125 = t80 * t112;
+        let t126 = t24 * (step_delta_edge_left - t38 + t98 * t80 * thetadot);
         let t127 = t24 * t117;
         let t128 = t38 - t63 * (t107 + delta_rate_edge_left);
         let slip_wall_right = zdot - t50;
@@ -351,8 +351,9 @@ pub mod compliant_peg_lean {
         let t143 = t30 * t21;
         let t144 = t139 * t30;
         let t145 = t134 * t21;
-        let t146 = t139 * t90 + t122;
-        let t147 = t120 * t124;
+        let t146 = t120 * t124;
+        let t147 = T::from_f64(1.5) - t70;
+        let t148 = t139 * t147 + t122;
         SMatrix::<
             T,
             8,
@@ -385,14 +386,13 @@ pub mod compliant_peg_lean {
                 T::from_f64(0.0),
                 -t17
                     * (k_edge
-                        * (-(T::from_f64(1.5) * (t95 * t81 * t25 - t42 * t43)
-                            * sqrt_pen_edge_left) - t25 * t77
-                            + T::from_f64(2.0) * t80 * t81 * t11)
-                        + sqrt_pen_wall_right * (t100 + T::from_f64(1.5) * t44)
-                            * k_wall),
+                        * (-(T::from_f64(1.5) * (t95 * t82 * t25 - t42 * t43)
+                            * sqrt_pen_edge_left) - t25 * t78
+                            + T::from_f64(2.0) * t81 * t82 * t11)
+                        + sqrt_pen_wall_right * (t100 + t45) * k_wall),
                 k_edge
-                    * (sin_theta * (t85 - t80 * t86) + t25 * t111
-                        - T::from_f64(1.5) * t87 * t88 * t72) * t17,
+                    * (sin_theta * (t86 - t81 * t87) + t25 * t111
+                        - T::from_f64(1.5) * t88 * t89 * t73) * t17,
                 -t17
                     * (k_edge
                         * (t24
@@ -401,26 +401,26 @@ pub mod compliant_peg_lean {
                                     * (t118 * sin_theta
                                         - t58 * (sin_theta * t117 - cos_theta * slip_edge_left))
                                     + t97 * t112) + T::from_f64(2.0) * t11 * t40) - t25 * t119
-                            + T::from_f64(1.5) * t102 * t81)
+                            + T::from_f64(1.5) * t102 * t82)
                         - k_wall
-                            * (sqrt_pen_wall_right * (step_delta_wall_right * t90 + t46)
+                            * (sqrt_pen_wall_right * (step_delta_wall_right * t147 - t45)
                                 * t28 + t122) - t3 + t4),
                 -t17
                     * (t68
                         - elastic_edge_left
                             * (mu * (t97 * t25 - t92 * t19) - t63 * t42)),
-                -(elastic_edge_left * (t87 * t79 - sin_theta * t123)) * t17,
+                -(elastic_edge_left * (t88 * t80 - sin_theta * t123)) * t17,
                 -t17
                     * (t69 * elastic_wall_right
-                        - elastic_edge_left * (t103 - t81 * t94)),
+                        - elastic_edge_left * (t103 - t82 * t94)),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 -t17
                     * (T::from_f64(1.5) * t141 * t136 * t135
-                        - k_edge * (sin_theta * (t85 - t77) - t78 * t105 * t86)),
+                        - k_edge * (sin_theta * (t86 - t78) - t79 * t105 * t87)),
                 -(k_edge
-                    * (T::from_f64(1.5) * (t43 * t19 + t95 * t86 * sin_theta)
-                        * sqrt_pen_edge_left + sin_theta * t111 + t80 * mu * t20)) * t17,
+                    * (T::from_f64(1.5) * (t43 * t19 + t95 * t87 * sin_theta)
+                        * sqrt_pen_edge_left + sin_theta * t111 + t81 * mu * t20)) * t17,
                 -t17
                     * (mu
                         * (k_edge
@@ -435,7 +435,7 @@ pub mod compliant_peg_lean {
                         + k_edge * (t41 * cos_theta + sin_theta * t119) + t0 + t1),
                 -t17
                     * (t68 * t135 * mu
-                        - elastic_edge_left * (sin_theta * t123 + t96 * t86)),
+                        - elastic_edge_left * (sin_theta * t123 + t96 * t87)),
                 -t17
                     * (mu
                         * (elastic_edge_left * (t92 * t20 + t97 * cos_theta)
@@ -450,9 +450,9 @@ pub mod compliant_peg_lean {
                 t18
                     * (k_edge
                         * (-(T::from_f64(2.0) * t126 * t11)
-                            + T::from_f64(1.5) * t99 * t25 - t35 * t77)
+                            + T::from_f64(1.5) * t99 * t25 - t35 * t78)
                         + sqrt_pen_wall_right
-                            * (t28 * (t46 - t100)
+                            * (t28 * (-t45 - t100)
                                 + T::from_f64(1.5) * t136 * t137 * step_delta_wall_right)
                             * k_wall),
                 k_edge
@@ -467,7 +467,7 @@ pub mod compliant_peg_lean {
                                         * (t58
                                             * (t59 * t117
                                                 + slip_edge_left
-                                                    * (sin_theta * (t116 + t55) - cos_theta * (t33 - t89)))
+                                                    * (sin_theta * (t116 + t55) - cos_theta * (t33 - t90)))
                                             - t118 * t59)) + T::from_f64(1.5) * t102 * t59)
                             - k_wall
                                 * (T::from_f64(1.5) * t144 * t137
@@ -475,11 +475,11 @@ pub mod compliant_peg_lean {
                                         * (t124 * (t50 * t133 - t130 * (t50 - slip_wall_right))
                                             * t30 + t121 * t137 * thetadot)))
                         + k_edge
-                            * (-(t41 * t48) + T::from_f64(1.5) * t84 * t66 + t35 * t115)
+                            * (-(t41 * t48) + T::from_f64(1.5) * t85 * t66 + t35 * t115)
                         + k_wall
                             * (-((step_delta_wall_right - t39) * t49 * t27)
                                 + T::from_f64(1.5) * sqrt_pen_wall_right * t44 * t53
-                                - t28 * t146)),
+                                - t28 * t148)),
                 t18
                     * (elastic_edge_left * (t98 * (t96 - t92 * sin_theta) + t103)
                         + t68 * (t137 * mu - t28)),
@@ -505,12 +505,12 @@ pub mod compliant_peg_lean {
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 k_edge
-                    * (t107 * t105 - T::from_f64(2.0) * t75 * t38
-                        + delta_rate_edge_left * t77)
+                    * (t107 * t105 - T::from_f64(2.0) * t76 * t38
+                        + delta_rate_edge_left * t78)
                     + t141
-                        * (T::from_f64(1.5) * t140 * t136 + delta_rate_wall_right * t70),
+                        * (T::from_f64(1.5) * t140 * t136 + delta_rate_wall_right * t71),
                 k_edge
-                    * (t107 * (T::from_f64(1.5) * t104 * sin_theta + t83) - t82 * t38
+                    * (t107 * (T::from_f64(1.5) * t104 * sin_theta + t84) - t83 * t38
                         + delta_rate_edge_left * t111),
                 mu
                     * (k_edge
@@ -521,19 +521,19 @@ pub mod compliant_peg_lean {
                                         - T::from_f64(1.5) * t101 * t60)) + t114 * t106)
                         - k_wall
                             * (t30
-                                * (t147 * t142
+                                * (t146 * t142
                                     - t130
                                         * (T::from_f64(1.5) * t139 * t131
-                                            + T::from_f64(2.0) * t147 * slip_wall_right))
+                                            + T::from_f64(2.0) * t146 * slip_wall_right))
                                 + t122 * t140))
                     - k_edge * (t113 * t38 - delta_rate_edge_left * t115)
-                    + k_wall * (t120 * t39 * t49 - delta_rate_wall_right * t146),
-                elastic_edge_left * (t25 * t128 + t109 * t81)
+                    + k_wall * (t120 * t39 * t49 - delta_rate_wall_right * t148),
+                elastic_edge_left * (t25 * t128 + t109 * t82)
                     + elastic_wall_right
                         * (t67 * (t140 * mu + delta_rate_wall_right) + t30
                             - T::from_f64(1.0)),
                 elastic_wall_right * (T::from_f64(2.0) * t135 - t142) * t136
-                    - elastic_edge_left * (sin_theta * t128 - t109 * t86),
+                    - elastic_edge_left * (sin_theta * t128 - t109 * t87),
                 mu
                     * (elastic_wall_right
                         * (t130

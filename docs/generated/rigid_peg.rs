@@ -42,7 +42,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 73 add/sub, 149 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 64 `let`s.
+    /// 73 add/sub, 147 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 64 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -79,7 +79,6 @@ pub mod rigid_peg {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let t0 = sin_half_gamma * sin_half_gamma;
         let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
@@ -101,97 +100,98 @@ pub mod rigid_peg {
         let t13 = f * t_k_n;
         let half_e = T::from_f64(0.5) * e;
         let t14 = T::from_f64(1.0 / 12.0) * t7;
-        let t15 = sin_sum * sin_diff;
-        let neg_half_delta = t15 * d_hole;
-        let neg_a1 = neg_half_delta * t1;
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * twice_a2;
-        let ob = neg_a1.hypot(half_d);
-        let t16 = T::from_f64(1.0) / ob;
-        let t17 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t18 = t17 * t1;
-        let t19 = sin_gamma * lever;
-        let t20 = t3 / (sin_gamma * sin_gamma * sin_gamma);
+        let t15 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t16 = t15 * t1;
+        let t17 = sin_gamma * lever;
+        let t18 = t3 / (sin_gamma * sin_gamma * sin_gamma);
         let twice_lever = h - twice_a2;
-        let t21 = twice_lever * twice_lever;
-        let t22 = neg_a1 * t16;
-        let s1 = t1 * (half_e + neg_half_delta * cos_gamma) * t1;
-        let t23 = -s1 * t16;
-        let t24 = m * gammadot * psidot;
-        let t25 = t1 * t1;
-        let t26 = cos_gamma * t25;
-        let neg_half_gap = neg_half_delta * t26;
-        let bb1 = (-T::from_f64(2.0) * neg_half_gap
-            * (d_hole + T::from_f64(2.0) * neg_half_gap))
-            .sqrt();
-        let t27 = bb1 * t16;
-        let t28 = t26 * e;
-        let t29 = t18 - T::from_f64(0.5) * t28;
-        let t30 = sin_gamma * t29;
-        let t31 = cos_gamma * (neg_half_delta * t25 - t29);
-        let t32 = half_d + t31 - t19;
-        let t33 = t2 * (T::from_f64(2.0) * h - T::from_f64(2.0) * twice_a2)
-            * (T::from_f64(2.0) * t18 - t28);
-        let t34 = t30 - cos_gamma * lever;
-        let t35 = lever
+        let t19 = twice_lever * twice_lever;
+        let t20 = m * gammadot * psidot;
+        let t21 = t1 * t1;
+        let t22 = cos_gamma * t21;
+        let t23 = t22 * e;
+        let t24 = t16 - T::from_f64(0.5) * t23;
+        let t25 = sin_gamma * t24;
+        let t26 = T::from_f64(0.25)
+            * (t2 * (T::from_f64(2.0) * h - T::from_f64(2.0) * twice_a2)
+                * (T::from_f64(2.0) * t16 - t23));
+        let t27 = t25 - cos_gamma * lever;
+        let t28 = lever
             + t1
                 * (half_e
                     - T::from_f64(0.5)
-                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t20 * e
-            - T::from_f64(2.0) * t17 * t26;
-        let t36 = sin_gamma * t35 + T::from_f64(2.0) * cos_gamma * t29;
-        let t37 = d_hole
-            * (t15 * (t1 + T::from_f64(2.0) * t20) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma * t35 - T::from_f64(2.0) * t30;
-        let t38 = t34 * t36;
-        let t39 = (d_hole + T::from_f64(2.0) * t31 - T::from_f64(2.0) * t19) * t37;
-        let t40 = t30 - neg_a1;
-        let twice_s1 = half_d + t31 + s1;
+                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t18 * e
+            - T::from_f64(2.0) * t15 * t22;
+        let t29 = sin_gamma * t28 + T::from_f64(2.0) * cos_gamma * t24;
+        let t30 = t27 * t29;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t31 = sin_sum * sin_diff;
+        let neg_half_delta = t31 * d_hole;
+        let neg_a1 = neg_half_delta * t1;
+        let ob = neg_a1.hypot(half_d);
+        let t32 = T::from_f64(1.0) / ob;
+        let t33 = neg_a1 * t32;
+        let s1 = t1 * (half_e + neg_half_delta * cos_gamma) * t1;
+        let t34 = -s1 * t32;
+        let neg_half_gap = neg_half_delta * t22;
+        let bb1 = (-T::from_f64(2.0) * neg_half_gap
+            * (d_hole + T::from_f64(2.0) * neg_half_gap))
+            .sqrt();
+        let t35 = bb1 * t32;
+        let t36 = cos_gamma * (neg_half_delta * t21 - t24);
+        let t37 = half_d + t36 - t17;
+        let t38 = d_hole
+            * (t31 * (t1 + T::from_f64(2.0) * t18) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t28 - T::from_f64(2.0) * t25;
+        let t39 = (d_hole + T::from_f64(2.0) * t36 - T::from_f64(2.0) * t17) * t38;
+        let t40 = t25 - neg_a1;
+        let twice_s1 = half_d + t36 + s1;
         let a = Matrix5::new(
-            m * (t14 + t34 * t34 + t32 * t32),
+            m * (t14 + t27 * t27 + t37 * t37),
             T::from_f64(0.0),
-            -(f * (t_k_eta * t40 + t31 * t_k_z)),
+            -(f * (t_k_eta * t40 + t36 * t_k_z)),
             -(f * (t_b1_eta * t40 + t_b1_z * twice_s1)),
             -(f * (t_b2_eta * t40 + t_b2_z * twice_s1)),
             T::from_f64(0.0),
-            m * (t2 * (T::from_f64(0.25) * t21 + t14) + T::from_f64(0.125) * t3 * t6),
+            m * (t2 * (T::from_f64(0.25) * t19 + t14) + T::from_f64(0.125) * t3 * t6),
             T::from_f64(0.5) * t13 * d_hole,
             f * (t_b1_eta * bb1 - s1 * t_b1_n),
             -(f * (t_b2_eta * bb1 + s1 * t_b2_n)),
-            m * t34,
+            m * t27,
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) - t23,
-            -(f * t_b2_eta) - t23,
+            -(f * t_b1_eta) - t34,
+            -(f * t_b2_eta) - t34,
             T::from_f64(0.0),
-            -t19 * m,
+            -t17 * m,
             -t13,
-            t27 - f * t_b1_n,
-            -(f * t_b2_n) - t27,
-            m * t32,
+            t35 - f * t_b1_n,
+            -(f * t_b2_n) - t35,
+            m * t37,
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            t22 - f * t_b1_z,
-            t22 - f * t_b2_z,
+            t33 - f * t_b1_z,
+            t33 - f * t_b2_z,
         );
         let b = Vector5::new(
             m_gamma
                 - m
                     * (-(t5 * (t14 - T::from_f64(0.125) * t6) * t11)
                         + T::from_f64(0.5)
-                            * (t4 * (T::from_f64(4.0) * t38 - T::from_f64(2.0) * t39)
-                                - (t4 * (T::from_f64(2.0) * t38 - t39)
-                                    + t5
-                                        * (T::from_f64(0.5) * t11 * t21 - T::from_f64(0.25) * t33)))
-                        + g * t32) + t34 * (t8 + t9) + f_z * t32,
-            m_psi + t19 * (t12 + t10)
-                + t24
-                    * (T::from_f64(0.25) * t33
+                            * (t4 * (T::from_f64(4.0) * t30 - T::from_f64(2.0) * t39)
+                                - (t4 * (T::from_f64(2.0) * t30 - t39)
+                                    + t5 * (T::from_f64(0.5) * t11 * t19 - t26))) + g * t37)
+                + t27 * (t8 + t9) + f_z * t37,
+            m_psi + t17 * (t12 + t10)
+                + t20
+                    * (t26
                         - t11
-                            * (T::from_f64(0.5) * t21 - T::from_f64(0.25) * t6
+                            * (T::from_f64(0.5) * t19 - T::from_f64(0.25) * t6
                                 + T::from_f64(1.0 / 6.0) * t7)),
-            t8 + t9 - m * (t36 * t4 + t19 * t5),
-            -t12 - t10 - T::from_f64(2.0) * t24 * t34,
-            f_z - m * g + m * t4 * t37,
+            t8 + t9 - m * (t29 * t4 + t17 * t5),
+            -t12 - t10 - T::from_f64(2.0) * t20 * t27,
+            f_z - m * g + m * t4 * t38,
         );
         (a, b)
     }
@@ -210,7 +210,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 76 add/sub, 151 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 64 `let`s.
+    /// 76 add/sub, 148 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 64 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -248,7 +248,6 @@ pub mod rigid_peg {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let t0 = sin_half_gamma * sin_half_gamma;
         let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
@@ -270,55 +269,57 @@ pub mod rigid_peg {
         let t13 = f * t_k_n;
         let half_e = T::from_f64(0.5) * e;
         let t14 = T::from_f64(1.0 / 12.0) * t7;
-        let t15 = sin_sum * sin_diff;
-        let neg_half_delta = t15 * d_hole;
-        let neg_a1 = neg_half_delta * t1;
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * twice_a2;
-        let ob = neg_a1.hypot(half_d);
-        let t16 = T::from_f64(1.0) / ob;
-        let t17 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t18 = t17 * t1;
-        let t19 = sin_gamma * lever;
-        let t20 = t3 / (sin_gamma * sin_gamma * sin_gamma);
+        let t15 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t16 = t15 * t1;
+        let t17 = sin_gamma * lever;
+        let t18 = t3 / (sin_gamma * sin_gamma * sin_gamma);
         let twice_lever = h - twice_a2;
-        let t21 = twice_lever * twice_lever;
-        let t22 = neg_a1 * t16;
-        let s1 = t1 * (half_e + neg_half_delta * cos_gamma) * t1;
-        let t23 = -s1 * t16;
-        let t24 = t1 * t1;
-        let t25 = cos_gamma * t24;
-        let neg_half_gap = neg_half_delta * t25;
-        let bb1 = (-T::from_f64(2.0) * neg_half_gap
-            * (d_hole + T::from_f64(2.0) * neg_half_gap))
-            .sqrt();
-        let t26 = bb1 * t16;
-        let t27 = t25 * e;
-        let t28 = t18 - T::from_f64(0.5) * t27;
-        let t29 = sin_gamma * t28;
-        let t30 = cos_gamma * (neg_half_delta * t24 - t28);
-        let t31 = half_d + t30 - t19;
-        let t32 = t2 * (T::from_f64(2.0) * h - T::from_f64(2.0) * twice_a2)
-            * (T::from_f64(2.0) * t18 - t27);
-        let t33 = t29 - cos_gamma * lever;
-        let t34 = lever
+        let t19 = twice_lever * twice_lever;
+        let t20 = t1 * t1;
+        let t21 = cos_gamma * t20;
+        let t22 = t21 * e;
+        let t23 = t16 - T::from_f64(0.5) * t22;
+        let t24 = sin_gamma * t23;
+        let t25 = T::from_f64(0.25)
+            * (t2 * (T::from_f64(2.0) * h - T::from_f64(2.0) * twice_a2)
+                * (T::from_f64(2.0) * t16 - t22));
+        let t26 = t24 - cos_gamma * lever;
+        let t27 = lever
             + t1
                 * (half_e
                     - T::from_f64(0.5)
-                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t20 * e
-            - T::from_f64(2.0) * t17 * t25;
-        let t35 = sin_gamma * t34 + T::from_f64(2.0) * cos_gamma * t28;
-        let t36 = d_hole
-            * (t15 * (t1 + T::from_f64(2.0) * t20) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma * t34 - T::from_f64(2.0) * t29;
-        let t37 = t33 * t35;
-        let t38 = (d_hole + T::from_f64(2.0) * t30 - T::from_f64(2.0) * t19) * t36;
-        let t39 = t29 - neg_a1;
-        let twice_s1 = half_d + t30 + s1;
+                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t18 * e
+            - T::from_f64(2.0) * t15 * t21;
+        let t28 = sin_gamma * t27 + T::from_f64(2.0) * cos_gamma * t23;
+        let t29 = t26 * t28;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t30 = sin_sum * sin_diff;
+        let neg_half_delta = t30 * d_hole;
+        let neg_a1 = neg_half_delta * t1;
+        let ob = neg_a1.hypot(half_d);
+        let t31 = T::from_f64(1.0) / ob;
+        let t32 = neg_a1 * t31;
+        let s1 = t1 * (half_e + neg_half_delta * cos_gamma) * t1;
+        let t33 = -s1 * t31;
+        let neg_half_gap = neg_half_delta * t21;
+        let bb1 = (-T::from_f64(2.0) * neg_half_gap
+            * (d_hole + T::from_f64(2.0) * neg_half_gap))
+            .sqrt();
+        let t34 = bb1 * t31;
+        let t35 = cos_gamma * (neg_half_delta * t20 - t23);
+        let t36 = half_d + t35 - t17;
+        let t37 = d_hole
+            * (t30 * (t1 + T::from_f64(2.0) * t18) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t27 - T::from_f64(2.0) * t24;
+        let t38 = (d_hole + T::from_f64(2.0) * t35 - T::from_f64(2.0) * t17) * t37;
+        let t39 = t24 - neg_a1;
+        let twice_s1 = half_d + t35 + s1;
         let t40 = gammadot * psidot;
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
-            -(f * (t_k_eta * t39 + t30 * t_k_z)),
+            -(f * (t_k_eta * t39 + t35 * t_k_z)),
             -(f * (t_b1_eta * t39 + t_b1_z * twice_s1)),
             -(f * (t_b2_eta * t39 + t_b2_z * twice_s1)),
             T::from_f64(0.0),
@@ -329,41 +330,40 @@ pub mod rigid_peg {
             T::from_f64(0.0),
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) - t23,
-            -(f * t_b2_eta) - t23,
+            -(f * t_b1_eta) - t33,
+            -(f * t_b2_eta) - t33,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -t13,
-            t26 - f * t_b1_n,
-            -(f * t_b2_n) - t26,
+            t34 - f * t_b1_n,
+            -(f * t_b2_n) - t34,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            t22 - f * t_b1_z,
-            t22 - f * t_b2_z,
+            t32 - f * t_b1_z,
+            t32 - f * t_b2_z,
         );
         let b = Vector5::new(
             -(m
-                * (t5 * (T::from_f64(0.125) * t6 - T::from_f64(1.0 / 12.0) * t7) * t11
+                * (t5 * (T::from_f64(0.125) * t6 - t14) * t11
                     + T::from_f64(0.5)
-                        * (t4 * (T::from_f64(4.0) * t37 - T::from_f64(2.0) * t38)
-                            - (t4 * (T::from_f64(2.0) * t37 - t38)
-                                + t5
-                                    * (T::from_f64(0.5) * t11 * t21 - T::from_f64(0.25) * t32)))
-                    + g * t31 + gammaddot * (t14 + t33 * t33 + t31 * t31)))
-                + t33 * (t8 + t9) + f_z * t31,
+                        * (t4 * (T::from_f64(4.0) * t29 - T::from_f64(2.0) * t38)
+                            - (t4 * (T::from_f64(2.0) * t29 - t38)
+                                + t5 * (T::from_f64(0.5) * t11 * t19 - t25))) + g * t36
+                    + gammaddot * (t14 + t26 * t26 + t36 * t36))) + t26 * (t8 + t9)
+                + f_z * t36,
             m
                 * (t40
-                    * (T::from_f64(0.25) * t32
+                    * (t25
                         - t11
-                            * (T::from_f64(0.5) * t21 - T::from_f64(0.25) * t6
+                            * (T::from_f64(0.5) * t19 - T::from_f64(0.25) * t6
                                 + T::from_f64(1.0 / 6.0) * t7))
                     - psiddot
-                        * (t2 * (T::from_f64(0.25) * t21 + t14)
-                            + T::from_f64(0.125) * t3 * t6)) + t19 * (t12 + t10),
-            t8 + t9 - m * (t35 * t4 + gammaddot * t33 + t19 * t5),
-            -t12 - t10 - m * (T::from_f64(2.0) * t40 * t33 - t19 * psiddot),
-            f_z - m * g - m * (gammaddot * t31 - t4 * t36),
+                        * (t2 * (T::from_f64(0.25) * t19 + t14)
+                            + T::from_f64(0.125) * t3 * t6)) + t17 * (t12 + t10),
+            t8 + t9 - m * (t28 * t4 + gammaddot * t26 + t17 * t5),
+            -t12 - t10 - m * (T::from_f64(2.0) * t40 * t26 - t17 * psiddot),
+            f_z - m * g - m * (gammaddot * t36 - t4 * t37),
         );
         (a, b)
     }
@@ -377,7 +377,7 @@ pub mod rigid_peg {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 22 add/sub, 39 mul, 1 div, 1 sqrt, 4 transcendental, 0 branches; 27 `let`s.
+    /// 22 add/sub, 38 mul, 1 div, 1 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 4>,
@@ -394,7 +394,6 @@ pub mod rigid_peg {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let e = d_hole - d_peg
             + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
@@ -405,29 +404,30 @@ pub mod rigid_peg {
         let t2 = -cos_gamma * lever;
         let t3 = t0 * t0;
         let t4 = cos_gamma * t3;
-        let neg_half_delta = d_hole * sin_sum * sin_diff;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
         let t5 = half_d - t1;
-        let t6 = t0 * t0 * (T::from_f64(0.5) * e + neg_half_delta * cos_gamma) + t1;
-        let t7 = -psidot * (t1 - t6);
+        let t6 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+            - T::from_f64(0.5) * t4 * e;
+        let neg_half_delta = d_hole * sin_sum * sin_diff;
+        let t7 = t0 * t0 * (T::from_f64(0.5) * e + neg_half_delta * cos_gamma) + t1;
+        let t8 = -psidot * (t1 - t7);
         let neg_half_gap = neg_half_delta * t4;
         let bb1 = (-T::from_f64(2.0) * neg_half_gap
             * (d_hole + T::from_f64(2.0) * neg_half_gap))
             .sqrt();
-        let t8 = d_peg * sin_half_gamma * t0 * cos_half_gamma
-            - T::from_f64(0.5) * t4 * e;
         let t9 = psidot * bb1;
-        let t10 = half_d + cos_gamma * (neg_half_delta * t3 - t8) - t1;
-        let t11 = gammadot * (neg_half_delta * t0 + t2 - (t2 + sin_gamma * t8));
-        let t12 = gammadot * (t10 + t6);
+        let t10 = half_d + cos_gamma * (neg_half_delta * t3 - t6) - t1;
+        let t11 = gammadot * (neg_half_delta * t0 + t2 - (t2 + sin_gamma * t6));
+        let t12 = gammadot * (t10 + t7);
         Matrix3::new(
             -t11,
             -psidot * (t1 + t5),
             gammadot * (t10 - t5),
             -t11 - t9,
-            t7,
+            t8,
             t12,
             t9 - t11,
-            t7,
+            t8,
             t12,
         )
     }
@@ -442,7 +442,7 @@ pub mod rigid_peg {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 21 add/sub, 48 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 27 `let`s.
+    /// 21 add/sub, 47 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -458,7 +458,6 @@ pub mod rigid_peg {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let e = d_hole - d_peg
             + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
@@ -473,15 +472,16 @@ pub mod rigid_peg {
         let t5 = -cos_gamma * lever;
         let twice_lever = h - twice_a2;
         let t6 = t0 * t0;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
         let neg_half_delta = d_hole * sin_sum * sin_diff;
         let t7 = T::from_f64(0.0625) * (cos_gamma * cos_gamma) * t2 * t3;
         let t8 = T::from_f64(1.0 / 24.0) * (T::from_f64(0.75) * t3 + h * h) * (t1 + t4);
         let t9 = d_peg * sin_half_gamma * t0 * cos_half_gamma
             - T::from_f64(0.5) * cos_gamma * e * t6;
-        let t10 = half_d + cos_gamma * (neg_half_delta * t6 - t9) - sin_gamma * lever;
-        let t11 = t5 + sin_gamma * t9;
+        let t10 = t5 + sin_gamma * t9;
+        let t11 = half_d + cos_gamma * (neg_half_delta * t6 - t9) - sin_gamma * lever;
         let t12 = T::from_f64(0.5)
-            * (t1 * (t11 * t11 + t10 * t10)
+            * (t1 * (t10 * t10 + t11 * t11)
                 + T::from_f64(0.25) * t4 * (twice_lever * twice_lever));
         let kinetic = m * (t12 + t7 + t8);
         let total = m * (t12 + t7 + t8 - g * (neg_half_delta * t0 + t5));
@@ -497,7 +497,7 @@ pub mod rigid_peg {
     /// - `geo`: vector of 13
     ///
     /// # Cost
-    /// 10 add/sub, 35 mul, 3 div, 1 sqrt, 5 transcendental, 0 branches; 21 `let`s.
+    /// 10 add/sub, 32 mul, 3 div, 1 sqrt, 5 transcendental, 0 branches; 21 `let`s.
     #[inline]
     pub fn geometry<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> SVector<T, 13> {
         let gamma = x[0];
@@ -509,22 +509,22 @@ pub mod rigid_peg {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let sin_half_gamma = half_gamma.sin();
         let e = d_hole - d_peg
             + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
         let t0 = T::from_f64(1.0) / sin_gamma;
-        let twice_a2 = e * t0;
-        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * twice_a2;
-        let t1 = t0 * t0;
+        let t1 = T::from_f64(0.5) * h;
+        let t2 = t0 * t0;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
         let neg_half_delta = d_hole * sin_sum * sin_diff;
         let neg_a1 = neg_half_delta * t0;
-        let t2 = neg_half_delta * cos_gamma;
-        let a2 = T::from_f64(0.5) * twice_a2;
-        let s1 = t0 * (T::from_f64(0.5) * e + t2) * t0;
+        let t3 = neg_half_delta * cos_gamma;
+        let a2 = T::from_f64(0.5) * (e * t0);
+        let lever = t1 - a2;
+        let s1 = t0 * (T::from_f64(0.5) * e + t3) * t0;
         let s2 = t0 * (T::from_f64(0.5) * cos_gamma * e + neg_half_delta) * t0;
-        let t3 = s1.hypot(neg_a1);
-        let neg_half_gap = t2 * t1;
+        let t4 = s1.hypot(neg_a1);
+        let neg_half_gap = t3 * t2;
         let bb1 = (-T::from_f64(2.0) * neg_half_gap
             * (d_hole + T::from_f64(2.0) * neg_half_gap))
             .sqrt();
@@ -541,10 +541,10 @@ pub mod rigid_peg {
                 bb1,
                 T::from_f64(2.0) * bb1 / d_hole,
                 T::from_f64(2.0) * s1 / d_hole,
-                sin_gamma * (a2 - T::from_f64(0.5) * h),
+                sin_gamma * (a2 - t1),
                 cos_gamma * lever - neg_a1,
-                -T::from_f64(2.0) * neg_half_delta * t1,
-                T::from_f64(2.0) * t3,
+                -T::from_f64(2.0) * neg_half_delta * t2,
+                T::from_f64(2.0) * t4,
                 -s1,
                 -T::from_f64(2.0) * neg_a1,
             ],

@@ -29,7 +29,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 57 add/sub, 121 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
+    /// 57 add/sub, 119 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -55,7 +55,6 @@ pub mod rigid_peg_frictionless {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let t0 = sin_half_gamma * sin_half_gamma;
         let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
@@ -76,93 +75,94 @@ pub mod rigid_peg_frictionless {
         let t12 = -f_y * cos_psi;
         let half_e = T::from_f64(0.5) * e;
         let t13 = T::from_f64(1.0 / 12.0) * t7;
-        let t14 = sin_sum * sin_diff;
-        let neg_half_delta = t14 * d_hole;
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * twice_a2;
-        let ob = (neg_half_delta * t1).hypot(half_d);
-        let t15 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t16 = t15 * t1;
-        let t17 = sin_gamma * lever;
-        let t18 = t3 / (sin_gamma * sin_gamma * sin_gamma);
+        let t14 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t15 = t14 * t1;
+        let t16 = sin_gamma * lever;
+        let t17 = t3 / (sin_gamma * sin_gamma * sin_gamma);
         let twice_lever = h - twice_a2;
-        let t19 = twice_lever * twice_lever;
-        let t20 = t1 / ob;
-        let t21 = t20 * neg_half_delta;
-        let t22 = t1 * (half_e + neg_half_delta * cos_gamma) * t20;
-        let t23 = m * gammadot * psidot;
-        let t24 = t1 * t1;
-        let t25 = cos_gamma * t24;
-        let neg_half_gap = neg_half_delta * t25;
-        let bb1 = (-T::from_f64(2.0) * neg_half_gap
-            * (d_hole + T::from_f64(2.0) * neg_half_gap))
-            .sqrt();
-        let t26 = bb1 / ob;
-        let t27 = t25 * e;
-        let t28 = t16 - T::from_f64(0.5) * t27;
-        let t29 = sin_gamma * t28;
-        let t30 = cos_gamma * (neg_half_delta * t24 - t28);
-        let t31 = half_d + t30 - t17;
-        let t32 = t2 * (T::from_f64(2.0) * h - T::from_f64(2.0) * twice_a2)
-            * (T::from_f64(2.0) * t16 - t27);
-        let t33 = t29 - cos_gamma * lever;
-        let t34 = lever
+        let t18 = twice_lever * twice_lever;
+        let t19 = m * gammadot * psidot;
+        let t20 = t1 * t1;
+        let t21 = cos_gamma * t20;
+        let t22 = t21 * e;
+        let t23 = t15 - T::from_f64(0.5) * t22;
+        let t24 = sin_gamma * t23;
+        let t25 = T::from_f64(0.25)
+            * (t2 * (T::from_f64(2.0) * h - T::from_f64(2.0) * twice_a2)
+                * (T::from_f64(2.0) * t15 - t22));
+        let t26 = t24 - cos_gamma * lever;
+        let t27 = lever
             + t1
                 * (half_e
                     - T::from_f64(0.5)
-                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t18 * e
-            - T::from_f64(2.0) * t15 * t25;
-        let t35 = sin_gamma * t34 + T::from_f64(2.0) * cos_gamma * t28;
-        let t36 = d_hole
-            * (t14 * (t1 + T::from_f64(2.0) * t18) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma * t34 - T::from_f64(2.0) * t29;
-        let t37 = t33 * t35;
-        let t38 = (d_hole + T::from_f64(2.0) * t30 - T::from_f64(2.0) * t17) * t36;
+                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t17 * e
+            - T::from_f64(2.0) * t14 * t21;
+        let t28 = sin_gamma * t27 + T::from_f64(2.0) * cos_gamma * t23;
+        let t29 = t26 * t28;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t30 = sin_sum * sin_diff;
+        let neg_half_delta = t30 * d_hole;
+        let ob = (neg_half_delta * t1).hypot(half_d);
+        let t31 = t1 / ob;
+        let t32 = t31 * neg_half_delta;
+        let t33 = t1 * (half_e + neg_half_delta * cos_gamma) * t31;
+        let neg_half_gap = neg_half_delta * t21;
+        let bb1 = (-T::from_f64(2.0) * neg_half_gap
+            * (d_hole + T::from_f64(2.0) * neg_half_gap))
+            .sqrt();
+        let t34 = bb1 / ob;
+        let t35 = cos_gamma * (neg_half_delta * t20 - t23);
+        let t36 = half_d + t35 - t16;
+        let t37 = d_hole
+            * (t30 * (t1 + T::from_f64(2.0) * t17) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t27 - T::from_f64(2.0) * t24;
+        let t38 = (d_hole + T::from_f64(2.0) * t35 - T::from_f64(2.0) * t16) * t37;
         let a = Matrix5::new(
-            m * (t13 + t33 * t33 + t31 * t31),
+            m * (t13 + t26 * t26 + t36 * t36),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * (t2 * (T::from_f64(0.25) * t19 + t13) + T::from_f64(0.125) * t3 * t6),
+            m * (t2 * (T::from_f64(0.25) * t18 + t13) + T::from_f64(0.125) * t3 * t6),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * t33,
+            m * t26,
             T::from_f64(0.0),
             -cos_gamma,
-            t22,
-            t22,
+            t33,
+            t33,
             T::from_f64(0.0),
-            -t17 * m,
+            -t16 * m,
             T::from_f64(0.0),
-            t26,
-            -t26,
-            m * t31,
+            t34,
+            -t34,
+            m * t36,
             T::from_f64(0.0),
             -sin_gamma,
-            t21,
-            t21,
+            t32,
+            t32,
         );
         let b = Vector5::new(
             m_gamma
                 - m
                     * (-(t5 * (t13 - T::from_f64(0.125) * t6) * t11)
                         + T::from_f64(0.5)
-                            * (t4 * (T::from_f64(4.0) * t37 - T::from_f64(2.0) * t38)
-                                - (t4 * (T::from_f64(2.0) * t37 - t38)
-                                    + t5
-                                        * (T::from_f64(0.5) * t11 * t19 - T::from_f64(0.25) * t32)))
-                        + g * t31) + t33 * (t8 + t9) + f_z * t31,
-            m_psi + t17 * (t12 + t10)
-                + t23
-                    * (T::from_f64(0.25) * t32
+                            * (t4 * (T::from_f64(4.0) * t29 - T::from_f64(2.0) * t38)
+                                - (t4 * (T::from_f64(2.0) * t29 - t38)
+                                    + t5 * (T::from_f64(0.5) * t11 * t18 - t25))) + g * t36)
+                + t26 * (t8 + t9) + f_z * t36,
+            m_psi + t16 * (t12 + t10)
+                + t19
+                    * (t25
                         - t11
-                            * (T::from_f64(0.5) * t19 - T::from_f64(0.25) * t6
+                            * (T::from_f64(0.5) * t18 - T::from_f64(0.25) * t6
                                 + T::from_f64(1.0 / 6.0) * t7)),
-            t8 + t9 - m * (t35 * t4 + t17 * t5),
-            -t12 - t10 - T::from_f64(2.0) * t23 * t33,
-            f_z - m * g + m * t4 * t36,
+            t8 + t9 - m * (t28 * t4 + t16 * t5),
+            -t12 - t10 - T::from_f64(2.0) * t19 * t26,
+            f_z - m * g + m * t4 * t37,
         );
         (a, b)
     }
@@ -180,7 +180,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 60 add/sub, 123 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
+    /// 60 add/sub, 120 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -207,7 +207,6 @@ pub mod rigid_peg_frictionless {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let t0 = sin_half_gamma * sin_half_gamma;
         let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
@@ -228,46 +227,48 @@ pub mod rigid_peg_frictionless {
         let t12 = -f_y * cos_psi;
         let half_e = T::from_f64(0.5) * e;
         let t13 = T::from_f64(1.0 / 12.0) * t7;
-        let t14 = sin_sum * sin_diff;
-        let neg_half_delta = t14 * d_hole;
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * twice_a2;
-        let ob = (neg_half_delta * t1).hypot(half_d);
-        let t15 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t16 = t15 * t1;
-        let t17 = sin_gamma * lever;
-        let t18 = t3 / (sin_gamma * sin_gamma * sin_gamma);
+        let t14 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t15 = t14 * t1;
+        let t16 = sin_gamma * lever;
+        let t17 = t3 / (sin_gamma * sin_gamma * sin_gamma);
         let twice_lever = h - twice_a2;
-        let t19 = twice_lever * twice_lever;
-        let t20 = t1 / ob;
-        let t21 = t20 * neg_half_delta;
-        let t22 = t1 * (half_e + neg_half_delta * cos_gamma) * t20;
-        let t23 = t1 * t1;
-        let t24 = cos_gamma * t23;
-        let neg_half_gap = neg_half_delta * t24;
-        let bb1 = (-T::from_f64(2.0) * neg_half_gap
-            * (d_hole + T::from_f64(2.0) * neg_half_gap))
-            .sqrt();
-        let t25 = bb1 / ob;
-        let t26 = t24 * e;
-        let t27 = t16 - T::from_f64(0.5) * t26;
-        let t28 = sin_gamma * t27;
-        let t29 = cos_gamma * (neg_half_delta * t23 - t27);
-        let t30 = half_d + t29 - t17;
-        let t31 = t2 * (T::from_f64(2.0) * h - T::from_f64(2.0) * twice_a2)
-            * (T::from_f64(2.0) * t16 - t26);
-        let t32 = t28 - cos_gamma * lever;
-        let t33 = lever
+        let t18 = twice_lever * twice_lever;
+        let t19 = t1 * t1;
+        let t20 = cos_gamma * t19;
+        let t21 = t20 * e;
+        let t22 = t15 - T::from_f64(0.5) * t21;
+        let t23 = sin_gamma * t22;
+        let t24 = T::from_f64(0.25)
+            * (t2 * (T::from_f64(2.0) * h - T::from_f64(2.0) * twice_a2)
+                * (T::from_f64(2.0) * t15 - t21));
+        let t25 = t23 - cos_gamma * lever;
+        let t26 = lever
             + t1
                 * (half_e
                     - T::from_f64(0.5)
-                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t18 * e
-            - T::from_f64(2.0) * t15 * t24;
-        let t34 = sin_gamma * t33 + T::from_f64(2.0) * cos_gamma * t27;
-        let t35 = d_hole
-            * (t14 * (t1 + T::from_f64(2.0) * t18) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma * t33 - T::from_f64(2.0) * t28;
-        let t36 = t32 * t34;
-        let t37 = (d_hole + T::from_f64(2.0) * t29 - T::from_f64(2.0) * t17) * t35;
+                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t17 * e
+            - T::from_f64(2.0) * t14 * t20;
+        let t27 = sin_gamma * t26 + T::from_f64(2.0) * cos_gamma * t22;
+        let t28 = t25 * t27;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t29 = sin_sum * sin_diff;
+        let neg_half_delta = t29 * d_hole;
+        let ob = (neg_half_delta * t1).hypot(half_d);
+        let t30 = t1 / ob;
+        let t31 = t30 * neg_half_delta;
+        let t32 = t1 * (half_e + neg_half_delta * cos_gamma) * t30;
+        let neg_half_gap = neg_half_delta * t20;
+        let bb1 = (-T::from_f64(2.0) * neg_half_gap
+            * (d_hole + T::from_f64(2.0) * neg_half_gap))
+            .sqrt();
+        let t33 = bb1 / ob;
+        let t34 = cos_gamma * (neg_half_delta * t19 - t22);
+        let t35 = half_d + t34 - t16;
+        let t36 = d_hole
+            * (t29 * (t1 + T::from_f64(2.0) * t17) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t26 - T::from_f64(2.0) * t23;
+        let t37 = (d_hole + T::from_f64(2.0) * t34 - T::from_f64(2.0) * t16) * t36;
         let t38 = gammadot * psidot;
         let a = Matrix5::new(
             -T::from_f64(1.0),
@@ -283,41 +284,40 @@ pub mod rigid_peg_frictionless {
             T::from_f64(0.0),
             T::from_f64(0.0),
             -cos_gamma,
-            t22,
-            t22,
+            t32,
+            t32,
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            t25,
-            -t25,
+            t33,
+            -t33,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -sin_gamma,
-            t21,
-            t21,
+            t31,
+            t31,
         );
         let b = Vector5::new(
             -(m
-                * (t5 * (T::from_f64(0.125) * t6 - T::from_f64(1.0 / 12.0) * t7) * t11
+                * (t5 * (T::from_f64(0.125) * t6 - t13) * t11
                     + T::from_f64(0.5)
-                        * (t4 * (T::from_f64(4.0) * t36 - T::from_f64(2.0) * t37)
-                            - (t4 * (T::from_f64(2.0) * t36 - t37)
-                                + t5
-                                    * (T::from_f64(0.5) * t11 * t19 - T::from_f64(0.25) * t31)))
-                    + g * t30 + gammaddot * (t13 + t32 * t32 + t30 * t30)))
-                + t32 * (t8 + t9) + f_z * t30,
+                        * (t4 * (T::from_f64(4.0) * t28 - T::from_f64(2.0) * t37)
+                            - (t4 * (T::from_f64(2.0) * t28 - t37)
+                                + t5 * (T::from_f64(0.5) * t11 * t18 - t24))) + g * t35
+                    + gammaddot * (t13 + t25 * t25 + t35 * t35))) + t25 * (t8 + t9)
+                + f_z * t35,
             m
                 * (t38
-                    * (T::from_f64(0.25) * t31
+                    * (t24
                         - t11
-                            * (T::from_f64(0.5) * t19 - T::from_f64(0.25) * t6
+                            * (T::from_f64(0.5) * t18 - T::from_f64(0.25) * t6
                                 + T::from_f64(1.0 / 6.0) * t7))
                     - psiddot
-                        * (t2 * (T::from_f64(0.25) * t19 + t13)
-                            + T::from_f64(0.125) * t3 * t6)) + t17 * (t12 + t10),
-            t8 + t9 - m * (t34 * t4 + gammaddot * t32 + t17 * t5),
-            -t12 - t10 - m * (T::from_f64(2.0) * t38 * t32 - t17 * psiddot),
-            f_z - m * g - m * (gammaddot * t30 - t4 * t35),
+                        * (t2 * (T::from_f64(0.25) * t18 + t13)
+                            + T::from_f64(0.125) * t3 * t6)) + t16 * (t12 + t10),
+            t8 + t9 - m * (t27 * t4 + gammaddot * t25 + t16 * t5),
+            -t12 - t10 - m * (T::from_f64(2.0) * t38 * t25 - t16 * psiddot),
+            f_z - m * g - m * (gammaddot * t35 - t4 * t36),
         );
         (a, b)
     }
@@ -331,7 +331,7 @@ pub mod rigid_peg_frictionless {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 22 add/sub, 39 mul, 1 div, 1 sqrt, 4 transcendental, 0 branches; 27 `let`s.
+    /// 22 add/sub, 38 mul, 1 div, 1 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 4>,
@@ -348,7 +348,6 @@ pub mod rigid_peg_frictionless {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let e = d_hole - d_peg
             + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
@@ -359,29 +358,30 @@ pub mod rigid_peg_frictionless {
         let t2 = -cos_gamma * lever;
         let t3 = t0 * t0;
         let t4 = cos_gamma * t3;
-        let neg_half_delta = d_hole * sin_sum * sin_diff;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
         let t5 = half_d - t1;
-        let t6 = t0 * t0 * (T::from_f64(0.5) * e + neg_half_delta * cos_gamma) + t1;
-        let t7 = -psidot * (t1 - t6);
+        let t6 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+            - T::from_f64(0.5) * t4 * e;
+        let neg_half_delta = d_hole * sin_sum * sin_diff;
+        let t7 = t0 * t0 * (T::from_f64(0.5) * e + neg_half_delta * cos_gamma) + t1;
+        let t8 = -psidot * (t1 - t7);
         let neg_half_gap = neg_half_delta * t4;
         let bb1 = (-T::from_f64(2.0) * neg_half_gap
             * (d_hole + T::from_f64(2.0) * neg_half_gap))
             .sqrt();
-        let t8 = d_peg * sin_half_gamma * t0 * cos_half_gamma
-            - T::from_f64(0.5) * t4 * e;
         let t9 = psidot * bb1;
-        let t10 = half_d + cos_gamma * (neg_half_delta * t3 - t8) - t1;
-        let t11 = gammadot * (neg_half_delta * t0 + t2 - (t2 + sin_gamma * t8));
-        let t12 = gammadot * (t10 + t6);
+        let t10 = half_d + cos_gamma * (neg_half_delta * t3 - t6) - t1;
+        let t11 = gammadot * (neg_half_delta * t0 + t2 - (t2 + sin_gamma * t6));
+        let t12 = gammadot * (t10 + t7);
         Matrix3::new(
             -t11,
             -psidot * (t1 + t5),
             gammadot * (t10 - t5),
             -t11 - t9,
-            t7,
+            t8,
             t12,
             t9 - t11,
-            t7,
+            t8,
             t12,
         )
     }
@@ -396,7 +396,7 @@ pub mod rigid_peg_frictionless {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 21 add/sub, 48 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 27 `let`s.
+    /// 21 add/sub, 47 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -412,7 +412,6 @@ pub mod rigid_peg_frictionless {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let e = d_hole - d_peg
             + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
@@ -427,15 +426,16 @@ pub mod rigid_peg_frictionless {
         let t5 = -cos_gamma * lever;
         let twice_lever = h - twice_a2;
         let t6 = t0 * t0;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
         let neg_half_delta = d_hole * sin_sum * sin_diff;
         let t7 = T::from_f64(0.0625) * (cos_gamma * cos_gamma) * t2 * t3;
         let t8 = T::from_f64(1.0 / 24.0) * (T::from_f64(0.75) * t3 + h * h) * (t1 + t4);
         let t9 = d_peg * sin_half_gamma * t0 * cos_half_gamma
             - T::from_f64(0.5) * cos_gamma * e * t6;
-        let t10 = half_d + cos_gamma * (neg_half_delta * t6 - t9) - sin_gamma * lever;
-        let t11 = t5 + sin_gamma * t9;
+        let t10 = t5 + sin_gamma * t9;
+        let t11 = half_d + cos_gamma * (neg_half_delta * t6 - t9) - sin_gamma * lever;
         let t12 = T::from_f64(0.5)
-            * (t1 * (t11 * t11 + t10 * t10)
+            * (t1 * (t10 * t10 + t11 * t11)
                 + T::from_f64(0.25) * t4 * (twice_lever * twice_lever));
         let kinetic = m * (t12 + t7 + t8);
         let total = m * (t12 + t7 + t8 - g * (neg_half_delta * t0 + t5));
