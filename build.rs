@@ -5,8 +5,9 @@
 //! Outputs: `$OUT_DIR/generated.rs` (included by `src/generated.rs`),
 //!          `$OUT_DIR/codegen_report.txt` (operation counts per function) and
 //!          `$OUT_DIR/generated_calls.rs` (call table for
-//!          `tests/generated_vs_interpreter.rs`), each rewritten only when its
-//!          content changes.
+//!          `tests/generated_vs_interpreter.rs`) and `$OUT_DIR/generated_list.rs`
+//!          (the function list of `benches/list.rs`), each rewritten only
+//!          when its content changes.
 //!
 //! It uses the public builder API (`pegdyn_equations::Generator`), the same
 //! one a downstream crate's build script uses (docs/own-model.md).
@@ -38,7 +39,9 @@ fn main() {
         out.write(&out_dir)?;
         // pegdyn's own test call table (tests/generated_vs_interpreter.rs).
         let calls = out_dir.join(pegdyn_equations::codegen::harness::CALLS_FILE);
-        pegdyn_equations::codegen::write_if_changed(&calls, out.calls.as_bytes())
+        pegdyn_equations::codegen::write_if_changed(&calls, out.calls.as_bytes())?;
+        let list = out_dir.join(pegdyn_equations::codegen::registry::LIST_FILE);
+        pegdyn_equations::codegen::write_if_changed(&list, out.list.as_bytes())
     });
     if let Err(e) = written {
         eprintln!("error: code generation failed: {e}");

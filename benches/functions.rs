@@ -6,9 +6,9 @@
 //! outside the timed loop). Before timing, the hand form is checked against
 //! the generated code (relative difference ≤ 1e-9).
 //!
-//! Adding a model: one line per function in `benches/list.rs` (with
-//! `=> hand::…` when a hand form exists). Every registered generated function must appear:
-//! the bench panics naming any it does not time.
+//! The functions come from the generator (`benches/list.rs`); a new hand
+//! form is one line in its `hand_form!` table. Every registered generated
+//! function must appear: the bench panics naming any it does not time.
 
 use criterion::{BenchmarkGroup, Criterion, measurement::WallTime};
 use pegdyn::generated;

@@ -119,7 +119,7 @@ pub mod cart_pole {
             T::from_f64(0.0),
             T::from_f64(2.0) * t0 * thetadot * sin_theta,
             T::from_f64(0.0),
-            t0 * (-(g * cos_theta) + xcddot * sin_theta),
+            t0 * (xcddot * sin_theta - g * cos_theta),
             T::from_f64(0.0),
             T::from_f64(0.0),
         )

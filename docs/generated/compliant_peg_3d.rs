@@ -65,7 +65,7 @@ pub mod compliant_peg_3d {
     /// - `axial`: scalar
     ///
     /// # Cost
-    /// 80 add/sub, 143 mul, 2 div, 0 sqrt, 3 transcendental, 0 branches; 52 `let`s.
+    /// 78 add/sub, 143 mul, 2 div, 0 sqrt, 3 transcendental, 0 branches; 46 `let`s.
     #[inline]
     pub fn edge_side<T: Real>(
         x: &SVector<T, 7>,
@@ -83,105 +83,96 @@ pub mod compliant_peg_3d {
         let r = p[0];
         let r_2 = p[3];
         let rho_h = p[4];
-        let t0 = q1 * q3;
-        let t1 = q0 * q2;
-        let t2 = t0 + t1;
-        let t3 = q0 * q1;
+        let t0 = q1 * q3 + q0 * q2;
         let (sin_angle, cos_angle) = angle.sin_cos();
-        let t4 = r_2 + rho_h;
-        let t5 = cos_angle * t4;
-        let t6 = sin_angle * t4;
-        let t7 = rho_h + pz;
-        let t8 = -q2 * q3;
-        let t9 = t3 + t8;
-        let t10 = t8 + t3;
-        let t11 = t2 * sin_angle + t10 * cos_angle;
-        let t12 = -sin_angle + T::from_f64(4.0) * t2 * t11;
-        let t13 = t4 * t12;
-        let t14 = cos_angle - T::from_f64(4.0) * t10 * t11;
-        let t15 = t4 * t14;
-        let t16 = t2 * cos_angle - t10 * sin_angle;
-        let t17 = t1 + t0;
-        let t18 = -(T::from_f64(2.0) * (q2 * q2 + q1 * q1)) + T::from_f64(1.0);
-        let t19 = t18 * t18;
-        let t20 = -t5 + px;
-        let t21 = -t6 + py;
-        let t22 = T::from_f64(2.0) * t11 * t4;
-        let t23 = -(q2 * t20) + q1 * t21;
-        let t24 = T::from_f64(2.0) * (-(q3 * t20) + q0 * t21)
-            + T::from_f64(4.0) * q1 * t7;
-        let t25 = q1 * t20 + q2 * t21;
-        let t26 = T::from_f64(2.0) * (t2 * t20 - t10 * t21) + t18 * t7;
-        let t27 = -px + T::from_f64(2.0) * t2 * t26 + t5;
-        let t28 = py + T::from_f64(2.0) * t10 * t26 - t6;
-        let t29 = rho_h + pz - t18 * t26;
-        let t30 = (-t27).hypot(t28);
-        let t31 = t29.hypot(t30);
-        let t32 = T::from_f64(1.0) / t31;
-        let t33 = t32 * (-(T::from_f64(0.5) * (-rho_h + r)) + T::from_f64(0.5) * t31);
-        let t34 = t33 * t27;
-        let t35 = t33 * t28;
-        let t36 = -t33 * t29;
-        let t37 = t18 * t29;
-        let t38 = t4 * (-(t27 * t12) + t28 * t14 + T::from_f64(2.0) * t37 * t11);
-        let t39 = -t38;
-        let t40 = t10 * t28;
-        let t41 = -T::from_f64(2.0) * t37;
-        let t42 = t2 * t27;
-        let t43 = q2 * t26;
-        let t44 = -T::from_f64(2.0) * t43;
-        let t45 = q1 * t26;
-        let t46 = -T::from_f64(2.0) * t45;
-        let t47 = q3 * t26;
-        let t48 = q0 * t26;
-        let t49 = -(T::from_f64(2.0) * (q0 * t20 + q3 * t21))
-            + T::from_f64(4.0) * q2 * t7;
-        let gap = -rho_h - r + t31;
-        let d1 = -t38 * t32;
-        let d2 = -(t39 * t39 / (t31 * t31 * t31))
-            + t32
-                * (t4
-                    * (t27 * (-cos_angle + T::from_f64(4.0) * t2 * t16)
-                        + t28 * (sin_angle + T::from_f64(4.0) * t10 * t16)
-                        - T::from_f64(2.0) * t37 * t16) + t13 * t13 + t15 * t15
-                    + t19 * (t22 * t22));
+        let t1 = r_2 + rho_h;
+        let t2 = cos_angle * t1;
+        let t3 = sin_angle * t1;
+        let t4 = rho_h + pz;
+        let t5 = q0 * q1 - q2 * q3;
+        let t6 = T::from_f64(1.0) - T::from_f64(2.0) * (q2 * q2 + q1 * q1);
+        let t7 = t6 * t6;
+        let t8 = t0 * sin_angle + t5 * cos_angle;
+        let t9 = T::from_f64(4.0) * t0 * t8 - sin_angle;
+        let t10 = t1 * t9;
+        let t11 = cos_angle - T::from_f64(4.0) * t5 * t8;
+        let t12 = t1 * t11;
+        let t13 = t0 * cos_angle - t5 * sin_angle;
+        let t14 = px - t2;
+        let t15 = py - t3;
+        let t16 = q1 * t15 - q2 * t14;
+        let t17 = T::from_f64(2.0) * (q0 * t15 - q3 * t14) + T::from_f64(4.0) * q1 * t4;
+        let t18 = q1 * t14 + q2 * t15;
+        let t19 = T::from_f64(4.0) * q2 * t4 - T::from_f64(2.0) * (q0 * t14 + q3 * t15);
+        let t20 = T::from_f64(2.0) * t8 * t1;
+        let t21 = T::from_f64(2.0) * (t0 * t14 - t5 * t15) + t6 * t4;
+        let t22 = -px + T::from_f64(2.0) * t0 * t21 + t2;
+        let t23 = py + T::from_f64(2.0) * t5 * t21 - t3;
+        let t24 = rho_h + pz - t6 * t21;
+        let t25 = (-t22).hypot(t23);
+        let t26 = t24.hypot(t25);
+        let t27 = T::from_f64(1.0) / t26;
+        let t28 = t27 * (T::from_f64(0.5) * t26 - T::from_f64(0.5) * (r - rho_h));
+        let t29 = t28 * t22;
+        let t30 = t28 * t23;
+        let t31 = -t28 * t24;
+        let t32 = t6 * t24;
+        let t33 = t1 * (-(t22 * t9) + t23 * t11 + T::from_f64(2.0) * t32 * t8);
+        let t34 = -t33;
+        let t35 = t5 * t23;
+        let t36 = -T::from_f64(2.0) * t32;
+        let t37 = t0 * t22;
+        let t38 = q2 * t21;
+        let t39 = -T::from_f64(2.0) * t38;
+        let t40 = q1 * t21;
+        let t41 = -T::from_f64(2.0) * t40;
+        let t42 = q3 * t21;
+        let t43 = q0 * t21;
+        let gap = -rho_h - r + t26;
+        let d1 = -t33 * t27;
+        let d2 = t27
+            * (t1
+                * (t22 * (T::from_f64(4.0) * t0 * t13 - cos_angle)
+                    + t23 * (sin_angle + T::from_f64(4.0) * t5 * t13)
+                    - T::from_f64(2.0) * t32 * t13) + t10 * t10 + t12 * t12
+                + t7 * (t20 * t20)) - t34 * t34 / (t26 * t26 * t26);
         let grad = SMatrix::<
             T,
             7,
             1,
         >::from_row_slice(
             &[
-                t32
-                    * (t17 * (T::from_f64(4.0) * t40 + t41)
-                        - t27 * (T::from_f64(1.0) - T::from_f64(4.0) * t2 * t17)),
-                -t32
-                    * (t9 * (T::from_f64(4.0) * t42 + t41)
-                        - t28 * (T::from_f64(1.0) - T::from_f64(4.0) * t10 * t9)),
-                t32
-                    * (T::from_f64(2.0) * (t42 + t40) * t18
-                        + t29 * (T::from_f64(1.0) - t19)),
-                -t32
-                    * (t27 * (t44 + T::from_f64(4.0) * t2 * t23)
-                        + t28 * (t46 + T::from_f64(4.0) * t10 * t23)
-                        - T::from_f64(2.0) * t37 * t23),
-                t32
+                t27
+                    * (t0 * (T::from_f64(4.0) * t35 + t36)
+                        - t22 * (T::from_f64(1.0) - T::from_f64(4.0) * (t0 * t0))),
+                -t27
+                    * (t5 * (T::from_f64(4.0) * t37 + t36)
+                        - t23 * (T::from_f64(1.0) - T::from_f64(4.0) * (t5 * t5))),
+                t27
+                    * (T::from_f64(2.0) * (t37 + t35) * t6
+                        + t24 * (T::from_f64(1.0) - t7)),
+                -t27
+                    * (t22 * (t39 + T::from_f64(4.0) * t0 * t16)
+                        + t23 * (t41 + T::from_f64(4.0) * t5 * t16)
+                        - T::from_f64(2.0) * t32 * t16),
+                t27
                     * (T::from_f64(2.0)
-                        * (t27 * (t47 - t2 * t24) + t28 * (t48 - t10 * t24))
-                        + t29 * (T::from_f64(4.0) * t45 + t18 * t24)),
-                t32
+                        * (t22 * (t42 - t0 * t17) + t23 * (t43 - t5 * t17))
+                        + t24 * (T::from_f64(4.0) * t40 + t6 * t17)),
+                t27
                     * (T::from_f64(2.0)
-                        * (t27 * (t48 - t2 * t49) - t28 * (t47 + t10 * t49))
-                        + t29 * (T::from_f64(4.0) * t43 + t18 * t49)),
-                -t32
-                    * (t27 * (t46 - T::from_f64(4.0) * t2 * t25)
-                        - t28 * (t44 + T::from_f64(4.0) * t10 * t25)
-                        + T::from_f64(2.0) * t37 * t25),
+                        * (t22 * (t43 - t0 * t19) - t23 * (t42 + t5 * t19))
+                        + t24 * (T::from_f64(4.0) * t38 + t6 * t19)),
+                -t27
+                    * (t22 * (t41 - T::from_f64(4.0) * t0 * t18)
+                        - t23 * (t39 + T::from_f64(4.0) * t5 * t18)
+                        + T::from_f64(2.0) * t32 * t18),
             ],
         );
-        let normal = Vector3::new(-t27 * t32, t28 * t32, t29 * t32);
-        let point = Vector3::new(t5 - t34, t6 + t35, -rho_h - t36);
-        let axial = -(T::from_f64(2.0) * (t2 * (-t5 + px + t34) + t10 * (t6 - py + t35)))
-            - t18 * (rho_h + pz + t36);
+        let normal = Vector3::new(-t22 * t27, t23 * t27, t24 * t27);
+        let point = Vector3::new(t2 - t29, t3 + t30, -rho_h - t31);
+        let axial = -(T::from_f64(2.0) * (t0 * (-t2 + px + t29) + t5 * (t3 - py + t30)))
+            - t6 * (rho_h + pz + t31);
         (gap, d1, d2, grad, normal, point, axial)
     }
     /// Contact pair: the peg's rim torus against the bore wall, angle along the rim circle (body). Gap g (m, negative = penetration), dg/dangle and d2g/dangle2 (m/rad, m/rad^2), gradient dg/d(px, py, pz, q0..q3), unit force direction on the peg, contact point (m) and its axial coordinate along the peg from the centre of mass (m).
@@ -201,7 +192,7 @@ pub mod compliant_peg_3d {
     /// - `axial`: scalar
     ///
     /// # Cost
-    /// 55 add/sub, 108 mul, 2 div, 0 sqrt, 2 transcendental, 0 branches; 47 `let`s.
+    /// 55 add/sub, 107 mul, 2 div, 0 sqrt, 2 transcendental, 0 branches; 47 `let`s.
     #[inline]
     pub fn rim_wall<T: Real>(
         x: &SVector<T, 7>,
@@ -233,13 +224,13 @@ pub mod compliant_peg_3d {
         let t10 = q0 * q1;
         let (sin_angle, cos_angle) = angle.sin_cos();
         let t11 = r - rho_p;
-        let t12 = -(T::from_f64(2.0) * (t0 + t8)) + T::from_f64(1.0);
-        let t13 = -rho_p + T::from_f64(0.5) * l;
+        let t12 = T::from_f64(1.0) - T::from_f64(2.0) * (t0 + t8);
+        let t13 = T::from_f64(0.5) * l - rho_p;
         let t14 = T::from_f64(2.0) * q0 * t13;
         let t15 = q1 * t13;
         let t16 = -q3 * t13;
-        let t17 = -(T::from_f64(2.0) * (t0 + t1)) + T::from_f64(1.0);
-        let t18 = -(T::from_f64(2.0) * (t1 + t8)) + T::from_f64(1.0);
+        let t17 = T::from_f64(1.0) - T::from_f64(2.0) * (t0 + t1);
+        let t18 = T::from_f64(1.0) - T::from_f64(2.0) * (t1 + t8);
         let t19 = T::from_f64(2.0) * t7 * cos_angle + t18 * sin_angle;
         let t20 = T::from_f64(2.0) * t7 * sin_angle - t18 * cos_angle;
         let t21 = t11 * t20;
@@ -247,12 +238,13 @@ pub mod compliant_peg_3d {
         let t23 = q2 * t13;
         let t24 = q3 * sin_angle;
         let t25 = q3 * cos_angle;
-        let t26 = -t9 + t10;
-        let t27 = -t2 + t3;
-        let t28 = -(t17 * cos_angle) + T::from_f64(2.0) * t27 * sin_angle;
+        let t26 = t10 - t9;
+        let t27 = t3 - t2;
+        let t28 = T::from_f64(2.0) * t27 * sin_angle - t17 * cos_angle;
         let t29 = t17 * sin_angle + T::from_f64(2.0) * t27 * cos_angle;
         let t30 = t11 * t29;
-        let t31 = t11 * (-((-t4 + t5) * cos_angle) + (t9 + t10) * sin_angle);
+        let t31 = T::from_f64(2.0)
+            * (t11 * ((t9 + t10) * sin_angle - (t5 - t4) * cos_angle));
         let t32 = t11 * t28 - px + T::from_f64(2.0) * t6 * t13;
         let t33 = t11 * t19 + py + T::from_f64(2.0) * t26 * t13;
         let t34 = (-t32).hypot(t33);
@@ -284,13 +276,11 @@ pub mod compliant_peg_3d {
                 t35
                     * (T::from_f64(2.0) * t32 * (q2 * sin_angle * t11 + t16)
                         - t33
-                            * (-(t11
-                                * (-(T::from_f64(2.0) * t43) + T::from_f64(4.0) * t44))
-                                + t14)),
+                            * (t14
+                                - t11 * (T::from_f64(4.0) * t44 - T::from_f64(2.0) * t43))),
                 -t35
                     * (t32
-                        * (-(t11 * (-(T::from_f64(4.0) * t43) + T::from_f64(2.0) * t44))
-                            + t14)
+                        * (t14 - t11 * (T::from_f64(2.0) * t44 - T::from_f64(4.0) * t43))
                         + T::from_f64(2.0) * t33 * (t16 + q1 * cos_angle * t11)),
                 -t35
                     * (t32
@@ -299,15 +289,16 @@ pub mod compliant_peg_3d {
                                 + T::from_f64(2.0) * q0 * sin_angle)
                             + T::from_f64(2.0) * t15)
                         - t33
-                            * (-(t11
-                                * (T::from_f64(2.0) * q0 * cos_angle
-                                    - T::from_f64(4.0) * t24)) + T::from_f64(2.0) * t23)),
+                            * (T::from_f64(2.0) * t23
+                                - t11
+                                    * (T::from_f64(2.0) * q0 * cos_angle
+                                        - T::from_f64(4.0) * t24))),
             ],
         );
         let normal = Vector3::new(t36, -t37, T::from_f64(0.0));
-        let point = Vector3::new(-t39, t40, T::from_f64(2.0) * t31 + pz - t22);
+        let point = Vector3::new(-t39, t40, t31 + pz - t22);
         let axial = -(T::from_f64(2.0) * (t6 * (px + t39) - t26 * (py - t40)))
-            - t12 * (-(T::from_f64(2.0) * t31) + t22);
+            - t12 * (t22 - t31);
         (gap, d1, d2, grad, normal, point, axial)
     }
     /// Contact pair: the peg's rim torus against the block's top face z = 0, angle along the rim circle. Gap g (m, negative = penetration), dg/dangle and d2g/dangle2 (m/rad, m/rad^2), gradient dg/d(px, py, pz, q0..q3), unit force direction on the peg, contact point (m) and its axial coordinate along the peg from the centre of mass (m).
@@ -359,20 +350,20 @@ pub mod compliant_peg_3d {
         let (sin_angle, cos_angle) = angle.sin_cos();
         let t11 = r - rho_p;
         let t12 = -T::from_f64(0.5) * rho_p;
-        let t13 = -(T::from_f64(2.0) * (t0 + t7)) + T::from_f64(1.0);
-        let t14 = -rho_p + T::from_f64(0.5) * l;
+        let t13 = T::from_f64(1.0) - T::from_f64(2.0) * (t0 + t7);
+        let t14 = T::from_f64(0.5) * l - rho_p;
         let t15 = -T::from_f64(2.0) * t6 * t14;
         let t16 = t11
             * (T::from_f64(2.0) * (t2 + t3) * cos_angle
-                + (-(T::from_f64(2.0) * (t1 + t7)) + T::from_f64(1.0)) * sin_angle);
+                + (T::from_f64(1.0) - T::from_f64(2.0) * (t1 + t7)) * sin_angle);
         let t17 = t13 * t14;
-        let t18 = -t8 + t9;
-        let t19 = -t4 + t5;
-        let t20 = t11 * (-(t19 * cos_angle) + t10 * sin_angle);
+        let t18 = t9 - t8;
+        let t19 = t5 - t4;
+        let t20 = t11 * (t10 * sin_angle - t19 * cos_angle);
         let t21 = T::from_f64(2.0) * t18 * t14;
         let t22 = -t11
-            * (-((-(T::from_f64(2.0) * (t0 + t1)) + T::from_f64(1.0)) * cos_angle)
-                + T::from_f64(2.0) * (-t2 + t3) * sin_angle);
+            * (T::from_f64(2.0) * (t3 - t2) * sin_angle
+                - (T::from_f64(1.0) - T::from_f64(2.0) * (t0 + t1)) * cos_angle);
         let gap = -rho_p + T::from_f64(2.0) * t20 + pz - t17;
         let d1 = T::from_f64(2.0) * (t11 * (t19 * sin_angle + t10 * cos_angle));
         let d2 = -T::from_f64(2.0) * t20;
@@ -388,8 +379,8 @@ pub mod compliant_peg_3d {
                 T::from_f64(2.0) * (q1 * sin_angle - q2 * cos_angle) * t11,
                 T::from_f64(2.0) * (q3 * cos_angle + q0 * sin_angle) * t11
                     + T::from_f64(4.0) * q1 * t14,
-                -(T::from_f64(2.0) * (q0 * cos_angle - q3 * sin_angle) * t11)
-                    + T::from_f64(4.0) * q2 * t14,
+                T::from_f64(4.0) * q2 * t14
+                    - T::from_f64(2.0) * (q0 * cos_angle - q3 * sin_angle) * t11,
                 T::from_f64(2.0) * (q2 * sin_angle + q1 * cos_angle) * t11,
             ],
         );
@@ -452,20 +443,20 @@ pub mod compliant_peg_3d {
         let t10 = t8 + t9;
         let (sin_angle, cos_angle) = angle.sin_cos();
         let t11 = r - rho_p;
-        let t12 = -(T::from_f64(2.0) * (t0 + t7)) + T::from_f64(1.0);
-        let t13 = -rho_p + T::from_f64(0.5) * l;
+        let t12 = T::from_f64(1.0) - T::from_f64(2.0) * (t0 + t7);
+        let t13 = T::from_f64(0.5) * l - rho_p;
         let t14 = -T::from_f64(2.0) * t6 * t13;
         let t15 = t11
             * (T::from_f64(2.0) * (t2 + t3) * cos_angle
-                + (-(T::from_f64(2.0) * (t1 + t7)) + T::from_f64(1.0)) * sin_angle);
+                + (T::from_f64(1.0) - T::from_f64(2.0) * (t1 + t7)) * sin_angle);
         let t16 = t12 * t13;
-        let t17 = -t8 + t9;
-        let t18 = -t4 + t5;
-        let t19 = t11 * (-(t18 * cos_angle) + t10 * sin_angle);
+        let t17 = t9 - t8;
+        let t18 = t5 - t4;
+        let t19 = t11 * (t10 * sin_angle - t18 * cos_angle);
         let t20 = T::from_f64(2.0) * t17 * t13;
         let t21 = -t11
-            * (-((-(T::from_f64(2.0) * (t0 + t1)) + T::from_f64(1.0)) * cos_angle)
-                + T::from_f64(2.0) * (-t2 + t3) * sin_angle);
+            * (T::from_f64(2.0) * (t3 - t2) * sin_angle
+                - (T::from_f64(1.0) - T::from_f64(2.0) * (t0 + t1)) * cos_angle);
         let t22 = -T::from_f64(0.5) * (rho_p + h_b);
         let gap = h_b - rho_p + T::from_f64(2.0) * t19 + pz - t16;
         let d1 = T::from_f64(2.0) * (t11 * (t18 * sin_angle + t10 * cos_angle));
@@ -482,8 +473,8 @@ pub mod compliant_peg_3d {
                 T::from_f64(2.0) * (q1 * sin_angle - q2 * cos_angle) * t11,
                 T::from_f64(2.0) * (q3 * cos_angle + q0 * sin_angle) * t11
                     + T::from_f64(4.0) * q1 * t13,
-                -(T::from_f64(2.0) * (q0 * cos_angle - q3 * sin_angle) * t11)
-                    + T::from_f64(4.0) * q2 * t13,
+                T::from_f64(4.0) * q2 * t13
+                    - T::from_f64(2.0) * (q0 * cos_angle - q3 * sin_angle) * t11,
                 T::from_f64(2.0) * (q2 * sin_angle + q1 * cos_angle) * t11,
             ],
         );
@@ -665,7 +656,7 @@ pub mod compliant_peg_3d {
     /// - `ydot`: vector of 15
     ///
     /// # Cost
-    /// 48 add/sub, 65 mul, 4 div, 0 sqrt, 0 transcendental, 0 branches; 22 `let`s.
+    /// 47 add/sub, 64 mul, 4 div, 0 sqrt, 0 transcendental, 0 branches; 23 `let`s.
     #[inline]
     pub fn rhs<T: Real>(
         y: &SVector<T, 15>,
@@ -715,12 +706,13 @@ pub mod compliant_peg_3d {
         let t13 = ma_y + ty;
         let t14 = ma_z + tz;
         let t15 = T::from_f64(1.0) / m;
-        let t16 = -(T::from_f64(2.0) * (t0 + t8)) + T::from_f64(1.0);
-        let t17 = -(T::from_f64(2.0) * (t0 + t1)) + T::from_f64(1.0);
-        let t18 = -(T::from_f64(2.0) * (t1 + t8)) + T::from_f64(1.0);
-        let t19 = -t9 + t10;
-        let t20 = -t2 + t3;
-        let t21 = -t4 + t5;
+        let t16 = T::from_f64(1.0) - T::from_f64(2.0) * (t0 + t8);
+        let t17 = T::from_f64(1.0) - T::from_f64(2.0) * (t0 + t1);
+        let t18 = T::from_f64(1.0) - T::from_f64(2.0) * (t1 + t8);
+        let t19 = t10 - t9;
+        let t20 = t3 - t2;
+        let t21 = t5 - t4;
+        let t22 = wz * (j_t - j_a);
         SMatrix::<
             T,
             15,
@@ -737,15 +729,14 @@ pub mod compliant_peg_3d {
                 (fa_x + fx) * t15,
                 t15 * (fa_y + fy),
                 t15 * (fa_z + fz) - g,
-                (wz * (j_t - j_a) * wy + T::from_f64(2.0) * (t7 * t13 - t21 * t14)
-                    + t17 * t12) / j_t,
-                (-(wz * (-j_a + j_t) * wx)
-                    + T::from_f64(2.0) * (-(t20 * t12) + t11 * t14) + t18 * t13) / j_t,
+                (t22 * wy + T::from_f64(2.0) * (t7 * t13 - t21 * t14) + t17 * t12) / j_t,
+                (-(t22 * wx) + T::from_f64(2.0) * (t11 * t14 - t20 * t12) + t18 * t13)
+                    / j_t,
                 (T::from_f64(2.0) * (t6 * t12 - t19 * t13) + t16 * t14) / j_a,
                 fa_x * vx + fa_y * vy + fa_z * vz
-                    + ma_x * (T::from_f64(2.0) * (-(t20 * wy) + t6 * wz) + t17 * wx)
+                    + ma_x * (T::from_f64(2.0) * (t6 * wz - t20 * wy) + t17 * wx)
                     + ma_y * (T::from_f64(2.0) * (t7 * wx - t19 * wz) + t18 * wy)
-                    + ma_z * (T::from_f64(2.0) * (-(t21 * wx) + t11 * wy) + t16 * wz),
+                    + ma_z * (T::from_f64(2.0) * (t11 * wy - t21 * wx) + t16 * wz),
                 sdot,
             ],
         )

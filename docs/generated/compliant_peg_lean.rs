@@ -88,43 +88,43 @@ pub mod compliant_peg_lean {
         let t8 = t5 * t6;
         let t9 = l_c - rho_p;
         let t10 = r - rho_p;
-        let t11 = -rho_h + z;
+        let t11 = z - rho_h;
         let delta_edge_left = r + t2 - x + sin_theta * t11 - T::from_f64(2.0) * t3 * t7;
         let pen_edge_left = delta_edge_left.max0();
         let t12 = pen_edge_left * pen_edge_left.sqrt();
         let t13 = T::from_f64(1.0) - T::from_f64(2.0) * t7;
         let t14 = cos_theta * t11;
-        let t15 = k_edge * t12;
+        let elastic_edge_left = k_edge * t12;
         let step_delta_edge_left = delta_edge_left.step();
-        let t16 = sin_theta * (l_c - rho_p + rho_p * sin_theta)
+        let t15 = sin_theta * (l_c - rho_p + rho_p * sin_theta)
             + cos_theta * (r - T::from_f64(2.0) * rho_p * t7);
-        let slip_wall_right = zdot - thetadot * t16;
-        let t17 = v_s.hypot(slip_wall_right);
+        let slip_wall_right = zdot - thetadot * t15;
+        let t16 = v_s.hypot(slip_wall_right);
         let delta_wall_right = r + t2 + x + sin_theta * t9 - T::from_f64(2.0) * t7 * t10;
         let pen_wall_right = delta_wall_right.max0();
-        let t18 = pen_wall_right * pen_wall_right.sqrt();
-        let elastic_wall_right = k_wall * t18;
+        let t17 = pen_wall_right * pen_wall_right.sqrt();
+        let elastic_wall_right = k_wall * t17;
         let step_delta_wall_right = delta_wall_right.step();
-        let t19 = cos_theta * t9 - T::from_f64(2.0) * t8 * t10;
-        let delta_rate_wall_right = xdot + thetadot * t19;
-        let t20 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
-        let t21 = sin_theta * t3 - t14;
-        let t22 = cos_theta * t21 + r * sin_theta;
-        let t23 = -(sin_theta * t21) + r * cos_theta;
-        let slip_edge_left = sin_theta * (xdot + thetadot * t22)
-            + cos_theta * (zdot + thetadot * t23);
-        let t24 = t14 - T::from_f64(2.0) * t8 * t3;
-        let delta_rate_edge_left = -(xdot * t13) + zdot * sin_theta + thetadot * t24;
-        let t25 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
-        let t26 = v_s.hypot(slip_edge_left);
-        let t27 = -t25 + T::from_f64(1.0);
-        let t28 = -t20 + T::from_f64(1.0);
-        let t29 = t25 / t26;
-        let t30 = t29 * (mu * slip_edge_left);
-        let t31 = t20 / t17;
-        let t32 = elastic_wall_right * t31;
-        let t33 = mu * slip_wall_right;
-        let t34 = step_delta_edge_left - t27;
+        let t18 = cos_theta * t9 - T::from_f64(2.0) * t8 * t10;
+        let delta_rate_wall_right = xdot + thetadot * t18;
+        let t19 = (T::from_f64(1.0) + hc_alpha * delta_rate_wall_right).max0();
+        let t20 = sin_theta * t3 - t14;
+        let t21 = cos_theta * t20 + r * sin_theta;
+        let t22 = r * cos_theta - sin_theta * t20;
+        let slip_edge_left = sin_theta * (xdot + thetadot * t21)
+            + cos_theta * (zdot + thetadot * t22);
+        let t23 = t14 - T::from_f64(2.0) * t8 * t3;
+        let delta_rate_edge_left = -(xdot * t13) + zdot * sin_theta + thetadot * t23;
+        let t24 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
+        let t25 = v_s.hypot(slip_edge_left);
+        let t26 = T::from_f64(1.0) - t24;
+        let t27 = T::from_f64(1.0) - t19;
+        let t28 = t24 / t25;
+        let t29 = t28 * (mu * slip_edge_left);
+        let t30 = t19 / t16;
+        let t31 = elastic_wall_right * t30;
+        let t32 = mu * slip_wall_right;
+        let t33 = step_delta_edge_left - t26;
         SMatrix::<
             T,
             8,
@@ -134,23 +134,24 @@ pub mod compliant_peg_lean {
                 xdot,
                 zdot,
                 thetadot,
-                (-(t15 * (-(t13 * t34) + t30 * sin_theta))
+                (-(elastic_edge_left * (t29 * sin_theta - t13 * t33))
                     - elastic_wall_right
-                        * (-T::from_f64(1.0) + step_delta_wall_right + t20) + t0 + t1)
+                        * (-T::from_f64(1.0) + step_delta_wall_right + t19) + t0 + t1)
                     / m,
-                -(sin_theta * (t15 * t34 + f2) + cos_theta * (-f1 + t30 * t15)
-                    + t32 * t33) / m,
-                (m_2 - t15 * (t24 * t34 + t30 * (sin_theta * t22 + cos_theta * t23))
+                -(sin_theta * (elastic_edge_left * t33 + f2)
+                    + cos_theta * (t29 * elastic_edge_left - f1) + t31 * t32) / m,
+                (m_2
+                    - elastic_edge_left
+                        * (t23 * t33 + t29 * (sin_theta * t21 + cos_theta * t22))
                     + elastic_wall_right
-                        * (-(t19 * (step_delta_wall_right - t28)) + t33 * t31 * t16))
-                    / j,
+                        * (t32 * t30 * t15 - t18 * (step_delta_wall_right - t27))) / j,
                 xdot * (t0 + t1) + zdot * (f1 * cos_theta - f2 * sin_theta)
                     + thetadot * m_2,
                 mu
-                    * (t29 * t15 * (slip_edge_left * slip_edge_left)
-                        + t32 * (slip_wall_right * slip_wall_right))
-                    - t15 * delta_rate_edge_left * t27
-                    - elastic_wall_right * delta_rate_wall_right * t28,
+                    * (t28 * elastic_edge_left * (slip_edge_left * slip_edge_left)
+                        + t31 * (slip_wall_right * slip_wall_right))
+                    - elastic_edge_left * delta_rate_edge_left * t26
+                    - elastic_wall_right * delta_rate_wall_right * t27,
             ],
         )
     }
@@ -164,7 +165,7 @@ pub mod compliant_peg_lean {
     /// - `jac`: 8×8 matrix
     ///
     /// # Cost
-    /// 199 add/sub, 442 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 167 `let`s.
+    /// 196 add/sub, 439 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 165 `let`s.
     #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
@@ -205,156 +206,154 @@ pub mod compliant_peg_lean {
         let t14 = sin_theta * t12;
         let t15 = l_c - rho_p + rho_p * sin_theta;
         let t16 = r - T::from_f64(2.0) * rho_p * t10;
-        let t17 = cos_theta * t16;
-        let t18 = sin_theta * t15;
-        let t19 = T::from_f64(1.0) / m;
-        let t20 = T::from_f64(1.0) / j;
-        let t21 = sin_theta * sin_theta;
-        let t22 = cos_theta * cos_theta;
-        let t23 = t17 + t18;
-        let t24 = -rho_h + z;
-        let t25 = sin_theta * t24;
-        let delta_edge_left = r + t5 - x + t25 - T::from_f64(2.0) * t6 * t10;
+        let t17 = T::from_f64(1.0) / m;
+        let t18 = T::from_f64(1.0) / j;
+        let t19 = sin_theta * sin_theta;
+        let t20 = cos_theta * cos_theta;
+        let t21 = cos_theta * t16 + sin_theta * t15;
+        let t22 = z - rho_h;
+        let t23 = sin_theta * t22;
+        let delta_edge_left = r + t5 - x + t23 - T::from_f64(2.0) * t6 * t10;
         let pen_edge_left = delta_edge_left.max0();
-        let t26 = pen_edge_left * pen_edge_left.sqrt();
-        let t27 = T::from_f64(1.0) - T::from_f64(2.0) * t10;
-        let t28 = cos_theta * t24;
-        let t29 = k_edge * t26;
+        let t24 = pen_edge_left * pen_edge_left.sqrt();
+        let t25 = T::from_f64(1.0) - T::from_f64(2.0) * t10;
+        let t26 = cos_theta * t22;
+        let elastic_edge_left = k_edge * t24;
         let step_delta_edge_left = delta_edge_left.step();
-        let t30 = t18 + t17;
         let delta_wall_right = r + t5 + x + t14 - T::from_f64(2.0) * t10 * t13;
         let pen_wall_right = delta_wall_right.max0();
-        let t31 = pen_wall_right * pen_wall_right.sqrt();
-        let elastic_wall_right = k_wall * t31;
+        let t27 = pen_wall_right * pen_wall_right.sqrt();
+        let elastic_wall_right = k_wall * t27;
         let step_delta_wall_right = delta_wall_right.step();
-        let t32 = cos_theta * t12 - T::from_f64(2.0) * t11 * t13;
-        let delta_rate_wall_right = xdot + thetadot * t32;
-        let t33 = T::from_f64(1.0) + hc_alpha * delta_rate_wall_right;
-        let t34 = t33.max0();
-        let t35 = sin_theta * t6 - t28;
-        let t36 = cos_theta * t35;
-        let t37 = t36 + r * sin_theta;
-        let t38 = xdot + thetadot * t37;
-        let t39 = t28 - T::from_f64(2.0) * t11 * t6;
-        let delta_rate_edge_left = -(xdot * t27) + zdot * sin_theta + thetadot * t39;
-        let t40 = T::from_f64(1.0) + hc_alpha * delta_rate_edge_left;
-        let t41 = t40.max0();
-        let t42 = -t41 + T::from_f64(1.0);
-        let t43 = -t34 + T::from_f64(1.0);
-        let t44 = step_delta_edge_left - t42;
-        let t45 = t26 * t44;
+        let t28 = cos_theta * t12 - T::from_f64(2.0) * t11 * t13;
+        let delta_rate_wall_right = xdot + thetadot * t28;
+        let t29 = T::from_f64(1.0) + hc_alpha * delta_rate_wall_right;
+        let t30 = t29.max0();
+        let t31 = sin_theta * t6 - t26;
+        let t32 = cos_theta * t31;
+        let t33 = t32 + r * sin_theta;
+        let t34 = xdot + thetadot * t33;
+        let t35 = t26 - T::from_f64(2.0) * t11 * t6;
+        let delta_rate_edge_left = -(xdot * t25) + zdot * sin_theta + thetadot * t35;
+        let t36 = T::from_f64(1.0) + hc_alpha * delta_rate_edge_left;
+        let t37 = t36.max0();
+        let t38 = T::from_f64(1.0) - t37;
+        let t39 = T::from_f64(1.0) - t30;
+        let t40 = step_delta_edge_left - t38;
+        let t41 = t24 * t40;
         let sqrt_pen_edge_left = pen_edge_left.sqrt();
-        let t46 = t27 * t27;
-        let t47 = step_delta_edge_left * step_delta_edge_left;
+        let t42 = t25 * t25;
+        let t43 = step_delta_edge_left * step_delta_edge_left;
         let sqrt_pen_wall_right = pen_wall_right.sqrt();
-        let t48 = step_delta_wall_right * step_delta_wall_right;
-        let t49 = r + cos_theta * t6 + t25;
-        let t50 = -T::from_f64(1.5) * t48;
-        let t51 = thetadot * t30;
-        let t52 = t10 - t9 * t9;
-        let t53 = -(t6 * t52) + t25;
-        let t54 = -(t13 * t52) + t14;
-        let t55 = t3 - t4;
-        let t56 = t33.step();
-        let t57 = t32 * t32;
-        let t58 = sin_theta * t35;
-        let t59 = -t58 + r * cos_theta;
-        let t60 = zdot + thetadot * t59;
-        let slip_edge_left = sin_theta * t38 + cos_theta * t60;
-        let t61 = v_s.hypot(slip_edge_left);
-        let t62 = T::from_f64(1.0) / t61;
-        let t63 = sin_theta * t37 + cos_theta * t59;
-        let t64 = slip_edge_left * slip_edge_left;
-        let slip_wall_right = zdot - t51;
-        let t65 = v_s.hypot(slip_wall_right);
-        let t66 = T::from_f64(1.0) / t65;
-        let t67 = slip_wall_right * slip_wall_right;
-        let t68 = t40.step();
-        let t69 = T::from_f64(1.0) / (t61 * t61 * t61);
-        let t70 = T::from_f64(1.0) / (t65 * t65 * t65);
-        let t71 = hc_alpha * t68;
-        let t72 = t71 * t39;
-        let t73 = t72 * t29 * sin_theta;
-        let t74 = t39 * t39;
-        let t75 = hc_alpha * t56;
-        let t76 = elastic_wall_right * t75;
-        let t77 = t75 * t32;
-        let t78 = T::from_f64(1.5) * t34;
-        let t79 = t78 - T::from_f64(1.5);
-        let t80 = -(T::from_f64(1.5) * t41) + T::from_f64(1.5);
-        let t81 = step_delta_edge_left * sqrt_pen_edge_left;
-        let t82 = t81 * t80;
-        let t83 = thetadot * t26;
-        let t84 = t11 * t83;
-        let t85 = T::from_f64(2.0) * t84 * t71;
-        let t86 = t82 * t27 + t85;
-        let t87 = slip_edge_left * t62;
-        let t88 = t71 * t87;
-        let t89 = t88 * t83;
-        let t90 = mu * sin_theta;
-        let t91 = t83 * cos_theta;
-        let t92 = t91 * t71;
-        let t93 = sqrt_pen_edge_left * t47;
-        let t94 = T::from_f64(1.5) * t93 * t27;
-        let t95 = mu * cos_theta;
-        let t96 = mu * t21;
-        let t97 = t87 * t41;
-        let t98 = sin_theta * t49 + t36;
-        let t99 = -T::from_f64(1.5) * t34;
-        let t100 = t64 * t69;
-        let t101 = t41 * (t62 - t100);
-        let t102 = t88 * t39;
-        let t103 = t101 * t63 + t102;
-        let t104 = t97 * step_delta_edge_left;
-        let t105 = t67 * t70;
-        let t106 = t88 * t27;
-        let t107 = t88 * sin_theta;
-        let t108 = t34 * (t66 - t105);
-        let t109 = slip_wall_right * t66;
-        let t110 = mu * t63;
-        let t111 = sqrt_pen_edge_left * (t39 * t47 + t104 * t110);
-        let t112 = mu * t34;
-        let t113 = t109 * t30;
-        let t114 = step_delta_wall_right * sqrt_pen_wall_right;
-        let t115 = t114 * t32;
-        let t116 = t81 * t39;
-        let t117 = t97 * t116;
-        let t118 = t72 * t27;
-        let t119 = t81 * t41;
-        let t120 = -(T::from_f64(1.5) * t119 * t27) + t85;
-        let t121 = t62 * t64;
-        let t122 = t121 * mu;
-        let t123 = t66 * t67;
-        let t124 = t114 * k_wall;
-        let t125 = t69 * (slip_edge_left * slip_edge_left * slip_edge_left);
-        let t126 = t41 * (-t125 + T::from_f64(2.0) * t87);
-        let t127 = t70 * (slip_wall_right * slip_wall_right * slip_wall_right);
-        let t128 = t41 * t63;
-        let t129 = t34 * t30;
-        let t130 = -(t82 * sin_theta) + t92;
-        let t131 = T::from_f64(2.0) * t11 * xdot + zdot * cos_theta - thetadot * t53;
-        let t132 = t26 * t131;
-        let t133 = t71 * t132;
-        let t134 = -(t116 * t80) + t133;
-        let t135 = -(cos_theta * t49) + t58;
-        let t136 = cos_theta * (-t38 + thetadot * t98)
-            + sin_theta * (thetadot * t135 + t60);
-        let t137 = t100 * t136;
-        let t138 = T::from_f64(1.5) * t93 * t39 + t134;
-        let t139 = thetadot * t31;
-        let t140 = t75 * t54;
-        let t141 = t139 * t140;
-        let t142 = -t101 * t95 + t71 * t27;
-        let t143 = -(cos_theta * (rho_p * (sin_theta - T::from_f64(2.0) * t11) + t15))
-            + sin_theta * t16;
-        let t144 = t88 * t131;
-        let t145 = t115 * t34;
-        let t146 = t108 * t30;
-        let t147 = t26 * (step_delta_edge_left - t42 + t110 * t88 * thetadot);
-        let t148 = t115 * (t99 + T::from_f64(1.5)) + t141;
-        let t149 = t26 * t136;
-        let t150 = t139 * t143;
-        let t151 = -t71 * (t122 + delta_rate_edge_left) + t42;
+        let t44 = step_delta_wall_right * step_delta_wall_right;
+        let t45 = T::from_f64(1.5) * t44;
+        let t46 = r + cos_theta * t6 + t23;
+        let t47 = t10 - t9 * t9;
+        let t48 = t23 - t6 * t47;
+        let t49 = t14 - t13 * t47;
+        let t50 = thetadot * t21;
+        let t51 = t3 - t4;
+        let t52 = t29.step();
+        let t53 = t28 * t28;
+        let t54 = sin_theta * t31;
+        let t55 = r * cos_theta - t54;
+        let t56 = zdot + thetadot * t55;
+        let slip_edge_left = sin_theta * t34 + cos_theta * t56;
+        let t57 = v_s.hypot(slip_edge_left);
+        let t58 = T::from_f64(1.0) / t57;
+        let t59 = sin_theta * t33 + cos_theta * t55;
+        let t60 = slip_edge_left * slip_edge_left;
+        let t61 = t36.step();
+        let t62 = T::from_f64(1.0) / (t57 * t57 * t57);
+        let t63 = hc_alpha * t61;
+        let t64 = t63 * t35;
+        let t65 = t64 * elastic_edge_left * sin_theta;
+        let t66 = t35 * t35;
+        let t67 = hc_alpha * t52;
+        let t68 = elastic_wall_right * t67;
+        let t69 = t67 * t28;
+        let t70 = T::from_f64(1.5) * t30;
+        let t71 = t70 - T::from_f64(1.5);
+        let t72 = T::from_f64(1.5) - T::from_f64(1.5) * t37;
+        let t73 = step_delta_edge_left * sqrt_pen_edge_left;
+        let t74 = t73 * t72;
+        let t75 = thetadot * t24;
+        let t76 = t11 * t75;
+        let t77 = T::from_f64(2.0) * t76 * t63;
+        let t78 = t74 * t25 + t77;
+        let t79 = slip_edge_left * t58;
+        let t80 = t63 * t79;
+        let t81 = t80 * t75;
+        let t82 = mu * sin_theta;
+        let t83 = t75 * cos_theta;
+        let t84 = t83 * t63;
+        let t85 = sqrt_pen_edge_left * t43;
+        let t86 = T::from_f64(1.5) * t85 * t25;
+        let t87 = mu * cos_theta;
+        let t88 = mu * t19;
+        let t89 = t79 * t37;
+        let t90 = sin_theta * t46 + t32;
+        let t91 = t60 * t62;
+        let t92 = t37 * (t58 - t91);
+        let t93 = t80 * t35;
+        let t94 = t92 * t59 + t93;
+        let t95 = t89 * step_delta_edge_left;
+        let t96 = t80 * t25;
+        let t97 = t80 * sin_theta;
+        let t98 = mu * t59;
+        let t99 = sqrt_pen_edge_left * (t35 * t43 + t95 * t98);
+        let t100 = step_delta_wall_right * t71;
+        let t101 = t73 * t35;
+        let t102 = t89 * t101;
+        let t103 = t64 * t25;
+        let t104 = t73 * t37;
+        let t105 = t77 - T::from_f64(1.5) * t104 * t25;
+        let t106 = t58 * t60;
+        let t107 = t106 * mu;
+        let t108 = t62 * (slip_edge_left * slip_edge_left * slip_edge_left);
+        let t109 = t37 * (T::from_f64(2.0) * t79 - t108);
+        let t110 = t37 * t59;
+        let t111 = t84 - t74 * sin_theta;
+        let t112 = T::from_f64(2.0) * t11 * xdot + zdot * cos_theta - thetadot * t48;
+        let t113 = t24 * t112;
+        let t114 = t63 * t113;
+        let t115 = t114 - t101 * t72;
+        let t116 = t54 - cos_theta * t46;
+        let t117 = cos_theta * (thetadot * t90 - t34)
+            + sin_theta * (thetadot * t116 + t56);
+        let t118 = t91 * t117;
+        let t119 = T::from_f64(1.5) * t85 * t35 + t115;
+        let t120 = thetadot * t27;
+        let t121 = t67 * t49;
+        let t122 = t120 * t121;
+        let t123 = t63 * t25 - t92 * t87;
+        let t124 = sin_theta * t16
+            - cos_theta * (rho_p * (sin_theta - T::from_f64(2.0) * t11) + t15);
+        let t125 = t80 * t112;
+        let t126 = t24 * (step_delta_edge_left - t38 + t98 * t80 * thetadot);
+        let t127 = t24 * t117;
+        let t128 = t38 - t63 * (t107 + delta_rate_edge_left);
+        let slip_wall_right = zdot - t50;
+        let t129 = v_s.hypot(slip_wall_right);
+        let t130 = T::from_f64(1.0) / t129;
+        let t131 = slip_wall_right * slip_wall_right;
+        let t132 = T::from_f64(1.0) / (t129 * t129 * t129);
+        let t133 = t131 * t132;
+        let t134 = t30 * (t130 - t133);
+        let t135 = slip_wall_right * t130;
+        let t136 = mu * t30;
+        let t137 = t135 * t21;
+        let t138 = step_delta_wall_right * sqrt_pen_wall_right;
+        let t139 = t138 * t28;
+        let t140 = t130 * t131;
+        let t141 = t138 * k_wall;
+        let t142 = t132 * (slip_wall_right * slip_wall_right * slip_wall_right);
+        let t143 = t30 * t21;
+        let t144 = t139 * t30;
+        let t145 = t134 * t21;
+        let t146 = t120 * t124;
+        let t147 = T::from_f64(1.5) - t70;
+        let t148 = t139 * t147 + t122;
         SMatrix::<
             T,
             8,
@@ -385,160 +384,167 @@ pub mod compliant_peg_lean {
                 T::from_f64(1.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                -t19
+                -t17
                     * (k_edge
-                        * (-(T::from_f64(1.5) * (-(t46 * t47) + t104 * t90 * t27)
-                            * sqrt_pen_edge_left) - t27 * t86
-                            + T::from_f64(2.0) * t89 * t90 * t11)
-                        + sqrt_pen_wall_right
-                            * (step_delta_wall_right * (-T::from_f64(1.5) + t78)
-                                + T::from_f64(1.5) * t48) * k_wall),
+                        * (-(T::from_f64(1.5) * (t95 * t82 * t25 - t42 * t43)
+                            * sqrt_pen_edge_left) - t25 * t78
+                            + T::from_f64(2.0) * t81 * t82 * t11)
+                        + sqrt_pen_wall_right * (t100 + t45) * k_wall),
                 k_edge
-                    * (sin_theta * (t94 - t89 * t95) + t27 * t130
-                        - T::from_f64(1.5) * t96 * t97 * t81) * t19,
-                -t19
+                    * (sin_theta * (t86 - t81 * t87) + t25 * t111
+                        - T::from_f64(1.5) * t88 * t89 * t73) * t17,
+                -t17
                     * (k_edge
-                        * (t26
+                        * (t24
                             * (mu
-                                * (t41
-                                    * (-(t62
-                                        * (-(cos_theta * slip_edge_left) + sin_theta * t136))
-                                        + t137 * sin_theta) + t107 * t131)
-                                + T::from_f64(2.0) * t11 * t44) - t27 * t138
-                            + T::from_f64(1.5) * t117 * t90)
+                                * (t37
+                                    * (t118 * sin_theta
+                                        - t58 * (sin_theta * t117 - cos_theta * slip_edge_left))
+                                    + t97 * t112) + T::from_f64(2.0) * t11 * t40) - t25 * t119
+                            + T::from_f64(1.5) * t102 * t82)
                         - k_wall
-                            * (sqrt_pen_wall_right
-                                * (step_delta_wall_right * (T::from_f64(1.5) + t99) + t50)
-                                * t32 + t141) - t3 + t4),
-                -t19 * (-(t29 * (mu * (-(t101 * t21) + t107 * t27) - t71 * t46)) + t76),
-                -(t29 * (-(sin_theta * t142) + t96 * t88)) * t19,
-                -t19 * (-(t29 * (-(t90 * t103) + t118)) + t77 * elastic_wall_right),
+                            * (sqrt_pen_wall_right * (step_delta_wall_right * t147 - t45)
+                                * t28 + t122) - t3 + t4),
+                -t17
+                    * (t68
+                        - elastic_edge_left
+                            * (mu * (t97 * t25 - t92 * t19) - t63 * t42)),
+                -(elastic_edge_left * (t88 * t80 - sin_theta * t123)) * t17,
+                -t17
+                    * (t69 * elastic_wall_right
+                        - elastic_edge_left * (t103 - t82 * t94)),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                -t19
-                    * (-(k_edge * (sin_theta * (t94 - t86) - t87 * t120 * t95))
-                        + T::from_f64(1.5) * t124 * t112 * t109),
+                -t17
+                    * (T::from_f64(1.5) * t141 * t136 * t135
+                        - k_edge * (sin_theta * (t86 - t78) - t79 * t105 * t87)),
                 -(k_edge
-                    * (T::from_f64(1.5) * (t47 * t21 + t104 * t95 * sin_theta)
-                        * sqrt_pen_edge_left + sin_theta * t130 + t89 * mu * t22)) * t19,
-                -t19
+                    * (T::from_f64(1.5) * (t43 * t19 + t95 * t87 * sin_theta)
+                        * sqrt_pen_edge_left + sin_theta * t111 + t81 * mu * t20)) * t17,
+                -t17
                     * (mu
                         * (k_edge
-                            * (t26
-                                * (t41
-                                    * (-(t62 * (sin_theta * slip_edge_left + cos_theta * t136))
-                                        + t137 * cos_theta) + t144 * cos_theta)
-                                + T::from_f64(1.5) * t117 * cos_theta)
+                            * (t24
+                                * (t37
+                                    * (t118 * cos_theta
+                                        - t58 * (sin_theta * slip_edge_left + cos_theta * t117))
+                                    + t125 * cos_theta) + T::from_f64(1.5) * t102 * cos_theta)
                             + k_wall
-                                * (-(t139 * (-(t108 * t143) + t140 * t109))
-                                    + T::from_f64(1.5) * t145 * t109))
-                        + k_edge * (t45 * cos_theta + sin_theta * t138) + t0 + t1),
-                -t19 * (-(t29 * (sin_theta * t142 + t106 * t95)) + t76 * t109 * mu),
-                -t19
+                                * (T::from_f64(1.5) * t144 * t135
+                                    - t120 * (t121 * t135 - t134 * t124)))
+                        + k_edge * (t41 * cos_theta + sin_theta * t119) + t0 + t1),
+                -t17
+                    * (t68 * t135 * mu
+                        - elastic_edge_left * (sin_theta * t123 + t96 * t87)),
+                -t17
                     * (mu
-                        * (t29 * (t101 * t22 + t107 * cos_theta)
-                            + t108 * elastic_wall_right) + t29 * t71 * t21),
-                -t19
+                        * (elastic_edge_left * (t92 * t20 + t97 * cos_theta)
+                            + t134 * elastic_wall_right)
+                        + elastic_edge_left * t63 * t19),
+                -t17
                     * (mu
-                        * (cos_theta * t103 * t29
-                            + elastic_wall_right * (-t146 + t77 * t109)) + t73),
+                        * (cos_theta * t94 * elastic_edge_left
+                            + elastic_wall_right * (t69 * t135 - t145)) + t65),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t20
+                t18
                     * (k_edge
-                        * (-(T::from_f64(2.0) * t147 * t11)
-                            + T::from_f64(1.5) * t111 * t27 - t39 * t86)
+                        * (-(T::from_f64(2.0) * t126 * t11)
+                            + T::from_f64(1.5) * t99 * t25 - t35 * t78)
                         + sqrt_pen_wall_right
-                            * (t32 * (t50 - t79 * step_delta_wall_right)
-                                + T::from_f64(1.5) * t112 * t113 * step_delta_wall_right)
+                            * (t28 * (-t45 - t100)
+                                + T::from_f64(1.5) * t136 * t137 * step_delta_wall_right)
                             * k_wall),
                 k_edge
-                    * (-(t147 * cos_theta) - T::from_f64(1.5) * t111 * sin_theta
-                        - t39 * t130) * t20,
-                -t20
+                    * (-(t126 * cos_theta) - T::from_f64(1.5) * t99 * sin_theta
+                        - t35 * t111) * t18,
+                -t18
                     * (mu
                         * (k_edge
-                            * (t26
-                                * (-(t41
-                                    * (t62
-                                        * (t63 * t136
-                                            + slip_edge_left
-                                                * (-(cos_theta * (t37 - t98)) + sin_theta * (t135 + t59)))
-                                        - t137 * t63)) + t144 * t63)
-                                + T::from_f64(1.5) * t117 * t63)
+                            * (t24
+                                * (t125 * t59
+                                    - t37
+                                        * (t58
+                                            * (t59 * t117
+                                                + slip_edge_left
+                                                    * (sin_theta * (t116 + t55) - cos_theta * (t33 - t90)))
+                                            - t118 * t59)) + T::from_f64(1.5) * t102 * t59)
                             - k_wall
-                                * (-(t31
-                                    * (t143 * (-(t66 * (-slip_wall_right + t51)) + t51 * t105)
-                                        * t34 + t140 * t113 * thetadot))
-                                    + T::from_f64(1.5) * t145 * t113))
+                                * (T::from_f64(1.5) * t144 * t137
+                                    - t27
+                                        * (t124 * (t50 * t133 - t130 * (t50 - slip_wall_right))
+                                            * t30 + t121 * t137 * thetadot)))
                         + k_edge
-                            * (-(t45 * t53) + T::from_f64(1.5) * t93 * t74 + t39 * t134)
+                            * (-(t41 * t48) + T::from_f64(1.5) * t85 * t66 + t35 * t115)
                         + k_wall
-                            * (-((step_delta_wall_right - t43) * t54 * t31)
-                                + T::from_f64(1.5) * sqrt_pen_wall_right * t48 * t57
-                                - t32 * t148)),
-                t20
-                    * (t29 * (t110 * (-(t101 * sin_theta) + t106) + t118)
-                        + t76 * (-t32 + t113 * mu)),
-                -t20
+                            * (-((step_delta_wall_right - t39) * t49 * t27)
+                                + T::from_f64(1.5) * sqrt_pen_wall_right * t44 * t53
+                                - t28 * t148)),
+                t18
+                    * (elastic_edge_left * (t98 * (t96 - t92 * sin_theta) + t103)
+                        + t68 * (t137 * mu - t28)),
+                -t18
                     * (mu
-                        * (t63 * (t101 * cos_theta + t107) * t29
-                            - t146 * elastic_wall_right) + t73),
-                -t20
+                        * (t59 * (t92 * cos_theta + t97) * elastic_edge_left
+                            - t145 * elastic_wall_right) + t65),
+                -t18
                     * (mu
-                        * (t29 * (t101 * (t63 * t63) + t102 * t63)
-                            - elastic_wall_right * (-(t108 * (t23 * t23)) + t77 * t113))
-                        + hc_alpha * (t29 * t68 * t74 + elastic_wall_right * t56 * t57)),
+                        * (elastic_edge_left * (t92 * (t59 * t59) + t93 * t59)
+                            - elastic_wall_right * (t69 * t137 - t134 * (t21 * t21)))
+                        + hc_alpha
+                            * (elastic_edge_left * t61 * t66
+                                + elastic_wall_right * t52 * t53)),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                xdot * t55 - zdot * t2,
+                xdot * t51 - zdot * t2,
                 t2,
-                t55,
+                t51,
                 m_2,
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 k_edge
-                    * (t122 * t120 - T::from_f64(2.0) * t84 * t42
-                        + delta_rate_edge_left * t86)
-                    + t124
-                        * (T::from_f64(1.5) * t123 * t112 + delta_rate_wall_right * t79),
+                    * (t107 * t105 - T::from_f64(2.0) * t76 * t38
+                        + delta_rate_edge_left * t78)
+                    + t141
+                        * (T::from_f64(1.5) * t140 * t136 + delta_rate_wall_right * t71),
                 k_edge
-                    * (t122 * (T::from_f64(1.5) * t119 * sin_theta + t92) - t91 * t42
-                        + delta_rate_edge_left * t130),
+                    * (t107 * (T::from_f64(1.5) * t104 * sin_theta + t84) - t83 * t38
+                        + delta_rate_edge_left * t111),
                 mu
                     * (k_edge
-                        * (t41
-                            * (-(t62
-                                * (-(T::from_f64(1.5) * t116 * t64)
-                                    + T::from_f64(2.0) * t149 * slip_edge_left)) + t149 * t125)
-                            + t133 * t121)
+                        * (t37
+                            * (t127 * t108
+                                - t58
+                                    * (T::from_f64(2.0) * t127 * slip_edge_left
+                                        - T::from_f64(1.5) * t101 * t60)) + t114 * t106)
                         - k_wall
-                            * (t34
-                                * (-(t66
-                                    * (T::from_f64(1.5) * t115 * t67
-                                        + T::from_f64(2.0) * t150 * slip_wall_right)) + t150 * t127)
-                                + t141 * t123))
-                    - k_edge * (t132 * t42 - delta_rate_edge_left * t134)
-                    + k_wall * (t139 * t43 * t54 - delta_rate_wall_right * t148),
-                t29 * (t27 * t151 + t126 * t90)
+                            * (t30
+                                * (t146 * t142
+                                    - t130
+                                        * (T::from_f64(1.5) * t139 * t131
+                                            + T::from_f64(2.0) * t146 * slip_wall_right))
+                                + t122 * t140))
+                    - k_edge * (t113 * t38 - delta_rate_edge_left * t115)
+                    + k_wall * (t120 * t39 * t49 - delta_rate_wall_right * t148),
+                elastic_edge_left * (t25 * t128 + t109 * t82)
                     + elastic_wall_right
-                        * (t75 * (t123 * mu + delta_rate_wall_right) + t34
+                        * (t67 * (t140 * mu + delta_rate_wall_right) + t30
                             - T::from_f64(1.0)),
-                -(t29 * (sin_theta * t151 - t126 * t95))
-                    + elastic_wall_right * (-t127 + T::from_f64(2.0) * t109) * t112,
+                elastic_wall_right * (T::from_f64(2.0) * t135 - t142) * t136
+                    - elastic_edge_left * (sin_theta * t128 - t109 * t87),
                 mu
-                    * (-(t29
-                        * (-(t62
-                            * (t72 * t64 + T::from_f64(2.0) * t128 * slip_edge_left))
-                            + t128 * t125))
-                        + elastic_wall_right
-                            * (t66
-                                * (t77 * t67 - T::from_f64(2.0) * t129 * slip_wall_right)
-                                + t129 * t127))
-                    + t29 * (-t42 + t71 * delta_rate_edge_left) * t39
-                    + elastic_wall_right * (-t43 + t75 * delta_rate_wall_right) * t32,
+                    * (elastic_wall_right
+                        * (t130
+                            * (t69 * t131 - T::from_f64(2.0) * t143 * slip_wall_right)
+                            + t143 * t142)
+                        - elastic_edge_left
+                            * (t110 * t108
+                                - t58
+                                    * (t64 * t60 + T::from_f64(2.0) * t110 * slip_edge_left)))
+                    + elastic_edge_left * (t63 * delta_rate_edge_left - t38) * t35
+                    + elastic_wall_right * (t67 * delta_rate_wall_right - t39) * t28,
                 T::from_f64(0.0),
                 T::from_f64(0.0),
             ],
@@ -606,7 +612,7 @@ pub mod compliant_peg_lean {
         let t6 = t3 * t4;
         let t7 = l_c - rho_p;
         let t8 = r - rho_p;
-        let t9 = -rho_h + z;
+        let t9 = z - rho_h;
         let delta_edge_left = r + t0 - x + sin_theta * t9 - T::from_f64(2.0) * t1 * t5;
         let pen_edge_left = delta_edge_left.max0();
         let t10 = pen_edge_left * pen_edge_left.sqrt();
@@ -625,7 +631,7 @@ pub mod compliant_peg_lean {
         let t15 = sin_theta * t1 - t11;
         let slip_edge_left = sin_theta
             * (xdot + thetadot * (cos_theta * t15 + r * sin_theta))
-            + cos_theta * (zdot + thetadot * (-(sin_theta * t15) + r * cos_theta));
+            + cos_theta * (zdot + thetadot * (r * cos_theta - sin_theta * t15));
         let delta_rate_edge_left = -(xdot * (T::from_f64(1.0) - T::from_f64(2.0) * t5))
             + zdot * sin_theta + thetadot * (t11 - T::from_f64(2.0) * t6 * t1);
         let t16 = (T::from_f64(1.0) + hc_alpha * delta_rate_edge_left).max0();
@@ -685,7 +691,7 @@ pub mod compliant_peg_lean {
         let t0 = -T::from_f64(0.5) * d;
         let t1 = (T::from_f64(0.5) * theta).sin();
         let t2 = t1 * t1;
-        let delta_edge_left = r + t0 - x + sin_theta * (-rho_h + z)
+        let delta_edge_left = r + t0 - x + sin_theta * (z - rho_h)
             - T::from_f64(2.0) * (-rho_h + t0 - x) * t2;
         let pen_edge_left = delta_edge_left.max0();
         let delta_wall_right = r + t0 + x + sin_theta * (l_c - rho_p)

@@ -137,7 +137,7 @@ pub mod double_pendulum {
         let t6 = t3 * l1;
         let t7 = t6 * t1;
         Matrix2x4::new(
-            -(l1 * (-(t3 * t5) + g * cos_theta1 * (m1 + m2))),
+            -(l1 * (g * cos_theta1 * (m1 + m2) - t3 * t5)),
             -(t6 * t5),
             T::from_f64(0.0),
             -T::from_f64(2.0) * t7 * theta2dot,

@@ -111,8 +111,6 @@ pub mod pendulum {
         let l = p[1];
         let g = p[2];
         let cos_theta = theta.cos();
-        -(m
-            * (-(T::from_f64(0.5) * (thetadot * thetadot) * (l * l))
-                + l * g * cos_theta))
+        -(m * (l * g * cos_theta - T::from_f64(0.5) * (thetadot * thetadot) * (l * l)))
     }
 }

@@ -56,15 +56,15 @@ pub mod quasi_static {
         let t1 = ydd * m;
         let t2 = -f1 * cos_theta;
         let t3 = sin_theta + mu * cos_theta;
-        let t4 = -cos_theta + mu * sin_theta;
+        let t4 = mu * sin_theta - cos_theta;
         let t5 = -(xdd * m) + f1 * sin_theta + f2 * cos_theta;
         let t6 = t0 + t1 + t2 + mu * t5;
         let t7 = t4 * (t0 + t1 + t2) + t3 * t5;
         let t8 = T::from_f64(1.0) / (mu * (cos_theta - t4) + sin_theta);
         let f_a = -t6 * t8;
         let f_b = t8 * t7;
-        let moment = -(t8 * (t6 * (-l_c + mu * r + l) + t7 * (r * t3 + l_c * t4)))
-            + thdd * j;
+        let moment = thdd * j
+            - t8 * (t6 * (-l_c + mu * r + l) + t7 * (r * t3 + l_c * t4));
         (f_a, f_b, moment)
     }
     /// Eq. 53 (signs corrected): edge force f_a (N) from the normal balance and input moment about C (N m), one-point contact at the edge A.
@@ -100,7 +100,7 @@ pub mod quasi_static {
         let m = p[3];
         let j = p[4];
         let (sin_theta, cos_theta) = theta.sin_cos();
-        let t0 = -(m * (xdd * cos_theta - ydd * sin_theta)) + f2;
+        let t0 = f2 - m * (xdd * cos_theta - ydd * sin_theta);
         let f_a = -t0;
         let moment = thdd * j - (-l_c + mu * r + l) * t0;
         (f_a, moment)
@@ -140,7 +140,7 @@ pub mod quasi_static {
         let t0 = f1 * sin_theta + f2 * cos_theta - xdd * m;
         let f_b = t0;
         let moment = thdd * j
-            - (r * (sin_theta + mu * cos_theta) + l_c * (-cos_theta + mu * sin_theta))
+            - (r * (sin_theta + mu * cos_theta) + l_c * (mu * sin_theta - cos_theta))
                 * t0;
         (f_b, moment)
     }

@@ -42,7 +42,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 78 add/sub, 151 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 66 `let`s.
+    /// 73 add/sub, 147 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 64 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -79,117 +79,119 @@ pub mod rigid_peg {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let t0 = sin_half_gamma * sin_half_gamma;
         let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
         let t1 = T::from_f64(1.0) / sin_gamma;
-        let t2 = e * t1;
-        let t3 = sin_gamma * sin_gamma;
+        let twice_a2 = e * t1;
+        let t2 = sin_gamma * sin_gamma;
         let half_d = T::from_f64(0.5) * d_hole;
-        let t4 = cos_gamma * cos_gamma;
-        let t5 = gammadot * gammadot;
-        let t6 = psidot * psidot;
-        let t7 = d_peg * d_peg;
-        let t8 = T::from_f64(0.75) * t7 + h * h;
+        let t3 = cos_gamma * cos_gamma;
+        let t4 = gammadot * gammadot;
+        let t5 = psidot * psidot;
+        let t6 = d_peg * d_peg;
+        let t7 = T::from_f64(0.75) * t6 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t9 = f_x * cos_psi;
-        let t10 = f_y * sin_psi;
-        let t11 = f_x * sin_psi;
-        let t12 = sin_gamma * cos_gamma;
-        let t13 = -f_y * cos_psi;
-        let t14 = f * t_k_n;
-        let t15 = T::from_f64(0.5) * e;
-        let t16 = T::from_f64(1.0 / 12.0) * t8;
-        let t17 = sin_sum * sin_diff;
-        let t18 = t17 * d_hole;
-        let neg_a1 = t18 * t1;
-        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t2;
-        let ob = neg_a1.hypot(half_d);
-        let t19 = T::from_f64(1.0) / ob;
-        let t20 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t21 = t20 * t1;
-        let t22 = sin_gamma * lever;
-        let t23 = t4 / (sin_gamma * sin_gamma * sin_gamma);
-        let t24 = h - t2;
-        let t25 = t24 * t24;
-        let t26 = neg_a1 * t19;
-        let t27 = t1 * (t15 + t18 * cos_gamma) * t1;
-        let t28 = -t27 * t19;
-        let t29 = lever - lever;
-        let t30 = sin_gamma * t29;
-        let t31 = m * gammadot * psidot;
-        let t32 = t1 * t1;
-        let t33 = cos_gamma * t32;
-        let t34 = t18 * t33;
-        let bb1 = (-T::from_f64(2.0) * t34 * (d_hole + T::from_f64(2.0) * t34)).sqrt();
-        let t35 = bb1 * t19;
-        let t36 = t33 * e;
-        let t37 = t21 - T::from_f64(0.5) * t36;
-        let t38 = sin_gamma * t37;
-        let t39 = cos_gamma * (t18 * t32 - t37);
-        let t40 = half_d + t39 - t22;
-        let t41 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
-            * (-t36 + T::from_f64(2.0) * t21);
-        let t42 = -(cos_gamma * lever) + t38;
-        let t43 = lever
+        let t8 = f_x * cos_psi;
+        let t9 = f_y * sin_psi;
+        let t10 = f_x * sin_psi;
+        let t11 = sin_gamma * cos_gamma;
+        let t12 = -f_y * cos_psi;
+        let t13 = f * t_k_n;
+        let half_e = T::from_f64(0.5) * e;
+        let t14 = T::from_f64(1.0 / 12.0) * t7;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * twice_a2;
+        let t15 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t16 = t15 * t1;
+        let t17 = sin_gamma * lever;
+        let t18 = t3 / (sin_gamma * sin_gamma * sin_gamma);
+        let twice_lever = h - twice_a2;
+        let t19 = twice_lever * twice_lever;
+        let t20 = m * gammadot * psidot;
+        let t21 = t1 * t1;
+        let t22 = cos_gamma * t21;
+        let t23 = t22 * e;
+        let t24 = t16 - T::from_f64(0.5) * t23;
+        let t25 = sin_gamma * t24;
+        let t26 = T::from_f64(0.25)
+            * (t2 * (T::from_f64(2.0) * h - T::from_f64(2.0) * twice_a2)
+                * (T::from_f64(2.0) * t16 - t23));
+        let t27 = t25 - cos_gamma * lever;
+        let t28 = lever
             + t1
-                * (-(T::from_f64(0.5)
-                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t15) + t23 * e
-            - T::from_f64(2.0) * t20 * t33;
-        let t44 = sin_gamma * t43 + T::from_f64(2.0) * cos_gamma * t37;
-        let t45 = cos_gamma * t29 - neg_a1 + t38;
-        let t46 = d_hole
-            * (t17 * (t1 + T::from_f64(2.0) * t23) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma * t43 - T::from_f64(2.0) * t38;
-        let t47 = half_d + t39 - t30 + t27;
-        let t48 = t42 * t44;
-        let t49 = (d_hole + T::from_f64(2.0) * t39 - T::from_f64(2.0) * t22) * t46;
+                * (half_e
+                    - T::from_f64(0.5)
+                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t18 * e
+            - T::from_f64(2.0) * t15 * t22;
+        let t29 = sin_gamma * t28 + T::from_f64(2.0) * cos_gamma * t24;
+        let t30 = t27 * t29;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t31 = sin_sum * sin_diff;
+        let neg_half_delta = t31 * d_hole;
+        let neg_a1 = neg_half_delta * t1;
+        let ob = neg_a1.hypot(half_d);
+        let t32 = T::from_f64(1.0) / ob;
+        let t33 = neg_a1 * t32;
+        let s1 = t1 * (half_e + neg_half_delta * cos_gamma) * t1;
+        let t34 = -s1 * t32;
+        let neg_half_gap = neg_half_delta * t22;
+        let bb1 = (-T::from_f64(2.0) * neg_half_gap
+            * (d_hole + T::from_f64(2.0) * neg_half_gap))
+            .sqrt();
+        let t35 = bb1 * t32;
+        let t36 = cos_gamma * (neg_half_delta * t21 - t24);
+        let t37 = half_d + t36 - t17;
+        let t38 = d_hole
+            * (t31 * (t1 + T::from_f64(2.0) * t18) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t28 - T::from_f64(2.0) * t25;
+        let t39 = (d_hole + T::from_f64(2.0) * t36 - T::from_f64(2.0) * t17) * t38;
+        let t40 = t25 - neg_a1;
+        let twice_s1 = half_d + t36 + s1;
         let a = Matrix5::new(
-            m * (t16 + t42 * t42 + t40 * t40),
+            m * (t14 + t27 * t27 + t37 * t37),
             T::from_f64(0.0),
-            -(f * (t_k_eta * t45 - t_k_z * (-t39 + t30))),
-            -(f * (t_b1_eta * t45 + t_b1_z * t47)),
-            -(f * (t_b2_eta * t45 + t_b2_z * t47)),
+            -(f * (t_k_eta * t40 + t36 * t_k_z)),
+            -(f * (t_b1_eta * t40 + t_b1_z * twice_s1)),
+            -(f * (t_b2_eta * t40 + t_b2_z * twice_s1)),
             T::from_f64(0.0),
-            m * (t3 * (T::from_f64(0.25) * t25 + t16) + T::from_f64(0.125) * t4 * t7),
-            T::from_f64(0.5) * t14 * d_hole,
-            f * (t_b1_eta * bb1 - t27 * t_b1_n),
-            -(f * (t_b2_eta * bb1 + t27 * t_b2_n)),
-            m * t42,
+            m * (t2 * (T::from_f64(0.25) * t19 + t14) + T::from_f64(0.125) * t3 * t6),
+            T::from_f64(0.5) * t13 * d_hole,
+            f * (t_b1_eta * bb1 - s1 * t_b1_n),
+            -(f * (t_b2_eta * bb1 + s1 * t_b2_n)),
+            m * t27,
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) - t28,
-            -(f * t_b2_eta) - t28,
+            -(f * t_b1_eta) - t34,
+            -(f * t_b2_eta) - t34,
             T::from_f64(0.0),
-            -t22 * m,
-            -t14,
+            -t17 * m,
+            -t13,
             t35 - f * t_b1_n,
             -(f * t_b2_n) - t35,
-            m * t40,
+            m * t37,
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            -(f * t_b1_z) + t26,
-            -(f * t_b2_z) + t26,
+            t33 - f * t_b1_z,
+            t33 - f * t_b2_z,
         );
         let b = Vector5::new(
             m_gamma
                 - m
-                    * (-(t6 * (-(T::from_f64(0.125) * t7) + t16) * t12)
+                    * (-(t5 * (t14 - T::from_f64(0.125) * t6) * t11)
                         + T::from_f64(0.5)
-                            * (-(t5 * (T::from_f64(2.0) * t48 - t49)
-                                + t6
-                                    * (T::from_f64(0.5) * t12 * t25 - T::from_f64(0.25) * t41))
-                                + t5 * (T::from_f64(4.0) * t48 - T::from_f64(2.0) * t49))
-                        + g * t40) + t42 * (t9 + t10) + f_z * t40,
-            m_psi + t22 * (t13 + t11)
-                + t31
-                    * (-(t12
-                        * (T::from_f64(0.5) * t25 - T::from_f64(0.25) * t7
-                            + T::from_f64(1.0 / 6.0) * t8)) + T::from_f64(0.25) * t41),
-            t9 + t10 - m * (t44 * t5 + t22 * t6),
-            -t13 - t11 - t31 * t42 * (T::from_f64(1.0) + T::from_f64(1.0)),
-            f_z - m * g + m * t5 * t46,
+                            * (t4 * (T::from_f64(4.0) * t30 - T::from_f64(2.0) * t39)
+                                - (t4 * (T::from_f64(2.0) * t30 - t39)
+                                    + t5 * (T::from_f64(0.5) * t11 * t19 - t26))) + g * t37)
+                + t27 * (t8 + t9) + f_z * t37,
+            m_psi + t17 * (t12 + t10)
+                + t20
+                    * (t26
+                        - t11
+                            * (T::from_f64(0.5) * t19 - T::from_f64(0.25) * t6
+                                + T::from_f64(1.0 / 6.0) * t7)),
+            t8 + t9 - m * (t29 * t4 + t17 * t5),
+            -t12 - t10 - T::from_f64(2.0) * t20 * t27,
+            f_z - m * g + m * t4 * t38,
         );
         (a, b)
     }
@@ -208,7 +210,7 @@ pub mod rigid_peg {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 81 add/sub, 153 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 66 `let`s.
+    /// 76 add/sub, 148 mul, 3 div, 1 sqrt, 6 transcendental, 0 branches; 64 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -246,123 +248,122 @@ pub mod rigid_peg {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let t0 = sin_half_gamma * sin_half_gamma;
         let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
         let t1 = T::from_f64(1.0) / sin_gamma;
-        let t2 = e * t1;
-        let t3 = sin_gamma * sin_gamma;
+        let twice_a2 = e * t1;
+        let t2 = sin_gamma * sin_gamma;
         let half_d = T::from_f64(0.5) * d_hole;
-        let t4 = cos_gamma * cos_gamma;
-        let t5 = gammadot * gammadot;
-        let t6 = psidot * psidot;
-        let t7 = d_peg * d_peg;
-        let t8 = T::from_f64(0.75) * t7 + h * h;
+        let t3 = cos_gamma * cos_gamma;
+        let t4 = gammadot * gammadot;
+        let t5 = psidot * psidot;
+        let t6 = d_peg * d_peg;
+        let t7 = T::from_f64(0.75) * t6 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t9 = f_x * cos_psi;
-        let t10 = f_y * sin_psi;
-        let t11 = f_y * cos_psi;
-        let t12 = f_x * sin_psi;
-        let t13 = sin_gamma * cos_gamma;
-        let t14 = f * t_k_n;
-        let t15 = T::from_f64(0.5) * e;
-        let t16 = T::from_f64(1.0 / 12.0) * t8;
-        let t17 = sin_sum * sin_diff;
-        let t18 = t17 * d_hole;
-        let neg_a1 = t18 * t1;
-        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t2;
-        let ob = neg_a1.hypot(half_d);
-        let t19 = T::from_f64(1.0) / ob;
-        let t20 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t21 = t20 * t1;
-        let t22 = sin_gamma * lever;
-        let t23 = t4 / (sin_gamma * sin_gamma * sin_gamma);
-        let t24 = h - t2;
-        let t25 = t24 * t24;
-        let t26 = neg_a1 * t19;
-        let t27 = t1 * (t15 + t18 * cos_gamma) * t1;
-        let t28 = -t27 * t19;
-        let t29 = lever - lever;
-        let t30 = sin_gamma * t29;
-        let t31 = t1 * t1;
-        let t32 = cos_gamma * t31;
-        let t33 = t18 * t32;
-        let bb1 = (-T::from_f64(2.0) * t33 * (d_hole + T::from_f64(2.0) * t33)).sqrt();
-        let t34 = bb1 * t19;
-        let t35 = t32 * e;
-        let t36 = t21 - T::from_f64(0.5) * t35;
-        let t37 = sin_gamma * t36;
-        let t38 = cos_gamma * (t18 * t31 - t36);
-        let t39 = half_d + t38 - t22;
-        let t40 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
-            * (-t35 + T::from_f64(2.0) * t21);
-        let t41 = -(cos_gamma * lever) + t37;
-        let t42 = lever
+        let t8 = f_x * cos_psi;
+        let t9 = f_y * sin_psi;
+        let t10 = f_x * sin_psi;
+        let t11 = sin_gamma * cos_gamma;
+        let t12 = -f_y * cos_psi;
+        let t13 = f * t_k_n;
+        let half_e = T::from_f64(0.5) * e;
+        let t14 = T::from_f64(1.0 / 12.0) * t7;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * twice_a2;
+        let t15 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t16 = t15 * t1;
+        let t17 = sin_gamma * lever;
+        let t18 = t3 / (sin_gamma * sin_gamma * sin_gamma);
+        let twice_lever = h - twice_a2;
+        let t19 = twice_lever * twice_lever;
+        let t20 = t1 * t1;
+        let t21 = cos_gamma * t20;
+        let t22 = t21 * e;
+        let t23 = t16 - T::from_f64(0.5) * t22;
+        let t24 = sin_gamma * t23;
+        let t25 = T::from_f64(0.25)
+            * (t2 * (T::from_f64(2.0) * h - T::from_f64(2.0) * twice_a2)
+                * (T::from_f64(2.0) * t16 - t22));
+        let t26 = t24 - cos_gamma * lever;
+        let t27 = lever
             + t1
-                * (-(T::from_f64(0.5)
-                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t15) + t23 * e
-            - T::from_f64(2.0) * t20 * t32;
-        let t43 = sin_gamma * t42 + T::from_f64(2.0) * cos_gamma * t36;
-        let t44 = cos_gamma * t29 - neg_a1 + t37;
-        let t45 = d_hole
-            * (t17 * (t1 + T::from_f64(2.0) * t23) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma * t42 - T::from_f64(2.0) * t37;
-        let t46 = half_d + t38 - t30 + t27;
-        let t47 = t41 * t43;
-        let t48 = (d_hole + T::from_f64(2.0) * t38 - T::from_f64(2.0) * t22) * t45;
-        let t49 = gammadot * psidot;
+                * (half_e
+                    - T::from_f64(0.5)
+                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t18 * e
+            - T::from_f64(2.0) * t15 * t21;
+        let t28 = sin_gamma * t27 + T::from_f64(2.0) * cos_gamma * t23;
+        let t29 = t26 * t28;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t30 = sin_sum * sin_diff;
+        let neg_half_delta = t30 * d_hole;
+        let neg_a1 = neg_half_delta * t1;
+        let ob = neg_a1.hypot(half_d);
+        let t31 = T::from_f64(1.0) / ob;
+        let t32 = neg_a1 * t31;
+        let s1 = t1 * (half_e + neg_half_delta * cos_gamma) * t1;
+        let t33 = -s1 * t31;
+        let neg_half_gap = neg_half_delta * t21;
+        let bb1 = (-T::from_f64(2.0) * neg_half_gap
+            * (d_hole + T::from_f64(2.0) * neg_half_gap))
+            .sqrt();
+        let t34 = bb1 * t31;
+        let t35 = cos_gamma * (neg_half_delta * t20 - t23);
+        let t36 = half_d + t35 - t17;
+        let t37 = d_hole
+            * (t30 * (t1 + T::from_f64(2.0) * t18) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t27 - T::from_f64(2.0) * t24;
+        let t38 = (d_hole + T::from_f64(2.0) * t35 - T::from_f64(2.0) * t17) * t37;
+        let t39 = t24 - neg_a1;
+        let twice_s1 = half_d + t35 + s1;
+        let t40 = gammadot * psidot;
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
-            -(f * (t_k_eta * t44 - t_k_z * (-t38 + t30))),
-            -(f * (t_b1_eta * t44 + t_b1_z * t46)),
-            -(f * (t_b2_eta * t44 + t_b2_z * t46)),
+            -(f * (t_k_eta * t39 + t35 * t_k_z)),
+            -(f * (t_b1_eta * t39 + t_b1_z * twice_s1)),
+            -(f * (t_b2_eta * t39 + t_b2_z * twice_s1)),
             T::from_f64(0.0),
             -T::from_f64(1.0),
-            T::from_f64(0.5) * t14 * d_hole,
-            f * (t_b1_eta * bb1 - t27 * t_b1_n),
-            -(f * (t_b2_eta * bb1 + t27 * t_b2_n)),
+            T::from_f64(0.5) * t13 * d_hole,
+            f * (t_b1_eta * bb1 - s1 * t_b1_n),
+            -(f * (t_b2_eta * bb1 + s1 * t_b2_n)),
             T::from_f64(0.0),
             T::from_f64(0.0),
             -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) - t28,
-            -(f * t_b2_eta) - t28,
+            -(f * t_b1_eta) - t33,
+            -(f * t_b2_eta) - t33,
             T::from_f64(0.0),
             T::from_f64(0.0),
-            -t14,
+            -t13,
             t34 - f * t_b1_n,
             -(f * t_b2_n) - t34,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            -(f * t_b1_z) + t26,
-            -(f * t_b2_z) + t26,
+            t32 - f * t_b1_z,
+            t32 - f * t_b2_z,
         );
         let b = Vector5::new(
             -(m
-                * (t6 * (T::from_f64(0.125) * t7 - T::from_f64(1.0 / 12.0) * t8) * t13
+                * (t5 * (T::from_f64(0.125) * t6 - t14) * t11
                     + T::from_f64(0.5)
-                        * (-(t5 * (T::from_f64(2.0) * t47 - t48)
-                            + t6
-                                * (T::from_f64(0.5) * t13 * t25 - T::from_f64(0.25) * t40))
-                            + t5 * (T::from_f64(4.0) * t47 - T::from_f64(2.0) * t48))
-                    + g * t39 + gammaddot * (t16 + t41 * t41 + t39 * t39)))
-                + t41 * (t9 + t10) + f_z * t39,
+                        * (t4 * (T::from_f64(4.0) * t29 - T::from_f64(2.0) * t38)
+                            - (t4 * (T::from_f64(2.0) * t29 - t38)
+                                + t5 * (T::from_f64(0.5) * t11 * t19 - t25))) + g * t36
+                    + gammaddot * (t14 + t26 * t26 + t36 * t36))) + t26 * (t8 + t9)
+                + f_z * t36,
             m
-                * (t49
-                    * (-(t13
-                        * (T::from_f64(0.5) * t25 - T::from_f64(0.25) * t7
-                            + T::from_f64(1.0 / 6.0) * t8)) + T::from_f64(0.25) * t40)
+                * (t40
+                    * (t25
+                        - t11
+                            * (T::from_f64(0.5) * t19 - T::from_f64(0.25) * t6
+                                + T::from_f64(1.0 / 6.0) * t7))
                     - psiddot
-                        * (t3 * (T::from_f64(0.25) * t25 + t16)
-                            + T::from_f64(0.125) * t4 * t7)) + t22 * (-t11 + t12),
-            t9 + t10 - m * (t43 * t5 + gammaddot * t41 + t22 * t6),
-            t11 - t12
-                + m
-                    * (-(t49 * ((T::from_f64(1.0) + T::from_f64(1.0)) * t41))
-                        + t22 * psiddot),
-            f_z - m * g - m * (-(t5 * t45) + gammaddot * t39),
+                        * (t2 * (T::from_f64(0.25) * t19 + t14)
+                            + T::from_f64(0.125) * t3 * t6)) + t17 * (t12 + t10),
+            t8 + t9 - m * (t28 * t4 + gammaddot * t26 + t17 * t5),
+            -t12 - t10 - m * (T::from_f64(2.0) * t40 * t26 - t17 * psiddot),
+            f_z - m * g - m * (gammaddot * t36 - t4 * t37),
         );
         (a, b)
     }
@@ -376,7 +377,7 @@ pub mod rigid_peg {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 22 add/sub, 39 mul, 1 div, 1 sqrt, 4 transcendental, 0 branches; 27 `let`s.
+    /// 22 add/sub, 38 mul, 1 div, 1 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 4>,
@@ -393,7 +394,6 @@ pub mod rigid_peg {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let e = d_hole - d_peg
             + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
@@ -404,28 +404,31 @@ pub mod rigid_peg {
         let t2 = -cos_gamma * lever;
         let t3 = t0 * t0;
         let t4 = cos_gamma * t3;
-        let t5 = d_hole * sin_sum * sin_diff;
-        let t6 = half_d - t1;
-        let t7 = t0 * t0 * (T::from_f64(0.5) * e + t5 * cos_gamma) + t1;
-        let t8 = -psidot * (t1 - t7);
-        let t9 = t5 * t4;
-        let bb1 = (-T::from_f64(2.0) * t9 * (d_hole + T::from_f64(2.0) * t9)).sqrt();
-        let t10 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t5 = half_d - t1;
+        let t6 = d_peg * sin_half_gamma * t0 * cos_half_gamma
             - T::from_f64(0.5) * t4 * e;
-        let t11 = psidot * bb1;
-        let t12 = half_d + cos_gamma * (t5 * t3 - t10) - t1;
-        let t13 = gammadot * (-(t2 + sin_gamma * t10) + t5 * t0 + t2);
-        let t14 = gammadot * (t12 + t7);
+        let neg_half_delta = d_hole * sin_sum * sin_diff;
+        let t7 = t0 * t0 * (T::from_f64(0.5) * e + neg_half_delta * cos_gamma) + t1;
+        let t8 = -psidot * (t1 - t7);
+        let neg_half_gap = neg_half_delta * t4;
+        let bb1 = (-T::from_f64(2.0) * neg_half_gap
+            * (d_hole + T::from_f64(2.0) * neg_half_gap))
+            .sqrt();
+        let t9 = psidot * bb1;
+        let t10 = half_d + cos_gamma * (neg_half_delta * t3 - t6) - t1;
+        let t11 = gammadot * (neg_half_delta * t0 + t2 - (t2 + sin_gamma * t6));
+        let t12 = gammadot * (t10 + t7);
         Matrix3::new(
-            -t13,
-            -psidot * (t1 + t6),
-            gammadot * (t12 - t6),
-            -t13 - t11,
+            -t11,
+            -psidot * (t1 + t5),
+            gammadot * (t10 - t5),
+            -t11 - t9,
             t8,
-            t14,
-            t11 - t13,
+            t12,
+            t9 - t11,
             t8,
-            t14,
+            t12,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -439,7 +442,7 @@ pub mod rigid_peg {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 21 add/sub, 48 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 27 `let`s.
+    /// 21 add/sub, 47 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -455,32 +458,33 @@ pub mod rigid_peg {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let e = d_hole - d_peg
             + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
         let t0 = T::from_f64(1.0) / sin_gamma;
-        let t1 = e * t0;
+        let twice_a2 = e * t0;
         let half_d = T::from_f64(0.5) * d_hole;
-        let t2 = gammadot * gammadot;
-        let t3 = psidot * psidot;
-        let t4 = d_peg * d_peg;
-        let t5 = sin_gamma * sin_gamma * t3;
-        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t1;
-        let t6 = -cos_gamma * lever;
-        let t7 = h - t1;
-        let t8 = t0 * t0;
-        let t9 = d_hole * sin_sum * sin_diff;
-        let t10 = T::from_f64(0.0625) * (cos_gamma * cos_gamma) * t3 * t4;
-        let t11 = T::from_f64(1.0 / 24.0) * (T::from_f64(0.75) * t4 + h * h) * (t2 + t5);
-        let t12 = d_peg * sin_half_gamma * t0 * cos_half_gamma
-            - T::from_f64(0.5) * cos_gamma * e * t8;
-        let t13 = half_d + cos_gamma * (t9 * t8 - t12) - sin_gamma * lever;
-        let t14 = t6 + sin_gamma * t12;
-        let t15 = T::from_f64(0.5)
-            * (t2 * (t14 * t14 + t13 * t13) + T::from_f64(0.25) * t5 * (t7 * t7));
-        let kinetic = m * (t15 + t10 + t11);
-        let total = m * (t15 + t10 + t11 - g * (t9 * t0 + t6));
+        let t1 = gammadot * gammadot;
+        let t2 = psidot * psidot;
+        let t3 = d_peg * d_peg;
+        let t4 = sin_gamma * sin_gamma * t2;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * twice_a2;
+        let t5 = -cos_gamma * lever;
+        let twice_lever = h - twice_a2;
+        let t6 = t0 * t0;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let neg_half_delta = d_hole * sin_sum * sin_diff;
+        let t7 = T::from_f64(0.0625) * (cos_gamma * cos_gamma) * t2 * t3;
+        let t8 = T::from_f64(1.0 / 24.0) * (T::from_f64(0.75) * t3 + h * h) * (t1 + t4);
+        let t9 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+            - T::from_f64(0.5) * cos_gamma * e * t6;
+        let t10 = t5 + sin_gamma * t9;
+        let t11 = half_d + cos_gamma * (neg_half_delta * t6 - t9) - sin_gamma * lever;
+        let t12 = T::from_f64(0.5)
+            * (t1 * (t10 * t10 + t11 * t11)
+                + T::from_f64(0.25) * t4 * (twice_lever * twice_lever));
+        let kinetic = m * (t12 + t7 + t8);
+        let total = m * (t12 + t7 + t8 - g * (neg_half_delta * t0 + t5));
         (kinetic, total)
     }
     /// Planar geometry at γ (m): a1, a2 (paper (1)), S1, S2 (2), b = BB1, sin τ, cos τ, η_C, z_C (3), KL, BL (5), η_L, z_L (4b).
@@ -493,7 +497,7 @@ pub mod rigid_peg {
     /// - `geo`: vector of 13
     ///
     /// # Cost
-    /// 10 add/sub, 35 mul, 3 div, 1 sqrt, 5 transcendental, 0 branches; 21 `let`s.
+    /// 10 add/sub, 32 mul, 3 div, 1 sqrt, 5 transcendental, 0 branches; 21 `let`s.
     #[inline]
     pub fn geometry<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> SVector<T, 13> {
         let gamma = x[0];
@@ -505,23 +509,25 @@ pub mod rigid_peg {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let sin_half_gamma = half_gamma.sin();
         let e = d_hole - d_peg
             + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
         let t0 = T::from_f64(1.0) / sin_gamma;
-        let t1 = e * t0;
-        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t1;
+        let t1 = T::from_f64(0.5) * h;
         let t2 = t0 * t0;
-        let t3 = d_hole * sin_sum * sin_diff;
-        let neg_a1 = t3 * t0;
-        let t4 = t3 * cos_gamma;
-        let a2 = T::from_f64(0.5) * t1;
-        let s1 = t0 * (T::from_f64(0.5) * e + t4) * t0;
-        let s2 = t0 * (T::from_f64(0.5) * cos_gamma * e + t3) * t0;
-        let t5 = s1.hypot(neg_a1);
-        let t6 = t4 * t2;
-        let bb1 = (-T::from_f64(2.0) * t6 * (d_hole + T::from_f64(2.0) * t6)).sqrt();
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let neg_half_delta = d_hole * sin_sum * sin_diff;
+        let neg_a1 = neg_half_delta * t0;
+        let t3 = neg_half_delta * cos_gamma;
+        let a2 = T::from_f64(0.5) * (e * t0);
+        let lever = t1 - a2;
+        let s1 = t0 * (T::from_f64(0.5) * e + t3) * t0;
+        let s2 = t0 * (T::from_f64(0.5) * cos_gamma * e + neg_half_delta) * t0;
+        let t4 = s1.hypot(neg_a1);
+        let neg_half_gap = t3 * t2;
+        let bb1 = (-T::from_f64(2.0) * neg_half_gap
+            * (d_hole + T::from_f64(2.0) * neg_half_gap))
+            .sqrt();
         SMatrix::<
             T,
             13,
@@ -535,10 +541,10 @@ pub mod rigid_peg {
                 bb1,
                 T::from_f64(2.0) * bb1 / d_hole,
                 T::from_f64(2.0) * s1 / d_hole,
-                sin_gamma * (-(T::from_f64(0.5) * h) + a2),
+                sin_gamma * (a2 - t1),
                 cos_gamma * lever - neg_a1,
-                -T::from_f64(2.0) * t3 * t2,
-                T::from_f64(2.0) * t5,
+                -T::from_f64(2.0) * neg_half_delta * t2,
+                T::from_f64(2.0) * t4,
                 -s1,
                 -T::from_f64(2.0) * neg_a1,
             ],

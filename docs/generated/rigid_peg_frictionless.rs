@@ -29,7 +29,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 58 add/sub, 121 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
+    /// 57 add/sub, 119 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 4>,
@@ -55,110 +55,114 @@ pub mod rigid_peg_frictionless {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let t0 = sin_half_gamma * sin_half_gamma;
         let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
         let t1 = T::from_f64(1.0) / sin_gamma;
-        let t2 = e * t1;
-        let t3 = sin_gamma * sin_gamma;
+        let twice_a2 = e * t1;
+        let t2 = sin_gamma * sin_gamma;
         let half_d = T::from_f64(0.5) * d_hole;
-        let t4 = cos_gamma * cos_gamma;
-        let t5 = gammadot * gammadot;
-        let t6 = psidot * psidot;
-        let t7 = d_peg * d_peg;
-        let t8 = T::from_f64(0.75) * t7 + h * h;
+        let t3 = cos_gamma * cos_gamma;
+        let t4 = gammadot * gammadot;
+        let t5 = psidot * psidot;
+        let t6 = d_peg * d_peg;
+        let t7 = T::from_f64(0.75) * t6 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t9 = f_x * cos_psi;
-        let t10 = f_y * sin_psi;
-        let t11 = f_x * sin_psi;
-        let t12 = sin_gamma * cos_gamma;
-        let t13 = -f_y * cos_psi;
-        let t14 = T::from_f64(0.5) * e;
-        let t15 = T::from_f64(1.0 / 12.0) * t8;
-        let t16 = sin_sum * sin_diff;
-        let t17 = t16 * d_hole;
-        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t2;
-        let ob = (t17 * t1).hypot(half_d);
-        let t18 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t19 = t18 * t1;
-        let t20 = sin_gamma * lever;
-        let t21 = t4 / (sin_gamma * sin_gamma * sin_gamma);
-        let t22 = h - t2;
-        let t23 = t22 * t22;
-        let t24 = t1 / ob;
-        let t25 = t24 * t17;
-        let t26 = t1 * (t14 + t17 * cos_gamma) * t24;
-        let t27 = m * gammadot * psidot;
-        let t28 = t1 * t1;
-        let t29 = cos_gamma * t28;
-        let t30 = t17 * t29;
-        let bb1 = (-T::from_f64(2.0) * t30 * (d_hole + T::from_f64(2.0) * t30)).sqrt();
-        let t31 = bb1 / ob;
-        let t32 = t29 * e;
-        let t33 = t19 - T::from_f64(0.5) * t32;
-        let t34 = sin_gamma * t33;
-        let t35 = cos_gamma * (t17 * t28 - t33);
-        let t36 = half_d + t35 - t20;
-        let t37 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
-            * (-t32 + T::from_f64(2.0) * t19);
-        let t38 = -(cos_gamma * lever) + t34;
-        let t39 = lever
+        let t8 = f_x * cos_psi;
+        let t9 = f_y * sin_psi;
+        let t10 = f_x * sin_psi;
+        let t11 = sin_gamma * cos_gamma;
+        let t12 = -f_y * cos_psi;
+        let half_e = T::from_f64(0.5) * e;
+        let t13 = T::from_f64(1.0 / 12.0) * t7;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * twice_a2;
+        let t14 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t15 = t14 * t1;
+        let t16 = sin_gamma * lever;
+        let t17 = t3 / (sin_gamma * sin_gamma * sin_gamma);
+        let twice_lever = h - twice_a2;
+        let t18 = twice_lever * twice_lever;
+        let t19 = m * gammadot * psidot;
+        let t20 = t1 * t1;
+        let t21 = cos_gamma * t20;
+        let t22 = t21 * e;
+        let t23 = t15 - T::from_f64(0.5) * t22;
+        let t24 = sin_gamma * t23;
+        let t25 = T::from_f64(0.25)
+            * (t2 * (T::from_f64(2.0) * h - T::from_f64(2.0) * twice_a2)
+                * (T::from_f64(2.0) * t15 - t22));
+        let t26 = t24 - cos_gamma * lever;
+        let t27 = lever
             + t1
-                * (-(T::from_f64(0.5)
-                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t14) + t21 * e
-            - T::from_f64(2.0) * t18 * t29;
-        let t40 = sin_gamma * t39 + T::from_f64(2.0) * cos_gamma * t33;
-        let t41 = d_hole
-            * (t16 * (t1 + T::from_f64(2.0) * t21) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma * t39 - T::from_f64(2.0) * t34;
-        let t42 = t38 * t40;
-        let t43 = (d_hole + T::from_f64(2.0) * t35 - T::from_f64(2.0) * t20) * t41;
+                * (half_e
+                    - T::from_f64(0.5)
+                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t17 * e
+            - T::from_f64(2.0) * t14 * t21;
+        let t28 = sin_gamma * t27 + T::from_f64(2.0) * cos_gamma * t23;
+        let t29 = t26 * t28;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t30 = sin_sum * sin_diff;
+        let neg_half_delta = t30 * d_hole;
+        let ob = (neg_half_delta * t1).hypot(half_d);
+        let t31 = t1 / ob;
+        let t32 = t31 * neg_half_delta;
+        let t33 = t1 * (half_e + neg_half_delta * cos_gamma) * t31;
+        let neg_half_gap = neg_half_delta * t21;
+        let bb1 = (-T::from_f64(2.0) * neg_half_gap
+            * (d_hole + T::from_f64(2.0) * neg_half_gap))
+            .sqrt();
+        let t34 = bb1 / ob;
+        let t35 = cos_gamma * (neg_half_delta * t20 - t23);
+        let t36 = half_d + t35 - t16;
+        let t37 = d_hole
+            * (t30 * (t1 + T::from_f64(2.0) * t17) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t27 - T::from_f64(2.0) * t24;
+        let t38 = (d_hole + T::from_f64(2.0) * t35 - T::from_f64(2.0) * t16) * t37;
         let a = Matrix5::new(
-            m * (t15 + t38 * t38 + t36 * t36),
+            m * (t13 + t26 * t26 + t36 * t36),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * (t3 * (T::from_f64(0.25) * t23 + t15) + T::from_f64(0.125) * t4 * t7),
+            m * (t2 * (T::from_f64(0.25) * t18 + t13) + T::from_f64(0.125) * t3 * t6),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * t38,
+            m * t26,
             T::from_f64(0.0),
             -cos_gamma,
-            t26,
-            t26,
+            t33,
+            t33,
             T::from_f64(0.0),
-            -t20 * m,
+            -t16 * m,
             T::from_f64(0.0),
-            t31,
-            -t31,
+            t34,
+            -t34,
             m * t36,
             T::from_f64(0.0),
             -sin_gamma,
-            t25,
-            t25,
+            t32,
+            t32,
         );
         let b = Vector5::new(
             m_gamma
                 - m
-                    * (-(t6 * (-(T::from_f64(0.125) * t7) + t15) * t12)
+                    * (-(t5 * (t13 - T::from_f64(0.125) * t6) * t11)
                         + T::from_f64(0.5)
-                            * (-(t5 * (T::from_f64(2.0) * t42 - t43)
-                                + t6
-                                    * (T::from_f64(0.5) * t12 * t23 - T::from_f64(0.25) * t37))
-                                + t5 * (T::from_f64(4.0) * t42 - T::from_f64(2.0) * t43))
-                        + g * t36) + t38 * (t9 + t10) + f_z * t36,
-            m_psi + t20 * (t13 + t11)
-                + t27
-                    * (-(t12
-                        * (T::from_f64(0.5) * t23 - T::from_f64(0.25) * t7
-                            + T::from_f64(1.0 / 6.0) * t8)) + T::from_f64(0.25) * t37),
-            t9 + t10 - m * (t40 * t5 + t20 * t6),
-            -t13 - t11 - t27 * t38 * (T::from_f64(1.0) + T::from_f64(1.0)),
-            f_z - m * g + m * t5 * t41,
+                            * (t4 * (T::from_f64(4.0) * t29 - T::from_f64(2.0) * t38)
+                                - (t4 * (T::from_f64(2.0) * t29 - t38)
+                                    + t5 * (T::from_f64(0.5) * t11 * t18 - t25))) + g * t36)
+                + t26 * (t8 + t9) + f_z * t36,
+            m_psi + t16 * (t12 + t10)
+                + t19
+                    * (t25
+                        - t11
+                            * (T::from_f64(0.5) * t18 - T::from_f64(0.25) * t6
+                                + T::from_f64(1.0 / 6.0) * t7)),
+            t8 + t9 - m * (t28 * t4 + t16 * t5),
+            -t12 - t10 - T::from_f64(2.0) * t19 * t26,
+            f_z - m * g + m * t4 * t37,
         );
         (a, b)
     }
@@ -176,7 +180,7 @@ pub mod rigid_peg_frictionless {
     /// - `b`: vector of 5
     ///
     /// # Cost
-    /// 61 add/sub, 123 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
+    /// 60 add/sub, 120 mul, 4 div, 1 sqrt, 6 transcendental, 0 branches; 59 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 4>,
@@ -203,65 +207,69 @@ pub mod rigid_peg_frictionless {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let t0 = sin_half_gamma * sin_half_gamma;
         let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
         let t1 = T::from_f64(1.0) / sin_gamma;
-        let t2 = e * t1;
-        let t3 = sin_gamma * sin_gamma;
+        let twice_a2 = e * t1;
+        let t2 = sin_gamma * sin_gamma;
         let half_d = T::from_f64(0.5) * d_hole;
-        let t4 = cos_gamma * cos_gamma;
-        let t5 = gammadot * gammadot;
-        let t6 = psidot * psidot;
-        let t7 = d_peg * d_peg;
-        let t8 = T::from_f64(0.75) * t7 + h * h;
+        let t3 = cos_gamma * cos_gamma;
+        let t4 = gammadot * gammadot;
+        let t5 = psidot * psidot;
+        let t6 = d_peg * d_peg;
+        let t7 = T::from_f64(0.75) * t6 + h * h;
         let (sin_psi, cos_psi) = psi.sin_cos();
-        let t9 = f_x * cos_psi;
-        let t10 = f_y * sin_psi;
-        let t11 = f_y * cos_psi;
-        let t12 = f_x * sin_psi;
-        let t13 = sin_gamma * cos_gamma;
-        let t14 = T::from_f64(0.5) * e;
-        let t15 = T::from_f64(1.0 / 12.0) * t8;
-        let t16 = sin_sum * sin_diff;
-        let t17 = t16 * d_hole;
-        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t2;
-        let ob = (t17 * t1).hypot(half_d);
-        let t18 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t19 = t18 * t1;
-        let t20 = sin_gamma * lever;
-        let t21 = t4 / (sin_gamma * sin_gamma * sin_gamma);
-        let t22 = h - t2;
-        let t23 = t22 * t22;
-        let t24 = t1 / ob;
-        let t25 = t24 * t17;
-        let t26 = t1 * (t14 + t17 * cos_gamma) * t24;
-        let t27 = t1 * t1;
-        let t28 = cos_gamma * t27;
-        let t29 = t17 * t28;
-        let bb1 = (-T::from_f64(2.0) * t29 * (d_hole + T::from_f64(2.0) * t29)).sqrt();
-        let t30 = bb1 / ob;
-        let t31 = t28 * e;
-        let t32 = t19 - T::from_f64(0.5) * t31;
-        let t33 = sin_gamma * t32;
-        let t34 = cos_gamma * (t17 * t27 - t32);
-        let t35 = half_d + t34 - t20;
-        let t36 = t3 * (T::from_f64(2.0) * h - T::from_f64(2.0) * t2)
-            * (-t31 + T::from_f64(2.0) * t19);
-        let t37 = -(cos_gamma * lever) + t33;
-        let t38 = lever
+        let t8 = f_x * cos_psi;
+        let t9 = f_y * sin_psi;
+        let t10 = f_x * sin_psi;
+        let t11 = sin_gamma * cos_gamma;
+        let t12 = -f_y * cos_psi;
+        let half_e = T::from_f64(0.5) * e;
+        let t13 = T::from_f64(1.0 / 12.0) * t7;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * twice_a2;
+        let t14 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t15 = t14 * t1;
+        let t16 = sin_gamma * lever;
+        let t17 = t3 / (sin_gamma * sin_gamma * sin_gamma);
+        let twice_lever = h - twice_a2;
+        let t18 = twice_lever * twice_lever;
+        let t19 = t1 * t1;
+        let t20 = cos_gamma * t19;
+        let t21 = t20 * e;
+        let t22 = t15 - T::from_f64(0.5) * t21;
+        let t23 = sin_gamma * t22;
+        let t24 = T::from_f64(0.25)
+            * (t2 * (T::from_f64(2.0) * h - T::from_f64(2.0) * twice_a2)
+                * (T::from_f64(2.0) * t15 - t21));
+        let t25 = t23 - cos_gamma * lever;
+        let t26 = lever
             + t1
-                * (-(T::from_f64(0.5)
-                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t14) + t21 * e
-            - T::from_f64(2.0) * t18 * t28;
-        let t39 = sin_gamma * t38 + T::from_f64(2.0) * cos_gamma * t32;
-        let t40 = d_hole
-            * (t16 * (t1 + T::from_f64(2.0) * t21) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma * t38 - T::from_f64(2.0) * t33;
-        let t41 = t37 * t39;
-        let t42 = (d_hole + T::from_f64(2.0) * t34 - T::from_f64(2.0) * t20) * t40;
-        let t43 = gammadot * psidot;
+                * (half_e
+                    - T::from_f64(0.5)
+                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t17 * e
+            - T::from_f64(2.0) * t14 * t20;
+        let t27 = sin_gamma * t26 + T::from_f64(2.0) * cos_gamma * t22;
+        let t28 = t25 * t27;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t29 = sin_sum * sin_diff;
+        let neg_half_delta = t29 * d_hole;
+        let ob = (neg_half_delta * t1).hypot(half_d);
+        let t30 = t1 / ob;
+        let t31 = t30 * neg_half_delta;
+        let t32 = t1 * (half_e + neg_half_delta * cos_gamma) * t30;
+        let neg_half_gap = neg_half_delta * t20;
+        let bb1 = (-T::from_f64(2.0) * neg_half_gap
+            * (d_hole + T::from_f64(2.0) * neg_half_gap))
+            .sqrt();
+        let t33 = bb1 / ob;
+        let t34 = cos_gamma * (neg_half_delta * t19 - t22);
+        let t35 = half_d + t34 - t16;
+        let t36 = d_hole
+            * (t29 * (t1 + T::from_f64(2.0) * t17) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t26 - T::from_f64(2.0) * t23;
+        let t37 = (d_hole + T::from_f64(2.0) * t34 - T::from_f64(2.0) * t16) * t36;
+        let t38 = gammadot * psidot;
         let a = Matrix5::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
@@ -276,43 +284,40 @@ pub mod rigid_peg_frictionless {
             T::from_f64(0.0),
             T::from_f64(0.0),
             -cos_gamma,
-            t26,
-            t26,
+            t32,
+            t32,
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            t30,
-            -t30,
+            t33,
+            -t33,
             T::from_f64(0.0),
             T::from_f64(0.0),
             -sin_gamma,
-            t25,
-            t25,
+            t31,
+            t31,
         );
         let b = Vector5::new(
             -(m
-                * (t6 * (T::from_f64(0.125) * t7 - T::from_f64(1.0 / 12.0) * t8) * t13
+                * (t5 * (T::from_f64(0.125) * t6 - t13) * t11
                     + T::from_f64(0.5)
-                        * (-(t5 * (T::from_f64(2.0) * t41 - t42)
-                            + t6
-                                * (T::from_f64(0.5) * t13 * t23 - T::from_f64(0.25) * t36))
-                            + t5 * (T::from_f64(4.0) * t41 - T::from_f64(2.0) * t42))
-                    + g * t35 + gammaddot * (t15 + t37 * t37 + t35 * t35)))
-                + t37 * (t9 + t10) + f_z * t35,
+                        * (t4 * (T::from_f64(4.0) * t28 - T::from_f64(2.0) * t37)
+                            - (t4 * (T::from_f64(2.0) * t28 - t37)
+                                + t5 * (T::from_f64(0.5) * t11 * t18 - t24))) + g * t35
+                    + gammaddot * (t13 + t25 * t25 + t35 * t35))) + t25 * (t8 + t9)
+                + f_z * t35,
             m
-                * (t43
-                    * (-(t13
-                        * (T::from_f64(0.5) * t23 - T::from_f64(0.25) * t7
-                            + T::from_f64(1.0 / 6.0) * t8)) + T::from_f64(0.25) * t36)
+                * (t38
+                    * (t24
+                        - t11
+                            * (T::from_f64(0.5) * t18 - T::from_f64(0.25) * t6
+                                + T::from_f64(1.0 / 6.0) * t7))
                     - psiddot
-                        * (t3 * (T::from_f64(0.25) * t23 + t15)
-                            + T::from_f64(0.125) * t4 * t7)) + t20 * (-t11 + t12),
-            t9 + t10 - m * (t39 * t5 + gammaddot * t37 + t20 * t6),
-            t11 - t12
-                + m
-                    * (-(t43 * ((T::from_f64(1.0) + T::from_f64(1.0)) * t37))
-                        + t20 * psiddot),
-            f_z - m * g - m * (-(t5 * t40) + gammaddot * t35),
+                        * (t2 * (T::from_f64(0.25) * t18 + t13)
+                            + T::from_f64(0.125) * t3 * t6)) + t16 * (t12 + t10),
+            t8 + t9 - m * (t27 * t4 + gammaddot * t25 + t16 * t5),
+            -t12 - t10 - m * (T::from_f64(2.0) * t38 * t25 - t16 * psiddot),
+            f_z - m * g - m * (gammaddot * t35 - t4 * t36),
         );
         (a, b)
     }
@@ -326,7 +331,7 @@ pub mod rigid_peg_frictionless {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 22 add/sub, 39 mul, 1 div, 1 sqrt, 4 transcendental, 0 branches; 27 `let`s.
+    /// 22 add/sub, 38 mul, 1 div, 1 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 4>,
@@ -343,7 +348,6 @@ pub mod rigid_peg_frictionless {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let e = d_hole - d_peg
             + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
@@ -354,28 +358,31 @@ pub mod rigid_peg_frictionless {
         let t2 = -cos_gamma * lever;
         let t3 = t0 * t0;
         let t4 = cos_gamma * t3;
-        let t5 = d_hole * sin_sum * sin_diff;
-        let t6 = half_d - t1;
-        let t7 = t0 * t0 * (T::from_f64(0.5) * e + t5 * cos_gamma) + t1;
-        let t8 = -psidot * (t1 - t7);
-        let t9 = t5 * t4;
-        let bb1 = (-T::from_f64(2.0) * t9 * (d_hole + T::from_f64(2.0) * t9)).sqrt();
-        let t10 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t5 = half_d - t1;
+        let t6 = d_peg * sin_half_gamma * t0 * cos_half_gamma
             - T::from_f64(0.5) * t4 * e;
-        let t11 = psidot * bb1;
-        let t12 = half_d + cos_gamma * (t5 * t3 - t10) - t1;
-        let t13 = gammadot * (-(t2 + sin_gamma * t10) + t5 * t0 + t2);
-        let t14 = gammadot * (t12 + t7);
+        let neg_half_delta = d_hole * sin_sum * sin_diff;
+        let t7 = t0 * t0 * (T::from_f64(0.5) * e + neg_half_delta * cos_gamma) + t1;
+        let t8 = -psidot * (t1 - t7);
+        let neg_half_gap = neg_half_delta * t4;
+        let bb1 = (-T::from_f64(2.0) * neg_half_gap
+            * (d_hole + T::from_f64(2.0) * neg_half_gap))
+            .sqrt();
+        let t9 = psidot * bb1;
+        let t10 = half_d + cos_gamma * (neg_half_delta * t3 - t6) - t1;
+        let t11 = gammadot * (neg_half_delta * t0 + t2 - (t2 + sin_gamma * t6));
+        let t12 = gammadot * (t10 + t7);
         Matrix3::new(
-            -t13,
-            -psidot * (t1 + t6),
-            gammadot * (t12 - t6),
-            -t13 - t11,
+            -t11,
+            -psidot * (t1 + t5),
+            gammadot * (t10 - t5),
+            -t11 - t9,
             t8,
-            t14,
-            t11 - t13,
+            t12,
+            t9 - t11,
             t8,
-            t14,
+            t12,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -389,7 +396,7 @@ pub mod rigid_peg_frictionless {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 21 add/sub, 48 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 27 `let`s.
+    /// 21 add/sub, 47 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -405,32 +412,33 @@ pub mod rigid_peg_frictionless {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let e = d_hole - d_peg
             + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
         let t0 = T::from_f64(1.0) / sin_gamma;
-        let t1 = e * t0;
+        let twice_a2 = e * t0;
         let half_d = T::from_f64(0.5) * d_hole;
-        let t2 = gammadot * gammadot;
-        let t3 = psidot * psidot;
-        let t4 = d_peg * d_peg;
-        let t5 = sin_gamma * sin_gamma * t3;
-        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * t1;
-        let t6 = -cos_gamma * lever;
-        let t7 = h - t1;
-        let t8 = t0 * t0;
-        let t9 = d_hole * sin_sum * sin_diff;
-        let t10 = T::from_f64(0.0625) * (cos_gamma * cos_gamma) * t3 * t4;
-        let t11 = T::from_f64(1.0 / 24.0) * (T::from_f64(0.75) * t4 + h * h) * (t2 + t5);
-        let t12 = d_peg * sin_half_gamma * t0 * cos_half_gamma
-            - T::from_f64(0.5) * cos_gamma * e * t8;
-        let t13 = half_d + cos_gamma * (t9 * t8 - t12) - sin_gamma * lever;
-        let t14 = t6 + sin_gamma * t12;
-        let t15 = T::from_f64(0.5)
-            * (t2 * (t14 * t14 + t13 * t13) + T::from_f64(0.25) * t5 * (t7 * t7));
-        let kinetic = m * (t15 + t10 + t11);
-        let total = m * (t15 + t10 + t11 - g * (t9 * t0 + t6));
+        let t1 = gammadot * gammadot;
+        let t2 = psidot * psidot;
+        let t3 = d_peg * d_peg;
+        let t4 = sin_gamma * sin_gamma * t2;
+        let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * twice_a2;
+        let t5 = -cos_gamma * lever;
+        let twice_lever = h - twice_a2;
+        let t6 = t0 * t0;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let neg_half_delta = d_hole * sin_sum * sin_diff;
+        let t7 = T::from_f64(0.0625) * (cos_gamma * cos_gamma) * t2 * t3;
+        let t8 = T::from_f64(1.0 / 24.0) * (T::from_f64(0.75) * t3 + h * h) * (t1 + t4);
+        let t9 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+            - T::from_f64(0.5) * cos_gamma * e * t6;
+        let t10 = t5 + sin_gamma * t9;
+        let t11 = half_d + cos_gamma * (neg_half_delta * t6 - t9) - sin_gamma * lever;
+        let t12 = T::from_f64(0.5)
+            * (t1 * (t10 * t10 + t11 * t11)
+                + T::from_f64(0.25) * t4 * (twice_lever * twice_lever));
+        let kinetic = m * (t12 + t7 + t8);
+        let total = m * (t12 + t7 + t8 - g * (neg_half_delta * t0 + t5));
         (kinetic, total)
     }
 }

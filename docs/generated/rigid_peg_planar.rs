@@ -32,7 +32,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 50 add/sub, 94 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 39 `let`s.
+    /// 46 add/sub, 91 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 37 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -60,7 +60,6 @@ pub mod rigid_peg_planar {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let t0 = sin_half_gamma * sin_half_gamma;
         let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
@@ -69,60 +68,59 @@ pub mod rigid_peg_planar {
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t1;
         let t2 = sin_gamma * lever;
         let t3 = gammadot * gammadot;
-        let t4 = T::from_f64(0.5) * e;
-        let t5 = lever - lever;
-        let t6 = sin_gamma * t5;
-        let t7 = sin_sum * sin_diff;
-        let t8 = t7 * d_hole;
-        let neg_a1 = t8 * t1;
-        let ob = neg_a1.hypot(half_d);
-        let t9 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t10 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t11 = t1 * (t4 + t8 * cos_gamma) * t1;
-        let t12 = m * t3;
-        let t13 = t1 * t1;
-        let t14 = cos_gamma * t13;
-        let t15 = t9 * t1 - T::from_f64(0.5) * t14 * e;
-        let t16 = sin_gamma * t15;
-        let t17 = cos_gamma * (t8 * t13 - t15);
-        let t18 = half_d + t17 - t2;
-        let t19 = -(cos_gamma * lever) + t16;
-        let t20 = lever
+        let half_e = T::from_f64(0.5) * e;
+        let t4 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t5 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t6 = m * t3;
+        let t7 = t1 * t1;
+        let t8 = cos_gamma * t7;
+        let t9 = t4 * t1 - T::from_f64(0.5) * t8 * e;
+        let t10 = sin_gamma * t9;
+        let t11 = t10 - cos_gamma * lever;
+        let t12 = lever
             + t1
-                * (-(T::from_f64(0.5)
-                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t4) + t10 * e
-            - T::from_f64(2.0) * t9 * t14;
-        let t21 = sin_gamma * t20 + T::from_f64(2.0) * cos_gamma * t15;
-        let t22 = cos_gamma * t5 - neg_a1 + t16;
-        let t23 = d_hole
-            * (t7 * (t1 + T::from_f64(2.0) * t10) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma * t20 - T::from_f64(2.0) * t16;
-        let t24 = t19 * t21;
-        let t25 = (d_hole + T::from_f64(2.0) * t17 - T::from_f64(2.0) * t2) * t23;
+                * (half_e
+                    - T::from_f64(0.5)
+                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t5 * e
+            - T::from_f64(2.0) * t4 * t8;
+        let t13 = sin_gamma * t12 + T::from_f64(2.0) * cos_gamma * t9;
+        let t14 = t11 * t13;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t15 = sin_sum * sin_diff;
+        let neg_half_delta = t15 * d_hole;
+        let neg_a1 = neg_half_delta * t1;
+        let ob = neg_a1.hypot(half_d);
+        let s1 = t1 * (half_e + neg_half_delta * cos_gamma) * t1;
+        let t16 = cos_gamma * (neg_half_delta * t7 - t9);
+        let t17 = half_d + t16 - t2;
+        let t18 = d_hole
+            * (t15 * (t1 + T::from_f64(2.0) * t5) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t12 - T::from_f64(2.0) * t10;
+        let t19 = (d_hole + T::from_f64(2.0) * t16 - T::from_f64(2.0) * t2) * t18;
+        let t20 = t10 - neg_a1;
         let a = Matrix3::new(
             m
                 * (T::from_f64(1.0 / 12.0)
-                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t19 * t19
-                    + t18 * t18),
-            -(f * (t_k_eta * t22 - t_k_z * (-t17 + t6))),
-            -T::from_f64(2.0)
-                * (f * (t22 * t_b_eta + (half_d + t17 - t6 + t11) * t_b_z)),
-            m * t19,
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t11 * t11
+                    + t17 * t17),
+            -(f * (t_k_eta * t20 + t16 * t_k_z)),
+            -T::from_f64(2.0) * (f * (t20 * t_b_eta + (half_d + t16 + s1) * t_b_z)),
+            m * t11,
             -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t0,
-            T::from_f64(2.0) * t11 / ob - T::from_f64(2.0) * f * t_b_eta,
-            m * t18,
+            T::from_f64(2.0) * s1 / ob - T::from_f64(2.0) * f * t_b_eta,
+            m * t17,
             -(f * t_k_z) - sin_gamma,
-            -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * neg_a1 / ob,
+            T::from_f64(2.0) * neg_a1 / ob - T::from_f64(2.0) * f * t_b_z,
         );
         let b = Vector3::new(
             m_gamma
                 - m
                     * (T::from_f64(0.5)
-                        * (T::from_f64(4.0) * t24 - T::from_f64(2.0) * t25
-                            - (T::from_f64(2.0) * t24 - t25)) * t3 + g * t18) + f_z * t18
-                + f_x * t19,
-            f_x - t12 * t21,
-            f_z - m * g + t12 * t23,
+                        * (T::from_f64(4.0) * t14 - T::from_f64(2.0) * t19
+                            - (T::from_f64(2.0) * t14 - t19)) * t3 + g * t17) + f_z * t17
+                + f_x * t11,
+            f_x - t6 * t13,
+            f_z - m * g + t6 * t18,
         );
         (a, b)
     }
@@ -141,7 +139,7 @@ pub mod rigid_peg_planar {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 52 add/sub, 95 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 38 `let`s.
+    /// 48 add/sub, 92 mul, 4 div, 0 sqrt, 5 transcendental, 0 branches; 36 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -170,7 +168,6 @@ pub mod rigid_peg_planar {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let t0 = sin_half_gamma * sin_half_gamma;
         let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
@@ -179,58 +176,57 @@ pub mod rigid_peg_planar {
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t1;
         let t2 = sin_gamma * lever;
         let t3 = gammadot * gammadot;
-        let t4 = T::from_f64(0.5) * e;
-        let t5 = lever - lever;
-        let t6 = sin_gamma * t5;
-        let t7 = sin_sum * sin_diff;
-        let t8 = t7 * d_hole;
-        let neg_a1 = t8 * t1;
-        let ob = neg_a1.hypot(half_d);
-        let t9 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t10 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t11 = t1 * (t4 + t8 * cos_gamma) * t1;
-        let t12 = t1 * t1;
-        let t13 = cos_gamma * t12;
-        let t14 = t9 * t1 - T::from_f64(0.5) * t13 * e;
-        let t15 = sin_gamma * t14;
-        let t16 = cos_gamma * (t8 * t12 - t14);
-        let t17 = half_d + t16 - t2;
-        let t18 = -(cos_gamma * lever) + t15;
-        let t19 = lever
+        let half_e = T::from_f64(0.5) * e;
+        let t4 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t5 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t6 = t1 * t1;
+        let t7 = cos_gamma * t6;
+        let t8 = t4 * t1 - T::from_f64(0.5) * t7 * e;
+        let t9 = sin_gamma * t8;
+        let t10 = t9 - cos_gamma * lever;
+        let t11 = lever
             + t1
-                * (-(T::from_f64(0.5)
-                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t4) + t10 * e
-            - T::from_f64(2.0) * t9 * t13;
-        let t20 = sin_gamma * t19 + T::from_f64(2.0) * cos_gamma * t14;
-        let t21 = cos_gamma * t5 - neg_a1 + t15;
-        let t22 = d_hole
-            * (t7 * (t1 + T::from_f64(2.0) * t10) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma * t19 - T::from_f64(2.0) * t15;
-        let t23 = t18 * t20;
-        let t24 = (d_hole + T::from_f64(2.0) * t16 - T::from_f64(2.0) * t2) * t22;
+                * (half_e
+                    - T::from_f64(0.5)
+                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t5 * e
+            - T::from_f64(2.0) * t4 * t7;
+        let t12 = sin_gamma * t11 + T::from_f64(2.0) * cos_gamma * t8;
+        let t13 = t10 * t12;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t14 = sin_sum * sin_diff;
+        let neg_half_delta = t14 * d_hole;
+        let neg_a1 = neg_half_delta * t1;
+        let ob = neg_a1.hypot(half_d);
+        let s1 = t1 * (half_e + neg_half_delta * cos_gamma) * t1;
+        let t15 = cos_gamma * (neg_half_delta * t6 - t8);
+        let t16 = half_d + t15 - t2;
+        let t17 = d_hole
+            * (t14 * (t1 + T::from_f64(2.0) * t5) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t11 - T::from_f64(2.0) * t9;
+        let t18 = (d_hole + T::from_f64(2.0) * t15 - T::from_f64(2.0) * t2) * t17;
+        let t19 = t9 - neg_a1;
         let a = Matrix3::new(
             -T::from_f64(1.0),
-            -(f * (t_k_eta * t21 - t_k_z * (-t16 + t6))),
-            -T::from_f64(2.0)
-                * (f * (t21 * t_b_eta + (half_d + t16 - t6 + t11) * t_b_z)),
+            -(f * (t_k_eta * t19 + t15 * t_k_z)),
+            -T::from_f64(2.0) * (f * (t19 * t_b_eta + (half_d + t15 + s1) * t_b_z)),
             T::from_f64(0.0),
             -(f * t_k_eta) - T::from_f64(1.0) + T::from_f64(2.0) * t0,
-            T::from_f64(2.0) * t11 / ob - T::from_f64(2.0) * f * t_b_eta,
+            T::from_f64(2.0) * s1 / ob - T::from_f64(2.0) * f * t_b_eta,
             T::from_f64(0.0),
             -(f * t_k_z) - sin_gamma,
-            -(T::from_f64(2.0) * f * t_b_z) + T::from_f64(2.0) * neg_a1 / ob,
+            T::from_f64(2.0) * neg_a1 / ob - T::from_f64(2.0) * f * t_b_z,
         );
         let b = Vector3::new(
             -(m
                 * (T::from_f64(0.5)
-                    * (T::from_f64(4.0) * t23 - T::from_f64(2.0) * t24
-                        - (T::from_f64(2.0) * t23 - t24)) * t3 + g * t17
+                    * (T::from_f64(4.0) * t13 - T::from_f64(2.0) * t18
+                        - (T::from_f64(2.0) * t13 - t18)) * t3 + g * t16
                     + gammaddot
                         * (T::from_f64(1.0 / 12.0)
-                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t18 * t18
-                            + t17 * t17))) + f_z * t17 + f_x * t18,
-            f_x - m * (t20 * t3 + gammaddot * t18),
-            f_z - m * g - m * (-(t3 * t22) + gammaddot * t17),
+                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t10 * t10
+                            + t16 * t16))) + f_z * t16 + f_x * t10,
+            f_x - m * (t12 * t3 + gammaddot * t10),
+            f_z - m * g - m * (gammaddot * t16 - t3 * t17),
         );
         (a, b)
     }
@@ -244,7 +240,7 @@ pub mod rigid_peg_planar {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 17 add/sub, 32 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 20 `let`s.
+    /// 17 add/sub, 31 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 20 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 2>,
@@ -260,7 +256,6 @@ pub mod rigid_peg_planar {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let e = d_hole - d_peg
             + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
@@ -270,23 +265,24 @@ pub mod rigid_peg_planar {
         let t1 = sin_gamma * lever;
         let t2 = -cos_gamma * lever;
         let t3 = t0 * t0;
-        let t4 = d_hole * sin_sum * sin_diff;
-        let t5 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t4 = d_peg * sin_half_gamma * t0 * cos_half_gamma
             - T::from_f64(0.5) * cos_gamma * e * t3;
-        let t6 = half_d + cos_gamma * (t4 * t3 - t5) - t1;
-        let t7 = -gammadot * (-(t2 + sin_gamma * t5) + t4 * t0 + t2);
-        let t8 = gammadot
-            * (t6 + t0 * t0 * (T::from_f64(0.5) * e + t4 * cos_gamma) + t1);
+        let neg_half_delta = d_hole * sin_sum * sin_diff;
+        let t5 = half_d + cos_gamma * (neg_half_delta * t3 - t4) - t1;
+        let t6 = -gammadot * (neg_half_delta * t0 + t2 - (t2 + sin_gamma * t4));
+        let t7 = gammadot
+            * (t5 + t0 * t0 * (T::from_f64(0.5) * e + neg_half_delta * cos_gamma) + t1);
         Matrix3::new(
-            t7,
+            t6,
             T::from_f64(0.0),
-            gammadot * (t6 - (half_d - t1)),
-            t7,
+            gammadot * (t5 - (half_d - t1)),
+            t6,
             T::from_f64(0.0),
-            t8,
             t7,
+            t6,
             T::from_f64(0.0),
-            t8,
+            t7,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -300,7 +296,7 @@ pub mod rigid_peg_planar {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 15 add/sub, 37 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 19 `let`s.
+    /// 15 add/sub, 36 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 19 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -315,7 +311,6 @@ pub mod rigid_peg_planar {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let e = d_hole - d_peg
             + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
@@ -324,17 +319,18 @@ pub mod rigid_peg_planar {
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t0;
         let t1 = -cos_gamma * lever;
         let t2 = t0 * t0;
-        let t3 = d_hole * sin_sum * sin_diff;
-        let t4 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t3 = d_peg * sin_half_gamma * t0 * cos_half_gamma
             - T::from_f64(0.5) * cos_gamma * e * t2;
-        let t5 = t1 + sin_gamma * t4;
-        let t6 = half_d + cos_gamma * (t3 * t2 - t4) - sin_gamma * lever;
-        let t7 = gammadot * gammadot
-            * (T::from_f64(0.5) * (t5 * t5 + t6 * t6)
+        let t4 = t1 + sin_gamma * t3;
+        let neg_half_delta = d_hole * sin_sum * sin_diff;
+        let t5 = half_d + cos_gamma * (neg_half_delta * t2 - t3) - sin_gamma * lever;
+        let t6 = gammadot * gammadot
+            * (T::from_f64(0.5) * (t4 * t4 + t5 * t5)
                 + T::from_f64(1.0 / 24.0)
                     * (T::from_f64(0.75) * (d_peg * d_peg) + h * h));
-        let kinetic = t7 * m;
-        let total = -m * (-t7 + g * (t3 * t0 + t1));
+        let kinetic = t6 * m;
+        let total = -m * (g * (neg_half_delta * t0 + t1) - t6);
         (kinetic, total)
     }
 }

@@ -29,7 +29,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 37 add/sub, 80 mul, 3 div, 0 sqrt, 5 transcendental, 0 branches; 35 `let`s.
+    /// 37 add/sub, 79 mul, 3 div, 0 sqrt, 5 transcendental, 0 branches; 35 `let`s.
     #[inline]
     pub fn forward<T: Real>(
         x: &SVector<T, 2>,
@@ -51,7 +51,6 @@ pub mod rigid_peg_planar_frictionless {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let t0 = sin_half_gamma * sin_half_gamma;
         let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
@@ -60,55 +59,57 @@ pub mod rigid_peg_planar_frictionless {
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t1;
         let t2 = sin_gamma * lever;
         let t3 = gammadot * gammadot;
-        let t4 = T::from_f64(0.5) * e;
-        let t5 = sin_sum * sin_diff;
-        let t6 = t5 * d_hole;
-        let ob = (t6 * t1).hypot(half_d);
-        let t7 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t8 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t9 = t1 / ob;
-        let t10 = m * t3;
-        let t11 = t1 * t1;
-        let t12 = cos_gamma * t11;
-        let t13 = t7 * t1 - T::from_f64(0.5) * t12 * e;
-        let t14 = sin_gamma * t13;
-        let t15 = cos_gamma * (t6 * t11 - t13);
-        let t16 = half_d + t15 - t2;
-        let t17 = -(cos_gamma * lever) + t14;
-        let t18 = lever
+        let half_e = T::from_f64(0.5) * e;
+        let t4 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t5 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t6 = m * t3;
+        let t7 = t1 * t1;
+        let t8 = cos_gamma * t7;
+        let t9 = t4 * t1 - T::from_f64(0.5) * t8 * e;
+        let t10 = sin_gamma * t9;
+        let t11 = t10 - cos_gamma * lever;
+        let t12 = lever
             + t1
-                * (-(T::from_f64(0.5)
-                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t4) + t8 * e
-            - T::from_f64(2.0) * t7 * t12;
-        let t19 = sin_gamma * t18 + T::from_f64(2.0) * cos_gamma * t13;
-        let t20 = d_hole
-            * (t5 * (t1 + T::from_f64(2.0) * t8) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma * t18 - T::from_f64(2.0) * t14;
-        let t21 = t17 * t19;
-        let t22 = (d_hole + T::from_f64(2.0) * t15 - T::from_f64(2.0) * t2) * t20;
+                * (half_e
+                    - T::from_f64(0.5)
+                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t5 * e
+            - T::from_f64(2.0) * t4 * t8;
+        let t13 = sin_gamma * t12 + T::from_f64(2.0) * cos_gamma * t9;
+        let t14 = t11 * t13;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t15 = sin_sum * sin_diff;
+        let neg_half_delta = t15 * d_hole;
+        let ob = (neg_half_delta * t1).hypot(half_d);
+        let t16 = t1 / ob;
+        let t17 = cos_gamma * (neg_half_delta * t7 - t9);
+        let t18 = half_d + t17 - t2;
+        let t19 = d_hole
+            * (t15 * (t1 + T::from_f64(2.0) * t5) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t12 - T::from_f64(2.0) * t10;
+        let t20 = (d_hole + T::from_f64(2.0) * t17 - T::from_f64(2.0) * t2) * t19;
         let a = Matrix3::new(
             m
                 * (T::from_f64(1.0 / 12.0)
-                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t17 * t17
-                    + t16 * t16),
+                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t11 * t11
+                    + t18 * t18),
             T::from_f64(0.0),
             T::from_f64(0.0),
-            m * t17,
+            m * t11,
             T::from_f64(2.0) * t0 - T::from_f64(1.0),
-            T::from_f64(2.0) * (t1 * (t4 + t6 * cos_gamma)) * t9,
-            m * t16,
+            T::from_f64(2.0) * (t1 * (half_e + neg_half_delta * cos_gamma)) * t16,
+            m * t18,
             -sin_gamma,
-            T::from_f64(2.0) * t9 * t6,
+            T::from_f64(2.0) * t16 * neg_half_delta,
         );
         let b = Vector3::new(
             m_gamma
                 - m
                     * (T::from_f64(0.5)
-                        * (T::from_f64(4.0) * t21 - T::from_f64(2.0) * t22
-                            - (T::from_f64(2.0) * t21 - t22)) * t3 + g * t16) + f_z * t16
-                + f_x * t17,
-            f_x - t10 * t19,
-            f_z - m * g + t10 * t20,
+                        * (T::from_f64(4.0) * t14 - T::from_f64(2.0) * t20
+                            - (T::from_f64(2.0) * t14 - t20)) * t3 + g * t18) + f_z * t18
+                + f_x * t11,
+            f_x - t6 * t13,
+            f_z - m * g + t6 * t19,
         );
         (a, b)
     }
@@ -126,7 +127,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `b`: vector of 3
     ///
     /// # Cost
-    /// 39 add/sub, 81 mul, 3 div, 0 sqrt, 5 transcendental, 0 branches; 34 `let`s.
+    /// 39 add/sub, 80 mul, 3 div, 0 sqrt, 5 transcendental, 0 branches; 34 `let`s.
     #[inline]
     pub fn prescribed<T: Real>(
         x: &SVector<T, 2>,
@@ -149,7 +150,6 @@ pub mod rigid_peg_planar_frictionless {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let t0 = sin_half_gamma * sin_half_gamma;
         let e = d_hole - d_peg + T::from_f64(2.0) * d_peg * t0;
@@ -158,53 +158,55 @@ pub mod rigid_peg_planar_frictionless {
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t1;
         let t2 = sin_gamma * lever;
         let t3 = gammadot * gammadot;
-        let t4 = T::from_f64(0.5) * e;
-        let t5 = sin_sum * sin_diff;
-        let t6 = t5 * d_hole;
-        let ob = (t6 * t1).hypot(half_d);
-        let t7 = d_peg * sin_half_gamma * cos_half_gamma;
-        let t8 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
-        let t9 = t1 / ob;
-        let t10 = t1 * t1;
-        let t11 = cos_gamma * t10;
-        let t12 = t7 * t1 - T::from_f64(0.5) * t11 * e;
-        let t13 = sin_gamma * t12;
-        let t14 = cos_gamma * (t6 * t10 - t12);
-        let t15 = half_d + t14 - t2;
-        let t16 = -(cos_gamma * lever) + t13;
-        let t17 = lever
+        let half_e = T::from_f64(0.5) * e;
+        let t4 = d_peg * sin_half_gamma * cos_half_gamma;
+        let t5 = cos_gamma * cos_gamma / (sin_gamma * sin_gamma * sin_gamma);
+        let t6 = t1 * t1;
+        let t7 = cos_gamma * t6;
+        let t8 = t4 * t1 - T::from_f64(0.5) * t7 * e;
+        let t9 = sin_gamma * t8;
+        let t10 = t9 - cos_gamma * lever;
+        let t11 = lever
             + t1
-                * (-(T::from_f64(0.5)
-                    * (d_peg * (-cos_half_gamma * cos_half_gamma + t0))) + t4) + t8 * e
-            - T::from_f64(2.0) * t7 * t11;
-        let t18 = sin_gamma * t17 + T::from_f64(2.0) * cos_gamma * t12;
-        let t19 = d_hole
-            * (t5 * (t1 + T::from_f64(2.0) * t8) + T::from_f64(0.5) * cos_gamma * t1)
-            + cos_gamma * t17 - T::from_f64(2.0) * t13;
-        let t20 = t16 * t18;
-        let t21 = (d_hole + T::from_f64(2.0) * t14 - T::from_f64(2.0) * t2) * t19;
+                * (half_e
+                    - T::from_f64(0.5)
+                        * (d_peg * (t0 - cos_half_gamma * cos_half_gamma))) + t5 * e
+            - T::from_f64(2.0) * t4 * t7;
+        let t12 = sin_gamma * t11 + T::from_f64(2.0) * cos_gamma * t8;
+        let t13 = t10 * t12;
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t14 = sin_sum * sin_diff;
+        let neg_half_delta = t14 * d_hole;
+        let ob = (neg_half_delta * t1).hypot(half_d);
+        let t15 = t1 / ob;
+        let t16 = cos_gamma * (neg_half_delta * t6 - t8);
+        let t17 = half_d + t16 - t2;
+        let t18 = d_hole
+            * (t14 * (t1 + T::from_f64(2.0) * t5) + T::from_f64(0.5) * cos_gamma * t1)
+            + cos_gamma * t11 - T::from_f64(2.0) * t9;
+        let t19 = (d_hole + T::from_f64(2.0) * t16 - T::from_f64(2.0) * t2) * t18;
         let a = Matrix3::new(
             -T::from_f64(1.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(0.0),
             T::from_f64(2.0) * t0 - T::from_f64(1.0),
-            T::from_f64(2.0) * (t1 * (t4 + t6 * cos_gamma)) * t9,
+            T::from_f64(2.0) * (t1 * (half_e + neg_half_delta * cos_gamma)) * t15,
             T::from_f64(0.0),
             -sin_gamma,
-            T::from_f64(2.0) * t9 * t6,
+            T::from_f64(2.0) * t15 * neg_half_delta,
         );
         let b = Vector3::new(
             -(m
                 * (T::from_f64(0.5)
-                    * (T::from_f64(4.0) * t20 - T::from_f64(2.0) * t21
-                        - (T::from_f64(2.0) * t20 - t21)) * t3 + g * t15
+                    * (T::from_f64(4.0) * t13 - T::from_f64(2.0) * t19
+                        - (T::from_f64(2.0) * t13 - t19)) * t3 + g * t17
                     + gammaddot
                         * (T::from_f64(1.0 / 12.0)
-                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t16 * t16
-                            + t15 * t15))) + f_z * t15 + f_x * t16,
-            f_x - m * (t18 * t3 + gammaddot * t16),
-            f_z - m * g - m * (-(t3 * t19) + gammaddot * t15),
+                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t10 * t10
+                            + t17 * t17))) + f_z * t17 + f_x * t10,
+            f_x - m * (t12 * t3 + gammaddot * t10),
+            f_z - m * g - m * (gammaddot * t17 - t3 * t18),
         );
         (a, b)
     }
@@ -218,7 +220,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `v`: 3×3 matrix
     ///
     /// # Cost
-    /// 17 add/sub, 32 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 20 `let`s.
+    /// 17 add/sub, 31 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 20 `let`s.
     #[inline]
     pub fn contact_velocities<T: Real>(
         x: &SVector<T, 2>,
@@ -234,7 +236,6 @@ pub mod rigid_peg_planar_frictionless {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let e = d_hole - d_peg
             + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
@@ -244,23 +245,24 @@ pub mod rigid_peg_planar_frictionless {
         let t1 = sin_gamma * lever;
         let t2 = -cos_gamma * lever;
         let t3 = t0 * t0;
-        let t4 = d_hole * sin_sum * sin_diff;
-        let t5 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t4 = d_peg * sin_half_gamma * t0 * cos_half_gamma
             - T::from_f64(0.5) * cos_gamma * e * t3;
-        let t6 = half_d + cos_gamma * (t4 * t3 - t5) - t1;
-        let t7 = -gammadot * (-(t2 + sin_gamma * t5) + t4 * t0 + t2);
-        let t8 = gammadot
-            * (t6 + t0 * t0 * (T::from_f64(0.5) * e + t4 * cos_gamma) + t1);
+        let neg_half_delta = d_hole * sin_sum * sin_diff;
+        let t5 = half_d + cos_gamma * (neg_half_delta * t3 - t4) - t1;
+        let t6 = -gammadot * (neg_half_delta * t0 + t2 - (t2 + sin_gamma * t4));
+        let t7 = gammadot
+            * (t5 + t0 * t0 * (T::from_f64(0.5) * e + neg_half_delta * cos_gamma) + t1);
         Matrix3::new(
-            t7,
+            t6,
             T::from_f64(0.0),
-            gammadot * (t6 - (half_d - t1)),
-            t7,
+            gammadot * (t5 - (half_d - t1)),
+            t6,
             T::from_f64(0.0),
-            t8,
             t7,
+            t6,
             T::from_f64(0.0),
-            t8,
+            t7,
         )
     }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
@@ -274,7 +276,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `total`: scalar
     ///
     /// # Cost
-    /// 15 add/sub, 37 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 19 `let`s.
+    /// 15 add/sub, 36 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 19 `let`s.
     #[inline]
     pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> (T, T) {
         let gamma = x[0];
@@ -289,7 +291,6 @@ pub mod rigid_peg_planar_frictionless {
         let half_gamma0 = T::from_f64(0.5) * gamma0;
         let half_gamma = T::from_f64(0.5) * gamma;
         let sin_sum = (half_gamma0 + half_gamma).sin();
-        let sin_diff = (half_gamma0 - T::from_f64(0.5) * gamma).sin();
         let (sin_half_gamma, cos_half_gamma) = half_gamma.sin_cos();
         let e = d_hole - d_peg
             + T::from_f64(2.0) * d_peg * (sin_half_gamma * sin_half_gamma);
@@ -298,17 +299,18 @@ pub mod rigid_peg_planar_frictionless {
         let lever = T::from_f64(0.5) * h - T::from_f64(0.5) * e * t0;
         let t1 = -cos_gamma * lever;
         let t2 = t0 * t0;
-        let t3 = d_hole * sin_sum * sin_diff;
-        let t4 = d_peg * sin_half_gamma * t0 * cos_half_gamma
+        let sin_diff = (half_gamma0 - half_gamma).sin();
+        let t3 = d_peg * sin_half_gamma * t0 * cos_half_gamma
             - T::from_f64(0.5) * cos_gamma * e * t2;
-        let t5 = t1 + sin_gamma * t4;
-        let t6 = half_d + cos_gamma * (t3 * t2 - t4) - sin_gamma * lever;
-        let t7 = gammadot * gammadot
-            * (T::from_f64(0.5) * (t5 * t5 + t6 * t6)
+        let t4 = t1 + sin_gamma * t3;
+        let neg_half_delta = d_hole * sin_sum * sin_diff;
+        let t5 = half_d + cos_gamma * (neg_half_delta * t2 - t3) - sin_gamma * lever;
+        let t6 = gammadot * gammadot
+            * (T::from_f64(0.5) * (t4 * t4 + t5 * t5)
                 + T::from_f64(1.0 / 24.0)
                     * (T::from_f64(0.75) * (d_peg * d_peg) + h * h));
-        let kinetic = t7 * m;
-        let total = -m * (-t7 + g * (t3 * t0 + t1));
+        let kinetic = t6 * m;
+        let total = -m * (g * (neg_half_delta * t0 + t1) - t6);
         (kinetic, total)
     }
 }

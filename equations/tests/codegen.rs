@@ -290,3 +290,54 @@ fn files_are_written_only_when_their_bytes_change() {
     }
     std::fs::remove_dir_all(&dir).expect("clean up");
 }
+
+/// `x - x` where `x` is one name, neither preceded nor followed by a
+/// tighter operator (so `c * x - x` and `x - x * c` do not count).
+fn self_differences(code: &str) -> Vec<String> {
+    let tokens: Vec<&str> = code
+        .split(|ch: char| ch.is_whitespace())
+        .filter(|t| !t.is_empty())
+        .collect();
+    let is_name = |t: &str| t.chars().all(|ch| ch.is_alphanumeric() || ch == '_');
+    let mut found = Vec::new();
+    for k in 1..tokens.len().saturating_sub(2) {
+        let (before, a, op, b) = (tokens[k - 1], tokens[k], tokens[k + 1], tokens[k + 2]);
+        let b_name = b.trim_end_matches([';', ',', ')']);
+        let after = tokens.get(k + 3).copied().unwrap_or(";");
+        if op == "-"
+            && is_name(a)
+            && a == b_name
+            && !matches!(before, "*" | "/")
+            && (b != b_name || !matches!(after, "*" | "/"))
+        {
+            found.push(format!("{before} {a} - {b}"));
+        }
+    }
+    found
+}
+
+#[test]
+fn like_terms_meet_in_the_generated_code() {
+    let src = render_registered().unwrap_or_else(|e| panic!("{e}")).source;
+    let found = self_differences(&src);
+    assert!(found.is_empty(), "x - x in the generated code: {found:?}");
+    assert!(
+        !src.contains("T::from_f64(1.0) + T::from_f64(1.0)"),
+        "a constant sum is left unfolded"
+    );
+    // The scanner sees one when there is one.
+    assert_eq!(self_differences("let t = lever - lever;").len(), 1);
+    assert!(self_differences("let t = c * lever - lever;").is_empty());
+}
+
+#[test]
+fn a_value_equal_to_a_named_one_carries_its_name() {
+    // `s` is named, then only `2 s` (expanded by the simplifier into
+    // 2a − 2b, no node of `s` itself) reaches the code twice.
+    let code = emitted(|_, a, b, c| {
+        let s = (a - b).named("s");
+        let twice = 2.0 * s;
+        twice.sin() * c + twice.cos()
+    });
+    assert!(code.contains("let twice_s = "), "{code}");
+}

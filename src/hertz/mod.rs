@@ -14,12 +14,12 @@
 //!
 //! Units are SI throughout: m, 1/m, N, Pa.
 
-pub mod contact;
-pub mod curvature;
+mod contact;
+mod curvature;
 pub mod elliptic;
 pub mod ellipticity;
-pub mod error;
-pub mod material;
+mod error;
+mod material;
 
 pub use contact::{ContactState, EllipticityMethod, HertzContact};
 pub use curvature::Curvatures;

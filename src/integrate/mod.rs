@@ -27,6 +27,7 @@ mod driver;
 mod events;
 mod explicit_rk;
 mod lu;
+mod method;
 mod options;
 mod rosenbrock;
 mod solution;
@@ -38,6 +39,7 @@ use nalgebra::SVector;
 use crate::system::OdeSystem;
 
 pub use events::{Direction, Event, EventFn};
+pub use method::{Method, MethodKind};
 pub use options::{IntegrateError, Options, OutputMode};
 pub use solution::{EventHit, Solution, Stats, StopReason};
 
@@ -45,43 +47,6 @@ use driver::Hooks;
 use explicit_rk::ExplicitRk;
 use rosenbrock::Rosenbrock;
 use tableau::{RosenbrockTableau, Tableau};
-
-/// An integration method.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Method {
-    /// Classical fourth-order Runge–Kutta with fixed step `h` (the last
-    /// step is shortened to land on the end time). Tolerances are unused;
-    /// a non-finite value stops the integration at once with
-    /// [`StopReason::NonFinite`].
-    Rk4 {
-        /// Step size (> 0), in time units.
-        h: f64,
-    },
-    /// Adaptive Dormand–Prince 5(4) with PI step control and fourth-order
-    /// dense output. The default for non-stiff problems.
-    Dopri5,
-    /// Adaptive L-stable Rosenbrock method RODAS3, order 3(2), one
-    /// Jacobian and one LU factorization per step, cubic Hermite dense
-    /// output. For stiff problems (stiff contacts, large damping).
-    Rodas3,
-    /// Adaptive L-stable Rosenbrock method RODAS4 (Hairer & Wanner),
-    /// order 4(3), six stages, one Jacobian and one LU factorization per
-    /// step, cubic Hermite dense output. For stiff problems at tighter
-    /// tolerances than RODAS3 pays for.
-    Rodas4,
-}
-
-impl Method {
-    /// Short name used in bench ids and CLI options.
-    pub fn name(&self) -> &'static str {
-        match self {
-            Method::Rk4 { .. } => "rk4",
-            Method::Dopri5 => "dopri5",
-            Method::Rodas3 => "rodas3",
-            Method::Rodas4 => "rodas4",
-        }
-    }
-}
 
 /// Progress callback type: called with the time after every accepted step.
 pub type ProgressFn<'a> = dyn FnMut(f64) + 'a;
@@ -162,66 +127,37 @@ impl<'a, const N: usize> Solver<'a, N> {
         };
         let start = (t0, x0);
         let (options, events) = (&self.options, self.events.as_slice());
+        let h = match self.method {
+            Method::Rk4 { h } if !(h.is_finite() && h > 0.0) => {
+                return Err(IntegrateError::InvalidOption {
+                    name: "h",
+                    value: h,
+                    reason: "must be finite and positive",
+                });
+            }
+            Method::Rk4 { h } => Some(h),
+            Method::Dopri5 | Method::Rodas3 | Method::Rodas4 => None,
+        };
+        // One driver for every method; only the stepper differs.
+        macro_rules! run {
+            ($stepper:expr) => {
+                driver::run(
+                    &mut $stepper,
+                    system,
+                    start,
+                    t_end,
+                    options,
+                    h,
+                    events,
+                    &mut hooks,
+                )
+            };
+        }
         Ok(match self.method {
-            Method::Rk4 { h } => {
-                if !(h.is_finite() && h > 0.0) {
-                    return Err(IntegrateError::InvalidOption {
-                        name: "h",
-                        value: h,
-                        reason: "must be finite and positive",
-                    });
-                }
-                let mut stepper = ExplicitRk::<N, 4>::new(Tableau::rk4());
-                driver::run(
-                    &mut stepper,
-                    system,
-                    start,
-                    t_end,
-                    options,
-                    Some(h),
-                    events,
-                    &mut hooks,
-                )
-            }
-            Method::Dopri5 => {
-                let mut stepper = ExplicitRk::<N, 7>::new(Tableau::dopri5());
-                driver::run(
-                    &mut stepper,
-                    system,
-                    start,
-                    t_end,
-                    options,
-                    None,
-                    events,
-                    &mut hooks,
-                )
-            }
-            Method::Rodas3 => {
-                let mut stepper = Rosenbrock::<N, 4>::new(&RosenbrockTableau::rodas3());
-                driver::run(
-                    &mut stepper,
-                    system,
-                    start,
-                    t_end,
-                    options,
-                    None,
-                    events,
-                    &mut hooks,
-                )
-            }
-            Method::Rodas4 => {
-                let mut stepper = Rosenbrock::<N, 6>::new(&RosenbrockTableau::rodas4());
-                driver::run(
-                    &mut stepper,
-                    system,
-                    start,
-                    t_end,
-                    options,
-                    None,
-                    events,
-                    &mut hooks,
-                )
-            }
+            Method::Rk4 { .. } => run!(ExplicitRk::<N, 4>::new(Tableau::rk4())),
+            Method::Dopri5 => run!(ExplicitRk::<N, 7>::new(Tableau::dopri5())),
+            Method::Rodas3 => run!(Rosenbrock::<N, 4>::new(&RosenbrockTableau::rodas3())),
+            Method::Rodas4 => run!(Rosenbrock::<N, 6>::new(&RosenbrockTableau::rodas4())),
         })
     }
 }

@@ -11,14 +11,14 @@
 //! - [`space3d`]: the 3-D no-jamming inequalities (Eqs. 81–82).
 //! - [`dynamic`]: the sweep of compliant-contact insertions (needs `compliant`).
 //! - [`sweep`]: the dynamic sweep driver (rayon) and its comparison with the diagram.
-//! - [`table`]: the corner/wedging tables of the jamming scene (its Fig. 6-style
-//!   panels are drawn by `scene::jamming_figure`).
+//! - `table` (crate-internal): the corner/wedging tables of the jamming scene
+//!   (its Fig. 6-style panels are drawn by `scene::jamming_figure`).
 //!
 //! The derivation and the comparison with the paper are in `docs/jamming.md`.
 
 pub mod diagram;
 pub mod dynamic;
-pub mod error;
+mod error;
 pub mod forces;
 pub mod geometry;
 pub mod params;
@@ -26,7 +26,7 @@ pub mod quasi_static;
 pub mod space3d;
 pub mod statics;
 pub mod sweep;
-pub mod table;
+pub(crate) mod table;
 pub mod wedging;
 
 pub use error::{ParamError, SlidingIndeterminate};

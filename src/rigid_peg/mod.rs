@@ -3,7 +3,7 @@
 //! horizontal hole edge at three points
 //! K, B1, B2, with two degrees of freedom: nutation γ and precession ψ.
 //!
-//! - [`params`]: dimensions, mass, friction and loads;
+//! - [`PegParams`], [`Loads`]: dimensions, mass, friction and loads;
 //! - [`kinematics`]: geometry, poses, velocities and contact Jacobians
 //!   (hand-derived, corrected paper forms), used by every path below;
 //! - [`dynamics`]: the hand-derived equations of motion and reactions: the
@@ -28,7 +28,7 @@ pub mod forward_events;
 pub mod generated_model;
 pub mod kinematics;
 pub mod modes;
-pub mod params;
+mod params;
 pub mod prescribed;
 pub mod static_hold;
 pub mod stick;

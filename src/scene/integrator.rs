@@ -13,7 +13,10 @@
 //! max_steps = 1000000      # step budget (default 10^6)
 //! ```
 
-use serde::Deserialize;
+use serde::de::Error as _;
+use serde::{Deserialize, Deserializer};
+
+use crate::integrate::MethodKind;
 
 use crate::error::{SceneError, SceneErrors};
 use crate::scene::limits::{WorkItem, sample_count};
@@ -60,47 +63,69 @@ impl Iterator for OutputTimes {
     }
 }
 
-/// Integration method selected by `integrator.method`.
+/// Integration method selected by `integrator.method`: a method of the
+/// integrators' one vocabulary ([`MethodKind`], same names, the alias
+/// `"rosenbrock"` for `"rodas3"` included) or `"auto"`.
 ///
 /// Without `method` (or with `"auto"`) the scene kind chooses: the
 /// compliant-contact scenes RODAS4 (their Hertz contacts and regularized
 /// friction are stiff), every other kind DOPRI5; the run summary names
 /// the method used and why.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
-#[serde(rename_all = "lowercase")]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum Method {
     /// Chosen by the scene kind (see the type's documentation).
     #[default]
     Auto,
-    /// Classical fixed-step Runge–Kutta 4.
-    Rk4,
-    /// Dormand–Prince 5(4), adaptive, with dense output and events.
-    Dopri5,
-    /// Linearly implicit, L-stable Rosenbrock method RODAS3 (order 3(2))
-    /// for stiff problems, adaptive; the older spelling `"rosenbrock"` is
-    /// accepted as an alias.
-    #[serde(alias = "rosenbrock")]
-    Rodas3,
-    /// Linearly implicit, L-stable Rosenbrock method RODAS4 (order 4(3))
-    /// for stiff problems, adaptive.
-    Rodas4,
+    /// The method named in the scene file.
+    Named(MethodKind),
 }
+
+/// Every spelling `integrator.method` accepts, for the error message.
+const METHOD_NAMES: &[&str] = &["auto", "rk4", "dopri5", "rodas3", "rosenbrock", "rodas4"];
 
 impl Method {
     /// Name as written in scene files.
     pub fn name(self) -> &'static str {
         match self {
-            Method::Rk4 => "rk4",
-            Method::Dopri5 => "dopri5",
-            Method::Rodas3 => "rodas3",
-            Method::Rodas4 => "rodas4",
             Method::Auto => "auto",
+            Method::Named(m) => m.name(),
         }
     }
 
-    /// Whether the method chooses its own step from `rtol`/`atol`.
+    /// The method called `name` in a scene file ([`MethodKind::from_name`]
+    /// or `"auto"`).
+    pub fn from_name(name: &str) -> Option<Method> {
+        match name {
+            "auto" => Some(Method::Auto),
+            _ => MethodKind::from_name(name).map(Method::Named),
+        }
+    }
+
+    /// The named method, `None` for [`Method::Auto`].
+    pub fn kind(self) -> Option<MethodKind> {
+        match self {
+            Method::Auto => None,
+            Method::Named(m) => Some(m),
+        }
+    }
+
+    /// Whether the method chooses its own step from `rtol`/`atol` (`auto`
+    /// always resolves to an adaptive method).
     pub fn is_adaptive(self) -> bool {
-        !matches!(self, Method::Rk4)
+        self.kind().is_none_or(MethodKind::is_adaptive)
+    }
+}
+
+impl From<MethodKind> for Method {
+    fn from(m: MethodKind) -> Method {
+        Method::Named(m)
+    }
+}
+
+impl<'de> Deserialize<'de> for Method {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Method, D::Error> {
+        let name = String::deserialize(d)?;
+        Method::from_name(&name).ok_or_else(|| D::Error::unknown_variant(&name, METHOD_NAMES))
     }
 }
 
@@ -116,12 +141,12 @@ pub struct DefaultMethod {
 impl DefaultMethod {
     /// The default of non-stiff scene kinds.
     pub const NON_STIFF: DefaultMethod = DefaultMethod {
-        method: Method::Dopri5,
+        method: Method::Named(MethodKind::Dopri5),
         reason: "default for non-stiff scenes",
     };
     /// The default of compliant-contact scene kinds.
     pub const STIFF_CONTACT: DefaultMethod = DefaultMethod {
-        method: Method::Rodas4,
+        method: Method::Named(MethodKind::Rodas4),
         reason: "default for compliant contact: stiff Hertz contacts and regularized friction",
     };
 }
@@ -201,7 +226,7 @@ impl IntegratorSpec {
             c.positive(&f("atol"), self.atol);
         }
         match (self.method, self.h) {
-            (Method::Rk4, None) => c.push(SceneError::Missing { field: f("h") }),
+            (Method::Named(MethodKind::Rk4), None) => c.push(SceneError::Missing { field: f("h") }),
             (_, Some(h)) => {
                 let h = c.positive(&f("h"), h);
                 if c.is_ok() && h > span {
@@ -286,7 +311,7 @@ impl IntegratorSpec {
     /// One-line description, e.g. `dopri5 rtol=1e-9 atol=1e-12, t in [0, 10] s`.
     pub fn describe(&self) -> String {
         let m = match (self.method, self.h) {
-            (Method::Rk4, Some(h)) => format!("rk4 h={h:e} s"),
+            (Method::Named(MethodKind::Rk4), Some(h)) => format!("rk4 h={h:e} s"),
             (m, _) => format!("{} rtol={:e} atol={:e}", m.name(), self.rtol, self.atol),
         };
         format!(
@@ -316,7 +341,9 @@ mod tests {
 
     #[test]
     fn output_times_end_at_t_end() {
-        let ts: Vec<f64> = spec(Method::Dopri5).output_times().collect();
+        let ts: Vec<f64> = spec(Method::Named(MethodKind::Dopri5))
+            .output_times()
+            .collect();
         assert_eq!(ts.len(), 5);
         assert_eq!(ts[4], 1.0);
         assert!((ts[3] - 0.9).abs() < 1e-15);
@@ -325,12 +352,13 @@ mod tests {
     #[test]
     fn auto_takes_the_scene_kind_default_and_a_named_method_stays() {
         let (r, why) = spec(Method::Auto).resolved(DefaultMethod::STIFF_CONTACT);
-        assert_eq!(r.method, Method::Rodas4);
+        assert_eq!(r.method, Method::Named(MethodKind::Rodas4));
         assert!(why.contains("compliant contact"), "{why}");
         let (r, _) = spec(Method::Auto).resolved(DefaultMethod::NON_STIFF);
-        assert_eq!(r.method, Method::Dopri5);
-        let (r, why) = spec(Method::Dopri5).resolved(DefaultMethod::STIFF_CONTACT);
-        assert_eq!(r.method, Method::Dopri5);
+        assert_eq!(r.method, Method::Named(MethodKind::Dopri5));
+        let (r, why) =
+            spec(Method::Named(MethodKind::Dopri5)).resolved(DefaultMethod::STIFF_CONTACT);
+        assert_eq!(r.method, Method::Named(MethodKind::Dopri5));
         assert_eq!(why, "named by the scene");
         let toml_spec: IntegratorSpec = toml::from_str("t_end = 1.0").unwrap();
         assert_eq!(toml_spec.method, Method::Auto);
@@ -338,7 +366,7 @@ mod tests {
 
     #[test]
     fn output_times_are_lazy_for_absurd_spans() {
-        let mut s = spec(Method::Dopri5);
+        let mut s = spec(Method::Named(MethodKind::Dopri5));
         s.t_end = 1e9;
         s.output_interval = Some(1e-300);
         let mut ts = s.output_times();
@@ -351,9 +379,11 @@ mod tests {
 
     #[test]
     fn rk4_needs_h_and_bad_tolerances_are_named() {
-        let e = spec(Method::Rk4).check("integrator").unwrap_err();
+        let e = spec(Method::Named(MethodKind::Rk4))
+            .check("integrator")
+            .unwrap_err();
         assert!(e.to_string().contains("integrator.h"), "{e}");
-        let mut s = spec(Method::Dopri5);
+        let mut s = spec(Method::Named(MethodKind::Dopri5));
         s.rtol = 1e-293;
         let e = s.check("integrator").unwrap_err().to_string();
         assert!(e.contains("integrator.rtol") && e.contains("1e-15"), "{e}");

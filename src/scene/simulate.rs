@@ -6,11 +6,11 @@ use nalgebra::SVector;
 
 use crate::error::RunError;
 use crate::integrate::{
-    self, Event, IntegrateError, Options, OutputMode, Solution, Solver, StopReason,
+    self, Event, IntegrateError, MethodKind, Options, OutputMode, Solution, Solver, StopReason,
 };
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::summary::significant;
-use crate::scene::{EventRecord, IntegrationSummary, IntegratorSpec, Method, Progress};
+use crate::scene::{EventRecord, IntegrationSummary, IntegratorSpec, Progress};
 use crate::system::OdeSystem;
 
 /// The integrator method and options described by `spec`.
@@ -19,19 +19,14 @@ use crate::system::OdeSystem;
 /// [`RunError::Integrate`] for `rk4` without `h` (never for a spec that
 /// passed [`IntegratorSpec::check`]).
 pub fn solver_config(spec: &IntegratorSpec) -> Result<(integrate::Method, Options), RunError> {
-    let method = match (spec.method, spec.h) {
-        (Method::Rk4, Some(h)) => integrate::Method::Rk4 { h },
-        (Method::Rk4, None) => {
-            return Err(RunError::Integrate(IntegrateError::InvalidOption {
-                name: "h",
-                value: f64::NAN,
-                reason: "is required for rk4",
-            }));
-        }
-        (Method::Dopri5 | Method::Auto, _) => integrate::Method::Dopri5,
-        (Method::Rodas3, _) => integrate::Method::Rodas3,
-        (Method::Rodas4, _) => integrate::Method::Rodas4,
-    };
+    let kind = spec.method.kind().unwrap_or(MethodKind::Dopri5);
+    let method = kind.with_step(spec.h).ok_or({
+        RunError::Integrate(IntegrateError::InvalidOption {
+            name: "h",
+            value: f64::NAN,
+            reason: "is required for rk4",
+        })
+    })?;
     let mut options = Options::with_tolerances(spec.rtol, spec.atol);
     options.max_steps = spec.max_steps;
     options.output = OutputMode::AtTimes(spec.output_times().collect());
@@ -148,6 +143,7 @@ pub fn event_records<const N: usize>(sol: &Solution<N>, event_names: &[&str]) ->
 mod tests {
     use super::*;
     use crate::integrate::Direction;
+    use crate::scene::Method;
     use crate::system::FnSystem;
     use nalgebra::Vector2;
 
@@ -166,17 +162,17 @@ mod tests {
 
     #[test]
     fn config_maps_methods_and_output_times() {
-        let (m, o) = solver_config(&spec(Method::Rk4, Some(0.01))).unwrap();
+        let (m, o) = solver_config(&spec(Method::Named(MethodKind::Rk4), Some(0.01))).unwrap();
         assert_eq!(m, integrate::Method::Rk4 { h: 0.01 });
         assert_eq!(o.output, OutputMode::AtTimes(vec![0.0, 0.5, 1.0, 1.5, 2.0]));
         assert_eq!(o.h0, None);
-        let (m, o) = solver_config(&spec(Method::Dopri5, Some(1e-3))).unwrap();
+        let (m, o) = solver_config(&spec(Method::Named(MethodKind::Dopri5), Some(1e-3))).unwrap();
         assert_eq!(
             (m, o.h0, o.rtol, o.atol),
             (integrate::Method::Dopri5, Some(1e-3), 1e-9, 1e-12)
         );
-        assert!(solver_config(&spec(Method::Rk4, None)).is_err());
-        let (m, _) = solver_config(&spec(Method::Rodas3, None)).unwrap();
+        assert!(solver_config(&spec(Method::Named(MethodKind::Rk4), None)).is_err());
+        let (m, _) = solver_config(&spec(Method::Named(MethodKind::Rodas3), None)).unwrap();
         assert_eq!(m, integrate::Method::Rodas3);
     }
 
@@ -188,7 +184,7 @@ mod tests {
         let ground = Event::new(|_t, x: &Vector2<f64>| x[0])
             .direction(Direction::Falling)
             .terminal();
-        let s = spec(Method::Dopri5, None);
+        let s = spec(Method::Named(MethodKind::Dopri5), None);
         let mut progress = Progress::silent();
         let sol = integrate(
             &fall,
@@ -230,7 +226,7 @@ mod tests {
         let fall = FnSystem(move |_t: f64, x: &Vector2<f64>| Vector2::new(x[1], -g));
         let half = Event::new(|_t, x: &Vector2<f64>| x[0] - 0.5);
         let ground = Event::new(|_t, x: &Vector2<f64>| x[0]).terminal();
-        let s = spec(Method::Dopri5, None);
+        let s = spec(Method::Named(MethodKind::Dopri5), None);
         let mut progress = Progress::silent();
         let sol = integrate(
             &fall,

@@ -166,7 +166,7 @@ mod tests {
 
     fn part(steps: usize, t_end: f64, success: bool) -> IntegrationSummary {
         IntegrationSummary {
-            method: Method::Dopri5,
+            method: Method::Named(crate::integrate::MethodKind::Dopri5),
             t_end,
             stop: format!("stop at {t_end}"),
             success,

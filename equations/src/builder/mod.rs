@@ -67,6 +67,10 @@ pub struct Rendered {
     /// pegdyn's test call table (`generated_calls.rs`, see
     /// [`crate::codegen::harness`]); only pegdyn's own test suite includes it.
     pub calls: String,
+    /// The list of every generated function as a macro
+    /// (`generated_list.rs`, see [`crate::codegen::registry::list`]);
+    /// pegdyn's benches include it.
+    pub list: String,
     options: Options,
 }
 
@@ -181,6 +185,7 @@ impl Generator {
             source,
             report: generated.report,
             calls: generated.calls,
+            list: generated.list,
             options: self.options.clone(),
         })
     }

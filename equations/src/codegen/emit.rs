@@ -87,34 +87,55 @@ fn sin_cos_partners(g: &Graph, sched: &Schedule) -> HashMap<Id, Id> {
     partner
 }
 
-/// Named products by [`product_key`]: `(coefficient bits, leaf factors)`.
-type ProductNames = HashMap<(u64, Vec<Id>), String>;
+/// Two terms `−a + b` written `b − a`: the positive one leads (exact, a
+/// two-term sum is commutative in floating point).
+fn positive_first(terms: &mut [(bool, Frag)]) {
+    if terms.len() == 2 && terms[0].0 && !terms[1].0 {
+        terms.swap(0, 1);
+    }
+}
+
+/// Named products by their sorted leaf factors ([`product_key`]): the
+/// coefficient of the named product and its name.
+type ProductNames = HashMap<Vec<Id>, (f64, String)>;
 
 /// The model's named products, so that a lowered product with the same
-/// leaves (grouped otherwise by the lowering) finds its name.
+/// leaves (grouped otherwise by the lowering, or scaled) finds its name.
 fn labelled_products(g: &Graph) -> ProductNames {
     let mut out = HashMap::new();
     for (id, label) in g.labels() {
         if let Some((c, fs)) = product_key(g, id) {
-            out.entry((c.to_bits(), fs)).or_insert(label);
+            out.entry(fs).or_insert((c, label));
         }
     }
     out
 }
 
+/// How a value relates to a named product with the same leaves, as a name
+/// prefix: the ratio of the coefficients (`−x` is `neg_x`, `x/2` is
+/// `half_x`); `None` for other ratios.
+pub(crate) fn scale_prefix(ratio: f64) -> Option<&'static str> {
+    Some(match ratio {
+        1.0 => "",
+        -1.0 => "neg_",
+        0.5 => "half_",
+        -0.5 => "neg_half_",
+        2.0 => "twice_",
+        -2.0 => "neg_twice_",
+        _ => return None,
+    })
+}
+
 /// The model's name for the value `id` (snake_case): its own label, or
-/// that of a named product with the same leaves, `neg_<name>` for its
-/// negation.
+/// that of a named product with the same leaves, prefixed by the scale
+/// between them (`neg_<name>` for its negation, `half_<name>`, …).
 fn model_name(g: &Graph, id: Id, products: &ProductNames) -> Option<String> {
     if let Some(l) = g.label(id) {
         return Some(snake_case(&l));
     }
     let (c, fs) = product_key(g, id)?;
-    if let Some(l) = products.get(&(c.to_bits(), fs.clone())) {
-        return Some(snake_case(l));
-    }
-    let l = products.get(&((-c).to_bits(), fs))?;
-    Some(format!("neg_{}", snake_case(l)))
+    let (c0, l) = products.get(&fs)?;
+    Some(format!("{}{}", scale_prefix(c / c0)?, snake_case(l)))
 }
 
 impl<'a> Emitter<'a> {
@@ -133,6 +154,7 @@ impl<'a> Emitter<'a> {
     ) -> Emitter<'a> {
         let partner = sin_cos_partners(g, sched);
         let by_product = labelled_products(g);
+        let by_value = super::value_names::ValueNames::new(g, &sched.lets);
         let mut out: Vec<Option<Ident>> = vec![None; sched.live.len()];
         // Readable names (symbols, model names and functions of them).
         let mut readable: HashMap<Id, String> = HashMap::new();
@@ -157,10 +179,12 @@ impl<'a> Emitter<'a> {
                         n
                     }
                     node => {
-                        let base = model_name(g, id, &by_product).or_else(|| {
-                            let arg = |a: Id| readable.get(&a).cloned();
-                            let_base(g, node, &arg)
-                        });
+                        let base = model_name(g, id, &by_product)
+                            .or_else(|| by_value.get(id).map(str::to_owned))
+                            .or_else(|| {
+                                let arg = |a: Id| readable.get(&a).cloned();
+                                let_base(g, node, &arg)
+                            });
                         match base {
                             Some(base) => {
                                 let n = names.fresh(&base);
@@ -268,7 +292,8 @@ impl<'a> Emitter<'a> {
     fn sum(&mut self, xs: &[Id]) -> Frag {
         let sched = self.sched;
         let Some(f) = crate::eval::factor_sum(self.g, xs, |t| sched.is_named(t)) else {
-            let terms: Vec<(bool, Frag)> = xs.iter().map(|&x| self.signed_term(x)).collect();
+            let mut terms: Vec<(bool, Frag)> = xs.iter().map(|&x| self.signed_term(x)).collect();
+            positive_first(&mut terms);
             return self.signed_sum(terms);
         };
         let terms: Vec<(bool, Frag)> = f
@@ -308,9 +333,7 @@ impl<'a> Emitter<'a> {
                 (!neg, f)
             })
             .collect();
-        if terms.len() == 2 && terms[0].0 && !terms[1].0 {
-            terms.swap(0, 1);
-        }
+        positive_first(&mut terms);
         Some(self.signed_sum(terms))
     }
 

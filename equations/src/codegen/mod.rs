@@ -22,6 +22,7 @@ pub mod ops;
 pub mod registry;
 pub mod schedule;
 mod tokens;
+mod value_names;
 pub mod verify;
 
 use std::path::Path;
@@ -61,6 +62,8 @@ pub struct Generated {
     pub report: Report,
     /// The test call table ([`harness`]).
     pub calls: String,
+    /// The function list macro ([`registry::list`]).
+    pub list: String,
 }
 
 /// The `@generated` header naming the models and how to regenerate;
@@ -109,6 +112,7 @@ pub fn render(modules: &[(&Graph, &Module)]) -> Result<Generated, GenError> {
         source,
         report,
         calls,
+        list: registry::list(modules),
     })
 }
 
@@ -138,8 +142,9 @@ pub fn render_registered() -> Result<Generated, GenError> {
 }
 
 /// Generates the code of every registered model into `out_dir`
-/// (`generated.rs`, `codegen_report.txt` and the test call table
-/// `generated_calls.rs`), writing a file only when its content changes.
+/// (`generated.rs`, `codegen_report.txt`, the test call table
+/// `generated_calls.rs` and the function list `generated_list.rs`),
+/// writing a file only when its content changes.
 /// Returns the report.
 pub fn generate(out_dir: &Path) -> Result<Report, GenError> {
     let generated = render_registered()?;
@@ -151,6 +156,10 @@ pub fn generate(out_dir: &Path) -> Result<Report, GenError> {
     write_if_changed(
         &out_dir.join(harness::CALLS_FILE),
         generated.calls.as_bytes(),
+    )?;
+    write_if_changed(
+        &out_dir.join(registry::LIST_FILE),
+        generated.list.as_bytes(),
     )?;
     Ok(generated.report)
 }

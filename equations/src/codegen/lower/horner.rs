@@ -18,9 +18,37 @@ pub(super) fn factor_sum(g: &Graph, xs: &[Id]) -> Id {
         .count();
     let terms: Vec<Term> = order.iter().map(|&t| factors_of(g, t)).collect();
     let (params, state) = terms.split_at(n_param);
-    let mut addends = horner(g, params.to_vec());
-    addends.extend(horner(g, state.to_vec()));
-    sum_node(g, addends)
+    let mut addends = horner(g, like_terms(params));
+    addends.extend(horner(g, like_terms(state)));
+    match addends.len() {
+        0 => konst(g, 0.0),
+        _ => sum_node(g, addends),
+    }
+}
+
+/// Like terms collected: terms with the same factors (as a multiset) add
+/// their coefficients, in the place of the first; a term whose coefficient
+/// comes to zero is dropped (`x − x`, `a·x + (−a)·x`). Earlier passes can
+/// make two canonical terms one value (a sum and its negation folded into
+/// one `S⁺`), which the canonical simplifier never saw as alike.
+fn like_terms(terms: &[Term]) -> Vec<Term> {
+    let key = |fs: &[Id]| {
+        let mut k = fs.to_vec();
+        k.sort_unstable();
+        k
+    };
+    let mut out: Vec<(Term, Vec<Id>)> = Vec::with_capacity(terms.len());
+    for (c, fs) in terms {
+        let k = key(fs);
+        match out.iter_mut().find(|(_, k2)| *k2 == k) {
+            Some(((c2, _), _)) => *c2 += c,
+            None => out.push(((*c, fs.clone()), k)),
+        }
+    }
+    out.into_iter()
+        .map(|(t, _)| t)
+        .filter(|(c, _)| *c != 0.0)
+        .collect()
 }
 
 /// The addends of `Σ terms` after greedy factoring, each a node.

@@ -21,6 +21,11 @@
 //!    own and replaces the pair everywhere; repeated until no pair recurs
 //!    (greedy pair extraction). `m₂·l₁·l₂` in five terms is computed once.
 //!
+//! After the second sign folding, like terms meet (`combine`): two terms
+//! that the folding made one value add their coefficients (`x − x` is
+//! gone, `x + x` is `2x`), and sums of the same terms in another order are
+//! one value.
+//!
 //! The new nodes are interned without simplification (the simplifier would
 //! flatten them back), so they live beside the canonical ones in the same
 //! arena and only the emitter sees them. The interpreter
@@ -29,6 +34,7 @@
 //! lowered code against. None of the rewrites adds a multiplication.
 
 mod cancel;
+mod combine;
 mod horner;
 mod pairs;
 pub(crate) mod sign;
@@ -43,15 +49,22 @@ pub fn lower(g: &Graph, roots: &[Id]) -> Vec<Id> {
     let signed = sign::fold_negations(g, roots);
     let factored = rebuild(g, &signed, |g, _, node, _| match node {
         Node::Add(xs) => horner::factor_sum(g, &xs),
+        Node::Mul(xs)
+            if xs
+                .iter()
+                .any(|&x| crate::simplify::const_of(g, x) == Some(0.0)) =>
+        {
+            konst(g, 0.0) // a factor cancelled to zero (`horner::like_terms`)
+        }
         node => g.intern(node),
     });
-    let factored = sign::fold_negations(g, &factored);
+    let factored = combine::combine_like_terms(g, &sign::fold_negations(g, &factored));
     let cancelled = rebuild(g, &factored, |g, _, node, _| match node {
         Node::Mul(_) => cancel::cancel_parameters(g, g.intern(node)),
         node => g.intern(node),
     });
     let shared = pairs::share_products(g, &cancelled);
-    reuse_reciprocals(g, &shared)
+    combine::reuse_positive_terms(g, &reuse_reciprocals(g, &shared))
 }
 
 /// `b⁻²` written `(b⁻¹)²` where the function binds `b⁻¹` anyway: the
