@@ -101,6 +101,61 @@ fn limits_table_raises_a_limit() {
 }
 
 #[test]
+fn limit_flag_raises_a_limit() {
+    // 2e6 grid points: refused by default, accepted with --limit, for
+    // check and run alike; a bad flag is a usage error (exit 2).
+    let text = variant("fig9", "count = 400", "count = 2000000");
+    let d = dir("limit_flag");
+    let path = d.join("scene.toml");
+    std::fs::write(&path, &text).unwrap();
+    let p = path.to_str().unwrap();
+    let out = pegdyn(&["check", p]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("--limit max_grid_points=..."), "{stderr}");
+    for flag in ["max_grid_points=5e6", "grid_points=5_000_000"] {
+        let out = pegdyn(&["check", "--limit", flag, p]);
+        assert!(
+            out.status.success(),
+            "{flag}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    // The flag replaces the scene's own [limits] value, also downwards.
+    let out = pegdyn(&[
+        "check",
+        "--limit",
+        "max_grid_points=500",
+        "scenes/fig9.toml",
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("gamma.count") && stderr.contains("5e2"),
+        "{stderr}"
+    );
+    // Run with a lowered sample limit is refused before any output.
+    let out = pegdyn(&[
+        "run",
+        "--limit",
+        "samples=10",
+        "--out",
+        d.join("out").to_str().unwrap(),
+        "scenes/pendulum.toml",
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("max_output_samples"), "{stderr}");
+    assert!(!d.join("out").join("pendulum.csv").exists());
+    for bad in ["max_grid_pts=5", "max_grid_points=0", "max_grid_points"] {
+        let out = pegdyn(&["check", "--limit", bad, p]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{bad}: {stderr}");
+        assert!(stderr.contains(bad), "{stderr}");
+    }
+}
+
+#[test]
 fn wrong_physics_is_refused_with_the_scene_value() {
     refused(
         "depth",
