@@ -27,6 +27,7 @@ mod driver;
 mod events;
 mod explicit_rk;
 mod lu;
+mod non_finite;
 mod options;
 mod rosenbrock;
 mod solution;
@@ -38,7 +39,8 @@ use nalgebra::SVector;
 use crate::system::OdeSystem;
 
 pub use events::{Direction, Event, EventFn};
-pub use options::{IntegrateError, Options, OutputMode};
+pub use non_finite::{NonFiniteAt, NonFiniteQuantity};
+pub use options::{IntegrateError, MAX_STEP_BUDGET, MIN_ATOL, MIN_RTOL, Options, OutputMode};
 pub use solution::{EventHit, Solution, Stats, StopReason};
 
 use driver::Hooks;
