@@ -3,6 +3,7 @@
 
 pub mod atomic;
 pub mod csv;
+pub mod decimate;
 pub mod manifest;
 pub mod plot;
 pub mod svg;

@@ -232,17 +232,23 @@ impl LimitOverrides {
                     })?,
             };
             let text = value.trim().replace('_', "");
-            let v: f64 = text
-                .parse::<u64>()
-                .map(|v| v as f64)
-                .or_else(|_| text.parse::<f64>())
-                .map_err(|_| fail(format!("`{}` is not a number", value.trim())))?;
-            // 2^64 is the first f64 above u64::MAX.
-            if !(v.is_finite() && v >= 1.0 && v.fract() == 0.0 && v < 18_446_744_073_709_551_616.0)
-            {
-                return Err(fail(format!("{v:e} must be a whole number in [1, 2^64)")));
+            let exact = match text.parse::<u64>() {
+                Ok(n) => n,
+                Err(_) => {
+                    let v: f64 = text
+                        .parse()
+                        .map_err(|_| fail(format!("`{}` is not a number", value.trim())))?;
+                    // 2^64 is the first f64 above u64::MAX.
+                    let whole = v.is_finite() && v.fract() == 0.0;
+                    if !(whole && (0.0..18_446_744_073_709_551_616.0).contains(&v)) {
+                        return Err(fail(format!("{v:e} must be a whole number in [1, 2^64)")));
+                    }
+                    v as u64
+                }
+            };
+            if exact == 0 {
+                return Err(fail("must be a whole number in [1, 2^64)".into()));
             }
-            let exact = text.parse::<u64>().unwrap_or(v as u64);
             values.push((canonical, exact));
         }
         Ok(LimitOverrides { values })
