@@ -361,7 +361,8 @@ mod tests {
         // axis width that overflows (reactions near f64::MAX from a fuzzed
         // rigid-peg scene), and widths below f64 resolution of the values.
         let one = |y: f64| vec![(0.0, y)];
-        let cases: Vec<(Scale, Vec<Vec<(f64, f64)>>)> = vec![
+        type Points = Vec<(f64, f64)>;
+        let cases: Vec<(Scale, Vec<Points>)> = vec![
             (
                 Scale::Linear,
                 vec![
