@@ -64,6 +64,13 @@ pub trait OdeSystem<const N: usize> {
         let delta = t1 - t;
         (self.rhs(t1, x) - self.rhs(t, x)) / delta
     }
+
+    /// Names of the state components in order (e.g. the generated
+    /// model's `X_NAMES`), used to name a component that turns non-finite;
+    /// empty (the default) when the system has none.
+    fn state_names(&self) -> &'static [&'static str] {
+        &[]
+    }
 }
 
 /// A forward finite-difference Jacobian of `f` at `x` (see

@@ -101,6 +101,103 @@ fn limits_table_raises_a_limit() {
 }
 
 #[test]
+fn long_runs_stream_every_sample_and_plot_a_decimated_copy() {
+    // 200 001 samples: every one in the CSV, in order and finite; the plot
+    // keeps about 4000 (the SVG stays small).
+    let text = variant("pendulum", "t_end = 10.0", "t_end = 2000.0");
+    let d = dir("stream");
+    let path = d.join("long.toml");
+    std::fs::write(&path, &text).unwrap();
+    let out_dir = d.join("out");
+    let out = pegdyn(&[
+        "run",
+        "-q",
+        path.to_str().unwrap(),
+        "--out",
+        out_dir.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    let csv = std::fs::read_to_string(out_dir.join("long.csv")).unwrap();
+    let times: Vec<f64> = csv
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').next().unwrap().parse().unwrap())
+        .collect();
+    assert_eq!(times.len(), 200_001);
+    assert!(times.windows(2).all(|w| w[1] > w[0]));
+    assert_eq!((times[0], times[times.len() - 1]), (0.0, 2000.0));
+    assert!(
+        csv.lines().skip(1).all(|l| l
+            .split(',')
+            .all(|c| c.parse::<f64>().is_ok_and(f64::is_finite))),
+        "a cell is not a finite number"
+    );
+    let svg = std::fs::metadata(out_dir.join("long.svg")).unwrap().len();
+    assert!(
+        svg < 400_000,
+        "svg of {svg} bytes: the plot was not decimated"
+    );
+    let manifest = std::fs::read_to_string(out_dir.join("long.run.toml")).unwrap();
+    assert!(manifest.contains("status = \"ok\""), "{manifest}");
+}
+
+#[test]
+fn limit_flag_raises_a_limit() {
+    // 2e6 grid points: refused by default, accepted with --limit, for
+    // check and run alike; a bad flag is a usage error (exit 2).
+    let text = variant("fig9", "count = 400", "count = 2000000");
+    let d = dir("limit_flag");
+    let path = d.join("scene.toml");
+    std::fs::write(&path, &text).unwrap();
+    let p = path.to_str().unwrap();
+    let out = pegdyn(&["check", p]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("--limit max_grid_points=..."), "{stderr}");
+    for flag in ["max_grid_points=5e6", "grid_points=5_000_000"] {
+        let out = pegdyn(&["check", "--limit", flag, p]);
+        assert!(
+            out.status.success(),
+            "{flag}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    // The flag replaces the scene's own [limits] value, also downwards.
+    let out = pegdyn(&[
+        "check",
+        "--limit",
+        "max_grid_points=500",
+        "scenes/fig9.toml",
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.contains("gamma.count") && stderr.contains("5e2"),
+        "{stderr}"
+    );
+    // Run with a lowered sample limit is refused before any output.
+    let out = pegdyn(&[
+        "run",
+        "--limit",
+        "samples=10",
+        "--out",
+        d.join("out").to_str().unwrap(),
+        "scenes/pendulum.toml",
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert!(stderr.contains("max_output_samples"), "{stderr}");
+    assert!(!d.join("out").join("pendulum.csv").exists());
+    for bad in ["max_grid_pts=5", "max_grid_points=0", "max_grid_points"] {
+        let out = pegdyn(&["check", "--limit", bad, p]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{bad}: {stderr}");
+        assert!(stderr.contains(bad), "{stderr}");
+    }
+}
+
+#[test]
 fn wrong_physics_is_refused_with_the_scene_value() {
     refused(
         "depth",
@@ -146,8 +243,9 @@ fn wrong_physics_is_refused_with_the_scene_value() {
 }
 
 #[test]
-fn non_finite_results_stop_the_run_and_write_no_nan() {
-    // Precession of 1e200 1/s: the reactions overflow.
+fn non_finite_results_are_refused_before_they_run() {
+    // Precession of 1e200 1/s overflowed the reactions; it is now outside
+    // the rigid model's range (rim speed), refused by run before any file.
     let d = dir("psidot");
     let path = d.join("fast.toml");
     std::fs::write(
@@ -164,16 +262,77 @@ fn non_finite_results_stop_the_run_and_write_no_nan() {
     ]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(1), "{stderr}");
-    // A typed reason (here the rigid model's own refusal), never a NaN file.
-    assert!(stderr.contains("error: "), "{stderr}");
-    assert!(!out_dir.join("fast.csv").exists() && !out_dir.join("fast.svg").exists());
-    let manifest = std::fs::read_to_string(out_dir.join("fast.run.toml")).unwrap();
-    let m: toml::Table = manifest.parse().unwrap();
     assert!(
-        m["status"].as_str().unwrap().starts_with("failed:"),
-        "{manifest}"
+        stderr.contains("motion.psidot[1]` = 1e200") && stderr.contains("rim speed"),
+        "{stderr}"
     );
-    assert_eq!(m["files"].as_array().map(Vec::len), Some(0), "{manifest}");
+    assert!(!out_dir.join("fast.csv").exists() && !out_dir.join("fast.svg").exists());
+}
+
+#[test]
+fn physics_ranges_of_rigid_pendulum_and_jamming_kinds_are_refused() {
+    // The fuzzed align_forward scene whose reactions reached 1e308 N and
+    // whose plot then hung: every offending field is named with its limit.
+    let af = variant("align_forward", "height = 0.070", "height = 7.7e-154")
+        .replacen("mass = 1.0", "mass = 1.4e157", 1)
+        .replacen("psidot = 10.0", "psidot = 6.3e76", 1);
+    refused(
+        "rigid_repro",
+        &af,
+        &[
+            "peg.height` = 7.7e-154: must lie in [1e-6, 1e3] m",
+            "peg.mass` = 1.4e157: must lie in [1e-9, 1e6] kg",
+            "initial.psidot` = 6.3e76",
+            "exceeds 1e3 m/s",
+        ],
+    );
+    refused(
+        "rigid_load",
+        &variant(
+            "align_forward",
+            "force = [0.0, 0.0, 0.0]",
+            "force = [1e9, 0.0, 0.0]",
+        ),
+        &[
+            "loads.force[0]` = 1000000000.0",
+            "above 1e5 m/s^2",
+            "limit 1.000e5 N",
+        ],
+    );
+    refused(
+        "rigid_clearance",
+        &variant(
+            "fig9",
+            "peg_diameter = 0.04995",
+            "peg_diameter = 0.04999999999999",
+        ),
+        &["peg.peg_diameter", "clearance ratio", "1e-9"],
+    );
+    refused(
+        "pendulum_spin",
+        &variant("pendulum", "omega0 = 0.0", "omega0 = 1e160"),
+        &["pendulum.omega0` = 1e160", "sqrt(2e12 g/L) = 4.429e6 rad/s"],
+    );
+    refused(
+        "pendulum_length",
+        &variant("pendulum", "length = 1.0", "length = 1e-30"),
+        &["pendulum.length` = 1e-30: must lie in [1e-6, 1e6] m"],
+    );
+    refused(
+        "double_mass",
+        &variant("double_pendulum", "mass2 = 1.0", "mass2 = 1e300"),
+        &["double_pendulum.mass2` = 1e300: must lie in [1e-9, 1e9] kg"],
+    );
+    refused(
+        "jamming_c",
+        &variant("jamming", "c = [0.002, 0.01]", "c = [1e-15, 0.01]"),
+        &["jamming.c[0]` = 1e-15: must lie in [1e-9,"],
+    );
+    refused(
+        "sweep_mu",
+        &variant("jamming", "mu = 0.3", "mu = 100.0"),
+        &["sweep.mu` = 100.0: must lie in [1e-6, 1e1]"],
+    );
 }
 
 #[test]

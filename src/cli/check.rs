@@ -5,12 +5,13 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 
 use pegdyn::scene;
+use pegdyn::scene::limits::LimitOverrides;
 
 /// Checks each file; fails if any file fails.
-pub fn check(paths: &[PathBuf]) -> ExitCode {
+pub fn check(paths: &[PathBuf], limits: &LimitOverrides) -> ExitCode {
     let mut ok = true;
     for path in paths {
-        match scene::load(path) {
+        match scene::load_with(path, limits) {
             Ok(s) => outln!(
                 "{}: OK ({}): {}",
                 path.display(),

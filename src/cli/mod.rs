@@ -50,12 +50,20 @@ enum Command {
         /// No progress line on stderr.
         #[arg(long, short)]
         quiet: bool,
+        /// Raise a work limit, KEY=VALUE with the keys of the scene's
+        /// [limits] table (e.g. max_output_samples=1e8; the max_ prefix may
+        /// be left out). Repeatable; replaces the scene's own value.
+        #[arg(long = "limit", value_name = "KEY=VALUE")]
+        limits: Vec<String>,
     },
     /// Validate scene files without running them.
     Check {
         /// Scene files (TOML).
         #[arg(required = true)]
         scenes: Vec<PathBuf>,
+        /// Raise a work limit, as for `run`.
+        #[arg(long = "limit", value_name = "KEY=VALUE")]
+        limits: Vec<String>,
     },
     /// Print the generated model code, then its operation-count report.
     Codegen {
@@ -77,6 +85,18 @@ enum Command {
     },
 }
 
+/// The `--limit` arguments, or `None` after printing why they are unusable
+/// (a usage error).
+fn limit_overrides(args: &[String]) -> Option<pegdyn::scene::limits::LimitOverrides> {
+    match pegdyn::scene::limits::LimitOverrides::parse(args) {
+        Ok(o) => Some(o),
+        Err(e) => {
+            errln!("error: {e}");
+            None
+        }
+    }
+}
+
 /// Parses the arguments and runs the subcommand.
 pub fn main() -> ExitCode {
     let cli = match Cli::try_parse() {
@@ -91,8 +111,19 @@ pub fn main() -> ExitCode {
         }
     };
     match cli.command {
-        Command::Run { scene, out, quiet } => run::run(&scene, &out, quiet),
-        Command::Check { scenes } => check::check(&scenes),
+        Command::Run {
+            scene,
+            out,
+            quiet,
+            limits,
+        } => match limit_overrides(&limits) {
+            Some(o) => run::run(&scene, &out, quiet, &o),
+            None => ExitCode::from(2),
+        },
+        Command::Check { scenes, limits } => match limit_overrides(&limits) {
+            Some(o) => check::check(&scenes, &o),
+            None => ExitCode::from(2),
+        },
         Command::Codegen { report_only } => codegen::codegen(report_only),
         Command::Accuracy { csv, only } => accuracy::accuracy(csv.as_deref(), only.as_deref()),
         Command::Kinds => {

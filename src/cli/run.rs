@@ -5,6 +5,7 @@ use std::path::Path;
 use std::process::ExitCode;
 
 use pegdyn::output::{atomic, manifest};
+use pegdyn::scene::limits::LimitOverrides;
 use pegdyn::scene::{self, Progress, RunContext};
 
 /// Whether the scene file lies in `out` under a name an output could take
@@ -17,8 +18,8 @@ fn scene_in_outputs(path: &Path, out: &Path) -> bool {
 }
 
 /// Runs one scene file, writing into `out`.
-pub fn run(path: &Path, out: &Path, quiet: bool) -> ExitCode {
-    let loaded = match scene::load(path) {
+pub fn run(path: &Path, out: &Path, quiet: bool, limits: &LimitOverrides) -> ExitCode {
+    let loaded = match scene::load_with(path, limits) {
         Ok(s) => s,
         Err(errors) => {
             for e in errors.to_string().lines() {

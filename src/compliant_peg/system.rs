@@ -148,6 +148,10 @@ impl OdeSystem<N_STATE> for CompliantSystem {
         }
     }
 
+    fn state_names(&self) -> &'static [&'static str] {
+        &all::Y_NAMES
+    }
+
     /// The exact Jacobian generated from the expression trees.
     fn jacobian(&self, _t: f64, y: &SVector<f64, N_STATE>) -> SMatrix<f64, N_STATE, N_STATE> {
         match self.contacts {

@@ -150,14 +150,24 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
     let (mut t, mut x) = (t0, x0);
     let mut found = Vec::with_capacity(events.len());
     let mut solution_events = Vec::new();
-    let finish = |stop, t, x, stats, recorder: Recorder<'_, N>, events| Solution {
-        t: recorder.t,
-        x: recorder.x,
-        events,
-        stop,
-        stats,
-        t_final: t,
-        x_final: x,
+    // End times of the current run of non-finite rejections, farthest
+    // first, for the probe that names the component at a NonFinite stop.
+    let mut failed_ends: Vec<f64> = Vec::new();
+    let finish = |stop, t, x, stats, recorder: Recorder<'_, N>, events, failed: &[f64]| {
+        let non_finite = match stop {
+            StopReason::NonFinite { .. } => super::non_finite::probe(system, t, &x, failed),
+            _ => None,
+        };
+        Solution {
+            t: recorder.t,
+            x: recorder.x,
+            events,
+            stop,
+            stats,
+            t_final: t,
+            x_final: x,
+            non_finite,
+        }
     };
 
     recorder.advance(t0, &x0, None, hooks);
@@ -171,6 +181,7 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
             stats,
             recorder,
             solution_events,
+            &failed_ends,
         );
     }
     let mut g_prev: Vec<f64> = events.iter().map(|e| e.eval(t0, &x0)).collect();
@@ -211,7 +222,7 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
     while t < t_end {
         if attempts >= options.max_steps {
             let stop = StopReason::MaxSteps { t, steps: attempts };
-            return finish(stop, t, x, stats, recorder, solution_events);
+            return finish(stop, t, x, stats, recorder, solution_events, &failed_ends);
         }
         let floor = 16.0 * f64::EPSILON * t.abs().max(t_end.abs()).max(f64::MIN_POSITIVE);
         if h < floor {
@@ -220,7 +231,7 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
             } else {
                 StopReason::StepSizeTooSmall { t, h }
             };
-            return finish(stop, t, x, stats, recorder, solution_events);
+            return finish(stop, t, x, stats, recorder, solution_events, &failed_ends);
         }
         // The end of this step; the last step lands exactly on t_end.
         let t1 = match fixed {
@@ -242,11 +253,15 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
                         stats,
                         recorder,
                         solution_events,
+                        &[t1],
                     );
                 }
                 stats.rejected += 1;
                 last_rejected = true;
                 last_nonfinite = matches!(outcome, Attempt::NonFinite);
+                if last_nonfinite {
+                    failed_ends.push(t1);
+                }
                 h = 0.25 * h_try;
                 continue;
             }
@@ -256,6 +271,7 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
             if !norm.is_finite() {
                 stats.rejected += 1;
                 (last_rejected, last_nonfinite) = (true, true);
+                failed_ends.push(t1);
                 h = 0.25 * h_try;
                 continue;
             }
@@ -272,6 +288,7 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
             h = h_next.min(h_max);
         }
         (last_rejected, last_nonfinite) = (false, false);
+        failed_ends.clear();
         stats.steps += 1;
         // The interpolant is only built when something reads it.
         let dense = needs_dense.then(|| stepper.interpolant(t, h_try, (&x, &f), (&x1, &f1)));
@@ -305,7 +322,7 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
                 index: hit.index,
                 t: hit.t,
             };
-            return finish(stop, hit.t, hit.x, stats, recorder, solution_events);
+            return finish(stop, hit.t, hit.x, stats, recorder, solution_events, &[]);
         }
         solution_events.append(&mut found);
 
@@ -322,5 +339,6 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
         stats,
         recorder,
         solution_events,
+        &[],
     )
 }

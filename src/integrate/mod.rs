@@ -28,6 +28,7 @@ mod events;
 mod explicit_rk;
 mod lu;
 mod method;
+mod non_finite;
 mod options;
 mod rosenbrock;
 mod solution;
@@ -40,7 +41,8 @@ use crate::system::OdeSystem;
 
 pub use events::{Direction, Event, EventFn};
 pub use method::{Method, MethodKind};
-pub use options::{IntegrateError, Options, OutputMode};
+pub use non_finite::{NonFiniteAt, NonFiniteQuantity};
+pub use options::{IntegrateError, MAX_STEP_BUDGET, MIN_ATOL, MIN_RTOL, Options, OutputMode};
 pub use solution::{EventHit, Solution, Stats, StopReason};
 
 use driver::Hooks;

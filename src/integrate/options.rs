@@ -15,22 +15,39 @@ pub enum OutputMode {
     AtTimes(Vec<f64>),
 }
 
+/// Smallest relative tolerance accepted: a relative error below f64's
+/// rounding unit (`ε/2 ≈ 1.1e-16`) cannot be met, and the step control
+/// would shrink the step towards the round-off floor on every step.
+pub const MIN_RTOL: f64 = 1e-15;
+
+/// Smallest absolute tolerance accepted: the smallest normal f64. Below,
+/// the error weights `1/(atol + rtol |x|)` of a component at zero overflow
+/// and every step would be rejected as non-finite.
+pub const MIN_ATOL: f64 = f64::MIN_POSITIVE;
+
+/// Largest step budget ([`Options::max_steps`]) accepted: `10⁹` attempted
+/// steps are hours of work for the smallest system; a larger budget is no
+/// budget.
+pub const MAX_STEP_BUDGET: usize = 1_000_000_000;
+
 /// Tolerances and limits of an integration.
 ///
 /// The local error estimate `e` of a step is accepted when
 /// `√(mean((eᵢ / (atol + rtol·max(|xᵢ|, |x̃ᵢ|)))²)) ≤ 1`.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Options {
-    /// Relative tolerance (> 0).
+    /// Relative tolerance (`>= MIN_RTOL`, finite; a huge value turns the
+    /// error control off, e.g. to take the `h0` steps unchanged).
     pub rtol: f64,
-    /// Absolute tolerance (> 0), in state units.
+    /// Absolute tolerance (`>= MIN_ATOL`, finite), in state units.
     pub atol: f64,
     /// Initial step; `None` chooses one from the right-hand side
     /// (Hairer, Nørsett & Wanner I, §II.4, "starting step size").
     pub h0: Option<f64>,
     /// Largest step; `None` means the whole interval.
     pub h_max: Option<f64>,
-    /// Budget of attempted (accepted + rejected) steps.
+    /// Budget of attempted (accepted + rejected) steps, in
+    /// `[1, MAX_STEP_BUDGET]`.
     pub max_steps: usize,
     /// Which points to report.
     pub output: OutputMode,
@@ -81,6 +98,30 @@ impl Options {
         }
         positive("rtol", self.rtol)?;
         positive("atol", self.atol)?;
+        if self.rtol < MIN_RTOL {
+            return Err(IntegrateError::InvalidOption {
+                name: "rtol",
+                value: self.rtol,
+                reason: "must be at least 1e-15: f64 cannot meet a relative error below its \
+                         rounding unit (1.1e-16), and the step control would shrink the step \
+                         without end",
+            });
+        }
+        if self.atol < MIN_ATOL {
+            return Err(IntegrateError::InvalidOption {
+                name: "atol",
+                value: self.atol,
+                reason: "must be at least 2.2e-308 (the smallest normal f64): below, the error \
+                         weight of a component at zero overflows",
+            });
+        }
+        if self.max_steps > MAX_STEP_BUDGET {
+            return Err(IntegrateError::InvalidOption {
+                name: "max_steps",
+                value: self.max_steps as f64,
+                reason: "must be at most 1e9 attempted steps",
+            });
+        }
         if let Some(h0) = self.h0 {
             positive("h0", h0)?;
         }

@@ -115,4 +115,8 @@ pub struct Solution<const N: usize> {
     pub t_final: f64,
     /// State at `t_final` (always finite).
     pub x_final: SVector<f64, N>,
+    /// For a [`StopReason::NonFinite`] stop: the first non-finite
+    /// component found at the last finite state (`None` otherwise, or when
+    /// the probe found every component finite).
+    pub non_finite: Option<super::NonFiniteAt>,
 }

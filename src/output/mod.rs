@@ -4,6 +4,7 @@
 
 pub mod atomic;
 pub mod csv;
+pub mod decimate;
 pub mod manifest;
 pub mod memory;
 pub mod plot;

@@ -88,11 +88,12 @@ impl Figure {
                 let (xs, ys) = (x.1 - x.0, y.1 - y.0);
                 let (xl, yl) = ((x.0..x.1).log_scale(), (y.0..y.1).log_scale());
                 let (xr, yr) = (x.0..x.1, y.0..y.1);
+                let clip = (x, y);
                 let r = match (panel.x_scale, panel.y_scale) {
-                    (Scale::Linear, Scale::Linear) => draw(area, panel, (xr, xs), (yr, ys)),
-                    (Scale::Linear, Scale::Log) => draw(area, panel, (xr, xs), (yl, 0.0)),
-                    (Scale::Log, Scale::Linear) => draw(area, panel, (xl, 0.0), (yr, ys)),
-                    (Scale::Log, Scale::Log) => draw(area, panel, (xl, 0.0), (yl, 0.0)),
+                    (Scale::Linear, Scale::Linear) => draw(area, panel, clip, (xr, xs), (yr, ys)),
+                    (Scale::Linear, Scale::Log) => draw(area, panel, clip, (xr, xs), (yl, 0.0)),
+                    (Scale::Log, Scale::Linear) => draw(area, panel, clip, (xl, 0.0), (yr, ys)),
+                    (Scale::Log, Scale::Log) => draw(area, panel, clip, (xl, 0.0), (yl, 0.0)),
                 };
                 r.map_err(plot_err)?;
             }
@@ -107,8 +108,24 @@ fn drawable(v: f64, s: Scale) -> bool {
     v.is_finite() && (s == Scale::Linear || v > 0.0)
 }
 
+/// Largest magnitude an axis end may take: the axis width `hi − lo` must
+/// stay finite (plotters' tick search divides by it and loops without end
+/// on an infinite or NaN width). Points beyond are drawn off the chart.
+const AXIS_LIMIT: f64 = 1e300;
+
+/// Largest and inverse smallest end of a log axis: the ratio of the ends
+/// must stay finite (plotters counts decades as `ln(end/start)` and loops
+/// without end when it is infinite).
+const LOG_AXIS_LIMIT: f64 = 1e150;
+
+/// Smallest axis width relative to the largest magnitude on the axis:
+/// below, ticks are closer than f64 resolves and plotters' tick search
+/// never finds a spacing (it kept dividing the spacing by ten).
+const MIN_RELATIVE_WIDTH: f64 = 1e-9;
+
 /// Axis range over the drawable points of the panel, padded by 5 % on a
-/// linear axis and to whole decades' fractions on a log axis.
+/// linear axis and to whole decades' fractions on a log axis, then made
+/// safe to draw ([`drawable_range`]).
 fn bounds(panel: &Panel, s: Scale, pick: impl Fn(&(f64, f64)) -> f64) -> Option<(f64, f64)> {
     let (xs, ys) = (panel.x_scale, panel.y_scale);
     let vals = panel
@@ -120,18 +137,50 @@ fn bounds(panel: &Panel, s: Scale, pick: impl Fn(&(f64, f64)) -> f64) -> Option<
     let (lo, hi) = vals.fold(None, |acc: Option<(f64, f64)>, v| {
         Some(acc.map_or((v, v), |(l, h)| (l.min(v), h.max(v))))
     })?;
-    Some(match s {
+    Some(drawable_range(lo, hi, s))
+}
+
+/// The axis `[lo, hi]` (data extremes, `lo <= hi`) padded and bounded so
+/// that its ends are within `±AXIS_LIMIT` (log: `[1/LOG_AXIS_LIMIT,
+/// LOG_AXIS_LIMIT]`) and its width is at least `MIN_RELATIVE_WIDTH` of its
+/// largest magnitude (log: a ratio of at least 4).
+fn drawable_range(lo: f64, hi: f64, s: Scale) -> (f64, f64) {
+    match s {
         Scale::Linear => {
+            let (lo, hi) = (
+                lo.clamp(-AXIS_LIMIT, AXIS_LIMIT),
+                hi.clamp(-AXIS_LIMIT, AXIS_LIMIT),
+            );
             let pad = if hi > lo {
                 0.05 * (hi - lo)
             } else {
                 0.5 * lo.abs().max(1.0)
             };
-            (lo - pad, hi + pad)
+            let (lo, hi) = (
+                (lo - pad).max(-1.1 * AXIS_LIMIT),
+                (hi + pad).min(1.1 * AXIS_LIMIT),
+            );
+            let magnitude = lo.abs().max(hi.abs());
+            let half = 0.5 * MIN_RELATIVE_WIDTH * magnitude;
+            if hi - lo >= 2.0 * half {
+                (lo, hi)
+            } else {
+                let mid = 0.5 * lo + 0.5 * hi;
+                (mid - half, mid + half)
+            }
         }
-        Scale::Log if hi > lo => (lo / 1.2, hi * 1.2),
-        Scale::Log => (lo / 2.0, hi * 2.0),
-    })
+        Scale::Log => {
+            let (lo, hi) = (
+                lo.clamp(1.0 / LOG_AXIS_LIMIT, LOG_AXIS_LIMIT),
+                hi.clamp(1.0 / LOG_AXIS_LIMIT, LOG_AXIS_LIMIT),
+            );
+            if hi > 4.0 * lo {
+                (lo / 1.2, hi * 1.2)
+            } else {
+                (lo / 2.0, hi * 2.0)
+            }
+        }
+    }
 }
 
 /// A short tick label: `0` when `|v|` is below `1e-9 * span` (rounding
@@ -182,6 +231,7 @@ fn segments(points: &[(f64, f64)], xs: Scale, ys: Scale) -> Vec<Vec<(f64, f64)>>
 fn draw<X, Y>(
     area: &DrawingArea<SVGBackend<'_>, Shift>,
     panel: &Panel,
+    clip: ((f64, f64), (f64, f64)),
     (x, x_span): (X, f64),
     (y, y_span): (Y, f64),
 ) -> Result<(), String>
@@ -212,6 +262,13 @@ where
         let line = ShapeStyle::from(color).stroke_width(2);
         let mut labelled = s.name.is_empty();
         for seg in segments(&s.points, panel.x_scale, panel.y_scale) {
+            // Points beyond a bounded axis (|v| > AXIS_LIMIT) are drawn at
+            // its edge: plotters' pixel arithmetic overflows far outside.
+            let ((x0, x1), (y0, y1)) = clip;
+            let seg: Vec<(f64, f64)> = seg
+                .into_iter()
+                .map(|(x, y)| (x.clamp(x0, x1), y.clamp(y0, y1)))
+                .collect();
             let anno = match s.style {
                 Style::Solid => chart.draw_series(LineSeries::new(seg, line)),
                 Style::Dashed => chart.draw_series(DashedLineSeries::new(seg, 8, 5, line)),
@@ -317,6 +374,52 @@ mod tests {
             assert!(svg.contains(text), "{text} missing");
         }
         assert!(count(&svg, "<circle") >= 29);
+    }
+
+    #[test]
+    fn extreme_data_ranges_render() {
+        // Each of these made plotters' tick search loop without end: an
+        // axis width that overflows (reactions near f64::MAX from a fuzzed
+        // rigid-peg scene), and widths below f64 resolution of the values.
+        let one = |y: f64| vec![(0.0, y)];
+        type Points = Vec<(f64, f64)>;
+        let cases: Vec<(Scale, Vec<Points>)> = vec![
+            (
+                Scale::Linear,
+                vec![
+                    one(-1.2775898627013294e308),
+                    one(4.3210618057165163e307),
+                    one(7.036673849690435e307),
+                ],
+            ),
+            (Scale::Linear, vec![vec![(0.0, -f64::MAX), (1.0, f64::MAX)]]),
+            (
+                Scale::Linear,
+                vec![vec![(0.0, 1000.0), (1.0, 1000.0 + 1e-12)]],
+            ),
+            (Scale::Linear, vec![vec![(0.0, 0.3), (1.0, 0.3 + 5e-17)]]),
+            (
+                Scale::Linear,
+                vec![vec![(0.0, 7.7e-154), (1.0, 7.7e-154 * (1.0 + 1e-15))]],
+            ),
+            (Scale::Log, vec![vec![(1.0, 5e-324), (2.0, f64::MAX)]]),
+            (Scale::Log, vec![vec![(1.0, 1.0), (2.0, 1.0 + 1e-15)]]),
+        ];
+        for (scale, series) in cases {
+            let mut panel = Panel::new("extreme", "t [s]", "y").scales(Scale::Linear, scale);
+            for (i, pts) in series.into_iter().enumerate() {
+                panel = panel.with(Series::line(format!("s{i}"), pts));
+            }
+            let (lo, hi) = bounds(&panel, scale, |p| p.1).unwrap();
+            assert!(lo.is_finite() && hi.is_finite() && (hi - lo).is_finite() && hi > lo);
+            assert!((hi / lo).is_finite() || scale == Scale::Linear);
+            let fig = Figure {
+                panels: vec![panel],
+                ..Figure::new()
+            };
+            let svg = fig.render().unwrap();
+            assert!(svg.contains("extreme"));
+        }
     }
 
     #[test]

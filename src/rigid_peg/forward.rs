@@ -305,6 +305,10 @@ impl OdeSystem<4> for PegSystem<'_> {
         }
     }
 
+    fn state_names(&self) -> &'static [&'static str] {
+        &crate::generated::rigid_peg::X_NAMES
+    }
+
     fn time_derivative(&self, _t: f64, _x: &Vector4<f64>) -> Vector4<f64> {
         Vector4::zeros()
     }

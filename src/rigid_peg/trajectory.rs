@@ -48,6 +48,9 @@ pub struct Trajectory {
     pub restarts: Vec<Restart>,
     /// Integrator work, summed over phases.
     pub stats: Stats,
+    /// For a non-finite integrator stop: the first non-finite component
+    /// ([`crate::integrate::Solution::non_finite`]).
+    pub non_finite: Option<crate::integrate::NonFiniteAt>,
 }
 
 /// Invalid input to [`simulate`].
@@ -128,6 +131,7 @@ pub fn simulate_with_progress(
         stop: ForwardStop::ReachedEnd { t: t0 },
         restarts: Vec::new(),
         stats: Stats::default(),
+        non_finite: None,
     };
     let (mut t, mut x) = (t0, x0);
     loop {
@@ -206,6 +210,7 @@ pub fn simulate_with_progress(
         let system = PegSystem { model, start };
         let sol = solver.solve(&system, t, x, t_end)?;
         out.stats += &sol.stats;
+        out.non_finite = sol.non_finite;
         for (ts, xs) in sol.t.iter().zip(&sol.x) {
             push_row(model, &mut out.rows, *ts, *xs, start);
         }

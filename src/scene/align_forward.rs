@@ -212,6 +212,24 @@ impl AlignForwardScene {
         }
         c.positive("friction.v_stop", self.friction.v_stop);
         c.positive("friction.v_s", self.friction.v_s);
+        {
+            use crate::scene::ranges::rigid::{check_load, check_rate};
+            let (p, m) = (&self.peg, self.peg.mass);
+            check_rate(
+                &mut c,
+                "initial.psidot",
+                i.psidot,
+                0.5 * p.peg_diameter,
+                "d/2",
+            );
+            check_rate(&mut c, "initial.gammadot", i.gammadot, p.height, "H");
+            let lever = p.height.max(p.hole_diameter);
+            check_load(&mut c, "loads.m_gamma", l.m_gamma, m * lever, "N m");
+            check_load(&mut c, "loads.m_psi", l.m_psi, m * lever, "N m");
+            for (k, v) in l.force.iter().enumerate() {
+                check_load(&mut c, &format!("loads.force[{k}]"), *v, m, "N");
+            }
+        }
         c.extend(self.integrator.check("integrator"));
         if c.is_ok() {
             let g0 = self.peg.params().gamma0();
@@ -336,7 +354,12 @@ impl Scene for AlignForwardScene {
                 .0
                 .method,
             t_end: t_final,
-            stop: tr.stop.to_string(),
+            stop: match (&tr.stop, &tr.non_finite) {
+                (crate::rigid_peg::stop::ForwardStop::Integrator(r), nf) => {
+                    crate::scene::simulate::describe_stop_at(r, nf.as_ref(), &[])
+                }
+                (s, _) => s.to_string(),
+            },
             success: tr.stop.is_success(),
             steps: tr.stats.steps,
             rejected: tr.stats.rejected,

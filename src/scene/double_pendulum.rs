@@ -35,8 +35,10 @@ use serde::Deserialize;
 
 use crate::error::{RunError, SceneErrors};
 use crate::output::csv::CsvWriter;
+use crate::output::decimate::{Decimate, PLOT_POINTS};
 use crate::output::plot::{Figure, Panel, Series};
-use crate::scene::simulate::{integrate, integration_summary};
+use crate::scene::limits::sample_count;
+use crate::scene::simulate::{integrate_streaming, integration_summary};
 use crate::scene::validate::Checker;
 use crate::scene::{Document, IntegratorSpec, Kind, Metric, RunContext, RunSummary, Scene};
 pub use crate::textbook::double_pendulum::DoublePendulumParams;
@@ -79,6 +81,25 @@ impl DoublePendulumScene {
         c.in_range("double_pendulum.theta2_deg", p.theta2_deg, -180.0, 180.0);
         c.finite("double_pendulum.omega1", p.omega1);
         c.finite("double_pendulum.omega2", p.omega2);
+        {
+            use crate::scene::ranges::pendulum::{DOUBLE_PENDULUM, check_all, check_spin};
+            let values = [p.length1, p.length2, p.mass1, p.mass2, p.gravity];
+            check_all(&mut c, DOUBLE_PENDULUM, &values);
+            check_spin(
+                &mut c,
+                "double_pendulum.omega1",
+                p.omega1,
+                p.length1,
+                p.gravity,
+            );
+            check_spin(
+                &mut c,
+                "double_pendulum.omega2",
+                p.omega2,
+                p.length2,
+                p.gravity,
+            );
+        }
         c.extend(self.integrator.check("integrator"));
         c.finish()
     }
@@ -112,8 +133,6 @@ impl Scene for DoublePendulumScene {
             p.omega1,
             p.omega2,
         );
-        let sol = integrate(&system, x0, &self.integrator, Vec::new(), &mut ctx.progress)?;
-
         // Energy error relative to the potential-energy scale of the problem.
         let e0 = system.energy(&x0);
         let scale = (p.mass1 + p.mass2) * p.gravity * p.length1 + p.mass2 * p.gravity * p.length2;
@@ -129,21 +148,46 @@ impl Scene for DoublePendulumScene {
                 "energy_error",
             ],
         )?;
+        // Every sample streams to the CSV; the plots keep a decimated copy
+        // (and the last sample).
+        let spec = &self.integrator;
+        let mut keep = Decimate::new(
+            sample_count(spec.t0, spec.t_end, spec.output_interval()),
+            PLOT_POINTS,
+        );
         let (mut th1, mut th2, mut path, mut err) =
             (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        let mut last = None;
         let mut drift: f64 = 0.0;
-        for (&t, x) in sol.t.iter().zip(&sol.x) {
+        let bob = |x: &Vector4<f64>| {
+            (
+                p.length1 * x[0].sin() + p.length2 * x[1].sin(),
+                -p.length1 * x[0].cos() - p.length2 * x[1].cos(),
+            )
+        };
+        let sink = |t: f64, x: &Vector4<f64>| -> Result<(), RunError> {
             let e = system.energy(x);
             let rel = (e - e0) / scale;
             drift = drift.max(rel.abs());
             csv.row(&[t, x[0], x[1], x[2], x[3], e, rel])?;
-            th1.push((t, x[0]));
-            th2.push((t, x[1]));
-            path.push((
-                p.length1 * x[0].sin() + p.length2 * x[1].sin(),
-                -p.length1 * x[0].cos() - p.length2 * x[1].cos(),
-            ));
-            err.push((t, rel));
+            let point = ((t, x[0]), (t, x[1]), bob(x), (t, rel));
+            if keep.keep() {
+                th1.push(point.0);
+                th2.push(point.1);
+                path.push(point.2);
+                err.push(point.3);
+                last = None;
+            } else {
+                last = Some(point);
+            }
+            Ok(())
+        };
+        let sol = integrate_streaming(&system, x0, spec, Vec::new(), &mut ctx.progress, sink)?;
+        if let Some((a, b, c, d)) = last {
+            th1.push(a);
+            th2.push(b);
+            path.push(c);
+            err.push(d);
         }
         let csv = csv.finish()?;
 

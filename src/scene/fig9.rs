@@ -98,6 +98,7 @@ impl PegTable {
             c.finite("peg.gravity", self.gravity);
         }
         c.non_negative("peg.friction", self.friction);
+        crate::scene::ranges::rigid::check_peg(c, self);
         if self.peg_diameter >= self.hole_diameter {
             c.push(SceneError::invalid(
                 "peg.peg_diameter",
@@ -181,9 +182,20 @@ impl Fig9Scene {
                 "must list at least one rate",
             ));
         }
+        let rigid = |c: &mut Checker, name: &str, rate: f64, radius: f64, r: &str| {
+            crate::scene::ranges::rigid::check_rate(c, name, rate, radius, r);
+        };
+        rigid(
+            &mut c,
+            "motion.gammadot",
+            self.motion.gammadot,
+            self.peg.height,
+            "H",
+        );
         for (i, &w) in self.motion.psidot.iter().enumerate() {
             let name = format!("motion.psidot[{i}]");
             c.finite(&name, w);
+            rigid(&mut c, &name, w, 0.5 * self.peg.peg_diameter, "d/2");
             if w == 0.0 && self.motion.gammadot == 0.0 {
                 c.push(SceneError::invalid(
                     name,

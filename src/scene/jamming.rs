@@ -115,6 +115,19 @@ impl JammingScene {
             |v| v > 0.0,
             "must be positive",
         );
+        let [r_m, c_range, mu, l_m] = crate::scene::ranges::jamming::JAMMING else {
+            return c.finish();
+        };
+        r_m.check(&mut c, p.r_m);
+        for (range, field, values) in [
+            (c_range, "c", &p.c),
+            (mu, "mu", &p.mu),
+            (l_m, "l_m", &p.l_m),
+        ] {
+            for (i, &v) in values.iter().enumerate() {
+                range.check_as(&mut c, &format!("jamming.{field}[{i}]"), v);
+            }
+        }
         c.finish()
     }
 }

@@ -174,6 +174,10 @@ impl SweepParams {
         c.positive("sweep.t_max_s", self.t_max_s);
         c.positive("sweep.advance_m", self.advance_m);
         c.positive("sweep.window_s", self.window_s);
+        let values = [self.r_m, self.c, self.mu, self.l_m, self.peg_length_m];
+        for (range, v) in crate::scene::ranges::jamming::SWEEP.iter().zip(values) {
+            range.check(&mut c, v);
+        }
         if self.n < 3 {
             c.push(SceneError::invalid("sweep.n", self.n, "must be at least 3"));
         }

@@ -126,9 +126,10 @@ impl Limits {
                     item.shown(),
                     format!(
                         "asks for about {:.3e} {} ({}), above the limit {bound:e}; \
-                         raise `[limits] {} = ...` if this is intended",
+                         raise `[limits] {} = ...` (or `--limit {}=...`) if this is intended",
                         item.count,
                         unit(item.limit),
+                        item.limit,
                         item.limit,
                         item.limit,
                     ),
@@ -146,7 +147,8 @@ impl Limits {
                 worst.map_or_else(|| Raw(format!("{mib:.3e} MiB")), WorkItem::shown),
                 format!(
                     "the stored results would need about {mib:.3e} MiB, above the limit of {} MiB; \
-                     raise `[limits] max_memory_mb = ...` if this is intended",
+                     raise `[limits] max_memory_mb = ...` (or `--limit max_memory_mb=...`) \
+                     if this is intended",
                     self.max_memory_mb
                 ),
             ));
@@ -156,6 +158,114 @@ impl Limits {
         } else {
             Err(SceneErrors::new(errors))
         }
+    }
+}
+
+/// Limits raised (or lowered) from outside the scene, e.g. by
+/// `pegdyn run --limit max_output_samples=1e8`: `KEY=VALUE` pairs whose
+/// keys are those of the `[limits]` table (the `max_` prefix may be left
+/// out, and `samples` stands for `max_output_samples`). An override
+/// replaces the scene's own value of that key.
+///
+/// ```
+/// use pegdyn::scene::limits::{LimitOverrides, Limits};
+/// let o = LimitOverrides::parse(&["samples=1e8", "max_runs=10000"]).unwrap();
+/// let l = o.apply(Limits::default());
+/// assert_eq!((l.max_output_samples, l.max_runs), (100_000_000, 10_000));
+/// assert!(LimitOverrides::parse(&["max_sample=5"]).is_err());
+/// ```
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct LimitOverrides {
+    /// `(key of the [limits] table, value)`, in the order given.
+    pub values: Vec<(&'static str, u64)>,
+}
+
+/// The `[limits]` keys.
+pub const KEYS: [&str; 5] = [
+    "max_output_samples",
+    "max_steps",
+    "max_grid_points",
+    "max_runs",
+    "max_memory_mb",
+];
+
+/// A `--limit KEY=VALUE` argument that cannot be used.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[error("--limit `{arg}`: {reason}")]
+pub struct LimitArgError {
+    /// The argument as given.
+    pub arg: String,
+    /// What is wrong with it.
+    pub reason: String,
+}
+
+impl LimitOverrides {
+    /// Parses `KEY=VALUE` arguments. `VALUE` is a whole number `>= 1`,
+    /// written as an integer (`100_000_000`) or a float (`1e8`).
+    ///
+    /// # Errors
+    /// The first argument that has no `=`, an unknown key, or a value that
+    /// is not a whole number in `[1, 2^64)`.
+    pub fn parse<S: AsRef<str>>(args: &[S]) -> Result<Self, LimitArgError> {
+        let mut values = Vec::new();
+        for arg in args {
+            let arg = arg.as_ref();
+            let fail = |reason: String| LimitArgError {
+                arg: arg.to_owned(),
+                reason,
+            };
+            let (key, value) = arg
+                .split_once('=')
+                .ok_or_else(|| fail("expected KEY=VALUE, e.g. max_output_samples=1e8".into()))?;
+            let key = key.trim();
+            let canonical = match key {
+                "samples" | "output_samples" => "max_output_samples",
+                k => KEYS
+                    .iter()
+                    .copied()
+                    .find(|c| *c == k || c.strip_prefix("max_") == Some(k))
+                    .ok_or_else(|| {
+                        fail(format!(
+                            "unknown limit `{key}`; the keys are {} (as in the [limits] table)",
+                            KEYS.join(", ")
+                        ))
+                    })?,
+            };
+            let text = value.trim().replace('_', "");
+            let exact = match text.parse::<u64>() {
+                Ok(n) => n,
+                Err(_) => {
+                    let v: f64 = text
+                        .parse()
+                        .map_err(|_| fail(format!("`{}` is not a number", value.trim())))?;
+                    // 2^64 is the first f64 above u64::MAX.
+                    let whole = v.is_finite() && v.fract() == 0.0;
+                    if !(whole && (0.0..18_446_744_073_709_551_616.0).contains(&v)) {
+                        return Err(fail(format!("{v:e} must be a whole number in [1, 2^64)")));
+                    }
+                    v as u64
+                }
+            };
+            if exact == 0 {
+                return Err(fail("must be a whole number in [1, 2^64)".into()));
+            }
+            values.push((canonical, exact));
+        }
+        Ok(LimitOverrides { values })
+    }
+
+    /// `limits` with every override applied.
+    pub fn apply(&self, mut limits: Limits) -> Limits {
+        for &(key, v) in &self.values {
+            match key {
+                "max_output_samples" => limits.max_output_samples = v,
+                "max_steps" => limits.max_steps = v,
+                "max_grid_points" => limits.max_grid_points = v,
+                "max_runs" => limits.max_runs = v,
+                _ => limits.max_memory_mb = v,
+            }
+        }
+        limits
     }
 }
 
@@ -221,6 +331,35 @@ mod tests {
         assert!(raised.check(&work).is_ok());
         let nan = [WorkItem::new("x", "max_runs", f64::NAN, 0.0)];
         assert!(raised.check(&nan).is_err());
+    }
+
+    #[test]
+    fn overrides_take_the_table_keys_and_refuse_the_rest() {
+        let o = LimitOverrides::parse(&["max_steps=20_000_000", "grid_points = 3e6"]).unwrap();
+        let l = o.apply(Limits::default());
+        assert_eq!((l.max_steps, l.max_grid_points), (20_000_000, 3_000_000));
+        assert_eq!(l.max_runs, Limits::default().max_runs);
+        let big = LimitOverrides::parse(&["max_runs=18446744073709551615"]).unwrap();
+        assert_eq!(big.values, vec![("max_runs", u64::MAX)]);
+        for bad in [
+            "max_steps",
+            "max_step=5",
+            "runs=0",
+            "runs=1.5",
+            "runs=nan",
+            "runs=1e30",
+            "runs=-3",
+        ] {
+            let e = LimitOverrides::parse(&[bad]).unwrap_err();
+            assert_eq!(e.arg, bad);
+        }
+        let e = LimitOverrides::parse(&["max_step=5"])
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("unknown limit `max_step`") && e.contains("max_steps"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -107,6 +107,16 @@ pub fn parse(text: &str) -> Result<LoadedScene, SceneErrors> {
 
 /// Parses and validates scene text, naming the outputs after `name`.
 pub fn parse_named(text: &str, name: &str) -> Result<LoadedScene, SceneErrors> {
+    parse_named_with(text, name, &limits::LimitOverrides::default())
+}
+
+/// As [`parse_named`], with the scene's `[limits]` replaced key by key by
+/// `overrides` (the `--limit` option of `pegdyn check` and `pegdyn run`).
+pub fn parse_named_with(
+    text: &str,
+    name: &str,
+    overrides: &limits::LimitOverrides,
+) -> Result<LoadedScene, SceneErrors> {
     let doc = Document::parse(text)?;
     let kind = KINDS.iter().find(|k| k.name == doc.kind()).ok_or_else(|| {
         doc.locate_all(SceneErrors::from(SceneError::UnknownKind {
@@ -115,7 +125,8 @@ pub fn parse_named(text: &str, name: &str) -> Result<LoadedScene, SceneErrors> {
         }))
     })?;
     let scene = (kind.parse)(&doc).map_err(|e| doc.locate_all(e))?;
-    doc.limits()?
+    overrides
+        .apply(doc.limits()?)
         .check(&scene.work())
         .map_err(|e| doc.locate_all(e))?;
     Ok(LoadedScene {
@@ -128,6 +139,14 @@ pub fn parse_named(text: &str, name: &str) -> Result<LoadedScene, SceneErrors> {
 
 /// Reads, parses and validates the scene file at `path`.
 pub fn load(path: &Path) -> Result<LoadedScene, SceneErrors> {
+    load_with(path, &limits::LimitOverrides::default())
+}
+
+/// As [`load`], with `overrides` applied to the scene's `[limits]`.
+pub fn load_with(
+    path: &Path,
+    overrides: &limits::LimitOverrides,
+) -> Result<LoadedScene, SceneErrors> {
     let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
         path: path.to_path_buf(),
         source,
@@ -135,7 +154,7 @@ pub fn load(path: &Path) -> Result<LoadedScene, SceneErrors> {
     let name = path
         .file_stem()
         .map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());
-    parse_named(&text, &name)
+    parse_named_with(&text, &name, overrides)
 }
 
 /// What a running scene gets from the caller.

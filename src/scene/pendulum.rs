@@ -31,8 +31,10 @@ use serde::Deserialize;
 use crate::error::{RunError, SceneErrors};
 use crate::integrate::{Direction, Event};
 use crate::output::csv::CsvWriter;
+use crate::output::decimate::{Decimate, PLOT_POINTS};
 use crate::output::plot::{Figure, Panel, Series};
-use crate::scene::simulate::{integrate, integration_summary};
+use crate::scene::limits::sample_count;
+use crate::scene::simulate::{integrate_streaming, integration_summary};
 use crate::scene::validate::Checker;
 use crate::scene::{Document, IntegratorSpec, Kind, Metric, RunContext, RunSummary, Scene};
 pub use crate::textbook::pendulum::PendulumParams;
@@ -71,6 +73,11 @@ impl PendulumScene {
         c.positive("pendulum.gravity", p.gravity);
         c.in_range("pendulum.theta0_deg", p.theta0_deg, -180.0, 180.0);
         c.finite("pendulum.omega0", p.omega0);
+        {
+            use crate::scene::ranges::pendulum::{PENDULUM, check_all, check_spin};
+            check_all(&mut c, PENDULUM, &[p.length, p.mass, p.gravity]);
+            check_spin(&mut c, "pendulum.omega0", p.omega0, p.length, p.gravity);
+        }
         c.extend(self.integrator.check("integrator"));
         c.finish()
     }
@@ -100,8 +107,6 @@ impl Scene for PendulumScene {
         let x0 = Vector2::new(p.theta0_deg.to_radians(), p.omega0);
         // θ rising through zero: once per period of a libration.
         let events = vec![Event::new(|_t, x: &SVector<f64, 2>| x[0]).direction(Direction::Rising)];
-        let sol = integrate(&system, x0, &self.integrator, events, &mut ctx.progress)?;
-
         // Energy error relative to m g L, the energy scale of the problem
         // (E0 itself may be zero).
         let e0 = system.energy(&x0);
@@ -116,15 +121,34 @@ impl Scene for PendulumScene {
                 "energy_error",
             ],
         )?;
+        // Every sample streams to the CSV; the plots keep a decimated copy
+        // (and the last sample).
+        let spec = &self.integrator;
+        let mut keep = Decimate::new(
+            sample_count(spec.t0, spec.t_end, spec.output_interval()),
+            PLOT_POINTS,
+        );
         let (mut theta, mut err) = (Vec::new(), Vec::new());
+        let mut last = None;
         let mut drift: f64 = 0.0;
-        for (t, x) in sol.t.iter().zip(&sol.x) {
+        let sink = |t: f64, x: &SVector<f64, 2>| -> Result<(), RunError> {
             let e = system.energy(x);
             let rel = (e - e0) / scale;
             drift = drift.max(rel.abs());
-            csv.row(&[*t, x[0], x[1], e, rel])?;
-            theta.push((*t, x[0]));
-            err.push((*t, rel));
+            csv.row(&[t, x[0], x[1], e, rel])?;
+            if keep.keep() {
+                theta.push((t, x[0]));
+                err.push((t, rel));
+                last = None;
+            } else {
+                last = Some(((t, x[0]), (t, rel)));
+            }
+            Ok(())
+        };
+        let sol = integrate_streaming(&system, x0, spec, events, &mut ctx.progress, sink)?;
+        if let Some((a, b)) = last {
+            theta.push(a);
+            err.push(b);
         }
         let csv = csv.finish()?;
 

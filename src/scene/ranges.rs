@@ -13,8 +13,97 @@
 //! - Young's moduli lie between [`MIN_YOUNGS_MODULUS`] (soft foams) and
 //!   [`MAX_YOUNGS_MODULUS`] (ten times diamond).
 
+//!
+//! Each kind declares the ranges of its fields as [`FieldRange`] constants
+//! (in `src/scene/ranges/<kind>.rs` for the built-in kinds), checks them in
+//! its validation with [`FieldRange::check`], and lists them in [`ALL`] so
+//! that `docs/scenes.md` is checked to document every one.
+
+pub mod jamming;
+pub mod pendulum;
+pub mod rigid;
+
 use crate::error::SceneError;
 use crate::scene::validate::Checker;
+
+/// The documented valid range of one scene field: the closed interval
+/// `[min, max]` in `unit`, and why the model needs it. Non-finite values
+/// are left to the finiteness checks, which every field has.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FieldRange {
+    /// Dotted path of the field in the scene file, e.g. `peg.height`.
+    pub field: &'static str,
+    /// Smallest valid value.
+    pub min: f64,
+    /// Largest valid value.
+    pub max: f64,
+    /// Unit of the bounds (empty for a ratio).
+    pub unit: &'static str,
+    /// Why the model needs the range (shown in the refusal).
+    pub why: &'static str,
+}
+
+impl FieldRange {
+    /// A range `[min, max]` of `field` in `unit`, with its reason.
+    pub const fn new(
+        field: &'static str,
+        min: f64,
+        max: f64,
+        unit: &'static str,
+        why: &'static str,
+    ) -> Self {
+        FieldRange {
+            field,
+            min,
+            max,
+            unit,
+            why,
+        }
+    }
+
+    /// Whether `v` is finite and inside the range.
+    pub fn contains(&self, v: f64) -> bool {
+        v.is_finite() && (self.min..=self.max).contains(&v)
+    }
+
+    /// Records in `c` a finite `v` outside the range, naming the field,
+    /// the value, the limits and why.
+    pub fn check(&self, c: &mut Checker, v: f64) {
+        self.check_as(c, self.field, v);
+    }
+
+    /// As [`FieldRange::check`] under another name, e.g. an element
+    /// `motion.psidot[1]` of a list whose range is `motion.psidot`.
+    pub fn check_as(&self, c: &mut Checker, name: &str, v: f64) {
+        if v.is_finite() && !self.contains(v) {
+            let unit = if self.unit.is_empty() {
+                String::new()
+            } else {
+                format!(" {}", self.unit)
+            };
+            c.push(SceneError::invalid(
+                name,
+                v,
+                format!(
+                    "must lie in [{:e}, {:e}]{unit}: {}",
+                    self.min, self.max, self.why
+                ),
+            ));
+        }
+    }
+}
+
+/// Every kind's declared field ranges, by kind name (`docs/scenes.md`
+/// documents each; a test checks it). A new kind appends its row.
+pub const ALL: &[(&str, &[FieldRange])] = &[
+    ("fig9", rigid::PEG),
+    ("align_forward", rigid::PEG),
+    ("align_forward", rigid::ALIGN_FORWARD),
+    ("pendulum", pendulum::PENDULUM),
+    ("double_pendulum", pendulum::DOUBLE_PENDULUM),
+    ("jamming", jamming::JAMMING),
+    ("jamming", jamming::SWEEP),
+];
 
 /// Largest contact radius, as a fraction of the fillet radius, at which
 /// Hertz's half-space assumption is still accepted.
@@ -171,6 +260,38 @@ mod tests {
         let mut c = Checker::default();
         check_compliant(&mut c, "insert_compliant", f);
         c.finish().err().map(|e| e.to_string()).unwrap_or_default()
+    }
+
+    #[test]
+    fn every_declared_range_is_documented_and_sound() {
+        let doc = include_str!("../../docs/scenes.md");
+        for (kind, ranges) in ALL {
+            for r in *ranges {
+                assert!(r.min < r.max && !r.why.is_empty(), "{kind} {}", r.field);
+                let last = r.field.rsplit('.').next().unwrap_or(r.field);
+                assert!(
+                    doc.contains(&format!("`{}`", r.field)) || doc.contains(&format!("`{last}`")),
+                    "docs/scenes.md does not document {kind} {}",
+                    r.field
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn a_range_names_field_value_limits_and_reason() {
+        let r = FieldRange::new("peg.height", 1e-6, 1e3, "m", "a reason");
+        let mut c = Checker::default();
+        r.check(&mut c, 7.7e-154);
+        r.check(&mut c, 0.07);
+        r.check(&mut c, f64::NAN);
+        r.check_as(&mut c, "peg.height[1]", 2e3);
+        let e = c.finish().unwrap_err();
+        assert_eq!(e.errors.len(), 2);
+        let text = e.to_string();
+        assert!(text.contains("peg.height` = 7.7e-154"), "{text}");
+        assert!(text.contains("[1e-6, 1e3] m: a reason"), "{text}");
+        assert!(text.contains("peg.height[1]` = 2000.0"), "{text}");
     }
 
     #[test]

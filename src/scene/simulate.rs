@@ -6,7 +6,8 @@ use nalgebra::SVector;
 
 use crate::error::RunError;
 use crate::integrate::{
-    self, Event, IntegrateError, MethodKind, Options, OutputMode, Solution, Solver, StopReason,
+    self, Event, IntegrateError, MethodKind, NonFiniteAt, NonFiniteQuantity, Options, OutputMode,
+    Solution, Solver, StopReason,
 };
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::summary::significant;
@@ -59,6 +60,50 @@ pub fn integrate<'a, const N: usize, S: OdeSystem<N>>(
     Ok(solver.solve(system, spec.t0, x0, spec.t_end)?)
 }
 
+/// As [`integrate`], without storing the samples: each sample goes to
+/// `sink(t, x)` as the integrator reports it (in time order), so that a
+/// scene can stream its CSV in bounded memory. The returned solution has
+/// empty `t` / `x`; the first error `sink` returns stops further calls
+/// and is returned after the integration.
+///
+/// # Errors
+/// [`RunError::Integrate`] when the integrator rejects its input; the
+/// first error of `sink`.
+pub fn integrate_streaming<'a, const N: usize, S: OdeSystem<N>>(
+    system: &S,
+    x0: SVector<f64, N>,
+    spec: &IntegratorSpec,
+    events: Vec<Event<'a, N>>,
+    progress: &'a mut Progress,
+    mut sink: impl FnMut(f64, &SVector<f64, N>) -> Result<(), RunError> + 'a,
+) -> Result<Solution<N>, RunError> {
+    let (method, mut options) = solver_config(spec)?;
+    options.store = false;
+    progress.set_span(spec.t0, spec.t_end);
+    let mut failed: Option<RunError> = None;
+    let sol = {
+        let failed = &mut failed;
+        let mut solver = Solver::new(method, options);
+        for e in events {
+            solver = solver.with_event(e);
+        }
+        let mut solver = solver
+            .with_progress(|t| progress.update(t))
+            .with_observer(move |t, x| {
+                if failed.is_none()
+                    && let Err(e) = sink(t, x)
+                {
+                    *failed = Some(e);
+                }
+            });
+        solver.solve(system, spec.t0, x0, spec.t_end)?
+    };
+    match failed {
+        Some(e) => Err(e),
+        None => Ok(sol),
+    }
+}
+
 /// A human-readable account of `stop`, naming events by `event_names`
 /// (index order; a missing name prints as `#index`).
 pub fn describe_stop(stop: &StopReason, event_names: &[&str]) -> String {
@@ -88,6 +133,34 @@ pub fn describe_stop(stop: &StopReason, event_names: &[&str]) -> String {
     }
 }
 
+/// [`describe_stop`], and for a non-finite stop with a probed component
+/// `non_finite` ([`crate::integrate::Solution::non_finite`]): which
+/// component, its last finite value, the time and the likely cause.
+pub fn describe_stop_at(
+    stop: &StopReason,
+    non_finite: Option<&NonFiniteAt>,
+    event_names: &[&str],
+) -> String {
+    match (stop, non_finite) {
+        (StopReason::NonFinite { t }, Some(nf)) => {
+            let what = match nf.quantity {
+                NonFiniteQuantity::Rate => "the rate of",
+                NonFiniteQuantity::State => "the state",
+            };
+            format!(
+                "state became non-finite after t = {} s: {what} {} became {} (last finite value \
+                 {}); likely cause: {}",
+                significant(*t),
+                nf.component(),
+                nf.value,
+                significant(nf.last_finite),
+                nf.likely_cause()
+            )
+        }
+        _ => describe_stop(stop, event_names),
+    }
+}
+
 /// How `sol` ended and what it cost, naming events by `event_names`.
 pub fn integration_summary<const N: usize>(
     spec: &IntegratorSpec,
@@ -97,7 +170,7 @@ pub fn integration_summary<const N: usize>(
     IntegrationSummary {
         method: spec.resolved(DefaultMethod::NON_STIFF).0.method,
         t_end: sol.t_final,
-        stop: describe_stop(&sol.stop, event_names),
+        stop: describe_stop_at(&sol.stop, sol.non_finite.as_ref(), event_names),
         success: sol.stop.is_success(),
         steps: sol.stats.steps,
         rejected: sol.stats.rejected,
@@ -256,6 +329,35 @@ mod tests {
             (events[1].t - (2.0 / g).sqrt()).abs() < 1e-9,
             "{}",
             events[1].t
+        );
+    }
+
+    #[test]
+    fn a_non_finite_stop_names_component_time_and_cause() {
+        let nf = NonFiniteAt {
+            t: 0.25,
+            index: 3,
+            name: Some("psidot"),
+            quantity: NonFiniteQuantity::Rate,
+            value: f64::INFINITY,
+            last_finite: 6.3e76,
+            largest: 1e300,
+        };
+        let s = describe_stop_at(&StopReason::NonFinite { t: 0.25 }, Some(&nf), &[]);
+        for part in [
+            "t = 0.25 s",
+            "rate of `psidot`",
+            "inf",
+            "6.3e76",
+            "likely cause: overflow",
+        ] {
+            assert!(s.contains(part), "{part:?} missing in {s}");
+        }
+        // Without a probe the generic account stays.
+        let s = describe_stop_at(&StopReason::NonFinite { t: 0.25 }, None, &[]);
+        assert!(
+            s.starts_with("state became non-finite after t = 0.25 s"),
+            "{s}"
         );
     }
 

@@ -67,6 +67,10 @@ impl OdeSystem<4> for DoublePendulumSystem {
         generated::rhs(x, &self.p)
     }
 
+    fn state_names(&self) -> &'static [&'static str] {
+        &generated::X_NAMES
+    }
+
     /// `∂ẋ/∂x = [[0, I], [M⁻¹G]]` from the generated mass matrix and
     /// Jacobian terms `G`.
     fn jacobian(&self, t: f64, x: &Vector4<f64>) -> SMatrix<f64, 4, 4> {

@@ -77,6 +77,10 @@ impl OdeSystem<2> for PendulumSystem {
         generated::rhs(x, &self.p)
     }
 
+    fn state_names(&self) -> &'static [&'static str] {
+        &generated::X_NAMES
+    }
+
     /// `∂ẋ/∂x = [[0, 1], [M⁻¹G]]` from the generated mass matrix and
     /// Jacobian terms `G`.
     fn jacobian(&self, t: f64, x: &Vector2<f64>) -> SMatrix<f64, 2, 2> {
