@@ -505,7 +505,7 @@ pub mod compliant_peg_3d {
     /// - `axial`: scalar
     ///
     /// # Cost
-    /// 81 add/sub, 151 mul, 4 div, 0 sqrt, 3 transcendental, 0 branches; 67 `let`s.
+    /// 78 add/sub, 145 mul, 6 div, 0 sqrt, 3 transcendental, 0 branches; 64 `let`s.
     #[inline]
     pub fn rim_edge<T: Real>(
         x: &SVector<T, 7>,
@@ -539,110 +539,107 @@ pub mod compliant_peg_3d {
         let t11 = t9 + t10;
         let (sin_angle, cos_angle) = angle.sin_cos();
         let t12 = r - rho_p;
-        let t13 = -(T::from_f64(2.0) * (t0 + t8)) + T::from_f64(1.0);
-        let t14 = -rho_p + T::from_f64(0.5) * l;
+        let t13 = T::from_f64(1.0) - T::from_f64(2.0) * (t0 + t8);
+        let t14 = T::from_f64(0.5) * l - rho_p;
         let t15 = T::from_f64(2.0) * q0 * t14;
         let t16 = q1 * t14;
         let t17 = -q3 * t14;
-        let t18 = -(T::from_f64(2.0) * (t0 + t1)) + T::from_f64(1.0);
-        let t19 = -(T::from_f64(2.0) * (t1 + t8)) + T::from_f64(1.0);
+        let t18 = T::from_f64(1.0) - T::from_f64(2.0) * (t0 + t1);
+        let t19 = T::from_f64(1.0) - T::from_f64(2.0) * (t1 + t8);
         let t20 = T::from_f64(2.0) * t7 * cos_angle + t19 * sin_angle;
         let t21 = T::from_f64(2.0) * t7 * sin_angle - t19 * cos_angle;
         let t22 = t12 * t21;
         let t23 = q2 * t14;
         let t24 = q3 * sin_angle;
         let t25 = q3 * cos_angle;
-        let t26 = -t9 + t10;
-        let t27 = -t2 + t3;
-        let t28 = -t4 + t5;
-        let t29 = -(t18 * cos_angle) + T::from_f64(2.0) * t27 * sin_angle;
+        let t26 = t10 - t9;
+        let t27 = t3 - t2;
+        let t28 = t5 - t4;
+        let t29 = T::from_f64(2.0) * t27 * sin_angle - t18 * cos_angle;
         let t30 = t18 * sin_angle + T::from_f64(2.0) * t27 * cos_angle;
         let t31 = t12 * t30;
-        let t32 = -(t28 * cos_angle) + t11 * sin_angle;
+        let t32 = t11 * sin_angle - t28 * cos_angle;
         let t33 = t12 * t29 - px + T::from_f64(2.0) * t6 * t14;
         let t34 = t12 * t20 + py + T::from_f64(2.0) * t26 * t14;
         let t35 = (-t33).hypot(t34);
-        let t36 = T::from_f64(1.0) / t35;
-        let t37 = t33 * t30 - t34 * t21;
-        let t38 = q2 * cos_angle;
-        let t39 = q1 * sin_angle;
-        let t40 = q2 * sin_angle;
-        let t41 = q1 * cos_angle;
-        let t42 = q0 * sin_angle;
-        let t43 = q0 * cos_angle;
-        let t44 = t28 * sin_angle + t11 * cos_angle;
-        let t45 = -t12 * t37;
-        let t46 = -T::from_f64(2.0) * t44 * t12;
+        let t36 = t33 * t30 - t34 * t21;
+        let t37 = q2 * cos_angle;
+        let t38 = q1 * sin_angle;
+        let t39 = q2 * sin_angle;
+        let t40 = q1 * cos_angle;
+        let t41 = q0 * sin_angle;
+        let t42 = q0 * cos_angle;
+        let t43 = t28 * sin_angle + t11 * cos_angle;
+        let t44 = -t12 * t36;
+        let t45 = -T::from_f64(2.0) * t43 * t12;
+        let t46 = rho_h + r_2 - t35;
         let t47 = rho_h + T::from_f64(2.0) * t32 * t12 + pz - t13 * t14;
-        let t48 = r_2 + rho_h - t35;
-        let t49 = t47.hypot(t48);
+        let t48 = t12 * t47;
+        let t49 = t47.hypot(t46);
         let t50 = T::from_f64(1.0) / t49;
-        let t51 = (rho_h + r_2 - t35) * t50;
-        let t52 = t51 * t36;
-        let t53 = t47 * t50;
-        let t54 = -(T::from_f64(0.5) * (-rho_h + rho_p)) + T::from_f64(0.5) * t49;
-        let t55 = t36 * (r_2 + rho_h - t51 * t54);
-        let t56 = t55 * t33;
-        let t57 = t55 * t34;
-        let t58 = -t53 * t54;
-        let t59 = -T::from_f64(2.0) * t44 * t47;
-        let t60 = t36 * t48;
-        let t61 = t60 * t37;
-        let t62 = t12 * (t61 + t59);
-        let t63 = t12 * t47;
-        let t64 = t60 * t50;
+        let t51 = t46 / t35;
+        let t52 = t51 * t50;
+        let t53 = t52 * t33;
+        let t54 = -t52 * t34;
+        let t55 = t47 * t50;
+        let t56 = T::from_f64(0.5) * t49 - T::from_f64(0.5) * (rho_p - rho_h);
+        let t57 = (r_2 + rho_h - t46 * t50 * t56) / t35;
+        let t58 = t57 * t33;
+        let t59 = t57 * t34;
+        let t60 = -t55 * t56;
+        let t61 = t12 * (t51 * t36 - T::from_f64(2.0) * t43 * t47);
         let gap = -rho_h - rho_p + t49;
-        let d1 = -(t12 * (t59 + t61)) * t50;
-        let d2 = -(t62 * t62 / (t49 * t49 * t49))
+        let d1 = -t61 * t50;
+        let d2 = -(t61 * t61 / (t49 * t49 * t49))
             - t50
-                * (-(t45 * t45 * (t48 / (t35 * t35 * t35) + t36 * t36))
-                    + T::from_f64(2.0) * t63 * t32 - t46 * t46
-                    + t60 * (-(t12 * (t33 * t29 + t34 * t20)) + t31 * t31 + t22 * t22));
+                * (-(t44 * t44
+                    * (t46 / (t35 * t35 * t35) + T::from_f64(1.0) / (t35 * t35)))
+                    + T::from_f64(2.0) * t48 * t32 - t45 * t45
+                    + t51 * (-(t12 * (t33 * t29 + t34 * t20)) + t31 * t31 + t22 * t22));
         let grad = SMatrix::<
             T,
             7,
             1,
         >::from_row_slice(
             &[
-                t64 * t33,
-                -t64 * t34,
                 t53,
+                t54,
+                t55,
                 -T::from_f64(2.0) * t50
-                    * (-(t63 * (t39 - t38))
-                        + t60 * (t33 * (t24 * t12 + t23) + t34 * (t25 * t12 + t16))),
+                    * (t51 * (t33 * (t24 * t12 + t23) + t34 * (t25 * t12 + t16))
+                        - t48 * (t38 - t37)),
                 t50
-                    * ((T::from_f64(2.0) * (t25 + t42) * t12 + T::from_f64(4.0) * t16)
+                    * ((T::from_f64(2.0) * (t25 + t41) * t12 + T::from_f64(4.0) * t16)
                         * t47
-                        + t60
-                            * (T::from_f64(2.0) * t33 * (t40 * t12 + t17)
+                        + t51
+                            * (T::from_f64(2.0) * t33 * (t39 * t12 + t17)
                                 - t34
-                                    * (-(t12
-                                        * (-(T::from_f64(2.0) * t38) + T::from_f64(4.0) * t39))
-                                        + t15))),
+                                    * (t15
+                                        - t12
+                                            * (T::from_f64(4.0) * t38 - T::from_f64(2.0) * t37)))),
                 -t50
-                    * (-((-(T::from_f64(2.0) * (t43 - t24) * t12)
-                        + T::from_f64(4.0) * t23) * t47)
-                        + t60
-                            * (t33
-                                * (-(t12
-                                    * (-(T::from_f64(4.0) * t38) + T::from_f64(2.0) * t39))
-                                    + t15) + T::from_f64(2.0) * t34 * (t17 + t41 * t12))),
+                    * (t51
+                        * (t33
+                            * (t15
+                                - t12 * (T::from_f64(2.0) * t38 - T::from_f64(4.0) * t37))
+                            + T::from_f64(2.0) * t34 * (t17 + t40 * t12))
+                        - (T::from_f64(4.0) * t23 - T::from_f64(2.0) * (t42 - t24) * t12)
+                            * t47),
                 -t50
-                    * (-(T::from_f64(2.0) * t63 * (t40 + t41))
-                        + t60
-                            * (t33
-                                * (t12 * (T::from_f64(4.0) * t25 + T::from_f64(2.0) * t42)
-                                    + T::from_f64(2.0) * t16)
-                                - t34
-                                    * (-(t12
-                                        * (T::from_f64(2.0) * t43 - T::from_f64(4.0) * t24))
-                                        + T::from_f64(2.0) * t23))),
+                    * (t51
+                        * (t33
+                            * (t12 * (T::from_f64(4.0) * t25 + T::from_f64(2.0) * t41)
+                                + T::from_f64(2.0) * t16)
+                            - t34
+                                * (T::from_f64(2.0) * t23
+                                    - t12 * (T::from_f64(2.0) * t42 - T::from_f64(4.0) * t24)))
+                        - T::from_f64(2.0) * t48 * (t39 + t40)),
             ],
         );
-        let normal = Vector3::new(t52 * t33, -t52 * t34, t53);
-        let point = Vector3::new(-t56, t57, -rho_h - t58);
-        let axial = -(T::from_f64(2.0) * (t6 * (t56 + px) - t26 * (-t57 + py)))
-            - t13 * (rho_h + pz + t58);
+        let normal = Vector3::new(t53, t54, t55);
+        let point = Vector3::new(-t58, t59, -rho_h - t60);
+        let axial = -(T::from_f64(2.0) * (t6 * (t58 + px) - t26 * (py - t59)))
+            - t13 * (rho_h + pz + t60);
         (gap, d1, d2, grad, normal, point, axial)
     }
     /// Newton-Euler right-hand side of y = (p, q, v, omega_body, work, dissipation) under the contact wrench w = (F, T about the centre of mass, hole frame; dissipation rate), the applied loads and gravity along -z. SI units.
@@ -753,7 +750,7 @@ pub mod compliant_peg_3d {
     /// - `dw`: 15×7 matrix
     ///
     /// # Cost
-    /// 67 add/sub, 141 mul, 3 div, 0 sqrt, 0 transcendental, 0 branches; 61 `let`s.
+    /// 66 add/sub, 138 mul, 3 div, 0 sqrt, 0 transcendental, 0 branches; 60 `let`s.
     #[inline]
     pub fn rhs_jacobian<T: Real>(
         y: &SVector<T, 15>,
@@ -831,15 +828,14 @@ pub mod compliant_peg_3d {
         let t49 = q1 * t14;
         let t50 = q1 * t12;
         let t51 = q0 * t12;
-        let t52 = -(T::from_f64(2.0) * (t0 + t8)) + T::from_f64(1.0);
-        let t53 = -(T::from_f64(2.0) * (t0 + t1)) + T::from_f64(1.0);
-        let t54 = -(T::from_f64(2.0) * (t1 + t8)) + T::from_f64(1.0);
-        let t55 = -t9 + t10;
-        let t56 = -t2 + t3;
-        let t57 = -t4 + t5;
-        let t58 = j_t - j_a;
-        let t59 = -j_a + j_t;
-        let t60 = wz * t28;
+        let t52 = T::from_f64(1.0) - T::from_f64(2.0) * (t0 + t8);
+        let t53 = T::from_f64(1.0) - T::from_f64(2.0) * (t0 + t1);
+        let t54 = T::from_f64(1.0) - T::from_f64(2.0) * (t1 + t8);
+        let t55 = t10 - t9;
+        let t56 = t3 - t2;
+        let t57 = t5 - t4;
+        let t58 = t28 * (j_t - j_a);
+        let t59 = t58 * wz;
         let dy = SMatrix::<
             T,
             15,
@@ -999,39 +995,39 @@ pub mod compliant_peg_3d {
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                -T::from_f64(2.0) * t28 * (-t40 + t41),
+                -T::from_f64(2.0) * t28 * (t41 - t40),
                 T::from_f64(2.0) * t28 * (t42 + t43),
-                -t28 * (T::from_f64(2.0) * (-t45 + t46) + T::from_f64(4.0) * t44),
-                -t28 * (-(T::from_f64(2.0) * (t48 + t49)) + T::from_f64(4.0) * t47),
+                -t28 * (T::from_f64(2.0) * (t46 - t45) + T::from_f64(4.0) * t44),
+                -t28 * (T::from_f64(4.0) * t47 - T::from_f64(2.0) * (t48 + t49)),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                t60 * t58,
-                wy * t58 * t28,
+                t59,
+                t58 * wy,
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(2.0) * t28 * (t49 - t47),
-                -t28 * (-(T::from_f64(2.0) * (t44 + t46)) + T::from_f64(4.0) * t45),
+                -t28 * (T::from_f64(4.0) * t45 - T::from_f64(2.0) * (t44 + t46)),
                 T::from_f64(2.0) * t28 * (t43 + t50),
                 -t28 * (T::from_f64(2.0) * (t51 - t41) + T::from_f64(4.0) * t40),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                -t60 * t59,
+                -t59,
                 T::from_f64(0.0),
-                -(wx * t59) * t28,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
+                -t58 * wx,
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
-                -T::from_f64(2.0) * t29 * (-t44 + t45),
-                -t29 * (T::from_f64(2.0) * (-t47 + t48) + T::from_f64(4.0) * t49),
-                -t29 * (-(T::from_f64(2.0) * (t40 + t51)) + T::from_f64(4.0) * t41),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -T::from_f64(2.0) * t29 * (t45 - t44),
+                -t29 * (T::from_f64(2.0) * (t48 - t47) + T::from_f64(4.0) * t49),
+                -t29 * (T::from_f64(4.0) * t41 - T::from_f64(2.0) * (t40 + t51)),
                 T::from_f64(2.0) * t29 * (t42 + t50),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
@@ -1045,22 +1041,21 @@ pub mod compliant_peg_3d {
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(2.0)
-                    * (ma_x * (-t20 + t19) - ma_y * (-t22 + t23) + ma_z * (-t26 + t25)),
+                    * (ma_x * (t19 - t20) - ma_y * (t23 - t22) + ma_z * (t25 - t26)),
                 T::from_f64(2.0) * ma_x * (t16 + t17)
-                    - ma_y * (T::from_f64(2.0) * (-t26 + t24) + T::from_f64(4.0) * t25)
-                    - ma_z
-                        * (-(T::from_f64(2.0) * (t22 + t21)) + T::from_f64(4.0) * t23),
-                -(ma_x * (-(T::from_f64(2.0) * (t25 + t24)) + T::from_f64(4.0) * t26))
+                    - ma_y * (T::from_f64(2.0) * (t24 - t26) + T::from_f64(4.0) * t25)
+                    - ma_z * (T::from_f64(4.0) * t23 - T::from_f64(2.0) * (t22 + t21)),
+                -(ma_x * (T::from_f64(4.0) * t26 - T::from_f64(2.0) * (t25 + t24)))
                     + T::from_f64(2.0) * ma_y * (t17 + t15)
                     - ma_z * (T::from_f64(2.0) * (t18 - t20) + T::from_f64(4.0) * t19),
                 -(ma_x * (T::from_f64(2.0) * (t21 - t23) + T::from_f64(4.0) * t22))
-                    - ma_y * (-(T::from_f64(2.0) * (t19 + t18)) + T::from_f64(4.0) * t20)
+                    - ma_y * (T::from_f64(4.0) * t20 - T::from_f64(2.0) * (t19 + t18))
                     + T::from_f64(2.0) * ma_z * (t16 + t15),
                 fa_x,
                 fa_y,
                 fa_z,
                 T::from_f64(2.0) * (ma_y * t7 - ma_z * t57) + ma_x * t53,
-                -(T::from_f64(2.0) * (ma_x * t56 - ma_z * t11)) + ma_y * t54,
+                ma_y * t54 - T::from_f64(2.0) * (ma_x * t56 - ma_z * t11),
                 T::from_f64(2.0) * (ma_x * t6 - ma_y * t55) + ma_z * t52,
                 T::from_f64(0.0),
                 T::from_f64(0.0),
