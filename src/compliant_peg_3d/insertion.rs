@@ -255,6 +255,29 @@ impl Insertion {
     }
 }
 
+impl Insertion {
+    /// The start state of a held peg already in the bore: aligned with the
+    /// hole's axis and centred, its tip `depth` (m) below the top face,
+    /// moving down with the robot frame's axial velocity; the wrist
+    /// carries the robot's lateral and angular errors as a deflection.
+    pub fn centred_start(&self, depth: f64) -> Option<SVector<f64, N_STATE>> {
+        let h = self.held?;
+        let f = h.robot.frame(0.0);
+        let prm = &self.peg.params;
+        let centre = Vector3::new(0.0, 0.0, 0.5 * prm.length - depth);
+        let v = Vector3::new(0.0, 0.0, f.velocity.z);
+        let ys = super::system::pose_state(
+            centre,
+            UnitQuaternion::identity(),
+            v,
+            Vector3::zeros(),
+        );
+        let mut y = SVector::<f64, N_STATE>::zeros();
+        y.fixed_rows_mut::<15>(0).copy_from(&ys);
+        Some(y)
+    }
+}
+
 impl OdeSystem<N_STATE> for Insertion {
     fn rhs(&self, t: f64, y: &SVector<f64, N_STATE>) -> SVector<f64, N_STATE> {
         match self.rate(t, y) {
@@ -268,4 +291,90 @@ impl OdeSystem<N_STATE> for Insertion {
             }
         }
     }
+}
+
+/// Why [`lean_pose`] found no pose.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum LeanError {
+    /// The rigid three-point configuration does not exist at this tilt.
+    #[error("no three-point lean at gamma = {gamma} rad: {reason}")]
+    NoLean {
+        /// The tilt asked for (rad).
+        gamma: f64,
+        /// The rigid model's reason.
+        reason: String,
+    },
+    /// The peg lowered 10 % of its length met no contact.
+    #[error("no contact within {0} m below the sharp-edged lean")]
+    NoContact(f64),
+}
+
+/// A peg leaning on the mouth at tilt `gamma` (rad) with the tilt's
+/// azimuth `psi` (rad): the rigid three-point configuration of the
+/// sharp-edged peg and hole (`crate::rigid_peg::kinematics::Pose`: peg
+/// side on the edge at K, bottom rim on the edge at B1, B2), lowered along
+/// the hole's axis until the filleted surfaces first touch (bisection to
+/// 1e-10 m). Returns the centre of mass and the orientation (axis
+/// `−sin γ e_η + cos γ e_z`, no twist).
+///
+/// # Errors
+/// [`LeanError`] when the rigid lean does not exist (`γ ≤ γ0`) or no
+/// contact is met.
+pub fn lean_pose(
+    prm: &Peg3dParams,
+    gamma: f64,
+    psi: f64,
+) -> Result<(Vector3<f64>, UnitQuaternion<f64>), LeanError> {
+    let rigid = crate::rigid_peg::PegParams {
+        hole_diameter: prm.hole_diameter,
+        peg_diameter: prm.peg_diameter,
+        height: prm.length,
+        mass: prm.mass,
+        gravity: prm.gravity,
+        friction: prm.friction,
+    };
+    let pose = crate::rigid_peg::kinematics::Pose::try_new(&rigid, gamma, psi).map_err(|e| {
+        LeanError::NoLean {
+            gamma,
+            reason: e.to_string(),
+        }
+    })?;
+    let axis = pose.axis;
+    let q = UnitQuaternion::rotation_between(&Vector3::z(), &axis)
+        .unwrap_or_else(UnitQuaternion::identity);
+    let centre = pose.o2 + axis * (0.5 * prm.length);
+    let peg = Peg3d::new(*prm);
+    let touches = |s: f64| {
+        let y = super::system::pose_state(
+            centre - Vector3::z() * s,
+            q,
+            Vector3::zeros(),
+            Vector3::zeros(),
+        );
+        !peg.contacts(&y).is_empty()
+    };
+    let (mut lo, mut hi) = (0.0, 0.1 * prm.length);
+    if touches(lo) {
+        // Already overlapping: lift until free.
+        let mut up = 1e-6;
+        while touches(-up) && up < 0.1 * prm.length {
+            up *= 2.0;
+        }
+        lo = -up;
+        hi = -0.5 * up;
+        if !touches(hi) {
+            hi = 0.0;
+        }
+    } else if !touches(hi) {
+        return Err(LeanError::NoContact(hi));
+    }
+    while hi - lo > 1e-10 {
+        let mid = 0.5 * (lo + hi);
+        if touches(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    Ok((centre - Vector3::z() * hi, q))
 }
