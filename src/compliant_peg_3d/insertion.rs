@@ -256,6 +256,36 @@ impl Insertion {
 }
 
 impl Insertion {
+    /// The largest Hertz pressure `p₀ = 3 Q / (2π a b)` (Pa) over the
+    /// contacts of `sample` at state `y`, the ellipse from the curvatures
+    /// of both surfaces at each point (whatever the contact law's
+    /// stiffness). Contacts whose curvatures give no point contact are
+    /// skipped and counted.
+    pub fn peak_pressure(&self, y: &SVector<f64, N_STATE>, sample: &Sample) -> (f64, usize) {
+        let prm = &self.peg.params;
+        let m = motion(&peg_state(y));
+        let axis = m.orientation * Vector3::z();
+        let (mut p0, mut skipped) = (0.0_f64, 0);
+        for f in &sample.forces {
+            let c = &f.contact;
+            let curv = super::curvature::at(prm, c, &m.centre, &axis);
+            let (m1, m2) = match c.pair {
+                super::search::Pair::EdgeSide => (&prm.hole_material, &prm.peg_material),
+                _ => (&prm.peg_material, &prm.hole_material),
+            };
+            match crate::hertz::HertzContact::try_new(
+                &curv,
+                m1,
+                m2,
+                crate::hertz::EllipticityMethod::Exact,
+            ) {
+                Ok(h) => p0 = p0.max(h.max_pressure(f.normal_force)),
+                Err(_) => skipped += 1,
+            }
+        }
+        (p0, skipped)
+    }
+
     /// The start state of a held peg already in the bore: aligned with the
     /// hole's axis and centred, its tip `depth` (m) below the top face,
     /// moving down with the robot frame's axial velocity; the wrist
@@ -266,12 +296,7 @@ impl Insertion {
         let prm = &self.peg.params;
         let centre = Vector3::new(0.0, 0.0, 0.5 * prm.length - depth);
         let v = Vector3::new(0.0, 0.0, f.velocity.z);
-        let ys = super::system::pose_state(
-            centre,
-            UnitQuaternion::identity(),
-            v,
-            Vector3::zeros(),
-        );
+        let ys = super::system::pose_state(centre, UnitQuaternion::identity(), v, Vector3::zeros());
         let mut y = SVector::<f64, N_STATE>::zeros();
         y.fixed_rows_mut::<15>(0).copy_from(&ys);
         Some(y)

@@ -88,6 +88,7 @@ pub const KINDS: &[Kind] = &[
     align_forward::KIND,
     insert_3d::drop::KIND,
     insert_3d::rcc::KIND,
+    insert_3d::sweep::KIND,
 ];
 
 /// A scene read from a file.

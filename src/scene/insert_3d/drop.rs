@@ -100,8 +100,9 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
     c.in_range("drop.aligning_moment", d.aligning_moment, -1e3, 1e3);
     c.extend(s.integrator.check("integrator"));
     c.finish()?;
-    let (p, q) = lean_pose(&params, d.gamma, d.azimuth_deg.to_radians())
-        .map_err(|e| SceneErrors::from(SceneError::invalid("drop.gamma", d.gamma, e.to_string())))?;
+    let (p, q) = lean_pose(&params, d.gamma, d.azimuth_deg.to_radians()).map_err(|e| {
+        SceneErrors::from(SceneError::invalid("drop.gamma", d.gamma, e.to_string()))
+    })?;
     let omega_body = q.inverse() * Vector3::new(0.0, 0.0, d.spin_rate);
     let ys = pose_state(p, q, Vector3::zeros(), omega_body);
     let mut start = SVector::<f64, N_STATE>::zeros();
@@ -142,7 +143,13 @@ impl Scene for Ready {
         let counter = Insertion::new(self.params, None, 0.0);
         let cache = CountCache::new(&counter);
         let (events, what) = transition_events(&cache);
-        let sol = integrate(&sys, self.start, &self.integrator, events, &mut ctx.progress)?;
+        let sol = integrate(
+            &sys,
+            self.start,
+            &self.integrator,
+            events,
+            &mut ctx.progress,
+        )?;
         if let Some(e) = sys.error() {
             return Err(RunError::Hertz(e));
         }
@@ -162,12 +169,11 @@ impl Scene for Ready {
         let mut fig = Figure::new();
         fig.panels.push(output::forces_panel(&samples));
         fig.panels.push(output::timeline(&samples));
-        fig.panels.push(
-            Panel::new("Tilt", "t [s]", "γ [rad]").with(Series::line(
+        fig.panels
+            .push(Panel::new("Tilt", "t [s]", "γ [rad]").with(Series::line(
                 "γ",
                 samples.rows.iter().map(|(t, _, s)| (*t, s.tilt)).collect(),
-            )),
-        );
+            )));
         let svg = ctx.output("svg");
         fig.save(&svg)?;
         let views = output::write_views(
@@ -183,11 +189,8 @@ impl Scene for Ready {
         out.metrics
             .push(Metric::new("contact transitions", rows.len() as f64, ""));
         for r in rows.iter().take(12) {
-            out.metrics.push(Metric::new(
-                format!("{} ({})", r.what, r.state),
-                r.t,
-                "s",
-            ));
+            out.metrics
+                .push(Metric::new(format!("{} ({})", r.what, r.state), r.t, "s"));
         }
         out.outputs = vec![csv, ev, svg, views];
         Ok(out)

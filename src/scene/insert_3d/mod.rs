@@ -5,4 +5,5 @@
 pub mod drop;
 pub mod output;
 pub mod rcc;
+pub mod sweep;
 pub mod tables;

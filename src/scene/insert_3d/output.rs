@@ -29,7 +29,14 @@ const SLOTS: usize = 2;
 
 fn header() -> Vec<String> {
     let mut h: Vec<String> = [
-        "t_s", "depth_m", "tilt_rad", "azimuth_rad", "px_m", "py_m", "pz_m", "points",
+        "t_s",
+        "depth_m",
+        "tilt_rad",
+        "azimuth_rad",
+        "px_m",
+        "py_m",
+        "pz_m",
+        "points",
     ]
     .iter()
     .map(|s| s.to_string())
@@ -137,7 +144,10 @@ pub fn samples(sys: &Insertion, sol: &Solution<N_STATE>) -> Result<Samples, RunE
 ///
 /// # Errors
 /// Output errors.
-pub fn write_series(ctx: &RunContext, s: &Samples) -> Result<(std::path::PathBuf, Peaks), RunError> {
+pub fn write_series(
+    ctx: &RunContext,
+    s: &Samples,
+) -> Result<(std::path::PathBuf, Peaks), RunError> {
     let h = header();
     let hr: Vec<&str> = h.iter().map(String::as_str).collect();
     let mut csv = CsvWriter::create(&ctx.output("csv"), &hr)?;
@@ -151,7 +161,11 @@ pub fn write_series(ctx: &RunContext, s: &Samples) -> Result<(std::path::PathBuf
             peaks.wrist_moment = peaks.wrist_moment.max(w.moment_robot.xy().norm());
         }
         peaks.drift = peaks.drift.max((smp.balance - e0).abs());
-        peaks.scale = peaks.scale.max(y[13].abs()).max(y[15].abs()).max(smp.kinetic);
+        peaks.scale = peaks
+            .scale
+            .max(y[13].abs())
+            .max(y[15].abs())
+            .max(smp.kinetic);
     }
     Ok((csv.finish()?, peaks))
 }
@@ -226,7 +240,10 @@ pub fn timeline(s: &Samples) -> Panel {
             .map(|(t, _, smp)| {
                 (
                     *t,
-                    smp.forces.iter().filter(|f| f.contact.pair == *pair).count() as f64
+                    smp.forces
+                        .iter()
+                        .filter(|f| f.contact.pair == *pair)
+                        .count() as f64
                         + 0.05 * i as f64,
                 )
             })
@@ -247,8 +264,11 @@ pub fn forces_panel(s: &Samples) -> Panel {
                 .rows
                 .iter()
                 .map(|(t, _, smp)| {
-                    let mut of: Vec<_> =
-                        smp.forces.iter().filter(|f| f.contact.pair == *pair).collect();
+                    let mut of: Vec<_> = smp
+                        .forces
+                        .iter()
+                        .filter(|f| f.contact.pair == *pair)
+                        .collect();
                     of.sort_by(|a, b| a.contact.angle.total_cmp(&b.contact.angle));
                     (*t, of.get(k).map_or(0.0, |f| f.normal_force))
                 })
@@ -341,7 +361,11 @@ pub fn views(sys: &Insertion, y: &SVector<f64, N_STATE>, title: &str) -> [Panel;
                 .styled(Style::Dashed)
                 .colored(0),
         )
-        .with(Series::line("contacts", contacts).styled(Style::Markers).colored(1));
+        .with(
+            Series::line("contacts", contacts)
+                .styled(Style::Markers)
+                .colored(1),
+        );
     [side, top_view]
 }
 
@@ -360,7 +384,11 @@ pub fn write_views(
 ) -> Result<std::path::PathBuf, RunError> {
     let mut fig = Figure::new();
     let mut add = |t: f64, y: &SVector<f64, N_STATE>, what: &str| {
-        let [a, b] = views(sys, y, &format!("t = {} s, {what}", crate::scene::significant(t)));
+        let [a, b] = views(
+            sys,
+            y,
+            &format!("t = {} s, {what}", crate::scene::significant(t)),
+        );
         fig.panels.push(a);
         fig.panels.push(b);
     };

@@ -239,9 +239,11 @@ impl Scene for Ready {
         let sys = &run.system;
         let sol = &run.solution;
         let mut names: Vec<String> = TERMINAL_NAMES.iter().map(|s| s.to_string()).collect();
-        names.extend(run.transitions.iter().map(|(i, k)| {
-            format!("{} {k}", crate::compliant_peg_3d::Pair::ALL[*i].name())
-        }));
+        names.extend(
+            run.transitions
+                .iter()
+                .map(|(i, k)| format!("{} {k}", crate::compliant_peg_3d::Pair::ALL[*i].name())),
+        );
         let name_refs: Vec<&str> = names.iter().map(String::as_str).collect();
         let mut integ = integration_summary(&self.integrator, sol, &name_refs);
         if let StopReason::Event { index, t } = sol.stop {
@@ -270,7 +272,10 @@ impl Scene for Ready {
                 "depth [mm]",
                 "F_z [N]",
             )
-            .with(Series::line("insertion force -F_z", series(&|w| -w.force_robot.z))),
+            .with(Series::line(
+                "insertion force -F_z",
+                series(&|w| -w.force_robot.z),
+            )),
         );
         fig.panels.push(
             Panel::new(
@@ -278,7 +283,10 @@ impl Scene for Ready {
                 "depth [mm]",
                 "F [N], M/L_ref [N]",
             )
-            .with(Series::line("lateral force |F_xy|", series(&|w| w.force_robot.xy().norm())))
+            .with(Series::line(
+                "lateral force |F_xy|",
+                series(&|w| w.force_robot.xy().norm()),
+            ))
             .with(Series::line(
                 "lateral moment |M_xy| / 10 mm",
                 series(&|w| w.moment_robot.xy().norm() / 0.01),
@@ -291,7 +299,10 @@ impl Scene for Ready {
         let views = output::write_views(
             ctx,
             sys,
-            (sol.t.first().copied().unwrap_or(0.0), sol.x.first().unwrap_or(&sol.x_final)),
+            (
+                sol.t.first().copied().unwrap_or(0.0),
+                sol.x.first().unwrap_or(&sol.x_final),
+            ),
             &rows,
             (sol.t_final, &sol.x_final),
             12,
@@ -302,8 +313,7 @@ impl Scene for Ready {
             run.outcome.code(),
             "",
         ));
-        out.metrics
-            .push(Metric::new("end time", sol.t_final, "s"));
+        out.metrics.push(Metric::new("end time", sol.t_final, "s"));
         let (depth, tilt, _) = crate::compliant_peg_3d::insertion::depth_tilt(
             &self.built.params,
             &crate::compliant_peg_3d::insertion::peg_state(&sol.x_final),
@@ -323,7 +333,10 @@ pub fn outcome_text(o: &Outcome) -> String {
         Outcome::Jammed { contacts } => format!("jammed on {contacts}"),
         Outcome::Wedged { contacts } => format!("wedged on {contacts}"),
         Outcome::ForceLimit { which, force } => {
-            format!("{which} force limit ({} N)", crate::scene::significant(*force))
+            format!(
+                "{which} force limit ({} N)",
+                crate::scene::significant(*force)
+            )
         }
         Outcome::Stopped { reason } => format!("stopped: {reason}"),
         other => other.name().to_string(),

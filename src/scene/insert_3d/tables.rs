@@ -172,7 +172,12 @@ impl WristTable {
     /// Validates every field and builds the wrist.
     pub fn build(&self, t: &str, c: &mut Checker, length: f64) -> WristParams {
         let f = |k: &str| format!("{t}.{k}");
-        let lc = c.in_range(&f("centre_height"), self.centre_height, -10.0 * length.abs(), 10.0 * length.abs());
+        let lc = c.in_range(
+            &f("centre_height"),
+            self.centre_height,
+            -10.0 * length.abs(),
+            10.0 * length.abs(),
+        );
         let kx = c.in_range(&f("lateral_stiffness"), self.lateral_stiffness, 1.0, 1e9);
         let ky = match self.lateral_stiffness_y {
             Some(v) => c.in_range(&f("lateral_stiffness_y"), v, 1.0, 1e9),
@@ -183,7 +188,12 @@ impl WristTable {
             lateral: [kx, ky],
             axial: c.in_range(&f("axial_stiffness"), self.axial_stiffness, 1.0, 1e10),
             angular: c.in_range(&f("angular_stiffness"), self.angular_stiffness, 1e-3, 1e7),
-            torsional: c.in_range(&f("torsional_stiffness"), self.torsional_stiffness, 1e-3, 1e7),
+            torsional: c.in_range(
+                &f("torsional_stiffness"),
+                self.torsional_stiffness,
+                1e-3,
+                1e7,
+            ),
             lateral_damping: c.in_range(&f("lateral_damping"), self.lateral_damping, 0.0, 1e6),
             axial_damping: c.in_range(&f("axial_damping"), self.axial_damping, 0.0, 1e6),
             angular_damping: c.in_range(&f("angular_damping"), self.angular_damping, 0.0, 1e4),
@@ -246,13 +256,23 @@ impl RobotTable {
         let f = |k: &str| format!("{t}.{k}");
         let e = c.in_range(&f("lateral_error"), self.lateral_error, -d, d);
         let dir = c
-            .in_range(&f("lateral_error_direction_deg"), self.lateral_error_direction_deg, -360.0, 360.0)
+            .in_range(
+                &f("lateral_error_direction_deg"),
+                self.lateral_error_direction_deg,
+                -360.0,
+                360.0,
+            )
             .to_radians();
         let tilt = c
             .in_range(&f("angular_error_deg"), self.angular_error_deg, -30.0, 30.0)
             .to_radians();
         let az = c
-            .in_range(&f("tilt_direction_deg"), self.tilt_direction_deg, -360.0, 360.0)
+            .in_range(
+                &f("tilt_direction_deg"),
+                self.tilt_direction_deg,
+                -360.0,
+                360.0,
+            )
             .to_radians();
         let h0 = c.in_range(&f("start_height"), self.start_height, -seat, 1.0);
         let speed = c.in_range(&f("speed"), self.speed, 0.0, 10.0);
@@ -322,8 +342,18 @@ impl CriteriaTable {
         let f = |k: &str| format!("{t}.{k}");
         Criteria {
             seat_depth: c.in_range(&f("seat_depth"), self.seat_depth, 1e-6, 0.999 * bore),
-            wrist_force_limit: c.in_range(&f("wrist_force_limit"), self.wrist_force_limit, 1e-6, 1e7),
-            contact_force_limit: c.in_range(&f("contact_force_limit"), self.contact_force_limit, 1e-6, 1e8),
+            wrist_force_limit: c.in_range(
+                &f("wrist_force_limit"),
+                self.wrist_force_limit,
+                1e-6,
+                1e7,
+            ),
+            contact_force_limit: c.in_range(
+                &f("contact_force_limit"),
+                self.contact_force_limit,
+                1e-6,
+                1e8,
+            ),
             release_time: c.in_range(&f("release_time"), self.release_time, 1e-5, 1.0),
         }
     }
