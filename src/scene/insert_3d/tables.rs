@@ -254,7 +254,7 @@ impl RobotTable {
     /// compliance centre `lc` above the tip and seat depth `seat`.
     pub fn build(&self, t: &str, c: &mut Checker, lc: f64, seat: f64, d: f64) -> RobotMotion {
         let f = |k: &str| format!("{t}.{k}");
-        let e = c.in_range(&f("lateral_error"), self.lateral_error, -d, d);
+        let e = c.in_range(&f("lateral_error"), self.lateral_error, -2.0 * d, 2.0 * d);
         let dir = c
             .in_range(
                 &f("lateral_error_direction_deg"),
