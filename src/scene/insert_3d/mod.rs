@@ -3,6 +3,7 @@
 //! wrist), with their shared tables and outputs. See `docs/insertion.md`.
 
 pub mod drop;
+pub mod margins;
 pub mod output;
 pub mod rcc;
 pub mod sweep;

@@ -294,6 +294,13 @@ impl Scene for Ready {
         );
         fig.panels.push(output::forces_panel(&samples));
         fig.panels.push(output::timeline(&samples));
+        let (margin_metrics, margin_panel) = super::margins::margins(
+            &self.built.params,
+            self.scene.peg.clearance_ratio,
+            self.built.held.robot.tilt.abs(),
+            &samples,
+        );
+        fig.panels.push(margin_panel);
         let svg = ctx.output("svg");
         fig.save(&svg)?;
         let views = output::write_views(
@@ -322,6 +329,18 @@ impl Scene for Ready {
         out.metrics.push(Metric::new("end tilt", tilt, "rad"));
         out.metrics
             .push(Metric::new("contact transitions", rows.len() as f64, ""));
+        if let Some(r) = rows.iter().find(|r| r.state.contains('+')) {
+            let (d2, ..) = crate::compliant_peg_3d::insertion::depth_tilt(
+                &self.built.params,
+                &crate::compliant_peg_3d::insertion::peg_state(&r.y),
+            );
+            out.metrics.push(Metric::new(
+                "simulated two-point contact from depth",
+                d2,
+                "m",
+            ));
+        }
+        out.metrics.extend(margin_metrics);
         out.outputs = vec![csv, ev, svg, views];
         Ok(out)
     }
