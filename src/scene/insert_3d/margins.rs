@@ -11,7 +11,9 @@
 //! - **Wedging depth.** Two-point contact entered at `l < μ d` can wedge
 //!   (the line between the contacts lies inside both friction cones).
 //! - **Two-point depth.** With tilt `θ` the peg enters two-point contact
-//!   where `l θ ≈ D − d`: `l₂ = (D − d)/θ`.
+//!   where `l θ ≈ D − d`, `l` the axial distance between the mouth's
+//!   innermost circle (depth `ρ_h`) and the rim's outermost circle (`ρ_p`
+//!   above the tip): tip depth `ρ_h + ρ_p + (D − d)/θ`.
 //! - **Chamfer acceptance.** An aligned peg's rounded rim lands on the
 //!   rounded mouth, and is guided in, while its lateral error is below
 //!   `e_max = (R − r) + ρ_h + ρ_p`.
@@ -78,8 +80,8 @@ pub fn margins(
     ));
     if angular_error > 0.0 {
         metrics.push(Metric::new(
-            "two-point depth (D - d)/theta0 at the angular error",
-            (prm.hole_diameter - d) / angular_error,
+            "two-point depth rho_h + rho_p + (D - d)/theta0 at the angular error",
+            prm.mouth_fillet + prm.rim_fillet + (prm.hole_diameter - d) / angular_error,
             "m",
         ));
     }
