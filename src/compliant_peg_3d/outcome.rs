@@ -139,11 +139,14 @@ pub fn label(counts: &[usize]) -> String {
     }
 }
 
+/// A state `(t, y)` and its contact counts.
+type Memo = (f64, SVector<f64, N_STATE>, Vec<usize>);
+
 /// A memo of the contact counts of the last state asked for, so that the
 /// per-pair transition events of one state share one contact search.
 pub struct CountCache<'a> {
     system: &'a Insertion,
-    last: RefCell<Option<(f64, SVector<f64, N_STATE>, Vec<usize>)>>,
+    last: RefCell<Option<Memo>>,
 }
 
 impl<'a> CountCache<'a> {
