@@ -76,3 +76,46 @@ fn slow_two_point_descent_meets_the_static_sliding_equilibrium() {
     assert!(slow < 1e-3, "slow {slow}");
     assert!(slow < 0.5 * fast, "slow {slow} fast {fast}");
 }
+
+#[test]
+fn one_point_contact_deflects_the_wrist_by_the_error_less_the_clearance() {
+    // The shipped insertion rides the bore wall on its rim between 2 and
+    // 4.9 mm. The rim's outermost point towards the wall lies
+    // x_reach = (r − ρ_p) cos θ − ρ_p sin θ + ρ_p from the tip's centre
+    // (tilt θ away from the wall), so the tip sits at R − x_reach + δ and the
+    // wrist (compliance centre at the tip, robot at lateral error e) is
+    // deflected by d_x = R − x_reach + δ − e, δ = (Q/k)^(2/3).
+    let text = include_str!("../scenes/insert_rcc.toml")
+        .replace("seat_depth = 0.008 ", "seat_depth = 0.0045 ");
+    let mut doc: toml::Table = toml::from_str(&text).unwrap();
+    doc.remove("kind");
+    doc.remove("description");
+    let scene: RccScene = doc.try_into().unwrap();
+    let built = scene.build().unwrap();
+    let (spec, _) = scene
+        .integrator
+        .resolved(pegdyn::scene::integrator::DefaultMethod::NON_STIFF);
+    let run = run_one(&built, &spec, false, &mut Progress::silent()).unwrap();
+    let prm = built.params;
+    let k = scene.peg.contact_stiffness.unwrap();
+    let e = scene.robot.lateral_error;
+    let (r, rho) = (prm.peg_radius(), prm.rim_fillet);
+    let mut n = 0;
+    for (&t, y) in run.solution.t.iter().zip(&run.solution.x) {
+        let s = run.system.sample(t, y).unwrap();
+        if s.depth < 0.003 || s.forces.len() != 1 || s.forces[0].contact.pair != Pair::RimWall {
+            continue;
+        }
+        let q = s.forces[0].normal_force;
+        let th = s.tilt;
+        let reach = (r - rho) * th.cos() - rho * th.sin() + rho;
+        let predicted = prm.bore_radius() - reach + (q / k).powf(2.0 / 3.0) - e;
+        let dx = s.wrist.unwrap().deflection.x;
+        assert!(
+            (dx - predicted).abs() < 2e-3 * predicted.abs(),
+            "{dx} vs {predicted} at {t}"
+        );
+        n += 1;
+    }
+    assert!(n > 50, "{n} one-point samples");
+}
