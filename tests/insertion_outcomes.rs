@@ -238,3 +238,39 @@ fn rotation_assist_runs_a_tiny_grid() {
     assert_eq!(csv.lines().count(), 3, "{csv}");
     assert!(csv.lines().nth(1).unwrap().contains("seated"), "{csv}");
 }
+
+#[test]
+fn a_force_controlled_descent_seats_the_peg() {
+    // Constant 5 N down the robot's axis instead of the axial spring.
+    let text = variant(&[("seat_depth", "0.004")])
+        .replace("speed = 0.01 ", "axial_force = 5.0\nspeed = 0.01 ");
+    let mut doc: toml::Table = toml::from_str(&text).unwrap();
+    doc.remove("kind");
+    doc.remove("description");
+    let scene: RccScene = doc.try_into().unwrap();
+    let built = scene.build().unwrap();
+    assert!(matches!(
+        built.held.robot.descent,
+        pegdyn::compliant_peg_3d::robot::Descent::Force { force } if force == 5.0
+    ));
+    let (spec, _) = scene
+        .integrator
+        .resolved(pegdyn::scene::integrator::DefaultMethod::NON_STIFF);
+    let run = run_one(&built, &spec, false, &mut Progress::silent()).unwrap();
+    assert_eq!(run.outcome, Outcome::Seated);
+    // The wrist pushes with the commanded 5 N less its axial damper's
+    // force on the descent (the robot frame stays put): −5 + C_z |v_z|.
+    let s = run
+        .system
+        .sample(run.solution.t_final, &run.solution.x_final)
+        .unwrap();
+    let fz = s.wrist.unwrap().force_robot.z;
+    let vz = run.solution.x_final[9];
+    let cz = built.held.wrist.axial_damping;
+    assert!(vz < -1e-3, "{vz}");
+    assert!(
+        (fz - (-5.0 - cz * vz)).abs() < 1e-3,
+        "{fz} vs {}",
+        -5.0 - cz * vz
+    );
+}
