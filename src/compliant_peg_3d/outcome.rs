@@ -64,6 +64,18 @@ pub enum Outcome {
         /// The force (N).
         force: f64,
     },
+    /// The contact force limit was reached by a jump: the largest contact
+    /// force at the previous output sample was below a tenth of the limit.
+    /// A contact point entered its pair's valid region already deep, i.e.
+    /// the overlap grew where no contact pair of the model looks (for
+    /// example the peg's cylindrical side on the bore wall): a gap of the
+    /// contact model, not a robot stop.
+    ContactJump {
+        /// The largest contact force at the previous sample (N).
+        before: f64,
+        /// The time of that sample (s).
+        since: f64,
+    },
     /// The integration ended otherwise (end of the time span, step size,
     /// step budget, non-finite state), as the integrator describes it.
     Stopped {
@@ -74,7 +86,7 @@ pub enum Outcome {
 
 impl Outcome {
     /// A short name: `seated`, `jammed`, `wedged`, `missed`, `force_limit`,
-    /// `stopped`.
+    /// `contact_jump`, `stopped`.
     pub fn name(&self) -> &'static str {
         match self {
             Outcome::Seated => "seated",
@@ -82,12 +94,13 @@ impl Outcome {
             Outcome::Wedged { .. } => "wedged",
             Outcome::Missed => "missed",
             Outcome::ForceLimit { .. } => "force_limit",
+            Outcome::ContactJump { .. } => "contact_jump",
             Outcome::Stopped { .. } => "stopped",
         }
     }
 
     /// A numeric code for heat maps: seated 0, jammed 1, wedged 2,
-    /// missed 3, force limit 4, stopped 5.
+    /// missed 3, force limit 4, stopped 5, contact jump 6.
     pub fn code(&self) -> f64 {
         match self {
             Outcome::Seated => 0.0,
@@ -96,6 +109,7 @@ impl Outcome {
             Outcome::Missed => 3.0,
             Outcome::ForceLimit { .. } => 4.0,
             Outcome::Stopped { .. } => 5.0,
+            Outcome::ContactJump { .. } => 6.0,
         }
     }
 }

@@ -64,7 +64,8 @@ fn ratio(prm: &Peg3dParams, s: &super::output::Samples) -> Vec<(f64, [f64; 2], f
 }
 
 /// The margins' metrics and the panel of the load-ratio path over the
-/// no-jam parallelogram at the deepest sample.
+/// no-jam parallelogram at the deepest sample (without series when the run
+/// has no two-point contact in the bore).
 pub fn margins(
     prm: &Peg3dParams,
     clearance_ratio: f64,
@@ -114,6 +115,9 @@ pub fn margins(
             worst,
             "",
         ));
+    }
+    if path.is_empty() {
+        return (metrics, panel);
     }
     panel = panel.with(
         Series::line(

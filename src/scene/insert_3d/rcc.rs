@@ -195,6 +195,32 @@ pub fn run_one(
         terminal,
         &reason,
     );
+    // A contact force limit reached by a jump between two samples is a
+    // contact the model's pairs missed, not a robot stop.
+    let outcome = match outcome {
+        Outcome::ForceLimit {
+            which: "contact", ..
+        } => {
+            let prev = solution
+                .t
+                .iter()
+                .zip(&solution.x)
+                .rev()
+                .find(|(t, _)| **t < solution.t_final);
+            match prev {
+                Some((&t, y)) => {
+                    let before = sys.sample(t, y)?.peak_normal();
+                    if before < 0.1 * b.criteria.contact_force_limit {
+                        Outcome::ContactJump { before, since: t }
+                    } else {
+                        outcome
+                    }
+                }
+                None => outcome,
+            }
+        }
+        other => other,
+    };
     // Transition events are indexed after the terminal ones.
     let mut solution = solution;
     for e in &mut solution.events {
@@ -300,7 +326,9 @@ impl Scene for Ready {
             self.built.held.robot.tilt.abs(),
             &samples,
         );
-        fig.panels.push(margin_panel);
+        if !margin_panel.series.is_empty() {
+            fig.panels.push(margin_panel);
+        }
         let svg = ctx.output("svg");
         fig.save(&svg)?;
         let views = output::write_views(
@@ -358,6 +386,12 @@ pub fn outcome_text(o: &Outcome) -> String {
             )
         }
         Outcome::Stopped { reason } => format!("stopped: {reason}"),
+        Outcome::ContactJump { before, since } => format!(
+            "contact force jumped to the limit from {} N at t = {} s (a contact the model's \
+             pairs miss)",
+            crate::scene::significant(*before),
+            crate::scene::significant(*since)
+        ),
         other => other.name().to_string(),
     }
 }

@@ -367,6 +367,7 @@ fn heat_maps(rows: &[Row]) -> Figure {
             (3.0, "missed"),
             (4.0, "force limit"),
             (5.0, "stopped"),
+            (6.0, "contact jump (model gap)"),
         ] {
             let pts: Vec<(f64, f64)> = sel
                 .iter()
