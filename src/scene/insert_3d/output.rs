@@ -184,19 +184,26 @@ pub struct EventRow {
 }
 
 /// The contact transitions of `sol` (events with index below
-/// `what.len()`), described.
+/// `what.len()`), described. The contact state after each is the start
+/// state's point counts updated by every transition so far, so the list
+/// reads consistently from the first event to the last.
 pub fn transitions(sys: &Insertion, sol: &Solution<N_STATE>, what: &[Transition]) -> Vec<EventRow> {
+    let mut cur = sol
+        .x
+        .first()
+        .map_or_else(|| vec![0; Pair::ALL.len()], |y| counts(&sys.contacts(y)));
     sol.events
         .iter()
         .filter(|e| e.index < what.len())
         .map(|e| {
             let (pair, k) = what[e.index];
             let (from, to) = if e.rising { (k - 1, k) } else { (k, k - 1) };
+            cur[pair] = to;
             EventRow {
                 t: e.t,
                 y: e.x,
                 what: format!("{} {from} -> {to}", Pair::ALL[pair].name()),
-                state: label(&counts(&sys.contacts(&e.x))),
+                state: label(&cur),
             }
         })
         .collect()
