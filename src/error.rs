@@ -241,6 +241,10 @@ pub enum RunError {
     /// The integrator rejected its input.
     #[error(transparent)]
     Integrate(#[from] crate::integrate::IntegrateError),
+    /// A Hertz contact of the compliant 3-D peg could not be set up at a
+    /// state (relative curvature not positive).
+    #[error("Hertz contact: {0}")]
+    Hertz(#[from] crate::hertz::HertzError),
 }
 
 impl From<crate::rigid_peg::trajectory::ForwardError> for RunError {

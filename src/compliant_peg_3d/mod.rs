@@ -34,3 +34,7 @@ pub use merge::Saddle;
 pub use params::{HertzMode, Peg3dParams};
 pub use search::{ContactPoint, Pair, Search};
 pub use system::{Peg3d, pose_state};
+pub mod insertion;
+pub mod outcome;
+pub mod robot;
+pub mod wrist;

@@ -30,6 +30,7 @@ pub mod align_forward;
 pub mod document;
 pub mod double_pendulum;
 pub mod fig9;
+pub mod insert_3d;
 pub mod insert_compliant;
 pub mod integrator;
 pub mod jamming;
@@ -85,6 +86,9 @@ pub const KINDS: &[Kind] = &[
     insert_compliant::KIND,
     fig9::KIND,
     align_forward::KIND,
+    insert_3d::drop::KIND,
+    insert_3d::rcc::KIND,
+    insert_3d::sweep::KIND,
 ];
 
 /// A scene read from a file.

@@ -1,0 +1,363 @@
+//! How an insertion ends, as a value, and the contact-state events of a
+//! run.
+//!
+//! Terminal conditions (event functions, located on the integrator's
+//! dense output):
+//!
+//! - `seated`: the tip's depth reaches the seat depth;
+//! - `wrist force limit`: `|F_w|` reaches the wrist limit (a robot stops);
+//! - `contact force limit`: the largest contact normal force reaches the
+//!   contact limit;
+//! - `missed`: the rim rests on the top face while the tip's centre is
+//!   outside the bore radius (the axis missed the hole).
+//!
+//! A run stopped by a force limit while the peg is inside the bore on two
+//! or more contacts, or at the end of its time span without progress, is
+//! then told apart by a release test ([`release`]): the wrist is removed
+//! and the peg integrated on its own for a short time. If the contacts
+//! keep at least half of their normal force, the peg is `Wedged` (held by
+//! its own elastic deformation); otherwise it was `Jammed` (held by the
+//! applied forces inside the friction cones).
+
+use super::insertion::{Insertion, N_STATE, peg_state};
+use super::search::{ContactPoint, Pair};
+use crate::integrate::{Direction, Event, Method, Options, Solver};
+use nalgebra::SVector;
+use std::cell::RefCell;
+
+/// When a run ends.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Criteria {
+    /// Tip depth at which the peg counts as seated (m).
+    pub seat_depth: f64,
+    /// Largest wrist force a robot accepts (N).
+    pub wrist_force_limit: f64,
+    /// Largest contact normal force accepted (N).
+    pub contact_force_limit: f64,
+    /// Duration of the release test (s).
+    pub release_time: f64,
+}
+
+/// The outcome of an insertion.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Outcome {
+    /// The tip reached the seat depth.
+    Seated,
+    /// Held by the applied forces inside the friction cones at the named
+    /// contacts; released when the wrist force is removed.
+    Jammed {
+        /// The contacts, e.g. `edge_side, rim_wall`.
+        contacts: String,
+    },
+    /// Held by the contacts' own elastic deformation: the contact forces
+    /// stay when the wrist force is removed.
+    Wedged {
+        /// The contacts.
+        contacts: String,
+    },
+    /// The axis missed the hole: the rim rests on the top face.
+    Missed,
+    /// A force limit was reached outside a jam or wedge.
+    ForceLimit {
+        /// `wrist` or `contact`.
+        which: &'static str,
+        /// The force (N).
+        force: f64,
+    },
+    /// The contact force limit was reached by a jump: the largest contact
+    /// force at the previous output sample was below a tenth of the limit.
+    /// A contact point entered its pair's valid region already deep, i.e.
+    /// the overlap grew where no contact pair of the model looks (for
+    /// example the peg's cylindrical side on the bore wall): a gap of the
+    /// contact model, not a robot stop.
+    ContactJump {
+        /// The largest contact force at the previous sample (N).
+        before: f64,
+        /// The time of that sample (s).
+        since: f64,
+    },
+    /// The integration ended otherwise (end of the time span, step size,
+    /// step budget, non-finite state), as the integrator describes it.
+    Stopped {
+        /// The integrator's description.
+        reason: String,
+    },
+}
+
+impl Outcome {
+    /// A short name: `seated`, `jammed`, `wedged`, `missed`, `force_limit`,
+    /// `contact_jump`, `stopped`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            Outcome::Seated => "seated",
+            Outcome::Jammed { .. } => "jammed",
+            Outcome::Wedged { .. } => "wedged",
+            Outcome::Missed => "missed",
+            Outcome::ForceLimit { .. } => "force_limit",
+            Outcome::ContactJump { .. } => "contact_jump",
+            Outcome::Stopped { .. } => "stopped",
+        }
+    }
+
+    /// A numeric code for heat maps: seated 0, jammed 1, wedged 2,
+    /// missed 3, force limit 4, stopped 5, contact jump 6.
+    pub fn code(&self) -> f64 {
+        match self {
+            Outcome::Seated => 0.0,
+            Outcome::Jammed { .. } => 1.0,
+            Outcome::Wedged { .. } => 2.0,
+            Outcome::Missed => 3.0,
+            Outcome::ForceLimit { .. } => 4.0,
+            Outcome::Stopped { .. } => 5.0,
+            Outcome::ContactJump { .. } => 6.0,
+        }
+    }
+}
+
+/// The names of the terminal events of [`terminal_events`], in order.
+pub const TERMINAL_NAMES: [&str; 4] = [
+    "seated",
+    "wrist force limit",
+    "contact force limit",
+    "missed",
+];
+
+/// The number of contact points of each pair (order of [`Pair::ALL`]).
+pub fn counts(contacts: &[ContactPoint]) -> Vec<usize> {
+    Pair::ALL
+        .iter()
+        .map(|p| contacts.iter().filter(|c| c.pair == *p).count())
+        .collect()
+}
+
+/// A contact state in words: `none`, or the pairs with their point
+/// counts, e.g. `edge_side x2 + rim_wall` (a three-point lean on the
+/// mouth).
+pub fn label(counts: &[usize]) -> String {
+    let parts: Vec<String> = Pair::ALL
+        .iter()
+        .zip(counts)
+        .filter(|(_, n)| **n > 0)
+        .map(|(p, n)| {
+            if *n == 1 {
+                p.name().to_string()
+            } else {
+                format!("{} x{n}", p.name())
+            }
+        })
+        .collect();
+    if parts.is_empty() {
+        "none".into()
+    } else {
+        parts.join(" + ")
+    }
+}
+
+/// A state `(t, y)` and its contact counts.
+type Memo = (f64, SVector<f64, N_STATE>, Vec<usize>);
+
+/// A memo of the contact counts of the last state asked for, so that the
+/// per-pair transition events of one state share one contact search.
+pub struct CountCache<'a> {
+    system: &'a Insertion,
+    last: RefCell<Option<Memo>>,
+}
+
+impl<'a> CountCache<'a> {
+    /// A cache over `system`'s contact search.
+    pub fn new(system: &'a Insertion) -> Self {
+        CountCache {
+            system,
+            last: RefCell::new(None),
+        }
+    }
+
+    /// The contact counts of `y` at `t`.
+    pub fn counts(&self, t: f64, y: &SVector<f64, N_STATE>) -> Vec<usize> {
+        if let Some((tl, yl, c)) = &*self.last.borrow()
+            && *tl == t
+            && yl == y
+        {
+            return c.clone();
+        }
+        let c = counts(&self.system.contacts(y));
+        *self.last.borrow_mut() = Some((t, *y, c.clone()));
+        c
+    }
+}
+
+/// One contact-state event: `(pair index, k)`: the pair's point count
+/// crosses from `k − 1` to `k` (rising) or back (falling).
+pub type Transition = (usize, usize);
+
+/// The contact-transition events (pair count crossing 1 and 2, both
+/// directions, non-terminal) and what each is.
+pub fn transition_events<'a>(
+    cache: &'a CountCache<'a>,
+) -> (Vec<Event<'a, N_STATE>>, Vec<Transition>) {
+    let mut events = Vec::new();
+    let mut what = Vec::new();
+    for i in 0..Pair::ALL.len() {
+        for k in 1..=2usize {
+            events.push(
+                Event::new(move |t, y: &SVector<f64, N_STATE>| {
+                    cache.counts(t, y)[i] as f64 - k as f64 + 0.5
+                })
+                .direction(Direction::Both),
+            );
+            what.push((i, k));
+        }
+    }
+    (events, what)
+}
+
+/// The terminal events of [`TERMINAL_NAMES`] for a held peg.
+pub fn terminal_events<'a>(system: &'a Insertion, c: Criteria) -> Vec<Event<'a, N_STATE>> {
+    let prm = system.peg.params;
+    let seated = Event::new(move |_t, y: &SVector<f64, N_STATE>| {
+        super::insertion::depth_tilt(&prm, &peg_state(y)).0 - c.seat_depth
+    })
+    .direction(Direction::Rising)
+    .terminal();
+    let wrist = Event::new(move |t, y: &SVector<f64, N_STATE>| {
+        system
+            .wrist_load(t, &peg_state(y))
+            .map_or(-1.0, |(_, l)| l.force.norm() - c.wrist_force_limit)
+    })
+    .direction(Direction::Rising)
+    .terminal();
+    let contact = Event::new(move |_t, y: &SVector<f64, N_STATE>| {
+        let f = system.peg.forces(&peg_state(y)).unwrap_or_default();
+        f.iter().map(|f| f.normal_force).fold(0.0, f64::max) - c.contact_force_limit
+    })
+    .direction(Direction::Rising)
+    .terminal();
+    let missed = Event::new(move |_t, y: &SVector<f64, N_STATE>| {
+        let ys = peg_state(y);
+        let m = super::insertion::motion(&ys);
+        let a = m.orientation * nalgebra::Vector3::z();
+        let tip = m.centre - a * (0.5 * prm.length);
+        let on_top = system
+            .peg
+            .contacts(&ys)
+            .iter()
+            .any(|c| c.pair == Pair::RimTop);
+        if on_top && tip.xy().norm() > prm.bore_radius() {
+            0.5
+        } else {
+            -0.5
+        }
+    })
+    .direction(Direction::Rising)
+    .terminal();
+    vec![seated, wrist, contact, missed]
+}
+
+/// What the release test found.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Release {
+    /// Total contact normal force before (N).
+    pub before: f64,
+    /// Total contact normal force at the end of the test (N).
+    pub after: f64,
+    /// Contact points at the end.
+    pub points: usize,
+}
+
+impl Release {
+    /// Whether the contacts held at least half their force on two or more
+    /// points.
+    pub fn held(&self) -> bool {
+        self.points >= 2 && self.after >= 0.5 * self.before
+    }
+}
+
+/// The release test: the peg of `system` at `y`, without its wrist and
+/// follower moment, integrated for `duration` (Dormand–Prince 5(4),
+/// rtol 1e-6).
+pub fn release(system: &Insertion, y: &SVector<f64, N_STATE>, duration: f64) -> Release {
+    let free = Insertion::new(system.peg.params, None, 0.0);
+    let ys = peg_state(y);
+    let before: f64 = free
+        .peg
+        .forces(&ys)
+        .map(|f| f.iter().map(|f| f.normal_force).sum())
+        .unwrap_or(0.0);
+    let mut y0 = *y;
+    y0[15] = 0.0;
+    let mut opts = Options::with_tolerances(1e-6, 1e-12);
+    opts.max_steps = 200_000;
+    let mut solver = Solver::new(Method::Dopri5, opts);
+    let end = match solver.solve(&free, 0.0, y0, duration) {
+        Ok(sol) => sol.x_final,
+        Err(_) => y0,
+    };
+    let ye = peg_state(&end);
+    let forces = free.peg.forces(&ye).unwrap_or_default();
+    Release {
+        before,
+        after: forces.iter().map(|f| f.normal_force).sum(),
+        points: forces.len(),
+    }
+}
+
+/// The outcome of a run that stopped at `(t, y)`: `terminal` is the index
+/// into [`TERMINAL_NAMES`] of the terminal event that stopped it, if any,
+/// `reason` the integrator's description otherwise.
+pub fn classify(
+    system: &Insertion,
+    c: Criteria,
+    t: f64,
+    y: &SVector<f64, N_STATE>,
+    terminal: Option<usize>,
+    reason: &str,
+) -> Outcome {
+    let ys = peg_state(y);
+    let contacts = system.peg.contacts(&ys);
+    let (depth, ..) = super::insertion::depth_tilt(&system.peg.params, &ys);
+    let names = label(&counts(&contacts));
+    let inside = depth > system.peg.params.mouth_fillet;
+    let stuck = |system: &Insertion| {
+        let r = release(system, y, c.release_time);
+        if r.held() {
+            Outcome::Wedged {
+                contacts: names.clone(),
+            }
+        } else {
+            Outcome::Jammed {
+                contacts: names.clone(),
+            }
+        }
+    };
+    match terminal {
+        Some(0) => Outcome::Seated,
+        Some(3) => Outcome::Missed,
+        Some(k @ (1 | 2)) => {
+            if inside && contacts.len() >= 2 {
+                stuck(system)
+            } else {
+                let force = if k == 1 {
+                    system
+                        .wrist_load(t, &ys)
+                        .map_or(0.0, |(_, l)| l.force.norm())
+                } else {
+                    c.contact_force_limit
+                };
+                Outcome::ForceLimit {
+                    which: if k == 1 { "wrist" } else { "contact" },
+                    force,
+                }
+            }
+        }
+        _ => {
+            let speed = ys.fixed_rows::<3>(7).norm();
+            if inside && contacts.len() >= 2 && speed < 1e-4 {
+                stuck(system)
+            } else {
+                Outcome::Stopped {
+                    reason: reason.to_string(),
+                }
+            }
+        }
+    }
+}
