@@ -94,7 +94,8 @@ pub fn points(module: &str) -> Option<Vec<Point>> {
             "thetadot",
         )),
         "hertz" => Some(hertz()),
-        "compliant_peg" | "compliant_peg_lean" => Some(compliant()),
+        "compliant_peg" | "compliant_peg_lean" => Some(compliant(&steel_params, &[])),
+        "compliant_peg_elastic" => Some(compliant(&steel_params_elastic, &UTILISATIONS)),
         "quasi_static" => Some(quasi_static()),
         "compliant_peg_3d" => Some(compliant_peg_3d()),
         "rigid_peg"
@@ -128,6 +129,35 @@ fn angles(base: &[(&str, f64)], angle: &[&str], rate: &str) -> Vec<Point> {
 /// The steel reference peg of `scenes/insert_compliant.toml` with
 /// clearance `c` (m) at D = 50 mm: (name, value) of every model parameter.
 fn steel_params(clearance: f64) -> Vec<(&'static str, f64)> {
+    steel_params_named(clearance, &P_NAMES, |p, load| {
+        p.vector(load).as_slice().to_vec()
+    })
+}
+
+/// As [`steel_params`], for the parameters of the elastic (Hertz–Mindlin)
+/// friction model.
+fn steel_params_elastic(clearance: f64) -> Vec<(&'static str, f64)> {
+    use crate::generated::compliant_peg_elastic::P_NAMES as NAMES;
+    steel_params_named(clearance, &NAMES, |p, load| {
+        p.vector_elastic(load).as_slice().to_vec()
+    })
+}
+
+/// Tangential utilisations `u = ξ/ξ_max` of the four contacts of the
+/// elastic friction model: at rest, half way to sliding, sliding backwards.
+const UTILISATIONS: [(&str, [f64; 3]); 4] = [
+    ("u_edge_left", [0.0, 0.5, -1.0]),
+    ("u_wall_right", [0.0, -0.5, 1.0]),
+    ("u_edge_right", [0.0, 0.25, 0.0]),
+    ("u_wall_left", [0.0, 0.0, -0.25]),
+];
+
+/// (name, value) of `names` for the steel reference peg with clearance `c`.
+fn steel_params_named(
+    clearance: f64,
+    names: &[&'static str],
+    vector: impl Fn(&CompliantParams, &Load) -> Vec<f64>,
+) -> Vec<(&'static str, f64)> {
     let spec = CompliantSpec::steel_cylinder(HOLE_DIAMETER, clearance / HOLE_DIAMETER, 0.1, 0.1);
     let load = Load {
         axial: 10.0,
@@ -135,14 +165,11 @@ fn steel_params(clearance: f64) -> Vec<(&'static str, f64)> {
         torque: 0.01,
     };
     match CompliantParams::try_new(spec) {
-        Ok(p) => {
-            let v = p.vector(&load);
-            P_NAMES
-                .iter()
-                .zip(v.iter())
-                .map(|(&n, &x)| (n, x))
-                .collect()
-        }
+        Ok(p) => names
+            .iter()
+            .zip(vector(&p, &load))
+            .map(|(&n, x)| (n, x))
+            .collect(),
         Err(_) => Vec::new(),
     }
 }
@@ -172,11 +199,15 @@ fn hertz() -> Vec<Point> {
 }
 
 /// The compliant peg 10 mm deep, touching the left hole edge with approach
-/// δ, for every clearance, approach and tilt; plus zero and tiny rates.
-fn compliant() -> Vec<Point> {
+/// δ, for every clearance, approach and tilt; plus zero and tiny rates;
+/// with `extra` state components (name, values) taken in turn.
+fn compliant(
+    params_of: &dyn Fn(f64) -> Vec<(&'static str, f64)>,
+    extra: &[(&str, [f64; 3])],
+) -> Vec<Point> {
     let mut out = Vec::new();
     for &c in &CLEARANCES {
-        let params = steel_params(c);
+        let params = params_of(c);
         let base = Point::new("", &params);
         let (Some(r), Some(d), Some(rho_h)) =
             (base.value("r"), base.value("D"), base.value("rho_h"))
@@ -204,9 +235,17 @@ fn compliant() -> Vec<Point> {
                         .with("thetadot", if rate == 1e-12 { 1e-12 } else { 0.0 })
                         .with("work", 0.0)
                         .with("dissipation", 0.0);
-                    out.push(p.labelled(format!(
-                        "clearance={c:e} delta~{delta:e} theta={theta:e} {label}"
-                    )));
+                    let label = format!("clearance={c:e} delta~{delta:e} theta={theta:e} {label}");
+                    if extra.is_empty() {
+                        out.push(p.labelled(label));
+                        continue;
+                    }
+                    for k in 0..3 {
+                        let q = extra
+                            .iter()
+                            .fold(p.clone(), |q, (name, values)| q.with(name, values[k]));
+                        out.push(q.labelled(format!("{label} utilisation set {k}")));
+                    }
                 }
             }
         }
