@@ -74,8 +74,10 @@ impl FieldRange {
 
     /// As [`FieldRange::check`] under another name, e.g. an element
     /// `motion.psidot[1]` of a list whose range is `motion.psidot`.
+    /// A field that already has a recorded problem (e.g. "must be > 0")
+    /// is not reported twice.
     pub fn check_as(&self, c: &mut Checker, name: &str, v: f64) {
-        if v.is_finite() && !self.contains(v) {
+        if v.is_finite() && !self.contains(v) && !c.has_error(name) {
             let unit = if self.unit.is_empty() {
                 String::new()
             } else {
@@ -240,6 +242,18 @@ pub fn check_compliant(c: &mut Checker, table: &str, f: &CompliantFields) {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_field_already_refused_is_not_refused_twice() {
+        let range = FieldRange::new("pendulum.length", 1e-6, 1e6, "m", "test");
+        let mut c = Checker::default();
+        c.positive("pendulum.length", -1.0);
+        range.check(&mut c, -1.0);
+        range.check_as(&mut c, "pendulum.mass", -1.0);
+        let e = c.finish().unwrap_err();
+        let fields: Vec<_> = e.errors.iter().map(|l| l.error.field()).collect();
+        assert_eq!(fields, [Some("pendulum.length"), Some("pendulum.mass")]);
+    }
 
     fn shipped() -> CompliantFields {
         CompliantFields {

@@ -135,6 +135,11 @@ impl Checker {
         self.check(greater_than(field, v, bound_field, bound), v)
     }
 
+    /// Whether a problem of `field` has been recorded.
+    pub fn has_error(&self, field: &str) -> bool {
+        self.errors.iter().any(|e| e.field() == Some(field))
+    }
+
     /// Whether nothing has been recorded so far.
     pub fn is_ok(&self) -> bool {
         self.errors.is_empty()
