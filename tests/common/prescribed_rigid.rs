@@ -206,13 +206,18 @@ pub fn run(k: f64, psidot: f64, gamma_s: f64, gammas: &[f64]) -> Vec<Row> {
         .collect()
 }
 
-/// Largest force difference (over m g) and point distance (m) over rows.
+/// Largest force difference (over m g) and point distance (m) over rows;
+/// a contact the 3-D peg has lost counts as an infinite distance.
 pub fn worst(rows: &[Row]) -> (f64, f64) {
     rows.iter().fold((0.0_f64, 0.0_f64), |(f, p), r| {
         let df = (0..3)
             .map(|i| (r.three_d[i] - r.rigid[i]).abs())
             .fold(0.0, f64::max);
-        let dp = r.point_error.iter().cloned().fold(0.0, f64::max);
+        let dp = r
+            .point_error
+            .iter()
+            .map(|&e| if e.is_nan() { f64::INFINITY } else { e })
+            .fold(0.0, f64::max);
         (f.max(df), p.max(dp))
     })
 }
