@@ -839,3 +839,21 @@ fn rim_landing_on_the_mouth_fillet_conserves_energy() {
     );
     assert!(worst < 1e-8, "energy balance drifts by {worst} J");
 }
+
+#[test]
+fn axis_of_a_pose_is_the_rotated_body_axis() {
+    // a = R(q) e_z for orientations tilted and turned every way (the
+    // validity tests, the pruning and the curvatures read it).
+    let mut rng = Rng(7);
+    for _ in 0..200 {
+        let q = orientation(
+            rng.uniform(0.0, 1.5),
+            rng.uniform(0.0, TAU),
+            rng.uniform(0.0, TAU),
+        );
+        let x = pose(Vector3::zeros(), &q);
+        let a = pegdyn::compliant_peg_3d::system::axis_of(&x);
+        let expect = q * Vector3::z();
+        assert!((a - expect).norm() < 1e-15, "{a} vs {expect}");
+    }
+}

@@ -36,10 +36,11 @@
 use std::path::PathBuf;
 use std::sync::Mutex;
 
-use serde::Deserialize;
+use serde::de::Error as _;
+use serde::{Deserialize, Deserializer};
 
 use crate::error::{RunError, SceneError, SceneErrors};
-use crate::integrate::Method;
+use crate::integrate::MethodKind;
 use crate::jamming::PegHole;
 use crate::jamming::diagram::whitney_parallelogram;
 use crate::jamming::dynamic::{self, DynamicPoint, SweepSetup, SweepSpec};
@@ -78,9 +79,10 @@ pub struct SweepParams {
     pub advance_m: f64,
     /// Classification window, s.
     pub window_s: f64,
-    /// Integrator of the runs (default RODAS4).
-    #[serde(default)]
-    pub method: Option<SweepMethod>,
+    /// Integrator of the runs (default RODAS4; `rodas4`, `rodas3` or
+    /// `dopri5`).
+    #[serde(default, deserialize_with = "sweep_method")]
+    pub method: Option<MethodKind>,
     /// Early stop of settled runs (default true).
     #[serde(default = "yes")]
     pub early_stop: bool,
@@ -104,43 +106,25 @@ fn yes() -> bool {
     true
 }
 
-/// `sweep.method`: the integrator of every run.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum SweepMethod {
-    /// RODAS4, the default: the runs are stiff.
-    #[default]
-    Rodas4,
-    /// RODAS3.
-    Rodas3,
-    /// DOPRI5 (explicit; slow on these stiff runs).
-    Dopri5,
-}
+/// The spellings `sweep.method` accepts (the adaptive methods of
+/// [`MethodKind`]: an RK4 run would need a step).
+const SWEEP_METHODS: &[&str] = &["rodas4", "rodas3", "dopri5"];
 
-impl SweepMethod {
-    /// The compliant integrator choice.
-    pub fn integrator(self) -> Method {
-        match self {
-            SweepMethod::Rodas4 => Method::Rodas4,
-            SweepMethod::Rodas3 => Method::Rodas3,
-            SweepMethod::Dopri5 => Method::Dopri5,
-        }
-    }
-
-    /// Name as written in scene files.
-    pub fn name(self) -> &'static str {
-        match self {
-            SweepMethod::Rodas4 => "rodas4",
-            SweepMethod::Rodas3 => "rodas3",
-            SweepMethod::Dopri5 => "dopri5",
-        }
-    }
+/// `sweep.method`: one of [`SWEEP_METHODS`], by [`MethodKind::from_name`].
+fn sweep_method<'de, D: Deserializer<'de>>(d: D) -> Result<Option<MethodKind>, D::Error> {
+    let name = String::deserialize(d)?;
+    SWEEP_METHODS
+        .contains(&name.as_str())
+        .then(|| MethodKind::from_name(&name))
+        .flatten()
+        .map(Some)
+        .ok_or_else(|| D::Error::unknown_variant(&name, SWEEP_METHODS))
 }
 
 impl SweepParams {
     /// The integrator of the runs: as named, else RODAS4.
-    pub fn method(&self) -> SweepMethod {
-        self.method.unwrap_or_default()
+    pub fn method(&self) -> MethodKind {
+        self.method.unwrap_or(MethodKind::Rodas4)
     }
 
     /// Why the runs use [`Self::method`], for the run summary.
@@ -181,6 +165,17 @@ impl SweepParams {
         if self.n < 3 {
             c.push(SceneError::invalid("sweep.n", self.n, "must be at least 3"));
         }
+        let method = self.method();
+        let integrator = c.check(
+            method.with_step(None).ok_or_else(|| {
+                SceneError::invalid(
+                    "sweep.method",
+                    method.name(),
+                    "must be an adaptive method (rodas4, rodas3 or dopri5)",
+                )
+            }),
+            crate::integrate::Method::Rodas4,
+        );
         c.finish()?;
         let peg = PegHole::try_new(self.r_m, self.c, self.mu)
             .map_err(|e| SceneError::invalid(format!("sweep.{}", e.field), e.value, e.reason))?;
@@ -192,7 +187,7 @@ impl SweepParams {
             t_max: self.t_max_s,
             advance: self.advance_m,
             window: self.window_s,
-            integrator: self.method().integrator(),
+            integrator,
             early_stop: self.early_stop,
         };
         let law = match self.friction_law {

@@ -7,7 +7,7 @@
 #![allow(dead_code)]
 
 use nalgebra::{Matrix3, SVector, Vector2, Vector3};
-use pegdyn::compliant_peg_3d::prescribed::{Motion, PrescribedPeg, Site, rim_mouth_minima};
+use pegdyn::compliant_peg_3d::prescribed::{Motion, PrescribedPeg};
 use pegdyn::compliant_peg_3d::system::axis_of;
 use pegdyn::compliant_peg_3d::{HertzMode, Pair, Peg3dParams, Search};
 use pegdyn::integrate::{Method, Options, OutputMode, solve};
@@ -19,9 +19,13 @@ use pegdyn::rigid_peg::{Loads, PegParams};
 pub const GAMMADOT: f64 = -2.0;
 
 /// Contact forces and points of one state: `[K, B1, B2]` (N, m); a missing
-/// contact has force 0 and point NaN. B1 is the rim contact on the `+e_n`
-/// side (the one that leads when ψ̇ > 0). A merged B1–B2 counts as B1 or
-/// B2 by the side it lies on.
+/// contact has force 0 and point NaN. K is the pair `edge_side`, B1 and B2
+/// the pair `rim_edge` (the rim torus on the mouth torus; `rim_wall` too,
+/// should the rim slip below the mouth): B1 on the `+e_n` side (the one
+/// that leads when ψ̇ > 0). A merged B1–B2 counts as B1 or B2 by the side
+/// it lies on. The elastic force of a col shared by B1 and B2 (the
+/// continuous merge of `compliant_peg_3d::merge`, always opposite to both
+/// points' forces near the merge) is taken off both, half each.
 pub fn three_points(
     sys: &PrescribedPeg,
     t: f64,
@@ -32,10 +36,11 @@ pub fn three_points(
     let mut n = [0.0; 3];
     let mut pts = [Vector3::repeat(f64::NAN); 3];
     for f in sys.forces(t, y).unwrap() {
-        let k = match f.site {
-            Site::Pair(Pair::EdgeSide) => 0,
-            Site::RimMouth | Site::Pair(Pair::RimWall) => {
-                if f.point.dot(&e_n) >= 0.0 {
+        let c = &f.contact;
+        let k = match c.pair {
+            Pair::EdgeSide => 0,
+            Pair::RimEdge | Pair::RimWall => {
+                if c.point.dot(&e_n) >= 0.0 {
                     1
                 } else {
                     2
@@ -44,32 +49,41 @@ pub fn three_points(
             other => panic!("unexpected contact {other:?}"),
         };
         n[k] += f.normal_force;
-        pts[k] = f.point;
+        pts[k] = c.point;
+        if f.col_force > 0.0 {
+            assert!(k > 0, "a col on K: {f:?}");
+            n[1] -= 0.5 * f.col_force;
+            n[2] -= 0.5 * f.col_force;
+        }
     }
     (n, pts)
 }
 
 /// The gaps `[K, B1, B2]` (m) with the centre of mass at `c` at time 0:
-/// the smallest valid edge–side minimum and the valid rim–mouth minima on
-/// either side of the symmetry plane.
+/// the smallest valid edge–side minimum and the smallest valid rim–mouth
+/// (`rim_edge`) minima on either side of the symmetry plane.
 pub fn gaps(sys: &PrescribedPeg, c: &Vector3<f64>) -> [f64; 3] {
     let prm = &sys.peg.params;
     let q = sys.motion.orientation(0.0);
     let x = SVector::<f64, 7>::from_column_slice(&[c.x, c.y, c.z, q.w, q.i, q.j, q.k]);
     let axis = axis_of(&x);
     let pv = sys.peg.param_vector();
-    let mut g = [f64::NAN; 3];
-    for a in Search::default().minima(Pair::EdgeSide, prm, &x, pv) {
-        let (gap, _, _, _, n, pt, axial) = Pair::EdgeSide.eval(&x, a, pv);
-        if Pair::EdgeSide.valid(prm, &axis, &n, &pt, axial) && (g[0].is_nan() || gap < g[0]) {
-            g[0] = gap;
-        }
-    }
     let e_n = Vector3::new(-sys.motion.psi.sin(), sys.motion.psi.cos(), 0.0);
-    for m in rim_mouth_minima(prm, c, &q, 1e-3) {
-        let k = if m.point.dot(&e_n) >= 0.0 { 1 } else { 2 };
-        if m.valid && (g[k].is_nan() || m.gap < g[k]) {
-            g[k] = m.gap;
+    let mut g = [f64::NAN; 3];
+    for pair in [Pair::EdgeSide, Pair::RimEdge] {
+        for a in Search::default().minima(pair, prm, &x, pv) {
+            let (gap, _, _, _, n, pt, axial) = pair.eval(&x, a, pv);
+            if !(pair.valid(prm, &axis, &n, &pt, axial) && pair.rim_faces_out(&x, &n, &pt)) {
+                continue;
+            }
+            let k = match pair {
+                Pair::EdgeSide => 0,
+                _ if pt.dot(&e_n) >= 0.0 => 1,
+                _ => 2,
+            };
+            if g[k].is_nan() || gap < g[k] {
+                g[k] = gap;
+            }
         }
     }
     g
@@ -192,13 +206,18 @@ pub fn run(k: f64, psidot: f64, gamma_s: f64, gammas: &[f64]) -> Vec<Row> {
         .collect()
 }
 
-/// Largest force difference (over m g) and point distance (m) over rows.
+/// Largest force difference (over m g) and point distance (m) over rows;
+/// a contact the 3-D peg has lost counts as an infinite distance.
 pub fn worst(rows: &[Row]) -> (f64, f64) {
     rows.iter().fold((0.0_f64, 0.0_f64), |(f, p), r| {
         let df = (0..3)
             .map(|i| (r.three_d[i] - r.rigid[i]).abs())
             .fold(0.0, f64::max);
-        let dp = r.point_error.iter().cloned().fold(0.0, f64::max);
+        let dp = r
+            .point_error
+            .iter()
+            .map(|&e| if e.is_nan() { f64::INFINITY } else { e })
+            .fold(0.0, f64::max);
         (f.max(df), p.max(dp))
     })
 }
