@@ -7,10 +7,10 @@
 //! checks the balance for a landing on the top face, one contact.)
 
 use nalgebra::{Quaternion, SVector, UnitQuaternion, Vector3};
-use std::f64::consts::TAU;
 use pegdyn::compliant_peg::{CompliantParams, CompliantSpec, PegState};
 use pegdyn::compliant_peg_3d::{HertzMode, Pair, Peg3d, Peg3dParams, pose_state};
 use pegdyn::integrate::{Method, Options, solve};
+use std::f64::consts::TAU;
 
 /// The Fig. 9 peg (D = 50 mm, d = 49.95 mm, L = 70 mm), 1 mm fillets,
 /// fixed stiffness (the contact potential is then exact), applied force and
@@ -135,7 +135,15 @@ fn rattle(prm: Peg3dParams, out_of_plane: f64) -> Rattle {
         last = now;
         dissipation.push(y[14]);
     }
-    (worst, changes, seen, dissipation, sol.stats.steps, sideways, unseen)
+    (
+        worst,
+        changes,
+        seen,
+        dissipation,
+        sol.stats.steps,
+        sideways,
+        unseen,
+    )
 }
 
 #[test]
@@ -182,9 +190,15 @@ fn energy_frictionless_undamped_rocking_peg_keeps_the_balance_against_the_wall_i
     );
     // The side never sinks into the wall unseen (within the sampling of
     // the brute force, r (π/2000)²/2 ≈ 3e-8 m, and ρ_p γ² ≈ 1e-7 m).
-    assert!(unseen < 3e-7, "the side sinks {unseen} m into the wall beyond every contact");
+    assert!(
+        unseen < 3e-7,
+        "the side sinks {unseen} m into the wall beyond every contact"
+    );
     assert!(changes >= 10, "only {changes} contact changes");
     assert!(seen.contains(&Pair::EdgeSide) && seen.contains(&Pair::RimWall));
-    assert!(sideways > 0.5, "the contacts stayed near the plane: |n_y| ≤ {sideways}");
+    assert!(
+        sideways > 0.5,
+        "the contacts stayed near the plane: |n_y| ≤ {sideways}"
+    );
     assert!(worst < 1e-10, "energy balance drifts by {worst} J");
 }

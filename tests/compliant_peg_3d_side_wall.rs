@@ -57,7 +57,10 @@ fn side_deepest(prm: &Peg3dParams, p: &Vector3<f64>, q: &UnitQuaternion<f64>) ->
         let (d_lo, d_hi) = (depth(lo), depth(hi));
         for j in 1..32 {
             let d = depth(lo + (hi - lo) * j as f64 / 32.0);
-            assert!(d <= d_lo.max(d_hi) + 1e-15, "interior of a generator deeper than its ends");
+            assert!(
+                d <= d_lo.max(d_hi) + 1e-15,
+                "interior of a generator deeper than its ends"
+            );
         }
         if d_lo > best.0 {
             best = (d_lo, lo == t_bottom);
@@ -80,7 +83,11 @@ fn axis_is_the_rotated_body_axis() {
         );
         let x = SVector::<f64, 7>::from_column_slice(&[0.0, 0.0, 0.0, q.w, q.i, q.j, q.k]);
         let a = axis_of(&x);
-        assert!((a - q * Vector3::z()).norm() < 1e-15, "axis {a} vs {}", q * Vector3::z());
+        assert!(
+            (a - q * Vector3::z()).norm() < 1e-15,
+            "axis {a} vs {}",
+            q * Vector3::z()
+        );
     }
 }
 
@@ -114,9 +121,16 @@ fn side_pressed_on_the_wall_is_carried_by_an_accepted_contact_at_the_deeper_end(
         }
         let p = centre + dir * e;
         let (deep, at_bottom) = side_deepest(&prm, &p, &q);
-        assert!((deep - target).abs() < 1e-8, "shift did not converge: {deep}");
+        assert!(
+            (deep - target).abs() < 1e-8,
+            "shift did not converge: {deep}"
+        );
         let y = pose_state(p, q, Vector3::zeros(), Vector3::zeros());
-        let want = if at_bottom { Pair::RimWall } else { Pair::EdgeSide };
+        let want = if at_bottom {
+            Pair::RimWall
+        } else {
+            Pair::EdgeSide
+        };
         let carried = sys
             .contacts(&y)
             .iter()
@@ -137,6 +151,8 @@ fn side_pressed_on_the_wall_is_carried_by_an_accepted_contact_at_the_deeper_end(
             top += 1;
         }
     }
-    eprintln!("side on the wall: {bottom} deepest at the bottom end, {top} at the top; worst {worst:.2e} m");
+    eprintln!(
+        "side on the wall: {bottom} deepest at the bottom end, {top} at the top; worst {worst:.2e} m"
+    );
     assert!(bottom >= 10 && top >= 10, "bottom {bottom}, top {top}");
 }
