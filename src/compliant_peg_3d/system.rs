@@ -33,8 +33,9 @@ use crate::system::OdeSystem;
 use nalgebra::{SMatrix, SVector, UnitQuaternion, Vector3};
 use std::cell::RefCell;
 
-/// The peg's axis `a = R(q) e_z = (2(ik + wj), 2(jk − wi), 1 − 2(i² + j²))`
-/// of a pose `(p, q)`, `q = w + i·i + j·j + k·k` a unit quaternion.
+/// The peg's axis `a = R(q) e_z` of a pose `(p, q)`, `q = (w, i, j, k)`:
+/// `a = (2(ik + wj), 2(jk − wi), 1 − 2(i² + j²))`, the third column of the
+/// rotation matrix the generated pair functions use.
 pub fn axis_of(x: &SVector<f64, 7>) -> Vector3<f64> {
     let (w, i, j, k) = (x[3], x[4], x[5], x[6]);
     Vector3::new(
