@@ -44,7 +44,7 @@ use output::write_outputs;
 
 use crate::compliant_peg::{
     CompliantParams, CompliantSpec, CompliantSystem, ContactSet, ElasticSystem, FrictionLaw, Load,
-    PegHoleGeometry, PegState,
+    PegHoleGeometry, PegState, Sample,
 };
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::hertz::{HertzError, Material};
@@ -53,6 +53,8 @@ use crate::scene::integrator::DefaultMethod;
 use crate::scene::simulate::{integrate, integration_summary};
 use crate::scene::validate::Checker;
 use crate::scene::{Document, IntegratorSpec, Kind, RunContext, RunSummary, Scene};
+use crate::system::OdeSystem;
+use nalgebra::SVector;
 
 /// Registry entry.
 pub const KIND: Kind = Kind {
@@ -405,39 +407,51 @@ impl Scene for Ready {
             params.spec.com_height,
             self.scene.insert_compliant.target_depth,
         );
-        let mut out = RunSummary::default();
+        // Terminal event: the bottom centre reaches the target depth
+        // (state components z and theta come first in both laws' states).
+        fn inserted<'a, const N: usize>(lc: f64, target: f64) -> Event<'a, N> {
+            Event::new(move |_t, y: &SVector<f64, N>| y[1] + lc * y[2].cos() - target)
+                .direction(Direction::Rising)
+                .terminal()
+        }
         match params.spec.friction_law {
             FrictionLaw::Regularized => {
                 let sys = CompliantSystem::new(&params, &load);
-                let inserted = Event::new(move |_t, y| y[1] + lc * y[2].cos() - target)
-                    .direction(Direction::Rising)
-                    .terminal();
-                let sol = integrate(
-                    &sys,
-                    initial.to_vector(),
-                    &self.integrator,
-                    vec![inserted],
-                    &mut ctx.progress,
-                )?;
-                out.integration = Some(integration_summary(&self.integrator, &sol, &["inserted"]));
-                write_outputs(ctx, |y| sys.sample(y), &sol, &mut out)?;
+                self.run_system(ctx, &sys, initial.to_vector(), inserted(lc, target), |y| {
+                    sys.sample(y)
+                })
             }
             FrictionLaw::Elastic => {
                 let sys = ElasticSystem::new(&params, &load);
-                let inserted = Event::new(move |_t, y| y[1] + lc * y[2].cos() - target)
-                    .direction(Direction::Rising)
-                    .terminal();
-                let sol = integrate(
+                self.run_system(
+                    ctx,
                     &sys,
                     initial.to_vector_elastic(),
-                    &self.integrator,
-                    vec![inserted],
-                    &mut ctx.progress,
-                )?;
-                out.integration = Some(integration_summary(&self.integrator, &sol, &["inserted"]));
-                write_outputs(ctx, |y| sys.sample(y), &sol, &mut out)?;
+                    inserted(lc, target),
+                    |y| sys.sample(y),
+                )
             }
         }
+    }
+}
+
+impl Ready {
+    /// Integrates `sys` from `y0` until `inserted` fires or the end time,
+    /// and writes the outputs of `sample` at every output time.
+    fn run_system<const N: usize>(
+        &self,
+        ctx: &mut RunContext,
+        sys: &impl OdeSystem<N>,
+        y0: SVector<f64, N>,
+        inserted: Event<N>,
+        sample: impl Fn(&SVector<f64, N>) -> Sample,
+    ) -> Result<RunSummary, RunError> {
+        let sol = integrate(sys, y0, &self.integrator, vec![inserted], &mut ctx.progress)?;
+        let mut out = RunSummary {
+            integration: Some(integration_summary(&self.integrator, &sol, &["inserted"])),
+            ..RunSummary::default()
+        };
+        write_outputs(ctx, sample, &sol, &mut out)?;
         Ok(out)
     }
 }
