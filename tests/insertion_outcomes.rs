@@ -160,6 +160,13 @@ fn each_scene_kind_is_refused_on_a_bad_field_naming_it() {
             "nan",
             "peg.friction",
         ),
+        // A fuzzed case: a 1e193 m peg made the lean search bisect forever.
+        (
+            include_str!("../scenes/drop_3d.toml"),
+            "length",
+            "3.6579432895081554e193",
+            "peg.length",
+        ),
         (
             include_str!("../scenes/rotation_assist.toml"),
             "yield_pressure",

@@ -393,7 +393,11 @@ pub fn lean_pose(
     } else if !touches(hi) {
         return Err(LeanError::NoContact(hi));
     }
-    while hi - lo > 1e-10 {
+    // Bisection to 0.1 nm, at most 200 halvings (a peg of any size).
+    for _ in 0..200 {
+        if hi - lo <= 1e-10 {
+            break;
+        }
         let mid = 0.5 * (lo + hi);
         if touches(mid) {
             hi = mid;

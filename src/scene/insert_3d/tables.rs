@@ -73,13 +73,15 @@ impl PegTable {
     /// parameters.
     pub fn build(&self, t: &str, c: &mut Checker) -> Peg3dParams {
         let f = |k: &str| format!("{t}.{k}");
-        let d = c.positive(&f("hole_diameter"), self.hole_diameter);
+        // Sizes from a micrometre to a kilometre: the contact search's
+        // tolerances and the energies stay far inside f64.
+        let d = c.in_range(&f("hole_diameter"), self.hole_diameter, 1e-6, 1e3);
         let cr = c.in_range(&f("clearance_ratio"), self.clearance_ratio, 1e-6, 0.2);
-        let len = c.positive(&f("length"), self.length);
+        let len = c.in_range(&f("length"), self.length, 1e-6, 1e3);
         let r = 0.5 * d * (1.0 - cr);
         c.in_range(&f("rim_fillet"), self.rim_fillet, 1e-7, 0.5 * r);
         c.in_range(&f("mouth_fillet"), self.mouth_fillet, 1e-7, 0.25 * d);
-        c.positive(&f("bore_depth"), self.bore_depth);
+        c.in_range(&f("bore_depth"), self.bore_depth, 1e-6, 1e3);
         c.in_range(&f("density"), self.density, 1.0, 1e5);
         c.in_range(&f("gravity"), self.gravity, 0.0, 1e3);
         c.in_range(&f("friction"), self.friction, 0.0, 2.0);
