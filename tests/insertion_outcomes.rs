@@ -297,7 +297,10 @@ fn from_above_the_mouth_two_point_contact_starts_at_the_analytic_depth() {
     // about 1 mm: both points on the rim, not two-point contact) and meets
     // the mouth edge with its side near the analytic two-point depth
     // rho_h + rho_p + (D - d)/theta0 = 5.10 mm. Stopped at 5.5 mm.
-    let text = variant_from(&[("seat_depth", "0.0055"), ("output_interval", "2e-3")], &[]);
+    let text = variant_from(
+        &[("seat_depth", "0.0055"), ("output_interval", "2e-3")],
+        &[],
+    );
     assert!(text.contains("start_height = 1e-3 "));
     let s = run_scene(&text, "rcc_above");
     let metric = |name: &str| {

@@ -37,8 +37,7 @@ fn ratio(prm: &Peg3dParams, s: &super::output::Samples) -> Vec<(f64, [f64; 2], f
     let mut out = Vec::new();
     for (t, y, smp) in &s.rows {
         let Some(w) = &smp.wrist else { continue };
-        if !two_point(smp.forces.iter().map(|f| f.contact.pair)) || smp.depth <= prm.mouth_fillet
-        {
+        if !two_point(smp.forces.iter().map(|f| f.contact.pair)) || smp.depth <= prm.mouth_fillet {
             continue;
         }
         let m = motion(&peg_state(y));
