@@ -11,12 +11,20 @@ use pegdyn::scene::insert_3d::rcc::{RccScene, run_one};
 use pegdyn::scene::{Progress, RunContext};
 
 /// The shipped `insert_rcc` scene's text with `(key, value)` lines
-/// replaced (the key at the start of a line).
+/// replaced (the key at the start of a line). The tip starts 2 mm in the
+/// bore (`start_height = -2e-3`) unless `changes` says otherwise: the
+/// cases below assume that start.
 fn variant(changes: &[(&str, &str)]) -> String {
+    variant_from(changes, &[("start_height", "-2e-3")])
+}
+
+/// The shipped `insert_rcc` scene's text with `changes`, then `defaults`
+/// for the keys `changes` leaves alone, replaced.
+fn variant_from(changes: &[(&str, &str)], defaults: &[(&str, &str)]) -> String {
     let base = include_str!("../scenes/insert_rcc.toml");
     base.lines()
         .map(|l| {
-            for (k, v) in changes {
+            for (k, v) in changes.iter().chain(defaults) {
                 if l.starts_with(&format!("{k} ")) || l.starts_with(&format!("{k}=")) {
                     return format!("{k} = {v}");
                 }
@@ -280,4 +288,38 @@ fn a_force_controlled_descent_seats_the_peg() {
         "{fz} vs {}",
         -5.0 - cz * vz
     );
+}
+
+#[test]
+fn from_above_the_mouth_two_point_contact_starts_at_the_analytic_depth() {
+    // The shipped scene starts 1 mm above the mouth: the rim lands on the
+    // rounded chamfer, slides off it onto the wall (rim_edge + rim_wall at
+    // about 1 mm: both points on the rim, not two-point contact) and meets
+    // the mouth edge with its side near the analytic two-point depth
+    // rho_h + rho_p + (D - d)/theta0 = 5.10 mm. Stopped at 5.5 mm.
+    let text = variant_from(
+        &[("seat_depth", "0.0055"), ("output_interval", "2e-3")],
+        &[],
+    );
+    assert!(text.contains("start_height = 1e-3 "));
+    let s = run_scene(&text, "rcc_above");
+    let metric = |name: &str| {
+        s.metrics
+            .iter()
+            .find(|m| m.name.starts_with(name))
+            .unwrap_or_else(|| panic!("{name}: {:?}", s.metrics))
+            .value
+    };
+    assert_eq!(metric("outcome"), 0.0, "{:?}", s.metrics);
+    let analytic = metric("two-point depth");
+    assert!((analytic - 5.10e-3).abs() < 0.01e-3, "{analytic}");
+    let simulated = metric("simulated two-point contact from depth");
+    assert!(
+        (simulated - analytic).abs() < 0.2e-3,
+        "{simulated} vs {analytic}"
+    );
+    // The rim did touch the chamfer first, and the contact list says so.
+    let events = std::fs::read_to_string(&s.outputs[1]).unwrap();
+    assert!(events.contains("rim_edge 0 -> 1"), "{events}");
+    assert!(events.contains("edge_side 0 -> 1"), "{events}");
 }

@@ -16,6 +16,8 @@ use pegdyn::scene::insert_3d::rcc::{RccScene, run_one};
 /// the static ones over the two-point samples, and their number.
 fn deviation(speed: f64) -> (f64, usize) {
     let text = include_str!("../scenes/insert_rcc.toml")
+        // The cases assume the tip starting 2 mm in the bore.
+        .replace("start_height = 1e-3 ", "start_height = -2e-3 ")
         .replace("speed = 0.01 ", &format!("speed = {speed} "))
         .replace("t_end = 1.2 ", "t_end = 10.0 ")
         // Friction's regularization scale well below both speeds, so that
@@ -86,6 +88,8 @@ fn one_point_contact_deflects_the_wrist_by_the_error_less_the_clearance() {
     // wrist (compliance centre at the tip, robot at lateral error e) is
     // deflected by d_x = R − x_reach + δ − e, δ = (Q/k)^(2/3).
     let text = include_str!("../scenes/insert_rcc.toml")
+        // The cases assume the tip starting 2 mm in the bore.
+        .replace("start_height = 1e-3 ", "start_height = -2e-3 ")
         .replace("seat_depth = 0.008 ", "seat_depth = 0.0045 ");
     let mut doc: toml::Table = toml::from_str(&text).unwrap();
     doc.remove("kind");

@@ -130,6 +130,33 @@ pub fn counts(contacts: &[ContactPoint]) -> Vec<usize> {
         .collect()
 }
 
+/// Whether the pairs in contact make two-point contact in the jamming
+/// sense (Whitney): the mouth edge on the peg's side (`edge_side`) together
+/// with the rim on the bore wall (`rim_wall`). The rim on the rounded mouth
+/// and on the wall at once (`rim_edge + rim_wall`, the rim sliding off the
+/// chamfer into the bore) is not: both points lie on the rim, the peg is
+/// not held between the mouth and the wall.
+pub fn two_point(pairs: impl IntoIterator<Item = Pair>) -> bool {
+    let (mut edge, mut wall) = (false, false);
+    for p in pairs {
+        edge |= p == Pair::EdgeSide;
+        wall |= p == Pair::RimWall;
+    }
+    edge && wall
+}
+
+/// [`two_point`] of a state given as point counts per pair (order of
+/// [`Pair::ALL`]).
+pub fn two_point_counts(counts: &[usize]) -> bool {
+    two_point(
+        Pair::ALL
+            .iter()
+            .zip(counts)
+            .filter(|(_, n)| **n > 0)
+            .map(|(p, _)| *p),
+    )
+}
+
 /// A contact state in words: `none`, or the pairs with their point
 /// counts, e.g. `edge_side x2 + rim_wall` (a three-point lean on the
 /// mouth).

@@ -23,18 +23,21 @@ use nalgebra::Vector3;
 use super::output::Samples;
 use crate::compliant_peg_3d::Peg3dParams;
 use crate::compliant_peg_3d::insertion::{motion, peg_state};
+use crate::compliant_peg_3d::outcome::two_point;
 use crate::jamming::PegHole;
 use crate::jamming::diagram::whitney_parallelogram;
 use crate::output::plot::{Panel, Series, Style};
 use crate::scene::Metric;
 
-/// The load ratio of each sample in two-point contact in the bore, pushed
-/// in (`F_Z > 0`), with its depth.
+/// The load ratio of each sample in two-point contact in the bore (the
+/// mouth edge on the side and the rim on the wall,
+/// [`two_point`](crate::compliant_peg_3d::outcome::two_point)), pushed in
+/// (`F_Z > 0`), with its depth.
 fn ratio(prm: &Peg3dParams, s: &super::output::Samples) -> Vec<(f64, [f64; 2], f64)> {
     let mut out = Vec::new();
     for (t, y, smp) in &s.rows {
         let Some(w) = &smp.wrist else { continue };
-        if smp.forces.len() < 2 || smp.depth <= prm.mouth_fillet {
+        if !two_point(smp.forces.iter().map(|f| f.contact.pair)) || smp.depth <= prm.mouth_fillet {
             continue;
         }
         let m = motion(&peg_state(y));

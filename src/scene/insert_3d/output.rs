@@ -17,7 +17,7 @@ use nalgebra::{SVector, Vector3};
 
 use crate::compliant_peg_3d::Pair;
 use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, Sample, motion, peg_state};
-use crate::compliant_peg_3d::outcome::{Transition, counts, label};
+use crate::compliant_peg_3d::outcome::{Transition, counts, label, two_point_counts};
 use crate::error::RunError;
 use crate::integrate::Solution;
 use crate::output::csv::{CsvWriter, format_f64};
@@ -181,6 +181,10 @@ pub struct EventRow {
     pub what: String,
     /// The contact state after it.
     pub state: String,
+    /// Whether the state after it is two-point contact (mouth edge on the
+    /// side and rim on the wall,
+    /// [`two_point`](crate::compliant_peg_3d::outcome::two_point)).
+    pub two_point: bool,
 }
 
 /// The contact transitions of `sol` (events with index below
@@ -204,6 +208,7 @@ pub fn transitions(sys: &Insertion, sol: &Solution<N_STATE>, what: &[Transition]
                 y: e.x,
                 what: format!("{} {from} -> {to}", Pair::ALL[pair].name()),
                 state: label(&cur),
+                two_point: two_point_counts(&cur),
             }
         })
         .collect()

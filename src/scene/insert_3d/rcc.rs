@@ -357,7 +357,7 @@ impl Scene for Ready {
         out.metrics.push(Metric::new("end tilt", tilt, "rad"));
         out.metrics
             .push(Metric::new("contact transitions", rows.len() as f64, ""));
-        if let Some(r) = rows.iter().find(|r| r.state.contains('+')) {
+        if let Some(r) = rows.iter().find(|r| r.two_point) {
             let (d2, ..) = crate::compliant_peg_3d::insertion::depth_tilt(
                 &self.built.params,
                 &crate::compliant_peg_3d::insertion::peg_state(&r.y),
