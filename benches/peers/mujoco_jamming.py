@@ -238,12 +238,14 @@ def model_xml(sw, option, geom, step):
 class Peer:
     """One compiled model and the runs of the sweep on it."""
 
-    def __init__(self, sw, setting, step, early_stop=True):
+    def __init__(self, sw, setting, step, early_stop=True, option=None, geom=None):
         s = SETTINGS[setting]
         self.sw = sw
         self.step = step if step else s["step"]
+        self.option = {**s["option"], **(option or {})}
+        self.geom = {**s["geom"], **(geom or {})}
         self.model = mujoco.MjModel.from_xml_string(
-            model_xml(sw, s["option"], s["geom"], self.step)
+            model_xml(sw, self.option, self.geom, self.step)
         )
         self.data = mujoco.MjData(self.model)
         self.early_stop = early_stop
@@ -394,6 +396,13 @@ def main():
     ap.add_argument("--step", type=float, help="time step, s (default: the setting's)")
     ap.add_argument("--no-early-stop", action="store_true", help="classify stuck runs only at window ends")
     ap.add_argument("--n", type=int, help="grid points per axis (default: the scene's)")
+    ap.add_argument("--option", action="append", default=[], metavar="KEY=VALUE",
+                    help="override an <option> attribute of the setting (repeatable), e.g. impratio=100")
+    ap.add_argument("--geom", action="append", default=[], metavar="KEY=VALUE",
+                    help="override a contact attribute of every geom (repeatable), e.g. solref=\"2e-4 1\"")
+    ap.add_argument("--ratio", metavar="FX,M",
+                    help="one run from the reference lean under F_x/F_z = FX, M/(r F_z) = M instead of the sweep")
+    ap.add_argument("--window", type=float, help="classification window, s (default: the scene's)")
     ap.add_argument("--out", help="write the classes to this CSV")
     args = ap.parse_args()
 
@@ -406,10 +415,37 @@ def main():
     sw = Sweep(scene["sweep"])
     if args.n:
         sw.n = args.n
-    peer = Peer(sw, args.setting, args.step, early_stop=not args.no_early_stop)
+    if args.window:
+        sw.window = args.window
+    def pairs(items, flag):
+        out = {}
+        for item in items:
+            key, sep, value = item.partition("=")
+            if not sep or not key:
+                sys.exit(f"{flag} {item!r}: expected KEY=VALUE")
+            out[key] = value
+        return out
+
+    peer = Peer(sw, args.setting, args.step, early_stop=not args.no_early_stop,
+                option=pairs(args.option, "--option"), geom=pairs(args.geom, "--geom"))
     err, got, want = peer.check_load((1.5, -2.0))
     if err > 1e-9 * sw.fz:
         sys.exit(f"actuator load {got} differs from the peg-frame load {want}")
+
+    if args.ratio:
+        try:
+            q = tuple(float(v) for v in args.ratio.split(","))
+        except ValueError:
+            q = ()
+        if len(q) != 2:
+            sys.exit(f"--ratio {args.ratio!r}: expected FX,M (two numbers)")
+        w0, c0 = time.perf_counter(), time.process_time()
+        cls, t = peer.run(q)
+        wall, cpu = time.perf_counter() - w0, time.process_time() - c0
+        print(f"MuJoCo {mujoco.__version__}, setting {args.setting}, step {peer.step:g} s, window {sw.window:g} s, "
+              f"early stop {'off' if args.no_early_stop else 'on'}; option {peer.option}, geom {peer.geom}")
+        print(f"ratio {q}: {cls} at t = {t:.6f} s; wall {wall / t:.4g} s, CPU {cpu / t:.4g} s per simulated s")
+        return
 
     ratios = sw.grid()
     n = sw.n
@@ -449,6 +485,7 @@ def main():
     h = peer.step
     print(f"MuJoCo {mujoco.__version__}, setting {args.setting}, step {h:g} s, "
           f"early stop {'off' if args.no_early_stop else 'on'}, {len(rows)} grid points")
+    print(f"option {peer.option}, geom {peer.geom}")
     print("classes:", ", ".join(f"{k} {v}" for k, v in sorted(counts.items())))
     if ref:
         a_p = sum(r["agrees_pegdyn"] for r in rows)
