@@ -35,10 +35,16 @@ dynamic sweep (the ``[sweep]`` table of the scene; ``src/jamming/dynamic.rs``,
   either lean sticks; the other lean under q is this lean under -q, so one
   run per grid point.
 
-Usage::
+Usage (after ``pegdyn run scenes/jamming.toml``, which writes
+``out/jamming_sweep.csv``)::
 
-    python3 benches/peers/mujoco_jamming.py --setting tuned \\
-        --pegdyn out/jamming_sweep.csv --out /tmp/mujoco_tuned.csv
+    python3 benches/peers/mujoco_jamming.py --setting defaults --pegdyn out/jamming_sweep.csv
+    python3 benches/peers/mujoco_jamming.py --setting tuned --pegdyn out/jamming_sweep.csv \\
+        --out out/mujoco_tuned.csv
+    python3 benches/peers/mujoco_jamming.py --setting tuned --step 4e-5 ...   # convergence check
+    python3 benches/peers/mujoco_jamming.py --setting defaults --option cone=elliptic \\
+        --geom "solref=4e-4 1" --step 1e-5 ...                            # one tuning trial
+    python3 benches/peers/mujoco_jamming.py --ratio 0,5.2 --window 0.3 --no-early-stop
 
 Prints the classes, their agreement with pegdyn's sweep CSV (stuck = jammed
 or wedged) and with the exact parallelogram (by the sign of the CSV's
@@ -280,7 +286,8 @@ class Peer:
         mujoco.mj_resetData(m, d)
         d.qpos[:] = self.sw.start()
         d.qvel[:] = 0.0
-        d.ctrl[:] = (lambda f1, f2, mc: (f2, f1, mc))(*self.sw.peg_frame_load(q))
+        f1, f2, mc = self.sw.peg_frame_load(q)
+        d.ctrl[:] = (f2, f1, mc)  # actuators: radial, axial, moment
 
     def forces(self):
         """Normal forces (N) of the loaded edge and wall: per pair the side
@@ -429,8 +436,15 @@ def main():
             out[key] = value
         return out
 
-    peer = Peer(sw, args.setting, args.step, early_stop=not args.no_early_stop,
-                option=pairs(args.option, "--option"), geom=pairs(args.geom, "--geom"))
+    if args.step is not None and not (math.isfinite(args.step) and 0 < args.step <= sw.window / 10):
+        sys.exit(f"--step {args.step}: must be > 0 and at most a tenth of the window ({sw.window / 10} s)")
+    if sw.n < 3:
+        sys.exit(f"--n {sw.n}: must be at least 3")
+    try:
+        peer = Peer(sw, args.setting, args.step, early_stop=not args.no_early_stop,
+                    option=pairs(args.option, "--option"), geom=pairs(args.geom, "--geom"))
+    except ValueError as e:  # MuJoCo's XML errors
+        sys.exit(f"MuJoCo refused the model: {e}")
     err, got, want = peer.check_load((1.5, -2.0))
     if err > 1e-9 * sw.fz:
         sys.exit(f"actuator load {got} differs from the peg-frame load {want}")
