@@ -185,15 +185,16 @@ def attrs(d):
     return " ".join(f'{k}="{v}"' for k, v in d.items())
 
 
-def model_xml(sw, option, geom, step):
+def model_xml(sw, option, geom, step, wall=0.02):
     """MJCF of the planar peg and the hole. World frame: x across the hole,
     z up (pegdyn's z points into the hole: the z slide's axis is -z), hole
     mouth at z = 0; the hinge axis is -y so that its angle is pegdyn's tilt
-    (axis towards the tip (sin theta, cos theta) in pegdyn's frame)."""
+    (axis towards the tip (sin theta, cos theta) in pegdyn's frame). `wall`
+    is the thickness (m) of the wall boxes beside the hole."""
     r, rp, rh, half_d, lc, mu = sw.r, PEG_FILLET, HOLE_FILLET, sw.big_d / 2, sw.lc, sw.mu
     ty = THICKNESS
     wy = 2 * ty  # hole geoms are longer out of plane than the peg
-    wall_hw, wall_hh = 0.01, 0.05
+    wall_hw, wall_hh = 0.5 * wall, 0.05
     # contype/conaffinity: walls (1), edges (2); peg side box touches edges
     # only, the peg's bottom fillets touch both.
     g = f'friction="{mu} 0 0" {attrs(geom)}'
@@ -244,14 +245,14 @@ def model_xml(sw, option, geom, step):
 class Peer:
     """One compiled model and the runs of the sweep on it."""
 
-    def __init__(self, sw, setting, step, early_stop=True, option=None, geom=None):
+    def __init__(self, sw, setting, step, early_stop=True, option=None, geom=None, wall=0.02):
         s = SETTINGS[setting]
         self.sw = sw
         self.step = step if step else s["step"]
         self.option = {**s["option"], **(option or {})}
         self.geom = {**s["geom"], **(geom or {})}
         self.model = mujoco.MjModel.from_xml_string(
-            model_xml(sw, self.option, self.geom, self.step)
+            model_xml(sw, self.option, self.geom, self.step, wall)
         )
         self.data = mujoco.MjData(self.model)
         self.early_stop = early_stop
@@ -410,6 +411,8 @@ def main():
                     help="override an <option> attribute of the setting (repeatable), e.g. impratio=100")
     ap.add_argument("--geom", action="append", default=[], metavar="KEY=VALUE",
                     help="override a contact attribute of every geom (repeatable), e.g. solref=\"2e-4 1\"")
+    ap.add_argument("--wall", type=float, default=0.02,
+                    help="thickness of the hole's wall boxes, m (default 0.02; matters only where contacts are soft)")
     ap.add_argument("--ratio", metavar="FX,M",
                     help="one run from the reference lean under F_x/F_z = FX, M/(r F_z) = M instead of the sweep")
     ap.add_argument("--window", type=float, help="classification window, s (default: the scene's)")
@@ -418,8 +421,13 @@ def main():
 
     if tomllib is None:
         sys.exit("mujoco_jamming.py needs Python >= 3.11 (tomllib) to read the scene")
-    with open(args.scene, "rb") as f:
-        scene = tomllib.load(f)
+    if not (math.isfinite(args.wall) and args.wall > 0):
+        sys.exit(f"--wall {args.wall}: must be > 0")
+    try:
+        with open(args.scene, "rb") as f:
+            scene = tomllib.load(f)
+    except (OSError, tomllib.TOMLDecodeError) as e:
+        sys.exit(f"--scene {args.scene}: {e}")
     if "sweep" not in scene:
         sys.exit(f"{args.scene}: no [sweep] table")
     sw = Sweep(scene["sweep"])
@@ -442,7 +450,7 @@ def main():
         sys.exit(f"--n {sw.n}: must be at least 3")
     try:
         peer = Peer(sw, args.setting, args.step, early_stop=not args.no_early_stop,
-                    option=pairs(args.option, "--option"), geom=pairs(args.geom, "--geom"))
+                    option=pairs(args.option, "--option"), geom=pairs(args.geom, "--geom"), wall=args.wall)
     except ValueError as e:  # MuJoCo's XML errors
         sys.exit(f"MuJoCo refused the model: {e}")
     err, got, want = peer.check_load((1.5, -2.0))
