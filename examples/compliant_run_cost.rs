@@ -68,6 +68,8 @@ fn main() {
         advance: 0.001,
         window: 0.05,
         integrator: Method::Rodas4,
+        rtol: 1e-6,
+        atol: 1e-10,
         early_stop: false,
     })
     .expect("valid sweep");

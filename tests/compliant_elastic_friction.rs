@@ -223,6 +223,8 @@ fn elastic_sweep_classes_match_the_regularized_ones_away_from_the_boundary() {
         advance: 0.001,
         window: 0.05,
         integrator: Method::Rodas4,
+        rtol: 1e-6,
+        atol: 1e-10,
         early_stop: true,
     })
     .unwrap();

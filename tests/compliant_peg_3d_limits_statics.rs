@@ -67,6 +67,8 @@ fn setup() -> SweepSetup {
         advance: 1e-3,
         window: 0.05,
         integrator: Method::Dopri5,
+        rtol: 1e-6,
+        atol: 1e-10,
         early_stop: false,
     })
     .unwrap()

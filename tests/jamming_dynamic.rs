@@ -22,6 +22,8 @@ fn setup() -> SweepSetup {
         advance: 0.001,
         window: 0.05,
         integrator: Method::Rodas4,
+        rtol: 1e-6,
+        atol: 1e-10,
         early_stop: true,
     })
     .unwrap()

@@ -265,6 +265,8 @@ fn jammed_setup(law: FrictionLaw) -> (SweepSetup, Load) {
         advance: 0.001,
         window: 0.05,
         integrator: Method::Rodas4,
+        rtol: 1e-6,
+        atol: 1e-10,
         early_stop: false,
     })
     .and_then(|s| s.with_friction_law(law))

@@ -44,6 +44,10 @@ pub struct SweepSpec {
     pub window: f64,
     /// The integrator of every run.
     pub integrator: Method,
+    /// Relative tolerance of every run's integrator.
+    pub rtol: f64,
+    /// Absolute tolerance of every run's integrator (m, rad, m/s, rad/s).
+    pub atol: f64,
     /// Classify a stuck run as soon as it has settled
     /// ([`crate::compliant_peg::Settle::for_window`]) instead of at the end of
     /// its window.
@@ -130,6 +134,8 @@ impl SweepSetup {
             t_max: self.spec.t_max,
             window: self.spec.window,
             integrator: self.spec.integrator,
+            rtol: self.spec.rtol,
+            atol: self.spec.atol,
             settle: self
                 .spec
                 .early_stop

@@ -182,6 +182,23 @@ pub struct IntegratorSpec {
 /// u = 2^-53 ≈ 1.1e-16, below which no step can meet the error test.
 pub const MIN_RTOL: f64 = 1e-15;
 
+/// Checks an adaptive method's tolerances `<table>.rtol` in
+/// `[MIN_RTOL, 1)` and `<table>.atol > 0`, pushing each violation to `c`.
+pub(crate) fn check_tolerances(c: &mut Checker, table: &str, rtol: f64, atol: f64) {
+    let f = |k: &str| format!("{table}.{k}");
+    let rtol = c.positive(&f("rtol"), rtol);
+    if rtol >= 1.0 {
+        c.push(SceneError::invalid(f("rtol"), rtol, "must be less than 1"));
+    } else if rtol > 0.0 && rtol < MIN_RTOL {
+        c.push(SceneError::invalid(
+            f("rtol"),
+            rtol,
+            "must be at least 1e-15: a relative error below f64's rounding unit (1.1e-16) cannot be met, and the step control shrinks the step without end",
+        ));
+    }
+    c.positive(&f("atol"), atol);
+}
+
 fn default_rtol() -> f64 {
     1e-8
 }
@@ -213,17 +230,7 @@ impl IntegratorSpec {
         let t_end = c.greater_than(&f("t_end"), self.t_end, &f("t0"), t0);
         let span = t_end - t0;
         if self.method.is_adaptive() {
-            let rtol = c.positive(&f("rtol"), self.rtol);
-            if rtol >= 1.0 {
-                c.push(SceneError::invalid(f("rtol"), rtol, "must be less than 1"));
-            } else if rtol > 0.0 && rtol < MIN_RTOL {
-                c.push(SceneError::invalid(
-                    f("rtol"),
-                    rtol,
-                    "must be at least 1e-15: a relative error below f64's rounding unit (1.1e-16) cannot be met, and the step control shrinks the step without end",
-                ));
-            }
-            c.positive(&f("atol"), self.atol);
+            check_tolerances(&mut c, table, self.rtol, self.atol);
         }
         match (self.method, self.h) {
             (Method::Named(MethodKind::Rk4), None) => c.push(SceneError::Missing { field: f("h") }),

@@ -16,6 +16,8 @@
 //! advance_m = 0.001      # advance of the bottom face that counts as inserted, m
 //! window_s = 0.05        # classification window: < 2 µm advance in it = stuck, s
 //! method = "rodas4"      # optional: "rodas4" (default) | "rodas3" | "dopri5"
+//! rtol = 1e-4            # optional (default 1e-4): relative tolerance of every run
+//! atol = 1e-8            # optional (default 1e-8): absolute tolerance (m, rad, m/s, rad/s)
 //! early_stop = true      # optional (default true): classify a stuck run once
 //!                        # it has settled (compliant_peg::Settle), not at its window's end
 //! friction_law = "regularized"  # optional: "regularized" (default) | "elastic"
@@ -83,6 +85,13 @@ pub struct SweepParams {
     /// `dopri5`).
     #[serde(default, deserialize_with = "sweep_method")]
     pub method: Option<MethodKind>,
+    /// Relative tolerance of every run (default 1e-4: the shipped sweep's
+    /// classes are the same at 1e-3, 1e-4, 1e-5 and 1e-6).
+    #[serde(default = "default_rtol")]
+    pub rtol: f64,
+    /// Absolute tolerance of every run (default 1e-8; m, rad, m/s, rad/s).
+    #[serde(default = "default_atol")]
+    pub atol: f64,
     /// Early stop of settled runs (default true).
     #[serde(default = "yes")]
     pub early_stop: bool,
@@ -100,6 +109,14 @@ pub enum SweepFrictionLaw {
     Regularized,
     /// Hertz–Mindlin tangential compliance capped by Coulomb.
     Elastic,
+}
+
+fn default_rtol() -> f64 {
+    1e-4
+}
+
+fn default_atol() -> f64 {
+    1e-8
 }
 
 fn yes() -> bool {
@@ -165,6 +182,7 @@ impl SweepParams {
         if self.n < 3 {
             c.push(SceneError::invalid("sweep.n", self.n, "must be at least 3"));
         }
+        crate::scene::integrator::check_tolerances(&mut c, "sweep", self.rtol, self.atol);
         let method = self.method();
         let integrator = c.check(
             method.with_step(None).ok_or_else(|| {
@@ -188,6 +206,8 @@ impl SweepParams {
             advance: self.advance_m,
             window: self.window_s,
             integrator,
+            rtol: self.rtol,
+            atol: self.atol,
             early_stop: self.early_stop,
         };
         let law = match self.friction_law {
