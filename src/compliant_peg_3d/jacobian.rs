@@ -23,9 +23,13 @@
 //! `k` of each contact is held at its value (exact for
 //! [`super::HertzMode::Fixed`]; with [`super::HertzMode::Curvature`] the
 //! small variation of `k` with the pose is left out of the Jacobian, as it
-//! is of the force).
+//! is of the force). The ring of the peg's bottom on a flat
+//! ([`super::face`]) is evaluated in dual numbers as a whole (its closed
+//! form and its hand-over weight); the weight of the plane pairs' point
+//! contacts and the hand-over moment are held at their values.
 
 use super::dual::{Dual, N};
+use super::face;
 use super::search::Pair;
 use super::system::{ContactForce, Peg3d};
 use crate::generated::compliant_peg_3d as generated;
@@ -154,9 +158,24 @@ pub fn wrench(
     let mut w = [zero; 7];
     for f in forces {
         let c = &f.contact;
-        let (gap, n, pt) = at_stationary(c.pair, &x, c.angle, &p);
-        let d = -gap;
-        let qe = Dual::constant(f.stiffness) * d * d.sqrt();
+        let (qe, n, pt) = if c.ring {
+            // The distributed ring of the peg's bottom on a flat, weighted
+            // by 1 − s(u) of the hand-over ([`super::face`]).
+            let Some(z0) = face::plane(c.pair, prm) else {
+                continue;
+            };
+            let xa: [Dual; 7] = x.into();
+            let Some(r) = face::ring(prm, z0, f.stiffness, &xa) else {
+                continue;
+            };
+            let (s, _) = face::blend(r.u);
+            let cop = face::centre_of_pressure(&xa, &r, z0);
+            ((one - s) * r.force, [zero, zero, one], cop)
+        } else {
+            let (gap, n, pt) = at_stationary(c.pair, &x, c.angle, &p);
+            let d = -gap;
+            (Dual::constant(f.stiffness) * d * d.sqrt(), n, pt)
+        };
         let arm = sub(&pt, &centre);
         let vc = add(&v, &cross(&om, &arm));
         let vn = dot(&n, &vc);
@@ -168,7 +187,7 @@ pub fn wrench(
         let torque = cross(&arm, &force);
         for m in 0..3 {
             w[m] = w[m] + force[m];
-            w[3 + m] = w[3 + m] + torque[m];
+            w[3 + m] = w[3 + m] + torque[m] + Dual::constant(f.torque[m]);
         }
         w[6] = w[6] + (q_n - qe) * ddot - dot(&ft, &vt);
         if let Some(s) = &c.saddle {

@@ -59,3 +59,22 @@ pub fn can_touch(pair: Pair, prm: &Peg3dParams, x: &SVector<f64, 7>) -> bool {
         }
     }
 }
+
+/// Whether the distributed ring of a plane pair ([`super::face`]) applies
+/// at pose `x`: the tilt below the hand-over window's end (checked first,
+/// so a tilted peg pays one product), the peg upright and its rim circle
+/// over the flat's existing part, and its lowest rim point within the
+/// flat's reach (`c_r,z − ϱ sin γ − ρ_p ≤ z₀`).
+pub fn ring_applies(pair: Pair, prm: &Peg3dParams, x: &SVector<f64, 7>) -> bool {
+    let Some(z0) = super::face::plane(pair, prm) else {
+        return false;
+    };
+    if !super::face::applies(pair, prm, x) {
+        return false;
+    }
+    let a = axis_of(x);
+    let rr = prm.peg_radius() - prm.rim_fillet;
+    let s = (1.0 - a.z * a.z).max(0.0).sqrt();
+    let low = x[2] + a.z * (prm.rim_fillet - 0.5 * prm.length) - rr * s;
+    low - prm.rim_fillet <= z0
+}
