@@ -419,3 +419,53 @@ fn exact_jacobian_matches_central_differences_on_the_ring() {
     }
     eprintln!("largest relative column difference {worst:.1e}");
 }
+
+#[test]
+fn hand_over_compares_the_ring_with_the_hertz_point() {
+    // In the hand-over window both laws act on the same deepest rim
+    // point: the ring's (unweighted) load against the point's Hertz load
+    // k δ^{3/2} at the same pose, 0.1 µm deep. With a fixed k the ring's
+    // k_ℓ is matched at the window's geometric-mean tilt; with the
+    // curvature stiffness k_ℓ = E*/π (the punch) and k from the rim's
+    // curvatures.
+    let z0 = -fig9().bore_depth;
+    for fixed in [true, false] {
+        let mut prm = fig9();
+        if fixed {
+            prm.hertz = HertzMode::Fixed(2e9);
+        }
+        let kl = face::line_stiffness(&prm);
+        let mut ratios = Vec::new();
+        for gamma in [1.01e-3, (BLEND_START * BLEND_END).sqrt(), 2.99e-3] {
+            let q = orientation(gamma, 0.2, 0.0);
+            let p = centre_at_depth(&prm, &q, 0.0, 0.0, z0, 1e-7);
+            let x = [p.x, p.y, p.z, q.w, q.i, q.j, q.k];
+            let ring = face::ring(&prm, z0, kl, &x).unwrap();
+            let sys = Peg3d::new(prm);
+            let y = pose_state(p, q, Vector3::zeros(), Vector3::zeros());
+            let (s, _) = face::blend(gamma.sin().powi(2));
+            let point = sys
+                .forces(&y)
+                .unwrap()
+                .iter()
+                .find(|f| !f.contact.ring)
+                .map(|f| f.elastic / s)
+                .unwrap();
+            ratios.push(ring.force / point);
+        }
+        eprintln!(
+            "{}: ring / point load at tilts 1.01, 1.73, 2.99 mrad: {:.3} {:.3} {:.3}",
+            if fixed { "fixed k" } else { "curvature k" },
+            ratios[0],
+            ratios[1],
+            ratios[2]
+        );
+        if fixed {
+            // The short-arc law: ratio √(γ_m/γ) to the arc's own accuracy.
+            assert!((ratios[1] - 1.0).abs() < 0.02, "{ratios:?}");
+            assert!(ratios[0] > ratios[1] && ratios[1] > ratios[2]);
+        } else {
+            assert!(ratios.iter().all(|r| (1.3..1.8).contains(r)), "{ratios:?}");
+        }
+    }
+}
