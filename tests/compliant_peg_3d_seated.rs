@@ -69,7 +69,13 @@ fn ring_potential_is_the_rim_integral_of_its_line_law() {
     let kl = face::line_stiffness(&prm);
     let rr = prm.peg_radius() - prm.rim_fillet;
     let z0 = -prm.bore_depth;
-    for (gamma, depth) in [(0.0, 1e-6), (2e-5, 1e-6), (2e-4, 1e-6), (2e-3, 1e-6), (1e-2, 2e-7)] {
+    for (gamma, depth) in [
+        (0.0, 1e-6),
+        (2e-5, 1e-6),
+        (2e-4, 1e-6),
+        (2e-3, 1e-6),
+        (1e-2, 2e-7),
+    ] {
         let q = orientation(gamma, 0.7, 0.3);
         let p = centre_at_depth(&prm, &q, 1e-5, -5e-6, z0, depth);
         let x = [p.x, p.y, p.z, q.w, q.i, q.j, q.k];
@@ -199,7 +205,10 @@ fn assert_at_rest_at_the_punch_deflection(prm: &Peg3dParams, y: &SVector<f64, 15
         (delta - expect).abs() / expect,
         tilt(y)
     );
-    assert!((delta - expect).abs() < 1e-6 * expect, "{delta} vs {expect}");
+    assert!(
+        (delta - expect).abs() < 1e-6 * expect,
+        "{delta} vs {expect}"
+    );
     assert!(speed < 1e-9, "still moving at {speed} m/s");
     assert!(tilt(y) < 1e-12, "tilted {}", tilt(y));
 }
@@ -304,7 +313,10 @@ fn tilted_peg_rocks_to_rest_flat_with_a_continuous_force() {
     );
     assert!(ring_only > 10 && both > 10 && point_only > 10);
     assert!(jump < 0.05 * peak, "jump {jump} N of {peak} N");
-    assert!(switches >= 2 && switch_jump < 1e-6 * peak, "{switch_jump} N of {peak} N");
+    assert!(
+        switches >= 2 && switch_jump < 1e-6 * peak,
+        "{switch_jump} N of {peak} N"
+    );
     assert_at_rest_at_the_punch_deflection(&prm, &end, 0.0);
 }
 

@@ -196,19 +196,15 @@ pub fn ring<T: Real>(prm: &Peg3dParams, z0: f64, kl: f64, x: &[T; 7]) -> Option<
         let rho = d0 / big_a;
         let phi = (-rho).acos();
         let s0 = (c(1.0) - rho * rho).max0().sqrt();
-        let ihat = big_a * big_a * (rho * rho * phi + c(2.0) * rho * s0 + c(0.5) * (phi - rho * s0));
+        let ihat =
+            big_a * big_a * (rho * rho * phi + c(2.0) * rho * s0 + c(0.5) * (phi - rho * s0));
         (ihat, c(2.0) * big_a * (rho * phi + s0), phi + rho * s0)
     };
     let force = c(kl * rr) * phat;
     let moment = force * c(h) + c(kl * rr * rr * rr) * g * a[2];
     // The deepest rim point: body direction of −e_z projected on the rim
     // plane, R(q)ᵀ(−e_z) = −(row 3 of R) = (2(wj − ik), −2(jk + wi), ·).
-    let (w, i, j, k) = (
-        x[3].to_f64(),
-        x[4].to_f64(),
-        x[5].to_f64(),
-        x[6].to_f64(),
-    );
+    let (w, i, j, k) = (x[3].to_f64(), x[4].to_f64(), x[5].to_f64(), x[6].to_f64());
     let angle = if uf > 0.0 {
         (-2.0 * (j * k + w * i))
             .atan2(2.0 * (w * j - i * k))

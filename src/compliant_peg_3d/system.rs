@@ -247,8 +247,7 @@ impl Peg3d {
             };
             let potential = 0.4 * s * k * d * d * d.sqrt() - col_potential;
             if blended {
-                v_point[Pair::ALL.iter().position(|p| *p == c.pair).unwrap_or(0)] +=
-                    potential / s;
+                v_point[Pair::ALL.iter().position(|p| *p == c.pair).unwrap_or(0)] += potential / s;
             }
             out.push(self.contact_force(c, s * k, s * k * d * d.sqrt(), vc, potential, col_force));
         }
