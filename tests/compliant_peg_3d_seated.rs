@@ -481,3 +481,41 @@ fn hand_over_compares_the_ring_with_the_hertz_point() {
         }
     }
 }
+
+#[test]
+fn ring_is_finite_and_positive_at_a_grazing_touch() {
+    // At 2 mrad the rim's height amplitude is 48 µm: depths from 1e-20 m
+    // up cross the short-arc series (ε < 1e-4) into the closed form; the
+    // load, its centre of pressure and the potential stay finite, positive
+    // and continuous (P/δ^{3/2} steps by less than 1e-4 between samples
+    // 10% apart in depth, the switch included).
+    let prm = fig9();
+    let kl = face::line_stiffness(&prm);
+    let z0 = -prm.bore_depth;
+    let q = orientation(2e-3, 0.5, 0.0);
+    let amp = (prm.peg_radius() - prm.rim_fillet) * 2e-3f64.sin();
+    let mut last: Option<(f64, f64)> = None;
+    let mut worst: f64 = 0.0;
+    for k in 0..400 {
+        let depth = amp * 10f64.powf(-16.0 + 0.04 * k as f64);
+        let p = centre_at_depth(&prm, &q, 0.0, 0.0, z0, depth);
+        let x = [p.x, p.y, p.z, q.w, q.i, q.j, q.k];
+        let r = face::ring(&prm, z0, kl, &x).unwrap();
+        let cop = face::centre_of_pressure(&x, &r, z0);
+        assert!(r.force > 0.0 && r.potential > 0.0, "depth {depth}: {r:?}");
+        assert!(cop.iter().all(|v| v.is_finite()), "depth {depth}: {cop:?}");
+        // P ∝ δ^{3/2} on a short arc: P/δ^{3/2} varies slowly.
+        // (The requested depth is rounded to the centre's last bits; the
+        // law uses the depth of the pose.)
+        let law = r.force / r.depth.powf(1.5);
+        if let Some((d, l)) = last {
+            if depth > 1e-10 * amp && depth < 1e-3 * amp {
+                worst = worst.max((law - l).abs() / l);
+            }
+            assert!(depth > d);
+        }
+        last = Some((depth, law));
+    }
+    eprintln!("largest step of P/δ^1.5 for ε in [1e-10, 1e-3]: {worst:.1e}");
+    assert!(worst < 1e-4, "{worst}");
+}

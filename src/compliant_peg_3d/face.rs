@@ -75,6 +75,11 @@ pub const BLEND_START: f64 = 1e-3;
 /// contact alone.
 pub const BLEND_END: f64 = 3e-3;
 
+/// Below this ratio `ε = δ_m/A` of the deepest rim penetration to the
+/// rim's height amplitude the ring's short-arc leading term replaces the
+/// closed form (which cancels there).
+const SHORT_ARC: f64 = 1e-4;
+
 /// The plane `z₀` (m) of a plane pair: 0 for [`Pair::RimTop`], `−h_b` for
 /// [`Pair::RimBottom`]; `None` for the other pairs.
 pub fn plane(pair: Pair, prm: &Peg3dParams) -> Option<f64> {
@@ -191,6 +196,21 @@ pub fn ring<T: Real>(prm: &Peg3dParams, z0: f64, kl: f64, x: &[T; 7]) -> Option<
             c(2.0 * PI) * d0,
             pi,
         )
+    } else if depth < SHORT_ARC * amp {
+        // A short arc, ε = δ_m/A ≪ 1: the closed form cancels to ε^{3/2}
+        // (ρ φ₀ + s₀ = (2ε/3)√(2ε) + …); its leading term instead,
+        // Î = (8√2/15) A^{−1/2} δ_m^{5/2} (relative error O(ε)), with its
+        // own exact derivatives P̂ = (4√2/3) A^{−1/2} δ_m^{3/2} and
+        // A G = ∂Î/∂A = (8√2/15) (5/2 ε^{3/2} − ½ ε^{5/2}) A.
+        let big_a = c(rr) * u.sqrt();
+        let dm = d0 + big_a;
+        let eps = dm / big_a;
+        let k0 = c(8.0 * 2f64.sqrt() / 15.0);
+        let root = eps.sqrt();
+        let ihat = k0 * big_a * big_a * eps * eps * root;
+        let phat = c(4.0 * 2f64.sqrt() / 3.0) * big_a * eps * root;
+        let g = k0 * (c(2.5) * eps * root - c(0.5) * eps * eps * root);
+        (ihat, phat, g)
     } else {
         let big_a = c(rr) * u.sqrt();
         let rho = d0 / big_a;
