@@ -50,7 +50,15 @@ pub fn can_touch(pair: Pair, prm: &Peg3dParams, x: &SVector<f64, 7>) -> bool {
         // And the distance from the mouth circle to the axis is at least
         // the distance of the circle's centre (0, 0, −ρ_h) from the axis
         // less R + ρ_h.
+        // A valid contact point lies at or above the mouth's tube circle
+        // (`z ≥ −ρ_h`: `n_z ≥ 0`) and on the peg's side within half a
+        // penetration (below ρ_h), so a peg whose highest point is below
+        // `−2ρ_h` (deep in the bore) cannot meet it either.
         Pair::EdgeSide => {
+            let peg_high = p.z + 0.5 * prm.length * a.z.abs() + prm.peg_radius() * s;
+            if peg_high < -2.0 * rho_h {
+                return false;
+            }
             let peg_low = p.z - 0.5 * prm.length * a.z.abs() - prm.peg_radius() * s;
             let o = Vector3::new(0.0, 0.0, -rho_h) - p;
             let to_axis = (o - a * o.dot(&a)).norm();
