@@ -17,8 +17,15 @@
 //! Ṡ   = (Q − Q_e) δ̇ − F_t·v_t ≥ 0          (damping and friction)
 //! ```
 //!
-//! With a fixed `k`, `T + m g z + Σ (2/5) k δ^{5/2} − W + S` is constant
-//! (the force `Q_e n` is `−∂V/∂x` at the minimizing angle). Further
+//! On a flat at small tilt the peg's bottom is the distributed ring of
+//! [`super::face`]: `Q_e` is its load `P` weighted by `1 − s`, applied
+//! along `e_z` at its centre of pressure, the plane pair's points are
+//! weighted by `s`, and the hand-over moment is added as a pure moment
+//! ([`ContactForce::torque`]).
+//!
+//! With a fixed `k`, `T + m g z + Σ V − W + S` is constant (each force is
+//! `−∂V/∂x`: a point's at its minimizing angle, the ring's in closed
+//! form). Further
 //! generalized forces (a wrist spring–damper, a prescribed frame) add to
 //! the same wrench.
 
