@@ -23,9 +23,14 @@
 //! `k` of each contact is held at its value (exact for
 //! [`super::HertzMode::Fixed`]; with [`super::HertzMode::Curvature`] the
 //! small variation of `k` with the pose is left out of the Jacobian, as it
-//! is of the force).
+//! is of the force). The ring of the peg's bottom on a flat
+//! ([`super::face`]) is evaluated in dual numbers as a whole: its closed
+//! form, the hand-over weight of the ring and of the plane pairs' points,
+//! and the hand-over moment.
 
 use super::dual::{Dual, N};
+use super::face;
+use super::prune;
 use super::search::Pair;
 use super::system::{ContactForce, Peg3d};
 use crate::generated::compliant_peg_3d as generated;
@@ -152,11 +157,49 @@ pub fn wrench(
     );
     let zero = Dual::constant(0.0);
     let mut w = [zero; 7];
+    // The hand-over weight s(u) of the plane pairs' points and, per pair,
+    // their unweighted potential (for the ring's hand-over moment).
+    let xs: [Dual; 7] = x.into();
+    let xf = x.map(|d| d.v);
+    let ax = face::axis(&xs);
+    let (s_w, _) = face::blend(ax[0] * ax[0] + ax[1] * ax[1]);
+    let mut v_point = [zero; Pair::ALL.len()];
+    let index = |pair: Pair| Pair::ALL.iter().position(|q| *q == pair).unwrap_or(0);
     for f in forces {
         let c = &f.contact;
-        let (gap, n, pt) = at_stationary(c.pair, &x, c.angle, &p);
-        let d = -gap;
-        let qe = Dual::constant(f.stiffness) * d * d.sqrt();
+        let mut extra = [zero; 3];
+        let (qe, n, pt) = if c.ring {
+            // The distributed ring of the peg's bottom on a flat, weighted
+            // by 1 − s(u) of the hand-over, and the hand-over moment
+            // 2 a_z s′(u) (V_point − V_ring) (a × e_z) ([`super::face`]).
+            let Some(z0) = face::plane(c.pair, prm) else {
+                continue;
+            };
+            let Some(r) = face::ring(prm, z0, f.stiffness, &xs) else {
+                continue;
+            };
+            let (s, ds) = face::blend(r.u);
+            let m = Dual::constant(2.0) * r.axis[2] * ds * (v_point[index(c.pair)] - r.potential);
+            extra = [m * r.axis[1], -(m * r.axis[0]), zero];
+            let cop = face::centre_of_pressure(&xs, &r, z0);
+            ((one - s) * r.force, [zero, zero, one], cop)
+        } else {
+            let (gap, n, pt) = at_stationary(c.pair, &x, c.angle, &p);
+            let d = -gap;
+            let blended = face::plane(c.pair, prm).is_some()
+                && prune::ring_applies(c.pair, prm, &xf)
+                && s_w.v < 1.0
+                && s_w.v > 0.0;
+            let k = if blended {
+                let k = f.stiffness / s_w.v;
+                v_point[index(c.pair)] =
+                    v_point[index(c.pair)] + Dual::constant(0.4 * k) * d * d * d.sqrt();
+                Dual::constant(k) * s_w
+            } else {
+                Dual::constant(f.stiffness)
+            };
+            (k * d * d.sqrt(), n, pt)
+        };
         let arm = sub(&pt, &centre);
         let vc = add(&v, &cross(&om, &arm));
         let vn = dot(&n, &vc);
@@ -168,7 +211,7 @@ pub fn wrench(
         let torque = cross(&arm, &force);
         for m in 0..3 {
             w[m] = w[m] + force[m];
-            w[3 + m] = w[3 + m] + torque[m];
+            w[3 + m] = w[3 + m] + torque[m] + extra[m];
         }
         w[6] = w[6] + (q_n - qe) * ddot - dot(&ft, &vt);
         if let Some(s) = &c.saddle {

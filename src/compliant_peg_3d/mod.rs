@@ -12,6 +12,9 @@
 //! - [`jacobian`]: the exact Jacobian, the generated partial derivatives
 //!   and the chain rule through the contact wrench, in [`dual`] numbers.
 //! - [`prune`]: cheap bounds that skip the pairs a pose cannot touch.
+//! - [`face`]: the peg's bottom on a flat at small tilt: the rim circle
+//!   as a distributed line contact (closed-form ring potential), handed
+//!   over to the rim's Hertz point contact as the tilt grows.
 //! - [`curvature`]: the principal curvatures of both surfaces at a contact
 //!   point, for the Hertz ellipse.
 //! - [`system`]: contact forces (Hertz, Hunt–Crossley damping, regularized
@@ -22,6 +25,7 @@
 
 pub mod curvature;
 pub mod dual;
+pub mod face;
 pub mod jacobian;
 pub mod merge;
 pub mod params;

@@ -50,7 +50,15 @@ pub fn can_touch(pair: Pair, prm: &Peg3dParams, x: &SVector<f64, 7>) -> bool {
         // And the distance from the mouth circle to the axis is at least
         // the distance of the circle's centre (0, 0, −ρ_h) from the axis
         // less R + ρ_h.
+        // A valid contact point lies at or above the mouth's tube circle
+        // (`z ≥ −ρ_h`: `n_z ≥ 0`) and on the peg's side within half a
+        // penetration (below ρ_h), so a peg whose highest point is below
+        // `−2ρ_h` (deep in the bore) cannot meet it either.
         Pair::EdgeSide => {
+            let peg_high = p.z + 0.5 * prm.length * a.z.abs() + prm.peg_radius() * s;
+            if peg_high < -2.0 * rho_h {
+                return false;
+            }
             let peg_low = p.z - 0.5 * prm.length * a.z.abs() - prm.peg_radius() * s;
             let o = Vector3::new(0.0, 0.0, -rho_h) - p;
             let to_axis = (o - a * o.dot(&a)).norm();
@@ -58,4 +66,23 @@ pub fn can_touch(pair: Pair, prm: &Peg3dParams, x: &SVector<f64, 7>) -> bool {
             peg_low <= rho_h && gap_low <= 0.0
         }
     }
+}
+
+/// Whether the distributed ring of a plane pair ([`super::face`]) applies
+/// at pose `x`: the tilt below the hand-over window's end (checked first,
+/// so a tilted peg pays one product), the peg upright and its rim circle
+/// over the flat's existing part, and its lowest rim point within the
+/// flat's reach (`c_r,z − ϱ sin γ − ρ_p ≤ z₀`).
+pub fn ring_applies(pair: Pair, prm: &Peg3dParams, x: &SVector<f64, 7>) -> bool {
+    let Some(z0) = super::face::plane(pair, prm) else {
+        return false;
+    };
+    if !super::face::applies(pair, prm, x) {
+        return false;
+    }
+    let a = axis_of(x);
+    let rr = prm.peg_radius() - prm.rim_fillet;
+    let s = (1.0 - a.z * a.z).max(0.0).sqrt();
+    let low = x[2] + a.z * (prm.rim_fillet - 0.5 * prm.length) - rr * s;
+    low - prm.rim_fillet <= z0
 }

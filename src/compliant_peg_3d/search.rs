@@ -132,6 +132,11 @@ pub struct ContactPoint {
     /// (in angle) when the overlap between them is connected: its overlap
     /// is subtracted once ([`super::merge`]); `None` otherwise.
     pub saddle: Option<Saddle>,
+    /// True for the distributed ring of the peg's bottom on a flat
+    /// ([`super::face`]): then `angle` is the body angle of the deepest rim
+    /// point, `penetration` its depth `δ₀ + A`, `gradient` the gap's there,
+    /// `normal` is `e_z` and `point` the centre of pressure on the flat.
+    pub ring: bool,
 }
 
 /// Number of scan samples per circle.
@@ -270,6 +275,7 @@ impl Search {
                     normal,
                     point,
                     saddle: None,
+                    ring: false,
                 });
             }
         }

@@ -17,12 +17,20 @@
 //! Ṡ   = (Q − Q_e) δ̇ − F_t·v_t ≥ 0          (damping and friction)
 //! ```
 //!
-//! With a fixed `k`, `T + m g z + Σ (2/5) k δ^{5/2} − W + S` is constant
-//! (the force `Q_e n` is `−∂V/∂x` at the minimizing angle). Further
+//! On a flat at small tilt the peg's bottom is the distributed ring of
+//! [`super::face`]: `Q_e` is its load `P` weighted by `1 − s`, applied
+//! along `e_z` at its centre of pressure, the plane pair's points are
+//! weighted by `s`, and the hand-over moment is added as a pure moment
+//! ([`ContactForce::torque`]).
+//!
+//! With a fixed `k`, `T + m g z + Σ V − W + S` is constant (each force is
+//! `−∂V/∂x`: a point's at its minimizing angle, the ring's in closed
+//! form). Further
 //! generalized forces (a wrist spring–damper, a prescribed frame) add to
 //! the same wrench.
 
 use super::curvature;
+use super::face;
 use super::jacobian;
 use super::params::{HertzMode, Peg3dParams};
 use super::prune;
@@ -80,6 +88,14 @@ pub struct ContactForce {
     /// Elastic force `k_c δ_c^{3/2}` (N) of the contact's subtracted col,
     /// applied as `−k_c δ_c^{3/2} n_c` at the col point; 0 without a col.
     pub col_force: f64,
+    /// Elastic part `Q_e` of the normal force (N), before damping: the
+    /// (weighted) `k δ^{3/2}` of a point, the weighted ring load `P` of
+    /// [`super::face`].
+    pub elastic: f64,
+    /// A pure moment (N·m, hole frame) added to the contact's wrench: the
+    /// hand-over moment of [`super::face::blend_moment`] on a ring; zero
+    /// otherwise.
+    pub torque: Vector3<f64>,
 }
 
 /// The compliant 3-D peg.
@@ -125,19 +141,52 @@ impl Peg3d {
         x
     }
 
-    /// Every contact point of the state, pair by pair.
+    /// Every contact point of the state, pair by pair: the point contacts
+    /// of each pair's search, then, for the block's top face and the bore
+    /// bottom at small tilt, the distributed ring of [`super::face`] (the
+    /// point search is skipped where the ring carries the flat alone).
     pub fn contacts(&self, y: &SVector<f64, 15>) -> Vec<ContactPoint> {
         let x = Self::pose(y);
         let mut out = Vec::new();
         let mut s = self.searches.borrow_mut();
         for (k, pair) in Pair::ALL.iter().enumerate() {
-            if prune::can_touch(*pair, &self.params, &x) {
+            let ring = prune::ring_applies(*pair, &self.params, &x);
+            let weight = if ring { self.point_weight(&x) } else { 1.0 };
+            if weight > 0.0 && prune::can_touch(*pair, &self.params, &x) {
                 s[k].find(*pair, &self.params, &x, &self.p, &mut out);
             } else {
                 s[k] = Search::default();
             }
+            if ring && weight < 1.0 {
+                out.extend(self.ring_contact(*pair, &x));
+            }
         }
         out
+    }
+
+    /// The hand-over weight `s` of the plane pairs' point contacts at pose
+    /// `x` (where their ring applies).
+    fn point_weight(&self, x: &SVector<f64, 7>) -> f64 {
+        let a = axis_of(x);
+        face::blend(a.x * a.x + a.y * a.y).0
+    }
+
+    /// The ring of a plane pair at pose `x`, as a contact point.
+    fn ring_contact(&self, pair: Pair, x: &SVector<f64, 7>) -> Option<ContactPoint> {
+        let z0 = face::plane(pair, &self.params)?;
+        let xs: [f64; 7] = (*x).into();
+        let r = face::ring(&self.params, z0, face::line_stiffness(&self.params), &xs)?;
+        let cop = face::centre_of_pressure(&xs, &r, z0);
+        Some(ContactPoint {
+            pair,
+            angle: r.angle,
+            penetration: r.depth,
+            gradient: pair.eval(x, r.angle, &self.p).3,
+            normal: Vector3::z(),
+            point: Vector3::new(cop[0], cop[1], cop[2]),
+            saddle: None,
+            ring: true,
+        })
     }
 
     /// The Hertz stiffness at a contact.
@@ -167,46 +216,101 @@ impl Peg3d {
         let v = Vector3::new(y[7], y[8], y[9]);
         let om = q * Vector3::new(y[10], y[11], y[12]);
         let prm = &self.params;
-        let mut out = Vec::new();
-        for c in self.contacts(y) {
+        let contacts = self.contacts(y);
+        let weight = self.point_weight(&x);
+        let mut out = Vec::with_capacity(contacts.len());
+        // Unweighted point potential of each plane pair, for the hand-over
+        // moment of its ring.
+        let mut v_point = [0.0; Pair::ALL.len()];
+        let mut rings = Vec::new();
+        for c in contacts {
+            if c.ring {
+                rings.push(c);
+                continue;
+            }
+            let blended = face::plane(c.pair, prm).is_some()
+                && prune::ring_applies(c.pair, prm, &x)
+                && weight < 1.0;
+            let s = if blended { weight } else { 1.0 };
             let k = self.stiffness(&c, &x)?;
             let d = c.penetration;
-            let qe = k * d * d.sqrt();
             let vc = v + om.cross(&(c.point - centre));
-            let vn = c.normal.dot(&vc);
-            let ddot = -vn;
             let (col_force, col_potential) = match &c.saddle {
-                Some(s) => {
+                Some(sd) => {
                     let at_col = ContactPoint {
-                        angle: s.angle,
-                        penetration: s.penetration,
-                        gradient: s.gradient,
-                        normal: s.normal,
-                        point: s.point,
+                        angle: sd.angle,
+                        penetration: sd.penetration,
+                        gradient: sd.gradient,
+                        normal: sd.normal,
+                        point: sd.point,
                         saddle: None,
                         ..c
                     };
-                    let kc = self.stiffness(&at_col, &x)?;
-                    let dc = s.penetration;
+                    let kc = s * self.stiffness(&at_col, &x)?;
+                    let dc = sd.penetration;
                     (kc * dc * dc.sqrt(), 0.4 * kc * dc * dc * dc.sqrt())
                 }
                 None => (0.0, 0.0),
             };
-            let qn = (qe * (1.0 + prm.damping * ddot)).max(0.0);
-            let vt = vc - c.normal * vn;
-            let ft = vt
-                * (-prm.friction * qn
-                    / (vt.norm_squared() + prm.slip_scale * prm.slip_scale).sqrt());
-            out.push(ContactForce {
-                contact: c,
-                normal_force: qn,
-                friction: ft,
-                stiffness: k,
-                potential: 0.4 * k * d * d * d.sqrt() - col_potential,
-                col_force,
-            });
+            let potential = 0.4 * s * k * d * d * d.sqrt() - col_potential;
+            if blended {
+                v_point[Pair::ALL.iter().position(|p| *p == c.pair).unwrap_or(0)] += potential / s;
+            }
+            out.push(self.contact_force(c, s * k, s * k * d * d.sqrt(), vc, potential, col_force));
+        }
+        for c in rings {
+            let Some(z0) = face::plane(c.pair, prm) else {
+                continue;
+            };
+            let xs: [f64; 7] = x.into();
+            let kl = face::line_stiffness(prm);
+            let Some(r) = face::ring(prm, z0, kl, &xs) else {
+                continue;
+            };
+            let vc = v + om.cross(&(c.point - centre));
+            let idx = Pair::ALL.iter().position(|p| *p == c.pair).unwrap_or(0);
+            let mut f = self.contact_force(
+                c,
+                kl,
+                (1.0 - weight) * r.force,
+                vc,
+                (1.0 - weight) * r.potential,
+                0.0,
+            );
+            f.torque = face::blend_moment(&r.axis, r.u, v_point[idx], r.potential);
+            out.push(f);
         }
         Ok(out)
+    }
+
+    /// A contact's forces from its elastic normal force `qe` (N):
+    /// Hunt–Crossley damping with the material point's velocity `vc` and
+    /// regularized Coulomb friction.
+    fn contact_force(
+        &self,
+        c: ContactPoint,
+        stiffness: f64,
+        qe: f64,
+        vc: Vector3<f64>,
+        potential: f64,
+        col_force: f64,
+    ) -> ContactForce {
+        let prm = &self.params;
+        let vn = c.normal.dot(&vc);
+        let qn = (qe * (1.0 - prm.damping * vn)).max(0.0);
+        let vt = vc - c.normal * vn;
+        let ft = vt
+            * (-prm.friction * qn / (vt.norm_squared() + prm.slip_scale * prm.slip_scale).sqrt());
+        ContactForce {
+            contact: c,
+            normal_force: qn,
+            friction: ft,
+            stiffness,
+            potential,
+            col_force,
+            elastic: qe,
+            torque: Vector3::zeros(),
+        }
     }
 
     /// The contact wrench `(F, T about the centre of mass, Ṡ)` of
@@ -225,12 +329,11 @@ impl Peg3d {
             let torque = arm.cross(&force);
             let vc = v + om.cross(&arm);
             let ddot = -c.normal.dot(&vc);
-            let d = c.penetration;
-            let qe = f.stiffness * d * d.sqrt();
+            let qe = f.elastic;
             let vt = vc - c.normal * c.normal.dot(&vc);
             for k in 0..3 {
                 w[k] += force[k];
-                w[3 + k] += torque[k];
+                w[3 + k] += torque[k] + f.torque[k];
             }
             if let Some(s) = &c.saddle {
                 // The subtracted col: −k_c δ_c^{3/2} n_c at the col point.
