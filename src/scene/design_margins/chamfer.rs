@@ -12,24 +12,49 @@
 //! e_t = e_c − L_c sin θ (cos ψ, sin ψ)                      (m)
 //! ```
 //!
-//! The rim's tube centres lie on a circle of radius `r − ρ_p` about the
-//! tip, in the plane normal to `a`; seen from above it is an ellipse with
-//! semi-axes `(r − ρ_p) cos θ` along the tilt and `r − ρ_p` across it, so
-//! its reach in the direction of `e_t` (angle `β` from the tilt's azimuth)
-//! is `(r − ρ_p) √(cos²θ cos²β + sin²β)`. The rim lands on the mouth's
-//! rounded edge (tube centres on radius `R + ρ_h`, `ρ_h` below the top
-//! face) in the vertical plane through both axes; the contact normal runs
-//! between the two tube centres and makes the angle `α` with the vertical,
-//! `sin α = δ / (ρ_h + ρ_p)`, `δ = R + ρ_h − (|e_t| + reach)`. Pushed down,
-//! the rim slides inwards only if the normal is steeper than the friction
-//! angle, `tan α > μ`, i.e.
+//! The rim is the torus swept by a sphere of radius `ρ_p` whose centre runs
+//! on the circle `C(φ) = t + ρ_p a + (r − ρ_p)(cos φ e₁ + sin φ e₂)` (`t` the
+//! tip, `e₁ = (cos θ cos ψ, cos θ sin ψ, −sin θ)`, `e₂ = (−sin ψ, cos ψ, 0)`);
+//! the mouth is the top face `z = 0` outside the radius `R + ρ_h` and,
+//! inside it, the round: points at `ρ_h` from the circle of radius `R + ρ_h`
+//! at `z = −ρ_h`. A sphere centred at `C` (radius `ρ_C = |C_xy|` from the
+//! hole's axis) touches, in the vertical plane through the axis and `C`,
 //!
 //! ```text
-//! |e_t| + reach < W_μ = R + ρ_h − (ρ_h + ρ_p) μ / √(1 + μ²)    (m)
+//! the top face   when C_z = ρ_p                                 (ρ_C ≥ R + ρ_h)
+//! the round      when C_z = −ρ_h + √((ρ_h + ρ_p)² − δ²),  δ = R + ρ_h − ρ_C
+//!                                                              (0 < δ < ρ_h + ρ_p)
 //! ```
 //!
-//! Without friction the bound is `W_0 = R + ρ_h`, i.e. the aligned, centred
-//! capture width `(R − r) + ρ_h + ρ_p`.
+//! and passes into the bore for `δ ≥ ρ_h + ρ_p`. The peg descends
+//! undeflected until the rim point with the smallest remaining drop touches
+//! first (a scan over `φ`, refined by golden section). On the round the
+//! contact normal makes the angle `α`, `sin α = δ/(ρ_h + ρ_p)`, with the
+//! vertical and points inwards; the robot pushes down and the wrist's
+//! lateral spring holds the peg back, so the rim slides in only if the
+//! contact force leans inwards against friction, `tan α > μ`:
+//!
+//! ```text
+//! accepted  ⇔  δ > (ρ_h + ρ_p) μ/√(1 + μ²)   at the first touch
+//! ```
+//!
+//! in the plane of the error. Off that plane, at the angle `ϑ` between the
+//! contact's radial direction and the error, the peg still moves along the
+//! error's line (the tilt's symmetry pairs the contacts at `±ϑ`): sliding
+//! horizontally by `u` it descends by `u t`, `t = tan α cos ϑ`, friction
+//! opposes that velocity, and the horizontal force along the line is
+//! inward when `t cos α √(1 + t²) > μ` (the same test at `ϑ = 0`). The
+//! margin is `(ρ_h + ρ_p)(sin α_e − μ/√(1 + μ²))` with
+//! `tan α_e = t cos α √(1 + t²)`, which is `δ − (ρ_h + ρ_p) μ/√(1 + μ²)` in
+//! the error's plane (m). On the top face (`δ ≤ 0`) the
+//! normal is vertical and nothing pushes the peg in. An aligned peg
+//! touches first at its farthest point, `ρ_C = |e_t| + r − ρ_p`, so it is
+//! accepted for `|e_t| < W_μ − (r − ρ_p)`,
+//! `W_μ = R + ρ_h − (ρ_h + ρ_p) μ/√(1 + μ²)`; without friction the bound is
+//! `W_0 = R + ρ_h`, i.e. the capture width `(R − r) + ρ_h + ρ_p`. A tilted
+//! peg raises one side of its rim by up to `(r − ρ_p) sin θ`: when the
+//! raised side faces the error, the first touch moves off the error's plane
+//! to lower rim points nearer the axis.
 
 /// The capture geometry: peg, hole, fillets, friction and where the
 /// compliance centre sits.
@@ -61,17 +86,42 @@ pub struct InitialError {
     pub azimuth: f64,
 }
 
+/// Where the rim first touches the mouth.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Touch {
+    /// On the round, at the rim angle `φ` (rad), contact angle `α` from the
+    /// vertical (rad).
+    Round {
+        /// Rim angle `φ` of the touching point (rad, 0 towards the tilt).
+        rim_angle: f64,
+        /// Contact angle `α` from the vertical (rad).
+        alpha: f64,
+        /// Cosine of the angle `ϑ` between the contact's radial direction
+        /// and the tip's error.
+        cos_azimuth: f64,
+    },
+    /// On the flat top face, at the rim angle `φ` (rad).
+    TopFace {
+        /// Rim angle `φ` (rad).
+        rim_angle: f64,
+    },
+    /// Nowhere: the whole rim passes inside the round into the bore.
+    None,
+}
+
 /// What the rule says about one initial error.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Verdict {
     /// The tip's lateral error `e_t` (m).
     pub tip: [f64; 2],
-    /// Largest horizontal distance of a rim tube centre from the hole's
-    /// axis, `|e_t| + reach` (m).
-    pub reach: f64,
-    /// `W_μ − reach` (m): positive when the chamfer accepts the error.
+    /// Where the rim first touches.
+    pub touch: Touch,
+    /// `(ρ_h + ρ_p)(sin α_e − μ/√(1 + μ²))` at the first touch (m; on the
+    /// top face `δ − (ρ_h + ρ_p) μ/√(1 + μ²)`; with no touch,
+    /// the smallest `δ` over the rim): positive when the chamfer accepts.
     pub margin: f64,
-    /// `W_0 − reach` (m): positive when a frictionless chamfer would.
+    /// `(ρ_h + ρ_p) sin α_e` at the first touch (m; `δ` on the top face):
+    /// positive when a frictionless chamfer would accept.
     pub frictionless_margin: f64,
 }
 
@@ -82,6 +132,9 @@ impl Verdict {
     }
 }
 
+/// Rim angles scanned for the first touch.
+const SCAN: usize = 720;
+
 impl Capture {
     /// `W_0 = R + ρ_h` (m): the largest tube-centre distance a frictionless
     /// chamfer captures.
@@ -91,8 +144,7 @@ impl Capture {
 
     /// `W_μ = R + ρ_h − (ρ_h + ρ_p) μ/√(1 + μ²)` (m).
     pub fn width(&self) -> f64 {
-        let mu = self.friction;
-        self.frictionless_width() - (self.mouth_fillet + self.rim_fillet) * mu / mu.hypot(1.0)
+        self.frictionless_width() - self.friction_offset()
     }
 
     /// The largest lateral error of the tip an aligned peg may have,
@@ -110,24 +162,121 @@ impl Capture {
         ]
     }
 
+    /// The friction's share of the round, `(ρ_h + ρ_p) μ/√(1 + μ²)` (m).
+    fn friction_offset(&self) -> f64 {
+        let mu = self.friction;
+        (self.mouth_fillet + self.rim_fillet) * mu / mu.hypot(1.0)
+    }
+
+    /// `(remaining drop, δ, C_xy)` of the rim sphere at rim angle `phi`
+    /// (m); the drop is infinite when the sphere passes into the bore.
+    fn drop_at(&self, tip: [f64; 2], tilt: f64, azimuth: f64, phi: f64) -> (f64, f64, [f64; 2]) {
+        let (st, ct) = tilt.sin_cos();
+        let (sp, cp) = azimuth.sin_cos();
+        let a = [st * cp, st * sp, ct];
+        let e1 = [ct * cp, ct * sp, -st];
+        let e2 = [-sp, cp, 0.0];
+        let k = self.peg_radius - self.rim_fillet;
+        let (s, c) = phi.sin_cos();
+        let cx = tip[0] + self.rim_fillet * a[0] + k * (c * e1[0] + s * e2[0]);
+        let cy = tip[1] + self.rim_fillet * a[1] + k * (c * e1[1] + s * e2[1]);
+        let cz = self.rim_fillet * a[2] + k * (c * e1[2] + s * e2[2]);
+        let delta = self.frictionless_width() - cx.hypot(cy);
+        let reach = self.mouth_fillet + self.rim_fillet;
+        let drop = if delta <= 0.0 {
+            cz - self.rim_fillet
+        } else if delta < reach {
+            cz + self.mouth_fillet - (reach * reach - delta * delta).sqrt()
+        } else {
+            f64::INFINITY
+        };
+        (drop, delta, [cx, cy])
+    }
+
     /// The rule applied to `e`.
     pub fn verdict(&self, e: &InitialError) -> Verdict {
         let tip = self.tip_error(e);
+        let f = |phi: f64| self.drop_at(tip, e.tilt, e.azimuth, phi);
+        let step = std::f64::consts::TAU / SCAN as f64;
+        let mut best = (f64::INFINITY, 0.0);
+        let mut smallest_delta = f64::INFINITY;
+        for k in 0..SCAN {
+            let phi = k as f64 * step;
+            let (h, d, _) = f(phi);
+            smallest_delta = smallest_delta.min(d);
+            if h < best.0 {
+                best = (h, phi);
+            }
+        }
+        if !best.0.is_finite() {
+            return Verdict {
+                tip,
+                touch: Touch::None,
+                margin: smallest_delta - self.friction_offset(),
+                frictionless_margin: smallest_delta,
+            };
+        }
+        // Golden section on the drop around the best scanned angle.
+        let g = 0.5 * (5f64.sqrt() - 1.0);
+        let (mut lo, mut hi) = (best.1 - step, best.1 + step);
+        for _ in 0..60 {
+            let (x1, x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+            if f(x1).0 <= f(x2).0 {
+                hi = x2;
+            } else {
+                lo = x1;
+            }
+        }
+        let mid = 0.5 * (lo + hi);
+        let phi = if f(mid).0 <= best.0 { mid } else { best.1 };
+        let (h, delta, centre) = f(phi);
+        // The top face touched at the same drop (an aligned rim lands on an
+        // arc of it at once): the outermost of those points.
+        let tol = 1e-9 * (self.mouth_fillet + self.rim_fillet);
+        let flat = (0..SCAN)
+            .map(|k| (k as f64 * step, f(k as f64 * step)))
+            .filter(|(_, (hk, dk, _))| *dk <= 0.0 && *hk <= h.min(best.0) + tol)
+            .min_by(|a, b| a.1.1.total_cmp(&b.1.1));
+        if let Some((phi_flat, (_, d_flat, _))) = flat {
+            return Verdict {
+                tip,
+                touch: Touch::TopFace {
+                    rim_angle: phi_flat,
+                },
+                margin: d_flat - self.friction_offset(),
+                frictionless_margin: d_flat,
+            };
+        }
+        let rim_angle = phi.rem_euclid(std::f64::consts::TAU);
+        if delta <= 0.0 {
+            return Verdict {
+                tip,
+                touch: Touch::TopFace { rim_angle },
+                margin: delta - self.friction_offset(),
+                frictionless_margin: delta,
+            };
+        }
+        let reach = self.mouth_fillet + self.rim_fillet;
+        let alpha = (delta / reach).asin();
+        // The contact's radial direction against the tip's error: the peg
+        // moves towards the axis along the error's line.
         let n = tip[0].hypot(tip[1]);
-        // Angle between the tip's error and the tilt's azimuth (any, when
-        // the tip is centred: the reach is then at most r − ρ_p).
-        let beta = if n > 0.0 {
-            tip[1].atan2(tip[0]) - e.azimuth
+        let cos_theta = if n > 0.0 {
+            (centre[0] * tip[0] + centre[1] * tip[1]) / (n * centre[0].hypot(centre[1]))
         } else {
-            0.0
+            1.0
         };
-        let (c, sb) = (e.tilt.cos() * beta.cos(), beta.sin());
-        let reach = n + (self.peg_radius - self.rim_fillet) * (c * c + sb * sb).sqrt();
+        let t = alpha.tan() * cos_theta;
+        let effective = (t * alpha.cos() * t.hypot(1.0)).atan();
         Verdict {
             tip,
-            reach,
-            margin: self.width() - reach,
-            frictionless_margin: self.frictionless_width() - reach,
+            touch: Touch::Round {
+                rim_angle,
+                alpha,
+                cos_azimuth: cos_theta,
+            },
+            margin: reach * (effective.sin() - self.friction_offset() / reach),
+            frictionless_margin: reach * effective.sin(),
         }
     }
 
@@ -207,7 +356,9 @@ mod tests {
         assert!((c.aligned_tip_error() - 0.8375e-3).abs() < 1e-12);
         let c = shipped();
         // Less (ρ_h + ρ_p) μ/√(1 + μ²) = 0.8 mm × 0.196116 = 0.156893 mm.
-        assert!((c.aligned_tip_error() - (0.8375e-3 - 0.8e-3 * 0.2 / 1.04f64.sqrt())).abs() < 1e-12);
+        assert!(
+            (c.aligned_tip_error() - (0.8375e-3 - 0.8e-3 * 0.2 / 1.04f64.sqrt())).abs() < 1e-12
+        );
     }
 
     #[test]
@@ -225,14 +376,36 @@ mod tests {
         let (lo, hi) = c
             .boundary(0.0, e.tilt, e.azimuth, false)
             .expect("accepted interval");
-        // The interval is centred where the tip is centred, −L_c sin θ,
-        // and its half-width is the aligned width less the tilt's
-        // (r − ρ_p)(1 − cos θ) gain.
-        let half = c.width() - (c.peg_radius - c.rim_fillet) * e.tilt.cos();
-        let mid = -0.025 * e.tilt.sin();
-        assert!((hi - (mid + half)).abs() < 1e-12, "{hi}");
-        assert!((lo - (mid - half)).abs() < 1e-12, "{lo}");
-        assert!(c.verdict(&InitialError { centre: [hi - 1e-9, 0.0], ..e }).accepts());
-        assert!(!c.verdict(&InitialError { centre: [hi + 1e-9, 0.0], ..e }).accepts());
+        // Towards −x the rim is lowered: it touches first in the error's
+        // plane at its farthest point, the tube centre (r − ρ_p) cos θ +
+        // ρ_p sin θ beyond the tip, so the lower edge is the planar one.
+        let (st, ct) = e.tilt.sin_cos();
+        let tip_lo = -(c.width() - (c.peg_radius - c.rim_fillet) * ct - c.rim_fillet * st);
+        assert!((lo - (tip_lo - 0.025 * st)).abs() < 1e-9, "{lo}");
+        let at_lo = c.verdict(&InitialError {
+            centre: [lo + 1e-7, 0.0],
+            ..e
+        });
+        assert!(
+            matches!(at_lo.touch, Touch::Round { rim_angle, .. } if rim_angle.min(std::f64::consts::TAU - rim_angle) < 1e-6),
+            "{at_lo:?}"
+        );
+        // Towards +x the rim is raised by up to (r − ρ_p) sin θ = 0.21 mm:
+        // lower rim points off the error's plane touch first, on the
+        // steeper inner part of the round, and the band reaches further.
+        let tip_hi_planar = c.width() - (c.peg_radius - c.rim_fillet) * ct + c.rim_fillet * st;
+        assert!(hi + 0.025 * st > tip_hi_planar + 1e-5, "{hi}");
+        let at_hi = c.verdict(&InitialError {
+            centre: [hi - 1e-7, 0.0],
+            ..e
+        });
+        assert!(at_hi.accepts(), "{at_hi:?}");
+        assert!(
+            !c.verdict(&InitialError {
+                centre: [hi + 1e-7, 0.0],
+                ..e
+            })
+            .accepts()
+        );
     }
 }

@@ -53,7 +53,8 @@ pub fn nominal(b: &Built, spec: &IntegratorSpec) -> Result<Nominal, RunError> {
         .rows
         .iter()
         .find(|(_, _, smp)| {
-            two_point(smp.forces.iter().map(|f| f.contact.pair)) && smp.depth > b.params.mouth_fillet
+            two_point(smp.forces.iter().map(|f| f.contact.pair))
+                && smp.depth > b.params.mouth_fillet
         })
         .map(|(_, _, smp)| smp.depth);
     Ok(Nominal {
@@ -133,7 +134,12 @@ pub struct Row {
 /// `ρ_h + ρ_p + √(D² − d²)`, to `seat` (m), `ROWS` rows; `path` is the
 /// nominal run's load ratio. Empty when two-point contact cannot occur
 /// above the seat.
-pub fn table(prm: &Peg3dParams, clearance_ratio: f64, seat: f64, path: &[(f64, [f64; 2], f64)]) -> Vec<Row> {
+pub fn table(
+    prm: &Peg3dParams,
+    clearance_ratio: f64,
+    seat: f64,
+    path: &[(f64, [f64; 2], f64)],
+) -> Vec<Row> {
     let Ok(hole) = PegHole::try_new(prm.peg_radius(), clearance_ratio, prm.friction.max(1e-6))
     else {
         return Vec::new();

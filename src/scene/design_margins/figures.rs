@@ -50,7 +50,11 @@ pub fn region(d: &Design, rows: &[GridRun]) -> Figure {
     let angles = &d.scene.grid.angular_errors_deg;
     let lo = angles.iter().copied().fold(f64::INFINITY, f64::min);
     let hi = angles.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let (lo, hi) = if hi > lo { (lo, hi) } else { (lo - 1.0, hi + 1.0) };
+    let (lo, hi) = if hi > lo {
+        (lo, hi)
+    } else {
+        (lo - 1.0, hi + 1.0)
+    };
     let dir = d.scene.robot.lateral_error_direction_deg.to_radians();
     let az = d.scene.robot.tilt_direction_deg.to_radians();
     for (frictionless, label, style, color) in [
@@ -61,10 +65,7 @@ pub fn region(d: &Design, rows: &[GridRun]) -> Figure {
         let mut upper = Vec::new();
         for k in 0..BOUNDARY_POINTS {
             let deg = lo + (hi - lo) * k as f64 / (BOUNDARY_POINTS - 1) as f64;
-            if let Some((a, b)) = d
-                .capture
-                .boundary(dir, deg.to_radians(), az, frictionless)
-            {
+            if let Some((a, b)) = d.capture.boundary(dir, deg.to_radians(), az, frictionless) {
                 lower.push((a * mm, deg));
                 upper.push((b * mm, deg));
             }
@@ -188,8 +189,7 @@ pub fn nojam(d: &Design, table: &[Row], nominal: &Nominal) -> Figure {
     );
     let theta = d.nominal.held.robot.tilt.abs();
     if theta > 0.0 {
-        let z2 =
-            prm.mouth_fillet + prm.rim_fillet + (prm.hole_diameter - prm.peg_diameter) / theta;
+        let z2 = prm.mouth_fillet + prm.rim_fillet + (prm.hole_diameter - prm.peg_diameter) / theta;
         b = b.with(
             Series::line(
                 "analytic two-point depth at the nominal angular error",

@@ -52,7 +52,7 @@ use crate::scene::validate::Checker;
 use crate::scene::{
     Document, IntegratorSpec, Kind, Metric, Progress, RunContext, RunSummary, Scene, significant,
 };
-use chamfer::{Capture, InitialError, Verdict};
+use chamfer::{Capture, InitialError, Touch, Verdict};
 
 /// Registry entry.
 pub const KIND: Kind = Kind {
@@ -341,7 +341,9 @@ impl Design {
                 pw = pw.max(w.force.norm());
             }
         }
-        let end = run.system.sample(run.solution.t_final, &run.solution.x_final)?;
+        let end = run
+            .system
+            .sample(run.solution.t_final, &run.solution.x_final)?;
         let mut pairs: Vec<&str> = end.forces.iter().map(|f| f.contact.pair.name()).collect();
         pairs.dedup();
         Ok(GridRun {
@@ -417,7 +419,8 @@ impl Scene for Design {
         figures::nojam(self, &table, &nominal).save(&nojam)?;
         let mut out = RunSummary::default();
         out.metrics = self.analytic_metrics();
-        out.metrics.extend(nominal.metrics(&self.nominal.params, self.scene.peg.clearance_ratio));
+        out.metrics
+            .extend(nominal.metrics(&self.nominal.params, self.scene.peg.clearance_ratio));
         out.metrics.extend(grid_metrics(&rows));
         out.outputs = vec![csv, depth_csv, svg, nojam];
         Ok(out)
@@ -510,6 +513,8 @@ fn write_grid(ctx: &RunContext, rows: &[GridRun]) -> Result<std::path::PathBuf, 
             "rule_margin_m",
             "rule_frictionless_margin_m",
             "rule_accepts",
+            "rule_first_touch",
+            "rule_touch_angle_deg",
             "outcome",
             "outcome_code",
             "seated",
@@ -532,6 +537,15 @@ fn write_grid(ctx: &RunContext, rows: &[GridRun]) -> Result<std::path::PathBuf, 
             &format_f64(r.verdict.margin),
             &format_f64(r.verdict.frictionless_margin),
             flag(r.verdict.accepts()),
+            match r.verdict.touch {
+                Touch::Round { .. } => "round",
+                Touch::TopFace { .. } => "top_face",
+                Touch::None => "none",
+            },
+            &match r.verdict.touch {
+                Touch::Round { alpha, .. } => format_f64(alpha.to_degrees()),
+                _ => String::new(),
+            },
             &outcome_text(&r.outcome),
             &format_f64(r.outcome.code()),
             flag(r.seated()),
