@@ -417,13 +417,14 @@ impl Scene for Design {
         figures::region(self, &rows).save(&svg)?;
         let nojam = ctx.output_with("nojam", "svg");
         figures::nojam(self, &table, &nominal).save(&nojam)?;
-        let mut out = RunSummary::default();
-        out.metrics = self.analytic_metrics();
-        out.metrics
-            .extend(nominal.metrics(&self.nominal.params, self.scene.peg.clearance_ratio));
-        out.metrics.extend(grid_metrics(&rows));
-        out.outputs = vec![csv, depth_csv, svg, nojam];
-        Ok(out)
+        let mut metrics = self.analytic_metrics();
+        metrics.extend(nominal.metrics(&self.nominal.params, self.scene.peg.clearance_ratio));
+        metrics.extend(grid_metrics(&rows));
+        Ok(RunSummary {
+            metrics,
+            outputs: vec![csv, depth_csv, svg, nojam],
+            ..RunSummary::default()
+        })
     }
 }
 
