@@ -176,6 +176,13 @@ fn bad_grid_fields_are_refused_naming_them() {
         let err = pegdyn::scene::parse(&text).unwrap_err().to_string();
         assert!(err.contains(field), "{key} = {bad}: {err}");
     }
+    // 15 grid points and the nominal run against a limit of 10 runs.
+    let text = format!(
+        "{}\n[limits]\nmax_runs = 10\n",
+        include_str!("../scenes/design_margins.toml")
+    );
+    let err = pegdyn::scene::parse(&text).unwrap_err().to_string();
+    assert!(err.contains("`grid`") && err.contains("1.600e1 runs (max_runs)"), "{err}");
 }
 
 #[test]
