@@ -182,7 +182,10 @@ fn bad_grid_fields_are_refused_naming_them() {
         include_str!("../scenes/design_margins.toml")
     );
     let err = pegdyn::scene::parse(&text).unwrap_err().to_string();
-    assert!(err.contains("`grid`") && err.contains("1.600e1 runs (max_runs)"), "{err}");
+    assert!(
+        err.contains("`grid`") && err.contains("1.600e1 runs (max_runs)"),
+        "{err}"
+    );
 }
 
 #[test]

@@ -282,10 +282,13 @@ impl Capture {
 
     /// The compliance-centre errors `e_c` along the unit direction `dir`
     /// (rad from `x`) at which the rule's margin (`frictionless`: the
-    /// frictionless margin) is zero, at tilt `tilt` towards `azimuth`: the
-    /// two ends `(lower, upper)` of the accepted interval, or `None` when
-    /// no error is accepted. Bisection on the margin, which is concave in
-    /// `e_c` (a norm plus a bounded term), to 1e-12 of the width.
+    /// frictionless margin) first turns negative on either side of the
+    /// error that centres the tip, at tilt `tilt` towards `azimuth`: the
+    /// two ends `(lower, upper)` of the accepted interval around it, or
+    /// `None` when that error is not accepted. Steps of `(ρ_h + ρ_p)/8`
+    /// outwards (the margin need not be monotone far out, where the rim's
+    /// near side can reach the round across the hole) while the tip stays
+    /// within `W_0` of the axis, then bisection to 1e-12 of `W_0`.
     pub fn boundary(
         &self,
         dir: f64,
@@ -311,9 +314,20 @@ impl Capture {
         if m(s0) <= 0.0 {
             return None;
         }
-        let span = 2.0 * self.frictionless_width() + self.centre_height.abs();
-        let solve = |outside: f64| {
-            let (mut a, mut b) = (s0, outside);
+        let span = self.frictionless_width();
+        let step = 0.125 * (self.mouth_fillet + self.rim_fillet);
+        let steps = (span / step).ceil().min(1e5) as usize;
+        let solve = |sign: f64| {
+            let mut a = s0;
+            let mut b = s0 + sign * span;
+            for k in 1..=steps {
+                let s = s0 + sign * step * k as f64;
+                if m(s) <= 0.0 {
+                    b = s;
+                    break;
+                }
+                a = s;
+            }
             for _ in 0..200 {
                 let c = 0.5 * (a + b);
                 if m(c) > 0.0 {
@@ -327,7 +341,7 @@ impl Capture {
             }
             0.5 * (a + b)
         };
-        Some((solve(s0 - span), solve(s0 + span)))
+        Some((solve(-1.0), solve(1.0)))
     }
 }
 

@@ -24,8 +24,8 @@ const BOUNDARY_POINTS: usize = 81;
 
 /// The success region: the simulated outcome at each grid point (lateral
 /// error of the compliance centre in mm, angular error in degrees), the
-/// capture rule's accepted band with friction (solid) and without
-/// (dashed), and the points where rule and simulation disagree.
+/// edges of the capture rule's accepted band, and the points where rule
+/// and simulation disagree.
 pub fn region(d: &Design, rows: &[GridRun]) -> Figure {
     let mm = 1e3;
     let mut panel = Panel::new(
@@ -57,10 +57,10 @@ pub fn region(d: &Design, rows: &[GridRun]) -> Figure {
     };
     let dir = d.scene.robot.lateral_error_direction_deg.to_radians();
     let az = d.scene.robot.tilt_direction_deg.to_radians();
-    for (frictionless, label, style, color) in [
-        (false, "capture rule W_mu", Style::Solid, 7),
-        (true, "frictionless capture W_0", Style::Dashed, 8),
-    ] {
+    // The frictionless rule is left out: on the raised side of a tilted
+    // rim any inward lean of the round's normal passes it, so its band
+    // reaches almost to the mouth's radius.
+    for (frictionless, label, style, color) in [(false, "capture rule", Style::Solid, 7)] {
         let mut lower = Vec::new();
         let mut upper = Vec::new();
         for k in 0..BOUNDARY_POINTS {
@@ -181,7 +181,7 @@ pub fn nojam(d: &Design, table: &[Row], nominal: &Nominal) -> Figure {
     let wedge = prm.friction * prm.peg_diameter + prm.mouth_fillet + prm.rim_fillet;
     b = b.with(
         Series::line(
-            "wedging possible above: l = mu d",
+            "wedging possible shallower than l = mu d",
             vec![(wedge * mm, ylo), (wedge * mm, yhi)],
         )
         .styled(Style::Dashed)
