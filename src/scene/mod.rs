@@ -27,6 +27,7 @@
 //! ```
 
 pub mod align_forward;
+pub mod design_margins;
 pub mod document;
 pub mod double_pendulum;
 pub mod fig9;
@@ -89,6 +90,7 @@ pub const KINDS: &[Kind] = &[
     insert_3d::drop::KIND,
     insert_3d::rcc::KIND,
     insert_3d::sweep::KIND,
+    design_margins::KIND,
 ];
 
 /// A scene read from a file.

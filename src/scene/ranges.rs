@@ -19,6 +19,7 @@
 //! its validation with [`FieldRange::check`], and lists them in [`ALL`] so
 //! that `docs/scenes.md` is checked to document every one.
 
+pub mod design_margins;
 pub mod jamming;
 pub mod pendulum;
 pub mod rigid;
@@ -105,6 +106,7 @@ pub const ALL: &[(&str, &[FieldRange])] = &[
     ("double_pendulum", pendulum::DOUBLE_PENDULUM),
     ("jamming", jamming::JAMMING),
     ("jamming", jamming::SWEEP),
+    ("design_margins", design_margins::GRID),
 ];
 
 /// Largest contact radius, as a fraction of the fillet radius, at which

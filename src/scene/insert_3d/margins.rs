@@ -31,9 +31,9 @@ use crate::scene::Metric;
 
 /// The load ratio of each sample in two-point contact in the bore (the
 /// mouth edge on the side and the rim on the wall,
-/// [`two_point`](crate::compliant_peg_3d::outcome::two_point)), pushed in
-/// (`F_Z > 0`), with its depth.
-fn ratio(prm: &Peg3dParams, s: &super::output::Samples) -> Vec<(f64, [f64; 2], f64)> {
+/// [`two_point`]), pushed in
+/// (`F_Z > 0`): `(t, (F_X/F_Z, M/(r F_Z)), tip depth)`.
+pub fn ratio(prm: &Peg3dParams, s: &super::output::Samples) -> Vec<(f64, [f64; 2], f64)> {
     let mut out = Vec::new();
     for (t, y, smp) in &s.rows {
         let Some(w) = &smp.wrist else { continue };
