@@ -36,7 +36,7 @@ fn settle_rule_checks_ten_times_per_window() {
 }
 
 #[test]
-fn classes_on_the_shipped_load_range_do_not_change_with_early_stop_rodas4_or_the_default_tolerance() {
+fn shipped_classes_are_unchanged_by_early_stop_rodas4_or_the_default_tolerance() {
     let n = 5;
     let classes = |s: &SweepSetup| -> Vec<_> {
         dynamic::run(s, 4.5, 6.0, n, |_, _| {})
