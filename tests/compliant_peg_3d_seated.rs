@@ -265,7 +265,7 @@ fn tilted_peg_rocks_to_rest_flat_with_a_continuous_force() {
     .unwrap();
     assert!(sol.stop.is_success(), "{:?}", sol.stop);
     let (mut peak, mut jump, mut at) = (0.0_f64, 0.0_f64, 0.0);
-    let (mut ring_only, mut both, mut point_only) = (0, 0, 0);
+    let mut counts = [0_usize; 4];
     // The largest change of F_z between two steps whose contact kind (ring
     // alone, hand-over, point alone) differs.
     let (mut switch_jump, mut switches) = (0.0_f64, 0);
@@ -277,23 +277,8 @@ fn tilted_peg_rocks_to_rest_flat_with_a_continuous_force() {
             jump = (f - last.0).abs();
             at = *t;
         }
-        let forces = sys.forces(y).unwrap();
-        let rings = forces.iter().filter(|f| f.contact.ring).count();
-        let kind = match (rings, forces.len() - rings) {
-            (1, 0) => {
-                ring_only += 1;
-                1
-            }
-            (1, _) => {
-                both += 1;
-                2
-            }
-            (0, n) if n > 0 => {
-                point_only += 1;
-                3
-            }
-            _ => 0,
-        };
+        let kind = contact_kind(&sys, y);
+        counts[kind] += 1;
         if kind != last.1 && kind != 0 && last.1 != 0 {
             switches += 1;
             switch_jump = switch_jump.max((f - last.0).abs());
@@ -303,15 +288,18 @@ fn tilted_peg_rocks_to_rest_flat_with_a_continuous_force() {
     let end = sol.x_final;
     eprintln!(
         "{} steps: peak F_z {peak:.4} N, largest change between steps {jump:.3e} N at {at:.5} s \
-         ({:.2e} of the peak); steps on the ring alone {ring_only}, in the hand-over {both}, \
-         on the point alone {point_only}; {switches} changes of kind, largest change across \
+         ({:.2e} of the peak); steps on the ring alone {}, in the hand-over {}, \
+         on the point alone {}; {switches} changes of kind, largest change across \
          one {switch_jump:.3e} N ({:.2e} of the peak); end tilt {:.2e} rad",
         sol.stats.steps,
         jump / peak,
+        counts[1],
+        counts[2],
+        counts[3],
         switch_jump / peak,
         tilt(&end)
     );
-    assert!(ring_only > 10 && both > 10 && point_only > 10);
+    assert!(counts[1] > 10 && counts[2] > 10 && counts[3] > 10);
     assert!(jump < 0.05 * peak, "jump {jump} N of {peak} N");
     assert!(
         switches >= 2 && switch_jump < 1e-6 * peak,
@@ -344,37 +332,22 @@ fn frictionless_undamped_rocking_through_the_hand_over_conserves_energy() {
     .unwrap();
     assert!(sol.stop.is_success(), "{:?}", sol.stop);
     let (mut worst, mut kinetic) = (0.0_f64, 0.0_f64);
-    let (mut ring_only, mut both, mut point_only, mut changes) = (0, 0, 0, 0);
+    let (mut counts, mut changes) = ([0_usize; 4], 0);
     let mut last = 0;
     for y in &sol.x {
         worst = worst.max((sys.energy_balance(y).unwrap() - e0).abs());
         kinetic = kinetic.max(0.5 * prm.mass * Vector3::new(y[7], y[8], y[9]).norm_squared());
-        let forces = sys.forces(y).unwrap();
-        let rings = forces.iter().filter(|f| f.contact.ring).count();
-        let class = match (rings, forces.len() - rings) {
-            (1, 0) => {
-                ring_only += 1;
-                1
-            }
-            (1, _) => {
-                both += 1;
-                2
-            }
-            (0, n) if n > 0 => {
-                point_only += 1;
-                3
-            }
-            _ => 0,
-        };
+        let class = contact_kind(&sys, y);
+        counts[class] += 1;
         changes += usize::from(class != last);
         last = class;
     }
     eprintln!(
-        "{} steps, {changes} changes of contact kind (ring alone {ring_only}, hand-over {both}, \
-         point alone {point_only}); balance constant to {worst:.2e} J, peak kinetic {kinetic:.2e} J",
-        sol.stats.steps
+        "{} steps, {changes} changes of contact kind (ring alone {}, hand-over {}, \
+         point alone {}); balance constant to {worst:.2e} J, peak kinetic {kinetic:.2e} J",
+        sol.stats.steps, counts[1], counts[2], counts[3]
     );
-    assert!(ring_only > 0 && both > 0 && point_only > 0 && changes >= 4);
+    assert!(counts[1] > 0 && counts[2] > 0 && counts[3] > 0 && changes >= 4);
     assert!(worst < 1e-10, "{worst}");
 }
 
@@ -518,4 +491,17 @@ fn ring_is_finite_and_positive_at_a_grazing_touch() {
     }
     eprintln!("largest step of P/δ^1.5 for ε in [1e-10, 1e-3]: {worst:.1e}");
     assert!(worst < 1e-4, "{worst}");
+}
+
+/// The contact kind at `y`: 1 the ring alone, 2 the hand-over (ring and
+/// point), 3 point contacts alone, 0 no contact.
+fn contact_kind(sys: &Peg3d, y: &SVector<f64, 15>) -> usize {
+    let forces = sys.forces(y).unwrap();
+    let rings = forces.iter().filter(|f| f.contact.ring).count();
+    match (rings, forces.len() - rings) {
+        (1, 0) => 1,
+        (1, _) => 2,
+        (0, n) if n > 0 => 3,
+        _ => 0,
+    }
 }

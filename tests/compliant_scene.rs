@@ -2,7 +2,10 @@
 //! tilted two-point start, writes the CSV/SVG with the documented columns and
 //! keeps the energy balance; bad values are refused naming the TOML field.
 
-use pegdyn::scene::{self, Progress, RunContext};
+#[path = "common/cli.rs"]
+mod cli;
+
+use pegdyn::scene;
 use std::path::Path;
 
 const SCENE: &str = include_str!("../scenes/insert_compliant.toml");
@@ -46,29 +49,15 @@ fn bad_values_are_refused_naming_the_field() {
 
 #[test]
 fn shipped_scene_inserts_the_peg_and_keeps_the_energy_balance() {
-    let loaded = scene::parse_named(SCENE, "insert_compliant").unwrap();
-    let dir = std::env::temp_dir().join(format!("pegdyn_compliant_scene_{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let mut ctx = RunContext {
-        out_dir: dir.clone(),
-        name: "insert_compliant".into(),
-        progress: Progress::silent(),
-    };
-    let summary = loaded.scene.run(&mut ctx).unwrap();
+    let dir = cli::fresh_dir("compliant_scene", "shipped");
+    let summary = cli::run_scene(SCENE, "insert_compliant", &dir);
     let integ = summary.integration.as_ref().unwrap();
     assert!(
         integ.success && integ.stop.contains("inserted"),
         "{}",
         integ.stop
     );
-    let metric = |name: &str| {
-        summary
-            .metrics
-            .iter()
-            .find(|m| m.name.starts_with(name))
-            .unwrap()
-            .value
-    };
+    let metric = |name: &str| cli::metric(&summary, name);
     assert!(metric("max |T + P - W + S") < 1e-6);
     assert!(metric("peak contact force") > 0.0);
     let csv = std::fs::read_to_string(dir.join("insert_compliant.csv")).unwrap();

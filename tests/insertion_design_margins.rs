@@ -6,9 +6,9 @@
 mod cli;
 
 use pegdyn::compliant_peg_3d::outcome::Outcome;
+use pegdyn::scene::Progress;
 use pegdyn::scene::design_margins::chamfer::Touch;
 use pegdyn::scene::design_margins::{DesignScene, GridRun};
-use pegdyn::scene::{Progress, RunContext};
 
 /// The shipped `design_margins` scene's text with the first line of each
 /// key replaced (the key at the start of a line; `seat_depth` is the
@@ -200,22 +200,9 @@ fn design_margins_runs_end_to_end_and_writes_its_files() {
         ("lateral_error", "0.0"),
     ])
     .replace("seat_depth = 0.008 ", "seat_depth = 0.004 ");
-    let loaded = pegdyn::scene::parse_named(&text, "design").unwrap();
     let dir = cli::fresh_dir("insertion", "design_margins");
-    let mut ctx = RunContext {
-        out_dir: dir.clone(),
-        name: "design".into(),
-        progress: Progress::silent(),
-    };
-    let summary = loaded.scene.run(&mut ctx).unwrap();
-    let metric = |name: &str| {
-        summary
-            .metrics
-            .iter()
-            .find(|m| m.name.starts_with(name))
-            .map(|m| m.value)
-            .unwrap_or_else(|| panic!("no metric {name}: {:?}", summary.metrics))
-    };
+    let summary = cli::run_scene(&text, "design", &dir);
+    let metric = |name: &str| cli::metric(&summary, name);
     assert_eq!(metric("grid runs"), 2.0);
     // (0, 0°) passes into the bore untouched; (0, 2°) puts the tip
     // 0.8725 mm out, beyond the aligned capture of 0.68 mm, but the raised

@@ -4,13 +4,15 @@
 //! class boundary matches the exact parallelogram within the grid spacing.
 //! The scene's `[sweep]` writes its CSV and SVG.
 
+#[path = "common/cli.rs"]
+mod cli;
+
 use std::path::PathBuf;
 
 use pegdyn::integrate::Method;
 use pegdyn::jamming::PegHole;
 use pegdyn::jamming::dynamic::{SweepSetup, SweepSpec};
 use pegdyn::jamming::sweep::RunClass;
-use pegdyn::scene::{self, Progress, RunContext};
 
 fn setup() -> SweepSetup {
     SweepSetup::new(SweepSpec {
@@ -53,23 +55,9 @@ fn sweep_scene_boundary_matches_the_exact_diagram() {
     // the scene's sweep on a coarser 9 × 9 grid
     let coarse = text.replace("n = 13 ", "n = 9 ");
     assert_ne!(coarse, text);
-    let loaded = scene::parse_named(&coarse, "jamming").unwrap();
-    let dir = std::env::temp_dir().join(format!("pegdyn-jam-dyn-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
-    let mut ctx = RunContext {
-        out_dir: dir.clone(),
-        name: "jamming".into(),
-        progress: Progress::silent(),
-    };
-    let summary = loaded.scene.run(&mut ctx).unwrap();
-    let metric = |name: &str| {
-        summary
-            .metrics
-            .iter()
-            .find(|m| m.name.starts_with(name))
-            .map(|m| m.value)
-            .unwrap()
-    };
+    let dir = cli::fresh_dir("jamming_dynamic", "sweep_scene");
+    let summary = cli::run_scene(&coarse, "jamming", &dir);
+    let metric = |name: &str| cli::metric(&summary, name);
     assert_eq!(metric("sweep runs"), 81.0);
     assert_eq!(metric("points contradicting the exact diagram"), 0.0);
     let judged = metric("grid points judged");

@@ -114,6 +114,18 @@ impl Outcome {
     }
 }
 
+/// Every [`Outcome::code`] with the outcome's name for a figure's legend,
+/// in code order.
+pub const CODE_LEGEND: [(f64, &str); 7] = [
+    (0.0, "seated"),
+    (1.0, "jammed"),
+    (2.0, "wedged"),
+    (3.0, "missed"),
+    (4.0, "force limit"),
+    (5.0, "stopped"),
+    (6.0, "contact jump (model gap)"),
+];
+
 /// The names of the terminal events of [`terminal_events`], in order.
 pub const TERMINAL_NAMES: [&str; 4] = [
     "seated",

@@ -1,7 +1,8 @@
 //! Shared by the end-to-end tests of the `pegdyn` binary (`tests/cli.rs`,
 //! `tests/align_forward_scene.rs`, `tests/hostile_scenes.rs`), included with
-//! `#[path]`: running the binary from the crate root, and a fresh output
-//! directory per test.
+//! `#[path]`: running the binary from the crate root, a fresh output
+//! directory per test, and running a scene in-process and reading its
+//! summary's metrics.
 
 #![allow(dead_code)]
 
@@ -24,4 +25,27 @@ pub fn fresh_dir(prefix: &str, test: &str) -> PathBuf {
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).expect("the target's temporary dir is writable");
     d
+}
+
+/// Parses `text` as a scene named `name` and runs it in-process, writing
+/// its files into `dir` (silent progress).
+pub fn run_scene(text: &str, name: &str, dir: &Path) -> pegdyn::scene::RunSummary {
+    let loaded = pegdyn::scene::parse_named(text, name).expect("the test scene parses");
+    let mut ctx = pegdyn::scene::RunContext {
+        out_dir: dir.to_path_buf(),
+        name: name.into(),
+        progress: pegdyn::scene::Progress::silent(),
+    };
+    loaded.scene.run(&mut ctx).expect("the test scene runs")
+}
+
+/// The value of the first metric of `summary` whose name starts with
+/// `prefix`.
+pub fn metric(summary: &pegdyn::scene::RunSummary, prefix: &str) -> f64 {
+    summary
+        .metrics
+        .iter()
+        .find(|m| m.name.starts_with(prefix))
+        .map(|m| m.value)
+        .unwrap_or_else(|| panic!("no metric {prefix}: {:?}", summary.metrics))
 }

@@ -8,17 +8,6 @@ use crate::jamming::PegHole;
 use crate::jamming::diagram::whitney_parallelogram;
 use crate::output::plot::{Figure, Panel, Series, Style};
 
-/// Outcome codes and names, in `Outcome::code` order.
-const OUTCOMES: [(f64, &str); 7] = [
-    (0.0, "seated"),
-    (1.0, "jammed"),
-    (2.0, "wedged"),
-    (3.0, "missed"),
-    (4.0, "force limit"),
-    (5.0, "stopped"),
-    (6.0, "contact jump (model gap)"),
-];
-
 /// Points along the boundary curves.
 const BOUNDARY_POINTS: usize = 81;
 
@@ -33,7 +22,7 @@ pub fn region(d: &Design, rows: &[GridRun]) -> Figure {
         "lateral error of the compliance centre [mm]",
         "angular error [deg]",
     );
-    for (code, name) in OUTCOMES {
+    for (code, name) in crate::compliant_peg_3d::outcome::CODE_LEGEND {
         let pts: Vec<(f64, f64)> = rows
             .iter()
             .filter(|r| r.outcome.code() == code)

@@ -360,15 +360,7 @@ fn heat_maps(rows: &[Row]) -> Figure {
             "lateral error [mm]",
             "angular error [deg]",
         );
-        for (code, name) in [
-            (0.0, "seated"),
-            (1.0, "jammed"),
-            (2.0, "wedged"),
-            (3.0, "missed"),
-            (4.0, "force limit"),
-            (5.0, "stopped"),
-            (6.0, "contact jump (model gap)"),
-        ] {
+        for (code, name) in crate::compliant_peg_3d::outcome::CODE_LEGEND {
             let pts: Vec<(f64, f64)> = sel
                 .iter()
                 .filter(|r| r.code == code)
