@@ -35,6 +35,7 @@ use super::jacobian;
 use super::params::{HertzMode, Peg3dParams};
 use super::prune;
 use super::search::{ContactPoint, Pair, Search};
+use super::stiffness;
 use crate::generated::compliant_peg_3d as generated;
 use crate::hertz::{EllipticityMethod, HertzContact, HertzError};
 use crate::system::OdeSystem;
@@ -96,6 +97,15 @@ pub struct ContactForce {
     /// hand-over moment of [`super::face::blend_moment`] on a ring; zero
     /// otherwise.
     pub torque: Vector3<f64>,
+    /// With [`HertzMode::Curvature`], the force `−(2/5) δ^{5/2} ∂k/∂p`
+    /// (N, hole frame, through the centre of mass) of the stiffness's
+    /// variation with the pose ([`super::stiffness`]), weighted like the
+    /// point and less its col's; zero otherwise. Not part of
+    /// [`ContactForce::normal_force`].
+    pub stiffness_force: Vector3<f64>,
+    /// The matching moment `−(2/5) δ^{5/2} ∂k/∂φ` (N·m, hole frame, `φ` a
+    /// rotation about the centre of mass); zero with a fixed stiffness.
+    pub stiffness_torque: Vector3<f64>,
 }
 
 /// The compliant 3-D peg.
@@ -205,6 +215,27 @@ impl Peg3d {
         }
     }
 
+    /// `−(2/5) δ^{5/2} (∂k/∂p, ∂k/∂φ)` of a point contact (or of a col)
+    /// of `pair` at stationary angle `angle`, penetration `d`, stiffness
+    /// `k` ([`super::stiffness`]); zero with a fixed stiffness.
+    fn stiffness_wrench(
+        &self,
+        pair: Pair,
+        angle: f64,
+        d: f64,
+        k: f64,
+        x: &SVector<f64, 7>,
+    ) -> Result<(Vector3<f64>, Vector3<f64>), HertzError> {
+        match self.params.hertz {
+            HertzMode::Fixed(_) => Ok((Vector3::zeros(), Vector3::zeros())),
+            HertzMode::Curvature => {
+                let (gp, gphi) = stiffness::gradient(&self.params, &self.p, pair, angle, x, k)?;
+                let e = -0.4 * d * d * d.sqrt();
+                Ok((gp * e, gphi * e))
+            }
+        }
+    }
+
     /// Every contact with its forces at state `y`.
     ///
     /// # Errors
@@ -235,6 +266,7 @@ impl Peg3d {
             let k = self.stiffness(&c, &x)?;
             let d = c.penetration;
             let vc = v + om.cross(&(c.point - centre));
+            let (mut kf, mut kt) = self.stiffness_wrench(c.pair, c.angle, d, k, &x)?;
             let (col_force, col_potential) = match &c.saddle {
                 Some(sd) => {
                     let at_col = ContactPoint {
@@ -246,8 +278,12 @@ impl Peg3d {
                         saddle: None,
                         ..c
                     };
-                    let kc = s * self.stiffness(&at_col, &x)?;
+                    let kc1 = self.stiffness(&at_col, &x)?;
+                    let kc = s * kc1;
                     let dc = sd.penetration;
+                    let (cf, ct) = self.stiffness_wrench(c.pair, sd.angle, dc, kc1, &x)?;
+                    kf -= cf;
+                    kt -= ct;
                     (kc * dc * dc.sqrt(), 0.4 * kc * dc * dc * dc.sqrt())
                 }
                 None => (0.0, 0.0),
@@ -256,7 +292,13 @@ impl Peg3d {
             if blended {
                 v_point[Pair::ALL.iter().position(|p| *p == c.pair).unwrap_or(0)] += potential / s;
             }
-            out.push(self.contact_force(c, s * k, s * k * d * d.sqrt(), vc, potential, col_force));
+            let mut f =
+                self.contact_force(c, s * k, s * k * d * d.sqrt(), vc, potential, col_force);
+            if self.params.hertz == HertzMode::Curvature {
+                f.stiffness_force = kf * s;
+                f.stiffness_torque = kt * s;
+            }
+            out.push(f);
         }
         for c in rings {
             let Some(z0) = face::plane(c.pair, prm) else {
@@ -310,6 +352,8 @@ impl Peg3d {
             col_force,
             elastic: qe,
             torque: Vector3::zeros(),
+            stiffness_force: Vector3::zeros(),
+            stiffness_torque: Vector3::zeros(),
         }
     }
 
@@ -342,6 +386,13 @@ impl Peg3d {
                 for k in 0..3 {
                     w[k] += back[k];
                     w[3 + k] += t[k];
+                }
+            }
+            if f.stiffness_force != Vector3::zeros() || f.stiffness_torque != Vector3::zeros() {
+                // −(2/5) δ^{5/2} ∂k/∂(pose) of the curvature stiffness.
+                for k in 0..3 {
+                    w[k] += f.stiffness_force[k];
+                    w[3 + k] += f.stiffness_torque[k];
                 }
             }
             w[6] += (f.normal_force - qe) * ddot - f.friction.dot(&vt);
