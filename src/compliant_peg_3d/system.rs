@@ -9,6 +9,7 @@
 //! ```text
 //! δ̇   = −n·v_c
 //! Q_e = k δ^{3/2}                          (Hertz; k from the curvatures or fixed)
+//! F_k = −(2/5) δ^{5/2} ∂k/∂p,  T_k = −(2/5) δ^{5/2} ∂k/∂φ   (k from the curvatures)
 //! Q   = max(0, Q_e (1 + α δ̇))              (Hunt–Crossley damping α, s/m)
 //! v_t = v_c − (n·v_c) n,   F_t = −μ Q v_t / √(|v_t|² + v_s²)
 //! F   = Q n + F_t,   T = (x_c − p) × F     (about the centre of mass)
@@ -23,9 +24,10 @@
 //! weighted by `s`, and the hand-over moment is added as a pure moment
 //! ([`ContactForce::torque`]).
 //!
-//! With a fixed `k`, `T + m g z + Σ V − W + S` is constant (each force is
-//! `−∂V/∂x`: a point's at its minimizing angle, the ring's in closed
-//! form). Further
+//! With the stiffness from the curvatures, each point adds the force and
+//! moment `−(2/5) δ^{5/2} ∂k/∂(pose)` ([`super::stiffness`]). Then
+//! `T + m g z + Σ V − W + S` is constant (each force is `−∂V/∂x`: a
+//! point's at its minimizing angle, the ring's in closed form). Further
 //! generalized forces (a wrist spring–damper, a prescribed frame) add to
 //! the same wrench.
 
@@ -401,7 +403,7 @@ impl Peg3d {
     }
 
     /// `T + m g z + Σ (2/5) k δ^{5/2} − W + S` at state `y` (J): constant
-    /// along solutions when the stiffness is fixed.
+    /// along solutions.
     ///
     /// # Errors
     /// As [`Peg3d::forces`].
