@@ -265,3 +265,38 @@ fn fixed_stiffness_has_no_stiffness_term() {
     }
     let _ = Pair::ALL;
 }
+
+#[test]
+fn closed_form_log_slope_of_k_matches_differences() {
+    // φ′ = d ln k/d ln(B/A) at fixed A + B from the elliptic integrals'
+    // derivatives against central differences of ln k (step 2e-5 in ln r,
+    // error about 1e-10), from near the circle to a slender ellipse.
+    use pegdyn::compliant_peg_3d::stiffness::{log_slope, log_slope_by_differences};
+    use pegdyn::hertz::{Curvatures, EllipticityMethod, HertzContact, Material};
+    let steel = Material::STEEL;
+    let mut worst = 0.0_f64;
+    let mut checked = 0;
+    for ratio in [1.05, 1.3, 2.0, 5.0, 30.0, 500.0, 1e4, 1e6] {
+        let (a, b) = (10.0, 10.0 * ratio);
+        let c = HertzContact::try_new(
+            &Curvatures::aligned([2.0 * a, 2.0 * b], [0.0, 0.0]),
+            &steel,
+            &steel,
+            EllipticityMethod::Exact,
+        )
+        .unwrap();
+        let numeric = log_slope_by_differences(a, b, &steel, &steel).unwrap();
+        let Some(closed) = log_slope(&c.ellipticity) else {
+            assert!(ratio < 1.1, "no closed form at B/A = {ratio}");
+            continue;
+        };
+        let err = (closed - numeric).abs() / numeric.abs();
+        eprintln!(
+            "B/A = {ratio:e}: φ′ {closed:.12e} (differences {numeric:.12e}), relative {err:.1e}"
+        );
+        worst = worst.max(err);
+        checked += 1;
+    }
+    assert!(checked >= 7, "{checked}");
+    assert!(worst < 1e-8, "worst {worst}");
+}

@@ -11,14 +11,13 @@
 //! ∂ln k/∂A = −1/(2(A + B)) − φ′/A,   ∂ln k/∂B = −1/(2(A + B)) + φ′/B
 //! ```
 //!
-//! `φ′ = d ln k/d ln r` at fixed `A + B` is the one number taken by
-//! differences: central, step [`LOG_STEP`] in `ln r` (one-sided of second
-//! order within two steps of the circle `r = 1`, where `k` is even in
-//! `ln r`). The elliptic solve gives `ln k` to a few ulps, so the
-//! rounding error is about `4·10⁻¹⁶ / (2h) ≈ 10⁻¹¹` and the truncation
-//! error `h² φ‴/6 ≈ 10⁻¹⁰ φ‴` (`φ‴` of order one): a relative error of
-//! about `10⁻¹⁰` in a term that is itself a fraction of a per cent of the
-//! Hertz force.
+//! `φ′ = d ln k/d ln r` at fixed `A + B` follows from the derivatives of
+//! the complete elliptic integrals in closed form ([`log_slope`]); within
+//! `m = e² < 10⁻²` of the circle, where those terms cancel, it is taken by
+//! differences ([`log_slope_by_differences`]: central, step [`LOG_STEP`]
+//! in `ln r`, one-sided of second order next to `r = 1`; the elliptic
+//! solve gives `ln k` to a few ulps, so the rounding error is about
+//! `4·10⁻¹⁶/(2h) ≈ 10⁻¹¹` and the truncation error `h² φ‴/6 ≈ 10⁻¹⁰`).
 //!
 //! `A` and `B` are differentiated exactly: the contact's gap, force
 //! direction and point come from the generated pair function in [`Dual`]
@@ -37,7 +36,9 @@ use super::face;
 use super::jacobian;
 use super::params::Peg3dParams;
 use super::search::Pair;
-use crate::hertz::{Curvatures, EllipticityMethod, HertzContact, HertzError, Material};
+use crate::hertz::{
+    Curvatures, Ellipticity, EllipticityMethod, HertzContact, HertzError, Material,
+};
 use nalgebra::{SVector, Vector3};
 
 /// Step in `ln(B/A)` of the difference quotient of `d ln k/d ln r`.
@@ -55,16 +56,72 @@ pub fn of_relative(a: f64, b: f64, m1: &Material, m2: &Material) -> Result<f64, 
 }
 
 /// `(∂ln k/∂A, ∂ln k/∂B)` (m) at relative curvatures `0 < a ≤ b` (1/m),
-/// as in the module documentation.
+/// `el` the ellipticity of the contact, as in the module documentation:
+/// `φ′` in closed form ([`log_slope`]) away from the circle, by
+/// differences ([`log_slope_by_differences`]) within `m = e² <`
+/// [`NEAR_CIRCLE`] of it.
+///
+/// # Errors
+/// As [`HertzContact::try_new`] (only near the circle).
+pub fn log_partials(
+    a: f64,
+    b: f64,
+    el: &Ellipticity,
+    m1: &Material,
+    m2: &Material,
+) -> Result<(f64, f64), HertzError> {
+    let s = a + b;
+    let slope = match log_slope(el) {
+        Some(v) => v,
+        None => log_slope_by_differences(a, b, m1, m2)?,
+    };
+    Ok((-0.5 / s - slope / a, -0.5 / s + slope / b))
+}
+
+/// Below this `m = e² = 1 − (b/a)²` of the contact ellipse [`log_slope`]
+/// leaves `φ′` to differences (its terms cancel as `O(m)`: relative
+/// rounding error `ε/m`).
+pub const NEAR_CIRCLE: f64 = 1e-2;
+
+/// `φ′ = d ln k / d ln r` at fixed `A + B` in closed form, from the
+/// ellipse's integrals (`K`, `E`, `B_u = (K − E)/m`, `C_u = (E − m_c K)/m`,
+/// `m_c = 1 − m = 1/κ²`), with `dK/dm = C_u/(2 m_c)`, `dE/dm = −B_u/2`
+/// (DLMF 19.4.1 with `m = k²`):
+///
+/// ```text
+/// r = B/A = C_u / (m_c B_u),   δ* = 2K/(π m_a),   m_a = (2 E/(π m_c))^{1/3}
+/// d ln δ*/dm = C_u/(2 m_c K) + B_u/(6E) − 1/(3 m_c)
+/// d ln r/dm  = (K − B_u/2 − 3C_u/2)/(m C_u) + 1/m_c − (C_u − m_c B_u)/(2 m m_c B_u)
+/// φ′ = −(3/2) (d ln δ*/dm) / (d ln r/dm)        (k ∝ δ*^{−3/2})
+/// ```
+///
+/// `None` below [`NEAR_CIRCLE`].
+pub fn log_slope(el: &Ellipticity) -> Option<f64> {
+    let k2 = el.kappa * el.kappa;
+    let mc = 1.0 / k2;
+    let m = (el.kappa - 1.0) * (el.kappa + 1.0) / k2;
+    if !(m >= NEAR_CIRCLE) {
+        return None;
+    }
+    let (k, e, bu, cu) = (el.k, el.e, el.k_minus_e_over_m, el.e_minus_mc_k_over_m);
+    let dln_delta = cu / (2.0 * mc * k) + bu / (6.0 * e) - 1.0 / (3.0 * mc);
+    let dln_r =
+        (k - 0.5 * bu - 1.5 * cu) / (m * cu) + 1.0 / mc - (cu - mc * bu) / (2.0 * m * mc * bu);
+    Some(-1.5 * dln_delta / dln_r)
+}
+
+/// `φ′` by differences of `ln k` in `ln r` at fixed `A + B`: central with
+/// step [`LOG_STEP`], one-sided of second order within two steps of the
+/// circle `r = 1`.
 ///
 /// # Errors
 /// As [`HertzContact::try_new`].
-pub fn log_partials(
+pub fn log_slope_by_differences(
     a: f64,
     b: f64,
     m1: &Material,
     m2: &Material,
-) -> Result<(f64, f64), HertzError> {
+) -> Result<f64, HertzError> {
     let s = a + b;
     let l = (b / a).ln();
     let h = LOG_STEP;
@@ -72,17 +129,17 @@ pub fn log_partials(
         let r = lr.exp();
         Ok(of_relative(s / (1.0 + r), s * r / (1.0 + r), m1, m2)?.ln())
     };
-    let slope = if l >= 2.0 * h {
+    Ok(if l >= 2.0 * h {
         (ln_k(l + h)? - ln_k(l - h)?) / (2.0 * h)
     } else {
         (-3.0 * ln_k(l)? + 4.0 * ln_k(l + h)? - ln_k(l + 2.0 * h)?) / (2.0 * h)
-    };
-    Ok((-0.5 / s - slope / a, -0.5 / s + slope / b))
+    })
 }
 
 /// `(∂k/∂p, ∂k/∂φ)` of the stiffness `k` (N/m^{3/2}) of `pair`'s contact at
 /// its stationary angle `angle` at pose `x` (centre of mass, unit
-/// quaternion), `p` the generated functions' parameter vector: `∂k/∂p` in
+/// quaternion), `hertz` the contact's Hertz setup there, `p` the generated
+/// functions' parameter vector: `∂k/∂p` in
 /// N/m^{5/2}, `∂k/∂φ` per radian of rotation about the centre of mass (hole
 /// frame).
 ///
@@ -94,8 +151,9 @@ pub fn gradient(
     pair: Pair,
     angle: f64,
     x: &SVector<f64, 7>,
-    k: f64,
+    hertz: &HertzContact,
 ) -> Result<(Vector3<f64>, Vector3<f64>), HertzError> {
+    let k = hertz.stiffness();
     let c = Dual::constant;
     let phi = [
         Dual::variable(0.0, 3),
@@ -130,7 +188,7 @@ pub fn gradient(
         Pair::EdgeSide => (&prm.hole_material, &prm.peg_material),
         _ => (&prm.peg_material, &prm.hole_material),
     };
-    let (la, lb) = log_partials(a.v, b.v, m1, m2)?;
+    let (la, lb) = log_partials(a.v, b.v, &hertz.ellipticity, m1, m2)?;
     let g = |i: usize| k * (la * a.d[i] + lb * b.d[i]);
     Ok((
         Vector3::new(g(0), g(1), g(2)),

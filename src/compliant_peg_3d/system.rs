@@ -201,39 +201,34 @@ impl Peg3d {
         })
     }
 
-    /// The Hertz stiffness at a contact.
-    fn stiffness(&self, c: &ContactPoint, x: &SVector<f64, 7>) -> Result<f64, HertzError> {
-        match self.params.hertz {
-            HertzMode::Fixed(k) => Ok(k),
-            HertzMode::Curvature => {
-                let centre = Vector3::new(x[0], x[1], x[2]);
-                let curv = curvature::at(&self.params, c, &centre, &axis_of(x));
-                let (m1, m2) = match c.pair {
-                    Pair::EdgeSide => (&self.params.hole_material, &self.params.peg_material),
-                    _ => (&self.params.peg_material, &self.params.hole_material),
-                };
-                Ok(HertzContact::try_new(&curv, m1, m2, EllipticityMethod::Exact)?.stiffness())
-            }
-        }
+    /// The Hertz setup from the curvatures at a contact.
+    fn hertz_at(&self, c: &ContactPoint, x: &SVector<f64, 7>) -> Result<HertzContact, HertzError> {
+        let centre = Vector3::new(x[0], x[1], x[2]);
+        let curv = curvature::at(&self.params, c, &centre, &axis_of(x));
+        let (m1, m2) = match c.pair {
+            Pair::EdgeSide => (&self.params.hole_material, &self.params.peg_material),
+            _ => (&self.params.peg_material, &self.params.hole_material),
+        };
+        HertzContact::try_new(&curv, m1, m2, EllipticityMethod::Exact)
     }
 
-    /// `−(2/5) δ^{5/2} (∂k/∂p, ∂k/∂φ)` of a point contact (or of a col)
-    /// of `pair` at stationary angle `angle`, penetration `d`, stiffness
-    /// `k` ([`super::stiffness`]); zero with a fixed stiffness.
-    fn stiffness_wrench(
+    /// The stiffness `k` at a contact and, with [`HertzMode::Curvature`],
+    /// `−(2/5) δ^{5/2} (∂k/∂p, ∂k/∂φ)` ([`super::stiffness`]; zero with a
+    /// fixed stiffness), `c` a point contact or its col.
+    fn stiffness_and_term(
         &self,
-        pair: Pair,
-        angle: f64,
-        d: f64,
-        k: f64,
+        c: &ContactPoint,
         x: &SVector<f64, 7>,
-    ) -> Result<(Vector3<f64>, Vector3<f64>), HertzError> {
+    ) -> Result<(f64, Vector3<f64>, Vector3<f64>), HertzError> {
         match self.params.hertz {
-            HertzMode::Fixed(_) => Ok((Vector3::zeros(), Vector3::zeros())),
+            HertzMode::Fixed(k) => Ok((k, Vector3::zeros(), Vector3::zeros())),
             HertzMode::Curvature => {
-                let (gp, gphi) = stiffness::gradient(&self.params, &self.p, pair, angle, x, k)?;
+                let hz = self.hertz_at(c, x)?;
+                let (gp, gphi) =
+                    stiffness::gradient(&self.params, &self.p, c.pair, c.angle, x, &hz)?;
+                let d = c.penetration;
                 let e = -0.4 * d * d * d.sqrt();
-                Ok((gp * e, gphi * e))
+                Ok((hz.stiffness(), gp * e, gphi * e))
             }
         }
     }
@@ -265,10 +260,9 @@ impl Peg3d {
                 && prune::ring_applies(c.pair, prm, &x)
                 && weight < 1.0;
             let s = if blended { weight } else { 1.0 };
-            let k = self.stiffness(&c, &x)?;
+            let (k, mut kf, mut kt) = self.stiffness_and_term(&c, &x)?;
             let d = c.penetration;
             let vc = v + om.cross(&(c.point - centre));
-            let (mut kf, mut kt) = self.stiffness_wrench(c.pair, c.angle, d, k, &x)?;
             let (col_force, col_potential) = match &c.saddle {
                 Some(sd) => {
                     let at_col = ContactPoint {
@@ -280,10 +274,9 @@ impl Peg3d {
                         saddle: None,
                         ..c
                     };
-                    let kc1 = self.stiffness(&at_col, &x)?;
+                    let (kc1, cf, ct) = self.stiffness_and_term(&at_col, &x)?;
                     let kc = s * kc1;
                     let dc = sd.penetration;
-                    let (cf, ct) = self.stiffness_wrench(c.pair, sd.angle, dc, kc1, &x)?;
                     kf -= cf;
                     kt -= ct;
                     (kc * dc * dc.sqrt(), 0.4 * kc * dc * dc * dc.sqrt())
