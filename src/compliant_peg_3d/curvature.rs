@@ -156,7 +156,6 @@ fn cos_twice<T: Real>(t: &V3<T>, u: &V3<T>) -> T {
 /// derivatives of `A` and `B` (`super::stiffness`). Where the radicand
 /// vanishes (a circular contact) `B − A` is held at zero (its derivative
 /// is not defined there).
-#[allow(clippy::too_many_arguments)]
 pub fn relative<T: Real>(
     prm: &Peg3dParams,
     pair: Pair,

@@ -100,7 +100,7 @@ pub fn log_slope(el: &Ellipticity) -> Option<f64> {
     let k2 = el.kappa * el.kappa;
     let mc = 1.0 / k2;
     let m = (el.kappa - 1.0) * (el.kappa + 1.0) / k2;
-    if !(m >= NEAR_CIRCLE) {
+    if m.is_nan() || m < NEAR_CIRCLE {
         return None;
     }
     let (k, e, bu, cu) = (el.k, el.e, el.k_minus_e_over_m, el.e_minus_mc_k_over_m);
