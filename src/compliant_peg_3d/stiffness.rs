@@ -23,9 +23,9 @@
 //! direction and point come from the generated pair function in [`Dual`]
 //! numbers seeded with the centre of mass `p` and a small rotation `φ` of
 //! the peg about it (hole frame, `q → (1, φ/2) ⊗ q`), the stationary angle
-//! eliminated by `dα*/d(pose) = −(∂g′/∂(pose))/g″`
-//! ([`super::jacobian::at_stationary`]). The gradient in `(p, φ)` is
-//! directly a force through the centre of mass and a moment:
+//! eliminated by `dα*/d(pose) = −(∂g′/∂(pose))/g″` as in the exact
+//! Jacobian ([`super::jacobian`]). The gradient in `(p, φ)` is directly a
+//! force through the centre of mass and a moment:
 //! `F = −(2/5) δ^{5/2} ∂k/∂p`, `T = −(2/5) δ^{5/2} ∂k/∂φ` (a rotation about
 //! the centre keeps the quaternion unit to first order, so no constraint
 //! force enters).
