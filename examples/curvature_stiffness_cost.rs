@@ -8,9 +8,8 @@
 //! the machine's load beside the figures.
 
 use nalgebra::{SVector, Unit, UnitQuaternion, Vector3};
-use pegdyn::compliant_peg_3d::system::{self, ContactForce};
-use pegdyn::compliant_peg_3d::{HertzMode, Peg3d, Peg3dParams, curvature, pose_state, stiffness};
-use pegdyn::hertz::{EllipticityMethod, HertzContact};
+use pegdyn::compliant_peg_3d::system::ContactForce;
+use pegdyn::compliant_peg_3d::{HertzMode, Peg3d, Peg3dParams, pose_state, stiffness};
 use pegdyn::system::OdeSystem;
 use std::hint::black_box;
 use std::time::Instant;
@@ -73,16 +72,7 @@ fn main() {
             black_box(fixed.rhs(0.0, black_box(&y)));
         });
         let x: SVector<f64, 7> = Peg3d::pose(&y);
-        let centre = Vector3::new(x[0], x[1], x[2]);
-        let axis = system::axis_of(&x);
-        let hertz = |f: &ContactForce| {
-            HertzContact::try_new(
-                &curvature::at(&prm, &f.contact, &centre, &axis),
-                &prm.peg_material,
-                &prm.hole_material,
-                EllipticityMethod::Exact,
-            )
-        };
+        let hertz = |f: &ContactForce| stiffness::hertz_at(&prm, &f.contact, &x);
         let t_term = per_call(n, || {
             for f in &forces {
                 if let Ok(hz) = hertz(f) {

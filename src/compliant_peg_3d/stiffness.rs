@@ -35,7 +35,7 @@ use super::dual::Dual;
 use super::face;
 use super::jacobian;
 use super::params::Peg3dParams;
-use super::search::Pair;
+use super::search::{ContactPoint, Pair};
 use crate::hertz::{
     Curvatures, Ellipticity, EllipticityMethod, HertzContact, HertzError, Material,
 };
@@ -194,4 +194,44 @@ pub fn gradient(
         Vector3::new(g(0), g(1), g(2)),
         Vector3::new(g(3), g(4), g(5)),
     ))
+}
+
+/// The Hertz setup from the curvatures at contact `c` at pose `x`
+/// ([`curvature::at`]; body 1 the hole for [`Pair::EdgeSide`], the peg
+/// otherwise).
+///
+/// # Errors
+/// As [`HertzContact::try_new`].
+pub fn hertz_at(
+    prm: &Peg3dParams,
+    c: &ContactPoint,
+    x: &SVector<f64, 7>,
+) -> Result<HertzContact, HertzError> {
+    let centre = Vector3::new(x[0], x[1], x[2]);
+    let curv = curvature::at(prm, c, &centre, &super::system::axis_of(x));
+    let (m1, m2) = match c.pair {
+        Pair::EdgeSide => (&prm.hole_material, &prm.peg_material),
+        _ => (&prm.peg_material, &prm.hole_material),
+    };
+    HertzContact::try_new(&curv, m1, m2, EllipticityMethod::Exact)
+}
+
+/// The stiffness `k` (N/m^{3/2}) from the curvatures at contact `c` (a
+/// point or a col, at its stationary angle) at pose `x`, with the force
+/// `−(2/5) δ^{5/2} ∂k/∂p` (N) and moment `−(2/5) δ^{5/2} ∂k/∂φ` (N·m) of
+/// [`gradient`], `δ` the contact's penetration.
+///
+/// # Errors
+/// As [`HertzContact::try_new`].
+pub fn with_term(
+    prm: &Peg3dParams,
+    p: &SVector<f64, 16>,
+    c: &ContactPoint,
+    x: &SVector<f64, 7>,
+) -> Result<(f64, Vector3<f64>, Vector3<f64>), HertzError> {
+    let hz = hertz_at(prm, c, x)?;
+    let (gp, gphi) = gradient(prm, p, c.pair, c.angle, x, &hz)?;
+    let d = c.penetration;
+    let e = -0.4 * d * d * d.sqrt();
+    Ok((hz.stiffness(), gp * e, gphi * e))
 }

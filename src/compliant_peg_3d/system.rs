@@ -31,7 +31,6 @@
 //! generalized forces (a wrist spring–damper, a prescribed frame) add to
 //! the same wrench.
 
-use super::curvature;
 use super::face;
 use super::jacobian;
 use super::params::{HertzMode, Peg3dParams};
@@ -39,7 +38,7 @@ use super::prune;
 use super::search::{ContactPoint, Pair, Search};
 use super::stiffness;
 use crate::generated::compliant_peg_3d as generated;
-use crate::hertz::{EllipticityMethod, HertzContact, HertzError};
+use crate::hertz::HertzError;
 use crate::system::OdeSystem;
 use nalgebra::{SMatrix, SVector, UnitQuaternion, Vector3};
 use std::cell::RefCell;
@@ -201,20 +200,9 @@ impl Peg3d {
         })
     }
 
-    /// The Hertz setup from the curvatures at a contact.
-    fn hertz_at(&self, c: &ContactPoint, x: &SVector<f64, 7>) -> Result<HertzContact, HertzError> {
-        let centre = Vector3::new(x[0], x[1], x[2]);
-        let curv = curvature::at(&self.params, c, &centre, &axis_of(x));
-        let (m1, m2) = match c.pair {
-            Pair::EdgeSide => (&self.params.hole_material, &self.params.peg_material),
-            _ => (&self.params.peg_material, &self.params.hole_material),
-        };
-        HertzContact::try_new(&curv, m1, m2, EllipticityMethod::Exact)
-    }
-
     /// The stiffness `k` at a contact and, with [`HertzMode::Curvature`],
-    /// `−(2/5) δ^{5/2} (∂k/∂p, ∂k/∂φ)` ([`super::stiffness`]; zero with a
-    /// fixed stiffness), `c` a point contact or its col.
+    /// `−(2/5) δ^{5/2} (∂k/∂p, ∂k/∂φ)` ([`stiffness::with_term`]; zero with
+    /// a fixed stiffness), `c` a point contact or its col.
     fn stiffness_and_term(
         &self,
         c: &ContactPoint,
@@ -222,14 +210,7 @@ impl Peg3d {
     ) -> Result<(f64, Vector3<f64>, Vector3<f64>), HertzError> {
         match self.params.hertz {
             HertzMode::Fixed(k) => Ok((k, Vector3::zeros(), Vector3::zeros())),
-            HertzMode::Curvature => {
-                let hz = self.hertz_at(c, x)?;
-                let (gp, gphi) =
-                    stiffness::gradient(&self.params, &self.p, c.pair, c.angle, x, &hz)?;
-                let d = c.penetration;
-                let e = -0.4 * d * d * d.sqrt();
-                Ok((hz.stiffness(), gp * e, gphi * e))
-            }
+            HertzMode::Curvature => stiffness::with_term(&self.params, &self.p, c, x),
         }
     }
 
