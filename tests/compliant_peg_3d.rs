@@ -766,12 +766,15 @@ fn pruned_pairs_never_hide_a_contact() {
 }
 
 #[test]
-fn curvature_stiffness_leaves_a_small_energy_defect() {
-    // With the stiffness from the curvatures at every evaluation, the force
-    // k δ^{3/2} n leaves out −(2/5) δ^{5/2} ∂k/∂(pose): the balance, exact
-    // for a fixed k, then drifts by about the variation of k (0.3 % here)
-    // times the elastic energy.
+fn curvature_stiffness_landing_closes_the_energy_balance() {
+    // With the stiffness from the curvatures at every evaluation the force
+    // includes −(2/5) δ^{5/2} ∂k/∂(pose), so the contact force is the full
+    // −∂V/∂(pose) and T + m g z + V − W stays constant to the integrator's
+    // tolerance, although k moves by a fraction of a per cent along the
+    // landing (without the term the balance drifted by about that fraction
+    // of the peak elastic energy).
     let prm = fig9();
+    assert_eq!(prm.hertz, HertzMode::Curvature);
     let (sys, y0) = landing(prm);
     let e0 = sys.energy_balance(&y0).unwrap();
     let sol = solve(
@@ -784,19 +787,26 @@ fn curvature_stiffness_leaves_a_small_energy_defect() {
     .unwrap();
     assert!(sol.stop.is_success(), "{:?}", sol.stop);
     let (mut worst, mut peak, mut k) = (0.0_f64, 0.0_f64, (f64::MAX, 0.0_f64));
+    let mut term = 0.0_f64;
     for y in &sol.x {
         worst = worst.max((sys.energy_balance(y).unwrap() - e0).abs());
         for f in sys.forces(y).unwrap() {
             peak = peak.max(f.potential);
             k = (k.0.min(f.stiffness), k.1.max(f.stiffness));
+            term = term.max(f.stiffness_torque.norm());
         }
     }
     let spread = (k.1 - k.0) / k.0;
     eprintln!(
-        "curvature stiffness: balance defect {worst:e} J, peak elastic energy {peak:e} J, k spread {spread:e}"
+        "curvature stiffness: {} steps, balance drift {worst:e} J, peak elastic energy {peak:e} J, k spread {spread:e}, largest stiffness moment {term:e} N·m",
+        sol.x.len()
     );
     assert!(peak > 1e-3, "peak elastic energy {peak} J");
-    assert!(worst < 2.0 * spread * peak, "defect {worst} J");
+    assert!(spread > 1e-3, "k spread {spread}");
+    assert!(term > 0.0, "no stiffness term");
+    // Without the term the drift was 1.16e-5 J; with it, the bound of the
+    // fixed-stiffness landings (whose drift is a few 1e-11 J here).
+    assert!(worst < 1e-8, "drift {worst} J");
 }
 
 #[test]

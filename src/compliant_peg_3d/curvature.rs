@@ -15,6 +15,7 @@
 use super::params::Peg3dParams;
 use super::search::{ContactPoint, Pair};
 use crate::hertz::Curvatures;
+use crate::scalar::Real;
 use nalgebra::Vector3;
 
 /// `(κ_parallel, κ_meridian, ê_θ)` of a torus turning about the axis through
@@ -93,4 +94,118 @@ pub fn at(
             }
         }
     }
+}
+
+type V3<T> = [T; 3];
+
+fn sub3<T: Real>(a: &V3<T>, b: &V3<T>) -> V3<T> {
+    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
+}
+
+fn dot3<T: Real>(a: &V3<T>, b: &V3<T>) -> T {
+    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+}
+
+fn along<T: Real>(a: &V3<T>, s: T) -> V3<T> {
+    [a[0] * s, a[1] * s, a[2] * s]
+}
+
+fn add3<T: Real>(a: &V3<T>, b: &V3<T>) -> V3<T> {
+    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+}
+
+/// [`torus`] in any [`Real`] scalar: `(κ_parallel, κ_meridian, ê_θ)`, with
+/// `ê_θ = axis × ê_ρ` left unnormalized (`|ê_θ| = |axis|`).
+fn torus_generic<T: Real>(
+    origin: &V3<T>,
+    axis: &V3<T>,
+    x: &V3<T>,
+    n: &V3<T>,
+    tube: f64,
+) -> (T, T, V3<T>) {
+    let rel = sub3(x, origin);
+    let radial = sub3(&rel, &along(axis, dot3(&rel, axis)));
+    let rho = dot3(&radial, &radial).sqrt();
+    let e_rho = along(&radial, T::from_f64(1.0) / rho);
+    let t = [
+        axis[1] * e_rho[2] - axis[2] * e_rho[1],
+        axis[2] * e_rho[0] - axis[0] * e_rho[2],
+        axis[0] * e_rho[1] - axis[1] * e_rho[0],
+    ];
+    (dot3(n, &e_rho) / rho, T::from_f64(1.0 / tube), t)
+}
+
+/// `cos 2ω = 2 (t·u)² / (|t|² |u|²) − 1` of the angle `ω` between two
+/// directions (smooth where `ω` itself, through `acos`, is not: at 0).
+fn cos_twice<T: Real>(t: &V3<T>, u: &V3<T>) -> T {
+    let c = dot3(t, u);
+    T::from_f64(2.0) * c * c / (dot3(t, t) * dot3(u, u)) - T::from_f64(1.0)
+}
+
+/// The relative curvatures `(A, B)` (1/m) of the contact of [`at`] in any
+/// [`Real`] scalar, from the same surfaces and points: `point`, `normal`,
+/// `penetration` of the contact, `centre` and `axis` of the peg, and
+///
+/// ```text
+/// A + B = ½ Σκ,   B − A = ½ √((κ₁₁ − κ₁₂)² + (κ₂₁ − κ₂₂)² + 2(κ₁₁ − κ₁₂)(κ₂₁ − κ₂₂) cos 2ω)
+/// ```
+///
+/// ([`crate::hertz::Curvatures::relative`], written with `cos 2ω` of the
+/// two directions so that dual numbers carry its derivative through
+/// `ω = 0`). Evaluated at dual numbers of the pose, it gives the exact
+/// derivatives of `A` and `B` (`super::stiffness`). Where the radicand
+/// vanishes (a circular contact) `B − A` is held at zero (its derivative
+/// is not defined there).
+pub fn relative<T: Real>(
+    prm: &Peg3dParams,
+    pair: Pair,
+    point: &V3<T>,
+    normal: &V3<T>,
+    penetration: T,
+    centre: &V3<T>,
+    axis: &V3<T>,
+) -> (T, T) {
+    let c = T::from_f64;
+    let zero = [c(0.0), c(0.0), c(0.0)];
+    let ez = [c(0.0), c(0.0), c(1.0)];
+    let half = penetration * c(0.5);
+    let (k1, k2, cos2) = match pair {
+        Pair::EdgeSide => {
+            let surface = add3(point, &along(normal, half));
+            let (kp, km, t) = torus_generic(&zero, &ez, &surface, normal, prm.mouth_fillet);
+            (
+                [kp, km],
+                [c(0.0), c(1.0 / prm.peg_radius())],
+                cos_twice(&t, axis),
+            )
+        }
+        Pair::RimEdge => {
+            let out = along(normal, c(-1.0));
+            let rim = add3(point, &along(&out, half));
+            let mouth = add3(point, &along(normal, half));
+            let (kp1, km1, t1) = torus_generic(centre, axis, &rim, &out, prm.rim_fillet);
+            let (kp2, km2, t2) = torus_generic(&zero, &ez, &mouth, normal, prm.mouth_fillet);
+            ([kp1, km1], [kp2, km2], cos_twice(&t1, &t2))
+        }
+        Pair::RimWall | Pair::RimTop | Pair::RimBottom => {
+            let out = along(normal, c(-1.0));
+            let surface = add3(point, &along(&out, half));
+            let (kp, km, t) = torus_generic(centre, axis, &surface, &out, prm.rim_fillet);
+            let body2 = if pair == Pair::RimWall {
+                [c(0.0), c(-1.0 / prm.bore_radius())]
+            } else {
+                [c(0.0), c(0.0)]
+            };
+            ([kp, km], body2, cos_twice(&t, &ez))
+        }
+    };
+    let (d1, d2) = (k1[0] - k1[1], k2[0] - k2[1]);
+    let half_sum = (k1[0] + k1[1] + k2[0] + k2[1]) * c(0.25);
+    let radicand = d1 * d1 + d2 * d2 + c(2.0) * d1 * d2 * cos2;
+    let half_diff = if radicand.to_f64() > 0.0 {
+        radicand.sqrt() * c(0.25)
+    } else {
+        c(0.0)
+    };
+    (half_sum - half_diff, half_sum + half_diff)
 }

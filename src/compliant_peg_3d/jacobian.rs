@@ -22,8 +22,9 @@
 //! contact, which cols are subtracted) is that of the state; the stiffness
 //! `k` of each contact is held at its value (exact for
 //! [`super::HertzMode::Fixed`]; with [`super::HertzMode::Curvature`] the
-//! small variation of `k` with the pose is left out of the Jacobian, as it
-//! is of the force). The ring of the peg's bottom on a flat
+//! small variation of `k` with the pose is left out of the Jacobian: the
+//! force's term `−(2/5) δ^{5/2} ∂k/∂(pose)` ([`super::stiffness`]) enters
+//! the wrench's value but not its derivative). The ring of the peg's bottom on a flat
 //! ([`super::face`]) is evaluated in dual numbers as a whole: its closed
 //! form, the hand-over weight of the ring and of the plane pairs' points,
 //! and the hand-over moment.
@@ -84,7 +85,7 @@ fn eval(
 /// Gap, force direction and point of `pair` at its stationary angle
 /// `angle`, as duals in the state alone (the angle's slot eliminated by
 /// `dα*/dy = −(∂g′/∂y) / g″`).
-fn at_stationary(
+pub(super) fn at_stationary(
     pair: Pair,
     x: &SVector<Dual, 7>,
     angle: f64,
@@ -214,6 +215,16 @@ pub fn wrench(
             w[3 + m] = w[3 + m] + torque[m] + extra[m];
         }
         w[6] = w[6] + (q_n - qe) * ddot - dot(&ft, &vt);
+        if f.stiffness_force != nalgebra::Vector3::zeros()
+            || f.stiffness_torque != nalgebra::Vector3::zeros()
+        {
+            // The curvature stiffness's −(2/5) δ^{5/2} ∂k/∂(pose), held
+            // constant (its value only).
+            for m in 0..3 {
+                w[m] = w[m] + Dual::constant(f.stiffness_force[m]);
+                w[3 + m] = w[3 + m] + Dual::constant(f.stiffness_torque[m]);
+            }
+        }
         if let Some(s) = &c.saddle {
             let (gap_c, n_c, pt_c) = at_stationary(c.pair, &x, s.angle, &p);
             let dc = -gap_c;

@@ -17,6 +17,8 @@
 //!   over to the rim's Hertz point contact as the tilt grows.
 //! - [`curvature`]: the principal curvatures of both surfaces at a contact
 //!   point, for the Hertz ellipse.
+//! - [`stiffness`]: the pose derivative of the curvature stiffness, whose
+//!   term `−(2/5) δ^{5/2} ∂k/∂(pose)` completes the elastic force.
 //! - [`system`]: contact forces (Hertz, Hunt–Crossley damping, regularized
 //!   Coulomb friction with the material point's velocity) summed into the
 //!   wrench of the generated Newton–Euler right-hand side.
@@ -32,6 +34,7 @@ pub mod params;
 pub mod prescribed;
 pub mod prune;
 pub mod search;
+pub mod stiffness;
 pub mod system;
 
 pub use merge::Saddle;

@@ -9,6 +9,7 @@
 //! ```text
 //! δ̇   = −n·v_c
 //! Q_e = k δ^{3/2}                          (Hertz; k from the curvatures or fixed)
+//! F_k = −(2/5) δ^{5/2} ∂k/∂p,  T_k = −(2/5) δ^{5/2} ∂k/∂φ   (k from the curvatures)
 //! Q   = max(0, Q_e (1 + α δ̇))              (Hunt–Crossley damping α, s/m)
 //! v_t = v_c − (n·v_c) n,   F_t = −μ Q v_t / √(|v_t|² + v_s²)
 //! F   = Q n + F_t,   T = (x_c − p) × F     (about the centre of mass)
@@ -23,20 +24,21 @@
 //! weighted by `s`, and the hand-over moment is added as a pure moment
 //! ([`ContactForce::torque`]).
 //!
-//! With a fixed `k`, `T + m g z + Σ V − W + S` is constant (each force is
-//! `−∂V/∂x`: a point's at its minimizing angle, the ring's in closed
-//! form). Further
+//! With the stiffness from the curvatures, each point adds the force and
+//! moment `−(2/5) δ^{5/2} ∂k/∂(pose)` ([`super::stiffness`]). Then
+//! `T + m g z + Σ V − W + S` is constant (each force is `−∂V/∂x`: a
+//! point's at its minimizing angle, the ring's in closed form). Further
 //! generalized forces (a wrist spring–damper, a prescribed frame) add to
 //! the same wrench.
 
-use super::curvature;
 use super::face;
 use super::jacobian;
 use super::params::{HertzMode, Peg3dParams};
 use super::prune;
 use super::search::{ContactPoint, Pair, Search};
+use super::stiffness;
 use crate::generated::compliant_peg_3d as generated;
-use crate::hertz::{EllipticityMethod, HertzContact, HertzError};
+use crate::hertz::HertzError;
 use crate::system::OdeSystem;
 use nalgebra::{SMatrix, SVector, UnitQuaternion, Vector3};
 use std::cell::RefCell;
@@ -96,6 +98,15 @@ pub struct ContactForce {
     /// hand-over moment of [`super::face::blend_moment`] on a ring; zero
     /// otherwise.
     pub torque: Vector3<f64>,
+    /// With [`HertzMode::Curvature`], the force `−(2/5) δ^{5/2} ∂k/∂p`
+    /// (N, hole frame, through the centre of mass) of the stiffness's
+    /// variation with the pose ([`super::stiffness`]), weighted like the
+    /// point and less its col's; zero otherwise. Not part of
+    /// [`ContactForce::normal_force`].
+    pub stiffness_force: Vector3<f64>,
+    /// The matching moment `−(2/5) δ^{5/2} ∂k/∂φ` (N·m, hole frame, `φ` a
+    /// rotation about the centre of mass); zero with a fixed stiffness.
+    pub stiffness_torque: Vector3<f64>,
 }
 
 /// The compliant 3-D peg.
@@ -189,19 +200,17 @@ impl Peg3d {
         })
     }
 
-    /// The Hertz stiffness at a contact.
-    fn stiffness(&self, c: &ContactPoint, x: &SVector<f64, 7>) -> Result<f64, HertzError> {
+    /// The stiffness `k` at a contact and, with [`HertzMode::Curvature`],
+    /// `−(2/5) δ^{5/2} (∂k/∂p, ∂k/∂φ)` ([`stiffness::with_term`]; zero with
+    /// a fixed stiffness), `c` a point contact or its col.
+    fn stiffness_and_term(
+        &self,
+        c: &ContactPoint,
+        x: &SVector<f64, 7>,
+    ) -> Result<(f64, Vector3<f64>, Vector3<f64>), HertzError> {
         match self.params.hertz {
-            HertzMode::Fixed(k) => Ok(k),
-            HertzMode::Curvature => {
-                let centre = Vector3::new(x[0], x[1], x[2]);
-                let curv = curvature::at(&self.params, c, &centre, &axis_of(x));
-                let (m1, m2) = match c.pair {
-                    Pair::EdgeSide => (&self.params.hole_material, &self.params.peg_material),
-                    _ => (&self.params.peg_material, &self.params.hole_material),
-                };
-                Ok(HertzContact::try_new(&curv, m1, m2, EllipticityMethod::Exact)?.stiffness())
-            }
+            HertzMode::Fixed(k) => Ok((k, Vector3::zeros(), Vector3::zeros())),
+            HertzMode::Curvature => stiffness::with_term(&self.params, &self.p, c, x),
         }
     }
 
@@ -232,7 +241,7 @@ impl Peg3d {
                 && prune::ring_applies(c.pair, prm, &x)
                 && weight < 1.0;
             let s = if blended { weight } else { 1.0 };
-            let k = self.stiffness(&c, &x)?;
+            let (k, mut kf, mut kt) = self.stiffness_and_term(&c, &x)?;
             let d = c.penetration;
             let vc = v + om.cross(&(c.point - centre));
             let (col_force, col_potential) = match &c.saddle {
@@ -246,8 +255,11 @@ impl Peg3d {
                         saddle: None,
                         ..c
                     };
-                    let kc = s * self.stiffness(&at_col, &x)?;
+                    let (kc1, cf, ct) = self.stiffness_and_term(&at_col, &x)?;
+                    let kc = s * kc1;
                     let dc = sd.penetration;
+                    kf -= cf;
+                    kt -= ct;
                     (kc * dc * dc.sqrt(), 0.4 * kc * dc * dc * dc.sqrt())
                 }
                 None => (0.0, 0.0),
@@ -256,7 +268,13 @@ impl Peg3d {
             if blended {
                 v_point[Pair::ALL.iter().position(|p| *p == c.pair).unwrap_or(0)] += potential / s;
             }
-            out.push(self.contact_force(c, s * k, s * k * d * d.sqrt(), vc, potential, col_force));
+            let mut f =
+                self.contact_force(c, s * k, s * k * d * d.sqrt(), vc, potential, col_force);
+            if self.params.hertz == HertzMode::Curvature {
+                f.stiffness_force = kf * s;
+                f.stiffness_torque = kt * s;
+            }
+            out.push(f);
         }
         for c in rings {
             let Some(z0) = face::plane(c.pair, prm) else {
@@ -310,6 +328,8 @@ impl Peg3d {
             col_force,
             elastic: qe,
             torque: Vector3::zeros(),
+            stiffness_force: Vector3::zeros(),
+            stiffness_torque: Vector3::zeros(),
         }
     }
 
@@ -344,13 +364,20 @@ impl Peg3d {
                     w[3 + k] += t[k];
                 }
             }
+            if f.stiffness_force != Vector3::zeros() || f.stiffness_torque != Vector3::zeros() {
+                // −(2/5) δ^{5/2} ∂k/∂(pose) of the curvature stiffness.
+                for k in 0..3 {
+                    w[k] += f.stiffness_force[k];
+                    w[3 + k] += f.stiffness_torque[k];
+                }
+            }
             w[6] += (f.normal_force - qe) * ddot - f.friction.dot(&vt);
         }
         w
     }
 
     /// `T + m g z + Σ (2/5) k δ^{5/2} − W + S` at state `y` (J): constant
-    /// along solutions when the stiffness is fixed.
+    /// along solutions.
     ///
     /// # Errors
     /// As [`Peg3d::forces`].
