@@ -867,3 +867,14 @@ fn axis_of_a_pose_is_the_rotated_body_axis() {
         assert!((a - expect).norm() < 1e-15, "{a} vs {expect}");
     }
 }
+
+#[test]
+fn state_names_follow_the_generated_state_layout() {
+    use pegdyn::compliant_peg_3d::insertion::STATE_NAMES;
+    use pegdyn::generated::compliant_peg_3d::Y_NAMES;
+    use pegdyn::system::OdeSystem;
+    // A non-finite stop names the component by these (hostile_integrator).
+    assert_eq!(OdeSystem::state_names(&Peg3d::new(fig9())), &Y_NAMES[..]);
+    assert_eq!(&STATE_NAMES[..15], &Y_NAMES[..]);
+    assert_eq!(STATE_NAMES[15], "robot_work");
+}

@@ -31,6 +31,28 @@ use std::cell::RefCell;
 /// State dimension of [`Insertion`].
 pub const N_STATE: usize = 16;
 
+/// Names of the components of [`Insertion`]'s state: the peg's
+/// (`generated::compliant_peg_3d::Y_NAMES`) and the work done on it by the
+/// robot through the wrist and by the follower moment (J).
+pub const STATE_NAMES: [&str; N_STATE] = [
+    "px",
+    "py",
+    "pz",
+    "q0",
+    "q1",
+    "q2",
+    "q3",
+    "vx",
+    "vy",
+    "vz",
+    "wx",
+    "wy",
+    "wz",
+    "work",
+    "dissipation",
+    "robot_work",
+];
+
 /// Smoothing `s` of the follower moment's direction near `γ = 0`.
 const FOLLOWER_SCALE: f64 = 1e-3;
 
@@ -315,6 +337,10 @@ impl OdeSystem<N_STATE> for Insertion {
                 SVector::repeat(f64::NAN)
             }
         }
+    }
+
+    fn state_names(&self) -> &'static [&'static str] {
+        &STATE_NAMES
     }
 }
 

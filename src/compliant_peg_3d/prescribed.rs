@@ -135,4 +135,8 @@ impl OdeSystem<7> for PrescribedPeg {
         let a = f / prm.mass;
         SVector::<f64, 7>::from_column_slice(&[y[3], y[4], y[5], a.x, a.y, a.z, w[6]])
     }
+
+    fn state_names(&self) -> &'static [&'static str] {
+        &["px", "py", "pz", "vx", "vy", "vz", "dissipation"]
+    }
 }

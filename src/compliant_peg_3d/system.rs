@@ -414,4 +414,8 @@ impl OdeSystem<15> for Peg3d {
     fn time_derivative(&self, _t: f64, _y: &SVector<f64, 15>) -> SVector<f64, 15> {
         SVector::zeros()
     }
+
+    fn state_names(&self) -> &'static [&'static str] {
+        &generated::Y_NAMES
+    }
 }
