@@ -34,24 +34,16 @@ pub const N_STATE: usize = 16;
 /// Names of the components of [`Insertion`]'s state: the peg's
 /// (`generated::compliant_peg_3d::Y_NAMES`) and the work done on it by the
 /// robot through the wrist and by the follower moment (J).
-pub const STATE_NAMES: [&str; N_STATE] = [
-    "px",
-    "py",
-    "pz",
-    "q0",
-    "q1",
-    "q2",
-    "q3",
-    "vx",
-    "vy",
-    "vz",
-    "wx",
-    "wy",
-    "wz",
-    "work",
-    "dissipation",
-    "robot_work",
-];
+pub const STATE_NAMES: [&str; N_STATE] = {
+    let mut names = [""; N_STATE];
+    let mut i = 0;
+    while i < generated::Y_NAMES.len() {
+        names[i] = generated::Y_NAMES[i];
+        i += 1;
+    }
+    names[N_STATE - 1] = "robot_work";
+    names
+};
 
 /// Smoothing `s` of the follower moment's direction near `γ = 0`.
 const FOLLOWER_SCALE: f64 = 1e-3;
