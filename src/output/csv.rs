@@ -85,17 +85,12 @@ impl CsvWriter {
         };
         let header: Vec<String> = header.iter().map(|h| (*h).to_owned()).collect();
         if let Some(sink) = TableSink::for_path(path, &header) {
-            return Ok(CsvWriter {
-                path: path.to_path_buf(),
-                tmp: path.to_path_buf(),
-                out: Sink::Memory(Some(sink)),
-                columns: header.len(),
-                infinite_ok: vec![false; header.len()],
+            return Ok(Self::with_sink(
+                path,
+                path.to_path_buf(),
+                Sink::Memory(Some(sink)),
                 header,
-                rows: 0,
-                line: String::new(),
-                done: false,
-            });
+            ));
         }
         if super::atomic::is_protected(path) {
             return Err(OutputError::WouldOverwriteScene {
@@ -104,21 +99,26 @@ impl CsvWriter {
         }
         let tmp = super::atomic::temp_path(path);
         let file = File::create(&tmp).map_err(io)?;
-        let mut w = CsvWriter {
+        let mut w = Self::with_sink(path, tmp, Sink::File(BufWriter::new(file)), header);
+        if let Sink::File(out) = &mut w.out {
+            writeln!(out, "{}", w.header.join(",")).map_err(io)?;
+        }
+        Ok(w)
+    }
+
+    /// A writer with no row yet: every column refuses ±infinity.
+    fn with_sink(path: &Path, tmp: std::path::PathBuf, out: Sink, header: Vec<String>) -> Self {
+        CsvWriter {
             path: path.to_path_buf(),
             tmp,
-            out: Sink::File(BufWriter::new(file)),
+            out,
             columns: header.len(),
             infinite_ok: vec![false; header.len()],
             header,
             rows: 0,
             line: String::new(),
             done: false,
-        };
-        if let Sink::File(out) = &mut w.out {
-            writeln!(out, "{}", w.header.join(",")).map_err(io)?;
         }
-        Ok(w)
     }
 
     /// Lets column `name` hold ±infinity where the table means it (e.g. "no

@@ -50,7 +50,7 @@ use std::path::{Path, PathBuf};
 
 pub use document::Document;
 pub use integrator::{IntegratorSpec, Method};
-pub use progress::Progress;
+pub use progress::{Progress, par_map_counted};
 pub use summary::{EventRecord, IntegrationSummary, Metric, RunSummary, significant};
 
 use crate::error::{RunError, SceneError, SceneErrors};

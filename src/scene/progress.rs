@@ -119,6 +119,36 @@ impl Drop for Progress {
     }
 }
 
+/// `f` over `items` in parallel (rayon), counting each finished item on
+/// `progress` as `what` and finishing the line at the end; results in item
+/// order.
+pub fn par_map_counted<T: Sync, R: Send>(
+    items: &[T],
+    progress: &mut Progress,
+    what: &str,
+    f: impl Fn(&T) -> R + Sync + Send,
+) -> Vec<R> {
+    use rayon::prelude::*;
+    use std::sync::Mutex;
+    use std::sync::atomic::{AtomicUsize, Ordering};
+    let total = items.len();
+    let done = AtomicUsize::new(0);
+    let shared = Mutex::new(&mut *progress);
+    let out = items
+        .par_iter()
+        .map(|item| {
+            let r = f(item);
+            let n = done.fetch_add(1, Ordering::Relaxed) + 1;
+            if let Ok(mut pr) = shared.lock() {
+                pr.update_count(n, total, what);
+            }
+            r
+        })
+        .collect();
+    progress.finish();
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

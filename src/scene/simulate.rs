@@ -50,14 +50,25 @@ pub fn integrate<'a, const N: usize, S: OdeSystem<N>>(
     events: Vec<Event<'a, N>>,
     progress: &'a mut Progress,
 ) -> Result<Solution<N>, RunError> {
-    let (method, options) = solver_config(spec)?;
-    progress.set_span(spec.t0, spec.t_end);
-    let mut solver = Solver::new(method, options);
-    for e in events {
-        solver = solver.with_event(e);
-    }
-    let mut solver = solver.with_progress(|t| progress.update(t));
+    let mut solver =
+        configured(spec, events, true, progress)?.with_progress(|t| progress.update(t));
     Ok(solver.solve(system, spec.t0, x0, spec.t_end)?)
+}
+
+/// The solver of `spec` with `events`, storing its samples or not; sets
+/// `progress`'s span.
+fn configured<'a, const N: usize>(
+    spec: &IntegratorSpec,
+    events: Vec<Event<'a, N>>,
+    store: bool,
+    progress: &mut Progress,
+) -> Result<Solver<'a, N>, RunError> {
+    let (method, mut options) = solver_config(spec)?;
+    options.store = store;
+    progress.set_span(spec.t0, spec.t_end);
+    Ok(events
+        .into_iter()
+        .fold(Solver::new(method, options), Solver::with_event))
 }
 
 /// As [`integrate`], without storing the samples: each sample goes to
@@ -77,16 +88,10 @@ pub fn integrate_streaming<'a, const N: usize, S: OdeSystem<N>>(
     progress: &'a mut Progress,
     mut sink: impl FnMut(f64, &SVector<f64, N>) -> Result<(), RunError> + 'a,
 ) -> Result<Solution<N>, RunError> {
-    let (method, mut options) = solver_config(spec)?;
-    options.store = false;
-    progress.set_span(spec.t0, spec.t_end);
+    let solver = configured(spec, events, false, progress)?;
     let mut failed: Option<RunError> = None;
     let sol = {
         let failed = &mut failed;
-        let mut solver = Solver::new(method, options);
-        for e in events {
-            solver = solver.with_event(e);
-        }
         let mut solver = solver
             .with_progress(|t| progress.update(t))
             .with_observer(move |t, x| {

@@ -35,10 +35,6 @@ pub mod depth;
 mod figures;
 pub mod report;
 
-use std::sync::Mutex;
-use std::sync::atomic::{AtomicUsize, Ordering};
-
-use rayon::prelude::*;
 use serde::Deserialize;
 
 use super::insert_3d::rcc::{Built, RccScene, run_one};
@@ -50,7 +46,8 @@ use crate::scene::limits::WorkItem;
 use crate::scene::ranges::design_margins as ranges;
 use crate::scene::validate::Checker;
 use crate::scene::{
-    Document, IntegratorSpec, Kind, Progress, RunContext, RunSummary, Scene, significant,
+    Document, IntegratorSpec, Kind, Progress, RunContext, RunSummary, Scene, par_map_counted,
+    significant,
 };
 use chamfer::{Capture, InitialError, Verdict};
 
@@ -310,25 +307,11 @@ impl Design {
     /// # Errors
     /// The first run's integrator refusal or Hertz setup error.
     pub fn run_grid(&self, progress: &mut Progress) -> Result<Vec<GridRun>, RunError> {
-        let total = self.points.len();
-        let done = AtomicUsize::new(0);
-        let progress = Mutex::new(progress);
-        let rows: Vec<Result<GridRun, RunError>> = self
-            .points
-            .par_iter()
-            .map(|(p, b)| {
-                let r = self.one(*p, b);
-                let n = done.fetch_add(1, Ordering::Relaxed) + 1;
-                if let Ok(mut pr) = progress.lock() {
-                    pr.update_count(n, total, "insertion");
-                }
-                r
-            })
-            .collect();
-        if let Ok(mut pr) = progress.lock() {
-            pr.finish();
-        }
-        rows.into_iter().collect()
+        par_map_counted(&self.points, progress, "insertion", |(p, b)| {
+            self.one(*p, b)
+        })
+        .into_iter()
+        .collect()
     }
 
     fn one(&self, p: Point, b: &Built) -> Result<GridRun, RunError> {

@@ -23,10 +23,6 @@
 //! time of seated runs, else empty) and `<name>.svg`: per rotation pair,
 //! the outcome and the peak contact force over the error grid.
 
-use std::sync::Mutex;
-use std::sync::atomic::{AtomicUsize, Ordering};
-
-use rayon::prelude::*;
 use serde::Deserialize;
 
 use super::rcc::{Built, RccScene, run_one};
@@ -38,6 +34,7 @@ use crate::scene::limits::WorkItem;
 use crate::scene::validate::Checker;
 use crate::scene::{
     Document, IntegratorSpec, Kind, Metric, Progress, RunContext, RunSummary, Scene,
+    par_map_counted,
 };
 
 /// Registry entry.
@@ -231,23 +228,9 @@ impl Scene for Ready {
     }
 
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
-        let total = self.points.len();
-        let done = AtomicUsize::new(0);
-        let rows: Vec<Result<Row, RunError>> = {
-            let progress = Mutex::new(&mut ctx.progress);
-            self.points
-                .par_iter()
-                .map(|(p, b)| {
-                    let r = one(*p, b, &self.integrator);
-                    let n = done.fetch_add(1, Ordering::Relaxed) + 1;
-                    if let Ok(mut pr) = progress.lock() {
-                        pr.update_count(n, total, "insertion");
-                    }
-                    r
-                })
-                .collect()
-        };
-        ctx.progress.finish();
+        let rows = par_map_counted(&self.points, &mut ctx.progress, "insertion", |(p, b)| {
+            one(*p, b, &self.integrator)
+        });
         let rows: Vec<Row> = rows.into_iter().collect::<Result<_, _>>()?;
         let yield_p = self.scene.grid.yield_pressure;
         let mut csv = CsvWriter::create(
