@@ -19,7 +19,6 @@ use pegdyn::compliant_peg::{
     FrictionLaw, InsertionOptions, InsertionRun, Load, simulate_insertion,
 };
 use pegdyn::integrate::Method;
-use pegdyn::jamming::PegHole;
 use pegdyn::jamming::dynamic::{SweepSetup, SweepSpec};
 use pegdyn::jamming::forces::{Wrench, to_paper_frame};
 
@@ -60,17 +59,7 @@ fn run(s: &SweepSetup, q: [f64; 2], integrator: Method, rtol: f64) -> (Insertion
 
 fn main() {
     let regularized = SweepSetup::new(SweepSpec {
-        peg: PegHole::try_new(0.0125, 0.01, 0.3).expect("valid peg"),
-        depth: 0.01,
-        fz: 20.0,
-        peg_length: 0.1,
-        t_max: 0.3,
-        advance: 0.001,
-        window: 0.05,
-        integrator: Method::Rodas4,
-        rtol: 1e-6,
-        atol: 1e-10,
-        early_stop: false,
+        ..SweepSpec::reference()
     })
     .expect("valid sweep");
     println!("law,case,method,rtol,t_sim_s,wall_per_sim_s,steps,error_m,end_time_error_s");

@@ -209,23 +209,13 @@ fn regularized_law_approaches_the_elastic_one_as_v_s_shrinks() {
 
 #[test]
 fn elastic_sweep_classes_match_the_regularized_ones_away_from_the_boundary() {
-    use pegdyn::jamming::PegHole;
     use pegdyn::jamming::dynamic::{self, SweepSetup, SweepSpec};
     // The shipped sweep of scenes/jamming.toml on a 3 x 3 grid (corners and
     // centre of its load range: every point far from the parallelogram's
     // boundary).
     let setup = SweepSetup::new(SweepSpec {
-        peg: PegHole::try_new(0.0125, 0.01, 0.3).unwrap(),
-        depth: 0.01,
-        fz: 20.0,
-        peg_length: 0.1,
-        t_max: 0.3,
-        advance: 0.001,
-        window: 0.05,
-        integrator: Method::Rodas4,
-        rtol: 1e-6,
-        atol: 1e-10,
         early_stop: true,
+        ..SweepSpec::reference()
     })
     .unwrap();
     let classes = |s: &SweepSetup| -> Vec<_> {

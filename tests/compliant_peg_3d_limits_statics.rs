@@ -12,7 +12,6 @@ use pegdyn::compliant_peg::{Load, PegState};
 use pegdyn::compliant_peg_3d::{HertzMode, Pair, Peg3d, Peg3dParams, pose_state};
 use pegdyn::generated::compliant_peg_3d as gen3d;
 use pegdyn::integrate::{Direction, Event, Method, Options, OutputMode, Solver, StopReason, solve};
-use pegdyn::jamming::PegHole;
 use pegdyn::jamming::dynamic::{SweepSetup, SweepSpec};
 use pegdyn::jamming::forces::{Wrench, to_paper_frame};
 use pegdyn::jamming::quasi_static::{PaperPeg, PegAcc, PegLoad};
@@ -59,17 +58,9 @@ fn to_3d(s: &PegState) -> SVector<f64, 15> {
 /// contact at depth l = 10 mm, steel, L = 0.1 m.
 fn setup() -> SweepSetup {
     SweepSetup::new(SweepSpec {
-        peg: PegHole::try_new(0.0125, 0.01, 0.3).unwrap(),
-        depth: 0.01,
-        fz: 20.0,
-        peg_length: 0.1,
         t_max: 0.05,
-        advance: 1e-3,
-        window: 0.05,
         integrator: Method::Dopri5,
-        rtol: 1e-6,
-        atol: 1e-10,
-        early_stop: false,
+        ..SweepSpec::reference()
     })
     .unwrap()
 }

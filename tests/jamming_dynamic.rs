@@ -9,24 +9,14 @@ mod cli;
 
 use std::path::PathBuf;
 
-use pegdyn::integrate::Method;
-use pegdyn::jamming::PegHole;
 use pegdyn::jamming::dynamic::{SweepSetup, SweepSpec};
 use pegdyn::jamming::sweep::RunClass;
 
 fn setup() -> SweepSetup {
     SweepSetup::new(SweepSpec {
-        peg: PegHole::try_new(0.0125, 0.01, 0.3).unwrap(),
-        depth: 0.01,
-        fz: 20.0,
-        peg_length: 0.1,
         t_max: 0.2,
-        advance: 0.001,
-        window: 0.05,
-        integrator: Method::Rodas4,
-        rtol: 1e-6,
-        atol: 1e-10,
         early_stop: true,
+        ..SweepSpec::reference()
     })
     .unwrap()
 }

@@ -6,24 +6,17 @@
 
 use pegdyn::compliant_peg::Settle;
 use pegdyn::integrate::Method;
-use pegdyn::jamming::PegHole;
 use pegdyn::jamming::dynamic::{self, SweepSetup, SweepSpec};
 
 /// The shipped sweep of `scenes/jamming.toml` with the given integrator,
 /// early-stop choice and relative tolerance (atol = 1e-4 rtol).
 fn setup(integrator: Method, early_stop: bool, rtol: f64) -> SweepSetup {
     SweepSetup::new(SweepSpec {
-        peg: PegHole::try_new(0.0125, 0.01, 0.3).unwrap(),
-        depth: 0.01,
-        fz: 20.0,
-        peg_length: 0.1,
-        t_max: 0.3,
-        advance: 0.001,
-        window: 0.05,
         integrator,
         rtol,
         atol: 1e-4 * rtol,
         early_stop,
+        ..SweepSpec::reference()
     })
     .unwrap()
 }

@@ -4,7 +4,6 @@
 use nalgebra::SVector;
 use pegdyn::compliant_peg::{CompliantSystem, ElasticSystem, FrictionLaw, Load};
 use pegdyn::integrate::Method;
-use pegdyn::jamming::PegHole;
 use pegdyn::jamming::dynamic::{SweepSetup, SweepSpec};
 use pegdyn::jamming::forces::{Wrench, to_paper_frame};
 use pegdyn::rigid_peg::forward::{ForwardModel, PegSystem};
@@ -257,17 +256,7 @@ pub fn insertion_elastic() -> Problem<12, ElasticSystem> {
 /// start, its load and the setup with friction law `law`.
 fn jammed_setup(law: FrictionLaw) -> (SweepSetup, Load) {
     let setup = SweepSetup::new(SweepSpec {
-        peg: PegHole::try_new(0.0125, 0.01, 0.3).expect("valid peg"),
-        depth: 0.01,
-        fz: 20.0,
-        peg_length: 0.1,
-        t_max: 0.3,
-        advance: 0.001,
-        window: 0.05,
-        integrator: Method::Rodas4,
-        rtol: 1e-6,
-        atol: 1e-10,
-        early_stop: false,
+        ..SweepSpec::reference()
     })
     .and_then(|s| s.with_friction_law(law))
     .expect("valid sweep");

@@ -54,6 +54,31 @@ pub struct SweepSpec {
     pub early_stop: bool,
 }
 
+impl SweepSpec {
+    /// The reference sweep of the compliant planar peg, the `[sweep]` of
+    /// `scenes/jamming.toml` with fixed integration settings: a steel
+    /// cylinder 0.1 m long, r = 12.5 mm, c = 0.01, μ = 0.3, from two-point
+    /// contact at l = 10 mm under F_z = 20 N; 0.3 s per run, 1 mm advance
+    /// counted as inserted, 0.05 s window; RODAS4 at rtol 1e-6, atol
+    /// 1e-10, no early stop. Tests and benchmarks change fields of it.
+    pub fn reference() -> SweepSpec {
+        SweepSpec {
+            peg: PegHole::try_new(0.0125, 0.01, 0.3)
+                .expect("the reference peg's radius, clearance and friction are valid"),
+            depth: 0.01,
+            fz: 20.0,
+            peg_length: 0.1,
+            t_max: 0.3,
+            advance: 0.001,
+            window: 0.05,
+            integrator: Method::Rodas4,
+            rtol: 1e-6,
+            atol: 1e-10,
+            early_stop: false,
+        }
+    }
+}
+
 /// A prepared sweep: the compliant model, the start state and the
 /// quasi-static diagram at the start state's depth and tilt.
 #[derive(Debug, Clone)]
