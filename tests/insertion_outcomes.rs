@@ -6,6 +6,8 @@
 #[path = "common/cli.rs"]
 mod cli;
 
+#[path = "common/rcc.rs"]
+mod rcc;
 use pegdyn::compliant_peg_3d::outcome::Outcome;
 use pegdyn::scene::insert_3d::rcc::{RccScene, run_one};
 use pegdyn::scene::{Progress, RunContext};
@@ -36,17 +38,7 @@ fn variant_from(changes: &[(&str, &str)], defaults: &[(&str, &str)]) -> String {
 }
 
 fn outcome(changes: &[(&str, &str)]) -> (Outcome, f64, f64) {
-    let text = variant(changes);
-    let doc: toml::Table = toml::from_str(&text).unwrap();
-    let mut doc = doc;
-    doc.remove("kind");
-    doc.remove("description");
-    let scene: RccScene = doc.try_into().unwrap();
-    let built = scene.build().unwrap();
-    let (spec, _) = scene
-        .integrator
-        .resolved(pegdyn::scene::integrator::DefaultMethod::NON_STIFF);
-    let run = run_one(&built, &spec, false, &mut Progress::silent()).unwrap();
+    let (_, built, run) = rcc::run(&variant(changes));
     let (depth, ..) = pegdyn::compliant_peg_3d::insertion::depth_tilt(
         &built.params,
         &pegdyn::compliant_peg_3d::insertion::peg_state(&run.solution.x_final),

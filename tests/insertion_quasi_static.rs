@@ -5,12 +5,12 @@
 //! the tilt) under the wrist's force and gravity, at every depth, to a
 //! tolerance that shrinks as the descent slows.
 
+#[path = "common/rcc.rs"]
+mod rcc;
 use nalgebra::Vector3;
 use pegdyn::compliant_peg_3d::Pair;
 use pegdyn::jamming::forces::sliding_contact_forces;
 use pegdyn::jamming::params::PegHole;
-use pegdyn::scene::Progress;
-use pegdyn::scene::insert_3d::rcc::{RccScene, run_one};
 
 /// Largest relative deviation of the simulated edge and tip forces from
 /// the static ones over the two-point samples, and their number.
@@ -27,15 +27,7 @@ fn deviation(speed: f64) -> (f64, usize) {
             "output_interval = 1e-3 ",
             &format!("output_interval = {} ", 2e-5 / speed),
         );
-    let mut doc: toml::Table = toml::from_str(&text).unwrap();
-    doc.remove("kind");
-    doc.remove("description");
-    let scene: RccScene = doc.try_into().unwrap();
-    let built = scene.build().unwrap();
-    let (spec, _) = scene
-        .integrator
-        .resolved(pegdyn::scene::integrator::DefaultMethod::NON_STIFF);
-    let run = run_one(&built, &spec, false, &mut Progress::silent()).unwrap();
+    let (scene, built, run) = rcc::run(&text);
     assert_eq!(run.outcome.name(), "seated");
     let prm = built.params;
     let hole = PegHole::try_new(prm.peg_radius(), scene.peg.clearance_ratio, prm.friction).unwrap();
@@ -91,15 +83,7 @@ fn one_point_contact_deflects_the_wrist_by_the_error_less_the_clearance() {
         // The cases assume the tip starting 2 mm in the bore.
         .replace("start_height = 1e-3 ", "start_height = -2e-3 ")
         .replace("seat_depth = 0.008 ", "seat_depth = 0.0045 ");
-    let mut doc: toml::Table = toml::from_str(&text).unwrap();
-    doc.remove("kind");
-    doc.remove("description");
-    let scene: RccScene = doc.try_into().unwrap();
-    let built = scene.build().unwrap();
-    let (spec, _) = scene
-        .integrator
-        .resolved(pegdyn::scene::integrator::DefaultMethod::NON_STIFF);
-    let run = run_one(&built, &spec, false, &mut Progress::silent()).unwrap();
+    let (scene, built, run) = rcc::run(&text);
     let prm = built.params;
     let k = scene.peg.contact_stiffness.unwrap();
     let e = scene.robot.lateral_error;
