@@ -9,8 +9,8 @@ mod cli;
 #[path = "common/rcc.rs"]
 mod rcc;
 use pegdyn::compliant_peg_3d::outcome::Outcome;
+use pegdyn::scene::Progress;
 use pegdyn::scene::insert_3d::rcc::{RccScene, run_one};
-use pegdyn::scene::{Progress, RunContext};
 
 /// The shipped `insert_rcc` scene's text with `(key, value)` lines
 /// replaced (the key at the start of a line). The tip starts 2 mm in the
@@ -122,15 +122,9 @@ fn a_low_wrist_limit_stops_the_robot_on_one_contact() {
     }
 }
 
+/// `text` run in-process as scene `name` into a fresh directory.
 fn run_scene(text: &str, name: &str) -> pegdyn::scene::RunSummary {
-    let loaded = pegdyn::scene::parse_named(text, name).unwrap();
-    let dir = cli::fresh_dir("insertion", name);
-    let mut ctx = RunContext {
-        out_dir: dir,
-        name: name.into(),
-        progress: Progress::silent(),
-    };
-    loaded.scene.run(&mut ctx).unwrap()
+    cli::run_scene(text, name, &cli::fresh_dir("insertion", name))
 }
 
 #[test]
