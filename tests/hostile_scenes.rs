@@ -333,6 +333,11 @@ fn physics_ranges_of_rigid_pendulum_and_jamming_kinds_are_refused() {
         &variant("jamming", "mu = 0.3", "mu = 100.0"),
         &["sweep.mu` = 100.0: must lie in [1e-6, 1e1]"],
     );
+    refused(
+        "sweep_damping",
+        &variant("jamming", "contact_damping = 1.5", "contact_damping = -1.5"),
+        &["sweep.contact_damping` = -1.5: must lie in [0, 1e3] s/m"],
+    );
 }
 
 #[test]

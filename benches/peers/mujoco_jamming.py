@@ -234,6 +234,34 @@ def read_pegdyn(path):
         return list(csv.DictReader(f))
 
 
+def step_error_table(args, sw, q, pairs):
+    """One run under ratio q at each step of --steps: CPU per simulated second
+    (best of three) and the end-state difference against the smallest step."""
+    try:
+        steps = sorted({float(v) for v in args.steps.split(",")}, reverse=True)
+    except ValueError:
+        sys.exit(f"--steps {args.steps!r}: expected comma-separated steps in s")
+    if not steps or not all(math.isfinite(h) and 0 < h <= sw.window / 10 for h in steps):
+        sys.exit(f"--steps {args.steps!r}: every step must be > 0 and at most a tenth of the window")
+    rows = []
+    for h in steps:
+        peer = Peer(sw, args.setting, h, early_stop=not args.no_early_stop,
+                    option=pairs(args.option, "--option"), geom=pairs(args.geom, "--geom"), wall=args.wall)
+        best = math.inf
+        for _ in range(3):
+            c0 = time.process_time()
+            cls, t = peer.run(q)
+            best = min(best, time.process_time() - c0)
+        rows.append((h, cls, t, best / t, tuple(float(v) for v in peer.data.qpos)))
+    ref = rows[-1][4]
+    print(f"MuJoCo {mujoco.__version__}, setting {args.setting}, ratio {q}, window {sw.window:g} s, "
+          f"early stop {'off' if args.no_early_stop else 'on'}; reference: the step {rows[-1][0]:g} s")
+    print("step_s,class,t_s,cpu_per_sim_s,end_difference_m")
+    for h, cls, t, cost, (x, z, th) in rows:
+        diff = max(abs(x - ref[0]), abs(z - ref[1]), sw.r * abs(th - ref[2]))
+        print(f"{h:g},{cls},{t:.6f},{cost:.4g},{diff:.3e}")
+
+
 def main():
     ap = argparse.ArgumentParser(
         description="pegdyn's planar jamming sweep in MuJoCo: classes and time per simulated second."
@@ -252,6 +280,9 @@ def main():
                     help="thickness of the hole's wall boxes, m (default 0.02; matters only where contacts are soft)")
     ap.add_argument("--ratio", metavar="FX,M",
                     help="one run from the reference lean under F_x/F_z = FX, M/(r F_z) = M instead of the sweep")
+    ap.add_argument("--steps", metavar="H1,H2,...",
+                    help="with --ratio: the run at each of these steps, its CPU per simulated second and its "
+                         "end-state difference (max of |dx|, |dz|, r|dtheta|) against the run at the smallest step")
     ap.add_argument("--window", type=float, help="classification window, s (default: the scene's)")
     ap.add_argument("--out", help="write the classes to this CSV")
     args = ap.parse_args()
@@ -301,6 +332,9 @@ def main():
             q = ()
         if len(q) != 2:
             sys.exit(f"--ratio {args.ratio!r}: expected FX,M (two numbers)")
+        if args.steps:
+            step_error_table(args, sw, q, pairs)
+            return
         w0, c0 = time.perf_counter(), time.process_time()
         cls, t = peer.run(q)
         wall, cpu = time.perf_counter() - w0, time.process_time() - c0

@@ -52,6 +52,11 @@ pub struct SweepSpec {
     /// ([`crate::compliant_peg::Settle::for_window`]) instead of at the end of
     /// its window.
     pub early_stop: bool,
+    /// Hunt–Crossley damping `α` of the contacts (s/m, `≥ 0`; 0: elastic
+    /// contacts): the normal force is `k δ^{3/2} max(0, 1 + α δ̇)`. At an
+    /// impact speed `v` the restitution is about `e = √(1 − 4αv/3)`
+    /// (Lankarani & Nikravesh's `α = 3(1 − e²)/(4v)`).
+    pub contact_damping: f64,
 }
 
 impl SweepSpec {
@@ -59,8 +64,9 @@ impl SweepSpec {
     /// `scenes/jamming.toml` with fixed integration settings: a steel
     /// cylinder 0.1 m long, r = 12.5 mm, c = 0.01, μ = 0.3, from two-point
     /// contact at l = 10 mm under F_z = 20 N; 0.3 s per run, 1 mm advance
-    /// counted as inserted, 0.05 s window; RODAS4 at rtol 1e-6, atol
-    /// 1e-10, no early stop. Tests and benchmarks change fields of it.
+    /// counted as inserted, 0.05 s window; elastic contacts (no
+    /// Hunt–Crossley damping); RODAS4 at rtol 1e-6, atol 1e-10, no early
+    /// stop. Tests and benchmarks change fields of it.
     pub fn reference() -> SweepSpec {
         SweepSpec {
             peg: PegHole::try_new(0.0125, 0.01, 0.3)
@@ -75,6 +81,7 @@ impl SweepSpec {
             rtol: 1e-6,
             atol: 1e-10,
             early_stop: false,
+            contact_damping: 0.0,
         }
     }
 }
@@ -106,7 +113,10 @@ impl SweepSetup {
     pub fn new(spec: SweepSpec) -> Result<Self, SetupError> {
         let p = &spec.peg;
         let big_d = p.hole_diameter();
-        let model = CompliantSpec::steel_cylinder(big_d, p.c(), spec.peg_length, p.mu());
+        let model = CompliantSpec {
+            damping: spec.contact_damping,
+            ..CompliantSpec::steel_cylinder(big_d, p.c(), spec.peg_length, p.mu())
+        };
         let params = CompliantParams::try_new(model)?;
         let invalid = |reason| HertzError::Invalid {
             field: "depth".to_owned(),

@@ -158,7 +158,7 @@ impl Scene for JammingScene {
         );
         if let Some(s) = &self.sweep {
             text.push_str(&format!(
-                "; dynamic sweep {n} x {n} at c = {}, mu = {}, l = {} m, {} ({}), {} friction",
+                "; dynamic sweep {n} x {n} at c = {}, mu = {}, l = {} m, {} ({}), {} friction, {}",
                 s.c,
                 s.mu,
                 s.l_m,
@@ -167,6 +167,11 @@ impl Scene for JammingScene {
                 match s.friction_law {
                     jamming_sweep::SweepFrictionLaw::Regularized => "regularized",
                     jamming_sweep::SweepFrictionLaw::Elastic => "elastic",
+                },
+                if s.contact_damping > 0.0 {
+                    format!("contact damping alpha = {} s/m", s.contact_damping)
+                } else {
+                    "elastic contacts".to_owned()
                 },
                 n = s.n
             ));

@@ -22,6 +22,8 @@
 //!                        # it has settled (compliant_peg::Settle), not at its window's end
 //! friction_law = "regularized"  # optional: "regularized" (default) | "elastic"
 //!                        # (Hertz–Mindlin capped by Coulomb: sticks without creep)
+//! contact_damping = 1.5  # optional (default 0: elastic): Hunt–Crossley alpha, s/m
+//!                        # (restitution about 0.9 at 0.1 m/s)
 //! ```
 //!
 //! Without `method` every run uses RODAS4 with the generated exact
@@ -98,6 +100,10 @@ pub struct SweepParams {
     /// Friction law of the contacts (default regularized).
     #[serde(default)]
     pub friction_law: SweepFrictionLaw,
+    /// Hunt–Crossley damping `α` of the contacts, s/m (default 0: elastic
+    /// contacts; see [`SweepSpec::contact_damping`]).
+    #[serde(default)]
+    pub contact_damping: f64,
 }
 
 /// `sweep.friction_law`: the tangential law at the contacts.
@@ -175,7 +181,14 @@ impl SweepParams {
         c.positive("sweep.t_max_s", self.t_max_s);
         c.positive("sweep.advance_m", self.advance_m);
         c.positive("sweep.window_s", self.window_s);
-        let values = [self.r_m, self.c, self.mu, self.l_m, self.peg_length_m];
+        let values = [
+            self.r_m,
+            self.c,
+            self.mu,
+            self.l_m,
+            self.peg_length_m,
+            self.contact_damping,
+        ];
         for (range, v) in crate::scene::ranges::jamming::SWEEP.iter().zip(values) {
             range.check(&mut c, v);
         }
@@ -209,6 +222,7 @@ impl SweepParams {
             rtol: self.rtol,
             atol: self.atol,
             early_stop: self.early_stop,
+            contact_damping: self.contact_damping,
         };
         let law = match self.friction_law {
             SweepFrictionLaw::Regularized => crate::compliant_peg::FrictionLaw::Regularized,

@@ -84,12 +84,22 @@ impl FieldRange {
             } else {
                 format!(" {}", self.unit)
             };
+            // Zero reads as `0`, not `0e0`.
+            let limit = |x: f64| {
+                if x == 0.0 {
+                    "0".to_owned()
+                } else {
+                    format!("{x:e}")
+                }
+            };
             c.push(SceneError::invalid(
                 name,
                 v,
                 format!(
-                    "must lie in [{:e}, {:e}]{unit}: {}",
-                    self.min, self.max, self.why
+                    "must lie in [{}, {}]{unit}: {}",
+                    limit(self.min),
+                    limit(self.max),
+                    self.why
                 ),
             ));
         }

@@ -9,6 +9,8 @@
 //!   1.5, and the jamming diagram's `λ = l/(2 r μ)` degenerates at `μ → 0`.
 //! - Lengths (radius, depths, peg length) in `[1e-6, 1e3]` m, engineering
 //!   sizes.
+//! - Hunt–Crossley contact damping in `[0, 1e3]` s/m, as for
+//!   `insert_compliant`.
 
 use super::{FieldRange, MIN_CLEARANCE_RATIO};
 
@@ -16,6 +18,7 @@ const WHY_C: &str =
     "below 1e-9 f64 does not resolve the clearance D - d; at 1 the peg has no radius";
 const WHY_MU: &str = "Coulomb coefficients of material pairs lie below about 1.5; lambda = l/(2 r mu) degenerates at 0";
 const WHY_LENGTH: &str = "engineering sizes, a micrometre to a kilometre";
+const WHY_DAMPING: &str = "Hunt-Crossley alpha: 0 is elastic; at 1e3 s/m a contact closing at 0.25 mm/s already loses a third of its impact energy (1 - e^2 = 4 alpha v / 3)";
 
 /// Largest clearance ratio (just below 1).
 const C_MAX: f64 = 1.0 - f64::EPSILON;
@@ -35,4 +38,5 @@ pub const SWEEP: &[FieldRange] = &[
     FieldRange::new("sweep.mu", 1e-6, 10.0, "", WHY_MU),
     FieldRange::new("sweep.l_m", 1e-6, 1e3, "m", WHY_LENGTH),
     FieldRange::new("sweep.peg_length_m", 1e-6, 1e3, "m", WHY_LENGTH),
+    FieldRange::new("sweep.contact_damping", 0.0, 1e3, "s/m", WHY_DAMPING),
 ];
