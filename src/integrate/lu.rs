@@ -9,24 +9,34 @@
 
 use nalgebra::{SMatrix, SVector};
 
-/// `P A = L U` packed in one matrix (unit `L` below the diagonal).
+/// `P A = L U` packed in one matrix (unit `L` below the diagonal), of the
+/// leading `n × n` block of an `N × N` matrix (`n = N` for the whole).
 #[derive(Debug, Clone)]
 pub(crate) struct Lu<const N: usize> {
     lu: SMatrix<f64, N, N>,
-    /// Row `i` of `P A` is row `perm[i]` of `A`.
+    /// Row `i` of `P A` is row `perm[i]` of `A` (`i < n`).
     perm: [usize; N],
+    /// Size of the factorized leading block.
+    n: usize,
 }
 
 impl<const N: usize> Lu<N> {
     /// Factorizes `a`; `None` if a pivot is zero or not finite (singular or
     /// non-finite matrix).
-    pub(crate) fn new(mut a: SMatrix<f64, N, N>) -> Option<Self> {
+    pub(crate) fn new(a: SMatrix<f64, N, N>) -> Option<Self> {
+        Self::leading(a, N)
+    }
+
+    /// Factorizes the leading `n × n` block of `a` (`n ≤ N`; the rest of
+    /// `a` is ignored); `None` if a pivot is zero or not finite.
+    pub(crate) fn leading(mut a: SMatrix<f64, N, N>, n: usize) -> Option<Self> {
+        let n = n.min(N);
         let mut perm = [0; N];
         for (i, p) in perm.iter_mut().enumerate() {
             *p = i;
         }
-        for k in 0..N {
-            let pivot_row = (k..N)
+        for k in 0..n {
+            let pivot_row = (k..n)
                 .max_by(|&i, &j| a[(i, k)].abs().total_cmp(&a[(j, k)].abs()))
                 .unwrap_or(k);
             let pivot = a[(pivot_row, k)];
@@ -34,18 +44,20 @@ impl<const N: usize> Lu<N> {
                 return None;
             }
             if pivot_row != k {
-                a.swap_rows(k, pivot_row);
+                for j in 0..n {
+                    a.swap((k, j), (pivot_row, j));
+                }
                 perm.swap(k, pivot_row);
             }
-            for i in k + 1..N {
+            for i in k + 1..n {
                 let l = a[(i, k)] / pivot;
                 a[(i, k)] = l;
-                for j in k + 1..N {
+                for j in k + 1..n {
                     a[(i, j)] -= l * a[(k, j)];
                 }
             }
         }
-        Some(Lu { lu: a, perm })
+        Some(Lu { lu: a, perm, n })
     }
 
     /// Solves `A y = b`: `L z = P b` forward, then `U y = z` backward, both
@@ -53,26 +65,41 @@ impl<const N: usize> Lu<N> {
     /// each update reads one contiguous column).
     pub(crate) fn solve(&self, b: &SVector<f64, N>) -> SVector<f64, N> {
         let mut y = [0.0; N];
-        for (yi, &p) in y.iter_mut().zip(&self.perm) {
+        self.solve_leading(b.as_slice(), &mut y);
+        SVector::from(y)
+    }
+
+    /// Solves the leading block's system: `y[..n]` from `b[..n]` (the rest
+    /// of `y` is left as it is).
+    pub(crate) fn solve_leading(&self, b: &[f64], y: &mut [f64; N]) {
+        self.solve_block(b, y, self.n);
+    }
+
+    /// [`Lu::solve_leading`] with the block size `n` (equal to the
+    /// factorized one) passed in, so that a caller with a constant size
+    /// gets loops of constant length.
+    #[inline(always)]
+    pub(crate) fn solve_block(&self, b: &[f64], y: &mut [f64; N], n: usize) {
+        debug_assert_eq!(n, self.n);
+        for (yi, &p) in y[..n].iter_mut().zip(&self.perm[..n]) {
             *yi = b[p];
         }
         let lu = self.lu.as_slice();
-        for j in 0..N {
-            let col = &lu[j * N..(j + 1) * N];
+        for j in 0..n {
+            let col = &lu[j * N..j * N + n];
             let yj = y[j];
-            for (yi, &l) in y[j + 1..].iter_mut().zip(&col[j + 1..]) {
+            for (yi, &l) in y[j + 1..n].iter_mut().zip(&col[j + 1..]) {
                 *yi -= l * yj;
             }
         }
-        for j in (0..N).rev() {
-            let col = &lu[j * N..(j + 1) * N];
+        for j in (0..n).rev() {
+            let col = &lu[j * N..j * N + n];
             let yj = y[j] / col[j];
             y[j] = yj;
             for (yi, &u) in y[..j].iter_mut().zip(&col[..j]) {
                 *yi -= u * yj;
             }
         }
-        SVector::from(y)
     }
 }
 
@@ -112,6 +139,27 @@ mod tests {
             "{ours} {theirs}"
         );
         assert!((a * ours - b).amax() < 1e-12);
+    }
+
+    #[test]
+    fn a_leading_block_is_solved_alone() {
+        // The leading 3 x 3 block of an 8 x 8 matrix, the rest garbage.
+        let a = nalgebra::SMatrix::<f64, 8, 8>::from_fn(|i, j| {
+            if i < 3 && j < 3 {
+                [[0.0, 2.0, 1.0], [1.0, -1.0, 4.0], [3.0, 0.5, -2.0]][i][j]
+            } else {
+                f64::NAN
+            }
+        });
+        let lu = Lu::leading(a, 3).expect("regular block");
+        let mut b = [0.0; 8];
+        b[..3].copy_from_slice(&[1.0, -2.0, 0.25]);
+        let mut y = [7.0; 8];
+        lu.solve_leading(&b, &mut y);
+        let block = Matrix3::new(0.0, 2.0, 1.0, 1.0, -1.0, 4.0, 3.0, 0.5, -2.0);
+        let x = Vector3::new(y[0], y[1], y[2]);
+        assert!((block * x - Vector3::new(1.0, -2.0, 0.25)).amax() < 1e-14);
+        assert_eq!(&y[3..], &[7.0; 5]);
     }
 
     #[test]

@@ -26,6 +26,7 @@ mod dense;
 mod driver;
 mod events;
 mod explicit_rk;
+mod iteration;
 mod lu;
 mod method;
 mod non_finite;

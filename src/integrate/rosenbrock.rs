@@ -3,7 +3,9 @@
 //! Runs a [`RosenbrockTableau`] in the transformed form of Hairer & Wanner
 //! II, §IV.7, eq. (7.25), which needs no matrix–vector products:
 //! `(I/(hγ) − J) uᵢ = f(t + αᵢh, x + Σⱼ<ᵢ aᵢⱼuⱼ) + Σⱼ<ᵢ (cᵢⱼ/h) uⱼ + γᵢh ∂f/∂t`,
-//! `x₁ = x + Σ mᵢuᵢ`, one LU factorization per step. `J` and `∂f/∂t` are
+//! `x₁ = x + Σ mᵢuᵢ`, one LU factorization per step (of `n` unknowns
+//! instead of `N` when `J` has a second-order system's block form:
+//! `super::iteration`). `J` and `∂f/∂t` are
 //! evaluated once per step start and reused when the step is retried.
 //! Dense output is the cubic Hermite interpolant of the step.
 
@@ -13,7 +15,7 @@ use crate::system::OdeSystem;
 
 use super::dense::Interpolant;
 use super::driver::{Attempt, Stepper};
-use super::lu::Lu;
+use super::iteration::IterationLu;
 use super::solution::Stats;
 use super::tableau::RosenbrockTableau;
 
@@ -157,9 +159,8 @@ impl<const N: usize, const S: usize> Stepper<N> for Rosenbrock<N, S> {
         let (jac, dfdt) = (lin.jac, lin.dfdt);
         self.linearization = Some(lin);
         let k = &self.coef;
-        let w = SMatrix::<f64, N, N>::identity() / (h * k.gamma) - jac;
         stats.lu_factorizations += 1;
-        let Some(lu) = Lu::new(w) else {
+        let Some(lu) = IterationLu::new(&jac, 1.0 / (h * k.gamma)) else {
             return Attempt::Singular;
         };
         for i in 0..S {
