@@ -10,6 +10,7 @@ use pegdyn::compliant_peg::{
     CompliantParams, CompliantSpec, CompliantSystem, ElasticSystem, FrictionLaw, Load, PegState,
 };
 use pegdyn::integrate::{Method, Options, OutputMode, Solver};
+use pegdyn::system::OdeSystem;
 
 fn params(mu: f64, law: FrictionLaw, v_s: f64) -> CompliantParams {
     let mut spec = CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, mu);
@@ -27,39 +28,34 @@ fn side_start(p: &CompliantParams) -> PegState {
     start
 }
 
+/// The states at `times` of the run from `y0` (RODAS4, tight tolerances).
+fn states_at<const N: usize, S: OdeSystem<N>>(
+    sys: &S,
+    y0: SVector<f64, N>,
+    times: &[f64],
+) -> Vec<SVector<f64, N>> {
+    let mut options = Options::with_tolerances(1e-8, 1e-13);
+    options.output = OutputMode::AtTimes(times.to_vec());
+    let sol = Solver::new(Method::Rodas4, options)
+        .solve(sys, 0.0, y0, *times.last().unwrap())
+        .unwrap();
+    assert!(sol.stop.is_success(), "{:?}", sol.stop);
+    sol.x
+}
+
 /// Depths of the elastic-law run at `times` (RODAS4, tight tolerances).
 fn elastic_depths(mu: f64, load: &Load, times: &[f64]) -> (Vec<f64>, Vec<SVector<f64, 12>>) {
     let p = params(mu, FrictionLaw::Elastic, 1e-5);
     let sys = ElasticSystem::new(&p, load);
-    let mut options = Options::with_tolerances(1e-8, 1e-13);
-    options.output = OutputMode::AtTimes(times.to_vec());
-    let sol = Solver::new(Method::Rodas4, options)
-        .solve(
-            &sys,
-            0.0,
-            side_start(&p).to_vector_elastic(),
-            *times.last().unwrap(),
-        )
-        .unwrap();
-    assert!(sol.stop.is_success(), "{:?}", sol.stop);
-    (sol.x.iter().map(|y| sys.sample(y).depth).collect(), sol.x)
+    let x = states_at(&sys, side_start(&p).to_vector_elastic(), times);
+    (x.iter().map(|y| sys.sample(y).depth).collect(), x)
 }
 
 fn regularized_depths(mu: f64, v_s: f64, load: &Load, times: &[f64]) -> Vec<f64> {
     let p = params(mu, FrictionLaw::Regularized, v_s);
     let sys = CompliantSystem::new(&p, load);
-    let mut options = Options::with_tolerances(1e-8, 1e-13);
-    options.output = OutputMode::AtTimes(times.to_vec());
-    let sol = Solver::new(Method::Rodas4, options)
-        .solve(
-            &sys,
-            0.0,
-            side_start(&p).to_vector(),
-            *times.last().unwrap(),
-        )
-        .unwrap();
-    assert!(sol.stop.is_success(), "{:?}", sol.stop);
-    sol.x.iter().map(|y| sys.sample(y).depth).collect()
+    let x = states_at(&sys, side_start(&p).to_vector(), times);
+    x.iter().map(|y| sys.sample(y).depth).collect()
 }
 
 const HOLD: Load = Load {

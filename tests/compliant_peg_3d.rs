@@ -2,31 +2,21 @@
 //! dense samplings of the edge circles, the gradient against the force
 //! direction and lever arm, and the energy balance of the dynamics.
 
+#[path = "common/peg3d.rs"]
+mod peg3d;
+
 #[path = "common/rng.rs"]
 mod rng;
 
-use nalgebra::{SVector, Unit, UnitQuaternion, Vector3};
+use nalgebra::{SVector, UnitQuaternion, Vector3};
+use peg3d::{fig9, orientation, rim_on_mouth, tight_dopri5};
 use pegdyn::compliant_peg_3d::{HertzMode, Pair, Peg3d, Peg3dParams, Search, pose_state};
 use pegdyn::integrate::{Method, Options, solve};
 use rng::Rng;
 use std::f64::consts::TAU;
 
-/// The Fig. 9 peg (D = 50 mm, d = 49.95 mm, L = 70 mm) with 1 mm fillets
-/// and a 100 mm bore.
-fn fig9() -> Peg3dParams {
-    Peg3dParams::steel(0.04995, 0.070, 0.050, 1e-3, 1e-3, 0.1)
-}
-
 fn pose(p: Vector3<f64>, q: &UnitQuaternion<f64>) -> SVector<f64, 7> {
     SVector::<f64, 7>::from_column_slice(&[p.x, p.y, p.z, q.w, q.i, q.j, q.k])
-}
-
-/// Tilt `gamma` of the axis towards azimuth `psi`, after a spin `phi` about
-/// the peg's own axis.
-fn orientation(gamma: f64, psi: f64, phi: f64) -> UnitQuaternion<f64> {
-    let tilt_axis = Unit::new_normalize(Vector3::new(-psi.sin(), psi.cos(), 0.0));
-    UnitQuaternion::from_axis_angle(&tilt_axis, gamma)
-        * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), phi)
 }
 
 /// The gap of `pair` at angle `a`, computed independently of the generated
@@ -325,15 +315,7 @@ fn frictionless_undamped_landing_conserves_energy() {
     prm.moment = Vector3::new(0.0, 0.01, 0.0);
     let (sys, y0) = landing(prm);
     let e0 = sys.energy_balance(&y0).unwrap();
-    let sol = solve(
-        &sys,
-        Method::Dopri5,
-        (0.0, y0),
-        0.02,
-        &Options::with_tolerances(1e-11, 1e-13),
-    )
-    .unwrap();
-    assert!(sol.stop.is_success(), "{:?}", sol.stop);
+    let sol = tight_dopri5(&sys, y0, 0.02, 1e-13);
     let mut touched = false;
     let mut worst: f64 = 0.0;
     for y in &sol.x {
@@ -357,15 +339,7 @@ fn friction_and_damping_dissipate_and_close_the_balance() {
     prm.damping = 0.5;
     let (sys, y0) = landing(prm);
     let e0 = sys.energy_balance(&y0).unwrap();
-    let sol = solve(
-        &sys,
-        Method::Dopri5,
-        (0.0, y0),
-        0.02,
-        &Options::with_tolerances(1e-11, 1e-13),
-    )
-    .unwrap();
-    assert!(sol.stop.is_success(), "{:?}", sol.stop);
+    let sol = tight_dopri5(&sys, y0, 0.02, 1e-13);
     let mut last = 0.0;
     let mut worst: f64 = 0.0;
     for y in &sol.x {
@@ -600,21 +574,6 @@ fn aligned_rim_on_the_mouth_fillet_touches_at_the_analytic_depth_and_curvatures(
     assert!(met >= 3, "only {met} rim-edge contacts");
 }
 
-/// The family of poses where the rim's two points on the mouth fillet
-/// (B1, B2) merge: tilt `gamma` about `y` with the rim point at body angle
-/// 0 highest and outermost, its tube centre held `s` inside and `h` above
-/// the mouth's tube-centre circle at angle 0 (`√(s² + h²) = ρ_p + ρ_h − δ`).
-fn rim_on_mouth(prm: &Peg3dParams, gamma: f64, depth: f64) -> SVector<f64, 15> {
-    let (rho_p, rho_h) = (prm.rim_fillet, prm.mouth_fillet);
-    let rr = prm.peg_radius() - rho_p;
-    let dist = rho_p + rho_h - depth;
-    let (s, h) = (dist * 0.5_f64.sin(), dist * 0.5_f64.cos());
-    let centre = Vector3::new(prm.bore_radius() + rho_h - s, 0.0, -rho_h + h);
-    let q = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), -gamma);
-    let p = centre - q * Vector3::new(rr, 0.0, rho_p - 0.5 * prm.length);
-    pose_state(p, q, Vector3::zeros(), Vector3::zeros())
-}
-
 #[test]
 fn rim_points_on_the_mouth_merge_without_a_force_jump() {
     let mut prm = fig9();
@@ -777,15 +736,7 @@ fn curvature_stiffness_landing_closes_the_energy_balance() {
     assert_eq!(prm.hertz, HertzMode::Curvature);
     let (sys, y0) = landing(prm);
     let e0 = sys.energy_balance(&y0).unwrap();
-    let sol = solve(
-        &sys,
-        Method::Dopri5,
-        (0.0, y0),
-        0.02,
-        &Options::with_tolerances(1e-11, 1e-13),
-    )
-    .unwrap();
-    assert!(sol.stop.is_success(), "{:?}", sol.stop);
+    let sol = tight_dopri5(&sys, y0, 0.02, 1e-13);
     let (mut worst, mut peak, mut k) = (0.0_f64, 0.0_f64, (f64::MAX, 0.0_f64));
     let mut term = 0.0_f64;
     for y in &sol.x {
@@ -822,15 +773,7 @@ fn rim_landing_on_the_mouth_fillet_conserves_energy() {
     y0[9] = -0.2;
     y0[12] = 5.0;
     let e0 = sys.energy_balance(&y0).unwrap();
-    let sol = solve(
-        &sys,
-        Method::Dopri5,
-        (0.0, y0),
-        3e-3,
-        &Options::with_tolerances(1e-11, 1e-13),
-    )
-    .unwrap();
-    assert!(sol.stop.is_success(), "{:?}", sol.stop);
+    let sol = tight_dopri5(&sys, y0, 3e-3, 1e-13);
     let (mut worst, mut cols, mut rim) = (0.0_f64, 0, 0);
     for y in &sol.x {
         worst = worst.max((sys.energy_balance(y).unwrap() - e0).abs());

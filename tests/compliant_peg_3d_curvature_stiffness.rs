@@ -2,22 +2,20 @@
 //! (`HertzMode::Curvature`): the term `−(2/5) δ^{5/2} ∂k/∂(pose)` against
 //! central differences of `k` and of the contact potential over the pose.
 
-use nalgebra::{Quaternion, SVector, Unit, UnitQuaternion, Vector3};
+#[path = "common/peg3d.rs"]
+mod peg3d;
+
+use nalgebra::{Quaternion, SVector, UnitQuaternion, Vector3};
+use peg3d::{orientation, rim_on_mouth};
 use pegdyn::compliant_peg_3d::{HertzMode, Peg3d, Peg3dParams, pose_state};
 use std::f64::consts::PI;
 
 /// The Fig. 9 peg (D = 50 mm, d = 49.95 mm, L = 70 mm) with 1 mm fillets
 /// and a 100 mm bore, steel on steel, stiffness from the curvatures.
 fn fig9() -> Peg3dParams {
-    let prm = Peg3dParams::steel(0.04995, 0.070, 0.050, 1e-3, 1e-3, 0.1);
+    let prm = peg3d::fig9();
     assert_eq!(prm.hertz, HertzMode::Curvature);
     prm
-}
-
-fn orientation(gamma: f64, psi: f64, phi: f64) -> UnitQuaternion<f64> {
-    let tilt_axis = Unit::new_normalize(Vector3::new(-psi.sin(), psi.cos(), 0.0));
-    UnitQuaternion::from_axis_angle(&tilt_axis, gamma)
-        * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), phi)
 }
 
 /// The state at rest moved by `s` along pose direction `i`: a translation
@@ -100,19 +98,6 @@ fn side_on_mouth(prm: &Peg3dParams, gamma: f64, depth: f64, y: f64) -> SVector<f
     let shift = Vector3::new(-(pen0 - depth) / gamma.cos(), y, 0.0);
     let p =
         Vector3::new(0.0, 0.0, -rho) + q * Vector3::new(0.0, 0.0, 0.5 * prm.length - 2e-3) + shift;
-    pose_state(p, q, Vector3::zeros(), Vector3::zeros())
-}
-
-/// The rim on the mouth fillet, tilted by `gamma` about `y` (the family of
-/// `tests/compliant_peg_3d.rs` where the rim's two points merge).
-fn rim_on_mouth(prm: &Peg3dParams, gamma: f64, depth: f64) -> SVector<f64, 15> {
-    let (rho_p, rho_h) = (prm.rim_fillet, prm.mouth_fillet);
-    let rr = prm.peg_radius() - rho_p;
-    let dist = rho_p + rho_h - depth;
-    let (s, h) = (dist * 0.5_f64.sin(), dist * 0.5_f64.cos());
-    let centre = Vector3::new(prm.bore_radius() + rho_h - s, 0.0, -rho_h + h);
-    let q = UnitQuaternion::from_axis_angle(&Vector3::y_axis(), -gamma);
-    let p = centre - q * Vector3::new(rr, 0.0, rho_p - 0.5 * prm.length);
     pose_state(p, q, Vector3::zeros(), Vector3::zeros())
 }
 

@@ -3,21 +3,19 @@
 //! central finite differences of the right-hand side, at contact states of
 //! every pair, with damping, friction, spin and a subtracted col.
 
-use nalgebra::{SMatrix, SVector, Unit, UnitQuaternion, Vector3};
+#[path = "common/peg3d.rs"]
+mod peg3d;
+
+use nalgebra::{SMatrix, SVector, UnitQuaternion, Vector3};
+use peg3d::orientation;
 use pegdyn::compliant_peg_3d::{HertzMode, Pair, Peg3d, Peg3dParams, pose_state};
 use pegdyn::integrate::{Method, Options, solve};
 use pegdyn::system::OdeSystem;
 
 fn fig9() -> Peg3dParams {
-    let mut p = Peg3dParams::steel(0.04995, 0.070, 0.050, 1e-3, 1e-3, 0.1);
+    let mut p = peg3d::fig9();
     p.hertz = HertzMode::Fixed(2e10);
     p
-}
-
-fn orientation(gamma: f64, psi: f64, phi: f64) -> UnitQuaternion<f64> {
-    let tilt_axis = Unit::new_normalize(Vector3::new(-psi.sin(), psi.cos(), 0.0));
-    UnitQuaternion::from_axis_angle(&tilt_axis, gamma)
-        * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), phi)
 }
 
 /// Central differences of the right-hand side, steps 1e-8 in the pose

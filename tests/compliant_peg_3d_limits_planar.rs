@@ -13,10 +13,14 @@
 //! surfaces (half the penetration further along the normal) in the 3-D
 //! model; it vanishes without friction.
 
+#[path = "common/peg3d.rs"]
+mod peg3d;
+
 use nalgebra::{SVector, UnitQuaternion, Vector3};
+use peg3d::Follower;
 use pegdyn::compliant_peg::{CompliantParams, CompliantSpec, Load, PegState};
 use pegdyn::compliant_peg_3d::{HertzMode, Pair, Peg3d, Peg3dParams, pose_state};
-use pegdyn::generated::{compliant_peg as planar, compliant_peg_3d as gen3d};
+use pegdyn::generated::compliant_peg as planar;
 use pegdyn::integrate::{Method, Options, OutputMode, solve};
 use pegdyn::system::OdeSystem;
 
@@ -30,35 +34,6 @@ impl OdeSystem<8> for Planar {
         planar::rhs(y, &self.p)
     }
     fn time_derivative(&self, _t: f64, _y: &SVector<f64, 8>) -> SVector<f64, 8> {
-        SVector::zeros()
-    }
-}
-
-/// The 3-D peg under a load fixed in the peg's frame: force
-/// `f₁ e_a + f₂ e_r` at the centre of mass (`e_a = −R e_z` towards the
-/// bottom face, `e_r = R e_x`) and moment `−M e_y` (the planar torque `M`
-/// increases the tilt θ, a rotation about `−e_y`).
-struct Follower {
-    peg: Peg3d,
-    load: Load,
-}
-
-impl OdeSystem<15> for Follower {
-    fn rhs(&self, _t: f64, y: &SVector<f64, 15>) -> SVector<f64, 15> {
-        let Ok(forces) = self.peg.forces(y) else {
-            return SVector::repeat(f64::NAN);
-        };
-        let mut w = Peg3d::wrench(y, &forces);
-        let x = Peg3d::pose(y);
-        let q = UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(x[3], x[4], x[5], x[6]));
-        let f = q * Vector3::new(self.load.radial, 0.0, -self.load.axial);
-        for k in 0..3 {
-            w[k] += f[k];
-        }
-        w[4] -= self.load.torque;
-        gen3d::rhs(y, &w, self.peg.param_vector())
-    }
-    fn time_derivative(&self, _t: f64, _y: &SVector<f64, 15>) -> SVector<f64, 15> {
         SVector::zeros()
     }
 }

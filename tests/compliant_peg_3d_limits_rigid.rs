@@ -15,14 +15,12 @@
 #[path = "common/prescribed_rigid.rs"]
 mod prescribed_rigid;
 
-use nalgebra::{SVector, Vector2};
 use pegdyn::compliant_peg_3d::Peg3dParams;
 use pegdyn::compliant_peg_3d::prescribed::{Motion, PrescribedPeg};
 use pegdyn::compliant_peg_3d::{HertzMode, Pair};
 use pegdyn::rigid_peg::PegParams;
-use pegdyn::rigid_peg::kinematics::Pose;
 use pegdyn::system::OdeSystem;
-use prescribed_rigid::{GAMMADOT, fillet, grid, preloaded_centre, print, run, worst};
+use prescribed_rigid::{GAMMADOT, fillet, grid, print, run, worst};
 
 #[test]
 fn rigid_limit_with_precession_converges_as_the_contacts_stiffen() {
@@ -129,20 +127,7 @@ fn prescribed_peg_with_curvature_stiffness_is_the_full_peg_translation() {
     // the prescribed right-hand side is the full peg's ṗ, v̇ and Ṡ.
     let k = 2.4e10;
     let rigid = PegParams::fig9();
-    let mut prm = Peg3dParams::steel(
-        rigid.peg_diameter,
-        rigid.height,
-        rigid.hole_diameter,
-        fillet(k),
-        fillet(k),
-        0.1,
-    );
-    prm.mass = rigid.mass;
-    prm.gravity = rigid.gravity;
-    prm.friction = rigid.friction;
-    prm.slip_scale = 1e-4;
-    prm.damping = 50.0;
-    prm.hertz = HertzMode::Fixed(k);
+    let mut prm = prescribed_rigid::params(&rigid, k);
     let motion = Motion {
         gamma: 0.3,
         gammadot: GAMMADOT,
@@ -150,11 +135,8 @@ fn prescribed_peg_with_curvature_stiffness_is_the_full_peg_translation() {
         psidot: 10.0,
     };
     let fixed = PrescribedPeg::try_new(prm, motion).unwrap();
-    let pose = Pose::try_new(&rigid, 0.3, 0.0).unwrap();
-    let v = pose.kinematics(Vector2::new(GAMMADOT, 10.0)).v_c;
     let w = rigid.mass * rigid.gravity;
-    let c = preloaded_centre(&fixed, pose.c, [0.3 * w, 0.5 * w, 0.5 * w], k);
-    let y = SVector::<f64, 7>::from_column_slice(&[c.x, c.y, c.z, v.x, v.y, v.z, 0.0]);
+    let y = prescribed_rigid::preloaded_state(&fixed, &rigid, [0.3 * w, 0.5 * w, 0.5 * w], k);
     prm.hertz = HertzMode::Curvature;
     let sys = PrescribedPeg::try_new(prm, motion).unwrap();
     let forces = sys.forces(0.0, &y).unwrap();

@@ -7,42 +7,17 @@
 //! (paper Eq. 52), and its jam/insert outcomes on a coarse grid of load
 //! ratios agree with the exact parallelogram.
 
+#[path = "common/peg3d.rs"]
+mod peg3d;
+
 use nalgebra::{SVector, UnitQuaternion, Vector3};
+use peg3d::Follower;
 use pegdyn::compliant_peg::{Load, PegState};
 use pegdyn::compliant_peg_3d::{HertzMode, Pair, Peg3d, Peg3dParams, pose_state};
-use pegdyn::generated::compliant_peg_3d as gen3d;
 use pegdyn::integrate::{Direction, Event, Method, Options, OutputMode, Solver, StopReason, solve};
 use pegdyn::jamming::dynamic::{SweepSetup, SweepSpec};
 use pegdyn::jamming::forces::{Wrench, to_paper_frame};
 use pegdyn::jamming::quasi_static::{PaperPeg, PegAcc, PegLoad};
-use pegdyn::system::OdeSystem;
-
-/// The 3-D peg under a load fixed in the peg's frame (as in the planar
-/// limit test): `f₁ e_a + f₂ e_r` at the centre of mass, moment `−M e_y`.
-struct Follower {
-    peg: Peg3d,
-    load: Load,
-}
-
-impl OdeSystem<15> for Follower {
-    fn rhs(&self, _t: f64, y: &SVector<f64, 15>) -> SVector<f64, 15> {
-        let Ok(forces) = self.peg.forces(y) else {
-            return SVector::repeat(f64::NAN);
-        };
-        let mut w = Peg3d::wrench(y, &forces);
-        let x = Peg3d::pose(y);
-        let q = UnitQuaternion::from_quaternion(nalgebra::Quaternion::new(x[3], x[4], x[5], x[6]));
-        let f = q * Vector3::new(self.load.radial, 0.0, -self.load.axial);
-        for k in 0..3 {
-            w[k] += f[k];
-        }
-        w[4] -= self.load.torque;
-        gen3d::rhs(y, &w, self.peg.param_vector())
-    }
-    fn time_derivative(&self, _t: f64, _y: &SVector<f64, 15>) -> SVector<f64, 15> {
-        SVector::zeros()
-    }
-}
 
 /// The planar state as a 3-D state (see the planar limit test).
 fn to_3d(s: &PegState) -> SVector<f64, 15> {

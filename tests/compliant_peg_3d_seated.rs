@@ -7,25 +7,16 @@
 //! on the top face, a tilted peg rocking to rest flat with a continuous
 //! force, and the energy balance through the hand-over.
 
-use nalgebra::{SVector, Unit, UnitQuaternion, Vector3};
+#[path = "common/peg3d.rs"]
+mod peg3d;
+
+use nalgebra::{SVector, UnitQuaternion, Vector3};
+use peg3d::{fig9, orientation, tight_dopri5};
 use pegdyn::compliant_peg_3d::face::{self, BLEND_END, BLEND_START};
 use pegdyn::compliant_peg_3d::{HertzMode, Pair, Peg3d, Peg3dParams, pose_state};
 use pegdyn::hertz::contact_modulus;
 use pegdyn::integrate::{Method, Options, solve};
 use std::f64::consts::TAU;
-
-/// The Fig. 9 peg (D = 50 mm, d = 49.95 mm, L = 70 mm) with 1 mm fillets
-/// and a 100 mm bore.
-fn fig9() -> Peg3dParams {
-    Peg3dParams::steel(0.04995, 0.070, 0.050, 1e-3, 1e-3, 0.1)
-}
-
-/// Tilt `gamma` of the axis towards azimuth `psi`, after a spin `phi`.
-fn orientation(gamma: f64, psi: f64, phi: f64) -> UnitQuaternion<f64> {
-    let tilt_axis = Unit::new_normalize(Vector3::new(-psi.sin(), psi.cos(), 0.0));
-    UnitQuaternion::from_axis_angle(&tilt_axis, gamma)
-        * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), phi)
-}
 
 /// The centre of mass that puts the lowest rim point `depth` (m) into the
 /// plane `z0` at orientation `q`, the rim circle's centre over `(x, y)`.
@@ -322,15 +313,7 @@ fn frictionless_undamped_rocking_through_the_hand_over_conserves_energy() {
     let sys = Peg3d::new(prm);
     let y0 = pose_state(p, q, Vector3::zeros(), Vector3::new(0.01, 0.0, 3.0));
     let e0 = sys.energy_balance(&y0).unwrap();
-    let sol = solve(
-        &sys,
-        Method::Dopri5,
-        (0.0, y0),
-        0.01,
-        &Options::with_tolerances(1e-11, 1e-15),
-    )
-    .unwrap();
-    assert!(sol.stop.is_success(), "{:?}", sol.stop);
+    let sol = tight_dopri5(&sys, y0, 0.01, 1e-15);
     let (mut worst, mut kinetic) = (0.0_f64, 0.0_f64);
     let (mut counts, mut changes) = ([0_usize; 4], 0);
     let mut last = 0;

@@ -11,27 +11,17 @@
 //! where a peg tilted in any direction and spun about its axis presses its
 //! side against the wall, and check that an accepted contact carries it.
 
+#[path = "common/peg3d.rs"]
+mod peg3d;
+
 #[path = "common/rng.rs"]
 mod rng;
 
-use nalgebra::{Unit, UnitQuaternion, Vector3};
+use nalgebra::{UnitQuaternion, Vector3};
+use peg3d::{fig9, orientation};
 use pegdyn::compliant_peg_3d::{Pair, Peg3d, Peg3dParams, pose_state};
 use rng::Rng;
 use std::f64::consts::TAU;
-
-/// The Fig. 9 peg (D = 50 mm, d = 49.95 mm, L = 70 mm) with 1 mm fillets
-/// and a 100 mm bore.
-fn fig9() -> Peg3dParams {
-    Peg3dParams::steel(0.04995, 0.070, 0.050, 1e-3, 1e-3, 0.1)
-}
-
-/// Tilt `gamma` of the axis towards azimuth `psi`, after a spin `phi` about
-/// the peg's own axis (a quaternion with all four components non-zero).
-fn orientation(gamma: f64, psi: f64, phi: f64) -> UnitQuaternion<f64> {
-    let tilt_axis = Unit::new_normalize(Vector3::new(-psi.sin(), psi.cos(), 0.0));
-    UnitQuaternion::from_axis_angle(&tilt_axis, gamma)
-        * UnitQuaternion::from_axis_angle(&Vector3::z_axis(), phi)
-}
 
 /// The deepest point of the peg's side in the bore wall, by brute force:
 /// `(|k_xy| − R, k, at the bottom end)` over 4000 generators, each sampled

@@ -106,18 +106,13 @@ impl<const N: usize> Reduced<N> {
     /// bounds known to the compiler (unrolled), others at run-time size.
     fn solve(&self, r: &SVector<f64, N>) -> SVector<f64, N> {
         match self.n {
-            1 => self.solve_n::<1>(r),
-            2 => self.solve_n::<2>(r),
-            3 => self.solve_n::<3>(r),
-            4 => self.solve_n::<4>(r),
-            6 => self.solve_n::<6>(r),
-            _ => self.solve_any(r, self.n),
+            1 => self.solve_any(r, 1),
+            2 => self.solve_any(r, 2),
+            3 => self.solve_any(r, 3),
+            4 => self.solve_any(r, 4),
+            6 => self.solve_any(r, 6),
+            n => self.solve_any(r, n),
         }
-    }
-
-    #[inline(always)]
-    fn solve_n<const M: usize>(&self, r: &SVector<f64, N>) -> SVector<f64, N> {
-        self.solve_any(r, M)
     }
 
     #[inline(always)]

@@ -139,13 +139,11 @@ pub fn fillet(k: f64) -> f64 {
     2e-5 * (k / 2.4e10).powf(-2.0 / 3.0)
 }
 
-/// The prescribed run from `gamma_s` (the compliant peg preloaded with the
-/// rigid reactions there, moving with the rigid centre-of-mass velocity)
-/// with stiffness `k`, Hunt–Crossley damping 50 s/m, friction 0.2 with
-/// `v_s = 10⁻⁴ m/s`, sampled at `gammas`.
-pub fn run(k: f64, psidot: f64, gamma_s: f64, gammas: &[f64]) -> Vec<Row> {
+/// The compliant 3-D peg matched to the rigid peg `rigid` (its size, mass,
+/// gravity and friction), with [`fillet`]`(k)` on both edges, fixed Hertz
+/// stiffness `k`, Hunt–Crossley damping 50 s/m and `v_s = 10⁻⁴ m/s`.
+pub fn params(rigid: &PegParams, k: f64) -> Peg3dParams {
     let rho = fillet(k);
-    let rigid = PegParams::fig9();
     let mut prm = Peg3dParams::steel(
         rigid.peg_diameter,
         rigid.height,
@@ -160,13 +158,38 @@ pub fn run(k: f64, psidot: f64, gamma_s: f64, gammas: &[f64]) -> Vec<Row> {
     prm.slip_scale = 1e-4;
     prm.damping = 50.0;
     prm.hertz = HertzMode::Fixed(k);
+    prm
+}
+
+/// The prescribed peg's state at the start of its motion: the rigid
+/// pose's centre moved so that the contacts carry `normal` (stiffness
+/// `k`, [`preloaded_centre`]), with the rigid centre-of-mass velocity.
+pub fn preloaded_state(
+    sys: &PrescribedPeg,
+    rigid: &PegParams,
+    normal: [f64; 3],
+    k: f64,
+) -> SVector<f64, 7> {
+    let m = &sys.motion;
+    let pose = Pose::try_new(rigid, m.gamma, m.psi).unwrap();
+    let v = pose.kinematics(Vector2::new(m.gammadot, m.psidot)).v_c;
+    let c = preloaded_centre(sys, pose.c, normal, k);
+    SVector::<f64, 7>::from_column_slice(&[c.x, c.y, c.z, v.x, v.y, v.z, 0.0])
+}
+
+/// The prescribed run from `gamma_s` (the compliant peg preloaded with the
+/// rigid reactions there, moving with the rigid centre-of-mass velocity)
+/// with stiffness `k`, Hunt–Crossley damping 50 s/m, friction 0.2 with
+/// `v_s = 10⁻⁴ m/s`, sampled at `gammas`.
+pub fn run(k: f64, psidot: f64, gamma_s: f64, gammas: &[f64]) -> Vec<Row> {
+    let rigid = PegParams::fig9();
     let motion = Motion {
         gamma: gamma_s,
         gammadot: GAMMADOT,
         psi: 0.0,
         psidot,
     };
-    let sys = PrescribedPeg::try_new(prm, motion).unwrap();
+    let sys = PrescribedPeg::try_new(params(&rigid, k), motion).unwrap();
     let react = |gamma: f64, psi: f64| {
         reactions(
             &rigid,
@@ -178,10 +201,7 @@ pub fn run(k: f64, psidot: f64, gamma_s: f64, gammas: &[f64]) -> Vec<Row> {
         .unwrap()
         .normal
     };
-    let pose = Pose::try_new(&rigid, gamma_s, 0.0).unwrap();
-    let v = pose.kinematics(Vector2::new(GAMMADOT, psidot)).v_c;
-    let c = preloaded_centre(&sys, pose.c, react(gamma_s, 0.0), k);
-    let y0 = SVector::<f64, 7>::from_column_slice(&[c.x, c.y, c.z, v.x, v.y, v.z, 0.0]);
+    let y0 = preloaded_state(&sys, &rigid, react(gamma_s, 0.0), k);
     let times: Vec<f64> = gammas.iter().map(|g| (g - gamma_s) / GAMMADOT).collect();
     let mut opts = Options::with_tolerances(1e-8, 1e-12);
     opts.output = OutputMode::AtTimes(times.clone());

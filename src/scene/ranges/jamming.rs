@@ -9,8 +9,8 @@
 //!   1.5, and the jamming diagram's `λ = l/(2 r μ)` degenerates at `μ → 0`.
 //! - Lengths (radius, depths, peg length) in `[1e-6, 1e3]` m, engineering
 //!   sizes.
-//! - Hunt–Crossley contact damping in `[0, 1e3]` s/m, as for
-//!   `insert_compliant`.
+//! - Hunt–Crossley contact damping in `[0, 1e3]` s/m, as for the 3-D
+//!   kinds' `contact_damping`.
 
 use super::{FieldRange, MIN_CLEARANCE_RATIO};
 
