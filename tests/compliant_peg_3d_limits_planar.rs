@@ -17,9 +17,9 @@
 mod peg3d;
 
 use nalgebra::{SVector, UnitQuaternion, Vector3};
-use peg3d::Follower;
+use peg3d::{Follower, pair_forces};
 use pegdyn::compliant_peg::{CompliantParams, CompliantSpec, Load, PegState};
-use pegdyn::compliant_peg_3d::{HertzMode, Pair, Peg3d, Peg3dParams, pose_state};
+use pegdyn::compliant_peg_3d::{HertzMode, Peg3d, Peg3dParams, pose_state};
 use pegdyn::generated::compliant_peg as planar;
 use pegdyn::integrate::{Method, Options, OutputMode, solve};
 use pegdyn::system::OdeSystem;
@@ -57,14 +57,7 @@ fn sample_3d(peg: &Peg3d, y: &SVector<f64, 15>) -> [f64; 4] {
     let axis = pegdyn::compliant_peg_3d::system::axis_of(&x);
     let depth = -(y[2] - 0.5 * peg.params.length * axis.z);
     let theta = (-axis.x).atan2(axis.z);
-    let (mut edge, mut wall) = (0.0, 0.0);
-    for f in peg.forces(y).unwrap() {
-        match f.contact.pair {
-            Pair::EdgeSide => edge += f.normal_force,
-            Pair::RimWall => wall += f.normal_force,
-            other => panic!("unexpected contact {other:?}"),
-        }
-    }
+    let (edge, wall) = pair_forces(peg, y);
     [depth, theta, edge, wall]
 }
 

@@ -11,9 +11,9 @@
 mod peg3d;
 
 use nalgebra::{SVector, UnitQuaternion, Vector3};
-use peg3d::Follower;
+use peg3d::{Follower, pair_forces};
 use pegdyn::compliant_peg::{Load, PegState};
-use pegdyn::compliant_peg_3d::{HertzMode, Pair, Peg3d, Peg3dParams, pose_state};
+use pegdyn::compliant_peg_3d::{HertzMode, Peg3d, Peg3dParams, pose_state};
 use pegdyn::integrate::{Direction, Event, Method, Options, OutputMode, Solver, StopReason, solve};
 use pegdyn::jamming::dynamic::{SweepSetup, SweepSpec};
 use pegdyn::jamming::forces::{Wrench, to_paper_frame};
@@ -62,19 +62,6 @@ fn follower(s: &SweepSetup, load: Load, v_s: f64, alpha: f64) -> Follower {
         peg: Peg3d::new(prm),
         load,
     }
-}
-
-/// Summed normal forces `(edge–side, rim–wall)` (N).
-fn pair_forces(peg: &Peg3d, y: &SVector<f64, 15>) -> (f64, f64) {
-    let (mut edge, mut wall) = (0.0, 0.0);
-    for f in peg.forces(y).unwrap() {
-        match f.contact.pair {
-            Pair::EdgeSide => edge += f.normal_force,
-            Pair::RimWall => wall += f.normal_force,
-            other => panic!("unexpected contact {other:?}"),
-        }
-    }
-    (edge, wall)
 }
 
 #[test]

@@ -112,13 +112,7 @@ fn functions_with_their_own_inputs_need_no_dynamics_without_an_adapter() {
         let v = m.state("v", "velocity, m/s")?;
         let k = m.parameter("k", "stiffness per mass, 1/s^2")?;
         let f = m.symbol("f", "force per mass, m/s^2")?;
-        m.outputs(Outputs {
-            rhs: false,
-            mass_forcing: false,
-            jacobian: false,
-            energy: false,
-            adapter: false,
-        });
+        m.outputs(Outputs::NONE);
         m.function(
             "rhs",
             "Right-hand side under the force f.",

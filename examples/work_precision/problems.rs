@@ -107,17 +107,22 @@ pub fn double_pendulum(t_end: f64) -> Problem<4, DoublePendulumSystem> {
     }
 }
 
-/// `scenes/insert_compliant.toml` (steel peg, D = 50 mm, c = 0.002,
-/// μ = 0.1, tilted 0.01 rad in two-point contact, f₁ = 5 N,
-/// M = −0.002 N·m), to 0.1 s (the peg reaches the 30 mm target at 0.11 s).
-pub fn insertion() -> Problem<8, CompliantSystem> {
-    // Read from the shipped scene file, so that the diagram follows it.
+/// The model, loads and start of `scenes/insert_compliant.toml`, read from
+/// the shipped file so that the diagrams follow it.
+fn shipped_insertion() -> pegdyn::scene::insert_compliant::Built {
     let text = include_str!("../../scenes/insert_compliant.toml");
     let scene: pegdyn::scene::insert_compliant::InsertCompliantScene =
         pegdyn::scene::document::Document::parse(text)
             .and_then(|d| d.body())
             .expect("shipped scene parses");
-    let built = scene.build().expect("shipped scene is valid");
+    scene.build().expect("shipped scene is valid")
+}
+
+/// `scenes/insert_compliant.toml` (steel peg, D = 50 mm, c = 0.002,
+/// μ = 0.1, tilted 0.01 rad in two-point contact, f₁ = 5 N,
+/// M = −0.002 N·m), to 0.1 s (the peg reaches the 30 mm target at 0.11 s).
+pub fn insertion() -> Problem<8, CompliantSystem> {
+    let built = shipped_insertion();
     let (params, load, start) = (built.params, built.load, built.initial);
     Problem {
         name: "insert_compliant",
@@ -224,12 +229,7 @@ pub fn rigid_rocking() -> Problem<4, RigidSystem> {
 /// `scenes/insert_compliant.toml` with the elastic friction law
 /// (Hertz–Mindlin capped by Coulomb), to 0.1 s.
 pub fn insertion_elastic() -> Problem<12, ElasticSystem> {
-    let text = include_str!("../../scenes/insert_compliant.toml");
-    let scene: pegdyn::scene::insert_compliant::InsertCompliantScene =
-        pegdyn::scene::document::Document::parse(text)
-            .and_then(|d| d.body())
-            .expect("shipped scene parses");
-    let built = scene.build().expect("shipped scene is valid");
+    let built = shipped_insertion();
     let mut spec = built.params.spec;
     spec.friction_law = FrictionLaw::Elastic;
     let params = pegdyn::compliant_peg::CompliantParams::try_new(spec).expect("valid elastic law");

@@ -1,13 +1,14 @@
 //! Fixtures of the compliant 3-D peg tests, included with `#[path]`: the
 //! Fig. 9 peg, orientations by tilt, precession and spin, the rim on the
-//! mouth fillet, the peg under a load fixed in its frame, and the tight
-//! DOPRI5 run the energy tests integrate with.
+//! mouth fillet, the peg under a load fixed in its frame, its two-point
+//! contact forces, and the tight DOPRI5 run the energy tests integrate
+//! with.
 
 #![allow(dead_code)]
 
 use nalgebra::{SVector, Unit, UnitQuaternion, Vector3};
 use pegdyn::compliant_peg::Load;
-use pegdyn::compliant_peg_3d::{Peg3d, Peg3dParams, pose_state};
+use pegdyn::compliant_peg_3d::{Pair, Peg3d, Peg3dParams, pose_state};
 use pegdyn::generated::compliant_peg_3d as gen3d;
 use pegdyn::integrate::{Method, Options, Solution, solve};
 use pegdyn::system::OdeSystem;
@@ -68,6 +69,20 @@ impl OdeSystem<15> for Follower {
     fn time_derivative(&self, _t: f64, _y: &SVector<f64, 15>) -> SVector<f64, 15> {
         SVector::zeros()
     }
+}
+
+/// Summed normal forces `(edge–side, rim–wall)` (N) of a peg leaning in
+/// two-point contact; any other contact fails the test.
+pub fn pair_forces(peg: &Peg3d, y: &SVector<f64, 15>) -> (f64, f64) {
+    let (mut edge, mut wall) = (0.0, 0.0);
+    for f in peg.forces(y).unwrap() {
+        match f.contact.pair {
+            Pair::EdgeSide => edge += f.normal_force,
+            Pair::RimWall => wall += f.normal_force,
+            other => panic!("unexpected contact {other:?}"),
+        }
+    }
+    (edge, wall)
 }
 
 /// DOPRI5 at rtol 1e-11 and the given `atol` from `y0` at t = 0 to

@@ -47,6 +47,18 @@ pub struct Outputs {
     pub adapter: bool,
 }
 
+impl Outputs {
+    /// Everything off: the model emits only the functions given to
+    /// [`ModelBuilder::function`].
+    pub const NONE: Outputs = Outputs {
+        rhs: false,
+        mass_forcing: false,
+        jacobian: false,
+        energy: false,
+        adapter: false,
+    };
+}
+
 impl Default for Outputs {
     /// Everything on.
     fn default() -> Outputs {

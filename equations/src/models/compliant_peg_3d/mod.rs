@@ -245,13 +245,7 @@ pub fn declare(m: &mut ModelBuilder<'_>) -> Result<(), GenError> {
     // Symbols are declared where the expressions first use them (pose,
     // angle, parameters, the pair functions; then the rest of the state and
     // the wrench), which fixes the order of terms in the emitted code.
-    m.outputs(Outputs {
-        rhs: false,
-        mass_forcing: false,
-        jacobian: false,
-        energy: false,
-        adapter: false,
-    });
+    m.outputs(Outputs::NONE);
     let mut y = Vec::with_capacity(STATE.len());
     for name in &STATE[..POSE.len()] {
         y.push(m.symbol(name, "pose component (see the module's state layout)")?);
