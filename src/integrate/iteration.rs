@@ -32,33 +32,32 @@ use nalgebra::{SMatrix, SVector};
 
 use super::lu::Lu;
 
-/// The factorized iteration matrix `cI − J` of one step.
+/// The factorized iteration matrix `cI − J` of one step (borrowing `J`).
 #[derive(Debug, Clone)]
-pub(crate) enum IterationLu<const N: usize> {
+pub(crate) enum IterationLu<'j, const N: usize> {
     /// `cI − J` factorized whole.
     Dense(Lu<N>),
     /// The reduced `n × n` system of a second-order Jacobian.
-    SecondOrder(Reduced<N>),
+    SecondOrder(Reduced<'j, N>),
 }
 
 /// The reduced system `(cI − B − A/c) u_v = r_v + A r_q / c`.
 #[derive(Debug, Clone)]
-pub(crate) struct Reduced<const N: usize> {
+pub(crate) struct Reduced<'j, const N: usize> {
     /// Number of positions (and of velocities).
     n: usize,
     /// `1/c = hγ`.
     inv_c: f64,
-    /// `A/c` in rows `0..n`, columns `0..n`; the integrals' rows
-    /// `[C D]` in rows `2n..N`, columns `0..2n` (as in the Jacobian).
-    blocks: SMatrix<f64, N, N>,
+    /// The Jacobian: its `A`, `C` and `D` blocks are read by the solves.
+    jac: &'j SMatrix<f64, N, N>,
     /// Factors of `cI − B − A/c` (leading `n × n` block).
     lu: Lu<N>,
 }
 
-impl<const N: usize> IterationLu<N> {
+impl<'j, const N: usize> IterationLu<'j, N> {
     /// Factorizes `cI − jac`, reduced when `jac` has the second-order
     /// block form; `None` if a pivot is zero or not finite.
-    pub(crate) fn new(jac: &SMatrix<f64, N, N>, c: f64) -> Option<Self> {
+    pub(crate) fn new(jac: &'j SMatrix<f64, N, N>, c: f64) -> Option<Self> {
         match second_order_split(jac) {
             Some(n) => {
                 let mut s = SMatrix::<f64, N, N>::zeros();
@@ -69,16 +68,10 @@ impl<const N: usize> IterationLu<N> {
                     s[(i, i)] += c;
                 }
                 let lu = Lu::leading(s, n)?;
-                let mut blocks = *jac;
-                for i in 0..n {
-                    for k in 0..n {
-                        blocks[(i, k)] = jac[(n + i, k)] / c;
-                    }
-                }
                 Some(IterationLu::SecondOrder(Reduced {
                     n,
                     inv_c: 1.0 / c,
-                    blocks,
+                    jac,
                     lu,
                 }))
             }
@@ -101,7 +94,7 @@ impl<const N: usize> IterationLu<N> {
     }
 }
 
-impl<const N: usize> Reduced<N> {
+impl<const N: usize> Reduced<'_, N> {
     /// The solve at the sizes of the usual mechanical systems with loop
     /// bounds known to the compiler (unrolled), others at run-time size.
     fn solve(&self, r: &SVector<f64, N>) -> SVector<f64, N> {
@@ -117,29 +110,29 @@ impl<const N: usize> Reduced<N> {
 
     #[inline(always)]
     fn solve_any(&self, r: &SVector<f64, N>, n: usize) -> SVector<f64, N> {
-        let b = &self.blocks;
-        // r_v + (A/c) r_q
+        let (jac, inv_c) = (self.jac, self.inv_c);
+        // r_v + A r_q / c
         let mut rhs = [0.0; N];
         for i in 0..n {
-            let mut s = r[n + i];
+            let mut a_rq = 0.0;
             for k in 0..n {
-                s += b[(i, k)] * r[k];
+                a_rq += jac[(n + i, k)] * r[k];
             }
-            rhs[i] = s;
+            rhs[i] = r[n + i] + a_rq * inv_c;
         }
         let mut u_v = [0.0; N];
         self.lu.solve_block(&rhs, &mut u_v, n);
         let mut u = SVector::<f64, N>::zeros();
         for i in 0..n {
             u[n + i] = u_v[i];
-            u[i] = (r[i] + u_v[i]) * self.inv_c;
+            u[i] = (r[i] + u_v[i]) * inv_c;
         }
         for i in 2 * n..N {
             let mut s = r[i];
             for k in 0..2 * n {
-                s += b[(i, k)] * u[k];
+                s += jac[(i, k)] * u[k];
             }
-            u[i] = s * self.inv_c;
+            u[i] = s * inv_c;
         }
         u
     }

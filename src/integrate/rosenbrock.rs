@@ -142,25 +142,23 @@ impl<const N: usize, const S: usize> Stepper<N> for Rosenbrock<N, S> {
         h: f64,
         stats: &mut Stats,
     ) -> Attempt<N> {
-        let stale = !matches!(&self.linearization, Some(l) if l.t == t && l.x == *x);
-        if stale {
-            stats.jacobian_calls += 1;
-            stats.time_derivative_calls += 1;
-        }
-        let lin = match self.linearization.take() {
-            Some(l) if !stale => l,
-            _ => Linearization {
-                t,
-                x: *x,
-                jac: system.jacobian(t, x),
-                dfdt: system.time_derivative(t, x),
-            },
+        let lin: &Linearization<N> = match &mut self.linearization {
+            Some(l) if l.t == t && l.x == *x => l,
+            slot => {
+                stats.jacobian_calls += 1;
+                stats.time_derivative_calls += 1;
+                slot.insert(Linearization {
+                    t,
+                    x: *x,
+                    jac: system.jacobian(t, x),
+                    dfdt: system.time_derivative(t, x),
+                })
+            }
         };
-        let (jac, dfdt) = (lin.jac, lin.dfdt);
-        self.linearization = Some(lin);
+        let dfdt = &lin.dfdt;
         let k = &self.coef;
         stats.lu_factorizations += 1;
-        let Some(lu) = IterationLu::new(&jac, 1.0 / (h * k.gamma)) else {
+        let Some(lu) = IterationLu::new(&lin.jac, 1.0 / (h * k.gamma)) else {
             return Attempt::Singular;
         };
         for i in 0..S {
