@@ -34,8 +34,8 @@ fn main() {
     // The public generator API, as a downstream build script uses it.
     let options = pegdyn_equations::Options::from_env();
     let mut generator = pegdyn_equations::Generator::new(options);
-    generator.builtin_models();
-    let written = generator.render().and_then(|out| {
+    let declared = pegdyn_equations::models::declare_all(&mut generator);
+    let written = declared.and_then(|()| generator.render()).and_then(|out| {
         out.write(&out_dir)?;
         // pegdyn's own test call table (tests/generated_vs_interpreter.rs).
         let calls = out_dir.join(pegdyn_equations::codegen::harness::CALLS_FILE);

@@ -55,6 +55,31 @@ pub struct Module {
     pub functions: Vec<FnSpec>,
 }
 
+/// What the ODE adapter of a model (`System`, implementing
+/// `pegdyn::system::OdeSystem`) needs to know besides its functions.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Layout {
+    /// The model (module) name.
+    pub model: String,
+    /// State component names, in order.
+    pub state: Vec<String>,
+    /// What each state component is, with units.
+    pub state_docs: Vec<String>,
+    /// Parameter names, in order.
+    pub params: Vec<String>,
+    /// What each parameter is, with units.
+    pub param_docs: Vec<String>,
+    /// `Some(n)`: Lagrangian with `n` degrees of freedom (state (q, q̇)).
+    /// `None`: explicit first-order system.
+    pub dof: Option<usize>,
+    /// Whether a closed-form `rhs` function was generated.
+    pub closed_rhs: bool,
+    /// Whether the functions take the time `t` (explicitly time-dependent).
+    pub time: bool,
+    /// Whether to emit the adapter.
+    pub adapter: bool,
+}
+
 /// The symbol behind `e`.
 ///
 /// # Panics

@@ -5,8 +5,8 @@
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::quote;
 
-use super::model::Layout;
 use crate::GenError;
+use crate::model::Layout;
 
 fn ident(s: &str) -> Ident {
     Ident::new(s, Span::call_site())

@@ -31,16 +31,17 @@
 
 mod adapter;
 pub mod blocks;
+mod finish;
 mod model;
 
 use std::path::{Path, PathBuf};
 
-pub use model::{Coordinate, Layout, ModelBuilder, Outputs};
+pub use model::{Coordinate, ModelBuilder, Outputs};
 
 use crate::GenError;
 use crate::codegen::{self, Report, write_if_changed};
 use crate::graph::Graph;
-use crate::model::Module;
+use crate::model::{Layout, Module};
 use crate::options::Options;
 
 /// One model to generate: its arena, its module and (for models declared
@@ -123,28 +124,6 @@ impl Generator {
             layout: Some(layout),
         });
         Ok(self)
-    }
-
-    /// Adds a module built directly from [`Module`] and [`crate::model::FnSpec`]
-    /// values (full control over every function's inputs and outputs; no
-    /// adapter). pegdyn's own models are added this way.
-    pub fn module(&mut self, build: impl for<'g> FnOnce(&'g Graph) -> Module) -> &mut Generator {
-        let graph = self.options.graph();
-        let module = build(&graph);
-        self.entries.push(Entry {
-            graph,
-            module,
-            layout: None,
-        });
-        self
-    }
-
-    /// Adds every model pegdyn ships ([`crate::models::ALL`]), in order.
-    pub fn builtin_models(&mut self) -> &mut Generator {
-        for build in crate::models::ALL {
-            self.module(build);
-        }
-        self
     }
 
     /// Verifies and emits every model.

@@ -135,7 +135,7 @@ pub fn render_registered() -> Result<Generated, GenError> {
     let modules: Vec<Module> = crate::models::ALL
         .iter()
         .zip(&graphs)
-        .map(|(build, g)| build(g))
+        .map(|(b, g)| b.module(g))
         .collect();
     let pairs: Vec<(&Graph, &Module)> = graphs.iter().zip(&modules).collect();
     render(&pairs)
