@@ -75,6 +75,13 @@ pub enum GenError {
     },
 
     /// The emitted tokens did not parse as a Rust file (a bug in the emitter).
+    /// A typed input or output struct that cannot be emitted as declared.
+    #[error("{module}: struct `{item}`: {reason}")]
+    Struct {
+        module: String,
+        item: String,
+        reason: String,
+    },
     #[error("emitted code for module `{module}` does not parse: {message}")]
     Parse { module: String, message: String },
 

@@ -47,12 +47,102 @@ pub struct FnSpec {
     pub outputs: Vec<(String, Output)>,
 }
 
-/// A group of functions emitted as `pub mod name { .. }`.
+/// A group of functions emitted as `pub mod name { .. }`, with the typed
+/// structs of its inputs and outputs.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Module {
     pub name: String,
     pub doc: String,
     pub functions: Vec<FnSpec>,
+    /// Typed views of inputs (`Params` for `p`), emitted as structs with one
+    /// documented field per component and conversions to and from the
+    /// input vector.
+    pub records: Vec<Record>,
+    /// The structs returned by functions with several outputs; a function
+    /// with several outputs that no entry lists returns `<Function>Out`.
+    pub out_types: Vec<OutType>,
+}
+
+/// A typed view of one input of a module: `pub struct <name><T>` with one
+/// field per component (named as its symbol, documented by `fields`), and
+/// `From` conversions both ways between it and the `SVector` the
+/// functions take.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Record {
+    /// The input it types (`p`, `loads`).
+    pub input: String,
+    /// The struct's name (`Params`).
+    pub name: String,
+    /// The struct's doc comment.
+    pub doc: String,
+    /// What each component is, with its unit, in input order.
+    pub fields: Vec<String>,
+    /// `Some(module)`: the struct is the one of that earlier module (same
+    /// fields, verified), re-exported rather than emitted again, so that one
+    /// value serves both modules.
+    pub shared_with: Option<String>,
+}
+
+/// A struct returned by functions with several outputs: one field per
+/// output, named as the output.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OutType {
+    /// The struct's name (`EllipseOut`, `LinearSystem`).
+    pub name: String,
+    /// The struct's doc comment.
+    pub doc: String,
+    /// What each output is, with its unit, in output order.
+    pub fields: Vec<String>,
+    /// The functions returning it; all have the same output names and
+    /// shapes (verified).
+    pub functions: Vec<String>,
+    /// `Some(module)`: the struct is the one of that earlier module (same
+    /// name, fields and shapes, verified), re-exported rather than emitted
+    /// again, so that code handling both models' results is written once.
+    pub shared_with: Option<String>,
+}
+
+impl Module {
+    /// A module of `functions` without typed inputs; every function with
+    /// several outputs returns its default `<Function>Out`.
+    pub fn new(name: &str, doc: &str, functions: Vec<FnSpec>) -> Module {
+        Module {
+            name: name.to_owned(),
+            doc: doc.to_owned(),
+            functions,
+            records: Vec::new(),
+            out_types: Vec::new(),
+        }
+    }
+
+    /// The struct `f` returns when it has several outputs: its entry in
+    /// [`Module::out_types`], else `(<Function>Out, no field docs)`.
+    pub fn out_type_of(&self, f: &FnSpec) -> (String, Option<&OutType>) {
+        match self
+            .out_types
+            .iter()
+            .find(|o| o.functions.contains(&f.name))
+        {
+            Some(o) => (o.name.clone(), Some(o)),
+            None => (default_out_name(&f.name), None),
+        }
+    }
+}
+
+/// `<Function>Out` in CamelCase: `rhs_jacobian` → `RhsJacobianOut`.
+pub fn default_out_name(function: &str) -> String {
+    let mut out: String = function
+        .split('_')
+        .filter(|w| !w.is_empty())
+        .map(|w| {
+            let mut cs = w.chars();
+            cs.next()
+                .map(|c| c.to_ascii_uppercase().to_string() + cs.as_str())
+                .unwrap_or_default()
+        })
+        .collect();
+    out.push_str("Out");
+    out
 }
 
 /// What the ODE adapter of a model (`System`, implementing

@@ -11,19 +11,16 @@ use pegdyn_equations::{Expr, GenError, Graph};
 
 /// A one-function module `m::f(x) -> outputs` over the symbols `syms`.
 fn module(syms: &[Expr<'_>], outputs: Vec<(&str, Output)>) -> Module {
-    Module {
-        name: "m".to_owned(),
-        doc: "test".to_owned(),
-        functions: vec![FnSpec {
-            name: "f".to_owned(),
-            doc: "test".to_owned(),
-            inputs: vec![Input::new("x", syms)],
-            outputs: outputs
-                .into_iter()
-                .map(|(n, o)| (n.to_owned(), o))
-                .collect(),
-        }],
-    }
+    Module::new(
+        "m",
+        "test",
+        vec![FnSpec::new(
+            "f",
+            "test",
+            vec![Input::new("x", syms)],
+            outputs,
+        )],
+    )
 }
 
 /// The emitted code of the scalar function `e` of a, b, c.

@@ -208,8 +208,8 @@ pub fn forward(
     variant.check(p, loads, q[1], qdot[1], t)?;
     let a = args(p, gamma0, loads, q, qdot, t);
     let gamma = q[0];
-    let two = |(a, b)| solve::<5>(&a, &b, gamma);
-    let one = |(a, b)| solve::<3>(&a, &b, gamma);
+    let two = |s: rigid_peg::LinearSystem<f64>| solve::<5>(&s.a, &s.b, gamma);
+    let one = |s: rigid_peg_planar::LinearSystem<f64>| solve::<3>(&s.a, &s.b, gamma);
     let (qdd, normal) = match variant {
         Variant::Full => split5(two(rigid_peg::forward(&a.x2, &a.p, &a.loads2, &a.t2))?),
         Variant::Frictionless => split5(two(rigid_peg_frictionless::forward(
@@ -260,8 +260,8 @@ pub fn prescribed(
     let a = args(p, gamma0, &loads, q, qdot, t);
     let (qdd2, qdd1) = (qdd, SVector::<f64, 1>::new(qdd[0]));
     let gamma = q[0];
-    let two = |(a, b)| solve::<5>(&a, &b, gamma);
-    let one = |(a, b)| solve::<3>(&a, &b, gamma);
+    let two = |s: rigid_peg::LinearSystem<f64>| solve::<5>(&s.a, &s.b, gamma);
+    let one = |s: rigid_peg_planar::LinearSystem<f64>| solve::<3>(&s.a, &s.b, gamma);
     let (moments, normal) = match variant {
         Variant::Full => split5(two(rigid_peg::prescribed(
             &a.x2, &qdd2, &a.p, &a.loads2, &a.t2,

@@ -74,10 +74,10 @@ impl OdeSystem<4> for DoublePendulumSystem {
     /// `∂ẋ/∂x = [[0, I], [M⁻¹G]]` from the generated mass matrix and
     /// Jacobian terms `G`.
     fn jacobian(&self, t: f64, x: &Vector4<f64>) -> SMatrix<f64, 4, 4> {
-        let (mass, forcing) = generated::dynamics(x, &self.p);
-        let lu = mass.lu();
+        let dynamics = generated::dynamics(x, &self.p);
+        let lu = dynamics.mass.lu();
         let solved = lu
-            .solve(&forcing)
+            .solve(&dynamics.forcing)
             .and_then(|qdd| lu.solve(&generated::jacobian_terms(x, &qdd, &self.p)));
         match solved {
             Some(lower) => {

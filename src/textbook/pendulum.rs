@@ -84,10 +84,10 @@ impl OdeSystem<2> for PendulumSystem {
     /// `∂ẋ/∂x = [[0, 1], [M⁻¹G]]` from the generated mass matrix and
     /// Jacobian terms `G`.
     fn jacobian(&self, t: f64, x: &Vector2<f64>) -> SMatrix<f64, 2, 2> {
-        let (mass, forcing) = generated::dynamics(x, &self.p);
-        let lu = mass.lu();
+        let dynamics = generated::dynamics(x, &self.p);
+        let lu = dynamics.mass.lu();
         let solved = lu
-            .solve(&forcing)
+            .solve(&dynamics.forcing)
             .and_then(|qdd| lu.solve(&generated::jacobian_terms(x, &qdd, &self.p)));
         match solved {
             Some(row) => SMatrix::<f64, 2, 2>::new(0.0, 1.0, row[(0, 0)], row[(0, 1)]),

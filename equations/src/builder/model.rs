@@ -124,6 +124,15 @@ pub struct ModelBuilder<'g> {
     pub(super) energy: Option<Expr<'g>>,
     pub(super) outputs: Outputs,
     pub(super) functions: Vec<Function<'g>>,
+    /// Inputs given a typed struct: (input, struct name, doc).
+    pub(super) typed: Vec<(String, String, String)>,
+    /// Inputs whose struct is an earlier module's: (input, module).
+    pub(super) shared_types: Vec<(String, String)>,
+    /// Output structs shared by several functions: (struct name, doc,
+    /// functions).
+    pub(super) shared_outputs: Vec<(String, String, Vec<String>)>,
+    /// Output structs that are an earlier module's: (struct name, module).
+    pub(super) shared_out_types: Vec<(String, String)>,
     names: Vec<String>,
 }
 
@@ -132,6 +141,14 @@ fn is_ident(n: &str) -> bool {
     !n.is_empty()
         && n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
         && n.starts_with(|c: char| c.is_ascii_alphabetic())
+}
+
+/// True for a CamelCase type name (`Params`, `LinearSystem`): ASCII
+/// letters and digits, an upper-case letter first, more than one letter.
+fn is_type_name(n: &str) -> bool {
+    n.len() > 1
+        && n.chars().all(|c| c.is_ascii_alphanumeric())
+        && n.starts_with(|c: char| c.is_ascii_uppercase())
 }
 
 impl<'g> ModelBuilder<'g> {
@@ -151,6 +168,10 @@ impl<'g> ModelBuilder<'g> {
             energy: None,
             outputs: Outputs::default(),
             functions: Vec::new(),
+            typed: Vec::new(),
+            shared_types: Vec::new(),
+            shared_outputs: Vec::new(),
+            shared_out_types: Vec::new(),
             names: Vec::new(),
         }
     }
@@ -409,6 +430,65 @@ impl<'g> ModelBuilder<'g> {
         Ok(())
     }
 
+    /// Gives the input `input` (as the functions that take it name it) a
+    /// typed struct `type_name<T>`, documented by `doc`, with one field per
+    /// component named as its symbol and documented as it was declared,
+    /// and `From` conversions both ways with the input's `SVector`. The
+    /// parameter vector gets its struct, `Params`, without asking.
+    ///
+    /// # Errors
+    /// [`GenError::Model`] for a type name that is not CamelCase.
+    pub fn typed_input(&mut self, input: &str, type_name: &str, doc: &str) -> Result<(), GenError> {
+        if !is_type_name(type_name) || !is_ident(input) {
+            return Err(self.error("typed_input", type_name, "not a CamelCase type name"));
+        }
+        self.typed
+            .push((input.to_owned(), type_name.to_owned(), doc.to_owned()));
+        Ok(())
+    }
+
+    /// Uses the struct of input `input` of the earlier model `module` (same
+    /// components, names and docs, which the generator verifies) instead of
+    /// a struct of this model's own: one value then serves both models'
+    /// functions. For the parameter vector, `input` is its name (`p`).
+    pub fn share_input_type(&mut self, input: &str, module: &str) {
+        self.shared_types
+            .push((input.to_owned(), module.to_owned()));
+    }
+
+    /// The functions `functions`, declared with the same output names and
+    /// shapes, all return one struct `type_name<T>` (documented by `doc`, its
+    /// fields by the first function's output docs) instead of one
+    /// `<Function>Out` each.
+    ///
+    /// # Errors
+    /// [`GenError::Model`] for a type name that is not CamelCase.
+    pub fn shared_output(
+        &mut self,
+        type_name: &str,
+        doc: &str,
+        functions: &[&str],
+    ) -> Result<(), GenError> {
+        if !is_type_name(type_name) {
+            return Err(self.error("shared_output", type_name, "not a CamelCase type name"));
+        }
+        self.shared_outputs.push((
+            type_name.to_owned(),
+            doc.to_owned(),
+            functions.iter().map(|f| (*f).to_owned()).collect(),
+        ));
+        Ok(())
+    }
+
+    /// Uses the output struct `type_name` of the earlier model `module`
+    /// (same fields, docs and shapes, which the generator verifies) for
+    /// this model's functions that return a struct of that name (their
+    /// `<Function>Out` or one declared with [`ModelBuilder::shared_output`]).
+    pub fn share_output_type(&mut self, type_name: &str, module: &str) {
+        self.shared_out_types
+            .push((type_name.to_owned(), module.to_owned()));
+    }
+
     /// The state symbols, in order.
     pub(super) fn state_exprs(&self) -> Vec<Expr<'g>> {
         if self.coords.is_empty() {
@@ -420,7 +500,11 @@ impl<'g> ModelBuilder<'g> {
 
     /// The declared doc of `e` (empty for an undeclared symbol).
     pub(super) fn doc_of(&self, e: Expr<'g>) -> String {
-        let s = sym_of(e);
+        self.doc_of_sym(sym_of(e))
+    }
+
+    /// The declared doc of symbol `s` (empty for an undeclared symbol).
+    pub(super) fn doc_of_sym(&self, s: Sym) -> String {
         self.docs
             .iter()
             .find(|(d, _)| *d == s)

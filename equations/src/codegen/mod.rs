@@ -22,8 +22,10 @@ pub mod ops;
 pub mod registry;
 pub mod schedule;
 mod tokens;
+mod types;
 mod value_names;
 pub mod verify;
+mod verify_types;
 
 use std::path::Path;
 
@@ -177,12 +179,17 @@ pub fn write_if_changed(path: &Path, bytes: &[u8]) -> Result<bool, GenError> {
     Ok(true)
 }
 
-/// `pub mod name { use ..; consts; fns }`.
+/// `pub mod name { use ..; consts; typed inputs; (out struct, fn)s }`.
 fn module_tokens(g: &Graph, m: &Module, report: &mut Report) -> TokenStream {
     let mut uses = function::Uses::default();
     let mut fns = Vec::new();
+    let mut emitted_outs = std::collections::BTreeSet::new();
     for f in &m.functions {
-        let (ts, row) = function::function(g, &m.name, f, &mut uses);
+        let (out, declared) = m.out_type_of(f);
+        if f.outputs.len() > 1 && emitted_outs.insert(out.clone()) {
+            fns.push(types::out_struct(&out, declared, f, &mut uses));
+        }
+        let (ts, row) = function::function(g, &m.name, f, &out, &mut uses);
         fns.push(ts);
         report.rows.push(row);
     }
@@ -204,6 +211,17 @@ fn module_tokens(g: &Graph, m: &Module, report: &mut Report) -> TokenStream {
             pub const #cname: [&str; #n] = [#(#names),*];
         });
     }
+    let mut records = Vec::new();
+    for r in &m.records {
+        let input = m
+            .functions
+            .iter()
+            .flat_map(|f| &f.inputs)
+            .find(|i| i.name == r.input);
+        if let Some(input) = input {
+            records.push(types::record(g, r, input, &mut uses));
+        }
+    }
     let types: Vec<_> = uses.names().iter().map(|n| ident(n)).collect();
     let docs = function::doc_lines(m.doc.trim_end());
     let name = ident(&m.name);
@@ -213,6 +231,7 @@ fn module_tokens(g: &Graph, m: &Module, report: &mut Report) -> TokenStream {
             use nalgebra::{#(#types),*};
             use pegdyn::scalar::Real;
             #(#consts)*
+            #(#records)*
             #(#fns)*
         }
     }

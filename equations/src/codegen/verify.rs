@@ -47,15 +47,21 @@ fn check_names<'a>(
     Ok(())
 }
 
-/// Verifies every module (and that module names are unique).
+/// Verifies every module (and that module names are unique), and that
+/// each struct shared with an earlier module matches that module's.
 pub fn verify_all(modules: &[(&Graph, &Module)]) -> Result<(), GenError> {
     check_names("module", modules.iter().map(|(_, m)| m.name.as_str()))?;
-    modules.iter().try_for_each(|(g, m)| verify_module(g, m))
+    for (k, (g, m)) in modules.iter().enumerate() {
+        verify_module(g, m)?;
+        super::verify_types::verify_shared(g, m, &modules[..k])?;
+    }
+    Ok(())
 }
 
 /// Verifies one module.
 pub fn verify_module(g: &Graph, m: &Module) -> Result<(), GenError> {
     check_names("function", m.functions.iter().map(|f| f.name.as_str()))?;
+    super::verify_types::verify_types(g, m)?;
     let mut inputs: BTreeMap<&str, &[Sym]> = BTreeMap::new();
     for f in &m.functions {
         verify_fn(g, &m.name, f)?;

@@ -146,6 +146,11 @@ pub fn declare(b: &mut ModelBuilder<'_>) -> Result<(), GenError> {
             ("moment", MOMENT, Output::scalar(moment_b)),
         ],
     )?;
+    b.typed_input(
+        "q",
+        "WhitneyParams",
+        "The parameters of Whitney's tip equilibrium ([`whitney_tip`]): friction and radius.",
+    )?;
     b.function(
         "whitney_tip",
         "Whitney's frame (x lateral, z into the hole, moment about the tip): tip \

@@ -38,6 +38,9 @@ pub fn declare_elastic(b: &mut ModelBuilder<'_>) -> Result<(), GenError> {
 /// # Errors
 /// Those of [`ModelBuilder`] (none for this fixed model).
 pub fn declare_lean(b: &mut ModelBuilder<'_>) -> Result<(), GenError> {
+    // The same parameters as `compliant_peg`: one value serves both.
+    b.share_input_type("p", "compliant_peg");
+    b.share_output_type("EnergyOut", "compliant_peg");
     declare(
         b,
         &[Contact::EdgeLeft, Contact::WallRight],

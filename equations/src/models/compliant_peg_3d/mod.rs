@@ -304,6 +304,13 @@ pub fn declare(m: &mut ModelBuilder<'_>) -> Result<(), GenError> {
     for pair in Pair::ALL {
         pair_function(m, pair, &pose, angle)?;
     }
+    m.shared_output(
+        "PairGeometry",
+        "One contact pair at one angle along its edge circle: the gap with its first and second \
+         derivatives in the angle, its gradient in the pose, the force direction on the peg and \
+         the contact point.",
+        &Pair::ALL.map(Pair::name),
+    )?;
     for (name, doc) in STATE[POSE.len()..].iter().zip(&STATE_DOCS[POSE.len()..]) {
         y.push(m.symbol(name, doc)?);
     }

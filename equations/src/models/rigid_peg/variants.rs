@@ -216,6 +216,56 @@ fn symbol_doc(name: &str, planar: bool) -> String {
     }
 }
 
+/// The typed inputs and outputs of `variant`: `Params`, `State`, `Loads`,
+/// `FrictionDirections`, `LinearSystem` (of `forward` and `prescribed`)
+/// and `EnergyOut`; each variant shares those of the largest variant with
+/// the same components.
+fn declare_types(b: &mut ModelBuilder<'_>, variant: Variant) -> Result<(), GenError> {
+    let (state_doc, loads_doc) = if variant.is_planar() {
+        (
+            "The state x = (γ, γ̇) of the planar motion (ψ ≡ 0).",
+            "The applied loads of the planar motion: the moment conjugate to γ and the \
+             in-plane components of the assembly force.",
+        )
+    } else {
+        (
+            "The state x = (γ, ψ, γ̇, ψ̇).",
+            "The applied loads: the moments conjugate to γ and ψ and the assembly force at the \
+             centre of mass in fixed-frame components.",
+        )
+    };
+    b.typed_input("x", "State", state_doc)?;
+    b.typed_input("loads", "Loads", loads_doc)?;
+    if variant.has_friction() {
+        b.typed_input(
+            "t",
+            "FrictionDirections",
+            "The friction direction at each contact (unit or shorter, force on the peg) in \
+             rotating components (e_η, e_n, e_z).",
+        )?;
+    }
+    b.shared_output(
+        "LinearSystem",
+        "A linear system A u = b for the unknowns u (see the function returning it).",
+        &["forward", "prescribed"],
+    )?;
+    let largest = if variant.is_planar() {
+        Variant::Planar
+    } else {
+        Variant::Full
+    };
+    if variant != Variant::Full {
+        b.share_input_type("p", Variant::Full.module_name());
+        b.share_output_type("EnergyOut", Variant::Full.module_name());
+    }
+    if variant != largest {
+        b.share_input_type("x", largest.module_name());
+        b.share_input_type("loads", largest.module_name());
+        b.share_output_type("LinearSystem", largest.module_name());
+    }
+    Ok(())
+}
+
 /// Declares the rigid peg's `variant`: the derivation and its
 /// specialization first, then the symbols its functions take with their
 /// meanings, then `forward`, `prescribed`, `contact_velocities`, `energy`
@@ -283,6 +333,7 @@ fn declare<'g>(b: &mut ModelBuilder<'g>, variant: Variant) -> Result<(), GenErro
         }
     ));
 
+    declare_types(b, variant)?;
     let params = d.p.all();
     let (x, p) = (("x", sp.state.as_slice()), ("p", params.as_slice()));
     let (loads, qdd) = (("loads", sp.loads.as_slice()), ("qdd", sp.accel.as_slice()));
