@@ -16,6 +16,7 @@ pub mod eval;
 pub mod expand;
 pub mod expr;
 pub mod graph;
+pub mod schedule;
 pub mod simplify;
 pub mod subst;
 
@@ -30,7 +31,7 @@ pub mod models;
 pub mod builder;
 pub mod options;
 
-pub use builder::{Generator, ModelBuilder, Outputs, Rendered, blocks};
-pub use codegen::{Report, generate};
+pub use builder::{Generator, ModelBuilder, Outputs, blocks};
+pub use codegen::{Entry, Rendered, Report, render};
 pub use error::GenError;
 pub use options::Options;

@@ -61,6 +61,9 @@ pub struct Module {
     /// The structs returned by functions with several outputs; a function
     /// with several outputs that no entry lists returns `<Function>Out`.
     pub out_types: Vec<OutType>,
+    /// The layout of the model's ODE adapter (`System`), for a model
+    /// declared with one ([`Layout::adapter`]).
+    pub adapter: Option<Layout>,
 }
 
 /// A typed view of one input of a module: `pub struct <name><T>` with one
@@ -112,6 +115,7 @@ impl Module {
             functions,
             records: Vec::new(),
             out_types: Vec::new(),
+            adapter: None,
         }
     }
 

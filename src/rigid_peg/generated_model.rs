@@ -20,7 +20,6 @@ use crate::generated::{
     rigid_peg, rigid_peg_frictionless, rigid_peg_planar, rigid_peg_planar_frictionless,
 };
 use crate::rigid_peg::dynamics::solve;
-use crate::rigid_peg::prescribed::Reactions;
 use crate::rigid_peg::{Loads, PegParams, RigidError};
 
 /// Which generated rigid-peg module to use: the generator's own definition
@@ -38,6 +37,26 @@ pub struct Accelerations {
     /// Normal forces on the peg `[N_K, N_B1, N_B2]` (N); negative = the
     /// contact would have to pull.
     pub normal: [f64; 3],
+}
+
+/// Reactions and driving moments of a prescribed motion.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Reactions {
+    /// Moment conjugate to γ that drives the motion (N·m).
+    pub m_gamma: f64,
+    /// Moment about the hole axis that drives the motion (N·m).
+    pub m_psi: f64,
+    /// Normal reactions `[N_K, N_B1, N_B2]` (N); negative = the contact would
+    /// have to pull.
+    pub normal: [f64; 3],
+}
+
+impl Reactions {
+    /// True when every contact pushes (N ≥ 0): the prescribed motion is
+    /// possible with the peg on three points.
+    pub fn feasible(&self) -> bool {
+        self.normal.iter().all(|&n| n >= 0.0)
+    }
 }
 
 /// Relative size below which a lateral component counts as zero in the

@@ -46,8 +46,8 @@ struct Derived {
 }
 
 impl<'g> ModelBuilder<'g> {
-    /// Builds the module and the adapter layout, in named steps.
-    pub(crate) fn finish(self) -> Result<(Module, Layout), GenError> {
+    /// Builds the module (with the adapter's layout), in named steps.
+    pub(crate) fn finish(self) -> Result<Module, GenError> {
         let dynamics = self.checked_dynamics()?;
         let sig = self.signature();
         let mut outputs = self.outputs;
@@ -74,8 +74,9 @@ impl<'g> ModelBuilder<'g> {
             functions,
             records,
             out_types,
+            adapter: Some(layout),
         };
-        Ok((module, layout))
+        Ok(module)
     }
 
     /// The dynamics, or `None` for a model made only of its own functions

@@ -7,11 +7,12 @@ use proc_macro2::TokenStream;
 use quote::quote;
 
 use super::emit::Emitter;
+use super::names::{Names, snake_case};
 use super::ops::ReportRow;
-use super::schedule::{Names, Schedule, snake_case};
 use super::tokens::{ident, ulit};
 use crate::graph::{Graph, Id, Sym};
 use crate::model::{FnSpec, Output};
+use crate::schedule::Schedule;
 
 /// The nalgebra type names a module's code mentions (for its `use`).
 #[derive(Clone, Default)]

@@ -8,8 +8,8 @@ use proc_macro2::TokenStream;
 use quote::quote;
 
 use super::function::{Uses, doc_lines, output_kind, output_type};
+use super::names::is_snake_ident;
 use super::tokens::{ident, ulit};
-use super::verify::is_snake_ident;
 use crate::graph::Graph;
 use crate::model::{FnSpec, Input, OutType, Record};
 

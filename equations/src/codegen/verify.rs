@@ -11,25 +11,11 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use super::schedule::Schedule;
+use super::names::is_snake_ident;
 use crate::error::GenError;
 use crate::graph::{Graph, Id, Node, Sym};
 use crate::model::{FnSpec, Module, Output};
-
-/// True for a snake_case Rust identifier that is not a keyword
-/// (the strict and reserved keywords of edition 2024, one list in the
-/// emitter's token helpers).
-pub fn is_snake_ident(s: &str) -> bool {
-    let mut cs = s.chars();
-    let first_ok = cs
-        .next()
-        .is_some_and(|c| c.is_ascii_lowercase() || c == '_');
-    first_ok
-        && s != "_"
-        && s.chars()
-            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
-        && !super::tokens::KEYWORDS.contains(&s)
-}
+use crate::schedule::Schedule;
 
 fn check_names<'a>(
     what: &'static str,

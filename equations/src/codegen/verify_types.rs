@@ -30,7 +30,7 @@ fn is_type_name(n: &str) -> bool {
 fn is_field_name(n: &str) -> bool {
     n.starts_with(|c: char| c.is_ascii_alphabetic())
         && n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
-        && !super::tokens::KEYWORDS.contains(&n)
+        && !super::names::KEYWORDS.contains(&n)
 }
 
 /// The input `name` of the module's functions.

@@ -41,7 +41,7 @@ impl Builtin {
     pub fn module(&self, g: &Graph) -> Module {
         let mut b = ModelBuilder::new(g, self.name, "");
         match (self.declare)(&mut b).and_then(|()| b.finish()) {
-            Ok((module, _)) => module,
+            Ok(module) => module,
             Err(e) => panic!("built-in model `{}` is inconsistent: {e}", self.name),
         }
     }

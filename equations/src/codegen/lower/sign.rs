@@ -11,8 +11,8 @@
 use std::cmp::Ordering;
 
 use super::{Term, rebuild, sum_node, term_node};
-use crate::codegen::schedule::pow_form;
 use crate::graph::{Graph, Id, Node, PowForm};
+use crate::schedule::{negated, pow_form};
 use crate::simplify::{konst, term_parts};
 
 /// The roots with every sum sign-normalized and every negation folded
@@ -59,16 +59,6 @@ pub(super) fn use_counts(g: &Graph, roots: &[Id]) -> Vec<u32> {
         g.with_node(Id(i as u32), |n| n.for_each_child(|c| uses[c.index()] += 1));
     }
     uses
-}
-
-/// `Some(x)` when `id` is the pure negation `(−1)·x`.
-pub(crate) fn negated(g: &Graph, id: Id) -> Option<Id> {
-    g.with_node(id, |n| match n {
-        Node::Mul(fs) if fs.len() == 2 => {
-            (crate::simplify::const_of(g, fs[0]) == Some(-1.0)).then_some(fs[1])
-        }
-        _ => None,
-    })
 }
 
 /// `(−1)·x`, or `y` when `x` is `(−1)·y`.

@@ -2,22 +2,14 @@
 //! and `System`, which implements `pegdyn::system::OdeSystem` with the
 //! model's exact right-hand side, exact Jacobian and time derivative.
 
-use proc_macro2::{Ident, Literal, Span, TokenStream};
+use proc_macro2::TokenStream;
 use quote::quote;
 
-use crate::GenError;
+use super::tokens::{ident, ulit as lit};
 use crate::model::Layout;
 
-fn ident(s: &str) -> Ident {
-    Ident::new(s, Span::call_site())
-}
-
-fn lit(n: usize) -> Literal {
-    Literal::usize_unsuffixed(n)
-}
-
-/// The adapter items (to be placed inside `pub mod <model>`).
-pub fn tokens(l: &Layout) -> TokenStream {
+/// The adapter items, emitted inside `pub mod <model>`.
+pub(crate) fn tokens(l: &Layout) -> TokenStream {
     let n = l.state.len();
     let np = l.params.len();
     let (nl, npl) = (lit(n), lit(np));
@@ -173,26 +165,4 @@ pub fn tokens(l: &Layout) -> TokenStream {
         #new
         #body
     }
-}
-
-/// `code` (one formatted `pub mod name { .. }`) with `extra` appended
-/// inside the module, formatted again.
-pub fn splice(model: &str, code: &str, extra: TokenStream) -> Result<String, GenError> {
-    let parse_err = |e: syn::Error| GenError::Parse {
-        module: model.to_owned(),
-        message: e.to_string(),
-    };
-    let mut file = syn::parse_file(code).map_err(parse_err)?;
-    let extra = syn::parse2::<syn::File>(extra).map_err(parse_err)?;
-    let Some((_, items)) = file.items.iter_mut().find_map(|i| match i {
-        syn::Item::Mod(m) => m.content.as_mut(),
-        _ => None,
-    }) else {
-        return Err(GenError::Parse {
-            module: model.to_owned(),
-            message: "no module body to add the adapter to".to_owned(),
-        });
-    };
-    items.extend(extra.items);
-    Ok(prettyplease::unparse(&file))
 }
