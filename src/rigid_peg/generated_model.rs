@@ -146,9 +146,13 @@ fn lateral(loads: &Loads, psi: f64) -> f64 {
     -loads.force[0] * s + loads.force[1] * c
 }
 
-/// Checks the parameters, the state's finiteness and the three-point range; returns γ0 = arccos(d/D), computed
-/// once per call and handed to [`args`].
-fn check_state(p: &PegParams, q: Vector2<f64>, qdot: Vector2<f64>) -> Result<f64, RigidError> {
+/// Checks the parameters, the state's finiteness and the three-point range;
+/// returns the generated model's parameters (γ0 computed once, here).
+fn checked(
+    p: &PegParams,
+    q: Vector2<f64>,
+    qdot: Vector2<f64>,
+) -> Result<rigid_peg::Params<f64>, RigidError> {
     p.validate()?;
     let values = [
         ("q", q[0]),
@@ -165,44 +169,95 @@ fn check_state(p: &PegParams, q: Vector2<f64>, qdot: Vector2<f64>) -> Result<f64
             });
         }
     }
-    let (gamma, gamma0) = (q[0], p.gamma0());
+    let params = rigid_peg::Params::from(p);
+    let (gamma, gamma0) = (q[0], params.gamma0);
     if !(gamma > gamma0 && gamma < std::f64::consts::FRAC_PI_2) {
         return Err(RigidError::NotThreePoint { gamma, gamma0 });
     }
-    Ok(gamma0)
+    Ok(params)
 }
 
-/// Inputs in the generated functions' order.
-struct Args {
-    x2: SVector<f64, 4>,
-    x1: SVector<f64, 2>,
-    p: SVector<f64, 7>,
-    loads2: SVector<f64, 5>,
-    loads1: SVector<f64, 3>,
-    t2: SVector<f64, 9>,
-    t1: SVector<f64, 4>,
-}
-
-fn args(
-    p: &PegParams,
-    gamma0: f64,
-    loads: &Loads,
-    q: Vector2<f64>,
-    qdot: Vector2<f64>,
-    t: &[Vector3<f64>; 3],
-) -> Args {
-    let (s, c) = q[1].sin_cos();
-    let [fx, fy, fz] = loads.force;
-    let in_plane = fx * c + fy * s;
-    Args {
-        x2: SVector::<f64, 4>::new(q[0], q[1], qdot[0], qdot[1]),
-        x1: SVector::<f64, 2>::new(q[0], qdot[0]),
-        p: p.to_vector_with_gamma0(gamma0),
-        loads2: loads.to_vector(),
-        loads1: SVector::<f64, 3>::new(loads.m_gamma, in_plane, fz),
-        t2: SVector::<f64, 9>::from_iterator(t.iter().flat_map(|v| v.iter().copied())),
-        t1: SVector::<f64, 4>::new(t[0].x, t[0].z, t[1].x, t[1].z),
+/// The 2-DOF state (γ, ψ, γ̇, ψ̇).
+fn state(q: Vector2<f64>, qdot: Vector2<f64>) -> rigid_peg::State<f64> {
+    rigid_peg::State {
+        gamma: q[0],
+        psi: q[1],
+        gammadot: qdot[0],
+        psidot: qdot[1],
     }
+}
+
+/// The planar state (γ, γ̇).
+fn planar_state(q: Vector2<f64>, qdot: Vector2<f64>) -> rigid_peg_planar::State<f64> {
+    rigid_peg_planar::State {
+        gamma: q[0],
+        gammadot: qdot[0],
+    }
+}
+
+/// The planar loads at precession angle `psi`: M_γ and the force's
+/// in-plane (e_η) and vertical components.
+fn planar_loads(loads: &Loads, psi: f64) -> rigid_peg_planar::Loads<f64> {
+    let (s, c) = psi.sin_cos();
+    let [fx, fy, fz] = loads.force;
+    rigid_peg_planar::Loads {
+        M_gamma: loads.m_gamma,
+        F_x: fx * c + fy * s,
+        F_z: fz,
+    }
+}
+
+/// The friction directions at K, B1, B2 in rotating components.
+fn directions(t: &[Vector3<f64>; 3]) -> rigid_peg::FrictionDirections<f64> {
+    let [k, b1, b2] = t;
+    rigid_peg::FrictionDirections {
+        t_K_eta: k.x,
+        t_K_n: k.y,
+        t_K_z: k.z,
+        t_B1_eta: b1.x,
+        t_B1_n: b1.y,
+        t_B1_z: b1.z,
+        t_B2_eta: b2.x,
+        t_B2_n: b2.y,
+        t_B2_z: b2.z,
+    }
+}
+
+/// The planar friction directions at K and B (= B1 = B2), in-plane
+/// components ([`planar_directions`] has checked that they are planar).
+fn planar_friction(t: &[Vector3<f64>; 3]) -> rigid_peg_planar::FrictionDirections<f64> {
+    rigid_peg_planar::FrictionDirections {
+        t_K_eta: t[0].x,
+        t_K_z: t[0].z,
+        t_B_eta: t[1].x,
+        t_B_z: t[1].z,
+    }
+}
+
+/// The unknowns of a solved system: q̈ (forward) or the moments
+/// (prescribed), and the normal forces `[N_K, N_B1, N_B2]`.
+struct Unknowns {
+    head: Vector2<f64>,
+    normal: [f64; 3],
+}
+
+/// Solves a 2-DOF variant's system A u = b at γ.
+fn solve5(s: rigid_peg::LinearSystem<f64>, gamma: f64) -> Result<Unknowns, RigidError> {
+    let x = solve::<5>(&s.a, &s.b, gamma)?;
+    Ok(Unknowns {
+        head: Vector2::new(x[0], x[1]),
+        normal: [x[2], x[3], x[4]],
+    })
+}
+
+/// Solves a planar variant's system A u = b at γ: the ψ part is 0 and
+/// N_B1 = N_B2 = N_B.
+fn solve3(s: rigid_peg_planar::LinearSystem<f64>, gamma: f64) -> Result<Unknowns, RigidError> {
+    let x = solve::<3>(&s.a, &s.b, gamma)?;
+    Ok(Unknowns {
+        head: Vector2::new(x[0], 0.0),
+        normal: [x[1], x[2], x[2]],
+    })
 }
 
 /// Forward dynamics: (γ̈, ψ̈) and the normal forces at state (q, q̇) under
@@ -223,25 +278,50 @@ pub fn forward(
     qdot: Vector2<f64>,
     t: &[Vector3<f64>; 3],
 ) -> Result<Accelerations, RigidError> {
-    let gamma0 = check_state(p, q, qdot)?;
+    let params = checked(p, q, qdot)?;
     variant.check(p, loads, q[1], qdot[1], t)?;
-    let a = args(p, gamma0, loads, q, qdot, t);
+    let pv = params.into();
     let gamma = q[0];
-    let two = |s: rigid_peg::LinearSystem<f64>| solve::<5>(&s.a, &s.b, gamma);
-    let one = |s: rigid_peg_planar::LinearSystem<f64>| solve::<3>(&s.a, &s.b, gamma);
-    let (qdd, normal) = match variant {
-        Variant::Full => split5(two(rigid_peg::forward(&a.x2, &a.p, &a.loads2, &a.t2))?),
-        Variant::Frictionless => split5(two(rigid_peg_frictionless::forward(
-            &a.x2, &a.p, &a.loads2,
-        ))?),
-        Variant::Planar => split3(one(rigid_peg_planar::forward(
-            &a.x1, &a.p, &a.loads1, &a.t1,
-        ))?),
-        Variant::PlanarFrictionless => split3(one(rigid_peg_planar_frictionless::forward(
-            &a.x1, &a.p, &a.loads1,
-        ))?),
+    let u = match variant {
+        Variant::Full => solve5(
+            rigid_peg::forward(
+                &state(q, qdot).into(),
+                &pv,
+                &rigid_peg::Loads::from(loads).into(),
+                &directions(t).into(),
+            ),
+            gamma,
+        )?,
+        Variant::Frictionless => solve5(
+            rigid_peg_frictionless::forward(
+                &state(q, qdot).into(),
+                &pv,
+                &rigid_peg::Loads::from(loads).into(),
+            ),
+            gamma,
+        )?,
+        Variant::Planar => solve3(
+            rigid_peg_planar::forward(
+                &planar_state(q, qdot).into(),
+                &pv,
+                &planar_loads(loads, q[1]).into(),
+                &planar_friction(t).into(),
+            ),
+            gamma,
+        )?,
+        Variant::PlanarFrictionless => solve3(
+            rigid_peg_planar_frictionless::forward(
+                &planar_state(q, qdot).into(),
+                &pv,
+                &planar_loads(loads, q[1]).into(),
+            ),
+            gamma,
+        )?,
     };
-    Ok(Accelerations { qdd, normal })
+    Ok(Accelerations {
+        qdd: u.head,
+        normal: u.normal,
+    })
 }
 
 /// Prescribed motion: the moments (M_γ, M_ψ) that drive (q̈ given) and the
@@ -259,7 +339,7 @@ pub fn prescribed(
     qdd: Vector2<f64>,
     t: &[Vector3<f64>; 3],
 ) -> Result<Reactions, RigidError> {
-    let gamma0 = check_state(p, q, qdot)?;
+    let params = checked(p, q, qdot)?;
     let loads = Loads {
         m_gamma: 0.0,
         m_psi: 0.0,
@@ -276,41 +356,54 @@ pub fn prescribed(
             reason: "must be finite",
         });
     }
-    let a = args(p, gamma0, &loads, q, qdot, t);
+    let pv = params.into();
     let (qdd2, qdd1) = (qdd, SVector::<f64, 1>::new(qdd[0]));
     let gamma = q[0];
-    let two = |s: rigid_peg::LinearSystem<f64>| solve::<5>(&s.a, &s.b, gamma);
-    let one = |s: rigid_peg_planar::LinearSystem<f64>| solve::<3>(&s.a, &s.b, gamma);
-    let (moments, normal) = match variant {
-        Variant::Full => split5(two(rigid_peg::prescribed(
-            &a.x2, &qdd2, &a.p, &a.loads2, &a.t2,
-        ))?),
-        Variant::Frictionless => split5(two(rigid_peg_frictionless::prescribed(
-            &a.x2, &qdd2, &a.p, &a.loads2,
-        ))?),
-        Variant::Planar => split3(one(rigid_peg_planar::prescribed(
-            &a.x1, &qdd1, &a.p, &a.loads1, &a.t1,
-        ))?),
-        Variant::PlanarFrictionless => split3(one(rigid_peg_planar_frictionless::prescribed(
-            &a.x1, &qdd1, &a.p, &a.loads1,
-        ))?),
+    let u = match variant {
+        Variant::Full => solve5(
+            rigid_peg::prescribed(
+                &state(q, qdot).into(),
+                &qdd2,
+                &pv,
+                &rigid_peg::Loads::from(&loads).into(),
+                &directions(t).into(),
+            ),
+            gamma,
+        )?,
+        Variant::Frictionless => solve5(
+            rigid_peg_frictionless::prescribed(
+                &state(q, qdot).into(),
+                &qdd2,
+                &pv,
+                &rigid_peg::Loads::from(&loads).into(),
+            ),
+            gamma,
+        )?,
+        Variant::Planar => solve3(
+            rigid_peg_planar::prescribed(
+                &planar_state(q, qdot).into(),
+                &qdd1,
+                &pv,
+                &planar_loads(&loads, q[1]).into(),
+                &planar_friction(t).into(),
+            ),
+            gamma,
+        )?,
+        Variant::PlanarFrictionless => solve3(
+            rigid_peg_planar_frictionless::prescribed(
+                &planar_state(q, qdot).into(),
+                &qdd1,
+                &pv,
+                &planar_loads(&loads, q[1]).into(),
+            ),
+            gamma,
+        )?,
     };
     Ok(Reactions {
-        m_gamma: moments[0],
-        m_psi: moments[1],
-        normal,
+        m_gamma: u.head[0],
+        m_psi: u.head[1],
+        normal: u.normal,
     })
-}
-
-/// [q̈ or M (2); N (3)] from the 2-DOF unknowns.
-fn split5(x: SVector<f64, 5>) -> (Vector2<f64>, [f64; 3]) {
-    (Vector2::new(x[0], x[1]), [x[2], x[3], x[4]])
-}
-
-/// [q̈ or M (2, the ψ part 0); N (3, N_B1 = N_B2 = N_B)] from the planar
-/// unknowns.
-fn split3(x: SVector<f64, 3>) -> (Vector2<f64>, [f64; 3]) {
-    (Vector2::new(x[0], 0.0), [x[1], x[2], x[2]])
 }
 
 /// Material velocity of the peg at K, B1, B2 in rotating components (m/s)
@@ -324,23 +417,14 @@ pub fn contact_velocities(
     q: Vector2<f64>,
     qdot: Vector2<f64>,
 ) -> Result<[Vector3<f64>; 3], RigidError> {
-    let gamma0 = check_state(p, q, qdot)?;
-    let a = args(
-        p,
-        gamma0,
-        &Loads::default(),
-        q,
-        qdot,
-        &[Vector3::zeros(); 3],
-    );
+    let pv = checked(p, q, qdot)?.into();
+    let (x2, x1) = (state(q, qdot).into(), planar_state(q, qdot).into());
     let v = match variant {
-        Variant::Full => rigid_peg::contact_velocities(&a.x2, &a.p),
-        Variant::Frictionless => rigid_peg_frictionless::contact_velocities(&a.x2, &a.p),
+        Variant::Full => rigid_peg::contact_velocities(&x2, &pv),
+        Variant::Frictionless => rigid_peg_frictionless::contact_velocities(&x2, &pv),
         _ if qdot[1] != 0.0 => return Err(variant.refuse("psidot is not zero")),
-        Variant::Planar => rigid_peg_planar::contact_velocities(&a.x1, &a.p),
-        Variant::PlanarFrictionless => {
-            rigid_peg_planar_frictionless::contact_velocities(&a.x1, &a.p)
-        }
+        Variant::Planar => rigid_peg_planar::contact_velocities(&x1, &pv),
+        Variant::PlanarFrictionless => rigid_peg_planar_frictionless::contact_velocities(&x1, &pv),
     };
     Ok([0, 1, 2].map(|i| v.row(i).transpose()))
 }
