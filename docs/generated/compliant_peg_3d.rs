@@ -177,7 +177,7 @@ pub mod compliant_peg_3d {
     /// - `axial`: scalar
     ///
     /// # Cost
-    /// 78 add/sub, 143 mul, 2 div, 0 sqrt, 3 transcendental, 0 branches; 46 `let`s.
+    /// 78 add/sub, 143 mul, 2 div, 0 sqrt, 3 transcendental, 0 branches; 45 `let`s.
     #[inline]
     pub fn edge_side<T: Real>(
         x: &SVector<T, 7>,
@@ -230,16 +230,15 @@ pub mod compliant_peg_3d {
         let t31 = -t28 * t24;
         let t32 = t6 * t24;
         let t33 = t1 * (-(t22 * t9) + t23 * t11 + T::from_f64(2.0) * t32 * t8);
-        let t34 = -t33;
-        let t35 = t5 * t23;
-        let t36 = -T::from_f64(2.0) * t32;
-        let t37 = t0 * t22;
-        let t38 = q2 * t21;
-        let t39 = -T::from_f64(2.0) * t38;
-        let t40 = q1 * t21;
-        let t41 = -T::from_f64(2.0) * t40;
-        let t42 = q3 * t21;
-        let t43 = q0 * t21;
+        let t34 = t5 * t23;
+        let t35 = -T::from_f64(2.0) * t32;
+        let t36 = t0 * t22;
+        let t37 = q2 * t21;
+        let t38 = -T::from_f64(2.0) * t37;
+        let t39 = q1 * t21;
+        let t40 = -T::from_f64(2.0) * t39;
+        let t41 = q3 * t21;
+        let t42 = q0 * t21;
         PairGeometry {
             gap: -rho_h - r + t26,
             d1: -t33 * t27,
@@ -248,7 +247,7 @@ pub mod compliant_peg_3d {
                     * (t22 * (T::from_f64(4.0) * t0 * t13 - cos_angle)
                         + t23 * (sin_angle + T::from_f64(4.0) * t5 * t13)
                         - T::from_f64(2.0) * t32 * t13) + t10 * t10 + t12 * t12
-                    + t7 * (t20 * t20)) - t34 * t34 / (t26 * t26 * t26),
+                    + t7 * (t20 * t20)) - t33 * t33 / (t26 * t26 * t26),
             grad: SMatrix::<
                 T,
                 7,
@@ -256,29 +255,29 @@ pub mod compliant_peg_3d {
             >::from_row_slice(
                 &[
                     t27
-                        * (t0 * (T::from_f64(4.0) * t35 + t36)
+                        * (t0 * (T::from_f64(4.0) * t34 + t35)
                             - t22 * (T::from_f64(1.0) - T::from_f64(4.0) * (t0 * t0))),
                     -t27
-                        * (t5 * (T::from_f64(4.0) * t37 + t36)
+                        * (t5 * (T::from_f64(4.0) * t36 + t35)
                             - t23 * (T::from_f64(1.0) - T::from_f64(4.0) * (t5 * t5))),
                     t27
-                        * (T::from_f64(2.0) * (t37 + t35) * t6
+                        * (T::from_f64(2.0) * (t36 + t34) * t6
                             + t24 * (T::from_f64(1.0) - t7)),
                     -t27
-                        * (t22 * (t39 + T::from_f64(4.0) * t0 * t16)
-                            + t23 * (t41 + T::from_f64(4.0) * t5 * t16)
+                        * (t22 * (t38 + T::from_f64(4.0) * t0 * t16)
+                            + t23 * (t40 + T::from_f64(4.0) * t5 * t16)
                             - T::from_f64(2.0) * t32 * t16),
                     t27
                         * (T::from_f64(2.0)
-                            * (t22 * (t42 - t0 * t17) + t23 * (t43 - t5 * t17))
-                            + t24 * (T::from_f64(4.0) * t40 + t6 * t17)),
+                            * (t22 * (t41 - t0 * t17) + t23 * (t42 - t5 * t17))
+                            + t24 * (T::from_f64(4.0) * t39 + t6 * t17)),
                     t27
                         * (T::from_f64(2.0)
-                            * (t22 * (t43 - t0 * t19) - t23 * (t42 + t5 * t19))
-                            + t24 * (T::from_f64(4.0) * t38 + t6 * t19)),
+                            * (t22 * (t42 - t0 * t19) - t23 * (t41 + t5 * t19))
+                            + t24 * (T::from_f64(4.0) * t37 + t6 * t19)),
                     -t27
-                        * (t22 * (t41 - T::from_f64(4.0) * t0 * t18)
-                            - t23 * (t39 + T::from_f64(4.0) * t5 * t18)
+                        * (t22 * (t40 - T::from_f64(4.0) * t0 * t18)
+                            - t23 * (t38 + T::from_f64(4.0) * t5 * t18)
                             + T::from_f64(2.0) * t32 * t18),
                 ],
             ),
@@ -306,7 +305,7 @@ pub mod compliant_peg_3d {
     /// - `axial`: scalar
     ///
     /// # Cost
-    /// 55 add/sub, 107 mul, 2 div, 0 sqrt, 2 transcendental, 0 branches; 47 `let`s.
+    /// 55 add/sub, 107 mul, 2 div, 0 sqrt, 2 transcendental, 0 branches; 46 `let`s.
     #[inline]
     pub fn rim_wall<T: Real>(
         x: &SVector<T, 7>,
@@ -369,13 +368,12 @@ pub mod compliant_peg_3d {
         let t39 = t36 * t38;
         let t40 = t37 * t38;
         let t41 = t11 * (t32 * t29 - t33 * t20);
-        let t42 = -t41;
-        let t43 = q2 * cos_angle;
-        let t44 = q1 * sin_angle;
+        let t42 = q2 * cos_angle;
+        let t43 = q1 * sin_angle;
         PairGeometry {
             gap: r_2 - rho_p - t34,
             d1: -t41 * t35,
-            d2: t42 * t42 / (t34 * t34 * t34)
+            d2: t41 * t41 / (t34 * t34 * t34)
                 - t35 * (-(t11 * (t32 * t28 + t33 * t19)) + t30 * t30 + t21 * t21),
             grad: SMatrix::<
                 T,
@@ -392,11 +390,11 @@ pub mod compliant_peg_3d {
                         * (T::from_f64(2.0) * t32 * (q2 * sin_angle * t11 + t16)
                             - t33
                                 * (t14
-                                    - t11 * (T::from_f64(4.0) * t44 - T::from_f64(2.0) * t43))),
+                                    - t11 * (T::from_f64(4.0) * t43 - T::from_f64(2.0) * t42))),
                     -t35
                         * (t32
                             * (t14
-                                - t11 * (T::from_f64(2.0) * t44 - T::from_f64(4.0) * t43))
+                                - t11 * (T::from_f64(2.0) * t43 - T::from_f64(4.0) * t42))
                             + T::from_f64(2.0) * t33 * (t16 + q1 * cos_angle * t11)),
                     -t35
                         * (t32

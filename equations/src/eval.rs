@@ -49,7 +49,7 @@ enum Op {
 
 /// A compiled program for the nodes reachable from some roots: one
 /// instruction per node (plus the products and sum of each factored sum,
-/// [`factor_sum`](crate::schedule::factor_sum)), in arena (topological) order, the operands of sums
+/// [`factor_sum`]), in arena (topological) order, the operands of sums
 /// and products in one flat array. Evaluation allocates nothing beyond the
 /// caller's scratch buffer.
 #[derive(Clone, Debug)]
@@ -149,7 +149,7 @@ impl Tape {
     }
 
     /// Number of operations (reachable nodes, plus the products and sums
-    /// of factored sums, see [`factor_sum`](crate::schedule::factor_sum)).
+    /// of factored sums, see [`factor_sum`]).
     pub fn len(&self) -> usize {
         self.ops.len()
     }
@@ -173,8 +173,8 @@ impl Tape {
     /// `scratch` as working memory (resized as needed, so a reused buffer
     /// makes evaluation allocation-free), writing `out[k]` for root `k`.
     ///
-    /// Sums are evaluated left to right in [`sum_order`](crate::schedule::sum_order) (factored as
-    /// [`factor_sum`](crate::schedule::factor_sum) says), products left to right in canonical operand
+    /// Sums are evaluated left to right in [`sum_order`] (factored as
+    /// [`factor_sum`] says), products left to right in canonical operand
     /// order; powers, functions and their NaN behaviour are [`pow`],
     /// [`unary`] and [`binary`], the definitions the emitted code uses.
     ///

@@ -27,6 +27,7 @@ pub type Coord<'g> = (Expr<'g>, Expr<'g>, Expr<'g>);
 /// The equations of motion M(q) q̈ = f(q, q̇, p) of a Lagrangian system.
 #[derive(Clone)]
 pub struct Lagrange<'g> {
+    /// The arena the expressions live in.
     pub g: &'g Graph,
     /// The coordinates (q, q̇, q̈), in order.
     pub coords: Vec<Coord<'g>>,

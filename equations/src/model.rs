@@ -14,7 +14,9 @@ use crate::graph::{Graph, Id, Node, Sym};
 /// symbol `syms[k]`. The module exports `<NAME>_NAMES` with the symbol names.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Input {
+    /// The argument's name (`x`, `p`).
     pub name: String,
+    /// The symbol of each component, in order.
     pub syms: Vec<Sym>,
 }
 
@@ -27,23 +29,35 @@ pub enum Output {
     Vector(Vec<Id>),
     /// Returned as `SMatrix<T, rows, cols>`; `entries` row-major.
     Matrix {
+        /// Number of rows.
         rows: usize,
+        /// Number of columns.
         cols: usize,
+        /// The entries, row-major.
         entries: Vec<Id>,
     },
     /// Returned as `SMatrix<T, n, n>`; `entries` row-major, and the
     /// generator verifies that entry (i, j) is the same expression as (j, i).
-    Symmetric { n: usize, entries: Vec<Id> },
+    Symmetric {
+        /// Number of rows and columns.
+        n: usize,
+        /// The entries, row-major.
+        entries: Vec<Id>,
+    },
 }
 
 /// A function to generate.
 #[derive(Clone, Debug, PartialEq)]
 pub struct FnSpec {
+    /// The function's name (snake_case).
     pub name: String,
     /// Emitted as the function's doc comment: what it computes, the paper's
     /// equation numbers and units.
     pub doc: String,
+    /// The arguments, in order.
     pub inputs: Vec<Input>,
+    /// The named outputs, in order (one is returned as it is, several as
+    /// the fields of a struct, [`Module::out_types`]).
     pub outputs: Vec<(String, Output)>,
 }
 
@@ -51,8 +65,11 @@ pub struct FnSpec {
 /// structs of its inputs and outputs.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Module {
+    /// The module's name (`pub mod <name>`).
     pub name: String,
+    /// The module's doc comment.
     pub doc: String,
+    /// The functions, in emission order.
     pub functions: Vec<FnSpec>,
     /// Typed views of inputs (`Params` for `p`), emitted as structs with one
     /// documented field per component and conversions to and from the

@@ -209,7 +209,7 @@ pub struct FactoredSum {
 
 /// The factored form of the sum of `xs` (in the order given), when every term
 /// is a product that is not bound to a name (`named`: a `let` of the
-/// emitter's [`Schedule`](Schedule), whose value
+/// emitter's [`Schedule`], whose value
 /// is reused rather than recomputed) and they share at least one
 /// non-constant factor.
 pub fn factor_sum(g: &Graph, xs: &[Id], named: impl Fn(Id) -> bool) -> Option<FactoredSum> {

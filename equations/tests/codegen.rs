@@ -382,3 +382,30 @@ fn a_value_equal_to_a_named_one_carries_its_name() {
     });
     assert!(code.contains("let twice_s = "), "{code}");
 }
+
+/// `let a = -b;` lines: a `let` that binds nothing but a negation.
+fn pure_negations(code: &str) -> Vec<&str> {
+    let is_name = |t: &str| !t.is_empty() && t.chars().all(|ch| ch.is_alphanumeric() || ch == '_');
+    code.lines()
+        .map(str::trim)
+        .filter(|l| {
+            let Some(rest) = l.strip_prefix("let ") else {
+                return false;
+            };
+            let Some((name, value)) = rest.split_once(" = -") else {
+                return false;
+            };
+            is_name(name) && value.strip_suffix(';').is_some_and(is_name)
+        })
+        .collect()
+}
+
+#[test]
+fn signs_fold_into_their_users_in_every_model() {
+    let src = builtins(Options::default()).source;
+    let found = pure_negations(&src);
+    assert!(found.is_empty(), "pure negations bound: {found:?}");
+    // The scanner sees one when there is one.
+    assert_eq!(pure_negations("        let t34 = -t33;\n").len(), 1);
+    assert!(pure_negations("let t = -a * b;\nlet u = -T::from_f64(2.0);").is_empty());
+}

@@ -107,7 +107,7 @@ pub(crate) fn output_kind(o: &Output) -> String {
 
 /// Emits `spec` (already verified); returns the tokens and its report row.
 /// A function with several outputs returns the struct `out` (one field per
-/// output, [`super::types::out_struct`]).
+/// output).
 pub fn function(
     g: &Graph,
     module: &str,

@@ -16,7 +16,7 @@ pub(crate) const KEYWORDS: &[&str] = &[
 ];
 
 /// True for a snake_case Rust identifier that is not a keyword
-/// (the strict and reserved keywords of edition 2024, [`KEYWORDS`]).
+/// (the strict and reserved keywords of edition 2024).
 pub fn is_snake_ident(s: &str) -> bool {
     let mut cs = s.chars();
     let first_ok = cs

@@ -11,7 +11,7 @@
 //! To add a law, write its function (in `super::laws` or a new sibling
 //! module) and add a row. A [`Site::Sum`] rule must strictly decrease the
 //! number of `cos` and `exp` occurrences in the sum (counted as a tree,
-//! [`super::laws::sum_measure`]): that is the measure that proves the sum rules terminate, and `rewrite_sum` refuses
+//! `laws::sum_measure`): that is the measure that proves the sum rules terminate, and `rewrite_sum` refuses
 //! (and in debug builds reports) a rewrite that does not decrease it.
 
 use super::{laws, stable, trig};
@@ -35,8 +35,11 @@ pub type BinaryRule = fn(&Graph, Binary, Id, Id) -> Option<Id>;
 pub enum Site {
     /// Applied by the constructors in [`crate::simplify`] (no function here).
     Core,
+    /// Tried on every sum.
     Sum(SumRule),
+    /// Tried on every product.
     Product(ProductRule),
+    /// Tried on every power.
     Pow(PowRule),
     /// Tried only for this function.
     Unary(Unary, UnaryRule),

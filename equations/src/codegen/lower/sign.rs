@@ -48,6 +48,21 @@ pub(super) fn fold_negations(g: &Graph, roots: &[Id]) -> Vec<Id> {
     })
 }
 
+/// The roots with every even power of a negation taken of its operand,
+/// `(−x)^{2k} = x^{2k}` (exact: the sign of a product of equal factors),
+/// so that no `let` binds a negation only to square it. The last lowering
+/// passes (sharing sub-products, reusing named terms) can leave such a
+/// power behind the sign folding.
+pub(super) fn fold_even_powers(g: &Graph, roots: &[Id]) -> Vec<Id> {
+    rebuild(g, roots, |g, _, node, _| match node {
+        Node::Pow(b, e) => match (negated(g, b), pow_form(g, e)) {
+            (Some(x), PowForm::Int(n)) if n % 2 == 0 => g.intern(Node::Pow(x, e)),
+            _ => g.intern(Node::Pow(b, e)),
+        },
+        node => g.intern(node),
+    })
+}
+
 /// How many users each node reachable from `roots` has.
 pub(super) fn use_counts(g: &Graph, roots: &[Id]) -> Vec<u32> {
     let live = g.reachable(roots);
