@@ -262,3 +262,27 @@ fn a_shared_struct_is_re_exported_when_it_matches_the_earlier_module() {
         ),
     }
 }
+
+#[test]
+fn a_typed_input_no_function_takes_is_an_error() {
+    let mut g = Generator::new(Options::default());
+    let e = g
+        .model("untyped", "", |m| {
+            m.typed_input("loads", "Loads", "Applied loads.")?;
+            let x = m.state("x", "m")?;
+            let f = m.input_parameter("f", "force, N")?;
+            m.outputs(Outputs::NONE);
+            m.function(
+                "h",
+                "",
+                &[("x", &[x]), ("u", &[f])],
+                vec![("y", "x f", pegdyn_equations::model::Output::scalar(x * f))],
+            )
+        })
+        .err()
+        .unwrap();
+    assert_eq!(
+        model_error(e),
+        ("untyped".into(), "typed_input".into(), "loads".into())
+    );
+}

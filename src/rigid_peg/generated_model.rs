@@ -20,6 +20,9 @@ use crate::generated::{
     rigid_peg, rigid_peg_frictionless, rigid_peg_planar, rigid_peg_planar_frictionless,
 };
 use crate::rigid_peg::dynamics::solve;
+use crate::rigid_peg::generated_inputs::{
+    directions, planar_friction, planar_loads, planar_state, state,
+};
 use crate::rigid_peg::{Loads, PegParams, RigidError};
 
 /// Which generated rigid-peg module to use: the generator's own definition
@@ -175,63 +178,6 @@ fn checked(
         return Err(RigidError::NotThreePoint { gamma, gamma0 });
     }
     Ok(params)
-}
-
-/// The 2-DOF state (γ, ψ, γ̇, ψ̇).
-fn state(q: Vector2<f64>, qdot: Vector2<f64>) -> rigid_peg::State<f64> {
-    rigid_peg::State {
-        gamma: q[0],
-        psi: q[1],
-        gammadot: qdot[0],
-        psidot: qdot[1],
-    }
-}
-
-/// The planar state (γ, γ̇).
-fn planar_state(q: Vector2<f64>, qdot: Vector2<f64>) -> rigid_peg_planar::State<f64> {
-    rigid_peg_planar::State {
-        gamma: q[0],
-        gammadot: qdot[0],
-    }
-}
-
-/// The planar loads at precession angle `psi`: M_γ and the force's
-/// in-plane (e_η) and vertical components.
-fn planar_loads(loads: &Loads, psi: f64) -> rigid_peg_planar::Loads<f64> {
-    let (s, c) = psi.sin_cos();
-    let [fx, fy, fz] = loads.force;
-    rigid_peg_planar::Loads {
-        M_gamma: loads.m_gamma,
-        F_x: fx * c + fy * s,
-        F_z: fz,
-    }
-}
-
-/// The friction directions at K, B1, B2 in rotating components.
-fn directions(t: &[Vector3<f64>; 3]) -> rigid_peg::FrictionDirections<f64> {
-    let [k, b1, b2] = t;
-    rigid_peg::FrictionDirections {
-        t_K_eta: k.x,
-        t_K_n: k.y,
-        t_K_z: k.z,
-        t_B1_eta: b1.x,
-        t_B1_n: b1.y,
-        t_B1_z: b1.z,
-        t_B2_eta: b2.x,
-        t_B2_n: b2.y,
-        t_B2_z: b2.z,
-    }
-}
-
-/// The planar friction directions at K and B (= B1 = B2), in-plane
-/// components ([`planar_directions`] has checked that they are planar).
-fn planar_friction(t: &[Vector3<f64>; 3]) -> rigid_peg_planar::FrictionDirections<f64> {
-    rigid_peg_planar::FrictionDirections {
-        t_K_eta: t[0].x,
-        t_K_z: t[0].z,
-        t_B_eta: t[1].x,
-        t_B_z: t[1].z,
-    }
 }
 
 /// The unknowns of a solved system: q̈ (forward) or the moments

@@ -120,7 +120,7 @@ impl PegParams {
     }
 
     /// The parameter vector the generated functions take
-    /// ([`generated::rigid_peg::Params`], γ0 from [`PegParams::gamma0`]).
+    /// ([`generated::Params`], γ0 from [`PegParams::gamma0`]).
     pub fn to_vector(&self) -> nalgebra::SVector<f64, 7> {
         generated::Params::from(self).into()
     }
@@ -128,7 +128,7 @@ impl PegParams {
 
 impl Loads {
     /// The load vector the generated 2-DOF functions take
-    /// ([`generated::rigid_peg::Loads`]).
+    /// ([`generated::Loads`]).
     pub fn to_vector(&self) -> nalgebra::SVector<f64, 5> {
         generated::Loads::from(self).into()
     }

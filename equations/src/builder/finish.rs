@@ -3,18 +3,14 @@
 //! equations or the explicit right-hand side), add the declared functions,
 //! and describe the adapter's layout.
 
-use super::model::{Dynamics, Function, ModelBuilder, Outputs};
+use super::model::{Dynamics, Function, ModelBuilder};
+use super::outputs::Outputs;
 use crate::GenError;
 use crate::diff;
 use crate::expr::Expr;
 use crate::graph::{Sym, SymKind};
 use crate::lagrange::{self, Lagrange};
-use crate::model::{
-    FnSpec, Input, Layout, Module, OutType, Output, Record, default_out_name, sym_of,
-};
-
-/// What the outputs of the Lagrangian `dynamics` are.
-const DYNAMICS_DOCS: [&str; 2] = ["mass matrix M(q), symmetric", "forcing f(q, q̇) of M q̈ = f"];
+use crate::model::{FnSpec, Input, Layout, Module, Output, sym_of};
 
 /// The standard inputs of the model's functions: the state `x`, the
 /// parameter vector and the time (when the model uses it).
@@ -332,104 +328,6 @@ impl<'g> ModelBuilder<'g> {
                 .map(|(n, _, o)| (n.as_str(), o.clone()))
                 .collect(),
         )
-    }
-
-    /// The typed inputs: `Params` for the parameter vector (when a function
-    /// takes it), then those given to `typed_input`; fields documented as
-    /// their symbols were declared.
-    fn records(&self, fns: &[FnSpec]) -> Result<Vec<Record>, GenError> {
-        let input = |name: &str| fns.iter().flat_map(|f| &f.inputs).find(|i| i.name == name);
-        let mut specs: Vec<(String, String, String)> = Vec::new();
-        if !self.params.is_empty() && input(&self.param_input).is_some() {
-            specs.push((
-                self.param_input.clone(),
-                "Params".to_owned(),
-                format!(
-                    "The parameters of `{}`: the input `{}` of its functions as a struct, one \
-                     field per component in vector order (`From`/`Into` convert both ways).",
-                    self.name, self.param_input
-                ),
-            ));
-        }
-        specs.extend(self.typed.iter().cloned());
-        if let Some((bad, _)) = self
-            .shared_types
-            .iter()
-            .find(|(i, _)| !specs.iter().any(|s| s.0 == *i))
-        {
-            return Err(self.error("share_input_type", bad, "no typed input of this name"));
-        }
-        specs
-            .into_iter()
-            .map(|(name, type_name, doc)| {
-                let Some(i) = input(&name) else {
-                    return Err(self.error("typed_input", &name, "no function takes this input"));
-                };
-                Ok(Record {
-                    fields: i.syms.iter().map(|&s| self.doc_of_sym(s)).collect(),
-                    shared_with: self
-                        .shared_types
-                        .iter()
-                        .find(|(n, _)| *n == name)
-                        .map(|(_, m)| m.clone()),
-                    input: name,
-                    name: type_name,
-                    doc,
-                })
-            })
-            .collect()
-    }
-
-    /// The output structs: the shared ones, then `<Function>Out` for every
-    /// other function with several outputs; fields documented as the
-    /// outputs were declared.
-    fn out_types(&self, fns: &[FnSpec]) -> Result<Vec<OutType>, GenError> {
-        let docs = |function: &str| -> Vec<String> {
-            match self.functions.iter().find(|f| f.name == function) {
-                Some(f) => f.outputs.iter().map(|(_, d, _)| d.clone()).collect(),
-                None if function == "dynamics" => {
-                    DYNAMICS_DOCS.iter().map(|d| (*d).to_owned()).collect()
-                }
-                None => Vec::new(),
-            }
-        };
-        let mut out: Vec<OutType> = self
-            .shared_outputs
-            .iter()
-            .map(|(name, doc, functions)| OutType {
-                name: name.clone(),
-                doc: doc.clone(),
-                fields: functions.first().map(|f| docs(f)).unwrap_or_default(),
-                functions: functions.clone(),
-                shared_with: None,
-            })
-            .collect();
-        for f in fns {
-            if f.outputs.len() > 1 && !out.iter().any(|o| o.functions.contains(&f.name)) {
-                out.push(OutType {
-                    name: default_out_name(&f.name),
-                    doc: format!("The outputs of [`{}`].", f.name),
-                    fields: docs(&f.name),
-                    functions: vec![f.name.clone()],
-                    shared_with: None,
-                });
-            }
-        }
-        for o in &mut out {
-            o.shared_with = self
-                .shared_out_types
-                .iter()
-                .find(|(n, _)| *n == o.name)
-                .map(|(_, m)| m.clone());
-        }
-        if let Some((bad, _)) = self
-            .shared_out_types
-            .iter()
-            .find(|(n, _)| !out.iter().any(|o| o.name == *n))
-        {
-            return Err(self.error("share_output_type", bad, "no output struct of this name"));
-        }
-        Ok(out)
     }
 
     /// What the adapter needs: state and parameter names and docs, the

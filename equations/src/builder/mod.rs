@@ -33,10 +33,13 @@
 pub mod blocks;
 mod finish;
 mod model;
+mod outputs;
+mod types;
 
 use std::path::Path;
 
-pub use model::{Coordinate, ModelBuilder, Outputs};
+pub use model::{Coordinate, ModelBuilder};
+pub use outputs::Outputs;
 
 use crate::GenError;
 use crate::codegen::{Entry, Rendered, Written, render};

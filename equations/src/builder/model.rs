@@ -3,6 +3,7 @@
 //! steps that turn a declaration into a [`Module`](crate::model::Module)
 //! are in `finish.rs`.
 
+use super::outputs::Outputs;
 use crate::GenError;
 use crate::expr::Expr;
 use crate::graph::{Graph, Sym, SymKind};
@@ -18,65 +19,6 @@ pub struct Coordinate<'g> {
     /// ([`ModelBuilder::coordinate_named`]).
     pub v: Expr<'g>,
     pub(super) accel: Expr<'g>,
-}
-
-/// Which functions a model's generated module contains.
-///
-/// With [`Outputs::adapter`] on, the functions the adapter needs are
-/// generated whatever the other flags say.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Outputs {
-    /// `rhs(x, p) -> xdot`: the first-order right-hand side ẋ = f(x, p).
-    /// For a Lagrangian model it is emitted in closed form (Cramer's rule)
-    /// for up to three degrees of freedom; beyond, the adapter solves
-    /// M q̈ = f by LU at run time.
-    pub rhs: bool,
-    /// `dynamics(x, p) -> DynamicsOut { mass, forcing }`: M and f of
-    /// M q̈ = f (Lagrangian models only).
-    pub mass_forcing: bool,
-    /// The exact Jacobian: `jacobian_terms(x, qdd, p)` (G with
-    /// ∂ẋ/∂x = [[0, I], [M⁻¹G]]) for a Lagrangian model, `jacobian(x, p)`
-    /// (∂f/∂x) for an explicit one.
-    pub jacobian: bool,
-    /// `energy(x, p) -> energy`: T + V for a Lagrangian model, the
-    /// expression given to [`ModelBuilder::energy`] for an explicit one
-    /// (none when it was not given).
-    pub energy: bool,
-    /// The ODE adapter `System` implementing `pegdyn::system::OdeSystem`
-    /// and the layout constants (`X_<NAME>`, `X_DOCS`, `STATE_DIM`, ...).
-    pub adapter: bool,
-}
-
-impl Outputs {
-    /// Everything off: the model emits only the functions given to
-    /// [`ModelBuilder::function`] and [`ModelBuilder::output`].
-    pub const NONE: Outputs = Outputs {
-        rhs: false,
-        mass_forcing: false,
-        jacobian: false,
-        energy: false,
-        adapter: false,
-    };
-
-    /// Every function of the dynamics, no adapter: what a model whose
-    /// runtime wraps the functions itself (pegdyn's textbook systems) needs.
-    pub const FUNCTIONS: Outputs = Outputs {
-        rhs: true,
-        mass_forcing: true,
-        jacobian: true,
-        energy: true,
-        adapter: false,
-    };
-}
-
-impl Default for Outputs {
-    /// Everything on.
-    fn default() -> Outputs {
-        Outputs {
-            adapter: true,
-            ..Outputs::FUNCTIONS
-        }
-    }
 }
 
 /// How the model's motion is given.
@@ -137,18 +79,10 @@ pub struct ModelBuilder<'g> {
 }
 
 /// True for an ASCII identifier (letters, digits, `_`; a letter first).
-fn is_ident(n: &str) -> bool {
+pub(super) fn is_ident(n: &str) -> bool {
     !n.is_empty()
         && n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
         && n.starts_with(|c: char| c.is_ascii_alphabetic())
-}
-
-/// True for a CamelCase type name (`Params`, `LinearSystem`): ASCII
-/// letters and digits, an upper-case letter first, more than one letter.
-fn is_type_name(n: &str) -> bool {
-    n.len() > 1
-        && n.chars().all(|c| c.is_ascii_alphanumeric())
-        && n.starts_with(|c: char| c.is_ascii_uppercase())
 }
 
 impl<'g> ModelBuilder<'g> {
@@ -428,65 +362,6 @@ impl<'g> ModelBuilder<'g> {
             of_state: false,
         });
         Ok(())
-    }
-
-    /// Gives the input `input` (as the functions that take it name it) a
-    /// typed struct `type_name<T>`, documented by `doc`, with one field per
-    /// component named as its symbol and documented as it was declared,
-    /// and `From` conversions both ways with the input's `SVector`. The
-    /// parameter vector gets its struct, `Params`, without asking.
-    ///
-    /// # Errors
-    /// [`GenError::Model`] for a type name that is not CamelCase.
-    pub fn typed_input(&mut self, input: &str, type_name: &str, doc: &str) -> Result<(), GenError> {
-        if !is_type_name(type_name) || !is_ident(input) {
-            return Err(self.error("typed_input", type_name, "not a CamelCase type name"));
-        }
-        self.typed
-            .push((input.to_owned(), type_name.to_owned(), doc.to_owned()));
-        Ok(())
-    }
-
-    /// Uses the struct of input `input` of the earlier model `module` (same
-    /// components, names and docs, which the generator verifies) instead of
-    /// a struct of this model's own: one value then serves both models'
-    /// functions. For the parameter vector, `input` is its name (`p`).
-    pub fn share_input_type(&mut self, input: &str, module: &str) {
-        self.shared_types
-            .push((input.to_owned(), module.to_owned()));
-    }
-
-    /// The functions `functions`, declared with the same output names and
-    /// shapes, all return one struct `type_name<T>` (documented by `doc`, its
-    /// fields by the first function's output docs) instead of one
-    /// `<Function>Out` each.
-    ///
-    /// # Errors
-    /// [`GenError::Model`] for a type name that is not CamelCase.
-    pub fn shared_output(
-        &mut self,
-        type_name: &str,
-        doc: &str,
-        functions: &[&str],
-    ) -> Result<(), GenError> {
-        if !is_type_name(type_name) {
-            return Err(self.error("shared_output", type_name, "not a CamelCase type name"));
-        }
-        self.shared_outputs.push((
-            type_name.to_owned(),
-            doc.to_owned(),
-            functions.iter().map(|f| (*f).to_owned()).collect(),
-        ));
-        Ok(())
-    }
-
-    /// Uses the output struct `type_name` of the earlier model `module`
-    /// (same fields, docs and shapes, which the generator verifies) for
-    /// this model's functions that return a struct of that name (their
-    /// `<Function>Out` or one declared with [`ModelBuilder::shared_output`]).
-    pub fn share_output_type(&mut self, type_name: &str, module: &str) {
-        self.shared_out_types
-            .push((type_name.to_owned(), module.to_owned()));
     }
 
     /// The state symbols, in order.

@@ -59,10 +59,10 @@ pub const ALL: &[Builtin] = &[
     Builtin { name: "compliant_peg_lean", declare: compliant_peg::variants::declare_lean },
     Builtin { name: "compliant_peg_elastic", declare: compliant_peg::variants::declare_elastic },
     Builtin { name: "quasi_static", declare: quasi_static::declare },
-    Builtin { name: "rigid_peg", declare: rigid_peg::variants::declare_full },
-    Builtin { name: "rigid_peg_frictionless", declare: rigid_peg::variants::declare_frictionless },
-    Builtin { name: "rigid_peg_planar", declare: rigid_peg::variants::declare_planar },
-    Builtin { name: "rigid_peg_planar_frictionless", declare: rigid_peg::variants::declare_planar_frictionless },
+    Builtin { name: "rigid_peg", declare: rigid_peg::declare::declare_full },
+    Builtin { name: "rigid_peg_frictionless", declare: rigid_peg::declare::declare_frictionless },
+    Builtin { name: "rigid_peg_planar", declare: rigid_peg::declare::declare_planar },
+    Builtin { name: "rigid_peg_planar_frictionless", declare: rigid_peg::declare::declare_planar_frictionless },
     Builtin { name: compliant_peg_3d::NAME, declare: compliant_peg_3d::declare },
 ];
 
