@@ -2,15 +2,20 @@
 //!
 //! Inputs:  the models and generator in `equations/src` (crate
 //!          `pegdyn-equations`, a build-dependency) and `equations/Cargo.toml`.
-//! Outputs: `$OUT_DIR/generated.rs` (included by `src/generated.rs`),
-//!          `$OUT_DIR/codegen_report.txt` (operation counts per function) and
-//!          `$OUT_DIR/generated_calls.rs` (call table for
-//!          `tests/generated_vs_interpreter.rs`) and `$OUT_DIR/generated_list.rs`
-//!          (the function list of `benches/list.rs`), each rewritten only
-//!          when its content changes.
+//! Outputs: `$OUT_DIR/generated.rs` (included by `src/generated.rs`, with the
+//!          registry of every function), `$OUT_DIR/codegen_report.txt`
+//!          (operation counts per function), `$OUT_DIR/generated_calls.rs`
+//!          (the emitter-coverage test harness of
+//!          `tests/generated_vs_interpreter.rs`) and
+//!          `$OUT_DIR/generated_list.rs` (the function and output-struct
+//!          lists of `benches/list.rs`), each rewritten only when its content
+//!          changes.
 //!
-//! It uses the public builder API (`pegdyn_equations::Generator`), the same
-//! one a downstream crate's build script uses (docs/own-model.md).
+//! It declares the built-in models through the public builder
+//! (`pegdyn_equations::models::declare_all` calls `Generator::model` for
+//! each), the same API a downstream crate's build script uses
+//! (docs/own-model.md), and turns on the extras only pegdyn needs
+//! (`Options::registry`, `function_list`, `test_harness`).
 //!
 //! Environment: `PEGDYN_NAIVE_FORMS=1` generates without the stable
 //! numerical rewrites of the simplifier (`Options::from_env`) (for `pegdyn accuracy`'s "before"
@@ -22,6 +27,8 @@
 use std::path::PathBuf;
 use std::process::exit;
 
+use pegdyn_equations::{Generator, Options, models};
+
 fn main() {
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-changed=equations/src");
@@ -31,18 +38,14 @@ fn main() {
         eprintln!("error: OUT_DIR is not set (build.rs must run under cargo)");
         exit(1);
     };
-    // The public generator API, as a downstream build script uses it.
-    let options = pegdyn_equations::Options::from_env();
-    let mut generator = pegdyn_equations::Generator::new(options);
-    generator.builtin_models();
-    let written = generator.render().and_then(|out| {
-        out.write(&out_dir)?;
-        // pegdyn's own test call table (tests/generated_vs_interpreter.rs).
-        let calls = out_dir.join(pegdyn_equations::codegen::harness::CALLS_FILE);
-        pegdyn_equations::codegen::write_if_changed(&calls, out.calls.as_bytes())?;
-        let list = out_dir.join(pegdyn_equations::codegen::registry::LIST_FILE);
-        pegdyn_equations::codegen::write_if_changed(&list, out.list.as_bytes())
-    });
+    let options = Options {
+        registry: true,
+        function_list: true,
+        test_harness: true,
+        ..Options::from_env()
+    };
+    let mut generator = Generator::new(options);
+    let written = models::declare_all(&mut generator).and_then(|()| generator.write(&out_dir));
     if let Err(e) = written {
         eprintln!("error: code generation failed: {e}");
         exit(1);

@@ -61,7 +61,7 @@ impl Cases {
         let mut cases = Vec::new();
         for build in models::ALL {
             let g = Graph::new();
-            let m = build(&g);
+            let m = build.module(&g);
             for f in &m.functions {
                 let mut inputs: Vec<Vec<f64>> = f
                     .inputs

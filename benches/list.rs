@@ -11,6 +11,19 @@
 
 include!(concat!(env!("OUT_DIR"), "/generated_list.rs"));
 
+/// Every generated output struct flattens its fields in order, as the
+/// hand forms' tuples do (`crate::cases::Flat`).
+macro_rules! flat_struct {
+    ($t:ty, $m:ident::$s:ident { $($f:ident),* }) => {
+        impl crate::cases::Flat for pegdyn::generated::$m::$s<$t> {
+            fn flat(&self, out: &mut Vec<f64>) {
+                $(self.$f.flat(out);)*
+            }
+        }
+    };
+}
+for_each_output_struct!(flat_struct!(f64));
+
 macro_rules! for_each_function {
     ($cb:ident!($($ctx:tt)*)) => {
         for_each_generated!(hand_form!($cb!($($ctx)*)));

@@ -96,7 +96,7 @@ fn solve(a: SMatrix<f64, 5, 5>, b: SVector<f64, 5>) -> Option<SVector<f64, 5>> {
 fn values(text: &str) -> Result<(), String> {
     for line in text.lines().filter(|l| !l.trim().is_empty()) {
         let i = Input::parse(line)?;
-        let (a, b) = rigid_peg::forward(&i.x, &i.p, &i.loads, &i.t);
+        let rigid_peg::LinearSystem { a, b } = rigid_peg::forward(&i.x, &i.p, &i.loads, &i.t);
         let row_major = (0..5).flat_map(|r| (0..5).map(move |c| (r, c)));
         let u = solve(a, b).map_or("null".to_owned(), |u| json(u.iter().copied()));
         let xdot = i
@@ -158,7 +158,7 @@ fn time(text: &str, calls: usize, repeats: usize) -> Result<(), String> {
         ));
     });
     let forward_lu = ns_per_call(calls, repeats, || {
-        let (a, b) = rigid_peg::forward(
+        let rigid_peg::LinearSystem { a, b } = rigid_peg::forward(
             black_box(&i.x),
             black_box(&i.p),
             black_box(&i.loads),

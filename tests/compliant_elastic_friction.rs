@@ -116,7 +116,12 @@ fn elastic_law_slides_at_the_coulomb_force() {
     options.store = false;
     let sol = Solver::new(Method::Rodas4, options)
         .with_observer(|_t, y: &SVector<f64, 12>| {
-            let (f, ft, _, v, _, _, _) = model::contacts(y, &pv);
+            let model::ContactsOut {
+                normal: f,
+                friction: ft,
+                slip: v,
+                ..
+            } = model::contacts(y, &pv);
             for c in 0..4 {
                 if f[c] > 1.0 && v[c].abs() > 1e-3 {
                     sliding += 1;

@@ -106,7 +106,7 @@ fn check_pose(prm: &Peg3dParams, p: Vector3<f64>, q: UnitQuaternion<f64>) -> usi
                         "{pair:?}: brute-force minimum at {a} (gap {g}) not found; found {found:?}"
                     );
                 };
-                let gm = pair.eval(&x, m, &pv).0;
+                let gm = pair.eval(&x, m, &pv).gap;
                 assert!(
                     gm <= g + 1e-13 && gm >= g - sample_err,
                     "{pair:?}: gap {gm} vs sampled {g}"
@@ -114,7 +114,8 @@ fn check_pose(prm: &Peg3dParams, p: Vector3<f64>, q: UnitQuaternion<f64>) -> usi
             }
         }
         for &m in &found {
-            let (gap, d1, d2, grad, normal, point, _) = pair.eval(&x, m, &pv);
+            let g = pair.eval(&x, m, &pv);
+            let (gap, d1, d2, grad, normal, point) = (g.gap, g.d1, g.d2, g.grad, g.normal, g.point);
             assert!(
                 (gap - brute_gap(prm, pair, &p, &q, m)).abs() < 1e-14,
                 "{pair:?}: generated gap"

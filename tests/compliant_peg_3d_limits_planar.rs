@@ -82,7 +82,7 @@ struct Diff {
 
 /// Depth, tilt, edge force, wall force of a planar state.
 fn sample_planar(y: &SVector<f64, 8>, p: &SVector<f64, 24>, com_height: f64) -> [f64; 4] {
-    let (f, ..) = planar::contacts(y, p);
+    let f = planar::contacts(y, p).normal;
     // Only the lean's two contacts (left edge, right wall) ever act.
     assert!(f[2] == 0.0 && f[3] == 0.0);
     [y[1] + com_height * y[2].cos(), y[2], f[0], f[1]]

@@ -1,5 +1,5 @@
-//! Runtime of the compliant model: the parameter vector matches the
-//! generated model's names, the two-point start has both contact forces
+//! Runtime of the compliant model: the generated model's parameters carry
+//! the spec's and the load's values, the two-point start has both contact forces
 //! positive, and bad input is refused with the field named.
 
 use pegdyn::compliant_peg::{CompliantParams, CompliantSpec, CompliantSystem, Load, PegState};
@@ -13,15 +13,32 @@ fn field(r: Result<CompliantParams, HertzError>) -> String {
 }
 
 #[test]
-fn every_model_parameter_has_a_value() {
+fn the_model_parameters_carry_the_spec_and_the_load() {
+    use pegdyn::generated::{compliant_peg as all, compliant_peg_elastic as elastic};
     let p = CompliantParams::try_new(CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, 0.1)).unwrap();
-    assert!(p.unknown_names().is_empty(), "{:?}", p.unknown_names());
-    let v = p.vector(&Load {
+    let load = Load {
         axial: 1.0,
         radial: 2.0,
         torque: 3.0,
-    });
+    };
+    let m = all::Params::from((&p, &load));
+    assert_eq!((m.f1, m.f2, m.M), (1.0, 2.0, 3.0));
+    assert_eq!(
+        (m.m, m.J, m.l_c),
+        (p.spec.mass, p.spec.inertia, p.spec.com_height)
+    );
+    assert_eq!((m.r, m.D), (p.spec.geometry.peg_radius, 0.05));
+    assert_eq!(
+        (m.k_edge, m.k_wall),
+        (p.pair.edge.stiffness(), p.pair.wall.stiffness())
+    );
+    // The vector the generated functions take holds the fields in order.
+    let v = p.vector(&load);
     assert!(v.iter().all(|x| x.is_finite()));
+    assert_eq!(all::Params::from(&v), m);
+    let e = elastic::Params::from((&p, &load));
+    assert_eq!((e.m, e.k_wall, e.M), (m.m, m.k_wall, m.M));
+    assert_eq!(e.g_star, p.shear_modulus());
 }
 
 #[test]

@@ -69,8 +69,8 @@ fn penetration_small_clearances_50um_to_1nm() {
         let p = params(clearance, 0.1);
         let y = touching(&p, 1e-9, [0.0; 3]);
         let exact = Dd::from(get(&p, "r")) - Dd::from(0.5 * get(&p, "D")) - Dd::from(y[0]);
-        let (_, _, delta, ..) = lean::contacts(&y, &p);
-        let (_, _, delta_dd, ..) = lean::contacts(&to_dd(&y), &to_dd(&p));
+        let delta = lean::contacts(&y, &p).delta;
+        let delta_dd = lean::contacts(&to_dd(&y), &to_dd(&p)).delta;
         assert!(
             rel(delta[0], exact) <= U,
             "c={clearance}: δ={} vs {exact}",
@@ -93,7 +93,7 @@ fn hertz_steel_normal_force_from_1pm_to_10um() {
         let y = touching(&p, delta, [0.0; 3]);
         let exact_delta = Dd::from(get(&p, "r")) - Dd::from(0.5 * get(&p, "D")) - Dd::from(y[0]);
         let force = k * exact_delta * exact_delta.sqrt();
-        let (normal, ..) = lean::contacts(&y, &p);
+        let normal = lean::contacts(&y, &p).normal;
         let err = rel(normal[0], force) / U;
         assert!(
             err <= 4.0,
@@ -114,7 +114,7 @@ fn hertz_steel_normal_force_from_1pm_to_10um() {
 fn zero_and_tiny_sliding_velocity() {
     let p = params(1e-6, 0.3);
     let at_rest = touching(&p, 1e-7, [0.0; 3]);
-    let (_, friction, _, slip, ..) = lean::contacts(&at_rest, &p);
+    let lean::ContactsOut { friction, slip, .. } = lean::contacts(&at_rest, &p);
     assert_eq!(slip[0], 0.0);
     assert_eq!(friction[0], 0.0);
     let f0 = lean::rhs(&at_rest, &p);
@@ -122,7 +122,12 @@ fn zero_and_tiny_sliding_velocity() {
     let tiny = touching(&p, 1e-7, [0.0, 0.0, 1e-12]);
     let f1 = lean::rhs(&tiny, &p);
     assert!(f1.iter().all(|v| v.is_finite()), "{f1}");
-    let (normal, friction, _, slip, ..) = lean::contacts(&tiny, &p);
+    let lean::ContactsOut {
+        normal,
+        friction,
+        slip,
+        ..
+    } = lean::contacts(&tiny, &p);
     let expected = -0.3 * normal[0] * slip[0] / (slip[0].hypot(1e-5));
     assert!(slip[0] != 0.0 && (friction[0] - expected).abs() <= 1e-6 * expected.abs());
     for i in 3..6 {

@@ -126,20 +126,31 @@ fn generated_model_matches_hand_written_solution() {
         let pose = SVector::from([theta, l]);
         let load = SVector::from([f1, f2]);
         let accv = SVector::from(acc);
-        let params = SVector::from([p.mu, p.r, p.l_c, p.m, p.j]);
-        let (fa, fb, m) = qs::two_point(&pose, &load, &accv, &params);
+        let params = qs::Params {
+            mu: p.mu,
+            r: p.r,
+            l_c: p.l_c,
+            m: p.m,
+            J: p.j,
+        }
+        .into();
+        let qs::TwoPointOut {
+            f_a: fa,
+            f_b: fb,
+            moment: m,
+        } = qs::two_point(&pose, &load, &accv, &params);
         let h = p.two_point(u, a);
         assert!(
             close(fa, h.f_a) && close(fb, h.f_b) && close(m, h.m),
             "{fa} {fb} {m} vs {h:?}"
         );
-        let (fa, m) = qs::edge_only(&pose, &load, &accv, &params);
+        let qs::EdgeOnlyOut { f_a: fa, moment: m } = qs::edge_only(&pose, &load, &accv, &params);
         let h = p.edge_only(u, a);
         assert!(
             close(fa, h.f_a) && close(m, h.m),
             "edge only {fa} {m} vs {h:?}"
         );
-        let (fb, m) = qs::tip_only(&pose, &load, &accv, &params);
+        let qs::TipOnlyOut { f_b: fb, moment: m } = qs::tip_only(&pose, &load, &accv, &params);
         let h = p.tip_only(u, a);
         assert!(
             close(fb, h.f_b) && close(m, h.m),
@@ -148,8 +159,12 @@ fn generated_model_matches_hand_written_solution() {
 
         let hp = PegHole::try_new(p.r, 0.01, p.mu).unwrap();
         let (fx, fz) = (f2, f1);
-        let (ft, fe, mt) =
-            qs::whitney_tip(&pose, &SVector::from([fx, fz]), &SVector::from([p.mu, p.r]));
+        let q = qs::WhitneyParams { mu: p.mu, r: p.r }.into();
+        let qs::WhitneyTipOut {
+            f_tip: ft,
+            f_edge: fe,
+            moment: mt,
+        } = qs::whitney_tip(&pose, &SVector::from([fx, fz]), &q);
         let w = sliding_contact_forces(&hp, theta, fx, fz);
         assert!(close(ft, w.tip) && close(fe, w.edge), "{ft} {fe} vs {w:?}");
         assert!(close(mt, sliding_moment(&hp, l, theta, fx, fz)));

@@ -36,7 +36,7 @@ fn pendulum_matches_textbook() {
         let x: SVector<f64, 2> = rng.vector(-3.0, 3.0);
         let p: SVector<f64, 3> = rng.vector(0.2, 5.0);
         let (th, w, m, l, g) = (x[0], x[1], p[0], p[1], p[2]);
-        let (mass, forcing) = pendulum::dynamics(&x, &p);
+        let pendulum::DynamicsOut { mass, forcing } = pendulum::dynamics(&x, &p);
         assert!(close(mass[(0, 0)], m * l * l, m * l * l), "M = {mass}");
         let f = -m * g * l * th.sin();
         assert!(close(forcing[0], f, f.abs()), "f = {forcing} want {f}");
@@ -63,7 +63,7 @@ fn double_pendulum_matches_textbook() {
         let (t1, t2, w1, w2) = (x[0], x[1], x[2], x[3]);
         let (m1, m2, l1, l2, g) = (p[0], p[1], p[2], p[3], p[4]);
         let d = t1 - t2;
-        let (mass, forcing) = dp::dynamics(&x, &p);
+        let dp::DynamicsOut { mass, forcing } = dp::dynamics(&x, &p);
         let want_m = [
             [(m1 + m2) * l1 * l1, m2 * l1 * l2 * d.cos()],
             [m2 * l1 * l2 * d.cos(), m2 * l2 * l2],
@@ -116,7 +116,7 @@ fn cart_pole_matches_textbook() {
         });
         let (th, w) = (x[1], x[3]);
         let (mc, m, l, g, u) = (p[0], p[1], p[2], p[3], p[4]);
-        let (mass, forcing) = cart_pole::dynamics(&x, &p);
+        let cart_pole::DynamicsOut { mass, forcing } = cart_pole::dynamics(&x, &p);
         let want_m = [[mc + m, m * l * th.cos()], [m * l * th.cos(), m * l * l]];
         let scale_m = [[mc + m, m * l], [m * l, m * l * l]];
         for i in 0..2 {
@@ -198,7 +198,7 @@ fn pendulum_jacobian_matches_finite_differences() {
         let x: SVector<f64, 2> = rng.vector(-3.0, 3.0);
         let p: SVector<f64, 3> = rng.vector(0.2, 5.0);
         let rhs = |x: &SVector<f64, 2>| pendulum::rhs(x, &p);
-        let mass = DMatrix::from_column_slice(1, 1, pendulum::dynamics(&x, &p).0.as_slice());
+        let mass = DMatrix::from_column_slice(1, 1, pendulum::dynamics(&x, &p).mass.as_slice());
         let g_at = |qdd: &SVector<f64, 1>| {
             DMatrix::from_column_slice(1, 2, pendulum::jacobian_terms(&x, qdd, &p).as_slice())
         };
@@ -214,7 +214,7 @@ fn double_pendulum_jacobian_matches_finite_differences() {
         let x: SVector<f64, 4> = rng.vector(-3.0, 3.0);
         let p: SVector<f64, 5> = rng.vector(0.5, 2.0);
         let rhs = |x: &SVector<f64, 4>| dp::rhs(x, &p);
-        let mass = DMatrix::from_column_slice(2, 2, dp::dynamics(&x, &p).0.as_slice());
+        let mass = DMatrix::from_column_slice(2, 2, dp::dynamics(&x, &p).mass.as_slice());
         let g_at = |qdd: &SVector<f64, 2>| {
             DMatrix::from_column_slice(2, 4, dp::jacobian_terms(&x, qdd, &p).as_slice())
         };
@@ -230,7 +230,7 @@ fn cart_pole_jacobian_matches_finite_differences() {
         let x: SVector<f64, 4> = rng.vector(-3.0, 3.0);
         let p: SVector<f64, 5> = rng.vector(0.5, 2.0);
         let rhs = |x: &SVector<f64, 4>| cart_pole::rhs(x, &p);
-        let mass = DMatrix::from_column_slice(2, 2, cart_pole::dynamics(&x, &p).0.as_slice());
+        let mass = DMatrix::from_column_slice(2, 2, cart_pole::dynamics(&x, &p).mass.as_slice());
         let g_at = |qdd: &SVector<f64, 2>| {
             DMatrix::from_column_slice(2, 4, cart_pole::jacobian_terms(&x, qdd, &p).as_slice())
         };

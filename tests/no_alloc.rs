@@ -295,7 +295,7 @@ fn interpreter_tape_with_reused_buffers_allocates_nothing() {
     use pegdyn_equations::{Graph, models};
     for build in models::ALL {
         let g = Graph::new();
-        let m = build(&g);
+        let m = build.module(&g);
         for f in &m.functions {
             let roots: Vec<_> = f
                 .outputs

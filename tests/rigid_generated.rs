@@ -16,6 +16,8 @@ use pegdyn::rigid_peg::dynamics::{
     prescribed_system,
 };
 use pegdyn::rigid_peg::kinematics::Pose;
+use rigid_peg::LinearSystem;
+use rigid_peg_planar::LinearSystem as PlanarSystem;
 
 mod common;
 use common::Rng;
@@ -128,12 +130,13 @@ fn two_dof_systems_equal_the_hand_derived_systems() {
             let x = x4(&s);
             let (ga, gb, pa, pb) = if friction > 0.0 {
                 let t = t9(&s.t);
-                let (ga, gb) = rigid_peg::forward(&x, &pv, &lv, &t);
-                let (pa, pb) = rigid_peg::prescribed(&x, &qdd, &pv, &lv, &t);
+                let LinearSystem { a: ga, b: gb } = rigid_peg::forward(&x, &pv, &lv, &t);
+                let LinearSystem { a: pa, b: pb } = rigid_peg::prescribed(&x, &qdd, &pv, &lv, &t);
                 (ga, gb, pa, pb)
             } else {
-                let (ga, gb) = rigid_peg_frictionless::forward(&x, &pv, &lv);
-                let (pa, pb) = rigid_peg_frictionless::prescribed(&x, &qdd, &pv, &lv);
+                let LinearSystem { a: ga, b: gb } = rigid_peg_frictionless::forward(&x, &pv, &lv);
+                let LinearSystem { a: pa, b: pb } =
+                    rigid_peg_frictionless::prescribed(&x, &qdd, &pv, &lv);
                 (ga, gb, pa, pb)
             };
             compare(
@@ -177,12 +180,16 @@ fn planar_systems_equal_the_hand_derived_systems_at_psi_zero() {
                 );
                 let (ga, gb, pa, pb) = if friction > 0.0 {
                     let t4 = SVector::<f64, 4>::new(t[0].x, t[0].z, t[1].x, t[1].z);
-                    let (ga, gb) = rigid_peg_planar::forward(&x, &pv, &lv, &t4);
-                    let (pa, pb) = rigid_peg_planar::prescribed(&x, &qdd1, &pv, &lv, &t4);
+                    let PlanarSystem { a: ga, b: gb } =
+                        rigid_peg_planar::forward(&x, &pv, &lv, &t4);
+                    let PlanarSystem { a: pa, b: pb } =
+                        rigid_peg_planar::prescribed(&x, &qdd1, &pv, &lv, &t4);
                     (ga, gb, pa, pb)
                 } else {
-                    let (ga, gb) = rigid_peg_planar_frictionless::forward(&x, &pv, &lv);
-                    let (pa, pb) = rigid_peg_planar_frictionless::prescribed(&x, &qdd1, &pv, &lv);
+                    let PlanarSystem { a: ga, b: gb } =
+                        rigid_peg_planar_frictionless::forward(&x, &pv, &lv);
+                    let PlanarSystem { a: pa, b: pb } =
+                        rigid_peg_planar_frictionless::prescribed(&x, &qdd1, &pv, &lv);
                     (ga, gb, pa, pb)
                 };
                 compare(
@@ -214,7 +221,7 @@ fn contact_velocities_and_energies_equal_the_hand_derived_ones() {
         assert!(rel(&got_f, &want) < TOL);
         let t = kinetic_energy(&p, &s.pose, &kin);
         let v = potential_energy(&p, &s.pose);
-        for (kinetic, total) in [
+        for rigid_peg::EnergyOut { kinetic, total } in [
             rigid_peg::energy(&x, &pv),
             rigid_peg_frictionless::energy(&x, &pv),
         ] {
@@ -236,7 +243,7 @@ fn contact_velocities_and_energies_equal_the_hand_derived_ones() {
             assert!(rel(&got, &want0) < TOL, "planar v {got} vs {want0}");
         }
         let t0 = kinetic_energy(&p, &pose0, &kin0);
-        let (kinetic, total) = rigid_peg_planar::energy(&x2, &pv);
+        let rigid_peg::EnergyOut { kinetic, total } = rigid_peg_planar::energy(&x2, &pv);
         assert!((kinetic - t0).abs() < TOL * t0);
         assert!((total - t0 - potential_energy(&p, &pose0)).abs() < TOL * total.abs().max(t0));
     }
@@ -276,7 +283,7 @@ fn mass_block_reproduces_the_kinetic_energy_22_23() {
         let qd = Vector2::new(rng.uniform(-5.0, 5.0), rng.uniform(-20.0, 20.0));
         let pose = Pose::try_new(&p, q[0], q[1]).unwrap();
         let x = SVector::<f64, 4>::new(q[0], q[1], qd[0], qd[1]);
-        let (a, _) = rigid_peg::forward(&x, &pv, &lv, &SVector::<f64, 9>::zeros());
+        let a = rigid_peg::forward(&x, &pv, &lv, &SVector::<f64, 9>::zeros()).a;
         let mass = a.fixed_view::<2, 2>(0, 0).into_owned();
         let t_m = 0.5 * qd.dot(&(mass * qd));
         // Rigid-body definition (hand, fixed-frame vectors).
@@ -296,7 +303,7 @@ fn mass_block_reproduces_the_kinetic_energy_22_23() {
         assert_eq!(mass[(0, 1)], 0.0, "M is diagonal in (γ, ψ)");
         assert_eq!(mass[(1, 0)], 0.0);
         let x2 = SVector::<f64, 2>::new(q[0], qd[0]);
-        let (a1, _) = rigid_peg_planar_frictionless::forward(&x2, &pv, &SVector::<f64, 3>::zeros());
+        let a1 = rigid_peg_planar_frictionless::forward(&x2, &pv, &SVector::<f64, 3>::zeros()).a;
         assert!((a1[(0, 0)] - mass[(0, 0)]).abs() < TOL * mass[(0, 0)]);
     }
 }

@@ -218,8 +218,9 @@ fn frictionless_variant_is_the_full_variant_with_f_zero() {
         for (psi, gd, pd) in [(0.0, -2.0, 10.0), (0.7, 1.5, -3.0)] {
             let x = nalgebra::SVector::<f64, 4>::new(gamma, psi, gd, pd);
             let t = nalgebra::SVector::<f64, 9>::from_fn(|k, _| (k as f64 * 0.37).sin());
-            let (a, b) = rigid_peg::forward(&x, &pv, &lv, &t);
-            let (af, bf) = rigid_peg_frictionless::forward(&x, &pv, &lv);
+            let rigid_peg::LinearSystem { a, b } = rigid_peg::forward(&x, &pv, &lv, &t);
+            let rigid_peg::LinearSystem { a: af, b: bf } =
+                rigid_peg_frictionless::forward(&x, &pv, &lv);
             // Same values; the two modules are lowered apart (the full one
             // factors its friction terms), so they round differently.
             assert_close(&a, &af, gamma);
@@ -227,8 +228,8 @@ fn frictionless_variant_is_the_full_variant_with_f_zero() {
             let qdd = Vector2::new(1.0, -2.0);
             let full = rigid_peg::prescribed(&x, &qdd, &pv, &lv, &t);
             let frictionless = rigid_peg_frictionless::prescribed(&x, &qdd, &pv, &lv);
-            assert_close(&full.0, &frictionless.0, gamma);
-            assert_close(&full.1, &frictionless.1, gamma);
+            assert_close(&full.a, &frictionless.a, gamma);
+            assert_close(&full.b, &frictionless.b, gamma);
         }
     }
 }

@@ -13,6 +13,56 @@ pub mod cart_pole {
     pub const P_NAMES: [&str; 5] = ["mc", "m", "l", "g", "u"];
     /// Symbol names of the components of `qdd`, in order.
     pub const QDD_NAMES: [&str; 2] = ["xcddot", "thetaddot"];
+    /// The parameters of `cart_pole`: the input `p` of its functions as a struct, one field per component in vector order (`From`/`Into` convert both ways).
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct Params<T> {
+        /// Mass of the cart, kg.
+        pub mc: T,
+        /// Mass of the bob, kg.
+        pub m: T,
+        /// Length of the rod, m.
+        pub l: T,
+        /// Gravitational acceleration, m/s².
+        pub g: T,
+        /// Horizontal force pushing the cart, N.
+        pub u: T,
+    }
+    impl<T> Params<T> {
+        /// The field names in vector order: the symbol names of `p` ([`P_NAMES`]).
+        pub const NAMES: [&'static str; 5] = P_NAMES;
+    }
+    impl<T: Real> From<Params<T>> for SVector<T, 5> {
+        /// The `p` vector of these values, in field order.
+        fn from(v: Params<T>) -> SVector<T, 5> {
+            SVector::from([v.mc, v.m, v.l, v.g, v.u])
+        }
+    }
+    impl<T: Real> From<&SVector<T, 5>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: &SVector<T, 5>) -> Params<T> {
+            Params {
+                mc: v[0],
+                m: v[1],
+                l: v[2],
+                g: v[3],
+                u: v[4],
+            }
+        }
+    }
+    impl<T: Real> From<SVector<T, 5>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: SVector<T, 5>) -> Params<T> {
+            Params::from(&v)
+        }
+    }
+    /// The outputs of [`dynamics`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct DynamicsOut<T: Real> {
+        /// Mass matrix M(q), symmetric.
+        pub mass: SMatrix<T, 2, 2>,
+        /// Forcing f(q, q̇) of M q̈ = f.
+        pub forcing: SVector<T, 2>,
+    }
     /// Mass matrix M(q) and forcing f(q, q̇) of M q̈ = f (Lagrange's equations, derived symbolically).
     ///
     /// Reference: Tedrake, Underactuated Robotics, ch. 3 (cart-pole). Units: SI.
@@ -22,16 +72,14 @@ pub mod cart_pole {
     /// - `p` = (`mc`, `m`, `l`, `g`, `u`)
     ///
     /// # Outputs
+    /// The fields of [`DynamicsOut`]:
     /// - `mass`: symmetric 2×2 matrix
     /// - `forcing`: vector of 2
     ///
     /// # Cost
     /// 2 add/sub, 8 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 5 `let`s.
     #[inline]
-    pub fn dynamics<T: Real>(
-        x: &SVector<T, 4>,
-        p: &SVector<T, 5>,
-    ) -> (SMatrix<T, 2, 2>, SVector<T, 2>) {
+    pub fn dynamics<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> DynamicsOut<T> {
         let theta = x[1];
         let thetadot = x[3];
         let mc = p[0];
@@ -43,9 +91,10 @@ pub mod cart_pole {
         let t0 = m * l;
         let t1 = t0 * cos_theta;
         let t2 = t0 * sin_theta;
-        let mass = Matrix2::new(mc + m, t1, t1, m * (l * l));
-        let forcing = Vector2::new(u + t2 * (thetadot * thetadot), -t2 * g);
-        (mass, forcing)
+        DynamicsOut {
+            mass: Matrix2::new(mc + m, t1, t1, m * (l * l)),
+            forcing: Vector2::new(u + t2 * (thetadot * thetadot), -t2 * g),
+        }
     }
     /// First-order right-hand side ẋ = (q̇, M⁻¹f), M⁻¹f by Cramer's rule.
     ///

@@ -43,6 +43,131 @@ pub mod compliant_peg {
         "wall_dstar",
         "hc_alpha",
     ];
+    /// The parameters of `compliant_peg`: the input `p` of its functions as a struct, one field per component in vector order (`From`/`Into` convert both ways).
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    #[allow(non_snake_case)]
+    pub struct Params<T> {
+        /// Mass m of the peg, kg.
+        pub m: T,
+        /// Moment of inertia J about the centre of mass, kg·m².
+        pub J: T,
+        /// Peg radius r, m.
+        pub r: T,
+        /// Distance l_c from the centre of mass to the bottom face, m.
+        pub l_c: T,
+        /// Hole diameter D, m.
+        pub D: T,
+        /// Fillet radius ρ_p of the peg's bottom corners, m.
+        pub rho_p: T,
+        /// Fillet radius ρ_h of the hole's top edges, m.
+        pub rho_h: T,
+        /// Coulomb friction coefficient μ, dimensionless.
+        pub mu: T,
+        /// Velocity scale v_s of the regularized friction law, m/s.
+        pub v_s: T,
+        /// Hertz stiffness of the edge contacts, N/m^1.5.
+        pub k_edge: T,
+        /// Hertz stiffness of the wall contacts, N/m^1.5.
+        pub k_wall: T,
+        /// Applied axial force f₁ (along e_a, pushing the peg into the hole), N.
+        pub f1: T,
+        /// Applied radial force f₂ (along e_r), N.
+        pub f2: T,
+        /// Applied torque M about the centre of mass, positive increasing θ, N·m.
+        pub M: T,
+        /// Contact modulus E* of the peg and hole materials, Pa.
+        pub e_star: T,
+        /// Sum of the principal curvatures Σρ of the edge contacts, 1/m.
+        pub edge_sum: T,
+        /// Hertz ellipse coefficient m_a of the edge contacts (9), dimensionless.
+        pub edge_ma: T,
+        /// Hertz ellipse coefficient m_b of the edge contacts (10), dimensionless.
+        pub edge_mb: T,
+        /// Hertz approach coefficient δ* of the edge contacts (13), dimensionless.
+        pub edge_dstar: T,
+        /// Sum of the principal curvatures Σρ of the wall contacts, 1/m.
+        pub wall_sum: T,
+        /// Hertz ellipse coefficient m_a of the wall contacts (9), dimensionless.
+        pub wall_ma: T,
+        /// Hertz ellipse coefficient m_b of the wall contacts (10), dimensionless.
+        pub wall_mb: T,
+        /// Hertz approach coefficient δ* of the wall contacts (13), dimensionless.
+        pub wall_dstar: T,
+        /// Hunt–Crossley damping coefficient α (0 for elastic contacts), s/m.
+        pub hc_alpha: T,
+    }
+    impl<T> Params<T> {
+        /// The field names in vector order: the symbol names of `p` ([`P_NAMES`]).
+        pub const NAMES: [&'static str; 24] = P_NAMES;
+    }
+    impl<T: Real> From<Params<T>> for SVector<T, 24> {
+        /// The `p` vector of these values, in field order.
+        fn from(v: Params<T>) -> SVector<T, 24> {
+            SVector::from([
+                v.m,
+                v.J,
+                v.r,
+                v.l_c,
+                v.D,
+                v.rho_p,
+                v.rho_h,
+                v.mu,
+                v.v_s,
+                v.k_edge,
+                v.k_wall,
+                v.f1,
+                v.f2,
+                v.M,
+                v.e_star,
+                v.edge_sum,
+                v.edge_ma,
+                v.edge_mb,
+                v.edge_dstar,
+                v.wall_sum,
+                v.wall_ma,
+                v.wall_mb,
+                v.wall_dstar,
+                v.hc_alpha,
+            ])
+        }
+    }
+    impl<T: Real> From<&SVector<T, 24>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: &SVector<T, 24>) -> Params<T> {
+            Params {
+                m: v[0],
+                J: v[1],
+                r: v[2],
+                l_c: v[3],
+                D: v[4],
+                rho_p: v[5],
+                rho_h: v[6],
+                mu: v[7],
+                v_s: v[8],
+                k_edge: v[9],
+                k_wall: v[10],
+                f1: v[11],
+                f2: v[12],
+                M: v[13],
+                e_star: v[14],
+                edge_sum: v[15],
+                edge_ma: v[16],
+                edge_mb: v[17],
+                edge_dstar: v[18],
+                wall_sum: v[19],
+                wall_ma: v[20],
+                wall_mb: v[21],
+                wall_dstar: v[22],
+                hc_alpha: v[23],
+            }
+        }
+    }
+    impl<T: Real> From<SVector<T, 24>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: SVector<T, 24>) -> Params<T> {
+            Params::from(&v)
+        }
+    }
     /// Right-hand side of y = (x, z, theta, xdot, zdot, thetadot, work, dissipation): M qdd = applied (50) + contact normal forces (-grad of the Hertz potential (62)) + Coulomb friction; work and dissipation rates. SI units.
     ///
     /// # Inputs
@@ -791,6 +916,24 @@ pub mod compliant_peg {
             ],
         )
     }
+    /// The outputs of [`contacts`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct ContactsOut<T: Real> {
+        /// Normal force f on the peg, N, per contact (edge_left, wall_right, edge_right, wall_left).
+        pub normal: SVector<T, 4>,
+        /// Friction force along the contact tangent, N, per contact (edge_left, wall_right, edge_right, wall_left).
+        pub friction: SVector<T, 4>,
+        /// Penetration δ (negative: gap), m, per contact (edge_left, wall_right, edge_right, wall_left).
+        pub delta: SVector<T, 4>,
+        /// Sliding velocity of the peg's material point, m/s, per contact (edge_left, wall_right, edge_right, wall_left).
+        pub slip: SVector<T, 4>,
+        /// Semi-major axis a of the Hertz ellipse (9), m, per contact (edge_left, wall_right, edge_right, wall_left).
+        pub a: SVector<T, 4>,
+        /// Semi-minor axis b of the Hertz ellipse (10), m, per contact (edge_left, wall_right, edge_right, wall_left).
+        pub b: SVector<T, 4>,
+        /// Maximum Hertz pressure p₀ (11), Pa, per contact (edge_left, wall_right, edge_right, wall_left).
+        pub p0: SVector<T, 4>,
+    }
     /// Per contact (edge_left, wall_right, edge_right, wall_left): normal force f (N), friction force along the tangent (N), penetration delta (m), sliding velocity (m/s), contact ellipse a, b (m) and maximum pressure p0 (Pa) ((9)-(11)).
     ///
     /// # Inputs
@@ -798,6 +941,7 @@ pub mod compliant_peg {
     /// - `p` = (`m`, `J`, `r`, `l_c`, `D`, `rho_p`, `rho_h`, `mu`, `v_s`, `k_edge`, `k_wall`, `f1`, `f2`, `M`, `e_star`, `edge_sum`, `edge_ma`, `edge_mb`, `edge_dstar`, `wall_sum`, `wall_ma`, `wall_mb`, `wall_dstar`, `hc_alpha`)
     ///
     /// # Outputs
+    /// The fields of [`ContactsOut`]:
     /// - `normal`: vector of 4
     /// - `friction`: vector of 4
     /// - `delta`: vector of 4
@@ -809,18 +953,7 @@ pub mod compliant_peg {
     /// # Cost
     /// 59 add/sub, 107 mul, 8 div, 4 sqrt, 10 transcendental, 8 branches; 65 `let`s.
     #[inline]
-    pub fn contacts<T: Real>(
-        y: &SVector<T, 8>,
-        p: &SVector<T, 24>,
-    ) -> (
-        SVector<T, 4>,
-        SVector<T, 4>,
-        SVector<T, 4>,
-        SVector<T, 4>,
-        SVector<T, 4>,
-        SVector<T, 4>,
-        SVector<T, 4>,
-    ) {
+    pub fn contacts<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> ContactsOut<T> {
         let x = y[0];
         let z = y[1];
         let theta = y[2];
@@ -912,39 +1045,50 @@ pub mod compliant_peg {
         let t43 = (T::from_f64(1.5) * t9 * normal_edge_right).cbrt();
         let normal_wall_left = k_wall * t38 * t29;
         let t44 = (T::from_f64(1.5) * t17 * normal_wall_left).cbrt();
-        let normal = Vector4::new(
-            normal_edge_left,
-            normal_wall_right,
-            normal_edge_right,
-            normal_wall_left,
-        );
-        let friction = Vector4::new(
-            -normal_edge_left * mu * slip_edge_left / t36,
-            -normal_wall_right * mu * slip_wall_right / t23,
-            -normal_edge_right * mu * slip_edge_right / t27,
-            -normal_wall_left * mu * slip_wall_left / t24,
-        );
-        let delta = Vector4::new(
-            delta_edge_left,
-            delta_wall_right,
-            delta_edge_right,
-            delta_wall_left,
-        );
-        let slip = Vector4::new(
-            slip_edge_left,
-            slip_wall_right,
-            slip_edge_right,
-            slip_wall_left,
-        );
-        let a = Vector4::new(edge_ma * t41, wall_ma * t42, edge_ma * t43, wall_ma * t44);
-        let b = Vector4::new(edge_mb * t41, wall_mb * t42, edge_mb * t43, wall_mb * t44);
-        let p0 = Vector4::new(
-            T::from_f64(0.3183098861837907) * t39 * t41,
-            T::from_f64(0.3183098861837907) * t40 * t42,
-            T::from_f64(0.3183098861837907) * t39 * t43,
-            T::from_f64(0.3183098861837907) * t40 * t44,
-        );
-        (normal, friction, delta, slip, a, b, p0)
+        ContactsOut {
+            normal: Vector4::new(
+                normal_edge_left,
+                normal_wall_right,
+                normal_edge_right,
+                normal_wall_left,
+            ),
+            friction: Vector4::new(
+                -normal_edge_left * mu * slip_edge_left / t36,
+                -normal_wall_right * mu * slip_wall_right / t23,
+                -normal_edge_right * mu * slip_edge_right / t27,
+                -normal_wall_left * mu * slip_wall_left / t24,
+            ),
+            delta: Vector4::new(
+                delta_edge_left,
+                delta_wall_right,
+                delta_edge_right,
+                delta_wall_left,
+            ),
+            slip: Vector4::new(
+                slip_edge_left,
+                slip_wall_right,
+                slip_edge_right,
+                slip_wall_left,
+            ),
+            a: Vector4::new(edge_ma * t41, wall_ma * t42, edge_ma * t43, wall_ma * t44),
+            b: Vector4::new(edge_mb * t41, wall_mb * t42, edge_mb * t43, wall_mb * t44),
+            p0: Vector4::new(
+                T::from_f64(0.3183098861837907) * t39 * t41,
+                T::from_f64(0.3183098861837907) * t40 * t42,
+                T::from_f64(0.3183098861837907) * t39 * t43,
+                T::from_f64(0.3183098861837907) * t40 * t44,
+            ),
+        }
+    }
+    /// The outputs of [`energy`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct EnergyOut<T: Real> {
+        /// Kinetic energy T (59), J.
+        pub kinetic: T,
+        /// Contact potential P (63), J.
+        pub potential: T,
+        /// Insertion depth l of the bottom face's centre, m.
+        pub depth: T,
     }
     /// Kinetic energy (59) (J), contact potential (63) (J) and insertion depth of the bottom face (m).
     ///
@@ -953,6 +1097,7 @@ pub mod compliant_peg {
     /// - `p` = (`m`, `J`, `r`, `l_c`, `D`, `rho_p`, `rho_h`, `mu`, `v_s`, `k_edge`, `k_wall`, `f1`, `f2`, `M`, `e_star`, `edge_sum`, `edge_ma`, `edge_mb`, `edge_dstar`, `wall_sum`, `wall_ma`, `wall_mb`, `wall_dstar`, `hc_alpha`)
     ///
     /// # Outputs
+    /// The fields of [`EnergyOut`]:
     /// - `kinetic`: scalar
     /// - `potential`: scalar
     /// - `depth`: scalar
@@ -960,7 +1105,7 @@ pub mod compliant_peg {
     /// # Cost
     /// 29 add/sub, 22 mul, 0 div, 0 sqrt, 6 transcendental, 4 branches; 20 `let`s.
     #[inline]
-    pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> (T, T, T) {
+    pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> EnergyOut<T> {
         let x = y[0];
         let z = y[1];
         let theta = y[2];
@@ -997,11 +1142,12 @@ pub mod compliant_peg {
         let t7 = pen_wall_right.powf(T::from_f64(2.5));
         let t8 = pen_edge_right.powf(T::from_f64(2.5));
         let t9 = pen_wall_left.powf(T::from_f64(2.5));
-        let kinetic = T::from_f64(0.5)
-            * (m * (xdot * xdot + zdot * zdot) + j * (thetadot * thetadot));
-        let potential = T::from_f64(0.4) * (t6 + t8) * k_edge
-            + T::from_f64(0.4) * (t7 + t9) * k_wall;
-        let depth = z + l_c * cos_theta;
-        (kinetic, potential, depth)
+        EnergyOut {
+            kinetic: T::from_f64(0.5)
+                * (m * (xdot * xdot + zdot * zdot) + j * (thetadot * thetadot)),
+            potential: T::from_f64(0.4) * (t6 + t8) * k_edge
+                + T::from_f64(0.4) * (t7 + t9) * k_wall,
+            depth: z + l_c * cos_theta,
+        }
     }
 }

@@ -48,6 +48,117 @@ pub mod compliant_peg_3d {
     ];
     /// Symbol names of the components of `w`, in order.
     pub const W_NAMES: [&str; 7] = ["Fx", "Fy", "Fz", "Tx", "Ty", "Tz", "Sdot"];
+    /// The parameters of `compliant_peg_3d`: the input `p` of its functions as a struct, one field per component in vector order (`From`/`Into` convert both ways).
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    #[allow(non_snake_case)]
+    pub struct Params<T> {
+        /// Peg radius r, m.
+        pub r: T,
+        /// Peg length L, m.
+        pub L: T,
+        /// Fillet radius of the peg's bottom rim rho_p, m.
+        pub rho_p: T,
+        /// Bore radius R, m.
+        pub R: T,
+        /// Fillet radius of the hole's mouth edge rho_h, m.
+        pub rho_h: T,
+        /// Bore depth h_b, m.
+        pub h_b: T,
+        /// Mass m, kg.
+        pub m: T,
+        /// Transverse moment of inertia about the centre of mass, kg m^2.
+        pub J_t: T,
+        /// Axial moment of inertia, kg m^2.
+        pub J_a: T,
+        /// Gravitational acceleration along -z, m/s^2.
+        pub g: T,
+        /// Applied force x, N.
+        pub fa_x: T,
+        /// Applied force y, N.
+        pub fa_y: T,
+        /// Applied force z, N.
+        pub fa_z: T,
+        /// Applied moment x, N m.
+        pub ma_x: T,
+        /// Applied moment y, N m.
+        pub ma_y: T,
+        /// Applied moment z, N m.
+        pub ma_z: T,
+    }
+    impl<T> Params<T> {
+        /// The field names in vector order: the symbol names of `p` ([`P_NAMES`]).
+        pub const NAMES: [&'static str; 16] = P_NAMES;
+    }
+    impl<T: Real> From<Params<T>> for SVector<T, 16> {
+        /// The `p` vector of these values, in field order.
+        fn from(v: Params<T>) -> SVector<T, 16> {
+            SVector::from([
+                v.r,
+                v.L,
+                v.rho_p,
+                v.R,
+                v.rho_h,
+                v.h_b,
+                v.m,
+                v.J_t,
+                v.J_a,
+                v.g,
+                v.fa_x,
+                v.fa_y,
+                v.fa_z,
+                v.ma_x,
+                v.ma_y,
+                v.ma_z,
+            ])
+        }
+    }
+    impl<T: Real> From<&SVector<T, 16>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: &SVector<T, 16>) -> Params<T> {
+            Params {
+                r: v[0],
+                L: v[1],
+                rho_p: v[2],
+                R: v[3],
+                rho_h: v[4],
+                h_b: v[5],
+                m: v[6],
+                J_t: v[7],
+                J_a: v[8],
+                g: v[9],
+                fa_x: v[10],
+                fa_y: v[11],
+                fa_z: v[12],
+                ma_x: v[13],
+                ma_y: v[14],
+                ma_z: v[15],
+            }
+        }
+    }
+    impl<T: Real> From<SVector<T, 16>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: SVector<T, 16>) -> Params<T> {
+            Params::from(&v)
+        }
+    }
+    /// One contact pair at one angle along its edge circle: the gap with its first and second derivatives in the angle, its gradient in the pose, the force direction on the peg and the contact point.
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct PairGeometry<T: Real> {
+        /// Gap g along the pair's normal (negative: penetration), m.
+        pub gap: T,
+        /// First derivative dg/dangle of the gap, m/rad.
+        pub d1: T,
+        /// Second derivative d²g/dangle² of the gap, m/rad².
+        pub d2: T,
+        /// Gradient dg/d(px, py, pz, q0, q1, q2, q3) of the gap in the pose, m per unit.
+        pub grad: SVector<T, 7>,
+        /// Unit direction of the contact force on the peg, hole frame.
+        pub normal: SVector<T, 3>,
+        /// Contact point, hole frame, m.
+        pub point: SVector<T, 3>,
+        /// Axial coordinate of the contact point along the peg from the centre of mass, m.
+        pub axial: T,
+    }
     /// Contact pair: the mouth-edge torus against the peg's side, angle along the mouth-edge circle. Gap g (m, negative = penetration), dg/dangle and d2g/dangle2 (m/rad, m/rad^2), gradient dg/d(px, py, pz, q0..q3), unit force direction on the peg, contact point (m) and its axial coordinate along the peg from the centre of mass (m).
     ///
     /// # Inputs
@@ -56,6 +167,7 @@ pub mod compliant_peg_3d {
     /// - `p` = (`r`, `L`, `rho_p`, `R`, `rho_h`, `h_b`, `m`, `J_t`, `J_a`, `g`, `fa_x`, `fa_y`, `fa_z`, `ma_x`, `ma_y`, `ma_z`)
     ///
     /// # Outputs
+    /// The fields of [`PairGeometry`]:
     /// - `gap`: scalar
     /// - `d1`: scalar
     /// - `d2`: scalar
@@ -65,13 +177,13 @@ pub mod compliant_peg_3d {
     /// - `axial`: scalar
     ///
     /// # Cost
-    /// 78 add/sub, 143 mul, 2 div, 0 sqrt, 3 transcendental, 0 branches; 46 `let`s.
+    /// 78 add/sub, 143 mul, 2 div, 0 sqrt, 3 transcendental, 0 branches; 45 `let`s.
     #[inline]
     pub fn edge_side<T: Real>(
         x: &SVector<T, 7>,
         a: &SVector<T, 1>,
         p: &SVector<T, 16>,
-    ) -> (T, T, T, SVector<T, 7>, SVector<T, 3>, SVector<T, 3>, T) {
+    ) -> PairGeometry<T> {
         let px = x[0];
         let py = x[1];
         let pz = x[2];
@@ -118,62 +230,62 @@ pub mod compliant_peg_3d {
         let t31 = -t28 * t24;
         let t32 = t6 * t24;
         let t33 = t1 * (-(t22 * t9) + t23 * t11 + T::from_f64(2.0) * t32 * t8);
-        let t34 = -t33;
-        let t35 = t5 * t23;
-        let t36 = -T::from_f64(2.0) * t32;
-        let t37 = t0 * t22;
-        let t38 = q2 * t21;
-        let t39 = -T::from_f64(2.0) * t38;
-        let t40 = q1 * t21;
-        let t41 = -T::from_f64(2.0) * t40;
-        let t42 = q3 * t21;
-        let t43 = q0 * t21;
-        let gap = -rho_h - r + t26;
-        let d1 = -t33 * t27;
-        let d2 = t27
-            * (t1
-                * (t22 * (T::from_f64(4.0) * t0 * t13 - cos_angle)
-                    + t23 * (sin_angle + T::from_f64(4.0) * t5 * t13)
-                    - T::from_f64(2.0) * t32 * t13) + t10 * t10 + t12 * t12
-                + t7 * (t20 * t20)) - t34 * t34 / (t26 * t26 * t26);
-        let grad = SMatrix::<
-            T,
-            7,
-            1,
-        >::from_row_slice(
-            &[
-                t27
-                    * (t0 * (T::from_f64(4.0) * t35 + t36)
-                        - t22 * (T::from_f64(1.0) - T::from_f64(4.0) * (t0 * t0))),
-                -t27
-                    * (t5 * (T::from_f64(4.0) * t37 + t36)
-                        - t23 * (T::from_f64(1.0) - T::from_f64(4.0) * (t5 * t5))),
-                t27
-                    * (T::from_f64(2.0) * (t37 + t35) * t6
-                        + t24 * (T::from_f64(1.0) - t7)),
-                -t27
-                    * (t22 * (t39 + T::from_f64(4.0) * t0 * t16)
-                        + t23 * (t41 + T::from_f64(4.0) * t5 * t16)
-                        - T::from_f64(2.0) * t32 * t16),
-                t27
-                    * (T::from_f64(2.0)
-                        * (t22 * (t42 - t0 * t17) + t23 * (t43 - t5 * t17))
-                        + t24 * (T::from_f64(4.0) * t40 + t6 * t17)),
-                t27
-                    * (T::from_f64(2.0)
-                        * (t22 * (t43 - t0 * t19) - t23 * (t42 + t5 * t19))
-                        + t24 * (T::from_f64(4.0) * t38 + t6 * t19)),
-                -t27
-                    * (t22 * (t41 - T::from_f64(4.0) * t0 * t18)
-                        - t23 * (t39 + T::from_f64(4.0) * t5 * t18)
-                        + T::from_f64(2.0) * t32 * t18),
-            ],
-        );
-        let normal = Vector3::new(-t22 * t27, t23 * t27, t24 * t27);
-        let point = Vector3::new(t2 - t29, t3 + t30, -rho_h - t31);
-        let axial = -(T::from_f64(2.0) * (t0 * (-t2 + px + t29) + t5 * (t3 - py + t30)))
-            - t6 * (rho_h + pz + t31);
-        (gap, d1, d2, grad, normal, point, axial)
+        let t34 = t5 * t23;
+        let t35 = -T::from_f64(2.0) * t32;
+        let t36 = t0 * t22;
+        let t37 = q2 * t21;
+        let t38 = -T::from_f64(2.0) * t37;
+        let t39 = q1 * t21;
+        let t40 = -T::from_f64(2.0) * t39;
+        let t41 = q3 * t21;
+        let t42 = q0 * t21;
+        PairGeometry {
+            gap: -rho_h - r + t26,
+            d1: -t33 * t27,
+            d2: t27
+                * (t1
+                    * (t22 * (T::from_f64(4.0) * t0 * t13 - cos_angle)
+                        + t23 * (sin_angle + T::from_f64(4.0) * t5 * t13)
+                        - T::from_f64(2.0) * t32 * t13) + t10 * t10 + t12 * t12
+                    + t7 * (t20 * t20)) - t33 * t33 / (t26 * t26 * t26),
+            grad: SMatrix::<
+                T,
+                7,
+                1,
+            >::from_row_slice(
+                &[
+                    t27
+                        * (t0 * (T::from_f64(4.0) * t34 + t35)
+                            - t22 * (T::from_f64(1.0) - T::from_f64(4.0) * (t0 * t0))),
+                    -t27
+                        * (t5 * (T::from_f64(4.0) * t36 + t35)
+                            - t23 * (T::from_f64(1.0) - T::from_f64(4.0) * (t5 * t5))),
+                    t27
+                        * (T::from_f64(2.0) * (t36 + t34) * t6
+                            + t24 * (T::from_f64(1.0) - t7)),
+                    -t27
+                        * (t22 * (t38 + T::from_f64(4.0) * t0 * t16)
+                            + t23 * (t40 + T::from_f64(4.0) * t5 * t16)
+                            - T::from_f64(2.0) * t32 * t16),
+                    t27
+                        * (T::from_f64(2.0)
+                            * (t22 * (t41 - t0 * t17) + t23 * (t42 - t5 * t17))
+                            + t24 * (T::from_f64(4.0) * t39 + t6 * t17)),
+                    t27
+                        * (T::from_f64(2.0)
+                            * (t22 * (t42 - t0 * t19) - t23 * (t41 + t5 * t19))
+                            + t24 * (T::from_f64(4.0) * t37 + t6 * t19)),
+                    -t27
+                        * (t22 * (t40 - T::from_f64(4.0) * t0 * t18)
+                            - t23 * (t38 + T::from_f64(4.0) * t5 * t18)
+                            + T::from_f64(2.0) * t32 * t18),
+                ],
+            ),
+            normal: Vector3::new(-t22 * t27, t23 * t27, t24 * t27),
+            point: Vector3::new(t2 - t29, t3 + t30, -rho_h - t31),
+            axial: -(T::from_f64(2.0) * (t0 * (-t2 + px + t29) + t5 * (t3 - py + t30)))
+                - t6 * (rho_h + pz + t31),
+        }
     }
     /// Contact pair: the peg's rim torus against the bore wall, angle along the rim circle (body). Gap g (m, negative = penetration), dg/dangle and d2g/dangle2 (m/rad, m/rad^2), gradient dg/d(px, py, pz, q0..q3), unit force direction on the peg, contact point (m) and its axial coordinate along the peg from the centre of mass (m).
     ///
@@ -183,6 +295,7 @@ pub mod compliant_peg_3d {
     /// - `p` = (`r`, `L`, `rho_p`, `R`, `rho_h`, `h_b`, `m`, `J_t`, `J_a`, `g`, `fa_x`, `fa_y`, `fa_z`, `ma_x`, `ma_y`, `ma_z`)
     ///
     /// # Outputs
+    /// The fields of [`PairGeometry`]:
     /// - `gap`: scalar
     /// - `d1`: scalar
     /// - `d2`: scalar
@@ -192,13 +305,13 @@ pub mod compliant_peg_3d {
     /// - `axial`: scalar
     ///
     /// # Cost
-    /// 55 add/sub, 107 mul, 2 div, 0 sqrt, 2 transcendental, 0 branches; 47 `let`s.
+    /// 55 add/sub, 107 mul, 2 div, 0 sqrt, 2 transcendental, 0 branches; 46 `let`s.
     #[inline]
     pub fn rim_wall<T: Real>(
         x: &SVector<T, 7>,
         a: &SVector<T, 1>,
         p: &SVector<T, 16>,
-    ) -> (T, T, T, SVector<T, 7>, SVector<T, 3>, SVector<T, 3>, T) {
+    ) -> PairGeometry<T> {
         let px = x[0];
         let py = x[1];
         let pz = x[2];
@@ -255,51 +368,52 @@ pub mod compliant_peg_3d {
         let t39 = t36 * t38;
         let t40 = t37 * t38;
         let t41 = t11 * (t32 * t29 - t33 * t20);
-        let t42 = -t41;
-        let t43 = q2 * cos_angle;
-        let t44 = q1 * sin_angle;
-        let gap = r_2 - rho_p - t34;
-        let d1 = -t41 * t35;
-        let d2 = t42 * t42 / (t34 * t34 * t34)
-            - t35 * (-(t11 * (t32 * t28 + t33 * t19)) + t30 * t30 + t21 * t21);
-        let grad = SMatrix::<
-            T,
-            7,
-            1,
-        >::from_row_slice(
-            &[
-                t36,
-                -t37,
-                T::from_f64(0.0),
-                -T::from_f64(2.0) * t35
-                    * (t32 * (t24 * t11 + t23) + t33 * (t25 * t11 + t15)),
-                t35
-                    * (T::from_f64(2.0) * t32 * (q2 * sin_angle * t11 + t16)
-                        - t33
+        let t42 = q2 * cos_angle;
+        let t43 = q1 * sin_angle;
+        PairGeometry {
+            gap: r_2 - rho_p - t34,
+            d1: -t41 * t35,
+            d2: t41 * t41 / (t34 * t34 * t34)
+                - t35 * (-(t11 * (t32 * t28 + t33 * t19)) + t30 * t30 + t21 * t21),
+            grad: SMatrix::<
+                T,
+                7,
+                1,
+            >::from_row_slice(
+                &[
+                    t36,
+                    -t37,
+                    T::from_f64(0.0),
+                    -T::from_f64(2.0) * t35
+                        * (t32 * (t24 * t11 + t23) + t33 * (t25 * t11 + t15)),
+                    t35
+                        * (T::from_f64(2.0) * t32 * (q2 * sin_angle * t11 + t16)
+                            - t33
+                                * (t14
+                                    - t11 * (T::from_f64(4.0) * t43 - T::from_f64(2.0) * t42))),
+                    -t35
+                        * (t32
                             * (t14
-                                - t11 * (T::from_f64(4.0) * t44 - T::from_f64(2.0) * t43))),
-                -t35
-                    * (t32
-                        * (t14 - t11 * (T::from_f64(2.0) * t44 - T::from_f64(4.0) * t43))
-                        + T::from_f64(2.0) * t33 * (t16 + q1 * cos_angle * t11)),
-                -t35
-                    * (t32
-                        * (t11
-                            * (T::from_f64(4.0) * t25
-                                + T::from_f64(2.0) * q0 * sin_angle)
-                            + T::from_f64(2.0) * t15)
-                        - t33
-                            * (T::from_f64(2.0) * t23
-                                - t11
-                                    * (T::from_f64(2.0) * q0 * cos_angle
-                                        - T::from_f64(4.0) * t24))),
-            ],
-        );
-        let normal = Vector3::new(t36, -t37, T::from_f64(0.0));
-        let point = Vector3::new(-t39, t40, t31 + pz - t22);
-        let axial = -(T::from_f64(2.0) * (t6 * (px + t39) - t26 * (py - t40)))
-            - t12 * (t22 - t31);
-        (gap, d1, d2, grad, normal, point, axial)
+                                - t11 * (T::from_f64(2.0) * t43 - T::from_f64(4.0) * t42))
+                            + T::from_f64(2.0) * t33 * (t16 + q1 * cos_angle * t11)),
+                    -t35
+                        * (t32
+                            * (t11
+                                * (T::from_f64(4.0) * t25
+                                    + T::from_f64(2.0) * q0 * sin_angle)
+                                + T::from_f64(2.0) * t15)
+                            - t33
+                                * (T::from_f64(2.0) * t23
+                                    - t11
+                                        * (T::from_f64(2.0) * q0 * cos_angle
+                                            - T::from_f64(4.0) * t24))),
+                ],
+            ),
+            normal: Vector3::new(t36, -t37, T::from_f64(0.0)),
+            point: Vector3::new(-t39, t40, t31 + pz - t22),
+            axial: -(T::from_f64(2.0) * (t6 * (px + t39) - t26 * (py - t40)))
+                - t12 * (t22 - t31),
+        }
     }
     /// Contact pair: the peg's rim torus against the block's top face z = 0, angle along the rim circle. Gap g (m, negative = penetration), dg/dangle and d2g/dangle2 (m/rad, m/rad^2), gradient dg/d(px, py, pz, q0..q3), unit force direction on the peg, contact point (m) and its axial coordinate along the peg from the centre of mass (m).
     ///
@@ -309,6 +423,7 @@ pub mod compliant_peg_3d {
     /// - `p` = (`r`, `L`, `rho_p`, `R`, `rho_h`, `h_b`, `m`, `J_t`, `J_a`, `g`, `fa_x`, `fa_y`, `fa_z`, `ma_x`, `ma_y`, `ma_z`)
     ///
     /// # Outputs
+    /// The fields of [`PairGeometry`]:
     /// - `gap`: scalar
     /// - `d1`: scalar
     /// - `d2`: scalar
@@ -324,7 +439,7 @@ pub mod compliant_peg_3d {
         x: &SVector<T, 7>,
         a: &SVector<T, 1>,
         p: &SVector<T, 16>,
-    ) -> (T, T, T, SVector<T, 7>, SVector<T, 3>, SVector<T, 3>, T) {
+    ) -> PairGeometry<T> {
         let px = x[0];
         let py = x[1];
         let pz = x[2];
@@ -364,35 +479,36 @@ pub mod compliant_peg_3d {
         let t22 = -t11
             * (T::from_f64(2.0) * (t3 - t2) * sin_angle
                 - (T::from_f64(1.0) - T::from_f64(2.0) * (t0 + t1)) * cos_angle);
-        let gap = -rho_p + T::from_f64(2.0) * t20 + pz - t17;
-        let d1 = T::from_f64(2.0) * (t11 * (t19 * sin_angle + t10 * cos_angle));
-        let d2 = -T::from_f64(2.0) * t20;
-        let grad = SMatrix::<
-            T,
-            7,
-            1,
-        >::from_row_slice(
-            &[
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(1.0),
-                T::from_f64(2.0) * (q1 * sin_angle - q2 * cos_angle) * t11,
-                T::from_f64(2.0) * (q3 * cos_angle + q0 * sin_angle) * t11
-                    + T::from_f64(4.0) * q1 * t14,
-                T::from_f64(4.0) * q2 * t14
-                    - T::from_f64(2.0) * (q0 * cos_angle - q3 * sin_angle) * t11,
-                T::from_f64(2.0) * (q2 * sin_angle + q1 * cos_angle) * t11,
-            ],
-        );
-        let normal = Vector3::new(T::from_f64(0.0), T::from_f64(0.0), T::from_f64(1.0));
-        let point = Vector3::new(
-            t22 + px + t15,
-            t16 + py + t21,
-            t12 + t20 + T::from_f64(0.5) * (pz - t17),
-        );
-        let axial = T::from_f64(2.0) * (t6 * (t22 + t15) - t18 * (t16 + t21))
-            + t13 * (t12 + t20 - T::from_f64(0.5) * (t17 + pz));
-        (gap, d1, d2, grad, normal, point, axial)
+        PairGeometry {
+            gap: -rho_p + T::from_f64(2.0) * t20 + pz - t17,
+            d1: T::from_f64(2.0) * (t11 * (t19 * sin_angle + t10 * cos_angle)),
+            d2: -T::from_f64(2.0) * t20,
+            grad: SMatrix::<
+                T,
+                7,
+                1,
+            >::from_row_slice(
+                &[
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(1.0),
+                    T::from_f64(2.0) * (q1 * sin_angle - q2 * cos_angle) * t11,
+                    T::from_f64(2.0) * (q3 * cos_angle + q0 * sin_angle) * t11
+                        + T::from_f64(4.0) * q1 * t14,
+                    T::from_f64(4.0) * q2 * t14
+                        - T::from_f64(2.0) * (q0 * cos_angle - q3 * sin_angle) * t11,
+                    T::from_f64(2.0) * (q2 * sin_angle + q1 * cos_angle) * t11,
+                ],
+            ),
+            normal: Vector3::new(T::from_f64(0.0), T::from_f64(0.0), T::from_f64(1.0)),
+            point: Vector3::new(
+                t22 + px + t15,
+                t16 + py + t21,
+                t12 + t20 + T::from_f64(0.5) * (pz - t17),
+            ),
+            axial: T::from_f64(2.0) * (t6 * (t22 + t15) - t18 * (t16 + t21))
+                + t13 * (t12 + t20 - T::from_f64(0.5) * (t17 + pz)),
+        }
     }
     /// Contact pair: the peg's rim torus against the bore bottom z = -h_b, angle along the rim circle. Gap g (m, negative = penetration), dg/dangle and d2g/dangle2 (m/rad, m/rad^2), gradient dg/d(px, py, pz, q0..q3), unit force direction on the peg, contact point (m) and its axial coordinate along the peg from the centre of mass (m).
     ///
@@ -402,6 +518,7 @@ pub mod compliant_peg_3d {
     /// - `p` = (`r`, `L`, `rho_p`, `R`, `rho_h`, `h_b`, `m`, `J_t`, `J_a`, `g`, `fa_x`, `fa_y`, `fa_z`, `ma_x`, `ma_y`, `ma_z`)
     ///
     /// # Outputs
+    /// The fields of [`PairGeometry`]:
     /// - `gap`: scalar
     /// - `d1`: scalar
     /// - `d2`: scalar
@@ -417,7 +534,7 @@ pub mod compliant_peg_3d {
         x: &SVector<T, 7>,
         a: &SVector<T, 1>,
         p: &SVector<T, 16>,
-    ) -> (T, T, T, SVector<T, 7>, SVector<T, 3>, SVector<T, 3>, T) {
+    ) -> PairGeometry<T> {
         let px = x[0];
         let py = x[1];
         let pz = x[2];
@@ -458,35 +575,36 @@ pub mod compliant_peg_3d {
             * (T::from_f64(2.0) * (t3 - t2) * sin_angle
                 - (T::from_f64(1.0) - T::from_f64(2.0) * (t0 + t1)) * cos_angle);
         let t22 = -T::from_f64(0.5) * (rho_p + h_b);
-        let gap = h_b - rho_p + T::from_f64(2.0) * t19 + pz - t16;
-        let d1 = T::from_f64(2.0) * (t11 * (t18 * sin_angle + t10 * cos_angle));
-        let d2 = -T::from_f64(2.0) * t19;
-        let grad = SMatrix::<
-            T,
-            7,
-            1,
-        >::from_row_slice(
-            &[
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(1.0),
-                T::from_f64(2.0) * (q1 * sin_angle - q2 * cos_angle) * t11,
-                T::from_f64(2.0) * (q3 * cos_angle + q0 * sin_angle) * t11
-                    + T::from_f64(4.0) * q1 * t13,
-                T::from_f64(4.0) * q2 * t13
-                    - T::from_f64(2.0) * (q0 * cos_angle - q3 * sin_angle) * t11,
-                T::from_f64(2.0) * (q2 * sin_angle + q1 * cos_angle) * t11,
-            ],
-        );
-        let normal = Vector3::new(T::from_f64(0.0), T::from_f64(0.0), T::from_f64(1.0));
-        let point = Vector3::new(
-            t21 + px + t14,
-            t15 + py + t20,
-            t22 + t19 + T::from_f64(0.5) * (pz - t16),
-        );
-        let axial = T::from_f64(2.0) * (t6 * (t21 + t14) - t17 * (t15 + t20))
-            + t12 * (t22 + t19 - T::from_f64(0.5) * (t16 + pz));
-        (gap, d1, d2, grad, normal, point, axial)
+        PairGeometry {
+            gap: h_b - rho_p + T::from_f64(2.0) * t19 + pz - t16,
+            d1: T::from_f64(2.0) * (t11 * (t18 * sin_angle + t10 * cos_angle)),
+            d2: -T::from_f64(2.0) * t19,
+            grad: SMatrix::<
+                T,
+                7,
+                1,
+            >::from_row_slice(
+                &[
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(1.0),
+                    T::from_f64(2.0) * (q1 * sin_angle - q2 * cos_angle) * t11,
+                    T::from_f64(2.0) * (q3 * cos_angle + q0 * sin_angle) * t11
+                        + T::from_f64(4.0) * q1 * t13,
+                    T::from_f64(4.0) * q2 * t13
+                        - T::from_f64(2.0) * (q0 * cos_angle - q3 * sin_angle) * t11,
+                    T::from_f64(2.0) * (q2 * sin_angle + q1 * cos_angle) * t11,
+                ],
+            ),
+            normal: Vector3::new(T::from_f64(0.0), T::from_f64(0.0), T::from_f64(1.0)),
+            point: Vector3::new(
+                t21 + px + t14,
+                t15 + py + t20,
+                t22 + t19 + T::from_f64(0.5) * (pz - t16),
+            ),
+            axial: T::from_f64(2.0) * (t6 * (t21 + t14) - t17 * (t15 + t20))
+                + t12 * (t22 + t19 - T::from_f64(0.5) * (t16 + pz)),
+        }
     }
     /// Contact pair: the peg's rim torus against the mouth-edge torus, angle along the rim circle (body), closest mouth-circle point in closed form. Gap g (m, negative = penetration), dg/dangle and d2g/dangle2 (m/rad, m/rad^2), gradient dg/d(px, py, pz, q0..q3), unit force direction on the peg, contact point (m) and its axial coordinate along the peg from the centre of mass (m).
     ///
@@ -496,6 +614,7 @@ pub mod compliant_peg_3d {
     /// - `p` = (`r`, `L`, `rho_p`, `R`, `rho_h`, `h_b`, `m`, `J_t`, `J_a`, `g`, `fa_x`, `fa_y`, `fa_z`, `ma_x`, `ma_y`, `ma_z`)
     ///
     /// # Outputs
+    /// The fields of [`PairGeometry`]:
     /// - `gap`: scalar
     /// - `d1`: scalar
     /// - `d2`: scalar
@@ -511,7 +630,7 @@ pub mod compliant_peg_3d {
         x: &SVector<T, 7>,
         a: &SVector<T, 1>,
         p: &SVector<T, 16>,
-    ) -> (T, T, T, SVector<T, 7>, SVector<T, 3>, SVector<T, 3>, T) {
+    ) -> PairGeometry<T> {
         let px = x[0];
         let py = x[1];
         let pz = x[2];
@@ -588,59 +707,62 @@ pub mod compliant_peg_3d {
         let t59 = t57 * t34;
         let t60 = -t55 * t56;
         let t61 = t12 * (t51 * t36 - T::from_f64(2.0) * t43 * t47);
-        let gap = -rho_h - rho_p + t49;
-        let d1 = -t61 * t50;
-        let d2 = -(t61 * t61 / (t49 * t49 * t49))
-            - t50
-                * (-(t44 * t44
-                    * (t46 / (t35 * t35 * t35) + T::from_f64(1.0) / (t35 * t35)))
-                    + T::from_f64(2.0) * t48 * t32 - t45 * t45
-                    + t51 * (-(t12 * (t33 * t29 + t34 * t20)) + t31 * t31 + t22 * t22));
-        let grad = SMatrix::<
-            T,
-            7,
-            1,
-        >::from_row_slice(
-            &[
-                t53,
-                t54,
-                t55,
-                -T::from_f64(2.0) * t50
-                    * (t51 * (t33 * (t24 * t12 + t23) + t34 * (t25 * t12 + t16))
-                        - t48 * (t38 - t37)),
-                t50
-                    * ((T::from_f64(2.0) * (t25 + t41) * t12 + T::from_f64(4.0) * t16)
-                        * t47
+        PairGeometry {
+            gap: -rho_h - rho_p + t49,
+            d1: -t61 * t50,
+            d2: -(t61 * t61 / (t49 * t49 * t49))
+                - t50
+                    * (-(t44 * t44
+                        * (t46 / (t35 * t35 * t35) + T::from_f64(1.0) / (t35 * t35)))
+                        + T::from_f64(2.0) * t48 * t32 - t45 * t45
                         + t51
-                            * (T::from_f64(2.0) * t33 * (t39 * t12 + t17)
+                            * (-(t12 * (t33 * t29 + t34 * t20)) + t31 * t31
+                                + t22 * t22)),
+            grad: SMatrix::<
+                T,
+                7,
+                1,
+            >::from_row_slice(
+                &[
+                    t53,
+                    t54,
+                    t55,
+                    -T::from_f64(2.0) * t50
+                        * (t51 * (t33 * (t24 * t12 + t23) + t34 * (t25 * t12 + t16))
+                            - t48 * (t38 - t37)),
+                    t50
+                        * ((T::from_f64(2.0) * (t25 + t41) * t12
+                            + T::from_f64(4.0) * t16) * t47
+                            + t51
+                                * (T::from_f64(2.0) * t33 * (t39 * t12 + t17)
+                                    - t34
+                                        * (t15
+                                            - t12
+                                                * (T::from_f64(4.0) * t38 - T::from_f64(2.0) * t37)))),
+                    -t50
+                        * (t51
+                            * (t33
+                                * (t15
+                                    - t12 * (T::from_f64(2.0) * t38 - T::from_f64(4.0) * t37))
+                                + T::from_f64(2.0) * t34 * (t17 + t40 * t12))
+                            - (T::from_f64(4.0) * t23
+                                - T::from_f64(2.0) * (t42 - t24) * t12) * t47),
+                    -t50
+                        * (t51
+                            * (t33
+                                * (t12 * (T::from_f64(4.0) * t25 + T::from_f64(2.0) * t41)
+                                    + T::from_f64(2.0) * t16)
                                 - t34
-                                    * (t15
-                                        - t12
-                                            * (T::from_f64(4.0) * t38 - T::from_f64(2.0) * t37)))),
-                -t50
-                    * (t51
-                        * (t33
-                            * (t15
-                                - t12 * (T::from_f64(2.0) * t38 - T::from_f64(4.0) * t37))
-                            + T::from_f64(2.0) * t34 * (t17 + t40 * t12))
-                        - (T::from_f64(4.0) * t23 - T::from_f64(2.0) * (t42 - t24) * t12)
-                            * t47),
-                -t50
-                    * (t51
-                        * (t33
-                            * (t12 * (T::from_f64(4.0) * t25 + T::from_f64(2.0) * t41)
-                                + T::from_f64(2.0) * t16)
-                            - t34
-                                * (T::from_f64(2.0) * t23
-                                    - t12 * (T::from_f64(2.0) * t42 - T::from_f64(4.0) * t24)))
-                        - T::from_f64(2.0) * t48 * (t39 + t40)),
-            ],
-        );
-        let normal = Vector3::new(t53, t54, t55);
-        let point = Vector3::new(-t58, t59, -rho_h - t60);
-        let axial = -(T::from_f64(2.0) * (t6 * (t58 + px) - t26 * (py - t59)))
-            - t13 * (rho_h + pz + t60);
-        (gap, d1, d2, grad, normal, point, axial)
+                                    * (T::from_f64(2.0) * t23
+                                        - t12 * (T::from_f64(2.0) * t42 - T::from_f64(4.0) * t24)))
+                            - T::from_f64(2.0) * t48 * (t39 + t40)),
+                ],
+            ),
+            normal: Vector3::new(t53, t54, t55),
+            point: Vector3::new(-t58, t59, -rho_h - t60),
+            axial: -(T::from_f64(2.0) * (t6 * (t58 + px) - t26 * (py - t59)))
+                - t13 * (rho_h + pz + t60),
+        }
     }
     /// Newton-Euler right-hand side of y = (p, q, v, omega_body, work, dissipation) under the contact wrench w = (F, T about the centre of mass, hole frame; dissipation rate), the applied loads and gravity along -z. SI units.
     ///
@@ -738,6 +860,14 @@ pub mod compliant_peg_3d {
             ],
         )
     }
+    /// The outputs of [`rhs_jacobian`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct RhsJacobianOut<T: Real> {
+        /// D(ydot)/dy at a fixed wrench (15 x 15).
+        pub dy: SMatrix<T, 15, 15>,
+        /// D(ydot)/dw (15 x 7).
+        pub dw: SMatrix<T, 15, 7>,
+    }
     /// Exact partial derivatives of `rhs`: dy = d(ydot)/dy (15 x 15) at a fixed wrench and dw = d(ydot)/dw (15 x 7); the runtime adds dw times the wrench's own derivative in y.
     ///
     /// # Inputs
@@ -746,6 +876,7 @@ pub mod compliant_peg_3d {
     /// - `p` = (`r`, `L`, `rho_p`, `R`, `rho_h`, `h_b`, `m`, `J_t`, `J_a`, `g`, `fa_x`, `fa_y`, `fa_z`, `ma_x`, `ma_y`, `ma_z`)
     ///
     /// # Outputs
+    /// The fields of [`RhsJacobianOut`]:
     /// - `dy`: 15×15 matrix
     /// - `dw`: 15×7 matrix
     ///
@@ -756,7 +887,7 @@ pub mod compliant_peg_3d {
         y: &SVector<T, 15>,
         w: &SVector<T, 7>,
         p: &SVector<T, 16>,
-    ) -> (SMatrix<T, 15, 15>, SMatrix<T, 15, 7>) {
+    ) -> RhsJacobianOut<T> {
         let q0 = y[3];
         let q1 = y[4];
         let q2 = y[5];
@@ -836,360 +967,373 @@ pub mod compliant_peg_3d {
         let t57 = t5 - t4;
         let t58 = t28 * (j_t - j_a);
         let t59 = t58 * wz;
-        let dy = SMatrix::<
-            T,
-            15,
-            15,
-        >::from_row_slice(
-            &[
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(1.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(1.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(1.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                t30,
-                t31,
-                t32,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                t33,
-                t34,
-                t35,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                t36,
-                T::from_f64(0.0),
-                t37,
-                t31,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                t38,
-                t35,
-                T::from_f64(0.5) * q2,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                t39,
-                t32,
-                T::from_f64(0.0),
-                t36,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.5) * q3,
-                t38,
-                t33,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                t37,
-                t39,
-                t30,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                t34,
-                T::from_f64(0.5) * q1,
-                t38,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                -T::from_f64(2.0) * t28 * (t41 - t40),
-                T::from_f64(2.0) * t28 * (t42 + t43),
-                -t28 * (T::from_f64(2.0) * (t46 - t45) + T::from_f64(4.0) * t44),
-                -t28 * (T::from_f64(4.0) * t47 - T::from_f64(2.0) * (t48 + t49)),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                t59,
-                t58 * wy,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(2.0) * t28 * (t49 - t47),
-                -t28 * (T::from_f64(4.0) * t45 - T::from_f64(2.0) * (t44 + t46)),
-                T::from_f64(2.0) * t28 * (t43 + t50),
-                -t28 * (T::from_f64(2.0) * (t51 - t41) + T::from_f64(4.0) * t40),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                -t59,
-                T::from_f64(0.0),
-                -t58 * wx,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                -T::from_f64(2.0) * t29 * (t45 - t44),
-                -t29 * (T::from_f64(2.0) * (t48 - t47) + T::from_f64(4.0) * t49),
-                -t29 * (T::from_f64(4.0) * t41 - T::from_f64(2.0) * (t40 + t51)),
-                T::from_f64(2.0) * t29 * (t42 + t50),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(2.0)
-                    * (ma_x * (t19 - t20) - ma_y * (t23 - t22) + ma_z * (t25 - t26)),
-                T::from_f64(2.0) * ma_x * (t16 + t17)
-                    - ma_y * (T::from_f64(2.0) * (t24 - t26) + T::from_f64(4.0) * t25)
-                    - ma_z * (T::from_f64(4.0) * t23 - T::from_f64(2.0) * (t22 + t21)),
-                -(ma_x * (T::from_f64(4.0) * t26 - T::from_f64(2.0) * (t25 + t24)))
-                    + T::from_f64(2.0) * ma_y * (t17 + t15)
-                    - ma_z * (T::from_f64(2.0) * (t18 - t20) + T::from_f64(4.0) * t19),
-                -(ma_x * (T::from_f64(2.0) * (t21 - t23) + T::from_f64(4.0) * t22))
-                    - ma_y * (T::from_f64(4.0) * t20 - T::from_f64(2.0) * (t19 + t18))
-                    + T::from_f64(2.0) * ma_z * (t16 + t15),
-                fa_x,
-                fa_y,
-                fa_z,
-                T::from_f64(2.0) * (ma_y * t7 - ma_z * t57) + ma_x * t53,
-                ma_y * t54 - T::from_f64(2.0) * (ma_x * t56 - ma_z * t11),
-                T::from_f64(2.0) * (ma_x * t6 - ma_y * t55) + ma_z * t52,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-            ],
-        );
-        let dw = SMatrix::<
-            T,
-            15,
-            7,
-        >::from_row_slice(
-            &[
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                t27,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                t27,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                t27,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                t53 * t28,
-                T::from_f64(2.0) * t7 * t28,
-                -T::from_f64(2.0) * t57 * t28,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                -T::from_f64(2.0) * t56 * t28,
-                t54 * t28,
-                T::from_f64(2.0) * t11 * t28,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(2.0) * t6 * t29,
-                -T::from_f64(2.0) * t55 * t29,
-                t52 * t29,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(1.0),
-            ],
-        );
-        (dy, dw)
+        RhsJacobianOut {
+            dy: SMatrix::<
+                T,
+                15,
+                15,
+            >::from_row_slice(
+                &[
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(1.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(1.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(1.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    t30,
+                    t31,
+                    t32,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    t33,
+                    t34,
+                    t35,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    t36,
+                    T::from_f64(0.0),
+                    t37,
+                    t31,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    t38,
+                    t35,
+                    T::from_f64(0.5) * q2,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    t39,
+                    t32,
+                    T::from_f64(0.0),
+                    t36,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.5) * q3,
+                    t38,
+                    t33,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    t37,
+                    t39,
+                    t30,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    t34,
+                    T::from_f64(0.5) * q1,
+                    t38,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    -T::from_f64(2.0) * t28 * (t41 - t40),
+                    T::from_f64(2.0) * t28 * (t42 + t43),
+                    -t28 * (T::from_f64(2.0) * (t46 - t45) + T::from_f64(4.0) * t44),
+                    -t28 * (T::from_f64(4.0) * t47 - T::from_f64(2.0) * (t48 + t49)),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    t59,
+                    t58 * wy,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(2.0) * t28 * (t49 - t47),
+                    -t28 * (T::from_f64(4.0) * t45 - T::from_f64(2.0) * (t44 + t46)),
+                    T::from_f64(2.0) * t28 * (t43 + t50),
+                    -t28 * (T::from_f64(2.0) * (t51 - t41) + T::from_f64(4.0) * t40),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    -t59,
+                    T::from_f64(0.0),
+                    -t58 * wx,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    -T::from_f64(2.0) * t29 * (t45 - t44),
+                    -t29 * (T::from_f64(2.0) * (t48 - t47) + T::from_f64(4.0) * t49),
+                    -t29 * (T::from_f64(4.0) * t41 - T::from_f64(2.0) * (t40 + t51)),
+                    T::from_f64(2.0) * t29 * (t42 + t50),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(2.0)
+                        * (ma_x * (t19 - t20) - ma_y * (t23 - t22) + ma_z * (t25 - t26)),
+                    T::from_f64(2.0) * ma_x * (t16 + t17)
+                        - ma_y
+                            * (T::from_f64(2.0) * (t24 - t26) + T::from_f64(4.0) * t25)
+                        - ma_z
+                            * (T::from_f64(4.0) * t23 - T::from_f64(2.0) * (t22 + t21)),
+                    -(ma_x * (T::from_f64(4.0) * t26 - T::from_f64(2.0) * (t25 + t24)))
+                        + T::from_f64(2.0) * ma_y * (t17 + t15)
+                        - ma_z
+                            * (T::from_f64(2.0) * (t18 - t20) + T::from_f64(4.0) * t19),
+                    -(ma_x * (T::from_f64(2.0) * (t21 - t23) + T::from_f64(4.0) * t22))
+                        - ma_y
+                            * (T::from_f64(4.0) * t20 - T::from_f64(2.0) * (t19 + t18))
+                        + T::from_f64(2.0) * ma_z * (t16 + t15),
+                    fa_x,
+                    fa_y,
+                    fa_z,
+                    T::from_f64(2.0) * (ma_y * t7 - ma_z * t57) + ma_x * t53,
+                    ma_y * t54 - T::from_f64(2.0) * (ma_x * t56 - ma_z * t11),
+                    T::from_f64(2.0) * (ma_x * t6 - ma_y * t55) + ma_z * t52,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                ],
+            ),
+            dw: SMatrix::<
+                T,
+                15,
+                7,
+            >::from_row_slice(
+                &[
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    t27,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    t27,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    t27,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    t53 * t28,
+                    T::from_f64(2.0) * t7 * t28,
+                    -T::from_f64(2.0) * t57 * t28,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    -T::from_f64(2.0) * t56 * t28,
+                    t54 * t28,
+                    T::from_f64(2.0) * t11 * t28,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(2.0) * t6 * t29,
+                    -T::from_f64(2.0) * t55 * t29,
+                    t52 * t29,
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(0.0),
+                    T::from_f64(1.0),
+                ],
+            ),
+        }
+    }
+    /// The outputs of [`energy`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct EnergyOut<T: Real> {
+        /// Kinetic energy of translation and rotation, J.
+        pub kinetic: T,
+        /// Gravitational potential m g p_z, J.
+        pub gravity: T,
     }
     /// Kinetic energy (J) and gravitational potential m g p_z (J).
     ///
@@ -1198,13 +1342,14 @@ pub mod compliant_peg_3d {
     /// - `p` = (`r`, `L`, `rho_p`, `R`, `rho_h`, `h_b`, `m`, `J_t`, `J_a`, `g`, `fa_x`, `fa_y`, `fa_z`, `ma_x`, `ma_y`, `ma_z`)
     ///
     /// # Outputs
+    /// The fields of [`EnergyOut`]:
     /// - `kinetic`: scalar
     /// - `gravity`: scalar
     ///
     /// # Cost
     /// 5 add/sub, 12 mul, 0 div, 0 sqrt, 0 transcendental, 0 branches; 0 `let`s.
     #[inline]
-    pub fn energy<T: Real>(y: &SVector<T, 15>, p: &SVector<T, 16>) -> (T, T) {
+    pub fn energy<T: Real>(y: &SVector<T, 15>, p: &SVector<T, 16>) -> EnergyOut<T> {
         let pz = y[2];
         let vx = y[7];
         let vy = y[8];
@@ -1216,10 +1361,11 @@ pub mod compliant_peg_3d {
         let j_t = p[7];
         let j_a = p[8];
         let g = p[9];
-        let kinetic = T::from_f64(0.5)
-            * (m * (vx * vx + vy * vy + vz * vz) + j_t * (wx * wx + wy * wy)
-                + j_a * (wz * wz));
-        let gravity = pz * m * g;
-        (kinetic, gravity)
+        EnergyOut {
+            kinetic: T::from_f64(0.5)
+                * (m * (vx * vx + vy * vy + vz * vz) + j_t * (wx * wx + wy * wy)
+                    + j_a * (wz * wz)),
+            gravity: pz * m * g,
+        }
     }
 }

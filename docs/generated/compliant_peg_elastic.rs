@@ -50,6 +50,143 @@ pub mod compliant_peg_elastic {
         "delta_floor",
         "tau_t",
     ];
+    /// The parameters of `compliant_peg_elastic`: the input `p` of its functions as a struct, one field per component in vector order (`From`/`Into` convert both ways).
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    #[allow(non_snake_case)]
+    pub struct Params<T> {
+        /// Mass m of the peg, kg.
+        pub m: T,
+        /// Moment of inertia J about the centre of mass, kg·m².
+        pub J: T,
+        /// Peg radius r, m.
+        pub r: T,
+        /// Distance l_c from the centre of mass to the bottom face, m.
+        pub l_c: T,
+        /// Hole diameter D, m.
+        pub D: T,
+        /// Fillet radius ρ_p of the peg's bottom corners, m.
+        pub rho_p: T,
+        /// Fillet radius ρ_h of the hole's top edges, m.
+        pub rho_h: T,
+        /// Coulomb friction coefficient μ, dimensionless.
+        pub mu: T,
+        /// Velocity scale v_s of the regularized friction law, m/s.
+        pub v_s: T,
+        /// Hertz stiffness of the edge contacts, N/m^1.5.
+        pub k_edge: T,
+        /// Hertz stiffness of the wall contacts, N/m^1.5.
+        pub k_wall: T,
+        /// Applied axial force f₁ (along e_a, pushing the peg into the hole), N.
+        pub f1: T,
+        /// Applied radial force f₂ (along e_r), N.
+        pub f2: T,
+        /// Applied torque M about the centre of mass, positive increasing θ, N·m.
+        pub M: T,
+        /// Contact modulus E* of the peg and hole materials, Pa.
+        pub e_star: T,
+        /// Sum of the principal curvatures Σρ of the edge contacts, 1/m.
+        pub edge_sum: T,
+        /// Hertz ellipse coefficient m_a of the edge contacts (9), dimensionless.
+        pub edge_ma: T,
+        /// Hertz ellipse coefficient m_b of the edge contacts (10), dimensionless.
+        pub edge_mb: T,
+        /// Hertz approach coefficient δ* of the edge contacts (13), dimensionless.
+        pub edge_dstar: T,
+        /// Sum of the principal curvatures Σρ of the wall contacts, 1/m.
+        pub wall_sum: T,
+        /// Hertz ellipse coefficient m_a of the wall contacts (9), dimensionless.
+        pub wall_ma: T,
+        /// Hertz ellipse coefficient m_b of the wall contacts (10), dimensionless.
+        pub wall_mb: T,
+        /// Hertz approach coefficient δ* of the wall contacts (13), dimensionless.
+        pub wall_dstar: T,
+        /// Hunt–Crossley damping coefficient α (0 for elastic contacts), s/m.
+        pub hc_alpha: T,
+        /// Effective shear modulus G* of Mindlin's tangential stiffness, Pa.
+        pub g_star: T,
+        /// Penetration floor δ_0 of the utilisation rate, m.
+        pub delta_floor: T,
+        /// Damping time τ_t of the tangential springs, s.
+        pub tau_t: T,
+    }
+    impl<T> Params<T> {
+        /// The field names in vector order: the symbol names of `p` ([`P_NAMES`]).
+        pub const NAMES: [&'static str; 27] = P_NAMES;
+    }
+    impl<T: Real> From<Params<T>> for SVector<T, 27> {
+        /// The `p` vector of these values, in field order.
+        fn from(v: Params<T>) -> SVector<T, 27> {
+            SVector::from([
+                v.m,
+                v.J,
+                v.r,
+                v.l_c,
+                v.D,
+                v.rho_p,
+                v.rho_h,
+                v.mu,
+                v.v_s,
+                v.k_edge,
+                v.k_wall,
+                v.f1,
+                v.f2,
+                v.M,
+                v.e_star,
+                v.edge_sum,
+                v.edge_ma,
+                v.edge_mb,
+                v.edge_dstar,
+                v.wall_sum,
+                v.wall_ma,
+                v.wall_mb,
+                v.wall_dstar,
+                v.hc_alpha,
+                v.g_star,
+                v.delta_floor,
+                v.tau_t,
+            ])
+        }
+    }
+    impl<T: Real> From<&SVector<T, 27>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: &SVector<T, 27>) -> Params<T> {
+            Params {
+                m: v[0],
+                J: v[1],
+                r: v[2],
+                l_c: v[3],
+                D: v[4],
+                rho_p: v[5],
+                rho_h: v[6],
+                mu: v[7],
+                v_s: v[8],
+                k_edge: v[9],
+                k_wall: v[10],
+                f1: v[11],
+                f2: v[12],
+                M: v[13],
+                e_star: v[14],
+                edge_sum: v[15],
+                edge_ma: v[16],
+                edge_mb: v[17],
+                edge_dstar: v[18],
+                wall_sum: v[19],
+                wall_ma: v[20],
+                wall_mb: v[21],
+                wall_dstar: v[22],
+                hc_alpha: v[23],
+                g_star: v[24],
+                delta_floor: v[25],
+                tau_t: v[26],
+            }
+        }
+    }
+    impl<T: Real> From<SVector<T, 27>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: SVector<T, 27>) -> Params<T> {
+            Params::from(&v)
+        }
+    }
     /// Right-hand side of y = (x, z, theta, xdot, zdot, thetadot, work, dissipation, u_edge_left, u_wall_right, u_edge_right, u_wall_left): M qdd = applied (50) + contact normal forces (-grad of the Hertz potential (62) and of the stored tangential energy) + Hertz-Mindlin friction capped by Coulomb; work, dissipation and utilisation rates. SI units.
     ///
     /// # Inputs
@@ -1242,6 +1379,24 @@ pub mod compliant_peg_elastic {
             ],
         )
     }
+    /// The outputs of [`contacts`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct ContactsOut<T: Real> {
+        /// Normal force f on the peg, N, per contact (edge_left, wall_right, edge_right, wall_left).
+        pub normal: SVector<T, 4>,
+        /// Friction force along the contact tangent, N, per contact (edge_left, wall_right, edge_right, wall_left).
+        pub friction: SVector<T, 4>,
+        /// Penetration δ (negative: gap), m, per contact (edge_left, wall_right, edge_right, wall_left).
+        pub delta: SVector<T, 4>,
+        /// Sliding velocity of the peg's material point, m/s, per contact (edge_left, wall_right, edge_right, wall_left).
+        pub slip: SVector<T, 4>,
+        /// Semi-major axis a of the Hertz ellipse (9), m, per contact (edge_left, wall_right, edge_right, wall_left).
+        pub a: SVector<T, 4>,
+        /// Semi-minor axis b of the Hertz ellipse (10), m, per contact (edge_left, wall_right, edge_right, wall_left).
+        pub b: SVector<T, 4>,
+        /// Maximum Hertz pressure p₀ (11), Pa, per contact (edge_left, wall_right, edge_right, wall_left).
+        pub p0: SVector<T, 4>,
+    }
     /// Per contact (edge_left, wall_right, edge_right, wall_left): normal force f (N), friction force along the tangent (N), penetration delta (m), sliding velocity (m/s), contact ellipse a, b (m) and maximum pressure p0 (Pa) ((9)-(11)).
     ///
     /// # Inputs
@@ -1249,6 +1404,7 @@ pub mod compliant_peg_elastic {
     /// - `p` = (`m`, `J`, `r`, `l_c`, `D`, `rho_p`, `rho_h`, `mu`, `v_s`, `k_edge`, `k_wall`, `f1`, `f2`, `M`, `e_star`, `edge_sum`, `edge_ma`, `edge_mb`, `edge_dstar`, `wall_sum`, `wall_ma`, `wall_mb`, `wall_dstar`, `hc_alpha`, `g_star`, `delta_floor`, `tau_t`)
     ///
     /// # Outputs
+    /// The fields of [`ContactsOut`]:
     /// - `normal`: vector of 4
     /// - `friction`: vector of 4
     /// - `delta`: vector of 4
@@ -1260,18 +1416,7 @@ pub mod compliant_peg_elastic {
     /// # Cost
     /// 79 add/sub, 129 mul, 10 div, 6 sqrt, 12 transcendental, 8 branches; 85 `let`s.
     #[inline]
-    pub fn contacts<T: Real>(
-        y: &SVector<T, 12>,
-        p: &SVector<T, 27>,
-    ) -> (
-        SVector<T, 4>,
-        SVector<T, 4>,
-        SVector<T, 4>,
-        SVector<T, 4>,
-        SVector<T, 4>,
-        SVector<T, 4>,
-        SVector<T, 4>,
-    ) {
+    pub fn contacts<T: Real>(y: &SVector<T, 12>, p: &SVector<T, 27>) -> ContactsOut<T> {
         let x = y[0];
         let z = y[1];
         let theta = y[2];
@@ -1387,51 +1532,65 @@ pub mod compliant_peg_elastic {
         let t63 = t48 * t32;
         let normal_wall_left = t63 * k_wall;
         let t64 = (T::from_f64(1.5) * t63 * t51).cbrt();
-        let normal = Vector4::new(
-            normal_edge_left,
-            normal_wall_right,
-            normal_edge_right,
-            normal_wall_left,
-        );
-        let friction = Vector4::new(
-            -(t41
-                * (t10 * u_edge_left
-                    + T::from_f64(8.0) * t53
-                        * (t39 + t40 - u_edge_left * slip_edge_left.abs()) / t45)),
-            -(t43
-                * (t18 * u_wall_right
-                    - T::from_f64(8.0) * t54
-                        * (-zdot + t24 + u_wall_right * slip_wall_right.abs()) / t44)),
-            -(t46
-                * (t10 * u_edge_right
-                    + T::from_f64(8.0) * t53
-                        * (t27 + t28 - u_edge_right * slip_edge_right.abs()) / t47)),
-            -(t48
-                * (t18 * u_wall_left
-                    + T::from_f64(8.0) * t54
-                        * (zdot + t25 - u_wall_left * slip_wall_left.abs()) / t34)),
-        );
-        let delta = Vector4::new(
-            delta_edge_left,
-            delta_wall_right,
-            delta_edge_right,
-            delta_wall_left,
-        );
-        let slip = Vector4::new(
-            slip_edge_left,
-            slip_wall_right,
-            slip_edge_right,
-            slip_wall_left,
-        );
-        let a = Vector4::new(edge_ma * t59, wall_ma * t60, edge_ma * t62, wall_ma * t64);
-        let b = Vector4::new(edge_mb * t59, wall_mb * t60, edge_mb * t62, wall_mb * t64);
-        let p0 = Vector4::new(
-            T::from_f64(0.3183098861837907) * t55 * t59,
-            T::from_f64(0.3183098861837907) * t56 * t60,
-            T::from_f64(0.3183098861837907) * t55 * t62,
-            T::from_f64(0.3183098861837907) * t56 * t64,
-        );
-        (normal, friction, delta, slip, a, b, p0)
+        ContactsOut {
+            normal: Vector4::new(
+                normal_edge_left,
+                normal_wall_right,
+                normal_edge_right,
+                normal_wall_left,
+            ),
+            friction: Vector4::new(
+                -(t41
+                    * (t10 * u_edge_left
+                        + T::from_f64(8.0) * t53
+                            * (t39 + t40 - u_edge_left * slip_edge_left.abs()) / t45)),
+                -(t43
+                    * (t18 * u_wall_right
+                        - T::from_f64(8.0) * t54
+                            * (-zdot + t24 + u_wall_right * slip_wall_right.abs())
+                            / t44)),
+                -(t46
+                    * (t10 * u_edge_right
+                        + T::from_f64(8.0) * t53
+                            * (t27 + t28 - u_edge_right * slip_edge_right.abs()) / t47)),
+                -(t48
+                    * (t18 * u_wall_left
+                        + T::from_f64(8.0) * t54
+                            * (zdot + t25 - u_wall_left * slip_wall_left.abs()) / t34)),
+            ),
+            delta: Vector4::new(
+                delta_edge_left,
+                delta_wall_right,
+                delta_edge_right,
+                delta_wall_left,
+            ),
+            slip: Vector4::new(
+                slip_edge_left,
+                slip_wall_right,
+                slip_edge_right,
+                slip_wall_left,
+            ),
+            a: Vector4::new(edge_ma * t59, wall_ma * t60, edge_ma * t62, wall_ma * t64),
+            b: Vector4::new(edge_mb * t59, wall_mb * t60, edge_mb * t62, wall_mb * t64),
+            p0: Vector4::new(
+                T::from_f64(0.3183098861837907) * t55 * t59,
+                T::from_f64(0.3183098861837907) * t56 * t60,
+                T::from_f64(0.3183098861837907) * t55 * t62,
+                T::from_f64(0.3183098861837907) * t56 * t64,
+            ),
+        }
+    }
+    /// The outputs of [`energy`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct EnergyOut<T: Real> {
+        /// Kinetic energy T (59), J.
+        pub kinetic: T,
+        /// Contact potential P (63), J.
+        pub potential: T,
+        /// Insertion depth l of the bottom face's centre, m.
+        pub depth: T,
+        /// Energy stored in the tangential springs, J.
+        pub tangential: T,
     }
     /// Kinetic energy (59) (J), contact potential (63) (J), insertion depth of the bottom face (m) and stored tangential energy (J).
     ///
@@ -1440,6 +1599,7 @@ pub mod compliant_peg_elastic {
     /// - `p` = (`m`, `J`, `r`, `l_c`, `D`, `rho_p`, `rho_h`, `mu`, `v_s`, `k_edge`, `k_wall`, `f1`, `f2`, `M`, `e_star`, `edge_sum`, `edge_ma`, `edge_mb`, `edge_dstar`, `wall_sum`, `wall_ma`, `wall_mb`, `wall_dstar`, `hc_alpha`, `g_star`, `delta_floor`, `tau_t`)
     ///
     /// # Outputs
+    /// The fields of [`EnergyOut`]:
     /// - `kinetic`: scalar
     /// - `potential`: scalar
     /// - `depth`: scalar
@@ -1448,7 +1608,7 @@ pub mod compliant_peg_elastic {
     /// # Cost
     /// 32 add/sub, 48 mul, 5 div, 2 sqrt, 8 transcendental, 4 branches; 24 `let`s.
     #[inline]
-    pub fn energy<T: Real>(y: &SVector<T, 12>, p: &SVector<T, 27>) -> (T, T, T, T) {
+    pub fn energy<T: Real>(y: &SVector<T, 12>, p: &SVector<T, 27>) -> EnergyOut<T> {
         let x = y[0];
         let z = y[1];
         let theta = y[2];
@@ -1504,20 +1664,21 @@ pub mod compliant_peg_elastic {
         let pen_wall_left = delta_wall_left.max0();
         let t12 = pen_edge_right.powf(T::from_f64(2.5));
         let t13 = pen_wall_left.powf(T::from_f64(2.5));
-        let kinetic = T::from_f64(0.5)
-            * (m * (xdot * xdot + zdot * zdot) + j * (thetadot * thetadot));
-        let potential = T::from_f64(0.4) * (t10 + t12) * k_edge
-            + T::from_f64(0.4) * (t11 + t13) * k_wall;
-        let depth = z + l_c * cos_theta;
-        let tangential = (T::from_f64(0.0625)
-            * (k_edge * k_edge
-                * (t10 * (u_edge_left * u_edge_left)
-                    + t12 * (u_edge_right * u_edge_right)) * t4) * t3
-            + T::from_f64(0.0625)
-                * (k_wall * k_wall
-                    * (t11 * (u_wall_right * u_wall_right)
-                        + t13 * (u_wall_left * u_wall_left)) * t8) * t7) / g_star
-            * (mu * mu);
-        (kinetic, potential, depth, tangential)
+        EnergyOut {
+            kinetic: T::from_f64(0.5)
+                * (m * (xdot * xdot + zdot * zdot) + j * (thetadot * thetadot)),
+            potential: T::from_f64(0.4) * (t10 + t12) * k_edge
+                + T::from_f64(0.4) * (t11 + t13) * k_wall,
+            depth: z + l_c * cos_theta,
+            tangential: (T::from_f64(0.0625)
+                * (k_edge * k_edge
+                    * (t10 * (u_edge_left * u_edge_left)
+                        + t12 * (u_edge_right * u_edge_right)) * t4) * t3
+                + T::from_f64(0.0625)
+                    * (k_wall * k_wall
+                        * (t11 * (u_wall_right * u_wall_right)
+                            + t13 * (u_wall_left * u_wall_left)) * t8) * t7) / g_star
+                * (mu * mu),
+        }
     }
 }

@@ -43,6 +43,8 @@ pub mod compliant_peg_lean {
         "wall_dstar",
         "hc_alpha",
     ];
+    /// The struct of `p`, shared with `compliant_peg` (same components).
+    pub use super::compliant_peg::Params;
     /// Right-hand side of y = (x, z, theta, xdot, zdot, thetadot, work, dissipation): M qdd = applied (50) + contact normal forces (-grad of the Hertz potential (62)) + Coulomb friction; work and dissipation rates. SI units.
     ///
     /// # Inputs
@@ -550,6 +552,24 @@ pub mod compliant_peg_lean {
             ],
         )
     }
+    /// The outputs of [`contacts`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct ContactsOut<T: Real> {
+        /// Normal force f on the peg, N, per contact (edge_left, wall_right).
+        pub normal: SVector<T, 2>,
+        /// Friction force along the contact tangent, N, per contact (edge_left, wall_right).
+        pub friction: SVector<T, 2>,
+        /// Penetration δ (negative: gap), m, per contact (edge_left, wall_right).
+        pub delta: SVector<T, 2>,
+        /// Sliding velocity of the peg's material point, m/s, per contact (edge_left, wall_right).
+        pub slip: SVector<T, 2>,
+        /// Semi-major axis a of the Hertz ellipse (9), m, per contact (edge_left, wall_right).
+        pub a: SVector<T, 2>,
+        /// Semi-minor axis b of the Hertz ellipse (10), m, per contact (edge_left, wall_right).
+        pub b: SVector<T, 2>,
+        /// Maximum Hertz pressure p₀ (11), Pa, per contact (edge_left, wall_right).
+        pub p0: SVector<T, 2>,
+    }
     /// Per contact (edge_left, wall_right): normal force f (N), friction force along the tangent (N), penetration delta (m), sliding velocity (m/s), contact ellipse a, b (m) and maximum pressure p0 (Pa) ((9)-(11)).
     ///
     /// # Inputs
@@ -557,6 +577,7 @@ pub mod compliant_peg_lean {
     /// - `p` = (`m`, `J`, `r`, `l_c`, `D`, `rho_p`, `rho_h`, `mu`, `v_s`, `k_edge`, `k_wall`, `f1`, `f2`, `M`, `e_star`, `edge_sum`, `edge_ma`, `edge_mb`, `edge_dstar`, `wall_sum`, `wall_ma`, `wall_mb`, `wall_dstar`, `hc_alpha`)
     ///
     /// # Outputs
+    /// The fields of [`ContactsOut`]:
     /// - `normal`: vector of 2
     /// - `friction`: vector of 2
     /// - `delta`: vector of 2
@@ -568,18 +589,7 @@ pub mod compliant_peg_lean {
     /// # Cost
     /// 32 add/sub, 64 mul, 6 div, 2 sqrt, 6 transcendental, 4 branches; 32 `let`s.
     #[inline]
-    pub fn contacts<T: Real>(
-        y: &SVector<T, 8>,
-        p: &SVector<T, 24>,
-    ) -> (
-        SVector<T, 2>,
-        SVector<T, 2>,
-        SVector<T, 2>,
-        SVector<T, 2>,
-        SVector<T, 2>,
-        SVector<T, 2>,
-        SVector<T, 2>,
-    ) {
+    pub fn contacts<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> ContactsOut<T> {
         let x = y[0];
         let z = y[1];
         let theta = y[2];
@@ -640,23 +650,26 @@ pub mod compliant_peg_lean {
         let normal_wall_right = k_wall * t14 * t13;
         let t18 = (T::from_f64(1.5) * normal_edge_left / (e_star * edge_sum)).cbrt();
         let t19 = (T::from_f64(1.5) * normal_wall_right / (e_star * wall_sum)).cbrt();
-        let normal = Vector2::new(normal_edge_left, normal_wall_right);
-        let friction = Vector2::new(
-            -normal_edge_left * mu * slip_edge_left / t17,
-            -normal_wall_right * mu * slip_wall_right / t12,
-        );
-        let delta = Vector2::new(delta_edge_left, delta_wall_right);
-        let slip = Vector2::new(slip_edge_left, slip_wall_right);
-        let a = Vector2::new(edge_ma * t18, wall_ma * t19);
-        let b = Vector2::new(edge_mb * t18, wall_mb * t19);
-        let p0 = Vector2::new(
-            T::from_f64(0.3183098861837907) * e_star * edge_sum * t18
-                / (edge_ma * edge_mb),
-            T::from_f64(0.3183098861837907) * e_star * wall_sum * t19
-                / (wall_ma * wall_mb),
-        );
-        (normal, friction, delta, slip, a, b, p0)
+        ContactsOut {
+            normal: Vector2::new(normal_edge_left, normal_wall_right),
+            friction: Vector2::new(
+                -normal_edge_left * mu * slip_edge_left / t17,
+                -normal_wall_right * mu * slip_wall_right / t12,
+            ),
+            delta: Vector2::new(delta_edge_left, delta_wall_right),
+            slip: Vector2::new(slip_edge_left, slip_wall_right),
+            a: Vector2::new(edge_ma * t18, wall_ma * t19),
+            b: Vector2::new(edge_mb * t18, wall_mb * t19),
+            p0: Vector2::new(
+                T::from_f64(0.3183098861837907) * e_star * edge_sum * t18
+                    / (edge_ma * edge_mb),
+                T::from_f64(0.3183098861837907) * e_star * wall_sum * t19
+                    / (wall_ma * wall_mb),
+            ),
+        }
     }
+    /// The outputs' struct, shared with `compliant_peg` (same fields).
+    pub use super::compliant_peg::EnergyOut;
     /// Kinetic energy (59) (J), contact potential (63) (J) and insertion depth of the bottom face (m).
     ///
     /// # Inputs
@@ -664,6 +677,7 @@ pub mod compliant_peg_lean {
     /// - `p` = (`m`, `J`, `r`, `l_c`, `D`, `rho_p`, `rho_h`, `mu`, `v_s`, `k_edge`, `k_wall`, `f1`, `f2`, `M`, `e_star`, `edge_sum`, `edge_ma`, `edge_mb`, `edge_dstar`, `wall_sum`, `wall_ma`, `wall_mb`, `wall_dstar`, `hc_alpha`)
     ///
     /// # Outputs
+    /// The fields of [`EnergyOut`]:
     /// - `kinetic`: scalar
     /// - `potential`: scalar
     /// - `depth`: scalar
@@ -671,7 +685,7 @@ pub mod compliant_peg_lean {
     /// # Cost
     /// 17 add/sub, 19 mul, 0 div, 0 sqrt, 4 transcendental, 2 branches; 11 `let`s.
     #[inline]
-    pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> (T, T, T) {
+    pub fn energy<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> EnergyOut<T> {
         let x = y[0];
         let z = y[1];
         let theta = y[2];
@@ -699,10 +713,11 @@ pub mod compliant_peg_lean {
         let pen_wall_right = delta_wall_right.max0();
         let t3 = pen_edge_left.powf(T::from_f64(2.5));
         let t4 = pen_wall_right.powf(T::from_f64(2.5));
-        let kinetic = T::from_f64(0.5)
-            * (m * (xdot * xdot + zdot * zdot) + j * (thetadot * thetadot));
-        let potential = T::from_f64(0.4) * (k_edge * t3 + k_wall * t4);
-        let depth = z + l_c * cos_theta;
-        (kinetic, potential, depth)
+        EnergyOut {
+            kinetic: T::from_f64(0.5)
+                * (m * (xdot * xdot + zdot * zdot) + j * (thetadot * thetadot)),
+            potential: T::from_f64(0.4) * (k_edge * t3 + k_wall * t4),
+            depth: z + l_c * cos_theta,
+        }
     }
 }

@@ -13,6 +13,56 @@ pub mod double_pendulum {
     pub const P_NAMES: [&str; 5] = ["m1", "m2", "l1", "l2", "g"];
     /// Symbol names of the components of `qdd`, in order.
     pub const QDD_NAMES: [&str; 2] = ["theta1ddot", "theta2ddot"];
+    /// The parameters of `double_pendulum`: the input `p` of its functions as a struct, one field per component in vector order (`From`/`Into` convert both ways).
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct Params<T> {
+        /// Mass of the upper bob, kg.
+        pub m1: T,
+        /// Mass of the lower bob, kg.
+        pub m2: T,
+        /// Length of the upper rod, m.
+        pub l1: T,
+        /// Length of the lower rod, m.
+        pub l2: T,
+        /// Gravitational acceleration, m/s².
+        pub g: T,
+    }
+    impl<T> Params<T> {
+        /// The field names in vector order: the symbol names of `p` ([`P_NAMES`]).
+        pub const NAMES: [&'static str; 5] = P_NAMES;
+    }
+    impl<T: Real> From<Params<T>> for SVector<T, 5> {
+        /// The `p` vector of these values, in field order.
+        fn from(v: Params<T>) -> SVector<T, 5> {
+            SVector::from([v.m1, v.m2, v.l1, v.l2, v.g])
+        }
+    }
+    impl<T: Real> From<&SVector<T, 5>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: &SVector<T, 5>) -> Params<T> {
+            Params {
+                m1: v[0],
+                m2: v[1],
+                l1: v[2],
+                l2: v[3],
+                g: v[4],
+            }
+        }
+    }
+    impl<T: Real> From<SVector<T, 5>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: SVector<T, 5>) -> Params<T> {
+            Params::from(&v)
+        }
+    }
+    /// The outputs of [`dynamics`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct DynamicsOut<T: Real> {
+        /// Mass matrix M(q), symmetric.
+        pub mass: SMatrix<T, 2, 2>,
+        /// Forcing f(q, q̇) of M q̈ = f.
+        pub forcing: SVector<T, 2>,
+    }
     /// Mass matrix M(q) and forcing f(q, q̇) of M q̈ = f (Lagrange's equations, derived symbolically).
     ///
     /// Reference: Goldstein, Classical Mechanics, §1.6 (double pendulum). Units: SI.
@@ -22,16 +72,14 @@ pub mod double_pendulum {
     /// - `p` = (`m1`, `m2`, `l1`, `l2`, `g`)
     ///
     /// # Outputs
+    /// The fields of [`DynamicsOut`]:
     /// - `mass`: symmetric 2×2 matrix
     /// - `forcing`: vector of 2
     ///
     /// # Cost
     /// 4 add/sub, 18 mul, 0 div, 0 sqrt, 3 transcendental, 0 branches; 8 `let`s.
     #[inline]
-    pub fn dynamics<T: Real>(
-        x: &SVector<T, 4>,
-        p: &SVector<T, 5>,
-    ) -> (SMatrix<T, 2, 2>, SVector<T, 2>) {
+    pub fn dynamics<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 5>) -> DynamicsOut<T> {
         let theta1 = x[0];
         let theta2 = x[1];
         let theta1dot = x[2];
@@ -48,12 +96,13 @@ pub mod double_pendulum {
         let t3 = m1 + m2;
         let t4 = m2 * l2;
         let t5 = t4 * l1 * t2;
-        let mass = Matrix2::new(l1 * l1 * t3, t5, t5, m2 * (l2 * l2));
-        let forcing = Vector2::new(
-            -(l1 * (g * sin_theta1 * t3 + t4 * (theta2dot * theta2dot) * t1)),
-            t4 * (l1 * (theta1dot * theta1dot) * t1 - g * sin_theta2),
-        );
-        (mass, forcing)
+        DynamicsOut {
+            mass: Matrix2::new(l1 * l1 * t3, t5, t5, m2 * (l2 * l2)),
+            forcing: Vector2::new(
+                -(l1 * (g * sin_theta1 * t3 + t4 * (theta2dot * theta2dot) * t1)),
+                t4 * (l1 * (theta1dot * theta1dot) * t1 - g * sin_theta2),
+            ),
+        }
     }
     /// First-order right-hand side ẋ = (q̇, M⁻¹f), M⁻¹f by Cramer's rule.
     ///

@@ -12,6 +12,50 @@ pub mod pendulum {
     pub const P_NAMES: [&str; 3] = ["m", "l", "g"];
     /// Symbol names of the components of `qdd`, in order.
     pub const QDD_NAMES: [&str; 1] = ["thetaddot"];
+    /// The parameters of `pendulum`: the input `p` of its functions as a struct, one field per component in vector order (`From`/`Into` convert both ways).
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct Params<T> {
+        /// Mass of the bob, kg.
+        pub m: T,
+        /// Length of the rod, m.
+        pub l: T,
+        /// Gravitational acceleration, m/s².
+        pub g: T,
+    }
+    impl<T> Params<T> {
+        /// The field names in vector order: the symbol names of `p` ([`P_NAMES`]).
+        pub const NAMES: [&'static str; 3] = P_NAMES;
+    }
+    impl<T: Real> From<Params<T>> for SVector<T, 3> {
+        /// The `p` vector of these values, in field order.
+        fn from(v: Params<T>) -> SVector<T, 3> {
+            SVector::from([v.m, v.l, v.g])
+        }
+    }
+    impl<T: Real> From<&SVector<T, 3>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: &SVector<T, 3>) -> Params<T> {
+            Params {
+                m: v[0],
+                l: v[1],
+                g: v[2],
+            }
+        }
+    }
+    impl<T: Real> From<SVector<T, 3>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: SVector<T, 3>) -> Params<T> {
+            Params::from(&v)
+        }
+    }
+    /// The outputs of [`dynamics`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct DynamicsOut<T: Real> {
+        /// Mass matrix M(q), symmetric.
+        pub mass: SMatrix<T, 1, 1>,
+        /// Forcing f(q, q̇) of M q̈ = f.
+        pub forcing: SVector<T, 1>,
+    }
     /// Mass matrix M(q) and forcing f(q, q̇) of M q̈ = f (Lagrange's equations, derived symbolically).
     ///
     /// Reference: Goldstein, Classical Mechanics, §1.6. Units: SI.
@@ -21,24 +65,23 @@ pub mod pendulum {
     /// - `p` = (`m`, `l`, `g`)
     ///
     /// # Outputs
+    /// The fields of [`DynamicsOut`]:
     /// - `mass`: symmetric 1×1 matrix
     /// - `forcing`: vector of 1
     ///
     /// # Cost
     /// 0 add/sub, 5 mul, 0 div, 0 sqrt, 1 transcendental, 0 branches; 1 `let`s.
     #[inline]
-    pub fn dynamics<T: Real>(
-        x: &SVector<T, 2>,
-        p: &SVector<T, 3>,
-    ) -> (SMatrix<T, 1, 1>, SVector<T, 1>) {
+    pub fn dynamics<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 3>) -> DynamicsOut<T> {
         let theta = x[0];
         let m = p[0];
         let l = p[1];
         let g = p[2];
         let sin_theta = theta.sin();
-        let mass = Matrix1::new(m * (l * l));
-        let forcing = Vector1::new(-m * l * g * sin_theta);
-        (mass, forcing)
+        DynamicsOut {
+            mass: Matrix1::new(m * (l * l)),
+            forcing: Vector1::new(-m * l * g * sin_theta),
+        }
     }
     /// First-order right-hand side ẋ = (q̇, M⁻¹f), M⁻¹f by Cramer's rule.
     ///

@@ -17,6 +17,89 @@ pub mod quasi_static {
     pub const W_NAMES: [&str; 2] = ["fx", "fz"];
     /// Symbol names of the components of `q`, in order.
     pub const Q_NAMES: [&str; 2] = ["mu", "r"];
+    /// The parameters of `quasi_static`: the input `p` of its functions as a struct, one field per component in vector order (`From`/`Into` convert both ways).
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    #[allow(non_snake_case)]
+    pub struct Params<T> {
+        /// Coulomb friction coefficient, dimensionless.
+        pub mu: T,
+        /// Peg radius, m.
+        pub r: T,
+        /// Distance from the centre of mass to the tip face, m.
+        pub l_c: T,
+        /// Mass of the peg, kg.
+        pub m: T,
+        /// Moment of inertia about the centre of mass, kg·m².
+        pub J: T,
+    }
+    impl<T> Params<T> {
+        /// The field names in vector order: the symbol names of `p` ([`P_NAMES`]).
+        pub const NAMES: [&'static str; 5] = P_NAMES;
+    }
+    impl<T: Real> From<Params<T>> for SVector<T, 5> {
+        /// The `p` vector of these values, in field order.
+        fn from(v: Params<T>) -> SVector<T, 5> {
+            SVector::from([v.mu, v.r, v.l_c, v.m, v.J])
+        }
+    }
+    impl<T: Real> From<&SVector<T, 5>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: &SVector<T, 5>) -> Params<T> {
+            Params {
+                mu: v[0],
+                r: v[1],
+                l_c: v[2],
+                m: v[3],
+                J: v[4],
+            }
+        }
+    }
+    impl<T: Real> From<SVector<T, 5>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: SVector<T, 5>) -> Params<T> {
+            Params::from(&v)
+        }
+    }
+    /// The parameters of Whitney's tip equilibrium ([`whitney_tip`]): friction and radius.
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct WhitneyParams<T> {
+        /// Coulomb friction coefficient, dimensionless.
+        pub mu: T,
+        /// Peg radius, m.
+        pub r: T,
+    }
+    impl<T> WhitneyParams<T> {
+        /// The field names in vector order: the symbol names of `q` ([`Q_NAMES`]).
+        pub const NAMES: [&'static str; 2] = Q_NAMES;
+    }
+    impl<T: Real> From<WhitneyParams<T>> for SVector<T, 2> {
+        /// The `q` vector of these values, in field order.
+        fn from(v: WhitneyParams<T>) -> SVector<T, 2> {
+            SVector::from([v.mu, v.r])
+        }
+    }
+    impl<T: Real> From<&SVector<T, 2>> for WhitneyParams<T> {
+        /// The fields of a `q` vector, in field order.
+        fn from(v: &SVector<T, 2>) -> WhitneyParams<T> {
+            WhitneyParams { mu: v[0], r: v[1] }
+        }
+    }
+    impl<T: Real> From<SVector<T, 2>> for WhitneyParams<T> {
+        /// The fields of a `q` vector, in field order.
+        fn from(v: SVector<T, 2>) -> WhitneyParams<T> {
+            WhitneyParams::from(&v)
+        }
+    }
+    /// The outputs of [`two_point`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct TwoPointOut<T: Real> {
+        /// Normal force f_A at the hole's edge A, N.
+        pub f_a: T,
+        /// Normal force f_B at the peg's tip corner B, N.
+        pub f_b: T,
+        /// Input moment about the centre of mass C, N·m.
+        pub moment: T,
+    }
     /// Eq. 52: edge force f_a (N), tip force f_b (N) and input moment about C (N m) for two-point sliding contact with the given accelerations.
     ///
     /// # Inputs
@@ -26,6 +109,7 @@ pub mod quasi_static {
     /// - `p` = (`mu`, `r`, `l_c`, `m`, `J`)
     ///
     /// # Outputs
+    /// The fields of [`TwoPointOut`]:
     /// - `f_a`: scalar
     /// - `f_b`: scalar
     /// - `moment`: scalar
@@ -38,7 +122,7 @@ pub mod quasi_static {
         load: &SVector<T, 2>,
         acc: &SVector<T, 3>,
         p: &SVector<T, 5>,
-    ) -> (T, T, T) {
+    ) -> TwoPointOut<T> {
         let theta = pose[0];
         let l = pose[1];
         let f1 = load[0];
@@ -61,11 +145,19 @@ pub mod quasi_static {
         let t6 = t0 + t1 + t2 + mu * t5;
         let t7 = t4 * (t0 + t1 + t2) + t3 * t5;
         let t8 = T::from_f64(1.0) / (mu * (cos_theta - t4) + sin_theta);
-        let f_a = -t6 * t8;
-        let f_b = t8 * t7;
-        let moment = thdd * j
-            - t8 * (t6 * (-l_c + mu * r + l) + t7 * (r * t3 + l_c * t4));
-        (f_a, f_b, moment)
+        TwoPointOut {
+            f_a: -t6 * t8,
+            f_b: t8 * t7,
+            moment: thdd * j - t8 * (t6 * (-l_c + mu * r + l) + t7 * (r * t3 + l_c * t4)),
+        }
+    }
+    /// The outputs of [`edge_only`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct EdgeOnlyOut<T: Real> {
+        /// Normal force f_A at the hole's edge A, N.
+        pub f_a: T,
+        /// Input moment about the centre of mass C, N·m.
+        pub moment: T,
     }
     /// Eq. 53 (signs corrected): edge force f_a (N) from the normal balance and input moment about C (N m), one-point contact at the edge A.
     ///
@@ -76,6 +168,7 @@ pub mod quasi_static {
     /// - `p` = (`mu`, `r`, `l_c`, `m`, `J`)
     ///
     /// # Outputs
+    /// The fields of [`EdgeOnlyOut`]:
     /// - `f_a`: scalar
     /// - `moment`: scalar
     ///
@@ -87,7 +180,7 @@ pub mod quasi_static {
         load: &SVector<T, 2>,
         acc: &SVector<T, 3>,
         p: &SVector<T, 5>,
-    ) -> (T, T) {
+    ) -> EdgeOnlyOut<T> {
         let theta = pose[0];
         let l = pose[1];
         let f2 = load[1];
@@ -101,9 +194,18 @@ pub mod quasi_static {
         let j = p[4];
         let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = f2 - m * (xdd * cos_theta - ydd * sin_theta);
-        let f_a = -t0;
-        let moment = thdd * j - (-l_c + mu * r + l) * t0;
-        (f_a, moment)
+        EdgeOnlyOut {
+            f_a: -t0,
+            moment: thdd * j - (-l_c + mu * r + l) * t0,
+        }
+    }
+    /// The outputs of [`tip_only`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct TipOnlyOut<T: Real> {
+        /// Normal force f_B at the peg's tip corner B, N.
+        pub f_b: T,
+        /// Input moment about the centre of mass C, N·m.
+        pub moment: T,
     }
     /// Eq. 54: tip force f_b (N) from the normal balance and input moment about C (N m), one-point contact at the tip corner B.
     ///
@@ -114,6 +216,7 @@ pub mod quasi_static {
     /// - `p` = (`mu`, `r`, `l_c`, `m`, `J`)
     ///
     /// # Outputs
+    /// The fields of [`TipOnlyOut`]:
     /// - `f_b`: scalar
     /// - `moment`: scalar
     ///
@@ -125,7 +228,7 @@ pub mod quasi_static {
         load: &SVector<T, 2>,
         acc: &SVector<T, 3>,
         p: &SVector<T, 5>,
-    ) -> (T, T) {
+    ) -> TipOnlyOut<T> {
         let theta = pose[0];
         let f1 = load[0];
         let f2 = load[1];
@@ -138,11 +241,22 @@ pub mod quasi_static {
         let j = p[4];
         let (sin_theta, cos_theta) = theta.sin_cos();
         let t0 = f1 * sin_theta + f2 * cos_theta - xdd * m;
-        let f_b = t0;
-        let moment = thdd * j
-            - (r * (sin_theta + mu * cos_theta) + l_c * (mu * sin_theta - cos_theta))
-                * t0;
-        (f_b, moment)
+        TipOnlyOut {
+            f_b: t0,
+            moment: thdd * j
+                - (r * (sin_theta + mu * cos_theta) + l_c * (mu * sin_theta - cos_theta))
+                    * t0,
+        }
+    }
+    /// The outputs of [`whitney_tip`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct WhitneyTipOut<T: Real> {
+        /// Normal force at the peg's tip, N.
+        pub f_tip: T,
+        /// Normal force at the hole's edge, N.
+        pub f_edge: T,
+        /// Moment about the tip holding the peg, N·m.
+        pub moment: T,
     }
     /// Whitney's frame (x lateral, z into the hole, moment about the tip): tip force f_tip (N), edge force f_edge (N) and the moment M (N m) holding the peg in two-point sliding under applied (F_x, F_z) (N); pose = (theta rad, l m), w = (F_x, F_z), q = (mu, r m).
     ///
@@ -152,6 +266,7 @@ pub mod quasi_static {
     /// - `q` = (`mu`, `r`)
     ///
     /// # Outputs
+    /// The fields of [`WhitneyTipOut`]:
     /// - `f_tip`: scalar
     /// - `f_edge`: scalar
     /// - `moment`: scalar
@@ -163,7 +278,7 @@ pub mod quasi_static {
         pose: &SVector<T, 2>,
         w: &SVector<T, 2>,
         q: &SVector<T, 2>,
-    ) -> (T, T, T) {
+    ) -> WhitneyTipOut<T> {
         let theta = pose[0];
         let l = pose[1];
         let fx = w[0];
@@ -176,9 +291,10 @@ pub mod quasi_static {
         let t2 = t0 * fx + fz * t1;
         let t3 = fz + mu * fx;
         let t4 = T::from_f64(1.0) / (mu * (cos_theta - t1) + sin_theta);
-        let f_tip = -t2 * t4;
-        let f_edge = t4 * t3;
-        let moment = t4 * (t2 * r * t0 + t3 * (mu * r + l));
-        (f_tip, f_edge, moment)
+        WhitneyTipOut {
+            f_tip: -t2 * t4,
+            f_edge: t4 * t3,
+            moment: t4 * (t2 * r * t0 + t3 * (mu * r + l)),
+        }
     }
 }

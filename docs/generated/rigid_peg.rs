@@ -27,6 +27,210 @@ pub mod rigid_peg {
     ];
     /// Symbol names of the components of `qdd`, in order.
     pub const QDD_NAMES: [&str; 2] = ["gammaddot", "psiddot"];
+    /// The parameters of `rigid_peg`: the input `p` of its functions as a struct, one field per component in vector order (`From`/`Into` convert both ways).
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    #[allow(non_snake_case)]
+    pub struct Params<T> {
+        /// Hole diameter D, m.
+        pub D_hole: T,
+        /// Peg diameter d, m.
+        pub d_peg: T,
+        /// Peg height H, m.
+        pub H: T,
+        /// Mass m of the peg, kg.
+        pub m: T,
+        /// Gravitational acceleration g (along −z), m/s².
+        pub g: T,
+        /// Coulomb friction coefficient f, dimensionless.
+        pub f: T,
+        /// Γ0 = arccos(d/D), the tilt where the three-point contact begins (consistent with D and d), rad.
+        pub gamma0: T,
+    }
+    impl<T> Params<T> {
+        /// The field names in vector order: the symbol names of `p` ([`P_NAMES`]).
+        pub const NAMES: [&'static str; 7] = P_NAMES;
+    }
+    impl<T: Real> From<Params<T>> for SVector<T, 7> {
+        /// The `p` vector of these values, in field order.
+        fn from(v: Params<T>) -> SVector<T, 7> {
+            SVector::from([v.D_hole, v.d_peg, v.H, v.m, v.g, v.f, v.gamma0])
+        }
+    }
+    impl<T: Real> From<&SVector<T, 7>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: &SVector<T, 7>) -> Params<T> {
+            Params {
+                D_hole: v[0],
+                d_peg: v[1],
+                H: v[2],
+                m: v[3],
+                g: v[4],
+                f: v[5],
+                gamma0: v[6],
+            }
+        }
+    }
+    impl<T: Real> From<SVector<T, 7>> for Params<T> {
+        /// The fields of a `p` vector, in field order.
+        fn from(v: SVector<T, 7>) -> Params<T> {
+            Params::from(&v)
+        }
+    }
+    /// The state x = (γ, ψ, γ̇, ψ̇).
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct State<T> {
+        /// Nutation angle γ between the peg's axis and the hole's axis, rad.
+        pub gamma: T,
+        /// Precession angle ψ of the symmetry plane about the hole's axis, rad.
+        pub psi: T,
+        /// Nutation rate γ̇, rad/s.
+        pub gammadot: T,
+        /// Precession rate ψ̇, rad/s.
+        pub psidot: T,
+    }
+    impl<T> State<T> {
+        /// The field names in vector order: the symbol names of `x` ([`X_NAMES`]).
+        pub const NAMES: [&'static str; 4] = X_NAMES;
+    }
+    impl<T: Real> From<State<T>> for SVector<T, 4> {
+        /// The `x` vector of these values, in field order.
+        fn from(v: State<T>) -> SVector<T, 4> {
+            SVector::from([v.gamma, v.psi, v.gammadot, v.psidot])
+        }
+    }
+    impl<T: Real> From<&SVector<T, 4>> for State<T> {
+        /// The fields of a `x` vector, in field order.
+        fn from(v: &SVector<T, 4>) -> State<T> {
+            State {
+                gamma: v[0],
+                psi: v[1],
+                gammadot: v[2],
+                psidot: v[3],
+            }
+        }
+    }
+    impl<T: Real> From<SVector<T, 4>> for State<T> {
+        /// The fields of a `x` vector, in field order.
+        fn from(v: SVector<T, 4>) -> State<T> {
+            State::from(&v)
+        }
+    }
+    /// The applied loads: the moments conjugate to γ and ψ and the assembly force at the centre of mass in fixed-frame components.
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    #[allow(non_snake_case)]
+    pub struct Loads<T> {
+        /// Generalized moment M_γ conjugate to γ, N·m.
+        pub M_gamma: T,
+        /// Moment M_ψ about the hole's axis, conjugate to ψ, N·m.
+        pub M_psi: T,
+        /// Assembly force at the centre of mass, fixed-frame x component, N.
+        pub F_x: T,
+        /// Assembly force at the centre of mass, fixed-frame y component, N.
+        pub F_y: T,
+        /// Assembly force at the centre of mass, fixed-frame z component, N.
+        pub F_z: T,
+    }
+    impl<T> Loads<T> {
+        /// The field names in vector order: the symbol names of `loads` ([`LOADS_NAMES`]).
+        pub const NAMES: [&'static str; 5] = LOADS_NAMES;
+    }
+    impl<T: Real> From<Loads<T>> for SVector<T, 5> {
+        /// The `loads` vector of these values, in field order.
+        fn from(v: Loads<T>) -> SVector<T, 5> {
+            SVector::from([v.M_gamma, v.M_psi, v.F_x, v.F_y, v.F_z])
+        }
+    }
+    impl<T: Real> From<&SVector<T, 5>> for Loads<T> {
+        /// The fields of a `loads` vector, in field order.
+        fn from(v: &SVector<T, 5>) -> Loads<T> {
+            Loads {
+                M_gamma: v[0],
+                M_psi: v[1],
+                F_x: v[2],
+                F_y: v[3],
+                F_z: v[4],
+            }
+        }
+    }
+    impl<T: Real> From<SVector<T, 5>> for Loads<T> {
+        /// The fields of a `loads` vector, in field order.
+        fn from(v: SVector<T, 5>) -> Loads<T> {
+            Loads::from(&v)
+        }
+    }
+    /// The friction direction at each contact (unit or shorter, force on the peg) in rotating components (e_η, e_n, e_z).
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    #[allow(non_snake_case)]
+    pub struct FrictionDirections<T> {
+        /// Friction direction at K, e_η component (unit or shorter, force on the peg), dimensionless.
+        pub t_K_eta: T,
+        /// Friction direction at K, e_n component (unit or shorter, force on the peg), dimensionless.
+        pub t_K_n: T,
+        /// Friction direction at K, e_z component (unit or shorter, force on the peg), dimensionless.
+        pub t_K_z: T,
+        /// Friction direction at B1, e_η component (unit or shorter, force on the peg), dimensionless.
+        pub t_B1_eta: T,
+        /// Friction direction at B1, e_n component (unit or shorter, force on the peg), dimensionless.
+        pub t_B1_n: T,
+        /// Friction direction at B1, e_z component (unit or shorter, force on the peg), dimensionless.
+        pub t_B1_z: T,
+        /// Friction direction at B2, e_η component (unit or shorter, force on the peg), dimensionless.
+        pub t_B2_eta: T,
+        /// Friction direction at B2, e_n component (unit or shorter, force on the peg), dimensionless.
+        pub t_B2_n: T,
+        /// Friction direction at B2, e_z component (unit or shorter, force on the peg), dimensionless.
+        pub t_B2_z: T,
+    }
+    impl<T> FrictionDirections<T> {
+        /// The field names in vector order: the symbol names of `t` ([`T_NAMES`]).
+        pub const NAMES: [&'static str; 9] = T_NAMES;
+    }
+    impl<T: Real> From<FrictionDirections<T>> for SVector<T, 9> {
+        /// The `t` vector of these values, in field order.
+        fn from(v: FrictionDirections<T>) -> SVector<T, 9> {
+            SVector::from([
+                v.t_K_eta,
+                v.t_K_n,
+                v.t_K_z,
+                v.t_B1_eta,
+                v.t_B1_n,
+                v.t_B1_z,
+                v.t_B2_eta,
+                v.t_B2_n,
+                v.t_B2_z,
+            ])
+        }
+    }
+    impl<T: Real> From<&SVector<T, 9>> for FrictionDirections<T> {
+        /// The fields of a `t` vector, in field order.
+        fn from(v: &SVector<T, 9>) -> FrictionDirections<T> {
+            FrictionDirections {
+                t_K_eta: v[0],
+                t_K_n: v[1],
+                t_K_z: v[2],
+                t_B1_eta: v[3],
+                t_B1_n: v[4],
+                t_B1_z: v[5],
+                t_B2_eta: v[6],
+                t_B2_n: v[7],
+                t_B2_z: v[8],
+            }
+        }
+    }
+    impl<T: Real> From<SVector<T, 9>> for FrictionDirections<T> {
+        /// The fields of a `t` vector, in field order.
+        fn from(v: SVector<T, 9>) -> FrictionDirections<T> {
+            FrictionDirections::from(&v)
+        }
+    }
+    /// A linear system A u = b for the unknowns u (see the function returning it).
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct LinearSystem<T: Real> {
+        /// The matrix A = ∂R/∂u.
+        pub a: SMatrix<T, 5, 5>,
+        /// The right-hand side b = −R at u = 0.
+        pub b: SVector<T, 5>,
+    }
     /// Forward dynamics (replaces paper (24)–(31)): A u = b for u = (`gammaddot`, `psiddot`, `N_K`, `N_B1`, `N_B2`) (rad/s², N), the applied loads and friction directions given.
     /// Rows: the Lagrange equations of γ and ψ (paper (26), (27)), then the centre-of-mass equations (28)–(31) along e_η, e_n, e_z (the fixed-frame (29)–(31) rotated by −ψ).
     /// A = ∂R/∂u, b = −R at u = 0, R the residual derived from T, V and the generalized forces.
@@ -38,6 +242,7 @@ pub mod rigid_peg {
     /// - `t` = (`t_K_eta`, `t_K_n`, `t_K_z`, `t_B1_eta`, `t_B1_n`, `t_B1_z`, `t_B2_eta`, `t_B2_n`, `t_B2_z`)
     ///
     /// # Outputs
+    /// The fields of [`LinearSystem`]:
     /// - `a`: 5×5 matrix
     /// - `b`: vector of 5
     ///
@@ -49,7 +254,7 @@ pub mod rigid_peg {
         p: &SVector<T, 7>,
         loads: &SVector<T, 5>,
         t: &SVector<T, 9>,
-    ) -> (SMatrix<T, 5, 5>, SVector<T, 5>) {
+    ) -> LinearSystem<T> {
         let gamma = x[0];
         let psi = x[1];
         let gammadot = x[2];
@@ -147,53 +352,56 @@ pub mod rigid_peg {
         let t39 = (d_hole + T::from_f64(2.0) * t36 - T::from_f64(2.0) * t17) * t38;
         let t40 = t25 - neg_a1;
         let twice_s1 = half_d + t36 + s1;
-        let a = Matrix5::new(
-            m * (t14 + t27 * t27 + t37 * t37),
-            T::from_f64(0.0),
-            -(f * (t_k_eta * t40 + t36 * t_k_z)),
-            -(f * (t_b1_eta * t40 + t_b1_z * twice_s1)),
-            -(f * (t_b2_eta * t40 + t_b2_z * twice_s1)),
-            T::from_f64(0.0),
-            m * (t2 * (T::from_f64(0.25) * t19 + t14) + T::from_f64(0.125) * t3 * t6),
-            T::from_f64(0.5) * t13 * d_hole,
-            f * (t_b1_eta * bb1 - s1 * t_b1_n),
-            -(f * (t_b2_eta * bb1 + s1 * t_b2_n)),
-            m * t27,
-            T::from_f64(0.0),
-            -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) - t34,
-            -(f * t_b2_eta) - t34,
-            T::from_f64(0.0),
-            -t17 * m,
-            -t13,
-            t35 - f * t_b1_n,
-            -(f * t_b2_n) - t35,
-            m * t37,
-            T::from_f64(0.0),
-            -(f * t_k_z) - sin_gamma,
-            t33 - f * t_b1_z,
-            t33 - f * t_b2_z,
-        );
-        let b = Vector5::new(
-            m_gamma
-                - m
-                    * (-(t5 * (t14 - T::from_f64(0.125) * t6) * t11)
-                        + T::from_f64(0.5)
-                            * (t4 * (T::from_f64(4.0) * t30 - T::from_f64(2.0) * t39)
-                                - (t4 * (T::from_f64(2.0) * t30 - t39)
-                                    + t5 * (T::from_f64(0.5) * t11 * t19 - t26))) + g * t37)
-                + t27 * (t8 + t9) + f_z * t37,
-            m_psi + t17 * (t12 + t10)
-                + t20
-                    * (t26
-                        - t11
-                            * (T::from_f64(0.5) * t19 - T::from_f64(0.25) * t6
-                                + T::from_f64(1.0 / 6.0) * t7)),
-            t8 + t9 - m * (t29 * t4 + t17 * t5),
-            -t12 - t10 - T::from_f64(2.0) * t20 * t27,
-            f_z - m * g + m * t4 * t38,
-        );
-        (a, b)
+        LinearSystem {
+            a: Matrix5::new(
+                m * (t14 + t27 * t27 + t37 * t37),
+                T::from_f64(0.0),
+                -(f * (t_k_eta * t40 + t36 * t_k_z)),
+                -(f * (t_b1_eta * t40 + t_b1_z * twice_s1)),
+                -(f * (t_b2_eta * t40 + t_b2_z * twice_s1)),
+                T::from_f64(0.0),
+                m
+                    * (t2 * (T::from_f64(0.25) * t19 + t14)
+                        + T::from_f64(0.125) * t3 * t6),
+                T::from_f64(0.5) * t13 * d_hole,
+                f * (t_b1_eta * bb1 - s1 * t_b1_n),
+                -(f * (t_b2_eta * bb1 + s1 * t_b2_n)),
+                m * t27,
+                T::from_f64(0.0),
+                -(f * t_k_eta) - cos_gamma,
+                -(f * t_b1_eta) - t34,
+                -(f * t_b2_eta) - t34,
+                T::from_f64(0.0),
+                -t17 * m,
+                -t13,
+                t35 - f * t_b1_n,
+                -(f * t_b2_n) - t35,
+                m * t37,
+                T::from_f64(0.0),
+                -(f * t_k_z) - sin_gamma,
+                t33 - f * t_b1_z,
+                t33 - f * t_b2_z,
+            ),
+            b: Vector5::new(
+                m_gamma
+                    - m
+                        * (-(t5 * (t14 - T::from_f64(0.125) * t6) * t11)
+                            + T::from_f64(0.5)
+                                * (t4 * (T::from_f64(4.0) * t30 - T::from_f64(2.0) * t39)
+                                    - (t4 * (T::from_f64(2.0) * t30 - t39)
+                                        + t5 * (T::from_f64(0.5) * t11 * t19 - t26))) + g * t37)
+                    + t27 * (t8 + t9) + f_z * t37,
+                m_psi + t17 * (t12 + t10)
+                    + t20
+                        * (t26
+                            - t11
+                                * (T::from_f64(0.5) * t19 - T::from_f64(0.25) * t6
+                                    + T::from_f64(1.0 / 6.0) * t7)),
+                t8 + t9 - m * (t29 * t4 + t17 * t5),
+                -t12 - t10 - T::from_f64(2.0) * t20 * t27,
+                f_z - m * g + m * t4 * t38,
+            ),
+        }
     }
     /// Prescribed motion (paper (26)–(31), Fig. 9): A u = b for u = (`M_gamma`, `M_psi`, `N_K`, `N_B1`, `N_B2`) (N·m, N) given q̈ (the moment components of `loads` are unused: they are the unknowns).
     /// Rows: the Lagrange equations of γ and ψ (paper (26), (27)), then the centre-of-mass equations (28)–(31) along e_η, e_n, e_z (the fixed-frame (29)–(31) rotated by −ψ).
@@ -206,6 +414,7 @@ pub mod rigid_peg {
     /// - `t` = (`t_K_eta`, `t_K_n`, `t_K_z`, `t_B1_eta`, `t_B1_n`, `t_B1_z`, `t_B2_eta`, `t_B2_n`, `t_B2_z`)
     ///
     /// # Outputs
+    /// The fields of [`LinearSystem`]:
     /// - `a`: 5×5 matrix
     /// - `b`: vector of 5
     ///
@@ -218,7 +427,7 @@ pub mod rigid_peg {
         p: &SVector<T, 7>,
         loads: &SVector<T, 5>,
         t: &SVector<T, 9>,
-    ) -> (SMatrix<T, 5, 5>, SVector<T, 5>) {
+    ) -> LinearSystem<T> {
         let gamma = x[0];
         let psi = x[1];
         let gammadot = x[2];
@@ -316,56 +525,57 @@ pub mod rigid_peg {
         let t39 = t24 - neg_a1;
         let twice_s1 = half_d + t35 + s1;
         let t40 = gammadot * psidot;
-        let a = Matrix5::new(
-            -T::from_f64(1.0),
-            T::from_f64(0.0),
-            -(f * (t_k_eta * t39 + t35 * t_k_z)),
-            -(f * (t_b1_eta * t39 + t_b1_z * twice_s1)),
-            -(f * (t_b2_eta * t39 + t_b2_z * twice_s1)),
-            T::from_f64(0.0),
-            -T::from_f64(1.0),
-            T::from_f64(0.5) * t13 * d_hole,
-            f * (t_b1_eta * bb1 - s1 * t_b1_n),
-            -(f * (t_b2_eta * bb1 + s1 * t_b2_n)),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            -(f * t_k_eta) - cos_gamma,
-            -(f * t_b1_eta) - t33,
-            -(f * t_b2_eta) - t33,
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            -t13,
-            t34 - f * t_b1_n,
-            -(f * t_b2_n) - t34,
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            -(f * t_k_z) - sin_gamma,
-            t32 - f * t_b1_z,
-            t32 - f * t_b2_z,
-        );
-        let b = Vector5::new(
-            -(m
-                * (t5 * (T::from_f64(0.125) * t6 - t14) * t11
-                    + T::from_f64(0.5)
-                        * (t4 * (T::from_f64(4.0) * t29 - T::from_f64(2.0) * t38)
-                            - (t4 * (T::from_f64(2.0) * t29 - t38)
-                                + t5 * (T::from_f64(0.5) * t11 * t19 - t25))) + g * t36
-                    + gammaddot * (t14 + t26 * t26 + t36 * t36))) + t26 * (t8 + t9)
-                + f_z * t36,
-            m
-                * (t40
-                    * (t25
-                        - t11
-                            * (T::from_f64(0.5) * t19 - T::from_f64(0.25) * t6
-                                + T::from_f64(1.0 / 6.0) * t7))
-                    - psiddot
-                        * (t2 * (T::from_f64(0.25) * t19 + t14)
-                            + T::from_f64(0.125) * t3 * t6)) + t17 * (t12 + t10),
-            t8 + t9 - m * (t28 * t4 + gammaddot * t26 + t17 * t5),
-            -t12 - t10 - m * (T::from_f64(2.0) * t40 * t26 - t17 * psiddot),
-            f_z - m * g - m * (gammaddot * t36 - t4 * t37),
-        );
-        (a, b)
+        LinearSystem {
+            a: Matrix5::new(
+                -T::from_f64(1.0),
+                T::from_f64(0.0),
+                -(f * (t_k_eta * t39 + t35 * t_k_z)),
+                -(f * (t_b1_eta * t39 + t_b1_z * twice_s1)),
+                -(f * (t_b2_eta * t39 + t_b2_z * twice_s1)),
+                T::from_f64(0.0),
+                -T::from_f64(1.0),
+                T::from_f64(0.5) * t13 * d_hole,
+                f * (t_b1_eta * bb1 - s1 * t_b1_n),
+                -(f * (t_b2_eta * bb1 + s1 * t_b2_n)),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -(f * t_k_eta) - cos_gamma,
+                -(f * t_b1_eta) - t33,
+                -(f * t_b2_eta) - t33,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -t13,
+                t34 - f * t_b1_n,
+                -(f * t_b2_n) - t34,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -(f * t_k_z) - sin_gamma,
+                t32 - f * t_b1_z,
+                t32 - f * t_b2_z,
+            ),
+            b: Vector5::new(
+                -(m
+                    * (t5 * (T::from_f64(0.125) * t6 - t14) * t11
+                        + T::from_f64(0.5)
+                            * (t4 * (T::from_f64(4.0) * t29 - T::from_f64(2.0) * t38)
+                                - (t4 * (T::from_f64(2.0) * t29 - t38)
+                                    + t5 * (T::from_f64(0.5) * t11 * t19 - t25))) + g * t36
+                        + gammaddot * (t14 + t26 * t26 + t36 * t36))) + t26 * (t8 + t9)
+                    + f_z * t36,
+                m
+                    * (t40
+                        * (t25
+                            - t11
+                                * (T::from_f64(0.5) * t19 - T::from_f64(0.25) * t6
+                                    + T::from_f64(1.0 / 6.0) * t7))
+                        - psiddot
+                            * (t2 * (T::from_f64(0.25) * t19 + t14)
+                                + T::from_f64(0.125) * t3 * t6)) + t17 * (t12 + t10),
+                t8 + t9 - m * (t28 * t4 + gammaddot * t26 + t17 * t5),
+                -t12 - t10 - m * (T::from_f64(2.0) * t40 * t26 - t17 * psiddot),
+                f_z - m * g - m * (gammaddot * t36 - t4 * t37),
+            ),
+        }
     }
     /// Material velocity of the peg at K, B1, B2 (rows) in rotating components (e_η, e_n, e_z) (m/s); replaces paper (10)–(13). The friction directions are −v/|v|.
     ///
@@ -431,6 +641,14 @@ pub mod rigid_peg {
             t12,
         )
     }
+    /// The outputs of [`energy`].
+    #[derive(Clone, Copy, Debug, PartialEq)]
+    pub struct EnergyOut<T: Real> {
+        /// Kinetic energy T, J.
+        pub kinetic: T,
+        /// Total energy T + V, J.
+        pub total: T,
+    }
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
     ///
     /// # Inputs
@@ -438,13 +656,14 @@ pub mod rigid_peg {
     /// - `p` = (`D_hole`, `d_peg`, `H`, `m`, `g`, `f`, `gamma0`)
     ///
     /// # Outputs
+    /// The fields of [`EnergyOut`]:
     /// - `kinetic`: scalar
     /// - `total`: scalar
     ///
     /// # Cost
     /// 21 add/sub, 47 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
-    pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
+    pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> EnergyOut<T> {
         let gamma = x[0];
         let gammadot = x[2];
         let psidot = x[3];
@@ -483,9 +702,10 @@ pub mod rigid_peg {
         let t12 = T::from_f64(0.5)
             * (t1 * (t10 * t10 + t11 * t11)
                 + T::from_f64(0.25) * t4 * (twice_lever * twice_lever));
-        let kinetic = m * (t12 + t7 + t8);
-        let total = m * (t12 + t7 + t8 - g * (neg_half_delta * t0 + t5));
-        (kinetic, total)
+        EnergyOut {
+            kinetic: m * (t12 + t7 + t8),
+            total: m * (t12 + t7 + t8 - g * (neg_half_delta * t0 + t5)),
+        }
     }
     /// Planar geometry at γ (m): a1, a2 (paper (1)), S1, S2 (2), b = BB1, sin τ, cos τ, η_C, z_C (3), KL, BL (5), η_L, z_L (4b).
     ///

@@ -15,6 +15,14 @@ pub mod rigid_peg_frictionless {
     pub const LOADS_NAMES: [&str; 5] = ["M_gamma", "M_psi", "F_x", "F_y", "F_z"];
     /// Symbol names of the components of `qdd`, in order.
     pub const QDD_NAMES: [&str; 2] = ["gammaddot", "psiddot"];
+    /// The struct of `p`, shared with `rigid_peg` (same components).
+    pub use super::rigid_peg::Params;
+    /// The struct of `x`, shared with `rigid_peg` (same components).
+    pub use super::rigid_peg::State;
+    /// The struct of `loads`, shared with `rigid_peg` (same components).
+    pub use super::rigid_peg::Loads;
+    /// The outputs' struct, shared with `rigid_peg` (same fields).
+    pub use super::rigid_peg::LinearSystem;
     /// Forward dynamics (replaces paper (24)–(31)): A u = b for u = (`gammaddot`, `psiddot`, `N_K`, `N_B1`, `N_B2`) (rad/s², N), the applied loads and friction directions given.
     /// Rows: the Lagrange equations of γ and ψ (paper (26), (27)), then the centre-of-mass equations (28)–(31) along e_η, e_n, e_z (the fixed-frame (29)–(31) rotated by −ψ).
     /// A = ∂R/∂u, b = −R at u = 0, R the residual derived from T, V and the generalized forces.
@@ -25,6 +33,7 @@ pub mod rigid_peg_frictionless {
     /// - `loads` = (`M_gamma`, `M_psi`, `F_x`, `F_y`, `F_z`)
     ///
     /// # Outputs
+    /// The fields of [`LinearSystem`]:
     /// - `a`: 5×5 matrix
     /// - `b`: vector of 5
     ///
@@ -35,7 +44,7 @@ pub mod rigid_peg_frictionless {
         x: &SVector<T, 4>,
         p: &SVector<T, 7>,
         loads: &SVector<T, 5>,
-    ) -> (SMatrix<T, 5, 5>, SVector<T, 5>) {
+    ) -> LinearSystem<T> {
         let gamma = x[0];
         let psi = x[1];
         let gammadot = x[2];
@@ -118,53 +127,56 @@ pub mod rigid_peg_frictionless {
             * (t30 * (t1 + T::from_f64(2.0) * t17) + T::from_f64(0.5) * cos_gamma * t1)
             + cos_gamma * t27 - T::from_f64(2.0) * t24;
         let t38 = (d_hole + T::from_f64(2.0) * t35 - T::from_f64(2.0) * t16) * t37;
-        let a = Matrix5::new(
-            m * (t13 + t26 * t26 + t36 * t36),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            m * (t2 * (T::from_f64(0.25) * t18 + t13) + T::from_f64(0.125) * t3 * t6),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            m * t26,
-            T::from_f64(0.0),
-            -cos_gamma,
-            t33,
-            t33,
-            T::from_f64(0.0),
-            -t16 * m,
-            T::from_f64(0.0),
-            t34,
-            -t34,
-            m * t36,
-            T::from_f64(0.0),
-            -sin_gamma,
-            t32,
-            t32,
-        );
-        let b = Vector5::new(
-            m_gamma
-                - m
-                    * (-(t5 * (t13 - T::from_f64(0.125) * t6) * t11)
-                        + T::from_f64(0.5)
-                            * (t4 * (T::from_f64(4.0) * t29 - T::from_f64(2.0) * t38)
-                                - (t4 * (T::from_f64(2.0) * t29 - t38)
-                                    + t5 * (T::from_f64(0.5) * t11 * t18 - t25))) + g * t36)
-                + t26 * (t8 + t9) + f_z * t36,
-            m_psi + t16 * (t12 + t10)
-                + t19
-                    * (t25
-                        - t11
-                            * (T::from_f64(0.5) * t18 - T::from_f64(0.25) * t6
-                                + T::from_f64(1.0 / 6.0) * t7)),
-            t8 + t9 - m * (t28 * t4 + t16 * t5),
-            -t12 - t10 - T::from_f64(2.0) * t19 * t26,
-            f_z - m * g + m * t4 * t37,
-        );
-        (a, b)
+        LinearSystem {
+            a: Matrix5::new(
+                m * (t13 + t26 * t26 + t36 * t36),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                m
+                    * (t2 * (T::from_f64(0.25) * t18 + t13)
+                        + T::from_f64(0.125) * t3 * t6),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                m * t26,
+                T::from_f64(0.0),
+                -cos_gamma,
+                t33,
+                t33,
+                T::from_f64(0.0),
+                -t16 * m,
+                T::from_f64(0.0),
+                t34,
+                -t34,
+                m * t36,
+                T::from_f64(0.0),
+                -sin_gamma,
+                t32,
+                t32,
+            ),
+            b: Vector5::new(
+                m_gamma
+                    - m
+                        * (-(t5 * (t13 - T::from_f64(0.125) * t6) * t11)
+                            + T::from_f64(0.5)
+                                * (t4 * (T::from_f64(4.0) * t29 - T::from_f64(2.0) * t38)
+                                    - (t4 * (T::from_f64(2.0) * t29 - t38)
+                                        + t5 * (T::from_f64(0.5) * t11 * t18 - t25))) + g * t36)
+                    + t26 * (t8 + t9) + f_z * t36,
+                m_psi + t16 * (t12 + t10)
+                    + t19
+                        * (t25
+                            - t11
+                                * (T::from_f64(0.5) * t18 - T::from_f64(0.25) * t6
+                                    + T::from_f64(1.0 / 6.0) * t7)),
+                t8 + t9 - m * (t28 * t4 + t16 * t5),
+                -t12 - t10 - T::from_f64(2.0) * t19 * t26,
+                f_z - m * g + m * t4 * t37,
+            ),
+        }
     }
     /// Prescribed motion (paper (26)–(31), Fig. 9): A u = b for u = (`M_gamma`, `M_psi`, `N_K`, `N_B1`, `N_B2`) (N·m, N) given q̈ (the moment components of `loads` are unused: they are the unknowns).
     /// Rows: the Lagrange equations of γ and ψ (paper (26), (27)), then the centre-of-mass equations (28)–(31) along e_η, e_n, e_z (the fixed-frame (29)–(31) rotated by −ψ).
@@ -176,6 +188,7 @@ pub mod rigid_peg_frictionless {
     /// - `loads` = (`M_gamma`, `M_psi`, `F_x`, `F_y`, `F_z`)
     ///
     /// # Outputs
+    /// The fields of [`LinearSystem`]:
     /// - `a`: 5×5 matrix
     /// - `b`: vector of 5
     ///
@@ -187,7 +200,7 @@ pub mod rigid_peg_frictionless {
         qdd: &SVector<T, 2>,
         p: &SVector<T, 7>,
         loads: &SVector<T, 5>,
-    ) -> (SMatrix<T, 5, 5>, SVector<T, 5>) {
+    ) -> LinearSystem<T> {
         let gamma = x[0];
         let psi = x[1];
         let gammadot = x[2];
@@ -270,56 +283,57 @@ pub mod rigid_peg_frictionless {
             + cos_gamma * t26 - T::from_f64(2.0) * t23;
         let t37 = (d_hole + T::from_f64(2.0) * t34 - T::from_f64(2.0) * t16) * t36;
         let t38 = gammadot * psidot;
-        let a = Matrix5::new(
-            -T::from_f64(1.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            -T::from_f64(1.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            -cos_gamma,
-            t32,
-            t32,
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            t33,
-            -t33,
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            -sin_gamma,
-            t31,
-            t31,
-        );
-        let b = Vector5::new(
-            -(m
-                * (t5 * (T::from_f64(0.125) * t6 - t13) * t11
-                    + T::from_f64(0.5)
-                        * (t4 * (T::from_f64(4.0) * t28 - T::from_f64(2.0) * t37)
-                            - (t4 * (T::from_f64(2.0) * t28 - t37)
-                                + t5 * (T::from_f64(0.5) * t11 * t18 - t24))) + g * t35
-                    + gammaddot * (t13 + t25 * t25 + t35 * t35))) + t25 * (t8 + t9)
-                + f_z * t35,
-            m
-                * (t38
-                    * (t24
-                        - t11
-                            * (T::from_f64(0.5) * t18 - T::from_f64(0.25) * t6
-                                + T::from_f64(1.0 / 6.0) * t7))
-                    - psiddot
-                        * (t2 * (T::from_f64(0.25) * t18 + t13)
-                            + T::from_f64(0.125) * t3 * t6)) + t16 * (t12 + t10),
-            t8 + t9 - m * (t27 * t4 + gammaddot * t25 + t16 * t5),
-            -t12 - t10 - m * (T::from_f64(2.0) * t38 * t25 - t16 * psiddot),
-            f_z - m * g - m * (gammaddot * t35 - t4 * t36),
-        );
-        (a, b)
+        LinearSystem {
+            a: Matrix5::new(
+                -T::from_f64(1.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -T::from_f64(1.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -cos_gamma,
+                t32,
+                t32,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t33,
+                -t33,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -sin_gamma,
+                t31,
+                t31,
+            ),
+            b: Vector5::new(
+                -(m
+                    * (t5 * (T::from_f64(0.125) * t6 - t13) * t11
+                        + T::from_f64(0.5)
+                            * (t4 * (T::from_f64(4.0) * t28 - T::from_f64(2.0) * t37)
+                                - (t4 * (T::from_f64(2.0) * t28 - t37)
+                                    + t5 * (T::from_f64(0.5) * t11 * t18 - t24))) + g * t35
+                        + gammaddot * (t13 + t25 * t25 + t35 * t35))) + t25 * (t8 + t9)
+                    + f_z * t35,
+                m
+                    * (t38
+                        * (t24
+                            - t11
+                                * (T::from_f64(0.5) * t18 - T::from_f64(0.25) * t6
+                                    + T::from_f64(1.0 / 6.0) * t7))
+                        - psiddot
+                            * (t2 * (T::from_f64(0.25) * t18 + t13)
+                                + T::from_f64(0.125) * t3 * t6)) + t16 * (t12 + t10),
+                t8 + t9 - m * (t27 * t4 + gammaddot * t25 + t16 * t5),
+                -t12 - t10 - m * (T::from_f64(2.0) * t38 * t25 - t16 * psiddot),
+                f_z - m * g - m * (gammaddot * t35 - t4 * t36),
+            ),
+        }
     }
     /// Material velocity of the peg at K, B1, B2 (rows) in rotating components (e_η, e_n, e_z) (m/s); replaces paper (10)–(13). The friction directions are −v/|v|.
     ///
@@ -385,6 +399,8 @@ pub mod rigid_peg_frictionless {
             t12,
         )
     }
+    /// The outputs' struct, shared with `rigid_peg` (same fields).
+    pub use super::rigid_peg::EnergyOut;
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
     ///
     /// # Inputs
@@ -392,13 +408,14 @@ pub mod rigid_peg_frictionless {
     /// - `p` = (`D_hole`, `d_peg`, `H`, `m`, `g`, `f`, `gamma0`)
     ///
     /// # Outputs
+    /// The fields of [`EnergyOut`]:
     /// - `kinetic`: scalar
     /// - `total`: scalar
     ///
     /// # Cost
     /// 21 add/sub, 47 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 27 `let`s.
     #[inline]
-    pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> (T, T) {
+    pub fn energy<T: Real>(x: &SVector<T, 4>, p: &SVector<T, 7>) -> EnergyOut<T> {
         let gamma = x[0];
         let gammadot = x[2];
         let psidot = x[3];
@@ -437,8 +454,9 @@ pub mod rigid_peg_frictionless {
         let t12 = T::from_f64(0.5)
             * (t1 * (t10 * t10 + t11 * t11)
                 + T::from_f64(0.25) * t4 * (twice_lever * twice_lever));
-        let kinetic = m * (t12 + t7 + t8);
-        let total = m * (t12 + t7 + t8 - g * (neg_half_delta * t0 + t5));
-        (kinetic, total)
+        EnergyOut {
+            kinetic: m * (t12 + t7 + t8),
+            total: m * (t12 + t7 + t8 - g * (neg_half_delta * t0 + t5)),
+        }
     }
 }

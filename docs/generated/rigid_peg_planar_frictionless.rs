@@ -15,6 +15,14 @@ pub mod rigid_peg_planar_frictionless {
     pub const LOADS_NAMES: [&str; 3] = ["M_gamma", "F_x", "F_z"];
     /// Symbol names of the components of `qdd`, in order.
     pub const QDD_NAMES: [&str; 1] = ["gammaddot"];
+    /// The struct of `p`, shared with `rigid_peg` (same components).
+    pub use super::rigid_peg::Params;
+    /// The struct of `x`, shared with `rigid_peg_planar` (same components).
+    pub use super::rigid_peg_planar::State;
+    /// The struct of `loads`, shared with `rigid_peg_planar` (same components).
+    pub use super::rigid_peg_planar::Loads;
+    /// The outputs' struct, shared with `rigid_peg_planar` (same fields).
+    pub use super::rigid_peg_planar::LinearSystem;
     /// Forward dynamics (replaces paper (24)–(31)): A u = b for u = (`gammaddot`, `N_K`, `N_B`) (rad/s², N), the applied loads and friction directions given.
     /// Rows: the Lagrange equation of γ (paper (26)/(32)), then the centre-of-mass equations along e_η and e_z ((29), (31)/(33), (34)); the ψ row and the lateral row vanish identically.
     /// A = ∂R/∂u, b = −R at u = 0, R the residual derived from T, V and the generalized forces.
@@ -25,6 +33,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `loads` = (`M_gamma`, `F_x`, `F_z`)
     ///
     /// # Outputs
+    /// The fields of [`LinearSystem`]:
     /// - `a`: 3×3 matrix
     /// - `b`: vector of 3
     ///
@@ -35,7 +44,7 @@ pub mod rigid_peg_planar_frictionless {
         x: &SVector<T, 2>,
         p: &SVector<T, 7>,
         loads: &SVector<T, 3>,
-    ) -> (SMatrix<T, 3, 3>, SVector<T, 3>) {
+    ) -> LinearSystem<T> {
         let gamma = x[0];
         let gammadot = x[1];
         let d_hole = p[0];
@@ -87,31 +96,32 @@ pub mod rigid_peg_planar_frictionless {
             * (t15 * (t1 + T::from_f64(2.0) * t5) + T::from_f64(0.5) * cos_gamma * t1)
             + cos_gamma * t12 - T::from_f64(2.0) * t10;
         let t20 = (d_hole + T::from_f64(2.0) * t17 - T::from_f64(2.0) * t2) * t19;
-        let a = Matrix3::new(
-            m
-                * (T::from_f64(1.0 / 12.0)
-                    * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t11 * t11
-                    + t18 * t18),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            m * t11,
-            T::from_f64(2.0) * t0 - T::from_f64(1.0),
-            T::from_f64(2.0) * (t1 * (half_e + neg_half_delta * cos_gamma)) * t16,
-            m * t18,
-            -sin_gamma,
-            T::from_f64(2.0) * t16 * neg_half_delta,
-        );
-        let b = Vector3::new(
-            m_gamma
-                - m
-                    * (T::from_f64(0.5)
-                        * (T::from_f64(4.0) * t14 - T::from_f64(2.0) * t20
-                            - (T::from_f64(2.0) * t14 - t20)) * t3 + g * t18) + f_z * t18
-                + f_x * t11,
-            f_x - t6 * t13,
-            f_z - m * g + t6 * t19,
-        );
-        (a, b)
+        LinearSystem {
+            a: Matrix3::new(
+                m
+                    * (T::from_f64(1.0 / 12.0)
+                        * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t11 * t11
+                        + t18 * t18),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                m * t11,
+                T::from_f64(2.0) * t0 - T::from_f64(1.0),
+                T::from_f64(2.0) * (t1 * (half_e + neg_half_delta * cos_gamma)) * t16,
+                m * t18,
+                -sin_gamma,
+                T::from_f64(2.0) * t16 * neg_half_delta,
+            ),
+            b: Vector3::new(
+                m_gamma
+                    - m
+                        * (T::from_f64(0.5)
+                            * (T::from_f64(4.0) * t14 - T::from_f64(2.0) * t20
+                                - (T::from_f64(2.0) * t14 - t20)) * t3 + g * t18)
+                    + f_z * t18 + f_x * t11,
+                f_x - t6 * t13,
+                f_z - m * g + t6 * t19,
+            ),
+        }
     }
     /// Prescribed motion (paper (26)–(31), Fig. 9): A u = b for u = (`M_gamma`, `N_K`, `N_B`) (N·m, N) given q̈ (the moment components of `loads` are unused: they are the unknowns).
     /// Rows: the Lagrange equation of γ (paper (26)/(32)), then the centre-of-mass equations along e_η and e_z ((29), (31)/(33), (34)); the ψ row and the lateral row vanish identically.
@@ -123,6 +133,7 @@ pub mod rigid_peg_planar_frictionless {
     /// - `loads` = (`M_gamma`, `F_x`, `F_z`)
     ///
     /// # Outputs
+    /// The fields of [`LinearSystem`]:
     /// - `a`: 3×3 matrix
     /// - `b`: vector of 3
     ///
@@ -134,7 +145,7 @@ pub mod rigid_peg_planar_frictionless {
         qdd: &SVector<T, 1>,
         p: &SVector<T, 7>,
         loads: &SVector<T, 3>,
-    ) -> (SMatrix<T, 3, 3>, SVector<T, 3>) {
+    ) -> LinearSystem<T> {
         let gamma = x[0];
         let gammadot = x[1];
         let gammaddot = qdd[0];
@@ -185,30 +196,31 @@ pub mod rigid_peg_planar_frictionless {
             * (t14 * (t1 + T::from_f64(2.0) * t5) + T::from_f64(0.5) * cos_gamma * t1)
             + cos_gamma * t11 - T::from_f64(2.0) * t9;
         let t19 = (d_hole + T::from_f64(2.0) * t16 - T::from_f64(2.0) * t2) * t18;
-        let a = Matrix3::new(
-            -T::from_f64(1.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            T::from_f64(0.0),
-            T::from_f64(2.0) * t0 - T::from_f64(1.0),
-            T::from_f64(2.0) * (t1 * (half_e + neg_half_delta * cos_gamma)) * t15,
-            T::from_f64(0.0),
-            -sin_gamma,
-            T::from_f64(2.0) * t15 * neg_half_delta,
-        );
-        let b = Vector3::new(
-            -(m
-                * (T::from_f64(0.5)
-                    * (T::from_f64(4.0) * t13 - T::from_f64(2.0) * t19
-                        - (T::from_f64(2.0) * t13 - t19)) * t3 + g * t17
-                    + gammaddot
-                        * (T::from_f64(1.0 / 12.0)
-                            * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t10 * t10
-                            + t17 * t17))) + f_z * t17 + f_x * t10,
-            f_x - m * (t12 * t3 + gammaddot * t10),
-            f_z - m * g - m * (gammaddot * t17 - t3 * t18),
-        );
-        (a, b)
+        LinearSystem {
+            a: Matrix3::new(
+                -T::from_f64(1.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(2.0) * t0 - T::from_f64(1.0),
+                T::from_f64(2.0) * (t1 * (half_e + neg_half_delta * cos_gamma)) * t15,
+                T::from_f64(0.0),
+                -sin_gamma,
+                T::from_f64(2.0) * t15 * neg_half_delta,
+            ),
+            b: Vector3::new(
+                -(m
+                    * (T::from_f64(0.5)
+                        * (T::from_f64(4.0) * t13 - T::from_f64(2.0) * t19
+                            - (T::from_f64(2.0) * t13 - t19)) * t3 + g * t17
+                        + gammaddot
+                            * (T::from_f64(1.0 / 12.0)
+                                * (T::from_f64(0.75) * (d_peg * d_peg) + h * h) + t10 * t10
+                                + t17 * t17))) + f_z * t17 + f_x * t10,
+                f_x - m * (t12 * t3 + gammaddot * t10),
+                f_z - m * g - m * (gammaddot * t17 - t3 * t18),
+            ),
+        }
     }
     /// Material velocity of the peg at K, B1, B2 (rows) in rotating components (e_η, e_n, e_z) (m/s); replaces paper (10)–(13). The friction directions are −v/|v|.
     ///
@@ -265,6 +277,8 @@ pub mod rigid_peg_planar_frictionless {
             t7,
         )
     }
+    /// The outputs' struct, shared with `rigid_peg` (same fields).
+    pub use super::rigid_peg::EnergyOut;
     /// Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with V = m g z_C (J).
     ///
     /// # Inputs
@@ -272,13 +286,14 @@ pub mod rigid_peg_planar_frictionless {
     /// - `p` = (`D_hole`, `d_peg`, `H`, `m`, `g`, `f`, `gamma0`)
     ///
     /// # Outputs
+    /// The fields of [`EnergyOut`]:
     /// - `kinetic`: scalar
     /// - `total`: scalar
     ///
     /// # Cost
     /// 15 add/sub, 36 mul, 1 div, 0 sqrt, 4 transcendental, 0 branches; 19 `let`s.
     #[inline]
-    pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> (T, T) {
+    pub fn energy<T: Real>(x: &SVector<T, 2>, p: &SVector<T, 7>) -> EnergyOut<T> {
         let gamma = x[0];
         let gammadot = x[1];
         let d_hole = p[0];
@@ -309,8 +324,9 @@ pub mod rigid_peg_planar_frictionless {
             * (T::from_f64(0.5) * (t4 * t4 + t5 * t5)
                 + T::from_f64(1.0 / 24.0)
                     * (T::from_f64(0.75) * (d_peg * d_peg) + h * h));
-        let kinetic = t6 * m;
-        let total = -m * (g * (neg_half_delta * t0 + t1) - t6);
-        (kinetic, total)
+        EnergyOut {
+            kinetic: t6 * m,
+            total: -m * (g * (neg_half_delta * t0 + t1) - t6),
+        }
     }
 }

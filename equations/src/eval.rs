@@ -6,6 +6,7 @@
 //! evaluation does no hashing and no recursion.
 
 use crate::graph::{Binary, Graph, Id, Node, PowForm, Sym, Unary};
+use crate::schedule::{Schedule, factor_sum, sum_order};
 
 /// Value of a one-argument function: the table row's
 /// [`eval`](crate::graph::FuncSpec::eval), the definition the generated code
@@ -24,71 +25,6 @@ pub fn binary(op: Binary, a: f64, b: f64) -> f64 {
 /// the one table of the interpreter, emitter, scheduler and counter.
 pub fn pow(b: f64, e: f64) -> f64 {
     PowForm::of(Some(e)).eval(b, e)
-}
-
-/// The order in which the terms of a sum are added (left to right) by the
-/// interpreter, and the order the lowering (`codegen::lower`) keeps between
-/// its two groups in the emitted code: terms that are products of
-/// parameters (with a constant coefficient) first, then the others, each
-/// group in canonical order. Alike parameters (`r` and `−D/2`) then meet
-/// before a small state-dependent term is added, so their difference is
-/// exact when they are close (Sterbenz) instead of rounded at their size.
-pub fn sum_order(g: &Graph, xs: &[Id]) -> Vec<Id> {
-    let (mut first, rest): (Vec<Id>, Vec<Id>) = xs.iter().partition(|&&t| is_param_term(g, t));
-    first.extend(rest);
-    first
-}
-
-/// True for a sum term that is a product of parameters (with a constant
-/// coefficient): the first group of [`sum_order`].
-pub fn is_param_term(g: &Graph, t: Id) -> bool {
-    crate::simplify::all_params(g, &crate::simplify::term_parts(g, t).1)
-}
-
-/// A sum evaluated as `common₁ · common₂ · … · (Σ cₖ · restₖ)`: every term
-/// is a product holding all the `common` factors (`m1 l1 s + m2 l1 s` is
-/// `l1 · s · (m1 + m2)`), which saves a multiplication per common factor
-/// and term. The interpreter applies it to the canonical DAG's sums, the
-/// emitter to the lowered ones (where the lowering's Horner pass has
-/// already taken out most common factors).
-#[derive(Clone, Debug, PartialEq)]
-pub struct FactoredSum {
-    /// The shared non-constant factors, in canonical order.
-    pub common: Vec<Id>,
-    /// Each term's coefficient and remaining factors, in the order of the
-    /// terms given.
-    pub rest: Vec<(f64, Vec<Id>)>,
-}
-
-/// The factored form of the sum of `xs` (in the order given), when every term
-/// is a product that is not bound to a name (`named`: a `let` of the
-/// emitter's [`Schedule`](crate::codegen::schedule::Schedule), whose value
-/// is reused rather than recomputed) and they share at least one
-/// non-constant factor.
-pub fn factor_sum(g: &Graph, xs: &[Id], named: impl Fn(Id) -> bool) -> Option<FactoredSum> {
-    if xs.len() < 2
-        || !xs
-            .iter()
-            .all(|&t| !named(t) && matches!(g.node(t), Node::Mul(_)))
-    {
-        return None;
-    }
-    let parts: Vec<(f64, Vec<Id>)> = xs
-        .iter()
-        .map(|&t| crate::simplify::term_parts(g, t))
-        .collect();
-    let mut common = parts[0].1.clone();
-    for (_, fs) in &parts[1..] {
-        common.retain(|f| fs.contains(f));
-    }
-    if common.is_empty() {
-        return None;
-    }
-    let rest = parts
-        .into_iter()
-        .map(|(c, fs)| (c, fs.into_iter().filter(|f| !common.contains(f)).collect()))
-        .collect();
-    Some(FactoredSum { common, rest })
 }
 
 /// One instruction: the operands are slots of earlier instructions.
@@ -129,7 +65,7 @@ impl Tape {
     pub fn new(g: &Graph, roots: &[Id]) -> Tape {
         // Sums are factored where `factor_sum` factors them under this
         // plan of the canonical DAG (the emitter plans the lowered one).
-        let sched = crate::codegen::schedule::Schedule::new(g, roots);
+        let sched = Schedule::new(g, roots);
         let live = &sched.live;
         let n = live.len();
         let mut slot = vec![u32::MAX; n];

@@ -106,42 +106,55 @@ impl<'g> Expr<'g> {
         self.wrap(simplify::unary(self.g, op, self.id))
     }
 
+    /// Sine `sin(self)`.
     pub fn sin(self) -> Expr<'g> {
         self.apply(Unary::Sin)
     }
+    /// Cosine `cos(self)`.
     pub fn cos(self) -> Expr<'g> {
         self.apply(Unary::Cos)
     }
+    /// Tangent `tan(self)`.
     pub fn tan(self) -> Expr<'g> {
         self.apply(Unary::Tan)
     }
+    /// Arcsine `asin(self)`.
     pub fn asin(self) -> Expr<'g> {
         self.apply(Unary::Asin)
     }
+    /// Arccosine `acos(self)`.
     pub fn acos(self) -> Expr<'g> {
         self.apply(Unary::Acos)
     }
+    /// Arctangent `atan(self)`.
     pub fn atan(self) -> Expr<'g> {
         self.apply(Unary::Atan)
     }
+    /// Exponential `exp(self)`.
     pub fn exp(self) -> Expr<'g> {
         self.apply(Unary::Exp)
     }
+    /// `exp(self) − 1`, accurate for small arguments.
     pub fn exp_m1(self) -> Expr<'g> {
         self.apply(Unary::Expm1)
     }
+    /// Natural logarithm `ln(self)`.
     pub fn ln(self) -> Expr<'g> {
         self.apply(Unary::Ln)
     }
+    /// `ln(1 + self)`, accurate for small arguments.
     pub fn ln_1p(self) -> Expr<'g> {
         self.apply(Unary::Ln1p)
     }
+    /// Absolute value `|self|`.
     pub fn abs(self) -> Expr<'g> {
         self.apply(Unary::Abs)
     }
+    /// `sign(self)`: −1, 0 or 1 (0 at 0), the derivative of `abs`.
     pub fn signum(self) -> Expr<'g> {
         self.apply(Unary::Sign)
     }
+    /// Hyperbolic tangent `tanh(self)`.
     pub fn tanh(self) -> Expr<'g> {
         self.apply(Unary::Tanh)
     }

@@ -20,7 +20,6 @@
 
 use crate::expr::Expr;
 use crate::graph::{Graph, SymKind};
-use crate::model::{FnSpec, Input, Output};
 
 /// One generalized coordinate: (q, q̇, q̈) as symbols.
 pub type Coord<'g> = (Expr<'g>, Expr<'g>, Expr<'g>);
@@ -28,6 +27,7 @@ pub type Coord<'g> = (Expr<'g>, Expr<'g>, Expr<'g>);
 /// The equations of motion M(q) q̈ = f(q, q̇, p) of a Lagrangian system.
 #[derive(Clone)]
 pub struct Lagrange<'g> {
+    /// The arena the expressions live in.
     pub g: &'g Graph,
     /// The coordinates (q, q̇, q̈), in order.
     pub coords: Vec<Coord<'g>>,
@@ -158,58 +158,5 @@ pub fn det<'g>(g: &'g Graph, a: &[Vec<Expr<'g>>]) -> Expr<'g> {
             a[0][j] * (a[1][j1] * a[2][j2] - a[1][j2] * a[2][j1])
         })),
         n => panic!("det: {n}×{n} not supported (solve numerically)"),
-    }
-}
-
-impl<'g> Lagrange<'g> {
-    /// The standard functions of a Lagrangian model, all taking the state
-    /// `x` = (q, q̇) and the parameters `p` (plus `qdd` = q̈ for `jacobian_terms`):
-    ///
-    /// - `dynamics(x, p) -> (mass, forcing)`: M (symmetric) and f of M q̈ = f;
-    /// - `rhs(x, p) -> xdot`: ẋ = (q̇, M⁻¹f), with M⁻¹f in closed form
-    ///   (only for up to 3 degrees of freedom; beyond, the runtime solves
-    ///   M q̈ = f from `dynamics` by LU);
-    /// - `jacobian_terms(x, qdd, p) -> g`: G = ∂f/∂x − (∂M/∂x)·q̈, so that
-    ///   ∂ẋ/∂x = [[0, I], [M⁻¹G]];
-    /// - `energy(x, p) -> energy`: T + V.
-    ///
-    /// `reference` (e.g. "Goldstein §1.4; rigid-peg paper eq. (3)") and `units` are
-    /// prepended to every doc comment.
-    pub fn functions(&self, params: &[Expr<'g>], reference: &str) -> Vec<FnSpec> {
-        let x = Input::new("x", &self.state());
-        let p = Input::new("p", params);
-        let qdd = Input::new("qdd", &self.accelerations());
-        let spec = |name: &str, doc: String, inputs: Vec<Input>, outputs: Vec<(&str, Output)>| {
-            FnSpec::new(name, format!("{doc}\n\n{reference}"), inputs, outputs)
-        };
-        let mut fns = vec![spec(
-            "dynamics",
-            "Mass matrix M(q) and forcing f(q, q̇) of M q̈ = f (Lagrange's equations, derived symbolically).".into(),
-            vec![x.clone(), p.clone()],
-            vec![("mass", Output::symmetric(&self.mass)), ("forcing", Output::vector(&self.forcing))],
-        )];
-        if let Some(rhs) = self.rhs() {
-            fns.push(spec(
-                "rhs",
-                "First-order right-hand side ẋ = (q̇, M⁻¹f), M⁻¹f by Cramer's rule.".into(),
-                vec![x.clone(), p.clone()],
-                vec![("xdot", Output::vector(&rhs))],
-            ));
-        }
-        fns.push(spec(
-            "jacobian_terms",
-            "G = ∂f/∂x − Σ_j (∂M_{·j}/∂x) q̈_j (n × 2n) at the accelerations `qdd`;\n\
-             the state Jacobian is ∂ẋ/∂x = [[0, I], [M⁻¹G]] (one LU solve of M)."
-                .into(),
-            vec![x.clone(), qdd, p.clone()],
-            vec![("terms", Output::matrix(&self.accel_jacobian_terms()))],
-        ));
-        fns.push(spec(
-            "energy",
-            "Total mechanical energy T + V (conserved without generalized forces).".into(),
-            vec![x, p],
-            vec![("energy", Output::scalar(self.energy))],
-        ));
-        fns
     }
 }

@@ -1,11 +1,22 @@
 //! Generation options, passed as values (no global or thread-local state).
 
-/// How [`crate::builder::Generator`] generates code.
+/// Default name of the generated source file in the output directory.
+pub const SOURCE_FILE: &str = "generated.rs";
+/// Default name of the operation-count report in the output directory.
+pub const REPORT_FILE: &str = "codegen_report.txt";
+
+/// How [`crate::codegen::render`] generates code.
+///
+/// The defaults are what a crate that generates its own models needs: the
+/// stable numerical forms on, and none of the extras (the registry, the
+/// function list, pegdyn's test harness), which cost build time to
+/// generate and compile.
 ///
 /// ```
 /// use pegdyn_equations::Options;
 /// let o = Options::default();
 /// assert!(o.stable_rewrites);
+/// assert!(!o.registry && !o.function_list && !o.test_harness);
 /// let naive = Options { stable_rewrites: false, ..Options::default() };
 /// assert!(!naive.stable_rewrites);
 /// ```
@@ -20,8 +31,17 @@ pub struct Options {
     /// Emit `pub mod registry` after the models: a table of every generated
     /// function with callers on slices at `f64` and at double-double
     /// (`pegdyn::generated::Function` rows), for tools that evaluate every
-    /// function, such as accuracy checks against the interpreter.
+    /// function, such as accuracy checks against double-double
+    /// (`pegdyn::accuracy::measure_function`). Off by default.
     pub registry: bool,
+    /// Also render the function-list macros (`generated_list.rs`,
+    /// [`crate::codegen::registry::list`]) for code that must name every
+    /// generated function statically (pegdyn's benches). Off by default.
+    pub function_list: bool,
+    /// Also render pegdyn's test harness: the emitter-coverage model and
+    /// its call table (`generated_calls.rs`, [`crate::codegen::harness`]).
+    /// Off by default; only pegdyn's own build turns it on.
+    pub test_harness: bool,
     /// File name of the generated source in the output directory.
     pub source_file: String,
     /// File name of the operation-count report in the output directory.
@@ -32,9 +52,11 @@ impl Default for Options {
     fn default() -> Options {
         Options {
             stable_rewrites: true,
-            registry: true,
-            source_file: crate::codegen::SOURCE_FILE.to_owned(),
-            report_file: crate::codegen::REPORT_FILE.to_owned(),
+            registry: false,
+            function_list: false,
+            test_harness: false,
+            source_file: SOURCE_FILE.to_owned(),
+            report_file: REPORT_FILE.to_owned(),
         }
     }
 }

@@ -120,9 +120,14 @@ fn functions_with_their_own_inputs_need_no_dynamics_without_an_adapter() {
             vec![
                 (
                     "ydot",
+                    "rate of (x, v)",
                     pegdyn_equations::model::Output::vector(&[v, f - k * x]),
                 ),
-                ("power", pegdyn_equations::model::Output::scalar(f * v)),
+                (
+                    "power",
+                    "power of the force, W/kg",
+                    pegdyn_equations::model::Output::scalar(f * v),
+                ),
             ],
         )
     })
@@ -154,12 +159,130 @@ fn functions_with_their_own_inputs_need_no_dynamics_without_an_adapter() {
 
 #[test]
 fn the_compliant_3d_peg_declared_downstream_renders_like_the_builtin() {
-    use pegdyn_equations::models::compliant_peg_3d as peg3d;
+    use pegdyn_equations::models::{self, compliant_peg_3d as peg3d};
     let mut own = Generator::new(Options::default());
     own.model(peg3d::NAME, peg3d::DOC, peg3d::declare).unwrap();
     let mut builtin = Generator::new(Options::default());
-    builtin.module(peg3d::module);
+    models::declare_all(&mut builtin).unwrap();
     let (a, b) = (own.render().unwrap(), builtin.render().unwrap());
-    assert_eq!(a.source, b.source);
+    let module = |src: &str| {
+        let start = src.find("pub mod compliant_peg_3d").unwrap();
+        let doc = src[..start].rfind("\n\n").unwrap();
+        let end = src[start..].find("\n}\n").unwrap();
+        src[doc..start + end].to_owned()
+    };
+    assert_eq!(module(&a.source), module(&b.source));
     assert!(a.source.contains("pub fn rim_edge<T: Real>"));
+}
+
+/// A two-parameter oscillator with one two-output function, declared in
+/// `g` as model `name` (stiffness documented by `k_doc`), sharing its
+/// structs with the model `share` when given.
+fn typed_model(
+    g: &mut Generator,
+    name: &str,
+    k_doc: &str,
+    share: Option<&str>,
+) -> Result<(), GenError> {
+    use pegdyn_equations::model::Output;
+    g.model(name, "Oscillator.", |m| {
+        if let Some(first) = share {
+            m.share_input_type("p", first);
+            m.share_output_type("SplitOut", first);
+        }
+        let x = m.state("x", "displacement, m")?;
+        let v = m.state("v", "velocity, m/s")?;
+        let k = m.parameter("k", k_doc)?;
+        let c = m.parameter("c", "damping per mass, 1/s")?;
+        m.outputs(Outputs::NONE);
+        m.function(
+            "split",
+            "Spring and damper accelerations.",
+            &[("y", &[x, v])],
+            vec![
+                (
+                    "spring",
+                    "spring acceleration, m/s^2",
+                    Output::scalar(-k * x),
+                ),
+                (
+                    "damper",
+                    "damper acceleration, m/s^2",
+                    Output::scalar(-c * v),
+                ),
+            ],
+        )
+    })
+    .map(|_| ())
+}
+
+const K_DOC: &str = "stiffness per mass, 1/s^2";
+
+#[test]
+fn parameters_and_several_outputs_are_typed_structs() {
+    let mut g = Generator::new(Options::default());
+    typed_model(&mut g, "osc", K_DOC, None).unwrap();
+    let src = g.render().unwrap().source;
+    // One documented field per parameter, conversions both ways.
+    assert!(src.contains("pub struct Params<T>"), "{src}");
+    assert!(
+        src.contains("/// Stiffness per mass, 1/s^2.\n        pub k: T,"),
+        "{src}"
+    );
+    assert!(src.contains("impl<T: Real> From<Params<T>> for SVector<T, 2>"));
+    assert!(src.contains("impl<T: Real> From<&SVector<T, 2>> for Params<T>"));
+    assert!(src.contains("pub const NAMES: [&'static str; 2] = P_NAMES;"));
+    // The two outputs come back as a struct with named, documented fields.
+    assert!(src.contains("pub struct SplitOut<T: Real>"), "{src}");
+    assert!(src.contains("/// Spring acceleration, m/s^2.\n        pub spring: T,"));
+    assert!(src.contains("-> SplitOut<T>"));
+    assert!(!src.contains("-> (T, T)"));
+}
+
+#[test]
+fn a_shared_struct_is_re_exported_when_it_matches_the_earlier_module() {
+    let mut shared = Generator::new(Options::default());
+    typed_model(&mut shared, "first", K_DOC, None).unwrap();
+    typed_model(&mut shared, "second", K_DOC, Some("first")).unwrap();
+    let src = shared.render().unwrap().source;
+    assert!(src.contains("pub use super::first::Params;"), "{src}");
+    assert!(src.contains("pub use super::first::SplitOut;"));
+    assert_eq!(src.matches("pub struct SplitOut").count(), 1);
+    // Same names, another meaning: not the same struct.
+    let mut other = Generator::new(Options::default());
+    typed_model(&mut other, "first", K_DOC, None).unwrap();
+    typed_model(&mut other, "second", "stiffness, N/m", Some("first")).unwrap();
+    match other.render() {
+        Err(GenError::Struct { module, item, .. }) => {
+            assert_eq!((module.as_str(), item.as_str()), ("second", "Params"));
+        }
+        r => panic!(
+            "expected a struct error, got {:?}",
+            r.map(|r| r.source.len())
+        ),
+    }
+}
+
+#[test]
+fn a_typed_input_no_function_takes_is_an_error() {
+    let mut g = Generator::new(Options::default());
+    let e = g
+        .model("untyped", "", |m| {
+            m.typed_input("loads", "Loads", "Applied loads.")?;
+            let x = m.state("x", "m")?;
+            let f = m.input_parameter("f", "force, N")?;
+            m.outputs(Outputs::NONE);
+            m.function(
+                "h",
+                "",
+                &[("x", &[x]), ("u", &[f])],
+                vec![("y", "x f", pegdyn_equations::model::Output::scalar(x * f))],
+            )
+        })
+        .err()
+        .unwrap();
+    assert_eq!(
+        model_error(e),
+        ("untyped".into(), "typed_input".into(), "loads".into())
+    );
 }

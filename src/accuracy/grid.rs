@@ -7,7 +7,7 @@
 //! new model needs only a base point and its variations here.
 
 use crate::compliant_peg::{CompliantParams, CompliantSpec, Load};
-use crate::generated::compliant_peg::P_NAMES;
+use crate::generated::{compliant_peg, compliant_peg_elastic};
 use crate::rigid_peg::PegParams;
 
 /// One grid point: a label and a value for each symbol name.
@@ -129,16 +129,18 @@ fn angles(base: &[(&str, f64)], angle: &[&str], rate: &str) -> Vec<Point> {
 /// The steel reference peg of `scenes/insert_compliant.toml` with
 /// clearance `c` (m) at D = 50 mm: (name, value) of every model parameter.
 fn steel_params(clearance: f64) -> Vec<(&'static str, f64)> {
-    steel_params_named(clearance, &P_NAMES, |p, load| {
-        p.vector(load).as_slice().to_vec()
-    })
+    steel_params_named(
+        clearance,
+        &compliant_peg::Params::<f64>::NAMES,
+        |p, load| p.vector(load).as_slice().to_vec(),
+    )
 }
 
 /// As [`steel_params`], for the parameters of the elastic (Hertz–Mindlin)
 /// friction model.
 fn steel_params_elastic(clearance: f64) -> Vec<(&'static str, f64)> {
-    use crate::generated::compliant_peg_elastic::P_NAMES as NAMES;
-    steel_params_named(clearance, &NAMES, |p, load| {
+    let names = compliant_peg_elastic::Params::<f64>::NAMES;
+    steel_params_named(clearance, &names, |p, load| {
         p.vector_elastic(load).as_slice().to_vec()
     })
 }
@@ -152,7 +154,9 @@ const UTILISATIONS: [(&str, [f64; 3]); 4] = [
     ("u_wall_left", [0.0, 0.0, -0.25]),
 ];
 
-/// (name, value) of `names` for the steel reference peg with clearance `c`.
+/// (name, value) of `names` for the steel reference peg with clearance `c`:
+/// `names` the fields of a generated `Params` in vector order, `vector` the
+/// vector of that `Params` (so the pairs match by construction).
 fn steel_params_named(
     clearance: f64,
     names: &[&'static str],
@@ -263,7 +267,7 @@ fn compliant_peg_3d() -> Vec<Point> {
     use nalgebra::{Unit, UnitQuaternion, Vector3};
     let prm = Peg3dParams::steel(0.04995, 0.070, 0.050, 1e-3, 1e-3, 0.1);
     let pv = prm.vector();
-    let named: Vec<(&str, f64)> = peg3d::P_NAMES
+    let named: Vec<(&str, f64)> = peg3d::Params::<f64>::NAMES
         .iter()
         .copied()
         .zip(pv.iter().copied())

@@ -10,7 +10,7 @@
 use nalgebra::{SMatrix, SVector};
 
 use super::params::{CompliantParams, Load, N_PARAMS_ELASTIC};
-use super::system::{PerContact, Sample, assemble};
+use super::system::{Energies, PerContact, Sample, assemble};
 use crate::generated::compliant_peg_elastic as gen_elastic;
 use crate::system::OdeSystem;
 
@@ -35,15 +35,23 @@ impl ElasticSystem {
     /// Contact, energy and depth quantities at state `y`; `tangential` is
     /// the energy stored in the tangential springs.
     pub fn sample(&self, y: &SVector<f64, N_STATE_ELASTIC>) -> Sample {
-        let (kinetic, potential, depth, tangential) = gen_elastic::energy(y, &self.p);
-        let (f, ft, d, _, _, _, p0) = gen_elastic::contacts(y, &self.p);
-        let c = PerContact {
-            f: f.as_slice(),
-            ft: ft.as_slice(),
-            d: d.as_slice(),
-            p0: p0.as_slice(),
+        let energy = gen_elastic::energy(y, &self.p);
+        let c = gen_elastic::contacts(y, &self.p);
+        let per = PerContact {
+            f: c.normal.as_slice(),
+            ft: c.friction.as_slice(),
+            d: c.delta.as_slice(),
+            p0: c.p0.as_slice(),
         };
-        assemble(&c, (kinetic, potential, depth), (y[6], y[7], tangential))
+        let e = Energies {
+            kinetic: energy.kinetic,
+            potential: energy.potential,
+            depth: energy.depth,
+            work: y[6],
+            dissipation: y[7],
+            tangential: energy.tangential,
+        };
+        assemble(&per, &e)
     }
 }
 

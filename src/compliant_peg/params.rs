@@ -1,19 +1,21 @@
 //! Checked parameters of the compliant peg-in-hole and their translation
-//! into the generated model's parameter vector.
+//! into the generated models' parameters (`From`, field by field).
 
 use nalgebra::SVector;
 
 use super::geometry::{ContactPair, PegHoleGeometry};
-use crate::generated::compliant_peg::P_NAMES;
-use crate::hertz::{EllipticityMethod, HertzContact, HertzError, Material};
+use crate::generated::{compliant_peg as all, compliant_peg_elastic as elastic};
+use crate::hertz::{EllipticityMethod, HertzError, Material};
 
-/// Number of model parameters (`P_NAMES`).
-pub const N_PARAMS: usize = 24;
+/// Number of model parameters (the fields of
+/// [`generated::compliant_peg::Params`](all::Params), which
+/// `compliant_peg_lean` shares).
+pub const N_PARAMS: usize = all::Params::<f64>::NAMES.len();
 
-/// Number of parameters of the elastic-friction model
-/// (`compliant_peg_elastic::P_NAMES`: [`N_PARAMS`] and `g_star`,
-/// `delta_floor`, `tau_t`).
-pub const N_PARAMS_ELASTIC: usize = 27;
+/// Number of parameters of the elastic-friction model (the fields of
+/// [`generated::compliant_peg_elastic::Params`](elastic::Params): those of
+/// [`N_PARAMS`] and `g_star`, `delta_floor`, `tau_t`).
+pub const N_PARAMS_ELASTIC: usize = elastic::Params::<f64>::NAMES.len();
 
 /// Penetration floor `δ_0` (m) of the elastic friction law's utilisation
 /// rate: below it the rate uses `δ_0` instead of `δ` (out of contact the
@@ -230,54 +232,11 @@ impl CompliantParams {
         Ok(CompliantParams { spec, pair })
     }
 
-    /// The value of the model parameter `name` (one of `P_NAMES`).
-    fn value(&self, name: &str, load: &Load) -> Option<f64> {
-        let s = &self.spec;
-        let g = &s.geometry;
-        let hertz = |c: &HertzContact, what: &str| match what {
-            "sum" => Some(c.sum_curvature),
-            "ma" => Some(c.coefficients.m_a),
-            "mb" => Some(c.coefficients.m_b),
-            "dstar" => Some(c.coefficients.delta_star),
-            _ => None,
-        };
-        Some(match name {
-            "m" => s.mass,
-            "J" => s.inertia,
-            "r" => g.peg_radius,
-            "l_c" => s.com_height,
-            "D" => g.hole_diameter,
-            "rho_p" => g.peg_fillet,
-            "rho_h" => g.hole_fillet,
-            "mu" => s.friction,
-            "v_s" => s.slip_velocity,
-            "k_edge" => self.pair.edge.stiffness(),
-            "k_wall" => self.pair.wall.stiffness(),
-            "f1" => load.axial,
-            "f2" => load.radial,
-            "M" => load.torque,
-            "e_star" => self.pair.edge.contact_modulus,
-            "hc_alpha" => s.damping,
-            "g_star" => self.shear_modulus(),
-            "delta_floor" => DELTA_FLOOR,
-            "tau_t" => s.tangential_damping,
-            _ => {
-                let (which, what) = name.split_once('_')?;
-                match which {
-                    "edge" => hertz(&self.pair.edge, what)?,
-                    "wall" => hertz(&self.pair.wall, what)?,
-                    _ => return None,
-                }
-            }
-        })
-    }
-
-    /// The generated model's parameter vector (order of `P_NAMES`, the same
-    /// for `compliant_peg` and `compliant_peg_lean`) under `load`.
+    /// The generated model's parameter vector under `load` (the same for
+    /// `compliant_peg` and `compliant_peg_lean`, which share their
+    /// `Params`).
     pub fn vector(&self, load: &Load) -> SVector<f64, N_PARAMS> {
-        // Every name is known (tests/compliant_runtime.rs checks it); an
-        // unknown one would read as NaN and stop the integration visibly.
-        SVector::from_fn(|i, _| self.value(P_NAMES[i], load).unwrap_or(f64::NAN))
+        all::Params::from((self, load)).into()
     }
 
     /// Effective shear modulus `G*` (Pa) of Mindlin's tangential stiffness
@@ -290,22 +249,82 @@ impl CompliantParams {
         1.0 / (part(&self.spec.peg) + part(&self.spec.hole))
     }
 
-    /// The elastic-friction model's parameter vector (order of
-    /// `compliant_peg_elastic::P_NAMES`) under `load`.
+    /// The elastic-friction model's parameter vector under `load`.
     pub fn vector_elastic(&self, load: &Load) -> SVector<f64, N_PARAMS_ELASTIC> {
-        use crate::generated::compliant_peg_elastic::P_NAMES as NAMES;
-        SVector::from_fn(|i, _| self.value(NAMES[i], load).unwrap_or(f64::NAN))
+        elastic::Params::from((self, load)).into()
     }
+}
 
-    /// Names of `P_NAMES` (of both models) that [`vector`](Self::vector)
-    /// and [`vector_elastic`](Self::vector_elastic) do not know (empty).
-    pub fn unknown_names(&self) -> Vec<&'static str> {
-        use crate::generated::compliant_peg_elastic::P_NAMES as NAMES;
-        P_NAMES
-            .iter()
-            .chain(NAMES.iter())
-            .copied()
-            .filter(|n| self.value(n, &Load::default()).is_none())
-            .collect()
+impl From<(&CompliantParams, &Load)> for all::Params<f64> {
+    /// The compliant planar peg's parameters under `load`: the spec's
+    /// dimensions, mass and friction, the Hertz stiffnesses and
+    /// coefficients of the edge and wall contacts, and the load.
+    fn from((c, load): (&CompliantParams, &Load)) -> Self {
+        let (s, g) = (&c.spec, &c.spec.geometry);
+        let (edge, wall) = (&c.pair.edge, &c.pair.wall);
+        all::Params {
+            m: s.mass,
+            J: s.inertia,
+            r: g.peg_radius,
+            l_c: s.com_height,
+            D: g.hole_diameter,
+            rho_p: g.peg_fillet,
+            rho_h: g.hole_fillet,
+            mu: s.friction,
+            v_s: s.slip_velocity,
+            k_edge: edge.stiffness(),
+            k_wall: wall.stiffness(),
+            f1: load.axial,
+            f2: load.radial,
+            M: load.torque,
+            e_star: edge.contact_modulus,
+            edge_sum: edge.sum_curvature,
+            edge_ma: edge.coefficients.m_a,
+            edge_mb: edge.coefficients.m_b,
+            edge_dstar: edge.coefficients.delta_star,
+            wall_sum: wall.sum_curvature,
+            wall_ma: wall.coefficients.m_a,
+            wall_mb: wall.coefficients.m_b,
+            wall_dstar: wall.coefficients.delta_star,
+            hc_alpha: s.damping,
+        }
+    }
+}
+
+impl From<(&CompliantParams, &Load)> for elastic::Params<f64> {
+    /// The elastic-friction model's parameters under `load`: those of the
+    /// regularized model, the effective shear modulus, the penetration
+    /// floor [`DELTA_FLOOR`] and the tangential damping time.
+    fn from((c, load): (&CompliantParams, &Load)) -> Self {
+        let b = all::Params::from((c, load));
+        elastic::Params {
+            m: b.m,
+            J: b.J,
+            r: b.r,
+            l_c: b.l_c,
+            D: b.D,
+            rho_p: b.rho_p,
+            rho_h: b.rho_h,
+            mu: b.mu,
+            v_s: b.v_s,
+            k_edge: b.k_edge,
+            k_wall: b.k_wall,
+            f1: b.f1,
+            f2: b.f2,
+            M: b.M,
+            e_star: b.e_star,
+            edge_sum: b.edge_sum,
+            edge_ma: b.edge_ma,
+            edge_mb: b.edge_mb,
+            edge_dstar: b.edge_dstar,
+            wall_sum: b.wall_sum,
+            wall_ma: b.wall_ma,
+            wall_mb: b.wall_mb,
+            wall_dstar: b.wall_dstar,
+            hc_alpha: b.hc_alpha,
+            g_star: c.shear_modulus(),
+            delta_floor: DELTA_FLOOR,
+            tau_t: c.spec.tangential_damping,
+        }
     }
 }

@@ -74,13 +74,21 @@ pub(crate) struct PerContact<'a> {
     pub p0: &'a [f64],
 }
 
+/// The energies and depth of one state (the generated `energy` outputs
+/// and the state's work and dissipation).
+pub(crate) struct Energies {
+    pub kinetic: f64,
+    pub potential: f64,
+    pub depth: f64,
+    pub work: f64,
+    pub dissipation: f64,
+    /// Stored in the tangential springs (0 with the regularized law).
+    pub tangential: f64,
+}
+
 /// The [`Sample`] of per-contact outputs and energies: "edge" and "wall"
 /// are the contact of each pair with the larger penetration.
-pub(crate) fn assemble(
-    c: &PerContact<'_>,
-    (kinetic, potential, depth): (f64, f64, f64),
-    (work, dissipation, tangential): (f64, f64, f64),
-) -> Sample {
+pub(crate) fn assemble(c: &PerContact<'_>, e: &Energies) -> Sample {
     let d = c.d;
     let pick = |first: usize| {
         let mut k = first;
@@ -91,7 +99,7 @@ pub(crate) fn assemble(
     };
     let (a, b) = (pick(0), pick(1));
     Sample {
-        depth,
+        depth: e.depth,
         f_edge: c.f[a],
         f_wall: c.f[b],
         friction_edge: c.ft[a],
@@ -100,11 +108,11 @@ pub(crate) fn assemble(
         p0_wall: c.p0[b],
         delta_edge: d[a],
         delta_wall: d[b],
-        kinetic,
-        potential,
-        work,
-        dissipation,
-        tangential,
+        kinetic: e.kinetic,
+        potential: e.potential,
+        work: e.work,
+        dissipation: e.dissipation,
+        tangential: e.tangential,
     }
 }
 
@@ -119,22 +127,39 @@ impl CompliantSystem {
 
     /// Contact, energy and depth quantities at state `y`.
     pub fn sample(&self, y: &SVector<f64, N_STATE>) -> Sample {
-        let (kinetic, potential, depth) = match self.contacts {
+        // One `EnergyOut` for both models (the lean model shares it).
+        let energy = match self.contacts {
             ContactSet::All => all::energy(y, &self.p),
             ContactSet::Lean => lean::energy(y, &self.p),
         };
-        let per = |f: &[f64], ft: &[f64], d: &[f64], p0: &[f64]| {
-            let c = PerContact { f, ft, d, p0 };
-            assemble(&c, (kinetic, potential, depth), (y[6], y[7], 0.0))
+        let e = Energies {
+            kinetic: energy.kinetic,
+            potential: energy.potential,
+            depth: energy.depth,
+            work: y[6],
+            dissipation: y[7],
+            tangential: 0.0,
         };
         match self.contacts {
             ContactSet::All => {
-                let (f, ft, d, _, _, _, p0) = all::contacts(y, &self.p);
-                per(f.as_slice(), ft.as_slice(), d.as_slice(), p0.as_slice())
+                let c = all::contacts(y, &self.p);
+                let per = PerContact {
+                    f: c.normal.as_slice(),
+                    ft: c.friction.as_slice(),
+                    d: c.delta.as_slice(),
+                    p0: c.p0.as_slice(),
+                };
+                assemble(&per, &e)
             }
             ContactSet::Lean => {
-                let (f, ft, d, _, _, _, p0) = lean::contacts(y, &self.p);
-                per(f.as_slice(), ft.as_slice(), d.as_slice(), p0.as_slice())
+                let c = lean::contacts(y, &self.p);
+                let per = PerContact {
+                    f: c.normal.as_slice(),
+                    ft: c.friction.as_slice(),
+                    d: c.delta.as_slice(),
+                    p0: c.p0.as_slice(),
+                };
+                assemble(&per, &e)
             }
         }
     }

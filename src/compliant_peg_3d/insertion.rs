@@ -218,7 +218,8 @@ impl Insertion {
         let forces = self.peg.forces(&ys)?;
         let held = self.wrist_load(t, &ys);
         let (depth, tilt, azimuth) = depth_tilt(&self.peg.params, &ys);
-        let (kinetic, gravity) = generated::energy(&ys, self.peg.param_vector());
+        let generated::EnergyOut { kinetic, gravity } =
+            generated::energy(&ys, self.peg.param_vector());
         let vc: f64 = forces.iter().map(|f| f.potential).sum();
         let vw = held.map_or(0.0, |(_, l)| l.potential);
         Ok(Sample {

@@ -70,16 +70,15 @@ fn eval(
     x: &SVector<Dual, 7>,
     a: Dual,
     p: &SVector<Dual, 16>,
-) -> (Dual, Dual, SVector<Dual, 3>, SVector<Dual, 3>) {
+) -> generated::PairGeometry<Dual> {
     let a = SVector::<Dual, 1>::new(a);
-    let (gap, d1, _, _, n, pt, _) = match pair {
+    match pair {
         Pair::EdgeSide => generated::edge_side(x, &a, p),
         Pair::RimWall => generated::rim_wall(x, &a, p),
         Pair::RimTop => generated::rim_top(x, &a, p),
         Pair::RimBottom => generated::rim_bottom(x, &a, p),
         Pair::RimEdge => generated::rim_edge(x, &a, p),
-    };
-    (gap, d1, n, pt)
+    }
 }
 
 /// Gap, force direction and point of `pair` at its stationary angle
@@ -91,7 +90,8 @@ pub(super) fn at_stationary(
     angle: f64,
     p: &SVector<Dual, 16>,
 ) -> (Dual, D3, D3) {
-    let (gap, d1, n, pt) = eval(pair, x, Dual::variable(angle, N - 1), p);
+    let g = eval(pair, x, Dual::variable(angle, N - 1), p);
+    let (gap, d1, n, pt) = (g.gap, g.d1, g.normal, g.point);
     let curv = d1.d[N - 1];
     let mut slope = [0.0; N];
     for (k, s) in slope.iter_mut().enumerate().take(N - 1) {
@@ -246,6 +246,6 @@ pub fn wrench(
 /// chain rule through the contact wrench.
 pub fn of(sys: &Peg3d, y: &SVector<f64, 15>, forces: &[ContactForce]) -> SMatrix<f64, 15, 15> {
     let (w, dw) = wrench(sys, y, forces);
-    let (dy, df_dw) = generated::rhs_jacobian(y, &w, sys.param_vector());
-    dy + df_dw * dw
+    let partial = generated::rhs_jacobian(y, &w, sys.param_vector());
+    partial.dy + partial.dw * dw
 }

@@ -54,7 +54,8 @@ pub struct Saddle {
 fn col(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, mut lo: f64, mut hi: f64) -> f64 {
     let mut a = 0.5 * (lo + hi);
     for _ in 0..80 {
-        let (_, d1, d2, ..) = pair.eval(x, a, p);
+        let g = pair.eval(x, a, p);
+        let (d1, d2) = (g.d1, g.d2);
         if d1 > 0.0 {
             lo = a;
         } else {
@@ -94,7 +95,7 @@ pub fn assign(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, points: &mu
                 hi += TAU;
             }
             let a = col(pair, x, p, lo, hi);
-            (a, -pair.eval(x, a, p).0)
+            (a, -pair.eval(x, a, p).gap)
         })
         .collect();
     // One ring: keep the least penetrating col.
@@ -108,7 +109,8 @@ pub fn assign(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, points: &mu
         pt.saddle = None;
         if depth > 0.0 && keep != Some(k) {
             let a = a.rem_euclid(TAU);
-            let (_, _, _, gradient, normal, point, _) = pair.eval(x, a, p);
+            let g = pair.eval(x, a, p);
+            let (gradient, normal, point) = (g.grad, g.normal, g.point);
             pt.saddle = Some(Saddle {
                 angle: a,
                 penetration: depth,

@@ -1,5 +1,5 @@
 //! Parameters of the compliant 3-D peg and the generated functions'
-//! parameter vector (order `pegdyn::generated::compliant_peg_3d::P_NAMES`).
+//! parameter vector (from `pegdyn::generated::compliant_peg_3d::Params`).
 
 use crate::hertz::Material;
 use nalgebra::{SVector, Vector3};
@@ -98,26 +98,27 @@ impl Peg3dParams {
         0.5 * self.hole_diameter
     }
 
-    /// The generated functions' parameter vector: `r, L, rho_p, R, rho_h,
-    /// h_b, m, J_t, J_a, g, fa_x, fa_y, fa_z, ma_x, ma_y, ma_z`.
+    /// The generated functions' parameter vector, field by field
+    /// ([`crate::generated::compliant_peg_3d::Params`]).
     pub fn vector(&self) -> SVector<f64, 16> {
-        SVector::<f64, 16>::from_column_slice(&[
-            self.peg_radius(),
-            self.length,
-            self.rim_fillet,
-            self.bore_radius(),
-            self.mouth_fillet,
-            self.bore_depth,
-            self.mass,
-            self.inertia_transverse,
-            self.inertia_axial,
-            self.gravity,
-            self.force.x,
-            self.force.y,
-            self.force.z,
-            self.moment.x,
-            self.moment.y,
-            self.moment.z,
-        ])
+        crate::generated::compliant_peg_3d::Params {
+            r: self.peg_radius(),
+            L: self.length,
+            rho_p: self.rim_fillet,
+            R: self.bore_radius(),
+            rho_h: self.mouth_fillet,
+            h_b: self.bore_depth,
+            m: self.mass,
+            J_t: self.inertia_transverse,
+            J_a: self.inertia_axial,
+            g: self.gravity,
+            fa_x: self.force.x,
+            fa_y: self.force.y,
+            fa_z: self.force.z,
+            ma_x: self.moment.x,
+            ma_y: self.moment.y,
+            ma_z: self.moment.z,
+        }
+        .into()
     }
 }

@@ -29,21 +29,16 @@ use std::f64::consts::TAU;
 mod pair;
 pub use pair::Pair;
 
-/// Output of one generated pair function: gap, `g′`, `g″`, gradient in the
-/// pose, force direction, contact point, axial coordinate.
-type PairEval = (
-    f64,
-    f64,
-    f64,
-    SVector<f64, 7>,
-    Vector3<f64>,
-    Vector3<f64>,
-    f64,
-);
-
 impl Pair {
-    /// The generated function of this pair at pose `x` and angle `a`.
-    pub fn eval(self, x: &SVector<f64, 7>, a: f64, p: &SVector<f64, 16>) -> PairEval {
+    /// The generated function of this pair at pose `x` and angle `a`: gap,
+    /// `g′`, `g″`, gradient in the pose, force direction, contact point,
+    /// axial coordinate.
+    pub fn eval(
+        self,
+        x: &SVector<f64, 7>,
+        a: f64,
+        p: &SVector<f64, 16>,
+    ) -> generated::PairGeometry<f64> {
         let a = Vector1::new(a);
         match self {
             Pair::EdgeSide => generated::edge_side(x, &a, p),
@@ -164,7 +159,8 @@ fn refine(
     mut hi: f64,
 ) -> Option<f64> {
     for _ in 0..60 {
-        let (_, d1, d2, ..) = pair.eval(x, a, p);
+        let g = pair.eval(x, a, p);
+        let (d1, d2) = (g.d1, g.d2);
         if d1 > 0.0 {
             hi = a;
         } else {
@@ -177,7 +173,8 @@ fn refine(
             0.5 * (lo + hi)
         };
         if (next - a).abs() <= 1e-13 * (1.0 + a.abs()) || hi - lo <= 1e-13 {
-            let (_, d1, d2, ..) = pair.eval(x, next, p);
+            let g = pair.eval(x, next, p);
+            let (d1, d2) = (g.d1, g.d2);
             let tol = 1e-9 * pair_scale_hint(d2);
             return (d2 > 0.0 && d1.abs() <= tol.max(1e-15)).then_some(next);
         }
@@ -222,7 +219,7 @@ impl Search {
         }
         let mut gaps = [0.0; SAMPLES];
         for (k, g) in gaps.iter_mut().enumerate() {
-            *g = pair.eval(x, k as f64 * step, p).0;
+            *g = pair.eval(x, k as f64 * step, p).gap;
         }
         for k in 0..SAMPLES {
             let prev = gaps[(k + SAMPLES - 1) % SAMPLES];
@@ -240,7 +237,7 @@ impl Search {
         }
         self.warm.clear();
         for &a in &minima {
-            if pair.eval(x, a, p).0 < margin {
+            if pair.eval(x, a, p).gap < margin {
                 self.warm.push(a);
             }
         }
@@ -262,18 +259,18 @@ impl Search {
         let axis = super::system::axis_of(x);
         let first = out.len();
         for &a in &minima {
-            let (gap, _, _, gradient, normal, point, axial) = pair.eval(x, a, p);
-            if gap < 0.0
-                && pair.valid(prm, &axis, &normal, &point, axial)
-                && pair.rim_faces_out(x, &normal, &point)
+            let g = pair.eval(x, a, p);
+            if g.gap < 0.0
+                && pair.valid(prm, &axis, &g.normal, &g.point, g.axial)
+                && pair.rim_faces_out(x, &g.normal, &g.point)
             {
                 out.push(ContactPoint {
                     pair,
                     angle: a,
-                    penetration: -gap,
-                    gradient,
-                    normal,
-                    point,
+                    penetration: -g.gap,
+                    gradient: g.grad,
+                    normal: g.normal,
+                    point: g.point,
                     saddle: None,
                     ring: false,
                 });

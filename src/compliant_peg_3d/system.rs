@@ -192,7 +192,7 @@ impl Peg3d {
             pair,
             angle: r.angle,
             penetration: r.depth,
-            gradient: pair.eval(x, r.angle, &self.p).3,
+            gradient: pair.eval(x, r.angle, &self.p).grad,
             normal: Vector3::z(),
             point: Vector3::new(cop[0], cop[1], cop[2]),
             saddle: None,
@@ -382,9 +382,9 @@ impl Peg3d {
     /// # Errors
     /// As [`Peg3d::forces`].
     pub fn energy_balance(&self, y: &SVector<f64, 15>) -> Result<f64, HertzError> {
-        let (kin, grav) = generated::energy(y, &self.p);
+        let e = generated::energy(y, &self.p);
         let pot: f64 = self.forces(y)?.iter().map(|f| f.potential).sum();
-        Ok(kin + grav + pot - y[13] + y[14])
+        Ok(e.kinetic + e.gravity + pot - y[13] + y[14])
     }
 }
 

@@ -20,7 +20,9 @@ use crate::generated::{
     rigid_peg, rigid_peg_frictionless, rigid_peg_planar, rigid_peg_planar_frictionless,
 };
 use crate::rigid_peg::dynamics::solve;
-use crate::rigid_peg::prescribed::Reactions;
+use crate::rigid_peg::generated_inputs::{
+    directions, planar_friction, planar_loads, planar_state, state,
+};
 use crate::rigid_peg::{Loads, PegParams, RigidError};
 
 /// Which generated rigid-peg module to use: the generator's own definition
@@ -38,6 +40,26 @@ pub struct Accelerations {
     /// Normal forces on the peg `[N_K, N_B1, N_B2]` (N); negative = the
     /// contact would have to pull.
     pub normal: [f64; 3],
+}
+
+/// Reactions and driving moments of a prescribed motion.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Reactions {
+    /// Moment conjugate to γ that drives the motion (N·m).
+    pub m_gamma: f64,
+    /// Moment about the hole axis that drives the motion (N·m).
+    pub m_psi: f64,
+    /// Normal reactions `[N_K, N_B1, N_B2]` (N); negative = the contact would
+    /// have to pull.
+    pub normal: [f64; 3],
+}
+
+impl Reactions {
+    /// True when every contact pushes (N ≥ 0): the prescribed motion is
+    /// possible with the peg on three points.
+    pub fn feasible(&self) -> bool {
+        self.normal.iter().all(|&n| n >= 0.0)
+    }
 }
 
 /// Relative size below which a lateral component counts as zero in the
@@ -127,9 +149,13 @@ fn lateral(loads: &Loads, psi: f64) -> f64 {
     -loads.force[0] * s + loads.force[1] * c
 }
 
-/// Checks the parameters, the state's finiteness and the three-point range; returns γ0 = arccos(d/D), computed
-/// once per call and handed to [`args`].
-fn check_state(p: &PegParams, q: Vector2<f64>, qdot: Vector2<f64>) -> Result<f64, RigidError> {
+/// Checks the parameters, the state's finiteness and the three-point range;
+/// returns the generated model's parameters (γ0 computed once, here).
+fn checked(
+    p: &PegParams,
+    q: Vector2<f64>,
+    qdot: Vector2<f64>,
+) -> Result<rigid_peg::Params<f64>, RigidError> {
     p.validate()?;
     let values = [
         ("q", q[0]),
@@ -146,44 +172,38 @@ fn check_state(p: &PegParams, q: Vector2<f64>, qdot: Vector2<f64>) -> Result<f64
             });
         }
     }
-    let (gamma, gamma0) = (q[0], p.gamma0());
+    let params = rigid_peg::Params::from(p);
+    let (gamma, gamma0) = (q[0], params.gamma0);
     if !(gamma > gamma0 && gamma < std::f64::consts::FRAC_PI_2) {
         return Err(RigidError::NotThreePoint { gamma, gamma0 });
     }
-    Ok(gamma0)
+    Ok(params)
 }
 
-/// Inputs in the generated functions' order.
-struct Args {
-    x2: SVector<f64, 4>,
-    x1: SVector<f64, 2>,
-    p: SVector<f64, 7>,
-    loads2: SVector<f64, 5>,
-    loads1: SVector<f64, 3>,
-    t2: SVector<f64, 9>,
-    t1: SVector<f64, 4>,
+/// The unknowns of a solved system: q̈ (forward) or the moments
+/// (prescribed), and the normal forces `[N_K, N_B1, N_B2]`.
+struct Unknowns {
+    head: Vector2<f64>,
+    normal: [f64; 3],
 }
 
-fn args(
-    p: &PegParams,
-    gamma0: f64,
-    loads: &Loads,
-    q: Vector2<f64>,
-    qdot: Vector2<f64>,
-    t: &[Vector3<f64>; 3],
-) -> Args {
-    let (s, c) = q[1].sin_cos();
-    let [fx, fy, fz] = loads.force;
-    let in_plane = fx * c + fy * s;
-    Args {
-        x2: SVector::<f64, 4>::new(q[0], q[1], qdot[0], qdot[1]),
-        x1: SVector::<f64, 2>::new(q[0], qdot[0]),
-        p: p.to_vector_with_gamma0(gamma0),
-        loads2: loads.to_vector(),
-        loads1: SVector::<f64, 3>::new(loads.m_gamma, in_plane, fz),
-        t2: SVector::<f64, 9>::from_iterator(t.iter().flat_map(|v| v.iter().copied())),
-        t1: SVector::<f64, 4>::new(t[0].x, t[0].z, t[1].x, t[1].z),
-    }
+/// Solves a 2-DOF variant's system A u = b at γ.
+fn solve5(s: rigid_peg::LinearSystem<f64>, gamma: f64) -> Result<Unknowns, RigidError> {
+    let x = solve::<5>(&s.a, &s.b, gamma)?;
+    Ok(Unknowns {
+        head: Vector2::new(x[0], x[1]),
+        normal: [x[2], x[3], x[4]],
+    })
+}
+
+/// Solves a planar variant's system A u = b at γ: the ψ part is 0 and
+/// N_B1 = N_B2 = N_B.
+fn solve3(s: rigid_peg_planar::LinearSystem<f64>, gamma: f64) -> Result<Unknowns, RigidError> {
+    let x = solve::<3>(&s.a, &s.b, gamma)?;
+    Ok(Unknowns {
+        head: Vector2::new(x[0], 0.0),
+        normal: [x[1], x[2], x[2]],
+    })
 }
 
 /// Forward dynamics: (γ̈, ψ̈) and the normal forces at state (q, q̇) under
@@ -204,25 +224,50 @@ pub fn forward(
     qdot: Vector2<f64>,
     t: &[Vector3<f64>; 3],
 ) -> Result<Accelerations, RigidError> {
-    let gamma0 = check_state(p, q, qdot)?;
+    let params = checked(p, q, qdot)?;
     variant.check(p, loads, q[1], qdot[1], t)?;
-    let a = args(p, gamma0, loads, q, qdot, t);
+    let pv = params.into();
     let gamma = q[0];
-    let two = |(a, b)| solve::<5>(&a, &b, gamma);
-    let one = |(a, b)| solve::<3>(&a, &b, gamma);
-    let (qdd, normal) = match variant {
-        Variant::Full => split5(two(rigid_peg::forward(&a.x2, &a.p, &a.loads2, &a.t2))?),
-        Variant::Frictionless => split5(two(rigid_peg_frictionless::forward(
-            &a.x2, &a.p, &a.loads2,
-        ))?),
-        Variant::Planar => split3(one(rigid_peg_planar::forward(
-            &a.x1, &a.p, &a.loads1, &a.t1,
-        ))?),
-        Variant::PlanarFrictionless => split3(one(rigid_peg_planar_frictionless::forward(
-            &a.x1, &a.p, &a.loads1,
-        ))?),
+    let u = match variant {
+        Variant::Full => solve5(
+            rigid_peg::forward(
+                &state(q, qdot).into(),
+                &pv,
+                &rigid_peg::Loads::from(loads).into(),
+                &directions(t).into(),
+            ),
+            gamma,
+        )?,
+        Variant::Frictionless => solve5(
+            rigid_peg_frictionless::forward(
+                &state(q, qdot).into(),
+                &pv,
+                &rigid_peg::Loads::from(loads).into(),
+            ),
+            gamma,
+        )?,
+        Variant::Planar => solve3(
+            rigid_peg_planar::forward(
+                &planar_state(q, qdot).into(),
+                &pv,
+                &planar_loads(loads, q[1]).into(),
+                &planar_friction(t).into(),
+            ),
+            gamma,
+        )?,
+        Variant::PlanarFrictionless => solve3(
+            rigid_peg_planar_frictionless::forward(
+                &planar_state(q, qdot).into(),
+                &pv,
+                &planar_loads(loads, q[1]).into(),
+            ),
+            gamma,
+        )?,
     };
-    Ok(Accelerations { qdd, normal })
+    Ok(Accelerations {
+        qdd: u.head,
+        normal: u.normal,
+    })
 }
 
 /// Prescribed motion: the moments (M_γ, M_ψ) that drive (q̈ given) and the
@@ -240,7 +285,7 @@ pub fn prescribed(
     qdd: Vector2<f64>,
     t: &[Vector3<f64>; 3],
 ) -> Result<Reactions, RigidError> {
-    let gamma0 = check_state(p, q, qdot)?;
+    let params = checked(p, q, qdot)?;
     let loads = Loads {
         m_gamma: 0.0,
         m_psi: 0.0,
@@ -257,41 +302,54 @@ pub fn prescribed(
             reason: "must be finite",
         });
     }
-    let a = args(p, gamma0, &loads, q, qdot, t);
+    let pv = params.into();
     let (qdd2, qdd1) = (qdd, SVector::<f64, 1>::new(qdd[0]));
     let gamma = q[0];
-    let two = |(a, b)| solve::<5>(&a, &b, gamma);
-    let one = |(a, b)| solve::<3>(&a, &b, gamma);
-    let (moments, normal) = match variant {
-        Variant::Full => split5(two(rigid_peg::prescribed(
-            &a.x2, &qdd2, &a.p, &a.loads2, &a.t2,
-        ))?),
-        Variant::Frictionless => split5(two(rigid_peg_frictionless::prescribed(
-            &a.x2, &qdd2, &a.p, &a.loads2,
-        ))?),
-        Variant::Planar => split3(one(rigid_peg_planar::prescribed(
-            &a.x1, &qdd1, &a.p, &a.loads1, &a.t1,
-        ))?),
-        Variant::PlanarFrictionless => split3(one(rigid_peg_planar_frictionless::prescribed(
-            &a.x1, &qdd1, &a.p, &a.loads1,
-        ))?),
+    let u = match variant {
+        Variant::Full => solve5(
+            rigid_peg::prescribed(
+                &state(q, qdot).into(),
+                &qdd2,
+                &pv,
+                &rigid_peg::Loads::from(&loads).into(),
+                &directions(t).into(),
+            ),
+            gamma,
+        )?,
+        Variant::Frictionless => solve5(
+            rigid_peg_frictionless::prescribed(
+                &state(q, qdot).into(),
+                &qdd2,
+                &pv,
+                &rigid_peg::Loads::from(&loads).into(),
+            ),
+            gamma,
+        )?,
+        Variant::Planar => solve3(
+            rigid_peg_planar::prescribed(
+                &planar_state(q, qdot).into(),
+                &qdd1,
+                &pv,
+                &planar_loads(&loads, q[1]).into(),
+                &planar_friction(t).into(),
+            ),
+            gamma,
+        )?,
+        Variant::PlanarFrictionless => solve3(
+            rigid_peg_planar_frictionless::prescribed(
+                &planar_state(q, qdot).into(),
+                &qdd1,
+                &pv,
+                &planar_loads(&loads, q[1]).into(),
+            ),
+            gamma,
+        )?,
     };
     Ok(Reactions {
-        m_gamma: moments[0],
-        m_psi: moments[1],
-        normal,
+        m_gamma: u.head[0],
+        m_psi: u.head[1],
+        normal: u.normal,
     })
-}
-
-/// [q̈ or M (2); N (3)] from the 2-DOF unknowns.
-fn split5(x: SVector<f64, 5>) -> (Vector2<f64>, [f64; 3]) {
-    (Vector2::new(x[0], x[1]), [x[2], x[3], x[4]])
-}
-
-/// [q̈ or M (2, the ψ part 0); N (3, N_B1 = N_B2 = N_B)] from the planar
-/// unknowns.
-fn split3(x: SVector<f64, 3>) -> (Vector2<f64>, [f64; 3]) {
-    (Vector2::new(x[0], 0.0), [x[1], x[2], x[2]])
 }
 
 /// Material velocity of the peg at K, B1, B2 in rotating components (m/s)
@@ -305,23 +363,14 @@ pub fn contact_velocities(
     q: Vector2<f64>,
     qdot: Vector2<f64>,
 ) -> Result<[Vector3<f64>; 3], RigidError> {
-    let gamma0 = check_state(p, q, qdot)?;
-    let a = args(
-        p,
-        gamma0,
-        &Loads::default(),
-        q,
-        qdot,
-        &[Vector3::zeros(); 3],
-    );
+    let pv = checked(p, q, qdot)?.into();
+    let (x2, x1) = (state(q, qdot).into(), planar_state(q, qdot).into());
     let v = match variant {
-        Variant::Full => rigid_peg::contact_velocities(&a.x2, &a.p),
-        Variant::Frictionless => rigid_peg_frictionless::contact_velocities(&a.x2, &a.p),
+        Variant::Full => rigid_peg::contact_velocities(&x2, &pv),
+        Variant::Frictionless => rigid_peg_frictionless::contact_velocities(&x2, &pv),
         _ if qdot[1] != 0.0 => return Err(variant.refuse("psidot is not zero")),
-        Variant::Planar => rigid_peg_planar::contact_velocities(&a.x1, &a.p),
-        Variant::PlanarFrictionless => {
-            rigid_peg_planar_frictionless::contact_velocities(&a.x1, &a.p)
-        }
+        Variant::Planar => rigid_peg_planar::contact_velocities(&x1, &pv),
+        Variant::PlanarFrictionless => rigid_peg_planar_frictionless::contact_velocities(&x1, &pv),
     };
     Ok([0, 1, 2].map(|i| v.row(i).transpose()))
 }

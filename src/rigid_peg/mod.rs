@@ -25,6 +25,7 @@
 pub mod dynamics;
 pub mod forward;
 pub mod forward_events;
+mod generated_inputs;
 pub mod generated_model;
 pub mod kinematics;
 pub mod modes;

@@ -2,6 +2,7 @@
 //!
 //! All quantities in SI units (m, kg, s, N, N·m, rad).
 
+use crate::generated::rigid_peg as generated;
 use crate::rigid_peg::RigidError;
 
 /// Dimensions, mass and friction of the peg and the hole.
@@ -118,32 +119,48 @@ impl PegParams {
         0.5 * self.mass * r * r
     }
 
-    /// The parameter vector in the order the generated code takes it:
-    /// `[D, d, H, m, g, f, γ0]`.
+    /// The parameter vector the generated functions take
+    /// ([`generated::Params`], γ0 from [`PegParams::gamma0`]).
     pub fn to_vector(&self) -> nalgebra::SVector<f64, 7> {
-        self.to_vector_with_gamma0(self.gamma0())
-    }
-
-    /// As [`PegParams::to_vector`] with γ0 already computed (it must be
-    /// [`PegParams::gamma0`]: the generated code trusts it).
-    pub fn to_vector_with_gamma0(&self, gamma0: f64) -> nalgebra::SVector<f64, 7> {
-        nalgebra::SVector::<f64, 7>::from([
-            self.hole_diameter,
-            self.peg_diameter,
-            self.height,
-            self.mass,
-            self.gravity,
-            self.friction,
-            gamma0,
-        ])
+        generated::Params::from(self).into()
     }
 }
 
 impl Loads {
-    /// The load vector in the order the generated code takes it:
-    /// `[M_γ, M_ψ, F_x, F_y, F_z]`.
+    /// The load vector the generated 2-DOF functions take
+    /// ([`generated::Loads`]).
     pub fn to_vector(&self) -> nalgebra::SVector<f64, 5> {
-        let [fx, fy, fz] = self.force;
-        nalgebra::SVector::<f64, 5>::from([self.m_gamma, self.m_psi, fx, fy, fz])
+        generated::Loads::from(self).into()
+    }
+}
+
+impl From<&PegParams> for generated::Params<f64> {
+    /// The generated model's parameters, with γ0 = arccos(d/D) computed
+    /// once here ([`PegParams::gamma0`]; the generated code trusts it).
+    fn from(p: &PegParams) -> Self {
+        generated::Params {
+            D_hole: p.hole_diameter,
+            d_peg: p.peg_diameter,
+            H: p.height,
+            m: p.mass,
+            g: p.gravity,
+            f: p.friction,
+            gamma0: p.gamma0(),
+        }
+    }
+}
+
+impl From<&Loads> for generated::Loads<f64> {
+    /// The loads of the 2-DOF variants: both moments and the fixed-frame
+    /// force.
+    fn from(l: &Loads) -> Self {
+        let [fx, fy, fz] = l.force;
+        generated::Loads {
+            M_gamma: l.m_gamma,
+            M_psi: l.m_psi,
+            F_x: fx,
+            F_y: fy,
+            F_z: fz,
+        }
     }
 }

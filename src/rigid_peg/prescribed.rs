@@ -10,29 +10,10 @@
 use nalgebra::{Vector2, Vector3};
 
 use crate::rigid_peg::dynamics::{friction_directions, prescribed_system, solve};
+pub use crate::rigid_peg::generated_model::Reactions;
 use crate::rigid_peg::generated_model::{self, Variant};
 use crate::rigid_peg::kinematics::Pose;
 use crate::rigid_peg::{Loads, PegParams, RigidError};
-
-/// Reactions and driving moments of a prescribed motion.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Reactions {
-    /// Moment conjugate to γ that drives the motion (N·m).
-    pub m_gamma: f64,
-    /// Moment about the hole axis that drives the motion (N·m).
-    pub m_psi: f64,
-    /// Normal reactions `[N_K, N_B1, N_B2]` (N); negative = the contact would
-    /// have to pull.
-    pub normal: [f64; 3],
-}
-
-impl Reactions {
-    /// True when every contact pushes (N ≥ 0): the prescribed motion is
-    /// possible with the peg on three points.
-    pub fn feasible(&self) -> bool {
-        self.normal.iter().all(|&n| n >= 0.0)
-    }
-}
 
 /// Reactions for the state (γ, ψ, γ̇, ψ̇) and accelerations (γ̈, ψ̈), with
 /// the assembly force `loads.force` (its moments are ignored: they are the

@@ -40,11 +40,24 @@ pub struct DoublePendulumParams {
     pub omega2: f64,
 }
 
+impl From<&DoublePendulumParams> for generated::Params<f64> {
+    /// The generated model's masses, rod lengths and gravity.
+    fn from(p: &DoublePendulumParams) -> Self {
+        generated::Params {
+            m1: p.mass1,
+            m2: p.mass2,
+            l1: p.length1,
+            l2: p.length2,
+            g: p.gravity,
+        }
+    }
+}
+
 /// The generated `double_pendulum` model as an [`OdeSystem`], state
 /// `(θ₁, θ₂, θ̇₁, θ̇₂)`.
 #[derive(Debug, Clone, Copy)]
 pub struct DoublePendulumSystem {
-    /// Parameters in the order of [`generated::P_NAMES`]: `m1, m2, l1, l2, g`.
+    /// The generated model's parameter vector ([`generated::Params`]).
     p: SVector<f64, 5>,
 }
 
@@ -52,7 +65,7 @@ impl DoublePendulumSystem {
     /// The system for the given parameters.
     pub fn new(p: &DoublePendulumParams) -> Self {
         DoublePendulumSystem {
-            p: SVector::<f64, 5>::from([p.mass1, p.mass2, p.length1, p.length2, p.gravity]),
+            p: generated::Params::from(p).into(),
         }
     }
 
@@ -74,10 +87,10 @@ impl OdeSystem<4> for DoublePendulumSystem {
     /// `∂ẋ/∂x = [[0, I], [M⁻¹G]]` from the generated mass matrix and
     /// Jacobian terms `G`.
     fn jacobian(&self, t: f64, x: &Vector4<f64>) -> SMatrix<f64, 4, 4> {
-        let (mass, forcing) = generated::dynamics(x, &self.p);
-        let lu = mass.lu();
+        let dynamics = generated::dynamics(x, &self.p);
+        let lu = dynamics.mass.lu();
         let solved = lu
-            .solve(&forcing)
+            .solve(&dynamics.forcing)
             .and_then(|qdd| lu.solve(&generated::jacobian_terms(x, &qdd, &self.p)));
         match solved {
             Some(lower) => {
@@ -102,7 +115,10 @@ mod tests {
 
     #[test]
     fn generated_orders_match_the_adapter() {
-        assert_eq!(generated::P_NAMES, ["m1", "m2", "l1", "l2", "g"]);
+        assert_eq!(
+            generated::Params::<f64>::NAMES,
+            ["m1", "m2", "l1", "l2", "g"]
+        );
         assert_eq!(
             generated::X_NAMES,
             ["theta1", "theta2", "theta1dot", "theta2dot"]

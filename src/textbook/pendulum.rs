@@ -51,10 +51,21 @@ pub fn exact_period(p: &PendulumParams) -> Option<f64> {
     Some(4.0 * (p.length / p.gravity).sqrt() * carlson_rf(0.0, mc, 1.0))
 }
 
+impl From<&PendulumParams> for generated::Params<f64> {
+    /// The generated model's mass, rod length and gravity.
+    fn from(p: &PendulumParams) -> Self {
+        generated::Params {
+            m: p.mass,
+            l: p.length,
+            g: p.gravity,
+        }
+    }
+}
+
 /// The generated `pendulum` model as an [`OdeSystem`], state `(θ, θ̇)`.
 #[derive(Debug, Clone, Copy)]
 pub struct PendulumSystem {
-    /// Parameters in the order of [`generated::P_NAMES`]: `m, l, g`.
+    /// The generated model's parameter vector ([`generated::Params`]).
     p: Vector3<f64>,
 }
 
@@ -62,7 +73,7 @@ impl PendulumSystem {
     /// The system for the given parameters.
     pub fn new(p: &PendulumParams) -> Self {
         PendulumSystem {
-            p: Vector3::new(p.mass, p.length, p.gravity),
+            p: generated::Params::from(p).into(),
         }
     }
 
@@ -84,10 +95,10 @@ impl OdeSystem<2> for PendulumSystem {
     /// `∂ẋ/∂x = [[0, 1], [M⁻¹G]]` from the generated mass matrix and
     /// Jacobian terms `G`.
     fn jacobian(&self, t: f64, x: &Vector2<f64>) -> SMatrix<f64, 2, 2> {
-        let (mass, forcing) = generated::dynamics(x, &self.p);
-        let lu = mass.lu();
+        let dynamics = generated::dynamics(x, &self.p);
+        let lu = dynamics.mass.lu();
         let solved = lu
-            .solve(&forcing)
+            .solve(&dynamics.forcing)
             .and_then(|qdd| lu.solve(&generated::jacobian_terms(x, &qdd, &self.p)));
         match solved {
             Some(row) => SMatrix::<f64, 2, 2>::new(0.0, 1.0, row[(0, 0)], row[(0, 1)]),
@@ -115,8 +126,9 @@ mod tests {
     }
 
     #[test]
-    fn generated_parameter_order_is_m_l_g() {
-        assert_eq!(generated::P_NAMES, ["m", "l", "g"]);
+    fn the_generated_parameters_are_mass_length_gravity() {
+        let p = generated::Params::from(&params(30.0, 0.0));
+        assert_eq!((p.m, p.l, p.g), (0.5, 2.0, 9.81));
         assert_eq!(generated::X_NAMES, ["theta", "thetadot"]);
     }
 

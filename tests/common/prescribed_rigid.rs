@@ -72,7 +72,8 @@ pub fn gaps(sys: &PrescribedPeg, c: &Vector3<f64>) -> [f64; 3] {
     let mut g = [f64::NAN; 3];
     for pair in [Pair::EdgeSide, Pair::RimEdge] {
         for a in Search::default().minima(pair, prm, &x, pv) {
-            let (gap, _, _, _, n, pt, axial) = pair.eval(&x, a, pv);
+            let geo = pair.eval(&x, a, pv);
+            let (gap, n, pt, axial) = (geo.gap, geo.normal, geo.point, geo.axial);
             if !(pair.valid(prm, &axis, &n, &pt, axial) && pair.rim_faces_out(&x, &n, &pt)) {
                 continue;
             }

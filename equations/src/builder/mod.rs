@@ -20,6 +20,7 @@
 //! assert!(out.source.contains("pub fn rhs<T: Real>"));
 //! assert!(out.source.contains("impl pegdyn::system::OdeSystem<2> for System"));
 //! assert!(out.source.contains("pub const X_X_DOT: usize = 1;"));
+//! assert!(out.source.contains("pub struct Params<T>")); // System::new(Params { m, k })
 //! # let dir = std::env::temp_dir().join(format!("pegdyn-builder-doc-{}", std::process::id()));
 //! # std::fs::create_dir_all(&dir).unwrap();
 //! let written = out.write(&dir)?; // generated.rs + codegen_report.txt
@@ -29,60 +30,26 @@
 //! # Ok::<(), pegdyn_equations::GenError>(())
 //! ```
 
-mod adapter;
 pub mod blocks;
+mod finish;
 mod model;
+mod outputs;
+mod types;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
-pub use model::{Coordinate, Layout, ModelBuilder, Outputs};
+pub use model::{Coordinate, ModelBuilder};
+pub use outputs::Outputs;
 
 use crate::GenError;
-use crate::codegen::{self, Report, write_if_changed};
-use crate::graph::Graph;
-use crate::model::Module;
+use crate::codegen::{Entry, Rendered, Written, render};
 use crate::options::Options;
 
-/// One model to generate: its arena, its module and (for models declared
-/// through [`ModelBuilder`]) the adapter layout.
-struct Entry {
-    graph: Graph,
-    module: Module,
-    layout: Option<Layout>,
-}
-
-/// Collects models and generates their code into one file.
+/// Collects the declared models; [`Generator::render`] hands them to the
+/// generator's one pipeline ([`render`]).
 pub struct Generator {
     options: Options,
     entries: Vec<Entry>,
-}
-
-/// The result of [`Generator::render`], in memory.
-#[derive(Clone, Debug)]
-pub struct Rendered {
-    /// The whole generated file.
-    pub source: String,
-    /// Operation counts per function.
-    pub report: Report,
-    /// pegdyn's test call table (`generated_calls.rs`, see
-    /// [`crate::codegen::harness`]); only pegdyn's own test suite includes it.
-    pub calls: String,
-    /// The list of every generated function as a macro
-    /// (`generated_list.rs`, see [`crate::codegen::registry::list`]);
-    /// pegdyn's benches include it.
-    pub list: String,
-    options: Options,
-}
-
-/// What [`Rendered::write`] wrote.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Written {
-    /// Path of the generated source.
-    pub source: PathBuf,
-    /// Path of the report.
-    pub report: PathBuf,
-    /// Whether the source file's bytes changed (and it was rewritten).
-    pub source_written: bool,
 }
 
 impl Generator {
@@ -112,82 +79,23 @@ impl Generator {
         F: for<'g> FnOnce(&mut ModelBuilder<'g>) -> Result<(), GenError>,
     {
         let graph = self.options.graph();
-        let (module, layout) = {
+        let module = {
             let mut b = ModelBuilder::new(&graph, name, doc);
             build(&mut b)?;
             b.finish()?
         };
-        self.entries.push(Entry {
-            graph,
-            module,
-            layout: Some(layout),
-        });
+        self.entries.push(Entry { graph, module });
         Ok(self)
     }
 
-    /// Adds a module built directly from [`Module`] and [`crate::model::FnSpec`]
-    /// values (full control over every function's inputs and outputs; no
-    /// adapter). pegdyn's own models are added this way.
-    pub fn module(&mut self, build: impl for<'g> FnOnce(&'g Graph) -> Module) -> &mut Generator {
-        let graph = self.options.graph();
-        let module = build(&graph);
-        self.entries.push(Entry {
-            graph,
-            module,
-            layout: None,
-        });
-        self
-    }
-
-    /// Adds every model pegdyn ships ([`crate::models::ALL`]), in order.
-    pub fn builtin_models(&mut self) -> &mut Generator {
-        for build in crate::models::ALL {
-            self.module(build);
-        }
-        self
-    }
-
-    /// Verifies and emits every model.
+    /// Verifies and emits every model: [`render`] of the declared models
+    /// with the generator's options.
     ///
     /// # Errors
     /// [`GenError`] naming the module, function and symbol of a model that
     /// fails verification.
     pub fn render(&self) -> Result<Rendered, GenError> {
-        let pairs: Vec<(&Graph, &Module)> =
-            self.entries.iter().map(|e| (&e.graph, &e.module)).collect();
-        let generated = codegen::render(&pairs)?;
-        let mut modules = Vec::with_capacity(generated.modules.len());
-        let mut source = generated.source.clone();
-        for (m, e) in generated.modules.iter().zip(&self.entries) {
-            let code = match &e.layout {
-                Some(l) if l.adapter => {
-                    let spliced = adapter::splice(&m.name, &m.code, adapter::tokens(l))?;
-                    source = source.replacen(&m.code, &spliced, 1);
-                    spliced
-                }
-                _ => m.code.clone(),
-            };
-            modules.push(code);
-        }
-        if !self.options.registry {
-            let names: Vec<&str> = self
-                .entries
-                .iter()
-                .map(|e| e.module.name.as_str())
-                .collect();
-            source = codegen::header(&names, self.options.stable_rewrites);
-            for code in &modules {
-                source.push('\n');
-                source.push_str(code);
-            }
-        }
-        Ok(Rendered {
-            source,
-            report: generated.report,
-            calls: generated.calls,
-            list: generated.list,
-            options: self.options.clone(),
-        })
+        render(&self.entries, &self.options)
     }
 
     /// Evaluates `model::function` with the generator's interpreter (the
@@ -246,26 +154,5 @@ impl Generator {
     /// be written.
     pub fn write(&self, dir: &Path) -> Result<Written, GenError> {
         self.render()?.write(dir)
-    }
-}
-
-impl Rendered {
-    /// Writes the source and the report into `dir` (file names from
-    /// [`Options::source_file`] and [`Options::report_file`]), each only
-    /// when its bytes change, so that an unchanged model does not trigger a
-    /// recompilation of the crate that includes it.
-    ///
-    /// # Errors
-    /// [`GenError::Io`] naming the path that cannot be written.
-    pub fn write(&self, dir: &Path) -> Result<Written, GenError> {
-        let source = dir.join(&self.options.source_file);
-        let report = dir.join(&self.options.report_file);
-        let source_written = write_if_changed(&source, self.source.as_bytes())?;
-        write_if_changed(&report, self.report.to_string().as_bytes())?;
-        Ok(Written {
-            source,
-            report,
-            source_written,
-        })
     }
 }

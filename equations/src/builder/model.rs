@@ -1,13 +1,13 @@
 //! [`ModelBuilder`]: one model declared by name — coordinates, parameters,
-//! dynamics, outputs — and turned into a [`Module`] of functions plus the
-//! layout its ODE adapter needs.
+//! dynamics, functions — with what each symbol means and its unit. The
+//! steps that turn a declaration into a [`Module`](crate::model::Module)
+//! are in `finish.rs`.
 
+use super::outputs::Outputs;
 use crate::GenError;
-use crate::diff;
 use crate::expr::Expr;
-use crate::graph::{Graph, Sym};
-use crate::lagrange;
-use crate::model::{FnSpec, Input, Module, Output, sym_of};
+use crate::graph::{Graph, Sym, SymKind};
+use crate::model::{Output, sym_of};
 
 /// One generalized coordinate `q` with its velocity `q̇` (both state
 /// symbols) and acceleration `q̈` (used inside the Jacobian terms only).
@@ -15,66 +15,15 @@ use crate::model::{FnSpec, Input, Module, Output, sym_of};
 pub struct Coordinate<'g> {
     /// The coordinate `q`.
     pub q: Expr<'g>,
-    /// Its velocity `q̇`, named `<q>_dot`.
+    /// Its velocity `q̇`, named `<q>_dot` unless named otherwise
+    /// ([`ModelBuilder::coordinate_named`]).
     pub v: Expr<'g>,
-    accel: Expr<'g>,
-}
-
-/// Which functions a model's generated module contains.
-///
-/// With [`Outputs::adapter`] on, the functions the adapter needs are
-/// generated whatever the other flags say.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Outputs {
-    /// `rhs(x, p) -> xdot`: the first-order right-hand side ẋ = f(x, p).
-    /// For a Lagrangian model it is emitted in closed form (Cramer's rule)
-    /// for up to three degrees of freedom; beyond, the adapter solves
-    /// M q̈ = f by LU at run time.
-    pub rhs: bool,
-    /// `dynamics(x, p) -> (mass, forcing)`: M and f of M q̈ = f (Lagrangian
-    /// models only).
-    pub mass_forcing: bool,
-    /// The exact Jacobian: `jacobian_terms(x, qdd, p)` (G with
-    /// ∂ẋ/∂x = [[0, I], [M⁻¹G]]) for a Lagrangian model, `jacobian(x, p)`
-    /// (∂f/∂x) for an explicit one.
-    pub jacobian: bool,
-    /// `energy(x, p) -> energy`: T + V for a Lagrangian model, the
-    /// expression given to [`ModelBuilder::energy`] for an explicit one
-    /// (none when it was not given).
-    pub energy: bool,
-    /// The ODE adapter `System` implementing `pegdyn::system::OdeSystem`
-    /// and the layout constants (`X_<NAME>`, `P_<NAME>`, `X_DOCS`, ...).
-    pub adapter: bool,
-}
-
-impl Outputs {
-    /// Everything off: the model emits only the functions given to
-    /// [`ModelBuilder::function`].
-    pub const NONE: Outputs = Outputs {
-        rhs: false,
-        mass_forcing: false,
-        jacobian: false,
-        energy: false,
-        adapter: false,
-    };
-}
-
-impl Default for Outputs {
-    /// Everything on.
-    fn default() -> Outputs {
-        Outputs {
-            rhs: true,
-            mass_forcing: true,
-            jacobian: true,
-            energy: true,
-            adapter: true,
-        }
-    }
+    pub(super) accel: Expr<'g>,
 }
 
 /// How the model's motion is given.
 #[derive(Clone, Debug)]
-enum Dynamics<'g> {
+pub(super) enum Dynamics<'g> {
     /// T, V and one generalized force per coordinate.
     Lagrange {
         t: Expr<'g>,
@@ -85,56 +34,55 @@ enum Dynamics<'g> {
     Explicit(Vec<Expr<'g>>),
 }
 
-/// What the ODE adapter of a model needs to know, besides its functions.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Layout {
-    /// The model (module) name.
-    pub model: String,
-    /// State component names, in order.
-    pub state: Vec<String>,
-    /// What each state component is, with units.
-    pub state_docs: Vec<String>,
-    /// Parameter names, in order.
-    pub params: Vec<String>,
-    /// What each parameter is, with units.
-    pub param_docs: Vec<String>,
-    /// `Some(n)`: Lagrangian with `n` degrees of freedom (state (q, q̇)).
-    /// `None`: explicit first-order system.
-    pub dof: Option<usize>,
-    /// Whether a closed-form `rhs` function was generated.
-    pub closed_rhs: bool,
-    /// Whether the functions take the time `t` (explicitly time-dependent).
-    pub time: bool,
-    /// Whether to emit the adapter.
-    pub adapter: bool,
+/// A function declared with [`ModelBuilder::function`] or
+/// [`ModelBuilder::output`]: its own inputs and its named, documented
+/// outputs.
+pub(super) struct Function<'g> {
+    pub(super) name: String,
+    pub(super) doc: String,
+    pub(super) inputs: Vec<(String, Vec<Expr<'g>>)>,
+    /// (name, doc, value).
+    pub(super) outputs: Vec<(String, String, Output)>,
+    /// Whether the inputs are `x` only (an [`ModelBuilder::output`]).
+    pub(super) of_state: bool,
 }
 
 /// Declares one model. Obtained inside [`super::Generator::model`]; every
 /// expression it hands out lives in the model's own [`Graph`].
 pub struct ModelBuilder<'g> {
-    g: &'g Graph,
-    name: String,
-    doc: String,
-    reference: String,
-    coords: Vec<(Coordinate<'g>, String)>,
-    states: Vec<(Expr<'g>, String)>,
-    params: Vec<(Expr<'g>, String)>,
-    time: Option<Expr<'g>>,
-    dynamics: Option<Dynamics<'g>>,
-    energy: Option<Expr<'g>>,
-    outputs: Outputs,
-    extras: Vec<(String, String, Output)>,
-    functions: Vec<Function<'g>>,
+    pub(super) g: &'g Graph,
+    pub(super) name: String,
+    pub(super) doc: String,
+    pub(super) reference: String,
+    pub(super) coords: Vec<Coordinate<'g>>,
+    pub(super) states: Vec<Expr<'g>>,
+    pub(super) params: Vec<Expr<'g>>,
+    /// Name of the parameter vector input (`p` unless renamed).
+    pub(super) param_input: String,
+    /// What each declared symbol is, with its unit.
+    pub(super) docs: Vec<(Sym, String)>,
+    pub(super) time: Option<Expr<'g>>,
+    pub(super) dynamics: Option<Dynamics<'g>>,
+    pub(super) energy: Option<Expr<'g>>,
+    pub(super) outputs: Outputs,
+    pub(super) functions: Vec<Function<'g>>,
+    /// Inputs given a typed struct: (input, struct name, doc).
+    pub(super) typed: Vec<(String, String, String)>,
+    /// Inputs whose struct is an earlier module's: (input, module).
+    pub(super) shared_types: Vec<(String, String)>,
+    /// Output structs shared by several functions: (struct name, doc,
+    /// functions).
+    pub(super) shared_outputs: Vec<(String, String, Vec<String>)>,
+    /// Output structs that are an earlier module's: (struct name, module).
+    pub(super) shared_out_types: Vec<(String, String)>,
     names: Vec<String>,
 }
 
-/// A function declared with [`ModelBuilder::function`]: its own inputs
-/// (before the parameters) and several named outputs.
-struct Function<'g> {
-    name: String,
-    doc: String,
-    inputs: Vec<(String, Vec<Expr<'g>>)>,
-    outputs: Vec<(String, Output)>,
+/// True for an ASCII identifier (letters, digits, `_`; a letter first).
+pub(super) fn is_ident(n: &str) -> bool {
+    !n.is_empty()
+        && n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
+        && n.starts_with(|c: char| c.is_ascii_alphabetic())
 }
 
 impl<'g> ModelBuilder<'g> {
@@ -147,12 +95,17 @@ impl<'g> ModelBuilder<'g> {
             coords: Vec::new(),
             states: Vec::new(),
             params: Vec::new(),
+            param_input: "p".to_owned(),
+            docs: Vec::new(),
             time: None,
             dynamics: None,
             energy: None,
             outputs: Outputs::default(),
-            extras: Vec::new(),
             functions: Vec::new(),
+            typed: Vec::new(),
+            shared_types: Vec::new(),
+            shared_outputs: Vec::new(),
+            shared_out_types: Vec::new(),
             names: Vec::new(),
         }
     }
@@ -163,7 +116,12 @@ impl<'g> ModelBuilder<'g> {
         self.g
     }
 
-    fn error(&self, function: &str, symbol: &str, reason: impl Into<String>) -> GenError {
+    pub(super) fn error(
+        &self,
+        function: &str,
+        symbol: &str,
+        reason: impl Into<String>,
+    ) -> GenError {
         GenError::Model {
             model: self.name.clone(),
             function: function.to_owned(),
@@ -173,10 +131,7 @@ impl<'g> ModelBuilder<'g> {
     }
 
     fn claim(&mut self, name: &str) -> Result<(), GenError> {
-        let ok = !name.is_empty()
-            && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
-            && name.starts_with(|c: char| c.is_ascii_alphabetic());
-        if !ok {
+        if !is_ident(name) {
             return Err(self.error("declaration", name, "not an ASCII identifier"));
         }
         if name == "t" || self.names.iter().any(|n| n == name) {
@@ -190,39 +145,113 @@ impl<'g> ModelBuilder<'g> {
         Ok(())
     }
 
+    /// A new symbol `name` of `kind`, documented by `doc`.
+    fn declare(&mut self, name: &str, kind: SymKind, doc: &str) -> Result<Expr<'g>, GenError> {
+        self.claim(name)?;
+        if let Some(s) = self.g.lookup(name)
+            && self.g.sym_info(s).kind != kind
+        {
+            return Err(self.error(
+                "declaration",
+                name,
+                "already a symbol of another kind in this model's arena",
+            ));
+        }
+        let e = match kind {
+            SymKind::Param => self.g.param(name),
+            _ => self.g.var(name),
+        };
+        self.docs.push((sym_of(e), doc.to_owned()));
+        Ok(e)
+    }
+
+    /// Replaces the model's doc comment (the one given to
+    /// [`super::Generator::model`]), for a description computed while the
+    /// model is declared.
+    pub fn doc(&mut self, text: &str) {
+        self.doc = text.to_owned();
+    }
+
     /// Declares the generalized coordinate `name` and its velocity
     /// `<name>_dot`; `doc` says what it is, with units (it becomes the
     /// state's `X_DOCS` entry). Coordinates come first in the state
     /// `x = (q₁..qₙ, q̇₁..q̇ₙ)`, in declaration order.
     pub fn coordinate(&mut self, name: &str, doc: &str) -> Result<Coordinate<'g>, GenError> {
-        self.claim(name)?;
-        let vname = format!("{name}_dot");
-        self.claim(&vname)?;
-        let c = Coordinate {
-            q: self.g.var(name),
-            v: self.g.var(&vname),
-            accel: self.g.var(&format!("{name}_ddot")),
-        };
-        self.coords.push((c, doc.to_owned()));
+        let (v, a) = (format!("{name}_dot"), format!("{name}_ddot"));
+        self.coordinate_named(name, &v, &a, doc)
+    }
+
+    /// [`ModelBuilder::coordinate`] with the velocity and acceleration named
+    /// `velocity` and `acceleration` (`thetadot`, `thetaddot`) instead of
+    /// `<name>_dot` and `<name>_ddot`.
+    pub fn coordinate_named(
+        &mut self,
+        name: &str,
+        velocity: &str,
+        acceleration: &str,
+        doc: &str,
+    ) -> Result<Coordinate<'g>, GenError> {
+        let q = self.declare(name, SymKind::Var, doc)?;
+        let v = self.declare(velocity, SymKind::Var, &format!("rate of `{name}` ({doc})"))?;
+        let accel = self.declare(
+            acceleration,
+            SymKind::Var,
+            &format!("acceleration of `{name}` ({doc})"),
+        )?;
+        let c = Coordinate { q, v, accel };
+        self.coords.push(c);
         Ok(c)
     }
 
     /// Declares the state component `name` of an explicit first-order
     /// model ([`ModelBuilder::explicit`]), with `doc` (meaning, units).
     pub fn state(&mut self, name: &str, doc: &str) -> Result<Expr<'g>, GenError> {
-        self.claim(name)?;
-        let s = self.g.var(name);
-        self.states.push((s, doc.to_owned()));
+        let s = self.declare(name, SymKind::Var, doc)?;
+        self.states.push(s);
         Ok(s)
     }
 
-    /// Declares the parameter `name` (component of `p`, in declaration
-    /// order), with `doc` (meaning, units).
+    /// Declares the parameter `name` (component of the parameter vector
+    /// `p`, in declaration order), with `doc` (meaning, units).
     pub fn parameter(&mut self, name: &str, doc: &str) -> Result<Expr<'g>, GenError> {
-        self.claim(name)?;
-        let p = self.g.param(name);
-        self.params.push((p, doc.to_owned()));
+        let p = self.declare(name, SymKind::Param, doc)?;
+        self.params.push(p);
         Ok(p)
+    }
+
+    /// Names the parameter vector input `name` instead of `p` (in every
+    /// function's signature and in `<NAME>_NAMES`).
+    ///
+    /// # Errors
+    /// [`GenError::Model`] for a name that is not an ASCII identifier.
+    pub fn parameters_named(&mut self, name: &str) -> Result<(), GenError> {
+        if !is_ident(name) {
+            return Err(self.error("declaration", name, "not an ASCII identifier"));
+        }
+        self.param_input = name.to_owned();
+        Ok(())
+    }
+
+    /// The declared parameters, in the order of the parameter vector: to
+    /// place the vector explicitly among a [`ModelBuilder::function`]'s
+    /// inputs.
+    pub fn parameters(&self) -> Vec<Expr<'g>> {
+        self.params.clone()
+    }
+
+    /// The name of the parameter vector input (`p` unless renamed with
+    /// [`ModelBuilder::parameters_named`]).
+    pub fn parameter_input(&self) -> &str {
+        &self.param_input
+    }
+
+    /// Declares a parameter-like input symbol `name` that is not part of the
+    /// parameter vector: a value constant during a call that a function
+    /// takes in an input of its own (an applied load, a given friction
+    /// direction), with `doc` (meaning, units). Like a parameter it is
+    /// treated as constant by the simplifier.
+    pub fn input_parameter(&mut self, name: &str, doc: &str) -> Result<Expr<'g>, GenError> {
+        self.declare(name, SymKind::Param, doc)
     }
 
     /// The time `t` (s). Using it makes the model explicitly time-dependent:
@@ -262,7 +291,8 @@ impl<'g> ModelBuilder<'g> {
     }
 
     /// A reference (book, paper, equation numbers) appended to the doc
-    /// comment of every generated function.
+    /// comment of every generated function of the dynamics and of
+    /// [`ModelBuilder::output`].
     pub fn reference(&mut self, text: &str) {
         self.reference = text.to_owned();
     }
@@ -270,7 +300,13 @@ impl<'g> ModelBuilder<'g> {
     /// A named extra function `name(x, p[, t]) -> output` (for example a
     /// contact force or a penetration), documented by `doc`.
     pub fn output(&mut self, name: &str, doc: &str, output: Output) {
-        self.extras.push((name.to_owned(), doc.to_owned(), output));
+        self.functions.push(Function {
+            name: name.to_owned(),
+            doc: doc.to_owned(),
+            inputs: Vec::new(),
+            outputs: vec![(name.to_owned(), doc.to_owned(), output)],
+            of_state: true,
+        });
     }
 
     /// Declares the input symbol `name` that is neither a state component
@@ -278,20 +314,23 @@ impl<'g> ModelBuilder<'g> {
     /// from outside), with `doc` (meaning, units); it is used in the inputs
     /// of [`ModelBuilder::function`].
     pub fn symbol(&mut self, name: &str, doc: &str) -> Result<Expr<'g>, GenError> {
-        self.claim(name)?;
-        let _ = doc;
-        Ok(self.g.var(name))
+        self.declare(name, SymKind::Var, doc)
     }
 
-    /// A named function `name(inputs..., p[, t]) -> (outputs...)` with its
-    /// own inputs (each a name and its symbols, declared with
-    /// [`ModelBuilder::state`] or [`ModelBuilder::symbol`]) followed by the
-    /// parameter vector `p` (and the time when the model uses it), and
-    /// several named outputs; documented by `doc`. Functions are emitted
-    /// after the dynamics' functions, in declaration order. A model made
-    /// only of such functions needs no dynamics when its adapter is off
-    /// ([`Outputs::adapter`]): its right-hand side can then take an input
-    /// besides the state, such as a wrench summed at run time.
+    /// A named function `name(inputs..) -> outputs` with its own inputs
+    /// (each a name and its symbols, declared with [`ModelBuilder::state`],
+    /// [`ModelBuilder::symbol`], [`ModelBuilder::parameter`] or
+    /// [`ModelBuilder::input_parameter`]) and several named outputs, each
+    /// `(name, doc with units, value)`; documented by `doc`.
+    ///
+    /// The parameter vector `p` (and the time, when the model uses it) is
+    /// appended to the inputs unless one of them is made of parameters only
+    /// (the vector itself, [`ModelBuilder::parameters`], placed where the
+    /// signature needs it, or a group of parameter-like inputs). Functions
+    /// are emitted after the dynamics' functions, in declaration order. A
+    /// model made only of such functions needs no dynamics when its adapter
+    /// is off ([`Outputs::adapter`]): its right-hand side can then take an
+    /// input besides the state, such as a wrench summed at run time.
     ///
     /// # Errors
     /// [`GenError::Model`] for a function or input name that is not an
@@ -301,18 +340,13 @@ impl<'g> ModelBuilder<'g> {
         name: &str,
         doc: &str,
         inputs: &[(&str, &[Expr<'g>])],
-        outputs: Vec<(&str, Output)>,
+        outputs: Vec<(&str, &str, Output)>,
     ) -> Result<(), GenError> {
-        let ident = |n: &str| {
-            !n.is_empty()
-                && n.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
-                && n.starts_with(|c: char| c.is_ascii_alphabetic())
-        };
-        if !ident(name) || self.functions.iter().any(|f| f.name == name) {
+        if !is_ident(name) || self.functions.iter().any(|f| f.name == name) {
             return Err(self.error(name, name, "not an identifier, or declared twice"));
         }
-        if let Some((bad, _)) = inputs.iter().find(|(n, _)| !ident(n) || *n == "p") {
-            return Err(self.error(name, bad, "input name not an identifier (or `p`)"));
+        if let Some((bad, _)) = inputs.iter().find(|(n, _)| !is_ident(n)) {
+            return Err(self.error(name, bad, "input name not an identifier"));
         }
         self.functions.push(Function {
             name: name.to_owned(),
@@ -323,263 +357,33 @@ impl<'g> ModelBuilder<'g> {
                 .collect(),
             outputs: outputs
                 .into_iter()
-                .map(|(n, o)| (n.to_owned(), o))
+                .map(|(n, d, o)| (n.to_owned(), d.to_owned(), o))
                 .collect(),
+            of_state: false,
         });
         Ok(())
     }
 
     /// The state symbols, in order.
-    fn state_exprs(&self) -> Vec<Expr<'g>> {
+    pub(super) fn state_exprs(&self) -> Vec<Expr<'g>> {
         if self.coords.is_empty() {
-            return self.states.iter().map(|s| s.0).collect();
+            return self.states.clone();
         }
-        let q = self.coords.iter().map(|c| c.0.q);
-        q.chain(self.coords.iter().map(|c| c.0.v)).collect()
+        let q = self.coords.iter().map(|c| c.q);
+        q.chain(self.coords.iter().map(|c| c.v)).collect()
     }
 
-    /// Builds the module and the adapter layout.
-    pub(crate) fn finish(self) -> Result<(Module, Layout), GenError> {
-        let g = self.g;
-        let functions_only = !self.functions.is_empty() && !self.outputs.adapter;
-        let dynamics = match self.dynamics.clone() {
-            Some(d) => Some(d),
-            None if functions_only => None,
-            None => {
-                return Err(self.error(
-                    "dynamics",
-                    &self.name,
-                    "no dynamics: call `lagrange` or `explicit`",
-                ));
-            }
-        };
-        let state = self.state_exprs();
-        if state.is_empty() && !functions_only {
-            return Err(self.error("state", &self.name, "no coordinate or state declared"));
-        }
-        let mut o = self.outputs;
-        let x = Input::new("x", &state);
-        let p = Input::new("p", &self.params.iter().map(|p| p.0).collect::<Vec<_>>());
-        let t_in = self.time.map(|t| Input::new("t", &[t]));
-        let inputs = |extra: Option<&Input>| {
-            let mut v = vec![x.clone()];
-            v.extend(extra.cloned());
-            v.push(p.clone());
-            v.extend(t_in.clone());
-            v.retain(|i| !i.syms.is_empty());
-            v
-        };
-        let doc = |text: &str| {
-            if self.reference.is_empty() {
-                text.to_owned()
-            } else {
-                format!("{text}\n\n{}", self.reference)
-            }
-        };
-        let time_sym: Option<Sym> = self.time.map(sym_of);
-        let mut fns = Vec::new();
-        let (dof, closed_rhs) = match dynamics {
-            None => (None, false),
-            Some(Dynamics::Lagrange { t, v, forces }) => {
-                if !self.states.is_empty() {
-                    let name = self.states[0].0.to_string();
-                    return Err(self.error(
-                        "lagrange",
-                        &name,
-                        "a `state` in a Lagrangian model (use `coordinate`)",
-                    ));
-                }
-                let n = self.coords.len();
-                if forces.len() != n {
-                    return Err(self.error(
-                        "lagrange",
-                        "forces",
-                        format!("{} generalized forces for {n} coordinates", forces.len()),
-                    ));
-                }
-                let coords: Vec<lagrange::Coord<'g>> = self
-                    .coords
-                    .iter()
-                    .map(|(c, _)| (c.q, c.v, c.accel))
-                    .collect();
-                let lag = lagrange::derive(g, &coords, t, v, &forces);
-                let qdd = Input::new("qdd", &lag.accelerations());
-                if o.adapter {
-                    o.mass_forcing = true;
-                    o.jacobian = true;
-                }
-                if o.mass_forcing {
-                    fns.push(FnSpec::new(
-                        "dynamics",
-                        doc("Mass matrix M(q) and forcing f(q, q̇) of M q̈ = f (Lagrange's equations, derived symbolically)."),
-                        inputs(None),
-                        vec![("mass", Output::symmetric(&lag.mass)), ("forcing", Output::vector(&lag.forcing))],
-                    ));
-                }
-                let rhs = if o.rhs { lag.rhs() } else { None };
-                let closed = rhs.is_some();
-                if let Some(rhs) = rhs {
-                    fns.push(FnSpec::new(
-                        "rhs",
-                        doc("First-order right-hand side ẋ = (q̇, M⁻¹f), M⁻¹f by Cramer's rule."),
-                        inputs(None),
-                        vec![("xdot", Output::vector(&rhs))],
-                    ));
-                }
-                if o.jacobian {
-                    fns.push(FnSpec::new(
-                        "jacobian_terms",
-                        doc("G = ∂f/∂x − Σ_j (∂M_{·j}/∂x) q̈_j (n × 2n) at the accelerations `qdd`;\n\
-                             the state Jacobian is ∂ẋ/∂x = [[0, I], [M⁻¹G]] (one LU solve of M)."),
-                        inputs(Some(&qdd)),
-                        vec![("terms", Output::matrix(&lag.accel_jacobian_terms()))],
-                    ));
-                    if let Some(ts) = time_sym {
-                        let terms: Vec<Expr<'g>> = (0..n)
-                            .map(|i| {
-                                let dm = g.sum(
-                                    lag.accelerations()
-                                        .iter()
-                                        .zip(&lag.mass[i])
-                                        .map(|(&a, &m)| g.expr(diff::diff(g, m.id(), ts)) * a),
-                                );
-                                g.expr(diff::diff(g, lag.forcing[i].id(), ts)) - dm
-                            })
-                            .collect();
-                        fns.push(FnSpec::new(
-                            "time_terms",
-                            doc("∂f/∂t − Σ_j (∂M_{·j}/∂t) q̈_j at the accelerations `qdd`; ∂q̈/∂t = M⁻¹ times it."),
-                            inputs(Some(&qdd)),
-                            vec![("terms", Output::vector(&terms))],
-                        ));
-                    }
-                }
-                if o.energy {
-                    fns.push(FnSpec::new(
-                        "energy",
-                        doc(
-                            "Total mechanical energy T + V (conserved without generalized forces).",
-                        ),
-                        inputs(None),
-                        vec![("energy", Output::scalar(lag.energy))],
-                    ));
-                }
-                (Some(n), closed)
-            }
-            Some(Dynamics::Explicit(rhs)) => {
-                if !self.coords.is_empty() {
-                    let name = self.coords[0].0.q.to_string();
-                    return Err(self.error(
-                        "explicit",
-                        &name,
-                        "a `coordinate` in an explicit model (use `state`)",
-                    ));
-                }
-                if rhs.len() != state.len() {
-                    return Err(self.error(
-                        "explicit",
-                        "rhs",
-                        format!("{} components for a state of {}", rhs.len(), state.len()),
-                    ));
-                }
-                if o.adapter {
-                    o.rhs = true;
-                    o.jacobian = true;
-                }
-                if o.rhs {
-                    fns.push(FnSpec::new(
-                        "rhs",
-                        doc("First-order right-hand side ẋ = f(x, p)."),
-                        inputs(None),
-                        vec![("xdot", Output::vector(&rhs))],
-                    ));
-                }
-                if o.jacobian {
-                    let rows: Vec<Vec<Expr<'g>>> = rhs
-                        .iter()
-                        .map(|f| state.iter().map(|&s| f.diff(s)).collect())
-                        .collect();
-                    fns.push(FnSpec::new(
-                        "jacobian",
-                        doc("Exact Jacobian ∂f/∂x of the right-hand side, entry (i, j) = ∂fᵢ/∂xⱼ."),
-                        inputs(None),
-                        vec![("jacobian", Output::matrix(&rows))],
-                    ));
-                    if let Some(ts) = time_sym {
-                        let dt: Vec<Expr<'g>> = rhs
-                            .iter()
-                            .map(|f| g.expr(diff::diff(g, f.id(), ts)))
-                            .collect();
-                        fns.push(FnSpec::new(
-                            "rhs_t",
-                            doc("Partial time derivative ∂f/∂t of the right-hand side."),
-                            inputs(None),
-                            vec![("rhs_t", Output::vector(&dt))],
-                        ));
-                    }
-                }
-                if let (true, Some(e)) = (o.energy, self.energy) {
-                    fns.push(FnSpec::new(
-                        "energy",
-                        doc("The model's energy (as given to the builder)."),
-                        inputs(None),
-                        vec![("energy", Output::scalar(e))],
-                    ));
-                }
-                (None, false)
-            }
-        };
-        for (name, text, output) in &self.extras {
-            fns.push(FnSpec::new(
-                name,
-                doc(text),
-                inputs(None),
-                vec![(name.as_str(), output.clone())],
-            ));
-        }
-        for f in &self.functions {
-            let mut ins: Vec<Input> = f.inputs.iter().map(|(n, e)| Input::new(n, e)).collect();
-            ins.push(p.clone());
-            ins.extend(t_in.clone());
-            ins.retain(|i| !i.syms.is_empty());
-            fns.push(FnSpec::new(
-                &f.name,
-                doc(&f.doc),
-                ins,
-                f.outputs
-                    .iter()
-                    .map(|(n, o)| (n.as_str(), o.clone()))
-                    .collect(),
-            ));
-        }
-        let state_docs = match dof {
-            Some(_) => {
-                let q = self.coords.iter().map(|(_, d)| d.clone());
-                q.chain(
-                    self.coords
-                        .iter()
-                        .map(|(c, d)| format!("rate of `{}` ({d})", c.q)),
-                )
-                .collect()
-            }
-            None => self.states.iter().map(|(_, d)| d.clone()).collect(),
-        };
-        let layout = Layout {
-            model: self.name.clone(),
-            state: state.iter().map(|s| s.to_string()).collect(),
-            state_docs,
-            params: self.params.iter().map(|p| p.0.to_string()).collect(),
-            param_docs: self.params.iter().map(|p| p.1.clone()).collect(),
-            dof,
-            closed_rhs,
-            time: self.time.is_some(),
-            adapter: o.adapter,
-        };
-        let module = Module {
-            name: self.name,
-            doc: self.doc,
-            functions: fns,
-        };
-        Ok((module, layout))
+    /// The declared doc of `e` (empty for an undeclared symbol).
+    pub(super) fn doc_of(&self, e: Expr<'g>) -> String {
+        self.doc_of_sym(sym_of(e))
+    }
+
+    /// The declared doc of symbol `s` (empty for an undeclared symbol).
+    pub(super) fn doc_of_sym(&self, s: Sym) -> String {
+        self.docs
+            .iter()
+            .find(|(d, _)| *d == s)
+            .map(|(_, d)| d.clone())
+            .unwrap_or_default()
     }
 }

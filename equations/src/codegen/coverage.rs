@@ -85,9 +85,9 @@ pub fn module(g: &Graph) -> Module {
             ("s", Output::scalar(-a + b - c * k / (1.0 + k))),
         ],
     );
-    Module {
-        name: "emit_coverage".to_owned(),
-        doc: "Emitter coverage model (test only).".to_owned(),
-        functions: vec![branches, calls, powers],
-    }
+    Module::new(
+        "emit_coverage",
+        "Emitter coverage model (test only).",
+        vec![branches, calls, powers],
+    )
 }

@@ -18,42 +18,13 @@ use proc_macro2::{Ident, Literal, TokenStream};
 use quote::quote;
 
 use super::lower::product_key;
+use super::names::{Names, snake_case};
 use super::ops::OpCounts;
-use super::schedule::{Names, Schedule, pow_form, snake_case};
-use super::tokens::{constant, ident, let_base, lit_signed, one};
+use super::tokens::{Frag, Prec, constant, ident, let_base, lit_signed, one};
+use super::value_names::{ValueNames, scale_prefix};
 use crate::graph::func::is_repeated_mul;
 use crate::graph::{Graph, Id, Node, PowForm, Sym, Unary};
-
-/// Binding strength of an emitted fragment, loosest first.
-#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Debug)]
-pub(crate) enum Prec {
-    /// `a + b`, `a - b`
-    Sum,
-    /// `a * b`, `a / b`
-    Product,
-    /// `-a`
-    Prefix,
-    /// names, literals, calls, parenthesized expressions
-    Atom,
-}
-
-/// An emitted expression and how tightly it binds.
-pub(crate) struct Frag {
-    pub(crate) ts: TokenStream,
-    prec: Prec,
-}
-
-impl Frag {
-    pub(crate) fn new(ts: TokenStream, prec: Prec) -> Frag {
-        Frag { ts, prec }
-    }
-
-    /// The tokens, parenthesized if they bind looser than `min`.
-    fn at(self, min: Prec) -> TokenStream {
-        let ts = self.ts;
-        if self.prec < min { quote!((#ts)) } else { ts }
-    }
-}
+use crate::schedule::{Schedule, factor_sum, negated, pow_form};
 
 /// Emits the expressions of one function.
 pub struct Emitter<'a> {
@@ -111,21 +82,6 @@ fn labelled_products(g: &Graph) -> ProductNames {
     out
 }
 
-/// How a value relates to a named product with the same leaves, as a name
-/// prefix: the ratio of the coefficients (`−x` is `neg_x`, `x/2` is
-/// `half_x`); `None` for other ratios.
-pub(crate) fn scale_prefix(ratio: f64) -> Option<&'static str> {
-    Some(match ratio {
-        1.0 => "",
-        -1.0 => "neg_",
-        0.5 => "half_",
-        -0.5 => "neg_half_",
-        2.0 => "twice_",
-        -2.0 => "neg_twice_",
-        _ => return None,
-    })
-}
-
 /// The model's name for the value `id` (snake_case): its own label, or
 /// that of a named product with the same leaves, prefixed by the scale
 /// between them (`neg_<name>` for its negation, `half_<name>`, …).
@@ -154,7 +110,7 @@ impl<'a> Emitter<'a> {
     ) -> Emitter<'a> {
         let partner = sin_cos_partners(g, sched);
         let by_product = labelled_products(g);
-        let by_value = super::value_names::ValueNames::new(g, &sched.lets);
+        let by_value = ValueNames::new(g, &sched.lets);
         let mut out: Vec<Option<Ident>> = vec![None; sched.live.len()];
         // Readable names (symbols, model names and functions of them).
         let mut readable: HashMap<Id, String> = HashMap::new();
@@ -288,10 +244,10 @@ impl<'a> Emitter<'a> {
 
     /// A sum, terms in the given order; negative-coefficient
     /// terms subtracted; common factors taken out as
-    /// [`crate::eval::factor_sum`] says (as the interpreter does).
+    /// [`factor_sum`] says (as the interpreter does).
     fn sum(&mut self, xs: &[Id]) -> Frag {
         let sched = self.sched;
-        let Some(f) = crate::eval::factor_sum(self.g, xs, |t| sched.is_named(t)) else {
+        let Some(f) = factor_sum(self.g, xs, |t| sched.is_named(t)) else {
             let mut terms: Vec<(bool, Frag)> = xs.iter().map(|&x| self.signed_term(x)).collect();
             positive_first(&mut terms);
             return self.signed_sum(terms);
@@ -315,7 +271,7 @@ impl<'a> Emitter<'a> {
     /// signs flipped (`b - a` for `−(a − b)`; two terms swap so that the
     /// positive one leads, which is exact), when `S` is not factored.
     fn negated_sum(&mut self, id: Id) -> Option<Frag> {
-        let s = super::lower::sign::negated(self.g, id)?;
+        let s = negated(self.g, id)?;
         if self.sched.is_named(s) {
             return None;
         }
@@ -323,7 +279,7 @@ impl<'a> Emitter<'a> {
             return None;
         };
         let sched = self.sched;
-        if crate::eval::factor_sum(self.g, &xs, |t| sched.is_named(t)).is_some() {
+        if factor_sum(self.g, &xs, |t| sched.is_named(t)).is_some() {
             return None;
         }
         let mut terms: Vec<(bool, Frag)> = xs

@@ -7,18 +7,19 @@ use proc_macro2::TokenStream;
 use quote::quote;
 
 use super::emit::Emitter;
+use super::names::{Names, snake_case};
 use super::ops::ReportRow;
-use super::schedule::{Names, Schedule, snake_case};
 use super::tokens::{ident, ulit};
 use crate::graph::{Graph, Id, Sym};
 use crate::model::{FnSpec, Output};
+use crate::schedule::Schedule;
 
 /// The nalgebra type names a module's code mentions (for its `use`).
 #[derive(Clone, Default)]
 pub struct Uses(pub BTreeSet<&'static str>, pub BTreeSet<String>);
 
 impl Uses {
-    fn ty(&mut self, name: &'static str) {
+    pub(crate) fn ty(&mut self, name: &'static str) {
         self.0.insert(name);
     }
     fn alias(&mut self, name: String) -> TokenStream {
@@ -40,7 +41,7 @@ impl Uses {
 }
 
 /// The Rust type of an output.
-fn output_type(out: &Output, uses: &mut Uses) -> TokenStream {
+pub(crate) fn output_type(out: &Output, uses: &mut Uses) -> TokenStream {
     match out {
         Output::Scalar(_) => quote!(T),
         Output::Vector(v) => {
@@ -92,11 +93,26 @@ pub(crate) fn doc_lines(text: &str) -> Vec<TokenStream> {
         .collect()
 }
 
+/// What an output is, for docs: `scalar`, `vector of 3`, `2×3 matrix`,
+/// `symmetric 2×2 matrix`.
+pub(crate) fn output_kind(o: &Output) -> String {
+    let (r, c) = o.shape();
+    match o {
+        Output::Scalar(_) => "scalar".to_owned(),
+        Output::Vector(_) => format!("vector of {r}"),
+        Output::Matrix { .. } => format!("{r}×{c} matrix"),
+        Output::Symmetric { .. } => format!("symmetric {r}×{c} matrix"),
+    }
+}
+
 /// Emits `spec` (already verified); returns the tokens and its report row.
+/// A function with several outputs returns the struct `out` (one field per
+/// output).
 pub fn function(
     g: &Graph,
     module: &str,
     spec: &FnSpec,
+    out: &str,
     uses: &mut Uses,
 ) -> (TokenStream, ReportRow) {
     let roots: Vec<Id> = spec
@@ -168,10 +184,8 @@ pub fn function(
         (types.remove(0), values.remove(0))
     } else {
         let outs: Vec<_> = spec.outputs.iter().map(|(n, _)| ident(n)).collect();
-        (
-            quote!((#(#types),*)),
-            quote!(#(let #outs = #values;)* (#(#outs),*)),
-        )
+        let ty = ident(out);
+        (quote!(#ty<T>), quote!(#ty { #(#outs: #values),* }))
     };
     let ops = em.ops;
     let row = ReportRow {
@@ -180,7 +194,7 @@ pub fn function(
         ops,
         lets: sched.lets.len(),
     };
-    let docs = doc_lines(&fn_doc(g, spec, &row));
+    let docs = doc_lines(&fn_doc(g, spec, out, &row));
     let name = ident(&spec.name);
     let ts = quote! {
         #(#docs)*
@@ -195,7 +209,7 @@ pub fn function(
 }
 
 /// The doc comment: the model's text, the inputs and outputs, the counts.
-fn fn_doc(g: &Graph, spec: &FnSpec, row: &ReportRow) -> String {
+fn fn_doc(g: &Graph, spec: &FnSpec, out: &str, row: &ReportRow) -> String {
     let mut s = spec.doc.trim_end().to_owned();
     s.push_str("\n\n# Inputs\n");
     for i in &spec.inputs {
@@ -207,15 +221,11 @@ fn fn_doc(g: &Graph, spec: &FnSpec, row: &ReportRow) -> String {
         s.push_str(&format!("- `{}` = ({})\n", i.name, names.join(", ")));
     }
     s.push_str("\n# Outputs\n");
+    if spec.outputs.len() > 1 {
+        s.push_str(&format!("The fields of [`{out}`]:\n"));
+    }
     for (n, o) in &spec.outputs {
-        let (r, c) = o.shape();
-        let kind = match o {
-            Output::Scalar(_) => "scalar".to_owned(),
-            Output::Vector(_) => format!("vector of {r}"),
-            Output::Matrix { .. } => format!("{r}×{c} matrix"),
-            Output::Symmetric { .. } => format!("symmetric {r}×{c} matrix"),
-        };
-        s.push_str(&format!("- `{n}`: {kind}\n"));
+        s.push_str(&format!("- `{n}`: {}\n", output_kind(o)));
     }
     s.push_str(&format!("\n# Cost\n{}; {} `let`s.", row.ops, row.lets));
     s

@@ -37,10 +37,13 @@ pub fn calls(coverage: (&Module, &str)) -> Result<String, GenError> {
             let pushes: Vec<TokenStream> = f
                 .outputs
                 .iter()
-                .enumerate()
-                .map(|(k, (_, o))| {
-                    let k = proc_macro2::Literal::usize_unsuffixed(k);
-                    let r = if single { quote!(r) } else { quote!(r.#k) };
+                .map(|(name, o)| {
+                    let r = if single {
+                        quote!(r)
+                    } else {
+                        let field = ident(name);
+                        quote!(r.#field)
+                    };
                     match o {
                         Output::Scalar(_) => quote!(out.push(#r);),
                         Output::Vector(_) => quote!(out.extend(#r.iter());),

@@ -68,8 +68,11 @@ impl fmt::Display for OpCounts {
 /// One generated function in the report.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ReportRow {
+    /// The module (model) name.
     pub module: String,
+    /// The function name.
     pub function: String,
+    /// Operations of one call, as emitted.
     pub ops: OpCounts,
     /// Number of `let` bindings of intermediate values.
     pub lets: usize,
@@ -78,6 +81,7 @@ pub struct ReportRow {
 /// What was generated: one row per function, in emission order.
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Report {
+    /// One row per function, modules in declaration order.
     pub rows: Vec<ReportRow>,
 }
 

@@ -1,23 +1,43 @@
-//! Small token helpers of the emitter: literals, identifiers, method names
-//! and readable names for `let`s.
+//! Small token helpers of the emitter: emitted fragments with their binding
+//! strength, literals, identifiers, method names and readable names for
+//! `let`s.
 
 use proc_macro2::{Ident, Literal, Span, TokenStream};
 use quote::quote;
 
-use super::emit::{Frag, Prec};
-use super::schedule::pow_form;
 use crate::graph::{Graph, Id, Node, PowForm};
+use crate::schedule::pow_form;
 
-/// The Rust keywords, strict and reserved (edition 2024), none of which
-/// may name a model symbol or a generated `let`: the one list read by the
-/// name check ([`super::verify::is_snake_ident`]) and the schedule's namer.
-pub(crate) const KEYWORDS: &[&str] = &[
-    "as", "async", "await", "break", "const", "continue", "crate", "dyn", "else", "enum", "extern",
-    "false", "fn", "for", "gen", "if", "impl", "in", "let", "loop", "match", "mod", "move", "mut",
-    "pub", "ref", "return", "self", "static", "struct", "super", "trait", "true", "type", "unsafe",
-    "use", "where", "while", "abstract", "become", "box", "do", "final", "macro", "override",
-    "priv", "try", "typeof", "unsized", "virtual", "yield",
-];
+/// Binding strength of an emitted fragment, loosest first.
+#[derive(Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Debug)]
+pub(crate) enum Prec {
+    /// `a + b`, `a - b`
+    Sum,
+    /// `a * b`, `a / b`
+    Product,
+    /// `-a`
+    Prefix,
+    /// names, literals, calls, parenthesized expressions
+    Atom,
+}
+
+/// An emitted expression and how tightly it binds.
+pub(crate) struct Frag {
+    pub(crate) ts: TokenStream,
+    prec: Prec,
+}
+
+impl Frag {
+    pub(crate) fn new(ts: TokenStream, prec: Prec) -> Frag {
+        Frag { ts, prec }
+    }
+
+    /// The tokens, parenthesized if they bind looser than `min`.
+    pub(crate) fn at(self, min: Prec) -> TokenStream {
+        let ts = self.ts;
+        if self.prec < min { quote!((#ts)) } else { ts }
+    }
+}
 
 /// An `f64` literal of a finite, non-negative value.
 pub(crate) fn lit(v: f64) -> Literal {

@@ -11,6 +11,7 @@
 
 use std::collections::HashMap;
 
+use super::names::snake_case;
 use crate::eval::Tape;
 use crate::graph::{Graph, Id, Node};
 
@@ -66,8 +67,8 @@ impl ValueNames {
                     .iter()
                     .zip(&v)
                     .all(|(a, b)| (a - r * b).abs() <= 1e-9 * a.abs());
-                let prefix = super::emit::scale_prefix(snap(r)?)?;
-                same.then(|| format!("{prefix}{}", super::schedule::snake_case(name)))
+                let prefix = scale_prefix(snap(r)?)?;
+                same.then(|| format!("{prefix}{}", snake_case(name)))
             });
             if let Some(name) = hit {
                 found.insert(id, name);
@@ -102,4 +103,19 @@ fn point(n: usize, k: u64) -> Vec<f64> {
             0.2 + (z >> 11) as f64 / (1u64 << 53) as f64
         })
         .collect()
+}
+
+/// How a value relates to a named product with the same leaves, as a name
+/// prefix: the ratio of the coefficients (`−x` is `neg_x`, `x/2` is
+/// `half_x`); `None` for other ratios.
+pub(crate) fn scale_prefix(ratio: f64) -> Option<&'static str> {
+    Some(match ratio {
+        1.0 => "",
+        -1.0 => "neg_",
+        0.5 => "half_",
+        -0.5 => "neg_half_",
+        2.0 => "twice_",
+        -2.0 => "neg_twice_",
+        _ => return None,
+    })
 }

@@ -11,25 +11,11 @@
 
 use std::collections::{BTreeMap, BTreeSet};
 
-use super::schedule::Schedule;
+use super::names::is_snake_ident;
 use crate::error::GenError;
 use crate::graph::{Graph, Id, Node, Sym};
 use crate::model::{FnSpec, Module, Output};
-
-/// True for a snake_case Rust identifier that is not a keyword
-/// (the strict and reserved keywords of edition 2024, one list in the
-/// emitter's token helpers).
-pub fn is_snake_ident(s: &str) -> bool {
-    let mut cs = s.chars();
-    let first_ok = cs
-        .next()
-        .is_some_and(|c| c.is_ascii_lowercase() || c == '_');
-    first_ok
-        && s != "_"
-        && s.chars()
-            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
-        && !super::tokens::KEYWORDS.contains(&s)
-}
+use crate::schedule::Schedule;
 
 fn check_names<'a>(
     what: &'static str,
@@ -47,15 +33,21 @@ fn check_names<'a>(
     Ok(())
 }
 
-/// Verifies every module (and that module names are unique).
+/// Verifies every module (and that module names are unique), and that
+/// each struct shared with an earlier module matches that module's.
 pub fn verify_all(modules: &[(&Graph, &Module)]) -> Result<(), GenError> {
     check_names("module", modules.iter().map(|(_, m)| m.name.as_str()))?;
-    modules.iter().try_for_each(|(g, m)| verify_module(g, m))
+    for (k, (g, m)) in modules.iter().enumerate() {
+        verify_module(g, m)?;
+        super::verify_types::verify_shared(g, m, &modules[..k])?;
+    }
+    Ok(())
 }
 
 /// Verifies one module.
 pub fn verify_module(g: &Graph, m: &Module) -> Result<(), GenError> {
     check_names("function", m.functions.iter().map(|f| f.name.as_str()))?;
+    super::verify_types::verify_types(g, m)?;
     let mut inputs: BTreeMap<&str, &[Sym]> = BTreeMap::new();
     for f in &m.functions {
         verify_fn(g, &m.name, f)?;

@@ -8,7 +8,9 @@ use super::node::{Id, Node, Sym, SymKind};
 /// A named symbol and what it stands for.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SymInfo {
+    /// The name the model gave it (unique in its arena).
     pub name: String,
+    /// Variable, parameter or time.
     pub kind: SymKind,
 }
 

@@ -5,7 +5,7 @@
 //! The interpreter ([`crate::eval`]) evaluates with these rows, the printer
 //! ([`crate::display`]) prints their names, the emitter
 //! ([`crate::codegen::emit`]) writes their `Real` method or form, the
-//! scheduler ([`crate::codegen::schedule`]) asks whether they are calls
+//! scheduler ([`crate::schedule`]) asks whether they are calls
 //! worth a `let` and which operand they repeat, and the operation counter
 //! charges their [`Cost`]. A generated function and the interpreter
 //! therefore compute every function the same way, bit for bit.

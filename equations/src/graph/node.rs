@@ -71,12 +71,19 @@ impl Const {
 /// One-argument functions.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord, Debug)]
 pub enum Unary {
+    /// Sine.
     Sin,
+    /// Cosine.
     Cos,
+    /// Tangent.
     Tan,
+    /// Arcsine.
     Asin,
+    /// Arccosine.
     Acos,
+    /// Arctangent.
     Atan,
+    /// Exponential.
     Exp,
     /// `exp(x) - 1`, accurate for small `x`.
     Expm1,
@@ -84,9 +91,11 @@ pub enum Unary {
     Ln,
     /// `ln(1 + x)`, accurate for small `x`.
     Ln1p,
+    /// Absolute value.
     Abs,
     /// `sign(x)`: -1, 0 or 1 (0 at 0). The derivative of `abs`.
     Sign,
+    /// Hyperbolic tangent.
     Tanh,
     /// `max(0, x)`: the unilateral contact law.
     Max0,
@@ -108,7 +117,9 @@ pub enum Binary {
 /// A node of the DAG. Children are ids of nodes stored earlier.
 #[derive(Clone, PartialEq, Eq, Hash, Debug)]
 pub enum Node {
+    /// A finite or infinite constant (never NaN).
     Const(Const),
+    /// A symbol: a variable, parameter or the time.
     Sym(Sym),
     /// n-ary sum, at least two terms, in canonical order.
     Add(Box<[Id]>),
@@ -117,7 +128,9 @@ pub enum Node {
     Mul(Box<[Id]>),
     /// `base ^ exponent`.
     Pow(Id, Id),
+    /// A one-argument function of a node.
     Unary(Unary, Id),
+    /// A two-argument function of two nodes.
     Binary(Binary, Id, Id),
 }
 

@@ -6,8 +6,11 @@
 //! sum `Σρ` and the contact modulus `E*` — as parameters and give the
 //! load-dependent quantities. Units: N, m, Pa, 1/m.
 
+use crate::GenError;
+use crate::builder::{ModelBuilder, Outputs};
 use crate::expr::Expr;
 use crate::graph::Graph;
+use crate::model::Output;
 use std::f64::consts::PI;
 
 /// The load-independent data of one Hertz contact, as expressions
@@ -91,49 +94,81 @@ pub fn potential<'g>(k: Expr<'g>, delta: Expr<'g>) -> Expr<'g> {
     0.4 * k * delta.max0().powf(2.5)
 }
 
-/// The `hertz` module: the load-dependent Hertz quantities from the
-/// setup-time coefficients `c = (c_sum, e_star, c_ma, c_mb, c_dstar)`.
-pub fn module(g: &Graph) -> crate::model::Module {
-    use crate::model::{FnSpec, Input, Module, Output};
-    let c = HertzCoefficients::params(g, "c");
-    let q = g.var("load");
+/// Declares the `hertz` model: the load-dependent Hertz quantities
+/// (`ellipse`, `stiffness`) from the setup-time coefficients
+/// `c = (c_sum, e_star, c_ma, c_mb, c_dstar)`.
+///
+/// # Errors
+/// Those of [`ModelBuilder`] (none for this fixed model).
+pub fn declare(b: &mut ModelBuilder<'_>) -> Result<(), GenError> {
+    b.doc(
+        "Hertz elliptical contact (*Dynamic analysis for peg-in-hole assembly with contact deformation*, (9)-(13)) from setup-time coefficients \
+         c = (sum of curvatures 1/m, contact modulus Pa, m_a, m_b, delta_star). SI units.",
+    );
+    b.outputs(Outputs::NONE);
+    b.parameters_named("c")?;
+    let c = HertzCoefficients {
+        sum_curvature: b.parameter(
+            "c_sum",
+            "sum of the principal curvatures Σρ of the two bodies, 1/m",
+        )?,
+        contact_modulus: b.parameter("e_star", "contact modulus E* = [Σ (1 − νᵢ²)/Eᵢ]⁻¹, Pa")?,
+        m_a: b.parameter(
+            "c_ma",
+            "ellipse coefficient m_a of the semi-major axis (9), dimensionless",
+        )?,
+        m_b: b.parameter(
+            "c_mb",
+            "ellipse coefficient m_b of the semi-minor axis (10), dimensionless",
+        )?,
+        delta_star: b.parameter(
+            "c_dstar",
+            "approach coefficient δ* (the paper's K of (13)), dimensionless",
+        )?,
+    };
+    let q = b.symbol(
+        "load",
+        "normal load Q on the contact, N (negative counts as 0)",
+    )?;
     // A negative load (no contact) gives the zero ellipse, not NaN.
     let s = state(q.max0(), &c);
-    let coeffs = Input::new(
-        "c",
-        &[
-            c.sum_curvature,
-            c.contact_modulus,
-            c.m_a,
-            c.m_b,
-            c.delta_star,
+    let coeffs = b.parameters();
+    b.function(
+        "ellipse",
+        "Semi-axes a, b (m) (9)-(10), maximum pressure p0 (Pa) (11) and approach delta (m) (13) \
+         at load Q (N); negative loads count as 0.",
+        &[("load", &[q]), ("c", &coeffs)],
+        vec![
+            (
+                "a",
+                "semi-major axis a of the contact ellipse (9), m",
+                Output::scalar(s.a),
+            ),
+            (
+                "b",
+                "semi-minor axis b of the contact ellipse (10), m",
+                Output::scalar(s.b),
+            ),
+            (
+                "p0",
+                "maximum contact pressure p₀ (11), Pa",
+                Output::scalar(s.p0),
+            ),
+            (
+                "delta",
+                "approach δ of the two bodies (13), m",
+                Output::scalar(s.delta),
+            ),
         ],
-    );
-    Module {
-        name: "hertz".to_owned(),
-        doc: "Hertz elliptical contact (*Dynamic analysis for peg-in-hole assembly with contact deformation*, (9)-(13)) from setup-time coefficients \
-              c = (sum of curvatures 1/m, contact modulus Pa, m_a, m_b, delta_star). SI units."
-            .to_owned(),
-        functions: vec![
-            FnSpec {
-                name: "ellipse".to_owned(),
-                doc: "Semi-axes a, b (m) (9)-(10), maximum pressure p0 (Pa) (11) and approach delta (m) (13) \
-                      at load Q (N); negative loads count as 0."
-                    .to_owned(),
-                inputs: vec![Input::new("load", &[q]), coeffs.clone()],
-                outputs: vec![
-                    ("a".to_owned(), Output::scalar(s.a)),
-                    ("b".to_owned(), Output::scalar(s.b)),
-                    ("p0".to_owned(), Output::scalar(s.p0)),
-                    ("delta".to_owned(), Output::scalar(s.delta)),
-                ],
-            },
-            FnSpec {
-                name: "stiffness".to_owned(),
-                doc: "Stiffness k (N/m^1.5) of Q = k delta^1.5 ((13) inverted).".to_owned(),
-                inputs: vec![coeffs],
-                outputs: vec![("k".to_owned(), Output::scalar(stiffness(&c)))],
-            },
-        ],
-    }
+    )?;
+    b.function(
+        "stiffness",
+        "Stiffness k (N/m^1.5) of Q = k delta^1.5 ((13) inverted).",
+        &[("c", &coeffs)],
+        vec![(
+            "k",
+            "stiffness k of Q = k δ^{3/2}, N/m^1.5",
+            Output::scalar(stiffness(&c)),
+        )],
+    )
 }

@@ -1,7 +1,10 @@
-//! The models, one file or folder each. A model is a function building a [`Module`]
-//! in a fresh [`Graph`]; register it in [`ALL`] (one line) to have its code
-//! generated into `pegdyn::generated::<name>`.
+//! The models pegdyn ships, one file or folder each, every one declared
+//! through the public builder ([`ModelBuilder`]) exactly as a downstream
+//! crate declares its own. Register a model in [`ALL`] (one line) to have
+//! its code generated into `pegdyn::generated::<name>`.
 
+use crate::GenError;
+use crate::builder::{Generator, ModelBuilder};
 use crate::graph::Graph;
 use crate::model::Module;
 
@@ -14,24 +17,62 @@ pub mod pendulum;
 pub mod quasi_static;
 pub mod rigid_peg;
 
-/// Builds one model's module in the given graph.
-pub type ModelFn = fn(&Graph) -> Module;
+/// Declares one model in a [`ModelBuilder`] (its doc comment included,
+/// [`ModelBuilder::doc`]).
+pub type Declare = fn(&mut ModelBuilder<'_>) -> Result<(), GenError>;
+
+/// A built-in model: its module name and its declaration.
+#[derive(Clone, Copy, Debug)]
+pub struct Builtin {
+    /// The generated module's name (`pegdyn::generated::<name>`).
+    pub name: &'static str,
+    /// The declaration, as a downstream build script would pass it to
+    /// [`Generator::model`].
+    pub declare: Declare,
+}
+
+impl Builtin {
+    /// The model's module, declared in `g` (for tools that evaluate the
+    /// model's expressions, such as the interpreter benches).
+    ///
+    /// # Panics
+    /// If the declaration fails: the built-in models are fixed, so that is
+    /// a bug in pegdyn, which the build (`build.rs`) reports first.
+    pub fn module(&self, g: &Graph) -> Module {
+        let mut b = ModelBuilder::new(g, self.name, "");
+        match (self.declare)(&mut b).and_then(|()| b.finish()) {
+            Ok(module) => module,
+            Err(e) => panic!("built-in model `{}` is inconsistent: {e}", self.name),
+        }
+    }
+}
 
 /// Every model the build generates code for, in emission order. One model
 /// per line (kept by `rustfmt::skip`) so that registrations merge cleanly.
 #[rustfmt::skip]
-pub const ALL: &[ModelFn] = &[
-    pendulum::module,
-    double_pendulum::module,
-    cart_pole::module,
-    hertz::module,
-    compliant_peg::variants::module,
-    compliant_peg::variants::module_lean,
-    compliant_peg::variants::module_elastic,
-    quasi_static::module,
-    rigid_peg::variants::module,
-    rigid_peg::variants::module_frictionless,
-    rigid_peg::variants::module_planar,
-    rigid_peg::variants::module_planar_frictionless,
-    compliant_peg_3d::module,
+pub const ALL: &[Builtin] = &[
+    Builtin { name: "pendulum", declare: pendulum::declare },
+    Builtin { name: "double_pendulum", declare: double_pendulum::declare },
+    Builtin { name: "cart_pole", declare: cart_pole::declare },
+    Builtin { name: "hertz", declare: hertz::declare },
+    Builtin { name: "compliant_peg", declare: compliant_peg::variants::declare_all_contacts },
+    Builtin { name: "compliant_peg_lean", declare: compliant_peg::variants::declare_lean },
+    Builtin { name: "compliant_peg_elastic", declare: compliant_peg::variants::declare_elastic },
+    Builtin { name: "quasi_static", declare: quasi_static::declare },
+    Builtin { name: "rigid_peg", declare: rigid_peg::declare::declare_full },
+    Builtin { name: "rigid_peg_frictionless", declare: rigid_peg::declare::declare_frictionless },
+    Builtin { name: "rigid_peg_planar", declare: rigid_peg::declare::declare_planar },
+    Builtin { name: "rigid_peg_planar_frictionless", declare: rigid_peg::declare::declare_planar_frictionless },
+    Builtin { name: compliant_peg_3d::NAME, declare: compliant_peg_3d::declare },
 ];
+
+/// Declares every built-in model ([`ALL`]) in `generator`, in order.
+///
+/// # Errors
+/// The first declaration that fails (a bug in pegdyn's models).
+pub fn declare_all(generator: &mut Generator) -> Result<(), GenError> {
+    for b in ALL {
+        generator.model(b.name, "", b.declare)?;
+    }
+    Ok(())
+}

@@ -22,9 +22,10 @@
 //! jamming diagram uses (`pegdyn::jamming::forces`).
 //! Units: N, N·m, m, kg, kg·m², rad, m/s², rad/s².
 
+use crate::GenError;
+use crate::builder::{ModelBuilder, Outputs};
 use crate::expr::Expr;
-use crate::graph::Graph;
-use crate::model::{FnSpec, Input, Module, Output};
+use crate::model::Output;
 
 type V2<'g> = (Expr<'g>, Expr<'g>);
 
@@ -43,18 +44,33 @@ fn cramer<'g>(u: V2<'g>, v: V2<'g>, w: V2<'g>) -> V2<'g> {
     ((w.0 * v.1 - w.1 * v.0) / det, (u.0 * w.1 - u.1 * w.0) / det)
 }
 
-/// The `quasi_static` module.
-pub fn module(g: &Graph) -> Module {
-    let (theta, l) = (g.var("theta"), g.var("l"));
-    let (f1, f2) = (g.var("f1"), g.var("f2"));
-    let (xdd, ydd, thdd) = (g.var("xdd"), g.var("ydd"), g.var("thdd"));
-    let (mu, r, l_c, m, j) = (
-        g.param("mu"),
-        g.param("r"),
-        g.param("l_c"),
-        g.param("m"),
-        g.param("J"),
+/// Declares the `quasi_static` model: the two-point and one-point
+/// contact forces (Eqs. 51–54) of `pose`, `load`, `acc` and the parameters
+/// `p`, and Whitney's tip equilibrium of `pose`, `w` and `q = (mu, r)`.
+///
+/// # Errors
+/// Those of [`ModelBuilder`] (none for this fixed model).
+pub fn declare(b: &mut ModelBuilder<'_>) -> Result<(), GenError> {
+    b.doc(
+        "Quasi-static contact forces of the planar peg in two-point and one-point contact \
+         (*Dynamic analysis for peg-in-hole assembly with contact deformation*, Eqs. 51-54), derived from the contact geometry. Inputs: pose = (theta rad, \
+         l m), load = (f1 axial N, f2 radial N), acc = (xdd, ydd m/s^2, thdd rad/s^2), \
+         p = (mu, r m, l_c m, m kg, J kg m^2).",
     );
+    b.outputs(Outputs::NONE);
+    let g = b.g();
+    let theta = b.symbol("theta", "tilt of the peg, rad")?;
+    let l = b.symbol("l", "insertion depth, m")?;
+    let f1 = b.symbol("f1", "applied force along the peg's axis, N")?;
+    let f2 = b.symbol("f2", "applied force across the peg's axis, N")?;
+    let xdd = b.symbol("xdd", "lateral acceleration of the centre of mass, m/s²")?;
+    let ydd = b.symbol("ydd", "axial acceleration of the centre of mass, m/s²")?;
+    let thdd = b.symbol("thdd", "angular acceleration, rad/s²")?;
+    let mu = b.parameter("mu", "Coulomb friction coefficient, dimensionless")?;
+    let r = b.parameter("r", "peg radius, m")?;
+    let l_c = b.parameter("l_c", "distance from the centre of mass to the tip face, m")?;
+    let m = b.parameter("m", "mass of the peg, kg")?;
+    let j = b.parameter("J", "moment of inertia about the centre of mass, kg·m²")?;
     let (s, c) = (theta.sin(), theta.cos());
     let n_a = (c, -s);
     let axis = (s, c);
@@ -78,23 +94,12 @@ pub fn module(g: &Graph) -> Module {
     let fb_only = -rhs.0;
     let moment_b = j * thdd + fb_only * arm_b;
 
-    let pose = Input::new("pose", &[theta, l]);
-    let load = Input::new("load", &[f1, f2]);
-    let acc = Input::new("acc", &[xdd, ydd, thdd]);
-    let params = Input::new("p", &[mu, r, l_c, m, j]);
-    let paper_inputs = vec![pose.clone(), load, acc, params];
-    let paper_fn = |name: &str, doc: &str, outs: Vec<(&str, Expr)>| FnSpec {
-        name: name.to_owned(),
-        doc: doc.to_owned(),
-        inputs: paper_inputs.clone(),
-        outputs: outs
-            .into_iter()
-            .map(|(n, e)| (n.to_owned(), Output::scalar(e)))
-            .collect(),
-    };
-
     // Whitney's frame (hole frame, z into the hole, moment about the tip)
-    let (fx, fz) = (g.var("fx"), g.var("fz"));
+    let fx = b.symbol("fx", "applied lateral force F_x in Whitney's frame, N")?;
+    let fz = b.symbol(
+        "fz",
+        "applied force F_z into the hole in Whitney's frame, N",
+    )?;
     let tip_at = (-r * c, -r * s);
     let edge_at = (r * c + l * s, r * s - l * c);
     let u_t = (g.constant(1.0), -mu);
@@ -102,50 +107,73 @@ pub fn module(g: &Graph) -> Module {
     let (ft, fe) = cramer(u_t, u_e, (-fx, -fz));
     let m_tip = -(ft * torque(tip_at, u_t).expand() + fe * torque(edge_at, u_e).expand());
 
-    Module {
-        name: "quasi_static".to_owned(),
-        doc: "Quasi-static contact forces of the planar peg in two-point and one-point contact \
-              (*Dynamic analysis for peg-in-hole assembly with contact deformation*, Eqs. 51-54), derived from the contact geometry. Inputs: pose = (theta rad, \
-              l m), load = (f1 axial N, f2 radial N), acc = (xdd, ydd m/s^2, thdd rad/s^2), \
-              p = (mu, r m, l_c m, m kg, J kg m^2)."
-            .to_owned(),
-        functions: vec![
-            paper_fn(
-                "two_point",
-                "Eq. 52: edge force f_a (N), tip force f_b (N) and input moment about C (N m) \
-                 for two-point sliding contact with the given accelerations.",
-                vec![("f_a", fa), ("f_b", fb), ("moment", moment_two)],
-            ),
-            paper_fn(
-                "edge_only",
-                "Eq. 53 (signs corrected): edge force f_a (N) from the normal balance and \
-                 input moment about C (N m), one-point contact at the edge A.",
-                vec![("f_a", fa_only), ("moment", moment_a)],
-            ),
-            paper_fn(
-                "tip_only",
-                "Eq. 54: tip force f_b (N) from the normal balance and input moment about C \
-                 (N m), one-point contact at the tip corner B.",
-                vec![("f_b", fb_only), ("moment", moment_b)],
-            ),
-            FnSpec {
-                name: "whitney_tip".to_owned(),
-                doc: "Whitney's frame (x lateral, z into the hole, moment about the tip): tip \
-                      force f_tip (N), edge force f_edge (N) and the moment M (N m) holding \
-                      the peg in two-point sliding under applied (F_x, F_z) (N); \
-                      pose = (theta rad, l m), w = (F_x, F_z), q = (mu, r m)."
-                    .to_owned(),
-                inputs: vec![
-                    pose,
-                    Input::new("w", &[fx, fz]),
-                    Input::new("q", &[mu, r]),
-                ],
-                outputs: vec![
-                    ("f_tip".to_owned(), Output::scalar(ft)),
-                    ("f_edge".to_owned(), Output::scalar(fe)),
-                    ("moment".to_owned(), Output::scalar(m_tip)),
-                ],
-            },
+    let paper_inputs: [(&str, &[Expr<'_>]); 3] = [
+        ("pose", &[theta, l]),
+        ("load", &[f1, f2]),
+        ("acc", &[xdd, ydd, thdd]),
+    ];
+    const F_A: &str = "normal force f_A at the hole's edge A, N";
+    const F_B: &str = "normal force f_B at the peg's tip corner B, N";
+    const MOMENT: &str = "input moment about the centre of mass C, N·m";
+    b.function(
+        "two_point",
+        "Eq. 52: edge force f_a (N), tip force f_b (N) and input moment about C (N m) \
+         for two-point sliding contact with the given accelerations.",
+        &paper_inputs,
+        vec![
+            ("f_a", F_A, Output::scalar(fa)),
+            ("f_b", F_B, Output::scalar(fb)),
+            ("moment", MOMENT, Output::scalar(moment_two)),
         ],
-    }
+    )?;
+    b.function(
+        "edge_only",
+        "Eq. 53 (signs corrected): edge force f_a (N) from the normal balance and \
+         input moment about C (N m), one-point contact at the edge A.",
+        &paper_inputs,
+        vec![
+            ("f_a", F_A, Output::scalar(fa_only)),
+            ("moment", MOMENT, Output::scalar(moment_a)),
+        ],
+    )?;
+    b.function(
+        "tip_only",
+        "Eq. 54: tip force f_b (N) from the normal balance and input moment about C \
+         (N m), one-point contact at the tip corner B.",
+        &paper_inputs,
+        vec![
+            ("f_b", F_B, Output::scalar(fb_only)),
+            ("moment", MOMENT, Output::scalar(moment_b)),
+        ],
+    )?;
+    b.typed_input(
+        "q",
+        "WhitneyParams",
+        "The parameters of Whitney's tip equilibrium ([`whitney_tip`]): friction and radius.",
+    )?;
+    b.function(
+        "whitney_tip",
+        "Whitney's frame (x lateral, z into the hole, moment about the tip): tip \
+         force f_tip (N), edge force f_edge (N) and the moment M (N m) holding \
+         the peg in two-point sliding under applied (F_x, F_z) (N); \
+         pose = (theta rad, l m), w = (F_x, F_z), q = (mu, r m).",
+        &[("pose", &[theta, l]), ("w", &[fx, fz]), ("q", &[mu, r])],
+        vec![
+            (
+                "f_tip",
+                "normal force at the peg's tip, N",
+                Output::scalar(ft),
+            ),
+            (
+                "f_edge",
+                "normal force at the hole's edge, N",
+                Output::scalar(fe),
+            ),
+            (
+                "moment",
+                "moment about the tip holding the peg, N·m",
+                Output::scalar(m_tip),
+            ),
+        ],
+    )
 }

@@ -2,6 +2,8 @@
 //! documented by its row (law, domain, termination); comments here explain
 //! only how it finds its pattern.
 
+use std::collections::HashMap;
+
 use super::{
     add, const_of, is_negative, konst, mul, neg, pow, scale, split_coeff, term_parts, unary,
 };
@@ -309,4 +311,23 @@ pub(super) fn hypot_canonical(g: &Graph, op: Binary, a: Id, b: Id) -> Option<Id>
         return None;
     }
     Some(super::binary(g, op, lo, hi))
+}
+
+/// The termination measure of the sum rules: occurrences of `cos` and
+/// `exp` in the terms, counted as a tree (saturating).
+pub(crate) fn sum_measure(g: &Graph, terms: &[Id]) -> u64 {
+    fn count(g: &Graph, id: Id, memo: &mut HashMap<Id, u64>) -> u64 {
+        if let Some(&n) = memo.get(&id) {
+            return n;
+        }
+        let node = g.node(id);
+        let mut n = u64::from(matches!(node, Node::Unary(Unary::Cos | Unary::Exp, _)));
+        node.for_each_child(|c| n = n.saturating_add(count(g, c, memo)));
+        memo.insert(id, n);
+        n
+    }
+    let mut memo = HashMap::new();
+    terms
+        .iter()
+        .fold(0, |n, &t| n.saturating_add(count(g, t, &mut memo)))
 }

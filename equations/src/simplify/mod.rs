@@ -31,7 +31,7 @@ mod trig;
 
 use std::collections::BTreeMap;
 
-use crate::graph::{Binary, Const, Graph, Id, Node, Unary};
+use crate::graph::{Binary, Const, Graph, Id, Node, PowForm, Unary};
 
 pub(crate) fn konst(g: &Graph, v: f64) -> Id {
     g.intern(Node::Const(Const::new(v).expect("NaN constant")))
@@ -260,7 +260,7 @@ pub fn pow(g: &Graph, base: Id, exponent: Id) -> Id {
     let eb = const_of(g, base);
     let ee = const_of(g, exponent);
     if let (Some(b), Some(e)) = (eb, ee) {
-        let v = crate::eval::pow(b, e);
+        let v = PowForm::of(Some(e)).eval(b, e);
         if v.is_finite() {
             return konst(g, v);
         }
@@ -279,7 +279,7 @@ pub fn pow(g: &Graph, base: Id, exponent: Id) -> Id {
 /// A one-argument function.
 pub fn unary(g: &Graph, op: Unary, x: Id) -> Id {
     if let Some(v) = const_of(g, x) {
-        let r = crate::eval::unary(op, v);
+        let r = (op.spec().eval)(v);
         if r.is_finite() {
             return konst(g, r);
         }
@@ -290,7 +290,7 @@ pub fn unary(g: &Graph, op: Unary, x: Id) -> Id {
 /// A two-argument function other than `pow`.
 pub fn binary(g: &Graph, op: Binary, a: Id, b: Id) -> Id {
     if let (Some(x), Some(y)) = (const_of(g, a), const_of(g, b)) {
-        let r = crate::eval::binary(op, x, y);
+        let r = (op.spec().eval)(x, y);
         if r.is_finite() {
             return konst(g, r);
         }

@@ -11,13 +11,11 @@
 //! To add a law, write its function (in `super::laws` or a new sibling
 //! module) and add a row. A [`Site::Sum`] rule must strictly decrease the
 //! number of `cos` and `exp` occurrences in the sum (counted as a tree,
-//! `sum_measure`): that is the measure that proves the sum rules terminate, and `rewrite_sum` refuses
+//! `laws::sum_measure`): that is the measure that proves the sum rules terminate, and `rewrite_sum` refuses
 //! (and in debug builds reports) a rewrite that does not decrease it.
 
-use std::collections::HashMap;
-
 use super::{laws, stable, trig};
-use crate::graph::{Binary, Graph, Id, Node, Unary};
+use crate::graph::{Binary, Graph, Id, Unary};
 
 /// Rewrites a sum whose like terms are already collected (the constant, if
 /// any, last); returns the new, uncollected terms.
@@ -37,8 +35,11 @@ pub type BinaryRule = fn(&Graph, Binary, Id, Id) -> Option<Id>;
 pub enum Site {
     /// Applied by the constructors in [`crate::simplify`] (no function here).
     Core,
+    /// Tried on every sum.
     Sum(SumRule),
+    /// Tried on every product.
     Product(ProductRule),
+    /// Tried on every power.
     Pow(PowRule),
     /// Tried only for this function.
     Unary(Unary, UnaryRule),
@@ -342,7 +343,7 @@ pub(crate) fn rewrite_sum(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
     for rule in active(g) {
         let Site::Sum(f) = rule.site else { continue };
         if let Some(next) = f(g, terms) {
-            if sum_measure(g, &next) < sum_measure(g, terms) {
+            if laws::sum_measure(g, &next) < laws::sum_measure(g, terms) {
                 return Some(next);
             }
             debug_assert!(
@@ -353,25 +354,6 @@ pub(crate) fn rewrite_sum(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
         }
     }
     None
-}
-
-/// The termination measure of the sum rules: occurrences of `cos` and
-/// `exp` in the terms, counted as a tree (saturating).
-pub(crate) fn sum_measure(g: &Graph, terms: &[Id]) -> u64 {
-    fn count(g: &Graph, id: Id, memo: &mut HashMap<Id, u64>) -> u64 {
-        if let Some(&n) = memo.get(&id) {
-            return n;
-        }
-        let node = g.node(id);
-        let mut n = u64::from(matches!(node, Node::Unary(Unary::Cos | Unary::Exp, _)));
-        node.for_each_child(|c| n = n.saturating_add(count(g, c, memo)));
-        memo.insert(id, n);
-        n
-    }
-    let mut memo = HashMap::new();
-    terms
-        .iter()
-        .fold(0, |n, &t| n.saturating_add(count(g, t, &mut memo)))
 }
 
 /// Applies the first product rule that fires.

@@ -4,7 +4,7 @@
 //! `Graph::with_stable_rewrites(false)` can switch it off to measure what it
 //! buys); each is shown by a hard case in `tests/hard_cases_rewrites.rs`.
 
-use super::laws::{find_pair, find_term, remove, without};
+use super::laws::{find_pair, find_term, remove, sum_measure, without};
 use super::{add, all_params, const_of, konst, mul, pow, term_parts, unary};
 use crate::graph::{Binary, Const, Graph, Id, Node, Unary};
 
@@ -77,7 +77,7 @@ pub(super) fn cos_near_equal(g: &Graph, terms: &[Id]) -> Option<Vec<Id>> {
         }
     }
     // A cofactor that itself holds cos(u) would keep the count: no rewrite.
-    let fewer = super::rules::sum_measure(g, &next) < super::rules::sum_measure(g, terms);
+    let fewer = sum_measure(g, &next) < sum_measure(g, terms);
     fewer.then_some(next)
 }
 

@@ -8,7 +8,7 @@
 //! Termination: the rewritten pair holds `cos` twice (plus twice the `cos`
 //! inside `a` and `b`, one of each pair of `sin`/`cos` holding `a`, the
 //! other `b`); the result holds `a` and `b` once, under at most one `cos`,
-//! so the sum rules' measure ([`super::rules::sum_measure`]) strictly falls.
+//! so the sum rules' measure ([`super::laws::sum_measure`]) strictly falls.
 
 use std::collections::HashMap;
 

@@ -10,7 +10,7 @@
 //! let x0 = initial_state();
 //! let sol = solve(&system, Method::Dopri5, (0.0, x0), 1.0, &Options::with_tolerances(1e-9, 1e-12)).unwrap();
 //! let x1 = sol.x.last().unwrap();
-//! let p = parameters();
+//! let p = parameters().into(); // the vector the generated functions take
 //! let drift = sp::energy(x1, &p) - sp::energy(&x0, &p);
 //! assert!(drift.abs() < 1e-6);
 //! ```
@@ -41,14 +41,14 @@ pub const REPORT: &str = include_str!(concat!(env!("OUT_DIR"), "/own_model_repor
 
 /// The example's parameters: 1 kg on a 1 m rod, g = 9.81 m/s², the floor
 /// 0.95 m below the hinge, Hertz stiffness 1e6 N/m^1.5.
-pub fn parameters() -> SVector<f64, { sp::PARAM_DIM }> {
-    let mut p = SVector::zeros();
-    p[sp::P_M] = 1.0;
-    p[sp::P_L] = 1.0;
-    p[sp::P_G] = 9.81;
-    p[sp::P_H] = 0.95;
-    p[sp::P_K] = 1.0e6;
-    p
+pub fn parameters() -> sp::Params<f64> {
+    sp::Params {
+        m: 1.0,
+        l: 1.0,
+        g: 9.81,
+        h: 0.95,
+        k: 1.0e6,
+    }
 }
 
 /// Released at θ = 1 rad, swinging down with θ̇ = −1 rad/s while turning at

@@ -6,8 +6,8 @@ use own_model::{initial_state, parameters};
 use pegdyn::integrate::{Event, Method, Options, Solver};
 
 fn main() {
-    let p = parameters();
-    let system = sp::System::new(p);
+    let system = sp::System::new(parameters());
+    let p = system.p; // the parameter vector the generated functions take
     let x0 = initial_state();
     // An event when the bob touches the floor (penetration crosses zero).
     let touch = Event::new(move |_t, x| sp::penetration(x, &p));

@@ -41,7 +41,7 @@ fn states() -> Vec<SVector<f64, 4>> {
 fn generated_code_matches_the_interpreter() {
     let mut generator = Generator::new(pegdyn_equations::Options::default());
     model::declare(&mut generator).unwrap();
-    let p = parameters();
+    let p = SVector::from(parameters());
     let mut worst = 0;
     let mut in_contact = 0;
     for x in states() {
@@ -103,8 +103,9 @@ fn exact_jacobian_matches_finite_differences() {
 
 #[test]
 fn energy_and_angular_momentum_are_conserved_through_floor_contacts() {
-    let p = parameters();
-    let system = sp::System::new(p);
+    let params = parameters();
+    let system = sp::System::new(params);
+    let p = system.p;
     let x0 = initial_state();
     let (e0, l0) = (sp::energy(&x0, &p), sp::angular_momentum(&x0, &p));
     for (method, rtol, bound) in [(Method::Dopri5, 1e-10, 1e-7), (Method::Rodas3, 1e-9, 1e-5)] {
@@ -126,7 +127,7 @@ fn energy_and_angular_momentum_are_conserved_through_floor_contacts() {
             .fold(0.0, f64::max);
         // The floor holds the bob up: its load exceeds the weight m g.
         assert!(
-            max_load > p[sp::P_M] * p[sp::P_G],
+            max_load > params.m * params.g,
             "{method:?}: peak load {max_load} N"
         );
         for x in &sol.x {
@@ -217,9 +218,15 @@ fn every_generated_function_is_accurate_against_double_double() {
 #[test]
 fn forced_oscillator_follows_its_closed_form_solution() {
     use own_model::generated::forced_oscillator as fo;
-    let p = SVector::from([2.0, 0.5, 1.3]); // omega0, a, omega
-    assert_eq!(fo::P_NAMES, ["omega0", "a", "omega"]);
-    let (w0, a, w) = (p[fo::P_OMEGA0], p[fo::P_A], p[fo::P_OMEGA]);
+    let p = fo::Params {
+        omega0: 2.0,
+        a: 0.5,
+        omega: 1.3,
+    };
+    assert_eq!(fo::Params::<f64>::NAMES, ["omega0", "a", "omega"]);
+    // The vector of the generated functions holds the fields in that order.
+    assert_eq!(SVector::from(p), SVector::from([2.0, 0.5, 1.3]));
+    let (w0, a, w) = (p.omega0, p.a, p.omega);
     let exact = |t: f64| a * ((w * t).cos() - (w0 * t).cos()) / (w0 * w0 - w * w);
     let system = fo::System::new(p);
     // The exact time derivative: d/dt of the forcing a cos(ωt) is −aω sin(ωt).

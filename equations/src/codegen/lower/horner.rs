@@ -6,15 +6,15 @@ use crate::graph::{Graph, Id, Node};
 use crate::simplify::konst;
 
 /// Pass 1 for one sum whose terms are already lowered. The terms are taken
-/// in [`crate::eval::sum_order`] (products of parameters first) and the two
+/// in [`crate::schedule::sum_order`] (products of parameters first) and the two
 /// groups are factored apart, parameters' addends first: alike parameter
 /// terms still meet before state-dependent ones are added (Sterbenz), as in
 /// the interpreter. The emitter keeps this order.
 pub(super) fn factor_sum(g: &Graph, xs: &[Id]) -> Id {
-    let order = crate::eval::sum_order(g, xs);
+    let order = crate::schedule::sum_order(g, xs);
     let n_param = order
         .iter()
-        .take_while(|&&t| crate::eval::is_param_term(g, t))
+        .take_while(|&&t| crate::schedule::is_param_term(g, t))
         .count();
     let terms: Vec<Term> = order.iter().map(|&t| factors_of(g, t)).collect();
     let (params, state) = terms.split_at(n_param);

@@ -64,7 +64,8 @@ pub fn lower(g: &Graph, roots: &[Id]) -> Vec<Id> {
         node => g.intern(node),
     });
     let shared = pairs::share_products(g, &cancelled);
-    combine::reuse_positive_terms(g, &reuse_reciprocals(g, &shared))
+    let reused = combine::reuse_positive_terms(g, &reuse_reciprocals(g, &shared));
+    sign::fold_even_powers(g, &reused)
 }
 
 /// `b⁻²` written `(b⁻¹)²` where the function binds `b⁻¹` anyway: the

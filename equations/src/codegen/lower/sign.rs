@@ -11,8 +11,8 @@
 use std::cmp::Ordering;
 
 use super::{Term, rebuild, sum_node, term_node};
-use crate::codegen::schedule::pow_form;
 use crate::graph::{Graph, Id, Node, PowForm};
+use crate::schedule::{negated, pow_form};
 use crate::simplify::{konst, term_parts};
 
 /// The roots with every sum sign-normalized and every negation folded
@@ -48,6 +48,21 @@ pub(super) fn fold_negations(g: &Graph, roots: &[Id]) -> Vec<Id> {
     })
 }
 
+/// The roots with every even power of a negation taken of its operand,
+/// `(−x)^{2k} = x^{2k}` (exact: the sign of a product of equal factors),
+/// so that no `let` binds a negation only to square it. The last lowering
+/// passes (sharing sub-products, reusing named terms) can leave such a
+/// power behind the sign folding.
+pub(super) fn fold_even_powers(g: &Graph, roots: &[Id]) -> Vec<Id> {
+    rebuild(g, roots, |g, _, node, _| match node {
+        Node::Pow(b, e) => match (negated(g, b), pow_form(g, e)) {
+            (Some(x), PowForm::Int(n)) if n % 2 == 0 => g.intern(Node::Pow(x, e)),
+            _ => g.intern(Node::Pow(b, e)),
+        },
+        node => g.intern(node),
+    })
+}
+
 /// How many users each node reachable from `roots` has.
 pub(super) fn use_counts(g: &Graph, roots: &[Id]) -> Vec<u32> {
     let live = g.reachable(roots);
@@ -59,16 +74,6 @@ pub(super) fn use_counts(g: &Graph, roots: &[Id]) -> Vec<u32> {
         g.with_node(Id(i as u32), |n| n.for_each_child(|c| uses[c.index()] += 1));
     }
     uses
-}
-
-/// `Some(x)` when `id` is the pure negation `(−1)·x`.
-pub(crate) fn negated(g: &Graph, id: Id) -> Option<Id> {
-    g.with_node(id, |n| match n {
-        Node::Mul(fs) if fs.len() == 2 => {
-            (crate::simplify::const_of(g, fs[0]) == Some(-1.0)).then_some(fs[1])
-        }
-        _ => None,
-    })
 }
 
 /// `(−1)·x`, or `y` when `x` is `(−1)·y`.

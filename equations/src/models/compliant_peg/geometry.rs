@@ -65,11 +65,18 @@ impl Contact {
 /// The peg's coordinates, velocities and dimensions as expressions.
 #[derive(Clone, Copy, Debug)]
 pub struct PegFrame<'g> {
+    /// Lateral position `x` of the centre of mass (m).
     pub x: Expr<'g>,
+    /// Position `z` of the centre of mass along the hole's axis, into the
+    /// hole (m).
     pub z: Expr<'g>,
+    /// Tilt `θ` of the peg's axis (rad).
     pub theta: Expr<'g>,
+    /// Rate of `x` (m/s).
     pub xdot: Expr<'g>,
+    /// Rate of `z` (m/s).
     pub zdot: Expr<'g>,
+    /// Rate of `θ` (rad/s).
     pub thetadot: Expr<'g>,
     /// Peg radius `r` (m).
     pub r: Expr<'g>,

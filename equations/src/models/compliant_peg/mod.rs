@@ -78,11 +78,58 @@ pub const PARAMS: [&str; 24] = [
     "hc_alpha",
 ];
 
+/// What each state component of [`STATE`] is, with its unit.
+pub const STATE_DOCS: [&str; 8] = [
+    "lateral position x of the centre of mass, m",
+    "position z of the centre of mass along the hole's axis, into the hole, m",
+    "tilt θ of the peg's axis, rad",
+    "lateral velocity of the centre of mass, m/s",
+    "axial velocity of the centre of mass, m/s",
+    "angular velocity of the tilt, rad/s",
+    "work W of the applied loads since the start, J",
+    "energy S dissipated by friction and contact damping since the start, J",
+];
+
+/// What each parameter of [`PARAMS`] is, with its unit.
+pub const PARAM_DOCS: [&str; 24] = [
+    "mass m of the peg, kg",
+    "moment of inertia J about the centre of mass, kg·m²",
+    "peg radius r, m",
+    "distance l_c from the centre of mass to the bottom face, m",
+    "hole diameter D, m",
+    "fillet radius ρ_p of the peg's bottom corners, m",
+    "fillet radius ρ_h of the hole's top edges, m",
+    "Coulomb friction coefficient μ, dimensionless",
+    "velocity scale v_s of the regularized friction law, m/s",
+    "Hertz stiffness of the edge contacts, N/m^1.5",
+    "Hertz stiffness of the wall contacts, N/m^1.5",
+    "applied axial force f₁ (along e_a, pushing the peg into the hole), N",
+    "applied radial force f₂ (along e_r), N",
+    "applied torque M about the centre of mass, positive increasing θ, N·m",
+    "contact modulus E* of the peg and hole materials, Pa",
+    "sum of the principal curvatures Σρ of the edge contacts, 1/m",
+    "Hertz ellipse coefficient m_a of the edge contacts (9), dimensionless",
+    "Hertz ellipse coefficient m_b of the edge contacts (10), dimensionless",
+    "Hertz approach coefficient δ* of the edge contacts (13), dimensionless",
+    "sum of the principal curvatures Σρ of the wall contacts, 1/m",
+    "Hertz ellipse coefficient m_a of the wall contacts (9), dimensionless",
+    "Hertz ellipse coefficient m_b of the wall contacts (10), dimensionless",
+    "Hertz approach coefficient δ* of the wall contacts (13), dimensionless",
+    "Hunt–Crossley damping coefficient α (0 for elastic contacts), s/m",
+];
+
 /// Extra parameters of the elastic friction law (after [`PARAMS`]): the
 /// effective shear modulus `G*` (Pa), the penetration floor `δ_0` (m)
 /// of the utilisation rate and the tangential damping time `τ_t` (s) (see
 /// [`elastic`]).
 pub const ELASTIC_PARAMS: [&str; 3] = ["g_star", "delta_floor", "tau_t"];
+
+/// What each parameter of [`ELASTIC_PARAMS`] is, with its unit.
+pub const ELASTIC_PARAM_DOCS: [&str; 3] = [
+    "effective shear modulus G* of Mindlin's tangential stiffness, Pa",
+    "penetration floor δ_0 of the utilisation rate, m",
+    "damping time τ_t of the tangential springs, s",
+];
 
 /// The friction law of the tangential contact forces.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -32,8 +32,7 @@ pub mod pair;
 use crate::GenError;
 use crate::builder::{ModelBuilder, Outputs};
 use crate::expr::Expr;
-use crate::graph::Graph;
-use crate::model::{Module, Output};
+use crate::model::Output;
 use geometry::{GEOMETRY, POSE, Pair};
 
 /// The module's name.
@@ -82,6 +81,36 @@ pub const STATE: [&str; 15] = [
     "wz",
     "work",
     "dissipation",
+];
+
+/// What each state component of [`STATE`] is, with its unit.
+const STATE_DOCS: [&str; 15] = [
+    "centre of mass x, hole frame, m",
+    "centre of mass y, hole frame, m",
+    "centre of mass z (up the bore axis, 0 at the top face), m",
+    "orientation quaternion, scalar part q0",
+    "orientation quaternion q1",
+    "orientation quaternion q2",
+    "orientation quaternion q3",
+    "centre-of-mass velocity x, hole frame, m/s",
+    "centre-of-mass velocity y, hole frame, m/s",
+    "centre-of-mass velocity z, hole frame, m/s",
+    "angular velocity about the body x axis, rad/s",
+    "angular velocity about the body y axis, rad/s",
+    "angular velocity about the body (peg) axis, rad/s",
+    "work W of the applied loads since the start, J",
+    "energy S dissipated since the start, J",
+];
+
+/// What each component of [`WRENCH`] is, with its unit.
+const WRENCH_DOCS: [&str; 7] = [
+    "contact force x, hole frame, N",
+    "contact force y, hole frame, N",
+    "contact force z, hole frame, N",
+    "contact moment about the centre of mass x, hole frame, N·m",
+    "contact moment about the centre of mass y, hole frame, N·m",
+    "contact moment about the centre of mass z, hole frame, N·m",
+    "rate of dissipation of the contacts and further generalized forces, W",
 ];
 
 /// Names of the wrench input: contact force `Fx, Fy, Fz` (N) and moment
@@ -145,13 +174,13 @@ fn pair_function<'g>(
         ),
         &[("x", pose), ("a", &[angle])],
         vec![
-            ("gap", Output::scalar(geo.gap)),
-            ("d1", Output::scalar(d1)),
-            ("d2", Output::scalar(d2)),
-            ("grad", Output::vector(&grad)),
-            ("normal", Output::vector(&geo.normal)),
-            ("point", Output::vector(&geo.point)),
-            ("axial", Output::scalar(geo.axial)),
+            ("gap", "gap g along the pair's normal (negative: penetration), m", Output::scalar(geo.gap)),
+            ("d1", "first derivative dg/dangle of the gap, m/rad", Output::scalar(d1)),
+            ("d2", "second derivative d²g/dangle² of the gap, m/rad²", Output::scalar(d2)),
+            ("grad", "gradient dg/d(px, py, pz, q0, q1, q2, q3) of the gap in the pose, m per unit", Output::vector(&grad)),
+            ("normal", "unit direction of the contact force on the peg, hole frame", Output::vector(&geo.normal)),
+            ("point", "contact point, hole frame, m", Output::vector(&geo.point)),
+            ("axial", "axial coordinate of the contact point along the peg from the centre of mass, m", Output::scalar(geo.axial)),
         ],
     )
 }
@@ -208,7 +237,11 @@ fn dynamics_functions<'g>(
              contact wrench w = (F, T about the centre of mass, hole frame; dissipation rate), the \
              applied loads and gravity along -z. SI units.",
         &[("y", y), ("w", w)],
-        vec![("ydot", Output::vector(&rhs))],
+        vec![(
+            "ydot",
+            "the state's rate dy/dt, SI units per s",
+            Output::vector(&rhs),
+        )],
     )?;
     mb.function(
         "rhs_jacobian",
@@ -216,8 +249,12 @@ fn dynamics_functions<'g>(
              dw = d(ydot)/dw (15 x 7); the runtime adds dw times the wrench's own derivative in y.",
         &[("y", y), ("w", w)],
         vec![
-            ("dy", Output::matrix(&jac(y))),
-            ("dw", Output::matrix(&jac(w))),
+            (
+                "dy",
+                "d(ydot)/dy at a fixed wrench (15 x 15)",
+                Output::matrix(&jac(y)),
+            ),
+            ("dw", "d(ydot)/dw (15 x 7)", Output::matrix(&jac(w))),
         ],
     )?;
     mb.function(
@@ -225,8 +262,16 @@ fn dynamics_functions<'g>(
         "Kinetic energy (J) and gravitational potential m g p_z (J).",
         &[("y", y)],
         vec![
-            ("kinetic", Output::scalar(kinetic)),
-            ("gravity", Output::scalar(m * grav * y[2])),
+            (
+                "kinetic",
+                "kinetic energy of translation and rotation, J",
+                Output::scalar(kinetic),
+            ),
+            (
+                "gravity",
+                "gravitational potential m g p_z, J",
+                Output::scalar(m * grav * y[2]),
+            ),
         ],
     )
 }
@@ -245,10 +290,11 @@ pub fn declare(m: &mut ModelBuilder<'_>) -> Result<(), GenError> {
     // Symbols are declared where the expressions first use them (pose,
     // angle, parameters, the pair functions; then the rest of the state and
     // the wrench), which fixes the order of terms in the emitted code.
+    m.doc(DOC);
     m.outputs(Outputs::NONE);
     let mut y = Vec::with_capacity(STATE.len());
-    for name in &STATE[..POSE.len()] {
-        y.push(m.symbol(name, "pose component (see the module's state layout)")?);
+    for (name, doc) in STATE[..POSE.len()].iter().zip(STATE_DOCS) {
+        y.push(m.symbol(name, doc)?);
     }
     let angle = m.symbol("angle", "angle along the pair's edge circle, rad")?;
     for (name, doc) in GEOMETRY.iter().chain(DYNAMICS.iter()).zip(PARAM_DOCS) {
@@ -258,27 +304,19 @@ pub fn declare(m: &mut ModelBuilder<'_>) -> Result<(), GenError> {
     for pair in Pair::ALL {
         pair_function(m, pair, &pose, angle)?;
     }
-    for name in &STATE[POSE.len()..] {
-        y.push(m.symbol(name, "state component (see the module's state layout)")?);
+    m.shared_output(
+        "PairGeometry",
+        "One contact pair at one angle along its edge circle: the gap with its first and second \
+         derivatives in the angle, its gradient in the pose, the force direction on the peg and \
+         the contact point.",
+        &Pair::ALL.map(Pair::name),
+    )?;
+    for (name, doc) in STATE[POSE.len()..].iter().zip(&STATE_DOCS[POSE.len()..]) {
+        y.push(m.symbol(name, doc)?);
     }
     let mut w = Vec::with_capacity(WRENCH.len());
-    for name in WRENCH {
-        w.push(m.symbol(name, "contact wrench component (see WRENCH)")?);
+    for (name, doc) in WRENCH.into_iter().zip(WRENCH_DOCS) {
+        w.push(m.symbol(name, doc)?);
     }
     dynamics_functions(m, &y, &w)
-}
-
-/// The module `compliant_peg_3d` in `g`, declared by [`declare`]: one
-/// function per contact pair, the Newton–Euler right-hand side, its
-/// partial derivatives and the energy.
-///
-/// # Panics
-/// Never for this fixed model ([`declare`] declares every name once).
-pub fn module(g: &Graph) -> Module {
-    let mut b = ModelBuilder::new(g, NAME, DOC);
-    let built = declare(&mut b).and_then(|()| b.finish());
-    match built {
-        Ok((module, _)) => module,
-        Err(e) => panic!("the compliant 3-D peg's declaration is inconsistent: {e}"),
-    }
 }

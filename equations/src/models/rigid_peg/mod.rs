@@ -30,6 +30,7 @@
 //! forces N; each variant's linear systems are its derivatives
 //! ([`variants`]). Units: SI (m, kg, s, N, N·m, rad, J).
 
+pub mod declare;
 pub mod geometry;
 pub mod variant;
 pub mod variants;

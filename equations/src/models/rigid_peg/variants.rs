@@ -18,32 +18,15 @@
 //!
 //! Each variant's systems are derivatives of the residual R (linear in its
 //! unknowns u): A = ∂R/∂u, b = −R|_{u=0}. For the Lagrange rows this is
-//! A = [M | −∂f/∂N], b = f|_{N=0}.
+//! A = [M | −∂f/∂N], b = f|_{N=0}. Each variant is declared as a model in
+//! [`super::declare`].
 
 use super::Derivation;
 use crate::expr::Expr;
 use crate::graph::Graph;
-use crate::model::{FnSpec, Input, Module, Output};
 use crate::subst::Substitution;
 
 pub use super::variant::Variant;
-
-/// `rigid_peg`.
-pub fn module(g: &Graph) -> Module {
-    build(g, Variant::Full)
-}
-/// `rigid_peg_frictionless`.
-pub fn module_frictionless(g: &Graph) -> Module {
-    build(g, Variant::Frictionless)
-}
-/// `rigid_peg_planar`.
-pub fn module_planar(g: &Graph) -> Module {
-    build(g, Variant::Planar)
-}
-/// `rigid_peg_planar_frictionless`.
-pub fn module_planar_frictionless(g: &Graph) -> Module {
-    build(g, Variant::PlanarFrictionless)
-}
 
 /// A variant's symbols and specialized expressions.
 pub struct Specialized<'g> {
@@ -157,138 +140,4 @@ pub fn linear_system<'g>(
     let mut s = Substitution::new(&pairs);
     let b = rows.iter().map(|&r| -s.apply(r)).collect();
     (a, b)
-}
-
-/// Builds the module of `variant`.
-///
-/// # Panics
-/// If a row the planar specialization must make vanish does not (a bug in
-/// the derivation: the planar motion would not solve the 2-DOF equations).
-pub fn build(g: &Graph, variant: Variant) -> Module {
-    let d = super::derive(g);
-    let sp = specialize(g, &d, variant);
-    for (k, r) in sp.vanished.iter().enumerate() {
-        assert!(
-            r.as_const() == Some(0.0),
-            "{}: dropped row {k} does not vanish identically: {r}",
-            variant.module_name()
-        );
-    }
-    let forward_unknowns: Vec<Expr<'_>> = sp.accel.iter().chain(&sp.normal).copied().collect();
-    let prescribed_unknowns: Vec<Expr<'_>> = sp.moments.iter().chain(&sp.normal).copied().collect();
-    let (fa, fb) = linear_system(g, &sp.rows, &forward_unknowns);
-    let (pa, pb) = linear_system(g, &sp.rows, &prescribed_unknowns);
-
-    let x = Input::new("x", &sp.state);
-    let p = Input::new("p", &d.p.all());
-    let loads = Input::new("loads", &sp.loads);
-    let qdd = Input::new("qdd", &sp.accel);
-    let mut dyn_inputs = vec![loads];
-    if !sp.friction_dir.is_empty() {
-        dyn_inputs.push(Input::new("t", &sp.friction_dir));
-    }
-    let inputs = |first: Vec<Input>| first.into_iter().chain(dyn_inputs.clone()).collect();
-    let names = |es: &[Expr<'_>]| {
-        es.iter()
-            .map(|e| format!("`{e}`"))
-            .collect::<Vec<_>>()
-            .join(", ")
-    };
-    let rows_doc = if variant.is_planar() {
-        "Rows: the Lagrange equation of γ (paper (26)/(32)), then the centre-of-mass equations along \
-         e_η and e_z ((29), (31)/(33), (34)); the ψ row and the lateral row vanish identically."
-    } else {
-        "Rows: the Lagrange equations of γ and ψ (paper (26), (27)), then the centre-of-mass \
-         equations (28)–(31) along e_η, e_n, e_z (the fixed-frame (29)–(31) rotated by −ψ)."
-    };
-    let mut functions = vec![
-        FnSpec::new(
-            "forward",
-            format!(
-                "Forward dynamics (replaces paper (24)–(31)): A u = b for u = ({}) (rad/s², N), \
-                 the applied loads and friction directions given.\n{rows_doc}\n\
-                 A = ∂R/∂u, b = −R at u = 0, R the residual derived from T, V and the generalized forces.",
-                names(&forward_unknowns)
-            ),
-            inputs(vec![x.clone(), p.clone()]),
-            vec![("a", Output::matrix(&fa)), ("b", Output::vector(&fb))],
-        ),
-        FnSpec::new(
-            "prescribed",
-            format!(
-                "Prescribed motion (paper (26)–(31), Fig. 9): A u = b for u = ({}) (N·m, N) given \
-                 q̈ (the moment components of `loads` are unused: they are the unknowns).\n{rows_doc}",
-                names(&prescribed_unknowns)
-            ),
-            inputs(vec![x.clone(), qdd, p.clone()]),
-            vec![("a", Output::matrix(&pa)), ("b", Output::vector(&pb))],
-        ),
-        FnSpec::new(
-            "contact_velocities",
-            "Material velocity of the peg at K, B1, B2 (rows) in rotating components (e_η, e_n, e_z) \
-             (m/s); replaces paper (10)–(13). The friction directions are −v/|v|.",
-            vec![x.clone(), p.clone()],
-            vec![("v", Output::matrix(&sp.contact_velocities))],
-        ),
-        FnSpec::new(
-            "energy",
-            "Kinetic energy T = ½ m|v_C|² + ½ ωᵀIω (paper (22)–(23)) and total energy T + V with \
-             V = m g z_C (J).",
-            vec![x.clone(), p.clone()],
-            vec![
-                ("kinetic", Output::scalar(sp.kinetic)),
-                ("total", Output::scalar(sp.energy)),
-            ],
-        ),
-    ];
-    if variant == Variant::Full {
-        let geo = &d.geo;
-        let outs = [
-            geo.a1,
-            geo.a2,
-            geo.s1,
-            geo.s2,
-            geo.b,
-            geo.sin_tau,
-            geo.cos_tau,
-            geo.eta_c,
-            geo.z_c,
-            geo.kl,
-            geo.bl,
-            geo.centre_l[0],
-            geo.centre_l[1],
-        ];
-        functions.push(FnSpec::new(
-            "geometry",
-            "Planar geometry at γ (m): a1, a2 (paper (1)), S1, S2 (2), b = BB1, sin τ, cos τ, η_C, z_C \
-             (3), KL, BL (5), η_L, z_L (4b).",
-            vec![x, p],
-            vec![("geo", Output::vector(&outs))],
-        ));
-    }
-    Module {
-        name: variant.module_name().to_owned(),
-        doc: format!(
-            "Rigid three-point peg leaning on the hole edge at K, B1, B2 (*Peg-on-hole: fundamental principles of motion of a peg leaning on a horizontal hole edge*), variant `{variant:?}`, derived \
-             by the generator (equations/src/models/rigid_peg.rs).\n\
-             State x = ({}); parameters p = (D_hole, d_peg, H, m, g, f, gamma0); loads = ({}){}.\n\
-             Vectors in rotating components (e_η, e_n, e_z){}. SI units.",
-            names(&sp.state),
-            names(&sp.loads),
-            if sp.friction_dir.is_empty() {
-                String::new()
-            } else {
-                format!(
-                    "; friction directions t = ({}) (unit, force on the peg)",
-                    names(&sp.friction_dir)
-                )
-            },
-            if variant.is_planar() {
-                "; ψ ≡ 0, so `F_x` is the in-plane horizontal force (along e_η) and N_B = N_B1 = N_B2"
-            } else {
-                ""
-            }
-        ),
-        functions,
-    }
 }

@@ -1,5 +1,8 @@
-//! Scheduling: which nodes a function computes, which get a `let`, and the
-//! Rust names of symbols and intermediate values.
+//! The evaluation order, one definition for the interpreter
+//! ([`crate::eval::Tape`]) and the emitter ([`crate::codegen`]): which nodes
+//! a function computes and which are computed once and reused (a `let`), in
+//! which order the terms of a sum are added and when a sum is evaluated
+//! with its common factors taken out.
 //!
 //! The nodes reachable from the outputs, taken in arena order, are already a
 //! topological order (children first, see [`crate::graph`]). A node gets a
@@ -12,13 +15,23 @@ use std::collections::BTreeSet;
 
 use crate::graph::{Graph, Id, Node, PowForm, Sym};
 
+/// `Some(x)` when `id` is the pure negation `(−1)·x`.
+pub fn negated(g: &Graph, id: Id) -> Option<Id> {
+    g.with_node(id, |n| match n {
+        Node::Mul(fs) if fs.len() == 2 => {
+            (crate::simplify::const_of(g, fs[0]) == Some(-1.0)).then_some(fs[1])
+        }
+        _ => None,
+    })
+}
+
 /// The constant exponent of a power node, if any.
 pub(crate) fn const_exponent(g: &Graph, e: Id) -> Option<f64> {
     g.expr(e).as_const()
 }
 
 /// How the power node `b^e` is computed ([`PowForm`]).
-pub(crate) fn pow_form(g: &Graph, e: Id) -> PowForm {
+pub fn pow_form(g: &Graph, e: Id) -> PowForm {
     PowForm::of(const_exponent(g, e))
 }
 
@@ -96,7 +109,7 @@ impl Schedule {
         for i in (0..n).rev() {
             if live[i] {
                 let id = Id(i as u32);
-                let neg = code && super::lower::sign::negated(g, id).is_some();
+                let neg = code && negated(g, id).is_some();
                 negation[i] = neg;
                 // An inlined negation passes its users on to its operand.
                 let weight = if neg { uses[i] } else { 1 };
@@ -160,102 +173,67 @@ impl Schedule {
     }
 }
 
-/// Names the generated code itself uses (besides the Rust keywords,
-/// [`super::tokens::KEYWORDS`]), so no `let` may take them.
-const GENERATED_NAMES: &[&str] = &["f64", "nalgebra"];
-
-/// ASCII names of Greek letters (lower and upper case map to the same).
-fn greek(c: char) -> Option<&'static str> {
-    const LOWER: [&str; 25] = [
-        "alpha", "beta", "gamma", "delta", "epsilon", "zeta", "eta", "theta", "iota", "kappa",
-        "lambda", "mu", "nu", "xi", "omicron", "pi", "rho", "sigma", "sigma", "tau", "upsilon",
-        "phi", "chi", "psi", "omega",
-    ];
-    let k = match c {
-        'α'..='ω' => c as u32 - 'α' as u32,
-        'Α'..='Ω' => c as u32 - 'Α' as u32,
-        _ => return None,
-    };
-    LOWER.get(k as usize).copied()
+/// The order in which the terms of a sum are added (left to right) by the
+/// interpreter, and the order the lowering (`codegen::lower`) keeps between
+/// its two groups in the emitted code: terms that are products of
+/// parameters (with a constant coefficient) first, then the others, each
+/// group in canonical order. Alike parameters (`r` and `−D/2`) then meet
+/// before a small state-dependent term is added, so their difference is
+/// exact when they are close (Sterbenz) instead of rounded at their size.
+pub fn sum_order(g: &Graph, xs: &[Id]) -> Vec<Id> {
+    let (mut first, rest): (Vec<Id>, Vec<Id>) = xs.iter().partition(|&&t| is_param_term(g, t));
+    first.extend(rest);
+    first
 }
 
-/// A snake_case ASCII identifier for a symbol name: Greek letters spelled
-/// out (`γ` → `gamma`), a combining dot as `dot`, camelCase split, anything
-/// else as `_`.
-pub fn snake_case(name: &str) -> String {
-    let mut out = String::new();
-    let mut prev_lower = false;
-    for c in name.chars() {
-        if let Some(w) = greek(c) {
-            if prev_lower {
-                out.push('_');
-            }
-            out.push_str(w);
-            prev_lower = true;
-        } else if c == '\u{307}' {
-            out.push_str("dot");
-            prev_lower = true;
-        } else if c.is_ascii_uppercase() {
-            if prev_lower {
-                out.push('_');
-            }
-            out.push(c.to_ascii_lowercase());
-            prev_lower = false;
-        } else if c.is_ascii_alphanumeric() {
-            out.push(c);
-            prev_lower = c.is_ascii_lowercase() || c.is_ascii_digit();
-        } else {
-            out.push('_');
-            prev_lower = false;
-        }
-    }
-    let out = out.trim_matches('_').to_owned();
-    match out.chars().next() {
-        None => "s".to_owned(),
-        Some(c) if c.is_ascii_digit() => format!("s{out}"),
-        _ => out,
-    }
+/// True for a sum term that is a product of parameters (with a constant
+/// coefficient): the first group of [`sum_order`].
+pub fn is_param_term(g: &Graph, t: Id) -> bool {
+    crate::simplify::all_params(g, &crate::simplify::term_parts(g, t).1)
 }
 
-/// Hands out identifiers unique within one function.
-#[derive(Default)]
-pub struct Names {
-    taken: BTreeSet<String>,
-    counter: usize,
+/// A sum evaluated as `common₁ · common₂ · … · (Σ cₖ · restₖ)`: every term
+/// is a product holding all the `common` factors (`m1 l1 s + m2 l1 s` is
+/// `l1 · s · (m1 + m2)`), which saves a multiplication per common factor
+/// and term. The interpreter applies it to the canonical DAG's sums, the
+/// emitter to the lowered ones (where the lowering's Horner pass has
+/// already taken out most common factors).
+#[derive(Clone, Debug, PartialEq)]
+pub struct FactoredSum {
+    /// The shared non-constant factors, in canonical order.
+    pub common: Vec<Id>,
+    /// Each term's coefficient and remaining factors, in the order of the
+    /// terms given.
+    pub rest: Vec<(f64, Vec<Id>)>,
 }
 
-impl Names {
-    /// A name set that already holds `reserved` (e.g. the input names).
-    pub fn new<'a>(reserved: impl IntoIterator<Item = &'a str>) -> Names {
-        let mut taken: BTreeSet<String> = super::tokens::KEYWORDS
+/// The factored form of the sum of `xs` (in the order given), when every term
+/// is a product that is not bound to a name (`named`: a `let` of the
+/// emitter's [`Schedule`], whose value
+/// is reused rather than recomputed) and they share at least one
+/// non-constant factor.
+pub fn factor_sum(g: &Graph, xs: &[Id], named: impl Fn(Id) -> bool) -> Option<FactoredSum> {
+    if xs.len() < 2
+        || !xs
             .iter()
-            .chain(GENERATED_NAMES)
-            .map(|s| (*s).to_owned())
-            .collect();
-        taken.extend(reserved.into_iter().map(str::to_owned));
-        Names { taken, counter: 0 }
+            .all(|&t| !named(t) && matches!(g.node(t), Node::Mul(_)))
+    {
+        return None;
     }
-
-    /// The next free `{prefix}{k}`, k = 0, 1, 2, ...
-    pub fn numbered(&mut self, prefix: &str) -> String {
-        loop {
-            let name = format!("{prefix}{}", self.counter);
-            self.counter += 1;
-            if self.taken.insert(name.clone()) {
-                return name;
-            }
-        }
+    let parts: Vec<(f64, Vec<Id>)> = xs
+        .iter()
+        .map(|&t| crate::simplify::term_parts(g, t))
+        .collect();
+    let mut common = parts[0].1.clone();
+    for (_, fs) in &parts[1..] {
+        common.retain(|f| fs.contains(f));
     }
-
-    /// `base`, or `base_2`, `base_3`, ... whichever is free first.
-    pub fn fresh(&mut self, base: &str) -> String {
-        let mut name = base.to_owned();
-        let mut k = 2;
-        while self.taken.contains(&name) {
-            name = format!("{base}_{k}");
-            k += 1;
-        }
-        self.taken.insert(name.clone());
-        name
+    if common.is_empty() {
+        return None;
     }
+    let rest = parts
+        .into_iter()
+        .map(|(c, fs)| (c, fs.into_iter().filter(|f| !common.contains(f)).collect()))
+        .collect();
+    Some(FactoredSum { common, rest })
 }

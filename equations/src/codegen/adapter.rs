@@ -2,36 +2,23 @@
 //! and `System`, which implements `pegdyn::system::OdeSystem` with the
 //! model's exact right-hand side, exact Jacobian and time derivative.
 
-use proc_macro2::{Ident, Literal, Span, TokenStream};
+use proc_macro2::TokenStream;
 use quote::quote;
 
-use super::model::Layout;
-use crate::GenError;
+use super::tokens::{ident, ulit as lit};
+use crate::model::Layout;
 
-fn ident(s: &str) -> Ident {
-    Ident::new(s, Span::call_site())
-}
-
-fn lit(n: usize) -> Literal {
-    Literal::usize_unsuffixed(n)
-}
-
-/// The adapter items (to be placed inside `pub mod <model>`).
-pub fn tokens(l: &Layout) -> TokenStream {
+/// The adapter items, emitted inside `pub mod <model>`.
+pub(crate) fn tokens(l: &Layout) -> TokenStream {
     let n = l.state.len();
     let np = l.params.len();
     let (nl, npl) = (lit(n), lit(np));
     let mut consts = Vec::new();
-    for (prefix, names, docs) in [
-        ("X", &l.state, &l.state_docs),
-        ("P", &l.params, &l.param_docs),
-    ] {
-        for (k, (name, doc)) in names.iter().zip(docs).enumerate() {
-            let c = ident(&format!("{prefix}_{}", name.to_uppercase()));
-            let d = format!(" Index of `{name}` in `{}`: {doc}.", prefix.to_lowercase());
-            let k = lit(k);
-            consts.push(quote! { #[doc = #d] pub const #c: usize = #k; });
-        }
+    for (k, (name, doc)) in l.state.iter().zip(&l.state_docs).enumerate() {
+        let c = ident(&format!("X_{}", name.to_uppercase()));
+        let d = format!(" Index of `{name}` in `x`: {doc}.");
+        let k = lit(k);
+        consts.push(quote! { #[doc = #d] pub const #c: usize = #k; });
     }
     let (xd, pd) = (&l.state_docs, &l.param_docs);
     consts.push(quote! {
@@ -67,7 +54,7 @@ pub fn tokens(l: &Layout) -> TokenStream {
             };
             let time_derivative = if l.time {
                 quote! {
-                    let (mass, forcing) = dynamics(x, #(#rest),*);
+                    let DynamicsOut { mass, forcing } = dynamics(x, #(#rest),*);
                     let lu = mass.lu();
                     let Some(qdd) = lu.solve(&forcing) else { return #nan_v };
                     let tt = time_terms(x, &qdd, #(#rest),*);
@@ -88,7 +75,7 @@ pub fn tokens(l: &Layout) -> TokenStream {
                     /// singular, so that the integrator reports it).
                     pub fn accelerations(&self, t: f64, x: &nalgebra::SVector<f64, #nl>) -> nalgebra::SVector<f64, #dl> {
                         let _ = t;
-                        let (mass, forcing) = dynamics(x, #(#rest),*);
+                        let DynamicsOut { mass, forcing } = dynamics(x, #(#rest),*);
                         mass.lu().solve(&forcing).unwrap_or_else(|| nalgebra::SVector::repeat(f64::NAN))
                     }
                 }
@@ -100,7 +87,7 @@ pub fn tokens(l: &Layout) -> TokenStream {
                     /// Exact: ∂ẋ/∂x = [[0, I], [M⁻¹G]] with G from `jacobian_terms`.
                     fn jacobian(&self, t: f64, x: &nalgebra::SVector<f64, #nl>) -> nalgebra::SMatrix<f64, #nl, #nl> {
                         let _ = t;
-                        let (mass, forcing) = dynamics(x, #(#rest),*);
+                        let DynamicsOut { mass, forcing } = dynamics(x, #(#rest),*);
                         let lu = mass.lu();
                         let Some(qdd) = lu.solve(&forcing) else { return #nan_m };
                         let terms = jacobian_terms(x, &qdd, #(#rest),*);
@@ -144,6 +131,25 @@ pub fn tokens(l: &Layout) -> TokenStream {
             }
         }
     };
+    let new = if np > 0 {
+        quote! {
+            impl System {
+                /// The system at the parameters `params`.
+                pub fn new(params: Params<f64>) -> System {
+                    System { p: params.into() }
+                }
+            }
+        }
+    } else {
+        quote! {
+            impl System {
+                /// The system (the model has no parameters).
+                pub fn new() -> System {
+                    System { p: nalgebra::SVector::zeros() }
+                }
+            }
+        }
+    };
     let sdoc = format!(
         " The `{}` model at fixed parameters `p` as `ẋ = f(t, x)` for pegdyn's integrators\n (exact right-hand side, Jacobian and time derivative from the generated functions).",
         l.model
@@ -153,37 +159,10 @@ pub fn tokens(l: &Layout) -> TokenStream {
         #[doc = #sdoc]
         #[derive(Clone, Copy, Debug, PartialEq)]
         pub struct System {
-            /// The parameters, in the order of `P_NAMES`.
+            /// The parameter vector the functions take (from [`Params`]).
             pub p: nalgebra::SVector<f64, #npl>,
         }
-        impl System {
-            /// The system at parameters `p` (order of `P_NAMES`).
-            pub fn new(p: nalgebra::SVector<f64, #npl>) -> System {
-                System { p }
-            }
-        }
+        #new
         #body
     }
-}
-
-/// `code` (one formatted `pub mod name { .. }`) with `extra` appended
-/// inside the module, formatted again.
-pub fn splice(model: &str, code: &str, extra: TokenStream) -> Result<String, GenError> {
-    let parse_err = |e: syn::Error| GenError::Parse {
-        module: model.to_owned(),
-        message: e.to_string(),
-    };
-    let mut file = syn::parse_file(code).map_err(parse_err)?;
-    let extra = syn::parse2::<syn::File>(extra).map_err(parse_err)?;
-    let Some((_, items)) = file.items.iter_mut().find_map(|i| match i {
-        syn::Item::Mod(m) => m.content.as_mut(),
-        _ => None,
-    }) else {
-        return Err(GenError::Parse {
-            module: model.to_owned(),
-            message: "no module body to add the adapter to".to_owned(),
-        });
-    };
-    items.extend(extra.items);
-    Ok(prettyplease::unparse(&file))
 }
