@@ -252,6 +252,24 @@ pub fn evaluate<T: Real>(
     }
 }
 
+/// The contact wrench `(F, T about the centre of mass, Ṡ)` of `setups`
+/// (found at the motion `m`'s pose) at scalar `T`: the law of every contact
+/// ([`evaluate`], each point's and col's geometry from `geometry`) summed
+/// by [`law::add_to_wrench`].
+pub fn contact_wrench<T: Real>(
+    prm: &Peg3dParams,
+    law: &LawParams<T>,
+    m: &Motion<T>,
+    setups: &[Setup],
+    geometry: impl Fn(Pair, f64, &Geometry<f64>) -> Geometry<T>,
+) -> [T; 7] {
+    let mut w = [T::from_f64(0.0); 7];
+    evaluate(prm, law, m, setups, geometry, |_, at, load, col| {
+        law::add_to_wrench(&mut w, m, at, load, col)
+    });
+    w
+}
+
 /// Every contact of `setups` with its forces at state `y` (`f64`).
 pub fn forces(prm: &Peg3dParams, y: &SVector<f64, 15>, setups: &[Setup]) -> Vec<ContactForce> {
     let m = Motion::of_state(y.as_slice());
@@ -268,7 +286,8 @@ pub fn forces(prm: &Peg3dParams, y: &SVector<f64, 15>, setups: &[Setup]) -> Vec<
 }
 
 /// The contact wrench `(F, T about the centre of mass, Ṡ)` of `forces` at
-/// state `y` ([`law::add_to_wrench`] at `f64`).
+/// state `y` ([`law::add_to_wrench`] at `f64`): the same as
+/// [`contact_wrench`] of their setups.
 pub fn wrench(y: &SVector<f64, 15>, forces: &[ContactForce]) -> SVector<f64, 7> {
     let m = Motion::of_state(y.as_slice());
     let mut w = [0.0; 7];

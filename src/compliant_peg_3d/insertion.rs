@@ -178,8 +178,7 @@ impl Insertion {
         y: &SVector<f64, N_STATE>,
     ) -> Result<SVector<f64, N_STATE>, HertzError> {
         let ys = peg_state(y);
-        let forces = self.peg.forces(&ys)?;
-        let mut w = Peg3d::wrench(&ys, &forces);
+        let mut w = self.peg.contact_wrench(&ys)?;
         let mut power = 0.0;
         if let Some((_, load)) = self.wrist_load(t, &ys) {
             for k in 0..3 {

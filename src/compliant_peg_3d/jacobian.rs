@@ -8,7 +8,7 @@
 //! ```
 //!
 //! with `∂f/∂y`, `∂f/∂w` from the generated `rhs_jacobian`. `dw/dy` is the
-//! contact law ([`super::law`], through [`super::forces::evaluate`]) evaluated
+//! contact law ([`super::law`], through [`super::forces::contact_wrench`]) evaluated
 //! at dual numbers ([`Dual`]) seeded with the 15 state components, each
 //! point and col followed through its stationary angle
 //! ([`Pair::at_stationary`](super::contact::Pair::at_stationary): the
@@ -27,9 +27,9 @@
 //! ∂k/∂(pose)` ([`super::stiffness`]) enters the wrench with its value, times
 //! the point's hand-over weight, but not its own derivative).
 
-use super::forces::{Setup, evaluate};
+use super::forces::{Setup, contact_wrench};
 use super::frame::Motion;
-use super::law::{LawParams, add_to_wrench};
+use super::law::LawParams;
 use super::params::Peg3dParams;
 use crate::generated::compliant_peg_3d as generated;
 use crate::scalar::Dual;
@@ -52,15 +52,9 @@ pub fn wrench(
     let m = Motion::of_state(&yd);
     let x = SVector::<D, 7>::from(m.pose);
     let pd = p.map(D::constant);
-    let mut w = [D::constant(0.0); 7];
-    evaluate(
-        prm,
-        &LawParams::of(prm),
-        &m,
-        setups,
-        |pair, angle, _| pair.at_stationary(&x, angle, &pd),
-        |_, at, load, col| add_to_wrench(&mut w, &m, at, load, col),
-    );
+    let w = contact_wrench(prm, &LawParams::of(prm), &m, setups, |pair, angle, _| {
+        pair.at_stationary(&x, angle, &pd)
+    });
     let value = SVector::<f64, 7>::from_fn(|r, _| w[r].v);
     let deriv = SMatrix::<f64, 7, 15>::from_fn(|r, col| w[r].d[col]);
     (value, deriv)

@@ -127,11 +127,10 @@ impl OdeSystem<7> for PrescribedPeg {
             .unwrap_or_else(|_| SVector::repeat(f64::NAN))
     }
 
-    /// `(v, (F + F_a)/m − g e_z, Ṡ)` with `(F, Ṡ)` of [`Peg3d::wrench`].
+    /// `(v, (F + F_a)/m − g e_z, Ṡ)` with `(F, Ṡ)` of
+    /// [`Peg3d::contact_wrench`].
     fn try_rhs(&self, t: f64, y: &SVector<f64, 7>) -> Result<SVector<f64, 7>, ModelError> {
-        let full = self.full_state(t, y);
-        let forces = self.peg.forces(&full)?;
-        let w = Peg3d::wrench(&full, &forces);
+        let w = self.peg.contact_wrench(&self.full_state(t, y))?;
         let prm = &self.peg.params;
         let f =
             Vector3::new(w[0], w[1], w[2]) + prm.force - Vector3::z() * (prm.mass * prm.gravity);

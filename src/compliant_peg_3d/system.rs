@@ -17,6 +17,7 @@ use super::face;
 use super::forces::{self, ContactForce, Setup};
 use super::frame;
 use super::jacobian;
+use super::law::LawParams;
 use super::params::Peg3dParams;
 use super::prune;
 use super::search::Search;
@@ -139,6 +140,26 @@ impl Peg3d {
         Ok(forces::forces(&self.params, y, &self.setups(y)?))
     }
 
+    /// The contact wrench `(F, T about the centre of mass, Ṡ)` at state
+    /// `y`: the law of every contact summed straight into the wrench
+    /// ([`forces::contact_wrench`] at `f64`; the same as
+    /// [`Peg3d::wrench`] of [`Peg3d::forces`]).
+    ///
+    /// # Errors
+    /// A contact whose Hertz setup fails (relative curvature not positive).
+    pub fn contact_wrench(&self, y: &SVector<f64, 15>) -> Result<SVector<f64, 7>, HertzError> {
+        let setups = self.setups(y)?;
+        let m = frame::Motion::of_state(y.as_slice());
+        let law = LawParams::of(&self.params);
+        Ok(SVector::from(forces::contact_wrench(
+            &self.params,
+            &law,
+            &m,
+            &setups,
+            |_, _, at| *at,
+        )))
+    }
+
     /// The contact wrench `(F, T about the centre of mass, Ṡ)` of
     /// `forces` at state `y` ([`forces::wrench`]).
     pub fn wrench(y: &SVector<f64, 15>, forces: &[ContactForce]) -> SVector<f64, 7> {
@@ -166,8 +187,7 @@ impl OdeSystem<15> for Peg3d {
 
     /// The generated right-hand side with the contact wrench.
     fn try_rhs(&self, _t: f64, y: &SVector<f64, 15>) -> Result<SVector<f64, 15>, ModelError> {
-        let f = self.forces(y)?;
-        Ok(generated::rhs(y, &Self::wrench(y, &f), &self.p))
+        Ok(generated::rhs(y, &self.contact_wrench(y)?, &self.p))
     }
 
     /// [`OdeSystem::try_jacobian`], NaN after a Hertz setup error.
