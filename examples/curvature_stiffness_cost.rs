@@ -8,7 +8,7 @@
 //! the machine's load beside the figures.
 
 use nalgebra::{SVector, Unit, UnitQuaternion, Vector3};
-use pegdyn::compliant_peg_3d::system::ContactForce;
+use pegdyn::compliant_peg_3d::ContactForce;
 use pegdyn::compliant_peg_3d::{HertzMode, Peg3d, Peg3dParams, pose_state, stiffness};
 use pegdyn::system::OdeSystem;
 use std::hint::black_box;

@@ -7,8 +7,23 @@
 //! defaults.
 //!
 //! Everything here works on fixed-size nalgebra types, so no call allocates.
+//!
+//! A model whose equations are not defined at some states (a contact law
+//! that cannot be set up there) says why through the fallible forms
+//! [`OdeSystem::try_rhs`] and [`OdeSystem::try_jacobian`]; the integrators
+//! call those and return the first [`ModelError`] met in
+//! [`crate::integrate::Solution::model_error`].
 
 use nalgebra::{SMatrix, SVector};
+
+/// Why a model cannot evaluate its equations at a state.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ModelError {
+    /// A Hertz contact could not be set up at the state (for the compliant
+    /// 3-D peg: a contact whose relative curvatures are not positive).
+    #[error(transparent)]
+    Hertz(#[from] crate::hertz::HertzError),
+}
 
 /// A system of ordinary differential equations `ẋ = f(t, x)`, `x ∈ ℝᴺ`.
 ///
@@ -37,6 +52,17 @@ pub trait OdeSystem<const N: usize> {
     /// The right-hand side `f(t, x)`, in the units of the state per unit time.
     fn rhs(&self, t: f64, x: &SVector<f64, N>) -> SVector<f64, N>;
 
+    /// The right-hand side, or why the model cannot evaluate it at
+    /// `(t, x)`. The integrators call this form. The default is
+    /// `Ok(rhs(t, x))`; a model that can fail overrides it (and then
+    /// returns NaN from [`rhs`](OdeSystem::rhs) where this fails).
+    ///
+    /// # Errors
+    /// The model's [`ModelError`] at `(t, x)`.
+    fn try_rhs(&self, t: f64, x: &SVector<f64, N>) -> Result<SVector<f64, N>, ModelError> {
+        Ok(self.rhs(t, x))
+    }
+
     /// The Jacobian `∂f/∂x` at `(t, x)`, entry `(i, j) = ∂fᵢ/∂xⱼ`.
     ///
     /// The default is a forward finite difference: column `j` is
@@ -48,6 +74,16 @@ pub trait OdeSystem<const N: usize> {
     /// models override it with the exact symbolic Jacobian.
     fn jacobian(&self, t: f64, x: &SVector<f64, N>) -> SMatrix<f64, N, N> {
         finite_difference_jacobian(|x| self.rhs(t, x), x)
+    }
+
+    /// The Jacobian, or why the model cannot evaluate it at `(t, x)`: as
+    /// [`try_rhs`](OdeSystem::try_rhs) to [`rhs`](OdeSystem::rhs). The
+    /// default is `Ok(jacobian(t, x))`.
+    ///
+    /// # Errors
+    /// The model's [`ModelError`] at `(t, x)`.
+    fn try_jacobian(&self, t: f64, x: &SVector<f64, N>) -> Result<SMatrix<f64, N, N>, ModelError> {
+        Ok(self.jacobian(t, x))
     }
 
     /// The partial time derivative `∂f/∂t` at `(t, x)`, needed by

@@ -114,8 +114,8 @@ fn check_pose(prm: &Peg3dParams, p: Vector3<f64>, q: UnitQuaternion<f64>) -> usi
             }
         }
         for &m in &found {
-            let g = pair.eval(&x, m, &pv);
-            let (gap, d1, d2, grad, normal, point) = (g.gap, g.d1, g.d2, g.grad, g.normal, g.point);
+            let e = pair.eval(&x, m, &pv);
+            let (gap, d1, d2, grad, normal, point) = (e.gap, e.d1, e.d2, e.grad, e.normal, e.point);
             assert!(
                 (gap - brute_gap(prm, pair, &p, &q, m)).abs() < 1e-14,
                 "{pair:?}: generated gap"
@@ -447,7 +447,7 @@ fn landing_with_curvature_hertz_runs_and_dissipates() {
     )
     .unwrap();
     assert!(sol.stop.is_success(), "{:?}", sol.stop);
-    assert!(sys.error().is_none(), "{:?}", sys.error());
+    assert!(sol.model_error.is_none(), "{:?}", sol.model_error);
     let mut last = 0.0;
     let mut peak: f64 = 0.0;
     let mut k_range = (f64::MAX, 0.0_f64);
@@ -806,7 +806,7 @@ fn axis_of_a_pose_is_the_rotated_body_axis() {
             rng.uniform(0.0, TAU),
         );
         let x = pose(Vector3::zeros(), &q);
-        let a = pegdyn::compliant_peg_3d::system::axis_of(&x);
+        let a = pegdyn::compliant_peg_3d::axis_of(&x);
         let expect = q * Vector3::z();
         assert!((a - expect).norm() < 1e-15, "{a} vs {expect}");
     }
@@ -821,4 +821,57 @@ fn state_names_follow_the_generated_state_layout() {
     assert_eq!(OdeSystem::state_names(&Peg3d::new(fig9())), &Y_NAMES[..]);
     assert_eq!(&STATE_NAMES[..15], &Y_NAMES[..]);
     assert_eq!(STATE_NAMES[15], "robot_work");
+}
+
+#[test]
+fn a_contact_hertz_cannot_set_up_is_an_error_value_through_the_integrator() {
+    // A peg 20 µm wider than its bore, 20 µm off-centre towards +x, tilted
+    // by 1 mrad towards −x and 20 mm deep: its rim meets the concave wall at
+    // +x, where the relative curvature along the circle, 1/r − 1/R, is
+    // negative: no Hertz point contact exists. The error comes back as a
+    // value from the forces, the fallible right-hand side and the
+    // integration (which stops at once: the start state is refused).
+    use pegdyn::hertz::HertzError;
+    use pegdyn::system::{ModelError, OdeSystem};
+    let mut prm = fig9();
+    prm.peg_diameter = prm.hole_diameter + 20e-6;
+    let sys = Peg3d::new(prm);
+    let y = pose_state(
+        Vector3::new(20e-6, 0.0, 0.5 * prm.length - 0.02),
+        orientation(1e-3, std::f64::consts::PI, 0.0),
+        Vector3::zeros(),
+        Vector3::zeros(),
+    );
+    let contacts = sys.contacts(&y);
+    assert!(
+        contacts.iter().any(|c| c.pair == Pair::RimWall),
+        "{contacts:?}"
+    );
+    let Err(HertzError::NotPointContact { a, .. }) = sys.forces(&y) else {
+        panic!("{:?}", sys.forces(&y));
+    };
+    assert!(a < 0.0, "A = {a}");
+    assert!(matches!(
+        sys.try_rhs(0.0, &y),
+        Err(ModelError::Hertz(HertzError::NotPointContact { .. }))
+    ));
+    assert!(sys.rhs(0.0, &y).iter().all(|v| v.is_nan()));
+    assert!(sys.try_jacobian(0.0, &y).is_err());
+    let sol = solve(
+        &sys,
+        Method::Dopri5,
+        (0.0, y),
+        1e-3,
+        &Options::with_tolerances(1e-6, 1e-12),
+    )
+    .unwrap();
+    assert!(!sol.stop.is_success(), "{:?}", sol.stop);
+    assert!(
+        matches!(
+            sol.model_error,
+            Some(ModelError::Hertz(HertzError::NotPointContact { .. }))
+        ),
+        "{:?}",
+        sol.model_error
+    );
 }

@@ -54,7 +54,7 @@ fn to_3d(y: &SVector<f64, 8>) -> SVector<f64, 15> {
 /// normal force per pair `(edge–side, rim–wall)`.
 fn sample_3d(peg: &Peg3d, y: &SVector<f64, 15>) -> [f64; 4] {
     let x = Peg3d::pose(y);
-    let axis = pegdyn::compliant_peg_3d::system::axis_of(&x);
+    let axis = pegdyn::compliant_peg_3d::axis_of(&x);
     let depth = -(y[2] - 0.5 * peg.params.length * axis.z);
     let theta = (-axis.x).atan2(axis.z);
     let (edge, wall) = pair_forces(peg, y);

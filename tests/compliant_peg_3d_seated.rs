@@ -42,7 +42,7 @@ fn centre_at_depth(
 
 fn tilt(y: &SVector<f64, 15>) -> f64 {
     let x = Peg3d::pose(y);
-    let a = pegdyn::compliant_peg_3d::system::axis_of(&x);
+    let a = pegdyn::compliant_peg_3d::axis_of(&x);
     a.xy().norm().atan2(a.z)
 }
 

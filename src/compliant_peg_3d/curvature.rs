@@ -12,8 +12,9 @@
 //! flat. The angle `ω` of [`Curvatures`] is the angle between the direction
 //! of body 1's first curvature and that of body 2's first curvature.
 
+use super::contact::{ContactPoint, Pair};
+use super::frame::{V3, add, cross, dot, scale, sub};
 use super::params::Peg3dParams;
-use super::search::{ContactPoint, Pair};
 use crate::hertz::Curvatures;
 use crate::scalar::Real;
 use nalgebra::Vector3;
@@ -96,24 +97,6 @@ pub fn at(
     }
 }
 
-type V3<T> = [T; 3];
-
-fn sub3<T: Real>(a: &V3<T>, b: &V3<T>) -> V3<T> {
-    [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn dot3<T: Real>(a: &V3<T>, b: &V3<T>) -> T {
-    a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
-}
-
-fn along<T: Real>(a: &V3<T>, s: T) -> V3<T> {
-    [a[0] * s, a[1] * s, a[2] * s]
-}
-
-fn add3<T: Real>(a: &V3<T>, b: &V3<T>) -> V3<T> {
-    [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-}
-
 /// [`torus`] in any [`Real`] scalar: `(κ_parallel, κ_meridian, ê_θ)`, with
 /// `ê_θ = axis × ê_ρ` left unnormalized (`|ê_θ| = |axis|`).
 fn torus_generic<T: Real>(
@@ -123,23 +106,22 @@ fn torus_generic<T: Real>(
     n: &V3<T>,
     tube: f64,
 ) -> (T, T, V3<T>) {
-    let rel = sub3(x, origin);
-    let radial = sub3(&rel, &along(axis, dot3(&rel, axis)));
-    let rho = dot3(&radial, &radial).sqrt();
-    let e_rho = along(&radial, T::from_f64(1.0) / rho);
-    let t = [
-        axis[1] * e_rho[2] - axis[2] * e_rho[1],
-        axis[2] * e_rho[0] - axis[0] * e_rho[2],
-        axis[0] * e_rho[1] - axis[1] * e_rho[0],
-    ];
-    (dot3(n, &e_rho) / rho, T::from_f64(1.0 / tube), t)
+    let rel = sub(x, origin);
+    let radial = sub(&rel, &scale(axis, dot(&rel, axis)));
+    let rho = dot(&radial, &radial).sqrt();
+    let e_rho = scale(&radial, T::from_f64(1.0) / rho);
+    (
+        dot(n, &e_rho) / rho,
+        T::from_f64(1.0 / tube),
+        cross(axis, &e_rho),
+    )
 }
 
 /// `cos 2ω = 2 (t·u)² / (|t|² |u|²) − 1` of the angle `ω` between two
 /// directions (smooth where `ω` itself, through `acos`, is not: at 0).
 fn cos_twice<T: Real>(t: &V3<T>, u: &V3<T>) -> T {
-    let c = dot3(t, u);
-    T::from_f64(2.0) * c * c / (dot3(t, t) * dot3(u, u)) - T::from_f64(1.0)
+    let c = dot(t, u);
+    T::from_f64(2.0) * c * c / (dot(t, t) * dot(u, u)) - T::from_f64(1.0)
 }
 
 /// The relative curvatures `(A, B)` (1/m) of the contact of [`at`] in any
@@ -171,7 +153,7 @@ pub fn relative<T: Real>(
     let half = penetration * c(0.5);
     let (k1, k2, cos2) = match pair {
         Pair::EdgeSide => {
-            let surface = add3(point, &along(normal, half));
+            let surface = add(point, &scale(normal, half));
             let (kp, km, t) = torus_generic(&zero, &ez, &surface, normal, prm.mouth_fillet);
             (
                 [kp, km],
@@ -180,16 +162,16 @@ pub fn relative<T: Real>(
             )
         }
         Pair::RimEdge => {
-            let out = along(normal, c(-1.0));
-            let rim = add3(point, &along(&out, half));
-            let mouth = add3(point, &along(normal, half));
+            let out = scale(normal, c(-1.0));
+            let rim = add(point, &scale(&out, half));
+            let mouth = add(point, &scale(normal, half));
             let (kp1, km1, t1) = torus_generic(centre, axis, &rim, &out, prm.rim_fillet);
             let (kp2, km2, t2) = torus_generic(&zero, &ez, &mouth, normal, prm.mouth_fillet);
             ([kp1, km1], [kp2, km2], cos_twice(&t1, &t2))
         }
         Pair::RimWall | Pair::RimTop | Pair::RimBottom => {
-            let out = along(normal, c(-1.0));
-            let surface = add3(point, &along(&out, half));
+            let out = scale(normal, c(-1.0));
+            let surface = add(point, &scale(&out, half));
             let (kp, km, t) = torus_generic(centre, axis, &surface, &out, prm.rim_fillet);
             let body2 = if pair == Pair::RimWall {
                 [c(0.0), c(-1.0 / prm.bore_radius())]

@@ -61,8 +61,9 @@
 //!
 //! Units: SI.
 
+use super::contact::Pair;
+use super::frame::{V3, axis};
 use super::params::{HertzMode, Peg3dParams};
-use super::search::Pair;
 use crate::hertz::contact_modulus;
 use crate::scalar::Real;
 use nalgebra::{SVector, Vector3};
@@ -122,17 +123,6 @@ pub fn blend<T: Real>(u: T) -> (T, T) {
     }
 }
 
-/// The peg's axis `a = R(q) e_z` of a pose (unit quaternion `(w, i, j, k)`).
-pub fn axis<T: Real>(x: &[T; 7]) -> [T; 3] {
-    let (w, i, j, k) = (x[3], x[4], x[5], x[6]);
-    let two = T::from_f64(2.0);
-    [
-        two * (i * k + w * j),
-        two * (j * k - w * i),
-        T::from_f64(1.0) - two * (i * i + j * j),
-    ]
-}
-
 /// Whether the ring of `pair` applies at pose `x`: a plane pair, the peg
 /// upright, its tilt below [`BLEND_END`], its whole rim circle over the
 /// flat's existing part.
@@ -173,18 +163,52 @@ pub struct Ring<T> {
     pub angle: f64,
 }
 
+/// The ring's geometry and stiffness, at any scalar (so that a dual
+/// number can carry a parameter's derivative through [`ring_of`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RingShape<T> {
+    /// Radius `ϱ = r − ρ_p` of the rim's tube-centre circle (m).
+    pub radius: T,
+    /// Axial offset `h = ρ_p − L/2` of the circle's centre from the centre
+    /// of mass (m).
+    pub offset: T,
+    /// `z₀ + ρ_p` (m): the centre's penetration is `δ₀ = z₀ + ρ_p − c_r,z`.
+    pub reach: T,
+    /// Line stiffness `k_ℓ` (N/m²).
+    pub line_stiffness: T,
+}
+
+impl<T: Real> RingShape<T> {
+    /// The shape of the peg of `prm` on the plane `z0` (m) with line
+    /// stiffness `kl` (N/m²), as constants of `T`.
+    pub fn of(prm: &Peg3dParams, z0: f64, kl: f64) -> RingShape<T> {
+        let c = T::from_f64;
+        RingShape {
+            radius: c(prm.peg_radius()) - c(prm.rim_fillet),
+            offset: c(prm.rim_fillet) - c(0.5) * c(prm.length),
+            reach: c(z0) + c(prm.rim_fillet),
+            line_stiffness: c(kl),
+        }
+    }
+}
+
 /// The ring of the module documentation on the plane `z0` at pose `x`
 /// (centre of mass, unit quaternion), with line stiffness `kl`; `None`
-/// when no rim point penetrates.
+/// when no rim point penetrates. [`ring_of`] with [`RingShape::of`].
 pub fn ring<T: Real>(prm: &Peg3dParams, z0: f64, kl: f64, x: &[T; 7]) -> Option<Ring<T>> {
+    ring_of(&RingShape::of(prm, z0, kl), x)
+}
+
+/// The ring of the module documentation of `shape` at pose `x` (centre of
+/// mass, unit quaternion); `None` when no rim point penetrates.
+pub fn ring_of<T: Real>(shape: &RingShape<T>, x: &[T; 7]) -> Option<Ring<T>> {
     let c = T::from_f64;
-    let rr = prm.peg_radius() - prm.rim_fillet;
-    let h = prm.rim_fillet - 0.5 * prm.length;
+    let (rr, h, kl) = (shape.radius, shape.offset, shape.line_stiffness);
     let a = axis(x);
     let u = a[0] * a[0] + a[1] * a[1];
-    let d0 = c(z0 + prm.rim_fillet) - x[2] - c(h) * a[2];
+    let d0 = shape.reach - x[2] - h * a[2];
     let (d0f, uf) = (d0.to_f64(), u.to_f64().max(0.0));
-    let amp = rr * uf.sqrt();
+    let amp = rr.to_f64() * uf.sqrt();
     let depth = d0f + amp;
     if depth <= 0.0 {
         return None;
@@ -192,7 +216,7 @@ pub fn ring<T: Real>(prm: &Peg3dParams, z0: f64, kl: f64, x: &[T; 7]) -> Option<
     let (ihat, phat, g) = if d0f >= amp {
         let pi = c(PI);
         (
-            pi * d0 * d0 + c(0.5 * PI * rr * rr) * u,
+            pi * d0 * d0 + c(0.5 * PI) * rr * rr * u,
             c(2.0 * PI) * d0,
             pi,
         )
@@ -202,7 +226,7 @@ pub fn ring<T: Real>(prm: &Peg3dParams, z0: f64, kl: f64, x: &[T; 7]) -> Option<
         // Î = (8√2/15) A^{−1/2} δ_m^{5/2} (relative error O(ε)), with its
         // own exact derivatives P̂ = (4√2/3) A^{−1/2} δ_m^{3/2} and
         // A G = ∂Î/∂A = (8√2/15) (5/2 ε^{3/2} − ½ ε^{5/2}) A.
-        let big_a = c(rr) * u.sqrt();
+        let big_a = rr * u.sqrt();
         let dm = d0 + big_a;
         let eps = dm / big_a;
         let k0 = c(8.0 * 2f64.sqrt() / 15.0);
@@ -212,7 +236,7 @@ pub fn ring<T: Real>(prm: &Peg3dParams, z0: f64, kl: f64, x: &[T; 7]) -> Option<
         let g = k0 * (c(2.5) * eps * root - c(0.5) * eps * eps * root);
         (ihat, phat, g)
     } else {
-        let big_a = c(rr) * u.sqrt();
+        let big_a = rr * u.sqrt();
         let rho = d0 / big_a;
         let phi = (-rho).acos();
         let s0 = (c(1.0) - rho * rho).max0().sqrt();
@@ -220,8 +244,8 @@ pub fn ring<T: Real>(prm: &Peg3dParams, z0: f64, kl: f64, x: &[T; 7]) -> Option<
             big_a * big_a * (rho * rho * phi + c(2.0) * rho * s0 + c(0.5) * (phi - rho * s0));
         (ihat, c(2.0) * big_a * (rho * phi + s0), phi + rho * s0)
     };
-    let force = c(kl * rr) * phat;
-    let moment = force * c(h) + c(kl * rr * rr * rr) * g * a[2];
+    let force = kl * rr * phat;
+    let moment = force * h + kl * rr * rr * rr * g * a[2];
     // The deepest rim point: body direction of −e_z projected on the rim
     // plane, R(q)ᵀ(−e_z) = −(row 3 of R) = (2(wj − ik), −2(jk + wi), ·).
     let (w, i, j, k) = (x[3].to_f64(), x[4].to_f64(), x[5].to_f64(), x[6].to_f64());
@@ -235,7 +259,7 @@ pub fn ring<T: Real>(prm: &Peg3dParams, z0: f64, kl: f64, x: &[T; 7]) -> Option<
     Some(Ring {
         force,
         moment,
-        potential: c(kl * rr) * ihat,
+        potential: kl * rr * ihat,
         axis: a,
         u,
         depth,
@@ -257,8 +281,8 @@ pub fn centre_of_pressure<T: Real>(x: &[T; 7], ring: &Ring<T>, z0: f64) -> [T; 3
 /// The hand-over's pure moment `2 a_z s′(u) (V_point − V_ring) (a × e_z)`
 /// (N·m, hole frame), `v_point` the plane pair's point-contact potential
 /// and `v_ring` the ring's, both unweighted (J).
-pub fn blend_moment(axis: &[f64; 3], u: f64, v_point: f64, v_ring: f64) -> Vector3<f64> {
+pub fn blend_moment<T: Real>(axis: &V3<T>, u: T, v_point: T, v_ring: T) -> V3<T> {
     let (_, ds) = blend(u);
-    let m = 2.0 * axis[2] * ds * (v_point - v_ring);
-    Vector3::new(m * axis[1], -m * axis[0], 0.0)
+    let m = T::from_f64(2.0) * axis[2] * ds * (v_point - v_ring);
+    [m * axis[1], -m * axis[0], T::from_f64(0.0)]
 }

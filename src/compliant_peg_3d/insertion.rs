@@ -17,16 +17,17 @@
 //! is constant along a solution when the contact stiffness is fixed
 //! ([`Insertion::energy_balance`]).
 
+use super::contact::{ContactPoint, Pair};
+use super::curvature;
+use super::forces::ContactForce;
 use super::params::Peg3dParams;
 use super::robot::RobotMotion;
-use super::search::ContactPoint;
-use super::system::{ContactForce, Peg3d};
+use super::system::{Peg3d, pose_state};
 use super::wrist::{PegMotion, RobotFrame, WristLoad, WristParams};
 use crate::generated::compliant_peg_3d as generated;
-use crate::hertz::HertzError;
-use crate::system::OdeSystem;
+use crate::hertz::{EllipticityMethod, HertzContact, HertzError};
+use crate::system::{ModelError, OdeSystem};
 use nalgebra::{Quaternion, SVector, UnitQuaternion, Vector3};
-use std::cell::RefCell;
 
 /// State dimension of [`Insertion`].
 pub const N_STATE: usize = 16;
@@ -66,7 +67,6 @@ pub struct Insertion {
     pub held: Option<Held>,
     /// Magnitude `M₀` of the follower aligning moment (N·m, 0 for none).
     pub aligning_moment: f64,
-    error: RefCell<Option<HertzError>>,
 }
 
 /// Everything about one state, for output and outcome checks.
@@ -146,14 +146,7 @@ impl Insertion {
             peg: Peg3d::new(params),
             held,
             aligning_moment,
-            error: RefCell::new(None),
         }
-    }
-
-    /// The first Hertz setup error met by the right-hand side, which
-    /// returns NaN from then on (stopping the integrator).
-    pub fn error(&self) -> Option<HertzError> {
-        self.error.borrow().clone()
     }
 
     /// The follower moment at axis `a` (hole frame, N·m).
@@ -185,8 +178,7 @@ impl Insertion {
         y: &SVector<f64, N_STATE>,
     ) -> Result<SVector<f64, N_STATE>, HertzError> {
         let ys = peg_state(y);
-        let forces = self.peg.forces(&ys)?;
-        let mut w = Peg3d::wrench(&ys, &forces);
+        let mut w = self.peg.contact_wrench(&ys)?;
         let mut power = 0.0;
         if let Some((_, load)) = self.wrist_load(t, &ys) {
             for k in 0..3 {
@@ -263,7 +255,7 @@ impl Insertion {
         let centre = f.position - arm - Vector3::z() * sag;
         let v = f.velocity + f.angular_velocity.cross(&(centre - f.position));
         let omega_body = f.orientation.inverse() * f.angular_velocity;
-        let ys = super::system::pose_state(centre, f.orientation, v, omega_body);
+        let ys = pose_state(centre, f.orientation, v, omega_body);
         let mut y = SVector::<f64, N_STATE>::zeros();
         y.fixed_rows_mut::<15>(0).copy_from(&ys);
         Some(y)
@@ -283,17 +275,12 @@ impl Insertion {
         let (mut p0, mut skipped) = (0.0_f64, 0);
         for f in &sample.forces {
             let c = &f.contact;
-            let curv = super::curvature::at(prm, c, &m.centre, &axis);
+            let curv = curvature::at(prm, c, &m.centre, &axis);
             let (m1, m2) = match c.pair {
-                super::search::Pair::EdgeSide => (&prm.hole_material, &prm.peg_material),
+                Pair::EdgeSide => (&prm.hole_material, &prm.peg_material),
                 _ => (&prm.peg_material, &prm.hole_material),
             };
-            match crate::hertz::HertzContact::try_new(
-                &curv,
-                m1,
-                m2,
-                crate::hertz::EllipticityMethod::Exact,
-            ) {
+            match HertzContact::try_new(&curv, m1, m2, EllipticityMethod::Exact) {
                 Ok(h) => p0 = p0.max(h.max_pressure(f.normal_force)),
                 Err(_) => skipped += 1,
             }
@@ -311,7 +298,7 @@ impl Insertion {
         let prm = &self.peg.params;
         let centre = Vector3::new(0.0, 0.0, 0.5 * prm.length - depth);
         let v = Vector3::new(0.0, 0.0, f.velocity.z);
-        let ys = super::system::pose_state(centre, UnitQuaternion::identity(), v, Vector3::zeros());
+        let ys = pose_state(centre, UnitQuaternion::identity(), v, Vector3::zeros());
         let mut y = SVector::<f64, N_STATE>::zeros();
         y.fixed_rows_mut::<15>(0).copy_from(&ys);
         Some(y)
@@ -319,17 +306,19 @@ impl Insertion {
 }
 
 impl OdeSystem<N_STATE> for Insertion {
+    /// [`Insertion::rate`], NaN after a Hertz setup error.
     fn rhs(&self, t: f64, y: &SVector<f64, N_STATE>) -> SVector<f64, N_STATE> {
-        match self.rate(t, y) {
-            Ok(d) => d,
-            Err(e) => {
-                let mut slot = self.error.borrow_mut();
-                if slot.is_none() {
-                    *slot = Some(e);
-                }
-                SVector::repeat(f64::NAN)
-            }
-        }
+        self.rate(t, y)
+            .unwrap_or_else(|_| SVector::repeat(f64::NAN))
+    }
+
+    /// [`Insertion::rate`].
+    fn try_rhs(
+        &self,
+        t: f64,
+        y: &SVector<f64, N_STATE>,
+    ) -> Result<SVector<f64, N_STATE>, ModelError> {
+        Ok(self.rate(t, y)?)
     }
 
     fn state_names(&self) -> &'static [&'static str] {
@@ -389,7 +378,7 @@ pub fn lean_pose(
     let centre = pose.o2 + axis * (0.5 * prm.length);
     let peg = Peg3d::new(*prm);
     let touches = |s: f64| {
-        let y = super::system::pose_state(
+        let y = pose_state(
             centre - Vector3::z() * s,
             q,
             Vector3::zeros(),

@@ -24,38 +24,21 @@
 //! Since `α_i` and `α_c` are stationary points of `g`, the envelope theorem
 //! gives `−∂V/∂(pose) = Σ k δ_i^{3/2} ∂g(α_i)/∂pose − Σ k δ_c^{3/2}
 //! ∂g(α_c)/∂pose`: a force `Q_i n_i` at each point and `−k δ_c^{3/2} n_c`
-//! at each subtracted col. [`super::system`] applies the col's force
+//! at each subtracted col. [`super::law`] applies the col's force
 //! (elastic only: no damping, no friction) with the point it is attached to
 //! (the minimum before it in angle).
 
-use super::search::{ContactPoint, Pair};
-use nalgebra::{SVector, Vector3};
+use super::contact::{ContactPoint, Pair, Saddle};
+use nalgebra::SVector;
 use std::f64::consts::TAU;
-
-/// A col attached to a contact point: the penetrating maximum of the gap
-/// between it and the next minimum of the same pair, whose overlap is
-/// subtracted once ([`assign`]).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Saddle {
-    /// Angle along the pair's edge circle (rad, in `[0, 2π)`).
-    pub angle: f64,
-    /// Penetration at the col `δ_col > 0` (m).
-    pub penetration: f64,
-    /// Gradient of the gap in the pose `(p, q)` at the col.
-    pub gradient: SVector<f64, 7>,
-    /// Unit force direction at the col, hole frame.
-    pub normal: Vector3<f64>,
-    /// The col's contact point, hole frame (m).
-    pub point: Vector3<f64>,
-}
 
 /// The maximum of `g` in `(lo, hi)` with `g′(lo) > 0 > g′(hi)`: Newton on
 /// `g′` with bisection on its sign. Returns the angle (unwrapped).
 fn col(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, mut lo: f64, mut hi: f64) -> f64 {
     let mut a = 0.5 * (lo + hi);
     for _ in 0..80 {
-        let g = pair.eval(x, a, p);
-        let (d1, d2) = (g.d1, g.d2);
+        let out = pair.eval(x, a, p);
+        let (d1, d2) = (out.d1, out.d2);
         if d1 > 0.0 {
             lo = a;
         } else {
@@ -109,14 +92,13 @@ pub fn assign(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, points: &mu
         pt.saddle = None;
         if depth > 0.0 && keep != Some(k) {
             let a = a.rem_euclid(TAU);
-            let g = pair.eval(x, a, p);
-            let (gradient, normal, point) = (g.grad, g.normal, g.point);
+            let e = pair.eval(x, a, p);
             pt.saddle = Some(Saddle {
                 angle: a,
                 penetration: depth,
-                gradient,
-                normal,
-                point,
+                gradient: e.grad,
+                normal: e.normal,
+                point: e.point,
             });
         }
     }

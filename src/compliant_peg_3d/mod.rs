@@ -3,32 +3,52 @@
 //! quaternion, body angular velocity; Newton–Euler), Hertz point contacts
 //! found along the edge circles at every right-hand-side call.
 //!
+//! The files read as layers, each using only those listed before it:
+//!
 //! - [`params`]: bodies, materials, loads and contact laws, and the
 //!   generated functions' parameter vector.
-//! - [`search`]: the local maxima of penetration of each contact pair by
-//!   Newton in the edge angle, warm-started, with a bracketing scan.
+//! - [`frame`]: 3-vectors, the unit quaternion, the axis and the peg's
+//!   motion at any scalar, in the order of the `f64` right-hand side.
+//! - [`contact`]: the contact pairs and their generated functions (called
+//!   in [`Pair::eval`] alone), a contact point and its col, a contact's
+//!   geometry at any scalar and through its stationary angle in dual
+//!   numbers, the peg's axis.
 //! - [`merge`]: the continuous rule by which two points of one pair share
 //!   their force as they merge (prominence above the col between them).
-//! - [`jacobian`]: the exact Jacobian, the generated partial derivatives
-//!   and the chain rule through the contact wrench, in [`dual`] numbers.
-//! - [`prune`]: cheap bounds that skip the pairs a pose cannot touch.
+//! - [`search`]: the local maxima of penetration of each contact pair by
+//!   Newton in the edge angle, warm-started, with a bracketing scan.
 //! - [`face`]: the peg's bottom on a flat at small tilt: the rim circle
 //!   as a distributed line contact (closed-form ring potential), handed
 //!   over to the rim's Hertz point contact as the tilt grows.
+//! - [`prune`]: cheap bounds that skip the pairs a pose cannot touch.
 //! - [`curvature`]: the principal curvatures of both surfaces at a contact
 //!   point, for the Hertz ellipse.
 //! - [`stiffness`]: the pose derivative of the curvature stiffness, whose
 //!   term `−(2/5) δ^{5/2} ∂k/∂(pose)` completes the elastic force.
-//! - [`system`]: contact forces (Hertz, Hunt–Crossley damping, regularized
-//!   Coulomb friction with the material point's velocity) summed into the
-//!   wrench of the generated Newton–Euler right-hand side.
+//! - [`law`]: the contact law, once, generic over the scalar: Hertz,
+//!   Hunt–Crossley damping, regularized Coulomb friction with the material
+//!   point's velocity, the subtracted col, the curvature-stiffness term,
+//!   the ring, and the wrench they add up to.
+//! - [`forces`]: each contact's Hertz setup, then the law over every
+//!   contact at `f64` (the forces and wrench of the right-hand side) or at
+//!   any scalar.
+//! - [`jacobian`]: the exact Jacobian: the generated partial derivatives
+//!   and the law at dual numbers of the state, at the given setups.
+//! - [`system`]: the ODE system [`Peg3d`]: search, setups, law, generated
+//!   Newton–Euler right-hand side; Hertz errors as values.
+//! - [`prescribed`], [`wrist`], [`robot`], [`insertion`], [`outcome`]: the
+//!   peg driven along a prescribed orientation, held by a compliant wrist
+//!   that a robot moves, and how an insertion ends.
 //!
 //! See `docs/compliant-peg-3d.md`.
 
+pub mod contact;
 pub mod curvature;
-pub mod dual;
 pub mod face;
+pub mod forces;
+pub mod frame;
 pub mod jacobian;
+pub mod law;
 pub mod merge;
 pub mod params;
 pub mod prescribed;
@@ -37,9 +57,10 @@ pub mod search;
 pub mod stiffness;
 pub mod system;
 
-pub use merge::Saddle;
+pub use contact::{ContactPoint, Pair, Saddle, axis_of};
+pub use forces::ContactForce;
 pub use params::{HertzMode, Peg3dParams};
-pub use search::{ContactPoint, Pair, Search};
+pub use search::Search;
 pub use system::{Peg3d, pose_state};
 pub mod insertion;
 pub mod outcome;

@@ -19,8 +19,8 @@
 //! its own elastic deformation); otherwise it was `Jammed` (held by the
 //! applied forces inside the friction cones).
 
+use super::contact::{ContactPoint, Pair};
 use super::insertion::{Insertion, N_STATE, peg_state};
-use super::search::{ContactPoint, Pair};
 use crate::integrate::{Direction, Event, Method, Options, Solver};
 use nalgebra::SVector;
 use std::cell::RefCell;

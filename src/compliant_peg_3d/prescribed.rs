@@ -26,12 +26,13 @@
 //! [`HertzMode`] says). The rigid three-point peg's bottom edge rests on
 //! the hole edge at B1 and B2: here the pair [`Pair::RimEdge`].
 
-use super::params::{HertzMode, Peg3dParams};
 #[cfg(doc)]
-use super::search::Pair;
-use super::system::{ContactForce, Peg3d, pose_state};
+use super::contact::Pair;
+use super::forces::ContactForce;
+use super::params::{HertzMode, Peg3dParams};
+use super::system::{Peg3d, pose_state};
 use crate::hertz::HertzError;
-use crate::system::OdeSystem;
+use crate::system::{ModelError, OdeSystem};
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 
 /// Steady rates of nutation and precession from a start orientation.
@@ -120,20 +121,23 @@ impl PrescribedPeg {
 }
 
 impl OdeSystem<7> for PrescribedPeg {
-    /// `(v, (F + F_a)/m − g e_z, Ṡ)` with `(F, Ṡ)` of [`Peg3d::wrench`];
-    /// NaN (which stops the integrators) when [`PrescribedPeg::forces`]
-    /// fails.
+    /// [`OdeSystem::try_rhs`], NaN when [`PrescribedPeg::forces`] fails.
     fn rhs(&self, t: f64, y: &SVector<f64, 7>) -> SVector<f64, 7> {
-        let full = self.full_state(t, y);
-        let Ok(forces) = self.peg.forces(&full) else {
-            return SVector::repeat(f64::NAN);
-        };
-        let w = Peg3d::wrench(&full, &forces);
+        self.try_rhs(t, y)
+            .unwrap_or_else(|_| SVector::repeat(f64::NAN))
+    }
+
+    /// `(v, (F + F_a)/m − g e_z, Ṡ)` with `(F, Ṡ)` of
+    /// [`Peg3d::contact_wrench`].
+    fn try_rhs(&self, t: f64, y: &SVector<f64, 7>) -> Result<SVector<f64, 7>, ModelError> {
+        let w = self.peg.contact_wrench(&self.full_state(t, y))?;
         let prm = &self.peg.params;
         let f =
             Vector3::new(w[0], w[1], w[2]) + prm.force - Vector3::z() * (prm.mass * prm.gravity);
         let a = f / prm.mass;
-        SVector::<f64, 7>::from_column_slice(&[y[3], y[4], y[5], a.x, a.y, a.z, w[6]])
+        Ok(SVector::<f64, 7>::from_column_slice(&[
+            y[3], y[4], y[5], a.x, a.y, a.z, w[6],
+        ]))
     }
 
     fn state_names(&self) -> &'static [&'static str] {

@@ -15,9 +15,8 @@
 //! of the surfaces that exists ([`Pair::valid`]); the contacts found are
 //! then exactly those of a full scan.
 
+use super::contact::{Pair, axis_of};
 use super::params::Peg3dParams;
-use super::search::Pair;
-use super::system::axis_of;
 use nalgebra::{SVector, Vector3};
 
 /// Whether `pair` can have a valid penetrating contact at pose `x` (unit

@@ -18,120 +18,18 @@
 //! Only penetrating minima (`g < 0`) on the part of each surface that
 //! exists (see [`Pair::valid`]) become contacts.
 
-use super::merge::{self, Saddle};
+use super::contact::{ContactPoint, Pair, axis_of};
+use super::merge;
 use super::params::Peg3dParams;
-use crate::generated::compliant_peg_3d as generated;
-use nalgebra::{SVector, Vector1, Vector3};
+use nalgebra::SVector;
 use std::f64::consts::TAU;
 
-/// The contact pairs (the generator's own definition).
-#[path = "../../equations/src/models/compliant_peg_3d/pair.rs"]
-mod pair;
-pub use pair::Pair;
-
-impl Pair {
-    /// The generated function of this pair at pose `x` and angle `a`: gap,
-    /// `g′`, `g″`, gradient in the pose, force direction, contact point,
-    /// axial coordinate.
-    pub fn eval(
-        self,
-        x: &SVector<f64, 7>,
-        a: f64,
-        p: &SVector<f64, 16>,
-    ) -> generated::PairGeometry<f64> {
-        let a = Vector1::new(a);
-        match self {
-            Pair::EdgeSide => generated::edge_side(x, &a, p),
-            Pair::RimWall => generated::rim_wall(x, &a, p),
-            Pair::RimTop => generated::rim_top(x, &a, p),
-            Pair::RimBottom => generated::rim_bottom(x, &a, p),
-            Pair::RimEdge => generated::rim_edge(x, &a, p),
-        }
+/// The radius of the pair's edge circle (m): the scale of `g″`.
+fn scale(pair: Pair, prm: &Peg3dParams) -> f64 {
+    match pair {
+        Pair::EdgeSide => prm.bore_radius() + prm.mouth_fillet,
+        _ => prm.peg_radius(),
     }
-
-    /// The radius of the pair's edge circle (m): the scale of `g″`.
-    fn scale(self, prm: &Peg3dParams) -> f64 {
-        match self {
-            Pair::EdgeSide => prm.bore_radius() + prm.mouth_fillet,
-            _ => prm.peg_radius(),
-        }
-    }
-
-    /// Whether a stationary point lies on surfaces that exist: the mouth
-    /// fillet is the quarter torus facing up and inwards (force direction
-    /// `n` on the peg with `n_z ≥ 0`) and touches the peg's side above the
-    /// rim fillet; the rim fillet is the quarter facing down and outwards
-    /// (`n·a ≥ 0`: the pushed direction has no component down the axis);
-    /// the bore wall spans `−h_b ≤ z ≤ −ρ_h`; the top face lies outside
-    /// radius `R + ρ_h`, the bore bottom inside `R`; the rim against the
-    /// mouth needs both quarters: `n_z ≥ 0`, `n` pointing inwards
-    /// (`n·(x, y) ≤ 0` at the point) and `n·a ≥ 0` (the rim's outward
-    /// half is checked by [`Pair::rim_faces_out`], which needs the pose).
-    pub fn valid(
-        self,
-        prm: &Peg3dParams,
-        axis: &Vector3<f64>,
-        n: &Vector3<f64>,
-        pt: &Vector3<f64>,
-        axial: f64,
-    ) -> bool {
-        let radial = pt.xy().norm();
-        match self {
-            Pair::EdgeSide => {
-                n.z >= 0.0
-                    && axial >= prm.rim_fillet - 0.5 * prm.length
-                    && axial <= 0.5 * prm.length
-            }
-            Pair::RimWall => {
-                n.dot(axis) >= 0.0 && pt.z <= -prm.mouth_fillet && pt.z >= -prm.bore_depth
-            }
-            Pair::RimTop => axis.z >= 0.0 && radial >= prm.bore_radius() + prm.mouth_fillet,
-            Pair::RimBottom => axis.z >= 0.0 && radial <= prm.bore_radius(),
-            Pair::RimEdge => n.z >= 0.0 && n.xy().dot(&pt.xy()) <= 0.0 && n.dot(axis) >= 0.0,
-        }
-    }
-
-    /// Whether the rim fillet's surface point of a contact at `pt` lies on
-    /// the rim's outer half (the torus's inner half is the flat bottom
-    /// face): the outward normal `−n` of the rim has a non-negative
-    /// component along the outward radial direction from the peg's axis,
-    /// `−n·((pt − p) − ((pt − p)·a) a) ≥ 0`. True for the pairs that do not
-    /// involve the rim against a torus.
-    pub fn rim_faces_out(self, x: &SVector<f64, 7>, n: &Vector3<f64>, pt: &Vector3<f64>) -> bool {
-        if self != Pair::RimEdge {
-            return true;
-        }
-        let axis = super::system::axis_of(x);
-        let rel = pt - Vector3::new(x[0], x[1], x[2]);
-        let radial = rel - axis * rel.dot(&axis);
-        -n.dot(&radial) >= 0.0
-    }
-}
-
-/// One contact point: a penetrating local minimum of a pair's gap.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ContactPoint {
-    /// The pair.
-    pub pair: Pair,
-    /// Angle along the pair's edge circle (rad, in `[0, 2π)`).
-    pub angle: f64,
-    /// Penetration `δ = −g > 0` (m).
-    pub penetration: f64,
-    /// Gradient of the gap in the pose `(p, q)`.
-    pub gradient: SVector<f64, 7>,
-    /// Unit direction of the contact force on the peg, hole frame.
-    pub normal: Vector3<f64>,
-    /// Contact point, hole frame (m).
-    pub point: Vector3<f64>,
-    /// The col between this point and the next point of the same pair
-    /// (in angle) when the overlap between them is connected: its overlap
-    /// is subtracted once ([`super::merge`]); `None` otherwise.
-    pub saddle: Option<Saddle>,
-    /// True for the distributed ring of the peg's bottom on a flat
-    /// ([`super::face`]): then `angle` is the body angle of the deepest rim
-    /// point, `penetration` its depth `δ₀ + A`, `gradient` the gap's there,
-    /// `normal` is `e_z` and `point` the centre of pressure on the flat.
-    pub ring: bool,
 }
 
 /// Number of scan samples per circle.
@@ -159,8 +57,8 @@ fn refine(
     mut hi: f64,
 ) -> Option<f64> {
     for _ in 0..60 {
-        let g = pair.eval(x, a, p);
-        let (d1, d2) = (g.d1, g.d2);
+        let out = pair.eval(x, a, p);
+        let (d1, d2) = (out.d1, out.d2);
         if d1 > 0.0 {
             hi = a;
         } else {
@@ -173,8 +71,8 @@ fn refine(
             0.5 * (lo + hi)
         };
         if (next - a).abs() <= 1e-13 * (1.0 + a.abs()) || hi - lo <= 1e-13 {
-            let g = pair.eval(x, next, p);
-            let (d1, d2) = (g.d1, g.d2);
+            let out = pair.eval(x, next, p);
+            let (d1, d2) = (out.d1, out.d2);
             let tol = 1e-9 * pair_scale_hint(d2);
             return (d2 > 0.0 && d1.abs() <= tol.max(1e-15)).then_some(next);
         }
@@ -204,7 +102,7 @@ impl Search {
         p: &SVector<f64, 16>,
     ) -> Vec<f64> {
         let step = TAU / SAMPLES as f64;
-        let margin = pair.scale(prm) * step * step;
+        let margin = scale(pair, prm) * step * step;
         let mut minima: Vec<f64> = Vec::with_capacity(4);
         let push = |minima: &mut Vec<f64>, a: f64| {
             let a = wrap(a);
@@ -256,21 +154,21 @@ impl Search {
         out: &mut Vec<ContactPoint>,
     ) {
         let minima = self.minima(pair, prm, x, p);
-        let axis = super::system::axis_of(x);
+        let axis = axis_of(x);
         let first = out.len();
         for &a in &minima {
-            let g = pair.eval(x, a, p);
-            if g.gap < 0.0
-                && pair.valid(prm, &axis, &g.normal, &g.point, g.axial)
-                && pair.rim_faces_out(x, &g.normal, &g.point)
+            let e = pair.eval(x, a, p);
+            if e.gap < 0.0
+                && pair.valid(prm, &axis, &e.normal, &e.point, e.axial)
+                && pair.rim_faces_out(x, &e.normal, &e.point)
             {
                 out.push(ContactPoint {
                     pair,
                     angle: a,
-                    penetration: -g.gap,
-                    gradient: g.grad,
-                    normal: g.normal,
-                    point: g.point,
+                    penetration: -e.gap,
+                    gradient: e.grad,
+                    normal: e.normal,
+                    point: e.point,
                     saddle: None,
                     ring: false,
                 });

@@ -23,23 +23,27 @@
 //! direction and point come from the generated pair function in [`Dual`]
 //! numbers seeded with the centre of mass `p` and a small rotation `φ` of
 //! the peg about it (hole frame, `q → (1, φ/2) ⊗ q`), the stationary angle
-//! eliminated by `dα*/d(pose) = −(∂g′/∂(pose))/g″` as in the exact
-//! Jacobian ([`super::jacobian`]). The gradient in `(p, φ)` is directly a
+//! eliminated by `dα*/d(pose) = −(∂g′/∂(pose))/g″`
+//! ([`Pair::at_stationary`]) as in the exact Jacobian
+//! ([`super::jacobian`]). The gradient in `(p, φ)` is directly a
 //! force through the centre of mass and a moment:
 //! `F = −(2/5) δ^{5/2} ∂k/∂p`, `T = −(2/5) δ^{5/2} ∂k/∂φ` (a rotation about
 //! the centre keeps the quaternion unit to first order, so no constraint
 //! force enters).
 
+use super::contact::{ContactPoint, Pair, axis_of};
 use super::curvature;
-use super::dual::Dual;
-use super::face;
-use super::jacobian;
+use super::frame::axis;
 use super::params::Peg3dParams;
-use super::search::{ContactPoint, Pair};
 use crate::hertz::{
     Curvatures, Ellipticity, EllipticityMethod, HertzContact, HertzError, Material,
 };
+use crate::scalar::Dual;
 use nalgebra::{SVector, Vector3};
+
+/// The dual numbers of [`gradient`]: `p`, `φ` in the first six slots, the
+/// edge angle in the last.
+type D = Dual<16>;
 
 /// Step in `ln(B/A)` of the difference quotient of `d ln k/d ln r`.
 pub const LOG_STEP: f64 = 2e-5;
@@ -154,11 +158,11 @@ pub fn gradient(
     hertz: &HertzContact,
 ) -> Result<(Vector3<f64>, Vector3<f64>), HertzError> {
     let k = hertz.stiffness();
-    let c = Dual::constant;
+    let c = D::constant;
     let phi = [
-        Dual::variable(0.0, 3),
-        Dual::variable(0.0, 4),
-        Dual::variable(0.0, 5),
+        D::variable(0.0, 3),
+        D::variable(0.0, 4),
+        D::variable(0.0, 5),
     ];
     let (w, u) = (c(x[3]), [c(x[4]), c(x[5]), c(x[6])]);
     let half = c(0.5);
@@ -170,20 +174,27 @@ pub fn gradient(
         u[2] + half * (w * phi[2] + phi[0] * u[1] - phi[1] * u[0]),
     ];
     let xs = [
-        Dual::variable(x[0], 0),
-        Dual::variable(x[1], 1),
-        Dual::variable(x[2], 2),
+        D::variable(x[0], 0),
+        D::variable(x[1], 1),
+        D::variable(x[2], 2),
         q[0],
         q[1],
         q[2],
         q[3],
     ];
-    let xd = SVector::<Dual, 7>::from_column_slice(&xs);
-    let pd = p.map(Dual::constant);
-    let (gap, n, pt) = jacobian::at_stationary(pair, &xd, angle, &pd);
+    let xd = SVector::<D, 7>::from(xs);
+    let pd = p.map(D::constant);
+    let at = pair.at_stationary(&xd, angle, &pd);
     let centre = [xs[0], xs[1], xs[2]];
-    let axis = face::axis(&xs);
-    let (a, b) = curvature::relative(prm, pair, &pt, &n, -gap, &centre, &axis);
+    let (a, b) = curvature::relative(
+        prm,
+        pair,
+        &at.point,
+        &at.normal,
+        at.penetration,
+        &centre,
+        &axis(&xs),
+    );
     let (m1, m2) = match pair {
         Pair::EdgeSide => (&prm.hole_material, &prm.peg_material),
         _ => (&prm.peg_material, &prm.hole_material),
@@ -208,7 +219,7 @@ pub fn hertz_at(
     x: &SVector<f64, 7>,
 ) -> Result<HertzContact, HertzError> {
     let centre = Vector3::new(x[0], x[1], x[2]);
-    let curv = curvature::at(prm, c, &centre, &super::system::axis_of(x));
+    let curv = curvature::at(prm, c, &centre, &axis_of(x));
     let (m1, m2) = match c.pair {
         Pair::EdgeSide => (&prm.hole_material, &prm.peg_material),
         _ => (&prm.peg_material, &prm.hole_material),

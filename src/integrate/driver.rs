@@ -167,6 +167,7 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
             t_final: t,
             x_final: x,
             non_finite,
+            model_error: None,
         }
     };
 

@@ -6,7 +6,11 @@
 //! step control, event location and output for all of them. Expected ends
 //! of an integration (end time, terminal event, step size underflow,
 //! non-finite right-hand side, step budget) are values of [`StopReason`];
-//! only invalid input is an [`IntegrateError`].
+//! only invalid input is an [`IntegrateError`]. A model that cannot
+//! evaluate its equations at a state says why
+//! ([`crate::system::OdeSystem::try_rhs`]); the step is then rejected as
+//! for a non-finite value, and the first such error is returned in
+//! [`Solution::model_error`].
 //!
 //! ```
 //! use nalgebra::Vector2;
@@ -26,6 +30,7 @@ mod dense;
 mod driver;
 mod events;
 mod explicit_rk;
+mod fallible;
 mod iteration;
 mod lu;
 mod method;
@@ -130,6 +135,8 @@ impl<'a, const N: usize> Solver<'a, N> {
         };
         let start = (t0, x0);
         let (options, events) = (&self.options, self.events.as_slice());
+        let checked = fallible::Checked::new(system);
+        let system = &checked;
         let h = match self.method {
             Method::Rk4 { h } if !(h.is_finite() && h > 0.0) => {
                 return Err(IntegrateError::InvalidOption {
@@ -156,12 +163,14 @@ impl<'a, const N: usize> Solver<'a, N> {
                 )
             };
         }
-        Ok(match self.method {
+        let mut solution = match self.method {
             Method::Rk4 { .. } => run!(ExplicitRk::<N, 4>::new(Tableau::rk4())),
             Method::Dopri5 => run!(ExplicitRk::<N, 7>::new(Tableau::dopri5())),
             Method::Rodas3 => run!(Rosenbrock::<N, 4>::new(&RosenbrockTableau::rodas3())),
             Method::Rodas4 => run!(Rosenbrock::<N, 6>::new(&RosenbrockTableau::rodas4())),
-        })
+        };
+        solution.model_error = checked.into_first();
+        Ok(solution)
     }
 }
 

@@ -119,4 +119,10 @@ pub struct Solution<const N: usize> {
     /// component found at the last finite state (`None` otherwise, or when
     /// the probe found every component finite).
     pub non_finite: Option<super::NonFiniteAt>,
+    /// The first error the model returned
+    /// ([`crate::system::OdeSystem::try_rhs`],
+    /// [`crate::system::OdeSystem::try_jacobian`]), at an accepted state
+    /// or a trial stage; `None` when it never refused. A refused step is
+    /// rejected like a non-finite one.
+    pub model_error: Option<crate::system::ModelError>,
 }

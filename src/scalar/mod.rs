@@ -5,6 +5,8 @@
 //! `#[inline]`), and at [`Dd`] (double-double, about 106 significant bits)
 //! the same straight-line formula is evaluated with a unit roundoff of about
 //! 1e-32, which is the reference `pegdyn accuracy` measures `f64` against.
+//! At [`Dual`] (forward-mode dual numbers) it evaluates its exact first
+//! derivatives in the seeded variables alongside its value.
 //!
 //! ```
 //! use pegdyn::scalar::{Dd, Real};
@@ -15,9 +17,11 @@
 
 mod dd;
 mod dd_elementary;
+mod dual;
 mod real_f64;
 
 pub use dd::Dd;
+pub use dual::Dual;
 
 use std::fmt::Debug;
 use std::ops::{Add, Div, Mul, Neg, Sub};

@@ -8,8 +8,7 @@
 
 use nalgebra::{Matrix3, SVector, Vector2, Vector3};
 use pegdyn::compliant_peg_3d::prescribed::{Motion, PrescribedPeg};
-use pegdyn::compliant_peg_3d::system::axis_of;
-use pegdyn::compliant_peg_3d::{HertzMode, Pair, Peg3dParams, Search};
+use pegdyn::compliant_peg_3d::{HertzMode, Pair, Peg3dParams, Search, axis_of};
 use pegdyn::integrate::{Method, Options, OutputMode, solve};
 use pegdyn::rigid_peg::kinematics::Pose;
 use pegdyn::rigid_peg::prescribed::reactions;
@@ -72,8 +71,8 @@ pub fn gaps(sys: &PrescribedPeg, c: &Vector3<f64>) -> [f64; 3] {
     let mut g = [f64::NAN; 3];
     for pair in [Pair::EdgeSide, Pair::RimEdge] {
         for a in Search::default().minima(pair, prm, &x, pv) {
-            let geo = pair.eval(&x, a, pv);
-            let (gap, n, pt, axial) = (geo.gap, geo.normal, geo.point, geo.axial);
+            let e = pair.eval(&x, a, pv);
+            let (gap, n, pt, axial) = (e.gap, e.normal, e.point, e.axial);
             if !(pair.valid(prm, &axis, &n, &pt, axial) && pair.rim_faces_out(&x, &n, &pt)) {
                 continue;
             }

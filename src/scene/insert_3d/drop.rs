@@ -44,6 +44,7 @@ use crate::scene::integrator::DefaultMethod;
 use crate::scene::simulate::{integrate, integration_summary};
 use crate::scene::validate::Checker;
 use crate::scene::{Document, IntegratorSpec, Kind, Metric, RunContext, RunSummary, Scene};
+use crate::system::ModelError;
 use nalgebra::{SVector, Vector3};
 
 /// Registry entry.
@@ -150,7 +151,7 @@ impl Scene for Ready {
             events,
             &mut ctx.progress,
         )?;
-        if let Some(e) = sys.error() {
+        if let Some(ModelError::Hertz(e)) = sol.model_error.clone() {
             return Err(RunError::Hertz(e));
         }
         let names: Vec<String> = what

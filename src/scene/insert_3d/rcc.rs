@@ -61,6 +61,7 @@ use crate::scene::integrator::DefaultMethod;
 use crate::scene::simulate::{describe_stop, integrate, integration_summary};
 use crate::scene::validate::Checker;
 use crate::scene::{Document, IntegratorSpec, Kind, Metric, RunContext, RunSummary, Scene};
+use crate::system::ModelError;
 
 /// Registry entry.
 pub const KIND: Kind = Kind {
@@ -179,7 +180,7 @@ pub fn run_one(
         }
         (integrate(&sys, y0, spec, events, progress)?, what)
     };
-    if let Some(e) = sys.error() {
+    if let Some(ModelError::Hertz(e)) = solution.model_error.clone() {
         return Err(RunError::Hertz(e));
     }
     let terminal = match solution.stop {
