@@ -39,7 +39,7 @@ use serde::Deserialize;
 
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::integrate::{Options, OutputMode};
-use crate::output::csv::CsvWriter;
+use crate::output::names::Part;
 use crate::output::plot::{Figure, Panel, Series};
 use crate::rigid_peg::forward::{ForwardModel, FrictionLaw};
 use crate::rigid_peg::stop::ForwardStop;
@@ -314,12 +314,12 @@ impl Scene for AlignForwardScene {
         let header = [
             "t", "gamma", "psi", "gammadot", "psidot", "N_K", "N_B1", "N_B2",
         ];
-        let mut w = CsvWriter::create(&ctx.output("csv"), &header)?;
+        let mut w = ctx.table(Part::Main, &header)?;
         for r in &tr.rows {
             let [nk, nb1, nb2] = r.normal;
             w.row(&[r.t, r.x[0], r.x[1], r.x[2], r.x[3], nk, nb1, nb2])?;
         }
-        let csv = w.finish()?;
+        w.finish()?;
 
         let series =
             |k: usize| -> Vec<(f64, f64)> { tr.rows.iter().map(|r| (r.t, r.normal[k])).collect() };
@@ -342,10 +342,9 @@ impl Scene for AlignForwardScene {
                     (tr.rows.last().map_or(spec.t_end, |r| r.t), g0),
                 ],
             ));
-        let svg = ctx.output("svg");
         let mut fig = Figure::new();
         fig.panels = vec![reactions, angle];
-        fig.save(&svg)?;
+        ctx.figure(Part::Main, &fig)?;
 
         let t_final = tr.rows.last().map_or(spec.t0, |r| r.t);
         let integration = IntegrationSummary {
@@ -377,7 +376,7 @@ impl Scene for AlignForwardScene {
         Ok(RunSummary {
             integration: Some(integration),
             metrics,
-            outputs: vec![csv, svg],
+            ..RunSummary::default()
         })
     }
 }

@@ -34,8 +34,8 @@ use nalgebra::Vector4;
 use serde::Deserialize;
 
 use crate::error::{RunError, SceneErrors};
-use crate::output::csv::CsvWriter;
 use crate::output::decimate::{Decimate, PLOT_POINTS};
+use crate::output::names::Part;
 use crate::output::plot::{Figure, Panel, Series};
 use crate::scene::limits::sample_count;
 use crate::scene::simulate::{integrate_streaming, integration_summary};
@@ -136,8 +136,8 @@ impl Scene for DoublePendulumScene {
         // Energy error relative to the potential-energy scale of the problem.
         let e0 = system.energy(&x0);
         let scale = (p.mass1 + p.mass2) * p.gravity * p.length1 + p.mass2 * p.gravity * p.length2;
-        let mut csv = CsvWriter::create(
-            &ctx.output("csv"),
+        let mut csv = ctx.table(
+            Part::Main,
             &[
                 "t_s",
                 "theta1_rad",
@@ -189,9 +189,7 @@ impl Scene for DoublePendulumScene {
             path.push(c);
             err.push(d);
         }
-        let csv = csv.finish()?;
-
-        let svg = ctx.output("svg");
+        csv.finish()?;
         let mut fig = Figure::new();
         fig.panels.push(
             Panel::new("Double pendulum: angles", "t [s]", "angle [rad]")
@@ -210,7 +208,7 @@ impl Scene for DoublePendulumScene {
                 err,
             )),
         );
-        fig.save(&svg)?;
+        ctx.figure(Part::Main, &fig)?;
 
         let mut out = RunSummary {
             integration: Some(integration_summary(&self.integrator, &sol, &[])),
@@ -221,7 +219,6 @@ impl Scene for DoublePendulumScene {
             drift,
             "",
         ));
-        out.outputs = vec![csv, svg];
         Ok(out)
     }
 }

@@ -29,7 +29,8 @@
 use serde::Deserialize;
 
 use crate::error::{RunError, SceneError, SceneErrors};
-use crate::output::csv::{CsvWriter, format_f64};
+use crate::output::csv::format_f64;
+use crate::output::names::Part;
 use crate::output::plot::{Figure, Panel, Scale, Series};
 use crate::rigid_peg::PegParams;
 use crate::rigid_peg::prescribed::{Fig9Row, fig9_rows, gamma_grid};
@@ -305,7 +306,7 @@ impl Scene for Fig9Scene {
             "M_psi_over_mgD",
             "feasible",
         ];
-        let mut w = CsvWriter::create(&ctx.output("csv"), &header)?;
+        let mut w = ctx.table(Part::Main, &header)?;
         for r in &rows {
             let cells =
                 [r.gamma, r.psidot, r.n_b1, r.n_b2, r.n_k, r.m_gamma, r.m_psi].map(format_f64);
@@ -314,7 +315,7 @@ impl Scene for Fig9Scene {
             refs.push(flag);
             w.row_cells(&refs)?;
         }
-        let mut outputs = vec![w.finish()?];
+        w.finish()?;
 
         // One panel per reaction, linear in N/(m g) so that negative
         // (infeasible: the contact would have to pull) stretches show.
@@ -364,15 +365,13 @@ impl Scene for Fig9Scene {
                 "",
             ));
         }
-        let svg = ctx.output("svg");
         let mut fig = Figure::new();
         fig.panels = panels;
-        fig.save(&svg)?;
-        outputs.push(svg);
+        ctx.figure(Part::Main, &fig)?;
         Ok(RunSummary {
             integration: None,
             metrics,
-            outputs,
+            ..RunSummary::default()
         })
     }
 }

@@ -24,7 +24,8 @@ use serde::Deserialize;
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::jamming::dynamic::SweepSetup;
 use crate::jamming::table;
-use crate::output::csv::{CsvWriter, format_f64};
+use crate::output::csv::format_f64;
+use crate::output::names::Part;
 use crate::output::plot::Figure;
 use crate::scene::jamming_figure as figure;
 use crate::scene::jamming_sweep::{self, SweepParams};
@@ -184,9 +185,8 @@ impl Scene for JammingScene {
         let corners = table::corner_rows(p.r_m, &p.c, &p.mu, &p.l_m)?;
         let wedging = table::wedging_rows(p.r_m, &p.c, &p.mu)?;
 
-        let path = ctx.out_dir.join("jamming_corners.csv");
         let header = ["l_m", "c", "mu", "kind", "fx_over_fz", "m_over_rfz"];
-        let mut w = CsvWriter::create(&path, &header)?;
+        let mut w = ctx.table(Part::Fixed("jamming_corners"), &header)?;
         for row in &corners {
             let cells = [
                 format_f64(row.l),
@@ -198,23 +198,20 @@ impl Scene for JammingScene {
             ];
             w.row_cells(&cells.each_ref().map(String::as_str))?;
         }
-        let mut outputs = vec![w.finish()?];
+        w.finish()?;
 
-        let path = ctx.out_dir.join("wedging.csv");
-        let mut w = CsvWriter::create(&path, &["c", "mu", "theta_wedge_rad"])?;
+        let mut w = ctx.table(Part::Fixed("wedging"), &["c", "mu", "theta_wedge_rad"])?;
         // `inf`: no tilt wedges the peg (documented above), not an overflow.
         w.allow_infinite("theta_wedge_rad");
         for row in &wedging {
             let theta = row.theta.map_or_else(|| "inf".to_string(), format_f64);
             w.row_cells(&[&format_f64(row.c), &format_f64(row.mu), &theta])?;
         }
-        outputs.push(w.finish()?);
+        w.finish()?;
 
-        let svg = ctx.output("svg");
         let mut fig = Figure::new();
         fig.panels = figure::panels(&corners);
-        fig.save(&svg)?;
-        outputs.push(svg);
+        ctx.figure(Part::Main, &fig)?;
 
         let impossible = p.c.len() * p.mu.len() * p.l_m.len() * 8 - corners.len();
         let mut metrics = vec![Metric::new(
@@ -223,14 +220,12 @@ impl Scene for JammingScene {
             "",
         )];
         if let (Some(params), Some(setup)) = (&self.sweep, &self.setup) {
-            let (files, more) = jamming_sweep::run(params, setup, ctx)?;
-            outputs.extend(files);
-            metrics.extend(more);
+            metrics.extend(jamming_sweep::run(params, setup, ctx)?);
         }
         Ok(RunSummary {
             integration: None,
             metrics,
-            outputs,
+            ..RunSummary::default()
         })
     }
 }

@@ -37,7 +37,6 @@
 //! (simulated classes as markers, exact parallelogram solid, Whitney's
 //! dashed).
 
-use std::path::PathBuf;
 use std::sync::Mutex;
 
 use serde::de::Error as _;
@@ -49,7 +48,8 @@ use crate::jamming::PegHole;
 use crate::jamming::diagram::whitney_parallelogram;
 use crate::jamming::dynamic::{self, DynamicPoint, SweepSetup, SweepSpec};
 use crate::jamming::sweep::{self, RunClass};
-use crate::output::csv::{CsvWriter, format_f64};
+use crate::output::csv::format_f64;
+use crate::output::names::Part;
 use crate::output::plot::{Figure, Panel, Series, Style};
 use crate::scene::jamming_figure::{X_LABEL, Y_LABEL, parallelogram_series};
 use crate::scene::validate::Checker;
@@ -241,12 +241,12 @@ impl SweepParams {
 }
 
 /// Runs the sweep with a progress line and writes its CSV and SVG; returns
-/// the files written and the comparison metrics.
+/// the comparison metrics.
 pub fn run(
     params: &SweepParams,
     setup: &SweepSetup,
     ctx: &mut RunContext,
-) -> Result<(Vec<PathBuf>, Vec<Metric>), RunError> {
+) -> Result<Vec<Metric>, RunError> {
     let (grid, points) = {
         let progress = Mutex::new(&mut ctx.progress);
         let report = |done: usize, total: usize| {
@@ -265,7 +265,6 @@ pub fn run(
     ctx.progress.finish();
     let whitney = whitney_parallelogram(&setup.spec.peg, setup.depth)?;
 
-    let path = ctx.out_dir.join("jamming_sweep.csv");
     let header = [
         "fx_over_fz",
         "m_over_rfz",
@@ -275,7 +274,7 @@ pub fn run(
         "margin_exact",
         "margin_whitney",
     ];
-    let mut w = CsvWriter::create(&path, &header)?;
+    let mut w = ctx.table(Part::Fixed("jamming_sweep"), &header)?;
     for p in &points {
         let q = p.point.ratio;
         let cells = [
@@ -289,11 +288,11 @@ pub fn run(
         ];
         w.row_cells(&cells.each_ref().map(String::as_str))?;
     }
-    let mut outputs = vec![w.finish()?];
-
-    let svg = ctx.out_dir.join("jamming_sweep.svg");
-    figure(setup, &whitney, &points).save(&svg)?;
-    outputs.push(svg);
+    w.finish()?;
+    ctx.figure(
+        Part::Fixed("jamming_sweep"),
+        &figure(setup, &whitney, &points),
+    )?;
 
     let plain: Vec<_> = points.iter().map(|p| p.point).collect();
     let exact = sweep::check(&setup.diagram, &plain, grid.resolution());
@@ -317,7 +316,7 @@ pub fn run(
         ),
         Metric::new("runs neither inserted nor stuck", exact.other as f64, ""),
     ];
-    Ok((outputs, metrics))
+    Ok(metrics)
 }
 
 fn figure(

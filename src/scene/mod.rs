@@ -46,20 +46,24 @@ mod summary;
 pub mod validate;
 
 use std::fmt;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 pub use document::Document;
 pub use integrator::{IntegratorSpec, Method};
 pub use progress::{Progress, par_map_counted};
 pub use summary::{EventRecord, IntegrationSummary, Metric, RunSummary, significant};
 
-use crate::error::{RunError, SceneError, SceneErrors};
+use crate::error::{OutputError, RunError, SceneError, SceneErrors};
+use crate::output::names::Part;
+use crate::output::plot::Figure;
+use crate::output::sink::{Sink, TableWriter};
 
 /// A validated scene, ready to run.
 pub trait Scene: fmt::Debug {
     /// One line saying what the scene simulates, with its key parameters.
     fn describe(&self) -> String;
-    /// Integrates the scene and writes its outputs through `ctx`.
+    /// Integrates the scene and writes its outputs through `ctx`. Run a
+    /// loaded scene with [`LoadedScene::run`], which lists the files written.
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError>;
     /// The work the scene asks for (samples, steps, grid points, runs),
     /// compared with the scene's `[limits]` before it may run
@@ -104,6 +108,20 @@ pub struct LoadedScene {
     pub description: Option<String>,
     /// The validated scene.
     pub scene: Box<dyn Scene>,
+}
+
+impl LoadedScene {
+    /// Runs the scene into `ctx`; the summary's `outputs` are the files the
+    /// run wrote, as its sink recorded them.
+    ///
+    /// # Errors
+    /// The scene's run error (files completed before it stay recorded in
+    /// `ctx`'s sink).
+    pub fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
+        let mut summary = self.scene.run(ctx)?;
+        summary.outputs = ctx.sink().written();
+        Ok(summary)
+    }
 }
 
 /// Parses and validates scene text (no file name: the scene is named `scene`).
@@ -163,27 +181,61 @@ pub fn load_with(
     parse_named_with(&text, &name, overrides)
 }
 
-/// What a running scene gets from the caller.
+/// What a running scene gets from the caller: the sink its outputs go to
+/// (a directory or memory; the only way a scene writes a file) and a
+/// progress reporter.
 #[derive(Debug)]
 pub struct RunContext {
-    /// Directory for the outputs: exists when the run starts, or is a
-    /// [`crate::output::memory::Capture`] directory held in memory (write
-    /// only through `CsvWriter`, `Figure::save` and `atomic::write`).
-    pub out_dir: PathBuf,
-    /// Scene name (file stem), the stem of every output file.
-    pub name: String,
+    sink: Sink,
     /// Progress reporter.
     pub progress: Progress,
 }
 
 impl RunContext {
-    /// `<out_dir>/<name>.<ext>`, e.g. `ctx.output("csv")`.
-    pub fn output(&self, ext: &str) -> PathBuf {
-        self.out_dir.join(format!("{}.{ext}", self.name))
+    /// A context writing into `sink`.
+    pub fn new(sink: Sink, progress: Progress) -> Self {
+        RunContext { sink, progress }
     }
 
-    /// `<out_dir>/<name>_<suffix>.<ext>`, for scenes with several outputs.
-    pub fn output_with(&self, suffix: &str, ext: &str) -> PathBuf {
-        self.out_dir.join(format!("{}_{suffix}.{ext}", self.name))
+    /// The scene's name (file stem), the stem of every output file.
+    pub fn name(&self) -> &str {
+        self.sink.scene()
+    }
+
+    /// Starts the CSV table of `part` ([`Sink::table`]), e.g.
+    /// `ctx.table(Part::Main, &["t_s", "x_m"])` for `<name>.csv`.
+    ///
+    /// # Errors
+    /// The file cannot be created, or would replace the scene file.
+    pub fn table(&self, part: Part, header: &[&str]) -> Result<TableWriter, OutputError> {
+        self.sink.table(part, header)
+    }
+
+    /// Draws `fig` as the SVG file of `part` ([`Sink::figure`]).
+    ///
+    /// # Errors
+    /// A panel without a drawable point, or the file cannot be written.
+    pub fn figure(&self, part: Part, fig: &Figure) -> Result<(), OutputError> {
+        self.sink.figure(part, fig)
+    }
+
+    /// Writes `bytes` as the file of `part` with extension `ext`
+    /// ([`Sink::file`]).
+    ///
+    /// # Errors
+    /// The file cannot be written, or would replace the scene file.
+    pub fn file(&self, part: Part, ext: &str, bytes: &[u8]) -> Result<(), OutputError> {
+        self.sink.file(part, ext, bytes)
+    }
+
+    /// The sink: what the run has written so far ([`Sink::written`]).
+    pub fn sink(&self) -> &Sink {
+        &self.sink
+    }
+
+    /// Ends the run's context, handing back its sink (e.g. for the tables
+    /// kept in memory, [`Sink::into_tables`]).
+    pub fn into_sink(self) -> Sink {
+        self.sink
     }
 }

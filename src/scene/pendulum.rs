@@ -30,8 +30,8 @@ use serde::Deserialize;
 
 use crate::error::{RunError, SceneErrors};
 use crate::integrate::{Direction, Event};
-use crate::output::csv::CsvWriter;
 use crate::output::decimate::{Decimate, PLOT_POINTS};
+use crate::output::names::Part;
 use crate::output::plot::{Figure, Panel, Series};
 use crate::scene::limits::sample_count;
 use crate::scene::simulate::{integrate_streaming, integration_summary};
@@ -111,8 +111,8 @@ impl Scene for PendulumScene {
         // (E0 itself may be zero).
         let e0 = system.energy(&x0);
         let scale = p.mass * p.gravity * p.length;
-        let mut csv = CsvWriter::create(
-            &ctx.output("csv"),
+        let mut csv = ctx.table(
+            Part::Main,
             &[
                 "t_s",
                 "theta_rad",
@@ -150,9 +150,7 @@ impl Scene for PendulumScene {
             theta.push(a);
             err.push(b);
         }
-        let csv = csv.finish()?;
-
-        let svg = ctx.output("svg");
+        csv.finish()?;
         let mut fig = Figure::new();
         fig.panels.push(
             Panel::new("Simple pendulum: angle", "t [s]", "θ [rad]").with(Series::line("θ", theta)),
@@ -167,7 +165,7 @@ impl Scene for PendulumScene {
                 err,
             )),
         );
-        fig.save(&svg)?;
+        ctx.figure(Part::Main, &fig)?;
 
         let mut out = RunSummary {
             integration: Some(integration_summary(
@@ -193,7 +191,6 @@ impl Scene for PendulumScene {
                 ));
             }
         }
-        out.outputs = vec![csv, svg];
         Ok(out)
     }
 }

@@ -22,7 +22,8 @@ use crate::error::RunError;
 use crate::jamming::PegHole;
 use crate::jamming::diagram::whitney_parallelogram;
 use crate::jamming::geometry::two_point_tilt;
-use crate::output::csv::{CsvWriter, format_f64};
+use crate::output::csv::format_f64;
+use crate::output::names::Part;
 use crate::scene::{IntegratorSpec, Metric, Progress, RunContext};
 
 /// Rows of the depth table.
@@ -179,9 +180,9 @@ pub fn table(
 ///
 /// # Errors
 /// An output error.
-pub fn write(ctx: &RunContext, rows: &[Row]) -> Result<std::path::PathBuf, RunError> {
-    let mut csv = CsvWriter::create(
-        &ctx.output_with("depth", "csv"),
+pub fn write(ctx: &RunContext, rows: &[Row]) -> Result<(), RunError> {
+    let mut csv = ctx.table(
+        Part::Sub("depth"),
         &[
             "tip_depth_m",
             "separation_m",

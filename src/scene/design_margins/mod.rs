@@ -41,6 +41,7 @@ use super::insert_3d::rcc::{Built, RccScene, run_one};
 use super::insert_3d::tables::{CriteriaTable, PegTable, RobotTable, WristTable};
 use crate::compliant_peg_3d::outcome::Outcome;
 use crate::error::{RunError, SceneError, SceneErrors};
+use crate::output::names::Part;
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::limits::WorkItem;
 use crate::scene::ranges::design_margins as ranges;
@@ -388,24 +389,21 @@ impl Scene for Design {
         };
         let nominal = nominal?;
         let rows = grid?;
-        let csv = report::write_grid(ctx, &rows)?;
+        report::write_grid(ctx, &rows)?;
         let table = depth::table(
             &self.nominal.params,
             self.scene.peg.clearance_ratio,
             self.nominal.criteria.seat_depth,
             &nominal.ratio,
         );
-        let depth_csv = depth::write(ctx, &table)?;
-        let svg = ctx.output("svg");
-        figures::region(self, &rows).save(&svg)?;
-        let nojam = ctx.output_with("nojam", "svg");
-        figures::nojam(self, &table, &nominal).save(&nojam)?;
+        depth::write(ctx, &table)?;
+        ctx.figure(Part::Main, &figures::region(self, &rows))?;
+        ctx.figure(Part::Sub("nojam"), &figures::nojam(self, &table, &nominal))?;
         let mut metrics = report::analytic_metrics(self);
         metrics.extend(nominal.metrics(&self.nominal.params, self.scene.peg.clearance_ratio));
         metrics.extend(report::grid_metrics(&rows));
         Ok(RunSummary {
             metrics,
-            outputs: vec![csv, depth_csv, svg, nojam],
             ..RunSummary::default()
         })
     }

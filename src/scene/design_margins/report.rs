@@ -3,7 +3,8 @@
 use super::chamfer::Touch;
 use super::{Design, GridRun};
 use crate::error::RunError;
-use crate::output::csv::{CsvWriter, format_f64};
+use crate::output::csv::format_f64;
+use crate::output::names::Part;
 use crate::scene::insert_3d::rcc::outcome_text;
 use crate::scene::{Metric, RunContext, significant};
 
@@ -86,9 +87,9 @@ pub fn grid_metrics(rows: &[GridRun]) -> Vec<Metric> {
 ///
 /// # Errors
 /// An output error.
-pub fn write_grid(ctx: &RunContext, rows: &[GridRun]) -> Result<std::path::PathBuf, RunError> {
-    let mut csv = CsvWriter::create(
-        &ctx.output("csv"),
+pub fn write_grid(ctx: &RunContext, rows: &[GridRun]) -> Result<(), RunError> {
+    let mut csv = ctx.table(
+        Part::Main,
         &[
             "centre_lateral_error_m",
             "angular_error_deg",

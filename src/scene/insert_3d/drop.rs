@@ -39,6 +39,7 @@ use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, lean_pose};
 use crate::compliant_peg_3d::outcome::{CountCache, transition_events};
 use crate::compliant_peg_3d::{Peg3dParams, pose_state};
 use crate::error::{RunError, SceneError, SceneErrors};
+use crate::output::names::Part;
 use crate::output::plot::{Figure, Panel, Series};
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::simulate::{integrate, integration_summary};
@@ -163,9 +164,9 @@ impl Scene for Ready {
             ..RunSummary::default()
         };
         let samples = output::samples(&sys, &sol)?;
-        let (csv, peaks) = output::write_series(ctx, &samples)?;
+        let peaks = output::write_series(ctx, &samples)?;
         let rows = output::transitions(&sys, &sol, &what);
-        let ev = output::write_events(ctx, &sys, &rows)?;
+        output::write_events(ctx, &sys, &rows)?;
         let mut fig = Figure::new();
         fig.panels.push(output::forces_panel(&samples));
         fig.panels.push(output::timeline(&samples));
@@ -174,9 +175,8 @@ impl Scene for Ready {
                 "γ",
                 samples.rows.iter().map(|(t, _, s)| (*t, s.tilt)).collect(),
             )));
-        let svg = ctx.output("svg");
-        fig.save(&svg)?;
-        let views = output::write_views(
+        ctx.figure(Part::Main, &fig)?;
+        output::write_views(
             ctx,
             &sys,
             (sol.t.first().copied().unwrap_or(0.0), &self.start),
@@ -192,7 +192,6 @@ impl Scene for Ready {
             out.metrics
                 .push(Metric::new(format!("{} ({})", r.what, r.state), r.t, "s"));
         }
-        out.outputs = vec![csv, ev, svg, views];
         Ok(out)
     }
 }

@@ -20,7 +20,8 @@ use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, Sample, motion, peg
 use crate::compliant_peg_3d::outcome::{Transition, counts, label, two_point_counts};
 use crate::error::RunError;
 use crate::integrate::Solution;
-use crate::output::csv::{CsvWriter, format_f64};
+use crate::output::csv::format_f64;
+use crate::output::names::Part;
 use crate::output::plot::{Figure, Panel, Series, Style};
 use crate::scene::{Metric, RunContext};
 
@@ -144,13 +145,10 @@ pub fn samples(sys: &Insertion, sol: &Solution<N_STATE>) -> Result<Samples, RunE
 ///
 /// # Errors
 /// Output errors.
-pub fn write_series(
-    ctx: &RunContext,
-    s: &Samples,
-) -> Result<(std::path::PathBuf, Peaks), RunError> {
+pub fn write_series(ctx: &RunContext, s: &Samples) -> Result<Peaks, RunError> {
     let h = header();
     let hr: Vec<&str> = h.iter().map(String::as_str).collect();
-    let mut csv = CsvWriter::create(&ctx.output("csv"), &hr)?;
+    let mut csv = ctx.table(Part::Main, &hr)?;
     let mut peaks = Peaks::default();
     let e0 = s.rows.first().map_or(0.0, |r| r.2.balance);
     for (t, y, smp) in &s.rows {
@@ -167,7 +165,8 @@ pub fn write_series(
             .max(y[15].abs())
             .max(smp.kinetic);
     }
-    Ok((csv.finish()?, peaks))
+    csv.finish()?;
+    Ok(peaks)
 }
 
 /// One located contact transition.
@@ -223,9 +222,9 @@ pub fn write_events(
     ctx: &RunContext,
     sys: &Insertion,
     events: &[EventRow],
-) -> Result<std::path::PathBuf, RunError> {
-    let mut csv = CsvWriter::create(
-        &ctx.output_with("events", "csv"),
+) -> Result<(), RunError> {
+    let mut csv = ctx.table(
+        Part::Sub("events"),
         &["t_s", "transition", "contact_state", "depth_m", "tilt_rad"],
     )?;
     for e in events {
@@ -393,7 +392,7 @@ pub fn write_views(
     events: &[EventRow],
     last: (f64, &SVector<f64, N_STATE>),
     max: usize,
-) -> Result<std::path::PathBuf, RunError> {
+) -> Result<(), RunError> {
     let mut fig = Figure::new();
     let mut add = |t: f64, y: &SVector<f64, N_STATE>, what: &str| {
         let [a, b] = views(
@@ -409,9 +408,7 @@ pub fn write_views(
         add(e.t, &e.y, &e.what);
     }
     add(last.0, last.1, "end");
-    let path = ctx.output_with("views", "svg");
-    fig.save(&path)?;
-    Ok(path)
+    Ok(ctx.figure(Part::Sub("views"), &fig)?)
 }
 
 /// The run's common metrics.

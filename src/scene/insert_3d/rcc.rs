@@ -56,6 +56,7 @@ use crate::compliant_peg_3d::outcome::{
 };
 use crate::error::{RunError, SceneErrors};
 use crate::integrate::{Solution, StopReason};
+use crate::output::names::Part;
 use crate::output::plot::{Figure, Panel, Series};
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::simulate::{describe_stop, integrate, integration_summary};
@@ -280,9 +281,9 @@ impl Scene for Ready {
             ..RunSummary::default()
         };
         let samples = output::samples(sys, sol)?;
-        let (csv, peaks) = output::write_series(ctx, &samples)?;
+        let peaks = output::write_series(ctx, &samples)?;
         let rows = output::transitions(sys, sol, &run.transitions);
-        let ev = output::write_events(ctx, sys, &rows)?;
+        output::write_events(ctx, sys, &rows)?;
         let mm = 1e3;
         let series = |f: &dyn Fn(&crate::compliant_peg_3d::wrist::WristLoad) -> f64| {
             samples
@@ -329,9 +330,8 @@ impl Scene for Ready {
         if !margin_panel.series.is_empty() {
             fig.panels.push(margin_panel);
         }
-        let svg = ctx.output("svg");
-        fig.save(&svg)?;
-        let views = output::write_views(
+        ctx.figure(Part::Main, &fig)?;
+        output::write_views(
             ctx,
             sys,
             (
@@ -369,7 +369,6 @@ impl Scene for Ready {
             ));
         }
         out.metrics.extend(margin_metrics);
-        out.outputs = vec![csv, ev, svg, views];
         Ok(out)
     }
 }

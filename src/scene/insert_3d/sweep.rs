@@ -27,7 +27,8 @@ use serde::Deserialize;
 
 use super::rcc::{Built, RccScene, run_one};
 use crate::error::{RunError, SceneErrors};
-use crate::output::csv::{CsvWriter, format_f64};
+use crate::output::csv::format_f64;
+use crate::output::names::Part;
 use crate::output::plot::{Figure, Panel, Series, Style};
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::limits::WorkItem;
@@ -233,8 +234,8 @@ impl Scene for Ready {
         });
         let rows: Vec<Row> = rows.into_iter().collect::<Result<_, _>>()?;
         let yield_p = self.scene.grid.yield_pressure;
-        let mut csv = CsvWriter::create(
-            &ctx.output("csv"),
+        let mut csv = ctx.table(
+            Part::Main,
             &[
                 "lateral_error_m",
                 "angular_error_deg",
@@ -272,9 +273,8 @@ impl Scene for Ready {
                 &format_f64(r.peak_wrist),
             ])?;
         }
-        let csv = csv.finish()?;
-        let svg = ctx.output("svg");
-        heat_maps(&rows).save(&svg)?;
+        csv.finish()?;
+        ctx.figure(Part::Main, &heat_maps(&rows))?;
         let mut out = RunSummary::default();
         let seated = rows.iter().filter(|r| r.seated).count();
         out.metrics.push(Metric::new("runs", rows.len() as f64, ""));
@@ -307,7 +307,6 @@ impl Scene for Ready {
             pmax / yield_p,
             "",
         ));
-        out.outputs = vec![csv, svg];
         Ok(out)
     }
 }

@@ -12,7 +12,7 @@ use nalgebra::SVector;
 use crate::compliant_peg::system::Sample;
 use crate::error::RunError;
 use crate::integrate::Solution;
-use crate::output::csv::CsvWriter;
+use crate::output::names::Part;
 use crate::output::plot::{Figure, Panel, Series};
 use crate::scene::{Metric, RunContext, RunSummary};
 
@@ -45,7 +45,7 @@ pub fn write_outputs<const N: usize>(
     sol: &Solution<N>,
     out: &mut RunSummary,
 ) -> Result<(), RunError> {
-    let mut csv = CsvWriter::create(&ctx.output("csv"), &HEADER)?;
+    let mut csv = ctx.table(Part::Main, &HEADER)?;
     let mut cols: Vec<Vec<(f64, f64)>> = vec![Vec::new(); HEADER.len()];
     let (mut drift, mut work_scale, mut f_max, mut p_max) = (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
     let h0 = sol.x.first().map(|y| sample(y).balance()).unwrap_or(0.0);
@@ -78,7 +78,7 @@ pub fn write_outputs<const N: usize>(
         f_max = f_max.max(s.f_edge).max(s.f_wall);
         p_max = p_max.max(s.p0_edge).max(s.p0_wall);
     }
-    let csv = csv.finish()?;
+    csv.finish()?;
     let series = |k: usize, name: &str| Series::line(name, cols[k].clone());
     let mut fig = Figure::new();
     fig.panels
@@ -103,8 +103,7 @@ pub fn write_outputs<const N: usize>(
             .with(series(14, "friction S"))
             .with(series(15, "T + P − W + S")),
     );
-    let svg = ctx.output("svg");
-    fig.save(&svg)?;
+    ctx.figure(Part::Main, &fig)?;
     out.metrics.push(Metric::new(
         "max |T + P - W + S - E0| / max(|W|, T)",
         drift / work_scale.max(1e-300),
@@ -114,6 +113,5 @@ pub fn write_outputs<const N: usize>(
         .push(Metric::new("peak contact force", f_max, "N"));
     out.metrics
         .push(Metric::new("peak Hertz pressure p0", p_max, "Pa"));
-    out.outputs = vec![csv, svg];
     Ok(())
 }
