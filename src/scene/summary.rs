@@ -1,6 +1,6 @@
 //! What a scene run reports: how the integration(s) ended and what they
 //! cost ([`IntegrationSummary`]), scene-specific numbers ([`Metric`]), and
-//! the files written. `pegdyn run` prints it with [`std::fmt::Display`].
+//! the files written (from the run's sink). `pegdyn run` prints it with [`std::fmt::Display`].
 
 use std::fmt;
 use std::path::PathBuf;
@@ -91,7 +91,9 @@ pub struct RunSummary {
     pub integration: Option<IntegrationSummary>,
     /// Scene-specific results.
     pub metrics: Vec<Metric>,
-    /// Files written.
+    /// Files written, in the order they were completed: filled in by
+    /// [`crate::scene::LoadedScene::run`] from the run's sink (empty for a
+    /// run in memory).
     pub outputs: Vec<PathBuf>,
 }
 

@@ -2,7 +2,7 @@
 //! a compliant wrist (remote centre compliance) from a start pose with
 //! lateral and angular errors, descending at a speed or under a constant
 //! axial force, optionally precessing, spinning or searching on a spiral.
-//! The run ends with an [`Outcome`] (seated, jammed, wedged, missed, force
+//! The run ends with an [`Outcome`](crate::compliant_peg_3d::outcome::Outcome) (seated, jammed, wedged, missed, force
 //! limit, or an integrator stop).
 //!
 //! ```toml
