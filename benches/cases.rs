@@ -135,7 +135,7 @@ impl Cases {
 /// μ = 0.1, f₁ = 5 N, M = −0.002 N·m, tilted 0.01 rad in two-point contact).
 pub fn insertion_scene() -> (CompliantParams, Load, PegState) {
     let text = include_str!("../scenes/insert_compliant.toml");
-    let scene: pegdyn::scene::insert_compliant::InsertCompliantScene =
+    let scene: pegdyn::scene::kinds::insert_compliant::InsertCompliantScene =
         pegdyn::scene::document::Document::parse(text)
             .and_then(|d| d.body())
             .expect("shipped scene parses");
@@ -146,11 +146,11 @@ pub fn insertion_scene() -> (CompliantParams, Load, PegState) {
 /// `scenes/align_forward.toml` (the shipped rigid forward scene, read from
 /// the file so that the benches follow it) and its forward model.
 pub fn align_forward_scene() -> (
-    pegdyn::scene::align_forward::AlignForwardScene,
+    pegdyn::scene::kinds::align_forward::AlignForwardScene,
     pegdyn::rigid_peg::forward::ForwardModel,
 ) {
     let text = include_str!("../scenes/align_forward.toml");
-    let scene: pegdyn::scene::align_forward::AlignForwardScene =
+    let scene: pegdyn::scene::kinds::align_forward::AlignForwardScene =
         pegdyn::scene::document::Document::parse(text)
             .and_then(|d| d.body())
             .expect("shipped scene parses");

@@ -35,8 +35,8 @@ use pegdyn::generated::rigid_peg;
 use pegdyn::integrate::{Method, Options, Solver};
 use pegdyn::rigid_peg::forward::{ForwardModel, PegSystem};
 use pegdyn::rigid_peg::{Loads, PegParams};
-use pegdyn::scene::align_forward::AlignForwardScene;
 use pegdyn::scene::document::Document;
+use pegdyn::scene::kinds::align_forward::AlignForwardScene;
 use pegdyn::system::OdeSystem;
 
 /// The inputs of `rigid_peg::forward`.

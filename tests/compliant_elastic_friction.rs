@@ -242,7 +242,7 @@ fn elastic_sweep_classes_match_the_regularized_ones_away_from_the_boundary() {
 #[test]
 fn insert_compliant_scene_takes_the_elastic_law() {
     use pegdyn::scene::document::Document;
-    use pegdyn::scene::insert_compliant::InsertCompliantScene;
+    use pegdyn::scene::kinds::insert_compliant::InsertCompliantScene;
     let text = include_str!("../scenes/insert_compliant.toml").replace(
         "[insert_compliant]",
         "[insert_compliant]\nfriction_law = \"elastic\"\ntangential_damping = 2e-4",

@@ -7,8 +7,8 @@ mod cli;
 
 use pegdyn::compliant_peg_3d::outcome::Outcome;
 use pegdyn::scene::Progress;
-use pegdyn::scene::design_margins::chamfer::Touch;
-use pegdyn::scene::design_margins::{DesignScene, GridRun};
+use pegdyn::scene::kinds::design_margins::chamfer::Touch;
+use pegdyn::scene::kinds::design_margins::{DesignScene, GridRun};
 
 /// The shipped `design_margins` scene's text with the first line of each
 /// key replaced (the key at the start of a line; `seat_depth` is the
@@ -31,7 +31,7 @@ fn variant(changes: &[(&str, &str)]) -> String {
         .join("\n")
 }
 
-fn design(changes: &[(&str, &str)]) -> pegdyn::scene::design_margins::Design {
+fn design(changes: &[(&str, &str)]) -> pegdyn::scene::kinds::design_margins::Design {
     let mut doc: toml::Table = toml::from_str(&variant(changes)).unwrap();
     doc.remove("kind");
     doc.remove("description");

@@ -10,7 +10,7 @@ mod cli;
 mod rcc;
 use pegdyn::compliant_peg_3d::outcome::Outcome;
 use pegdyn::scene::Progress;
-use pegdyn::scene::insert_3d::rcc::{RccScene, run_one};
+use pegdyn::scene::shared::compliant_peg_3d::insertion::{RccScene, run_one};
 
 /// The shipped `insert_rcc` scene's text with `(key, value)` lines
 /// replaced (the key at the start of a line). The tip starts 2 mm in the

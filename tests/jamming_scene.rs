@@ -6,6 +6,7 @@
 use std::path::PathBuf;
 
 use pegdyn::jamming::{PegHole, diagram, wedging};
+use pegdyn::output::sink::Sink;
 use pegdyn::scene::{self, Progress, RunContext};
 
 fn out_dir(tag: &str) -> PathBuf {
@@ -34,12 +35,9 @@ fn scene_file_writes_corners_wedging_and_svg() {
     assert!(text.contains("[sweep]"));
     let loaded = scene::parse_named(analytic, "jamming").unwrap();
     let dir = out_dir("scene");
-    let mut ctx = RunContext {
-        out_dir: dir.clone(),
-        name: loaded.name.clone(),
-        progress: Progress::silent(),
-    };
-    loaded.scene.run(&mut ctx).unwrap();
+    let sink = Sink::directory(&dir, &loaded.name);
+    let mut ctx = RunContext::new(sink, Progress::silent());
+    loaded.run(&mut ctx).unwrap();
 
     let (header, rows) = read_csv(&dir.join("jamming_corners.csv"));
     assert_eq!(header, "l_m,c,mu,kind,fx_over_fz,m_over_rfz");

@@ -3,7 +3,7 @@
 //! `rodas3` and `dopri5`; without it the runs use RODAS4.
 
 use pegdyn::integrate::{Method, MethodKind};
-use pegdyn::scene::jamming_sweep::SweepParams;
+use pegdyn::scene::kinds::jamming::sweep::SweepParams;
 
 /// The `[sweep]` table of `scenes/jamming.toml` with `extra` appended.
 fn sweep(extra: &str) -> Result<SweepParams, toml::de::Error> {

@@ -130,3 +130,61 @@ fn the_check_sees_an_import() {
     assert!(violations(file, "//! used by `crate::scene::jamming`").is_empty());
     assert!(violations(file, "use crate::scenery::X; let output = 1;").is_empty());
 }
+
+/// The ways a file could be written or removed without a run's sink.
+const FILE_WRITES: &[&str] = &[
+    "std::fs",
+    "fs::write",
+    "File::create",
+    "OpenOptions",
+    "fs::rename",
+    "fs::remove",
+    "create_dir",
+];
+
+/// Lines of `text` (code, not comments) that touch the file system, other
+/// than reading the scene file itself (`std::fs::read_to_string`).
+fn file_writes(file: &Path, text: &str) -> Vec<String> {
+    text.lines()
+        .enumerate()
+        .filter(|(_, line)| {
+            let code = code(line);
+            FILE_WRITES.iter().any(|w| code.contains(w))
+                && !code.contains("std::fs::read_to_string(path)")
+        })
+        .map(|(n, line)| format!("{}:{}: {}", file.display(), n + 1, line.trim()))
+        .collect()
+}
+
+#[test]
+fn scenes_write_only_through_their_run_context() {
+    // Every output of a scene goes through the sink of its run context
+    // (`ctx.table`, `ctx.figure`, `ctx.file`), so that a run in memory
+    // writes nothing and a run into a directory records every file.
+    let mut files = Vec::new();
+    rust_files(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("src/scene"),
+        &mut files,
+    );
+    assert!(files.len() > 30, "found only {} scene files", files.len());
+    let found: Vec<String> = files
+        .iter()
+        .flat_map(|f| {
+            let text =
+                std::fs::read_to_string(f).unwrap_or_else(|e| panic!("read {}: {e}", f.display()));
+            file_writes(f, &text)
+        })
+        .collect();
+    assert!(
+        found.is_empty(),
+        "scene code touches files outside its run context:\n{}",
+        found.join("\n")
+    );
+    let file = Path::new("src/scene/example.rs");
+    assert_eq!(file_writes(file, "std::fs::write(&p, b)?;").len(), 1);
+    assert_eq!(
+        file_writes(file, "let f = File::create(&p)?; // x").len(),
+        1
+    );
+    assert!(file_writes(file, "// std::fs::write is not used").is_empty());
+}

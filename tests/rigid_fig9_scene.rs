@@ -51,12 +51,9 @@ fn run_writes_the_documented_columns() {
     let out = std::env::temp_dir().join(format!("pegdyn_fig9_{}", std::process::id()));
     std::fs::create_dir_all(&out).unwrap();
     let loaded = scene::parse_named(GOOD, "fig9").unwrap();
-    let mut ctx = scene::RunContext {
-        out_dir: out.clone(),
-        name: "fig9".into(),
-        progress: scene::Progress::silent(),
-    };
-    loaded.scene.run(&mut ctx).unwrap();
+    let sink = pegdyn::output::sink::Sink::directory(&out, "fig9");
+    let mut ctx = scene::RunContext::new(sink, scene::Progress::silent());
+    loaded.run(&mut ctx).unwrap();
     let csv = std::fs::read_to_string(out.join("fig9.csv")).unwrap();
     let mut lines = csv.lines();
     assert_eq!(

@@ -8,8 +8,8 @@ use pegdyn::jamming::dynamic::{SweepSetup, SweepSpec};
 use pegdyn::jamming::forces::{Wrench, to_paper_frame};
 use pegdyn::rigid_peg::forward::{ForwardModel, PegSystem};
 use pegdyn::rigid_peg::{Loads, PegParams};
-use pegdyn::scene::align_forward::AlignForwardScene;
 use pegdyn::scene::document::Document;
+use pegdyn::scene::kinds::align_forward::AlignForwardScene;
 use pegdyn::system::OdeSystem;
 use pegdyn::textbook::double_pendulum::{DoublePendulumParams, DoublePendulumSystem};
 use pegdyn::textbook::pendulum::{PendulumParams, PendulumSystem};
@@ -109,9 +109,9 @@ pub fn double_pendulum(t_end: f64) -> Problem<4, DoublePendulumSystem> {
 
 /// The model, loads and start of `scenes/insert_compliant.toml`, read from
 /// the shipped file so that the diagrams follow it.
-fn shipped_insertion() -> pegdyn::scene::insert_compliant::Built {
+fn shipped_insertion() -> pegdyn::scene::kinds::insert_compliant::Built {
     let text = include_str!("../../scenes/insert_compliant.toml");
-    let scene: pegdyn::scene::insert_compliant::InsertCompliantScene =
+    let scene: pegdyn::scene::kinds::insert_compliant::InsertCompliantScene =
         pegdyn::scene::document::Document::parse(text)
             .and_then(|d| d.body())
             .expect("shipped scene parses");

@@ -12,7 +12,8 @@ use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 
-use pegdyn::output::memory::{Capture, Keep, Table};
+use pegdyn::output::memory::{Keep, Table};
+use pegdyn::output::sink::Sink;
 use pegdyn::scene::{self, Progress, RunContext, RunSummary};
 
 use crate::errors::{RunError, scene_error};
@@ -107,7 +108,7 @@ pub fn run_text(text: &str, name: &str, out: Output) -> Outcome {
         Ok(s) => s,
         Err(e) => return Outcome::Invalid(e),
     };
-    let (out_dir, capture) = match out {
+    let sink = match out {
         Output::Dir(dir) => {
             if let Err(e) = std::fs::create_dir_all(&dir) {
                 return Outcome::Failed(format!(
@@ -115,27 +116,14 @@ pub fn run_text(text: &str, name: &str, out: Output) -> Outcome {
                     dir.display()
                 ));
             }
-            (dir, None)
+            Sink::directory(dir, &loaded.name)
         }
-        Output::Memory(keep) => {
-            let c = Capture::new(keep);
-            (c.dir().to_path_buf(), Some(c))
-        }
+        // Nothing is written: the summary lists no path.
+        Output::Memory(keep) => Sink::memory(&loaded.name, keep),
     };
-    let mut ctx = RunContext {
-        out_dir,
-        name: loaded.name.clone(),
-        progress: Progress::silent(),
-    };
-    match loaded.scene.run(&mut ctx) {
-        Ok(mut s) => match capture {
-            Some(c) => {
-                // Nothing was written: no paths to report.
-                s.outputs.clear();
-                Outcome::Done(s, c.into_tables())
-            }
-            None => Outcome::Done(s, Vec::new()),
-        },
+    let mut ctx = RunContext::new(sink, Progress::silent());
+    match loaded.run(&mut ctx) {
+        Ok(s) => Outcome::Done(s, ctx.into_sink().into_tables()),
         Err(e) => Outcome::Failed(e.to_string()),
     }
 }

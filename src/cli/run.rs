@@ -4,7 +4,8 @@
 use std::path::Path;
 use std::process::ExitCode;
 
-use pegdyn::output::{atomic, manifest};
+use pegdyn::output::manifest;
+use pegdyn::output::sink::Sink;
 use pegdyn::scene::limits::LimitOverrides;
 use pegdyn::scene::{self, Progress, RunContext};
 
@@ -44,19 +45,16 @@ pub fn run(path: &Path, out: &Path, quiet: bool, limits: &LimitOverrides) -> Exi
         );
         return ExitCode::FAILURE;
     }
-    atomic::protect(path);
     outln!(
         "{} ({}): {}",
         loaded.name,
         loaded.kind,
         loaded.scene.describe()
     );
-    let mut ctx = RunContext {
-        out_dir: out.to_path_buf(),
-        name: loaded.name.clone(),
-        progress: Progress::new(quiet),
-    };
-    let result = loaded.scene.run(&mut ctx);
+    // The scene file is never replaced by an output.
+    let sink = Sink::directory(out, &loaded.name).protecting(path);
+    let mut ctx = RunContext::new(sink, Progress::new(quiet));
+    let result = loaded.run(&mut ctx);
     ctx.progress.finish();
     let (code, status) = match result {
         Ok(summary) => {
@@ -87,7 +85,7 @@ pub fn run(path: &Path, out: &Path, quiet: bool, limits: &LimitOverrides) -> Exi
         scene_text: &text,
         command: std::env::args().collect::<Vec<_>>().join(" "),
         status,
-        files: atomic::written_in(out),
+        files: ctx.sink().written(),
     };
     match manifest::write(out, &loaded.name, &record) {
         Ok((_, stale)) if !stale.is_empty() => {

@@ -12,7 +12,7 @@
 //! - [`dynamic`]: the sweep of compliant-contact insertions (needs `compliant`).
 //! - [`sweep`]: the dynamic sweep driver (rayon) and its comparison with the diagram.
 //! - `table` (crate-internal): the corner/wedging tables of the jamming scene
-//!   (its Fig. 6-style panels are drawn by `scene::jamming_figure`).
+//!   (its Fig. 6-style panels are drawn by `scene::kinds::jamming::figure`).
 //!
 //! The derivation and the comparison with the paper are in `docs/jamming.md`.
 

@@ -21,7 +21,7 @@ use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
-use super::memory::TableSink;
+use super::{atomic, names};
 use crate::error::OutputError;
 
 /// Formats `v` so that `v.to_string().parse::<f64>() == v` bit for bit:
@@ -36,6 +36,98 @@ pub fn format_f64(v: f64) -> String {
     }
 }
 
+/// The rules every row of a table obeys, wherever the table goes (a file
+/// or memory): as many cells as the header, and no NaN, nor ±infinity
+/// outside the columns that allow it. Errors name the table by `path`.
+#[derive(Debug)]
+pub(crate) struct RowCheck {
+    path: PathBuf,
+    header: Vec<String>,
+    infinite_ok: Vec<bool>,
+    rows: usize,
+}
+
+impl RowCheck {
+    /// Rules for a table with `header`, named `path` in errors; every
+    /// column refuses ±infinity.
+    pub(crate) fn new(path: PathBuf, header: &[&str]) -> Self {
+        RowCheck {
+            path,
+            header: header.iter().map(|h| (*h).to_owned()).collect(),
+            infinite_ok: vec![false; header.len()],
+            rows: 0,
+        }
+    }
+
+    /// The column names.
+    pub(crate) fn header(&self) -> &[String] {
+        &self.header
+    }
+
+    /// See [`CsvWriter::allow_infinite`].
+    pub(crate) fn allow_infinite(&mut self, name: &str) {
+        for (ok, h) in self.infinite_ok.iter_mut().zip(&self.header) {
+            *ok |= h == name;
+        }
+    }
+
+    fn width(&self, got: usize) -> Result<(), OutputError> {
+        if got == self.header.len() {
+            Ok(())
+        } else {
+            Err(OutputError::RowWidth {
+                path: self.path.clone(),
+                row: self.rows,
+                got,
+                expected: self.header.len(),
+            })
+        }
+    }
+
+    /// Checks a row of numbers and counts it.
+    pub(crate) fn numbers(&mut self, values: &[f64]) -> Result<(), OutputError> {
+        self.width(values.len())?;
+        let bad = |(i, v): (usize, &f64)| {
+            v.is_nan() || (v.is_infinite() && !self.infinite_ok.get(i).copied().unwrap_or(false))
+        };
+        if let Some(i) = values.iter().enumerate().position(bad) {
+            return Err(self.non_finite(i, &format_f64(values[i]), &format_f64(values[0])));
+        }
+        self.rows += 1;
+        Ok(())
+    }
+
+    /// Checks a row of pre-formatted cells and counts it.
+    pub(crate) fn cells(&mut self, cells: &[&str]) -> Result<(), OutputError> {
+        self.width(cells.len())?;
+        let bad = |(i, c): (usize, &&str)| {
+            let c = c.trim_start_matches(['-', '+']).to_ascii_lowercase();
+            let infinite = c == "inf" || c == "infinity";
+            c == "nan" || (infinite && !self.infinite_ok.get(i).copied().unwrap_or(false))
+        };
+        if let Some(i) = cells.iter().enumerate().position(bad) {
+            return Err(self.non_finite(i, cells[i], cells[0]));
+        }
+        self.rows += 1;
+        Ok(())
+    }
+
+    fn non_finite(&self, column: usize, value: &str, first: &str) -> OutputError {
+        OutputError::NonFinite {
+            path: self.path.clone(),
+            column: self.header.get(column).cloned().unwrap_or_default(),
+            value: value.to_owned(),
+            row: self.rows,
+            first: first.to_owned(),
+        }
+    }
+
+    /// Data rows accepted so far.
+    pub(crate) fn rows(&self) -> usize {
+        self.rows
+    }
+}
+
 /// Writes a CSV file row by row, under a temporary name that
 /// [`CsvWriter::finish`] renames into place ([`super::atomic`]): a file that
 /// is not finished (an error, a non-finite value) never appears.
@@ -44,31 +136,21 @@ pub fn format_f64(v: f64) -> String {
 /// [`OutputError::NonFinite`] naming the column and row, so that no CSV of
 /// NaN is ever left behind.
 ///
-/// A path in a [`super::memory::Capture`] directory is never created: the
-/// rows (checked the same way) go to the capture instead.
+/// A scene writes its tables through its run context
+/// ([`super::sink::Sink::table`]), which uses this writer for a directory.
 #[derive(Debug)]
 pub struct CsvWriter {
     path: PathBuf,
     tmp: PathBuf,
-    out: Sink,
-    header: Vec<String>,
-    columns: usize,
-    rows: usize,
+    out: BufWriter<File>,
+    check: RowCheck,
     line: String,
     done: bool,
-    infinite_ok: Vec<bool>,
-}
-
-/// Where the rows go: a file, or a table held in memory.
-#[derive(Debug)]
-enum Sink {
-    File(BufWriter<File>),
-    Memory(Option<TableSink>),
 }
 
 impl Drop for CsvWriter {
     fn drop(&mut self) {
-        if !self.done && matches!(self.out, Sink::File(_)) {
+        if !self.done {
             // Best effort: an unfinished temporary file is garbage.
             let _ = std::fs::remove_file(&self.tmp);
         }
@@ -83,73 +165,29 @@ impl CsvWriter {
             path: path.to_path_buf(),
             source,
         };
-        let header: Vec<String> = header.iter().map(|h| (*h).to_owned()).collect();
-        if let Some(sink) = TableSink::for_path(path, &header) {
-            return Ok(Self::with_sink(
-                path,
-                path.to_path_buf(),
-                Sink::Memory(Some(sink)),
-                header,
-            ));
-        }
-        if super::atomic::is_protected(path) {
-            return Err(OutputError::WouldOverwriteScene {
-                path: path.to_path_buf(),
-            });
-        }
-        let tmp = super::atomic::temp_path(path);
+        let tmp = names::temporary(path);
         let file = File::create(&tmp).map_err(io)?;
-        let mut w = Self::with_sink(path, tmp, Sink::File(BufWriter::new(file)), header);
-        if let Sink::File(out) = &mut w.out {
-            writeln!(out, "{}", w.header.join(",")).map_err(io)?;
-        }
-        Ok(w)
-    }
-
-    /// A writer with no row yet: every column refuses ±infinity.
-    fn with_sink(path: &Path, tmp: std::path::PathBuf, out: Sink, header: Vec<String>) -> Self {
-        CsvWriter {
+        let mut w = CsvWriter {
             path: path.to_path_buf(),
             tmp,
-            out,
-            columns: header.len(),
-            infinite_ok: vec![false; header.len()],
-            header,
-            rows: 0,
+            out: BufWriter::new(file),
+            check: RowCheck::new(path.to_path_buf(), header),
             line: String::new(),
             done: false,
-        }
+        };
+        writeln!(w.out, "{}", w.check.header().join(",")).map_err(io)?;
+        Ok(w)
     }
 
     /// Lets column `name` hold ±infinity where the table means it (e.g. "no
     /// finite angle exists"); NaN stays refused.
     pub fn allow_infinite(&mut self, name: &str) {
-        for (ok, h) in self.infinite_ok.iter_mut().zip(&self.header) {
-            *ok |= h == name;
-        }
+        self.check.allow_infinite(name);
     }
 
     /// Appends one row; it must have as many values as the header.
     pub fn row(&mut self, values: &[f64]) -> Result<(), OutputError> {
-        if values.len() != self.columns {
-            return Err(OutputError::RowWidth {
-                path: self.path.clone(),
-                row: self.rows,
-                got: values.len(),
-                expected: self.columns,
-            });
-        }
-        let bad = |(i, v): (usize, &f64)| {
-            v.is_nan() || (v.is_infinite() && !self.infinite_ok.get(i).copied().unwrap_or(false))
-        };
-        if let Some(i) = values.iter().enumerate().position(bad) {
-            return Err(self.non_finite(i, &format_f64(values[i]), &format_f64(values[0])));
-        }
-        if let Sink::Memory(Some(m)) = &mut self.out {
-            m.numbers(values);
-            self.rows += 1;
-            return Ok(());
-        }
+        self.check.numbers(values)?;
         self.line.clear();
         for (i, v) in values.iter().enumerate() {
             if i > 0 {
@@ -158,89 +196,42 @@ impl CsvWriter {
             self.line.push_str(&format_f64(*v));
         }
         self.line.push('\n');
-        self.rows += 1;
         self.write_line()
-    }
-
-    fn write_line(&mut self) -> Result<(), OutputError> {
-        let Sink::File(out) = &mut self.out else {
-            return Ok(());
-        };
-        out.write_all(self.line.as_bytes())
-            .map_err(|source| OutputError::Io {
-                path: self.path.clone(),
-                source,
-            })
     }
 
     /// Appends one row of pre-formatted cells, e.g. a label column beside
     /// numbers formatted with [`format_f64`]. Same width rule as
     /// [`CsvWriter::row`]; cells must not contain commas or newlines.
     pub fn row_cells(&mut self, cells: &[&str]) -> Result<(), OutputError> {
-        if cells.len() != self.columns {
-            return Err(OutputError::RowWidth {
-                path: self.path.clone(),
-                row: self.rows,
-                got: cells.len(),
-                expected: self.columns,
-            });
-        }
-        let bad = |(i, c): (usize, &&str)| {
-            let c = c.trim_start_matches(['-', '+']).to_ascii_lowercase();
-            let infinite = c == "inf" || c == "infinity";
-            c == "nan" || (infinite && !self.infinite_ok.get(i).copied().unwrap_or(false))
-        };
-        if let Some(i) = cells.iter().enumerate().position(bad) {
-            return Err(self.non_finite(i, cells[i], cells[0]));
-        }
-        if let Sink::Memory(Some(m)) = &mut self.out {
-            m.text(cells);
-            self.rows += 1;
-            return Ok(());
-        }
+        self.check.cells(cells)?;
         self.line.clear();
         self.line.push_str(&cells.join(","));
         self.line.push('\n');
-        self.rows += 1;
         self.write_line()
     }
 
-    fn non_finite(&self, column: usize, value: &str, first: &str) -> OutputError {
-        OutputError::NonFinite {
-            path: self.path.clone(),
-            column: self.header.get(column).cloned().unwrap_or_default(),
-            value: value.to_owned(),
-            row: self.rows,
-            first: first.to_owned(),
-        }
+    fn write_line(&mut self) -> Result<(), OutputError> {
+        self.out
+            .write_all(self.line.as_bytes())
+            .map_err(|source| OutputError::Io {
+                path: self.path.clone(),
+                source,
+            })
     }
 
     /// Number of data rows written so far.
     pub fn rows(&self) -> usize {
-        self.rows
+        self.check.rows()
     }
 
     /// Flushes the file and renames it into place; returns its path.
     pub fn finish(mut self) -> Result<PathBuf, OutputError> {
-        let out = match &mut self.out {
-            Sink::File(out) => out,
-            Sink::Memory(m) => {
-                if let Some(m) = m.take() {
-                    m.finish();
-                }
-                self.done = true;
-                return Ok(self.path.clone());
-            }
-        };
-        out.flush().map_err(|source| OutputError::Io {
+        self.out.flush().map_err(|source| OutputError::Io {
             path: self.path.clone(),
             source,
         })?;
         self.done = true;
-        if let Err(e) = super::atomic::commit(&self.tmp, &self.path) {
-            let _ = std::fs::remove_file(&self.tmp);
-            return Err(e);
-        }
+        atomic::commit(&self.tmp, &self.path)?;
         Ok(self.path.clone())
     }
 }

@@ -11,13 +11,15 @@
 //! stale = []
 //! ```
 //!
-//! `files` lists what this run wrote; `stale` lists files of the same scene
-//! name (`<scene>.*`, `<scene>_*`) in the directory that this run did not
+//! `files` lists what this run wrote (its sink's record,
+//! [`super::sink::Sink::written`]); `stale` lists files of the same scene
+//! name ([`super::names::of_scene`]) in the directory that this run did not
 //! write — left by an earlier run, and not to be read as this run's.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
+use super::{atomic, names};
 use crate::error::OutputError;
 
 /// The FNV-1a 64-bit hash of `bytes`, as 16 hex digits (identifies a scene
@@ -42,27 +44,27 @@ pub struct Manifest<'a> {
     pub command: String,
     /// `ok`, or `failed: <reason>`.
     pub status: String,
-    /// Files this run wrote (absolute or relative to the output directory).
+    /// Files this run wrote (absolute or relative to the output
+    /// directory; listed by file name, sorted).
     pub files: Vec<PathBuf>,
 }
 
-/// Files in `dir` named `<name>.*` or `<name>_*` (other than the manifest)
-/// that are not in `written`, sorted.
+/// Files in `dir` named like outputs of scene `name`
+/// ([`names::of_scene`]), other than its manifest, that are not in
+/// `written`, sorted.
 pub fn stale_files(dir: &Path, name: &str, written: &[PathBuf]) -> Vec<PathBuf> {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return Vec::new();
     };
     let names: Vec<_> = written.iter().filter_map(|p| p.file_name()).collect();
-    let manifest = format!("{name}.run.toml");
+    let manifest = names::manifest(name);
     let mut stale: Vec<PathBuf> = entries
         .filter_map(Result::ok)
         .map(|e| e.path())
         .filter(|p| {
             p.file_name().is_some_and(|f| {
                 let f_s = f.to_string_lossy();
-                (f_s.starts_with(&format!("{name}.")) || f_s.starts_with(&format!("{name}_")))
-                    && f_s != manifest
-                    && !names.contains(&f)
+                names::of_scene(name, &f_s) && f_s != manifest && !names.contains(&f)
             })
         })
         .collect();
@@ -86,16 +88,19 @@ fn quoted(s: &str) -> String {
     out
 }
 
+/// The file names of `paths` as a TOML array, sorted, each once.
 fn list(paths: &[PathBuf]) -> String {
-    let items: Vec<String> = paths
+    let mut names: Vec<String> = paths
         .iter()
         .map(|p| {
-            quoted(
-                &p.file_name()
-                    .map_or_else(|| p.to_string_lossy(), |f| f.to_string_lossy()),
-            )
+            p.file_name()
+                .map_or_else(|| p.to_string_lossy(), |f| f.to_string_lossy())
+                .into_owned()
         })
         .collect();
+    names.sort();
+    names.dedup();
+    let items: Vec<String> = names.iter().map(|n| quoted(n)).collect();
     format!("[{}]", items.join(", "))
 }
 
@@ -120,8 +125,8 @@ pub fn write(
         list(&m.files),
         list(&stale),
     );
-    let path = dir.join(format!("{name}.run.toml"));
-    super::atomic::write(&path, text.as_bytes())?;
+    let path = dir.join(names::manifest(name));
+    atomic::write(&path, text.as_bytes())?;
     Ok((path, stale))
 }
 

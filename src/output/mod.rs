@@ -1,11 +1,16 @@
-//! Output files written by scene runs: CSV tables ([`csv`]) and SVG line
-//! plots ([`plot`] describes a figure, [`svg`] renders it); [`memory`] runs a
-//! scene without files.
+//! Outputs of scene runs: a run writes through its [`sink::Sink`] (a
+//! directory or memory, named by [`names`]), which is the only way a scene
+//! writes a file: CSV tables ([`csv`], or [`memory`] tables), SVG line plots
+//! ([`plot`] describes a figure, [`svg`] renders it) and other files, each
+//! whole or not at all ([`atomic`]). The run manifest ([`manifest`]) records
+//! what a run wrote.
 
 pub mod atomic;
 pub mod csv;
 pub mod decimate;
 pub mod manifest;
 pub mod memory;
+pub mod names;
 pub mod plot;
+pub mod sink;
 pub mod svg;

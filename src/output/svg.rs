@@ -37,20 +37,17 @@ impl Figure {
         self.render_for(Path::new("<memory>"))
     }
 
-    /// Renders and writes to `path`.
-    ///
-    /// A path in a [`super::memory::Capture`] directory is not drawn: only
-    /// the check that every panel has a drawable point is made.
+    /// Renders and writes to `path` (whole or not at all, [`super::atomic`]).
+    /// A scene draws its figures through its run context
+    /// ([`super::sink::Sink::figure`]) instead.
     pub fn save(&self, path: &Path) -> Result<(), OutputError> {
-        if super::memory::is_memory(path) {
-            return self.check_drawable(path);
-        }
         let svg = self.render_for(path)?;
         super::atomic::write(path, svg.as_bytes())
     }
 
-    /// Refuses a panel without a drawable point, as drawing does.
-    fn check_drawable(&self, path: &Path) -> Result<(), OutputError> {
+    /// Refuses a panel without a drawable point, as drawing does, naming
+    /// `path` (the figure is not drawn).
+    pub(crate) fn check_drawable(&self, path: &Path) -> Result<(), OutputError> {
         for panel in &self.panels {
             let x = bounds(panel, panel.x_scale, |p| p.0);
             let y = bounds(panel, panel.y_scale, |p| p.1);
@@ -64,7 +61,8 @@ impl Figure {
         Ok(())
     }
 
-    fn render_for(&self, path: &Path) -> Result<String, OutputError> {
+    /// Renders to an SVG string, naming `path` in errors.
+    pub(crate) fn render_for(&self, path: &Path) -> Result<String, OutputError> {
         let plot_err = |message: String| OutputError::Plot {
             path: path.to_path_buf(),
             message,

@@ -323,8 +323,8 @@ impl IntegratorSpec {
         };
         format!(
             "{m}, t in [{}, {}] s",
-            crate::scene::summary::significant(self.t0),
-            crate::scene::summary::significant(self.t_end)
+            crate::scene::numbers::significant(self.t0),
+            crate::scene::numbers::significant(self.t_end)
         )
     }
 }

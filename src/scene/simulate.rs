@@ -10,8 +10,10 @@ use crate::integrate::{
     Solution, Solver, StopReason,
 };
 use crate::scene::integrator::DefaultMethod;
-use crate::scene::summary::significant;
-use crate::scene::{EventRecord, IntegrationSummary, IntegratorSpec, Progress};
+use crate::scene::integrator::IntegratorSpec;
+use crate::scene::numbers::significant;
+use crate::scene::progress::Progress;
+use crate::scene::summary::{EventRecord, IntegrationSummary};
 use crate::system::OdeSystem;
 
 /// The integrator method and options described by `spec`.
@@ -221,7 +223,7 @@ pub fn event_records<const N: usize>(sol: &Solution<N>, event_names: &[&str]) ->
 mod tests {
     use super::*;
     use crate::integrate::Direction;
-    use crate::scene::Method;
+    use crate::scene::integrator::Method;
     use crate::system::FnSystem;
     use nalgebra::Vector2;
 

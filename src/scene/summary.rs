@@ -1,11 +1,12 @@
 //! What a scene run reports: how the integration(s) ended and what they
 //! cost ([`IntegrationSummary`]), scene-specific numbers ([`Metric`]), and
-//! the files written. `pegdyn run` prints it with [`std::fmt::Display`].
+//! the files written (from the run's sink). `pegdyn run` prints it with [`std::fmt::Display`].
 
 use std::fmt;
 use std::path::PathBuf;
 
-use crate::scene::Method;
+use crate::scene::integrator::Method;
+use crate::scene::numbers::significant;
 
 /// A scalar result of a run worth printing (e.g. energy drift).
 #[derive(Debug, Clone, PartialEq)]
@@ -90,7 +91,9 @@ pub struct RunSummary {
     pub integration: Option<IntegrationSummary>,
     /// Scene-specific results.
     pub metrics: Vec<Metric>,
-    /// Files written.
+    /// Files written, in the order they were completed: filled in by
+    /// [`crate::scene::LoadedScene::run`] from the run's sink (empty for a
+    /// run in memory).
     pub outputs: Vec<PathBuf>,
 }
 
@@ -123,28 +126,6 @@ impl fmt::Display for RunSummary {
             writeln!(f, "  wrote {}", p.display())?;
         }
         Ok(())
-    }
-}
-
-/// `v` rounded to six significant digits, printed in its shortest form
-/// (plain decimal for `1e-3 <= |v| < 1e6`, scientific otherwise), so that
-/// a summary never prints hundreds of digits.
-///
-/// ```
-/// use pegdyn::scene::significant;
-/// assert_eq!(significant(0.123456789), "0.123457");
-/// assert_eq!(significant(1e200), "1e200");
-/// assert_eq!(significant(2.5), "2.5");
-/// ```
-pub fn significant(v: f64) -> String {
-    if !v.is_finite() || v == 0.0 {
-        return format!("{v}");
-    }
-    let rounded: f64 = format!("{v:.5e}").parse().unwrap_or(v);
-    if (1e-3..1e6).contains(&rounded.abs()) {
-        format!("{rounded}")
-    } else {
-        format!("{rounded:e}")
     }
 }
 

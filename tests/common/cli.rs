@@ -31,12 +31,9 @@ pub fn fresh_dir(prefix: &str, test: &str) -> PathBuf {
 /// its files into `dir` (silent progress).
 pub fn run_scene(text: &str, name: &str, dir: &Path) -> pegdyn::scene::RunSummary {
     let loaded = pegdyn::scene::parse_named(text, name).expect("the test scene parses");
-    let mut ctx = pegdyn::scene::RunContext {
-        out_dir: dir.to_path_buf(),
-        name: name.into(),
-        progress: pegdyn::scene::Progress::silent(),
-    };
-    loaded.scene.run(&mut ctx).expect("the test scene runs")
+    let sink = pegdyn::output::sink::Sink::directory(dir, name);
+    let mut ctx = pegdyn::scene::RunContext::new(sink, pegdyn::scene::Progress::silent());
+    loaded.run(&mut ctx).expect("the test scene runs")
 }
 
 /// The value of the first metric of `summary` whose name starts with

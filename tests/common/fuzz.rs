@@ -233,14 +233,11 @@ pub fn run_case(name: &str, text: &str, out: &Path) -> Result<bool, String> {
     };
     let _ = std::fs::remove_dir_all(out);
     std::fs::create_dir_all(out).map_err(|e| e.to_string())?;
-    let mut ctx = pegdyn::scene::RunContext {
-        out_dir: out.to_path_buf(),
-        name: name.to_owned(),
-        progress: pegdyn::scene::Progress::silent(),
-    };
+    let sink = pegdyn::output::sink::Sink::directory(out, name);
+    let mut ctx = pegdyn::scene::RunContext::new(sink, pegdyn::scene::Progress::silent());
     // Either a summary or a typed error: both are fine; what they leave
     // behind is checked below.
-    let result = loaded.scene.run(&mut ctx);
+    let result = loaded.run(&mut ctx);
     let files: Vec<PathBuf> = std::fs::read_dir(out)
         .map(|d| d.filter_map(Result::ok).map(|e| e.path()).collect())
         .unwrap_or_default();

@@ -6,7 +6,7 @@
 #![allow(dead_code)]
 
 use pegdyn::scene::Progress;
-use pegdyn::scene::insert_3d::rcc::{Built, RccScene, Run, run_one};
+use pegdyn::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, Run, run_one};
 
 /// Parses `text` as an `insert_rcc` scene, builds it and runs it.
 pub fn run(text: &str) -> (RccScene, Built, Run) {

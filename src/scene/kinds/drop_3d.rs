@@ -1,0 +1,239 @@
+//! Scene kind `drop_3d`: the compliant 3-D peg released leaning on the
+//! mouth (the rigid three-point configuration at tilt `γ`, lowered until
+//! the fillets touch), spinning about the hole's axis, under gravity and a
+//! constant follower moment that turns its axis towards the hole's. Every
+//! contact transition (a pair gaining or losing a point) is located as an
+//! event and listed.
+//!
+//! ```toml
+//! kind = "drop_3d"
+//! [peg]                       # see docs/insertion.md for every field
+//! hole_diameter = 0.050
+//! clearance_ratio = 0.001
+//! length = 0.070
+//! rim_fillet = 0.001
+//! mouth_fillet = 0.001
+//! bore_depth = 0.1
+//! density = 7850.0
+//! friction = 0.2
+//! [drop]
+//! gamma = 0.3                 # rad, > gamma0 = arccos(d/D)
+//! azimuth_deg = 0.0           # direction of the tilt
+//! spin_rate = 10.0            # rad/s about the hole's axis
+//! aligning_moment = 0.15      # N m, turns the axis towards the hole's
+//! [integrator]
+//! method = "dopri5"
+//! t_end = 0.05
+//! output_interval = 1e-4
+//! ```
+//!
+//! Writes `<name>.csv` (time series, see [`output`]),
+//! `<name>_events.csv`, `<name>.svg` (forces and contact state against
+//! time) and `<name>_views.svg` (side and top views at each transition).
+
+use serde::Deserialize;
+
+use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, lean_pose};
+use crate::compliant_peg_3d::outcome::{CountCache, transition_events};
+use crate::compliant_peg_3d::{Peg3dParams, pose_state};
+use crate::error::{RunError, SceneError, SceneErrors};
+use crate::output::names::Part;
+use crate::output::plot::{Figure, Panel, Series};
+use crate::scene::context::RunContext;
+use crate::scene::document::Document;
+use crate::scene::integrator::DefaultMethod;
+use crate::scene::integrator::IntegratorSpec;
+use crate::scene::kind::{Kind, Scene};
+use crate::scene::ranges::FieldRange;
+use crate::scene::shared::compliant_peg_3d::tables::PegTable;
+use crate::scene::shared::compliant_peg_3d::{output, ranges};
+use crate::scene::simulate::{integrate, integration_summary};
+use crate::scene::summary::{Metric, RunSummary};
+use crate::scene::validate::Checker;
+use crate::system::ModelError;
+use nalgebra::{SVector, Vector3};
+
+/// Registry entry.
+pub const KIND: Kind = Kind {
+    name: "drop_3d",
+    about: "compliant 3-D peg released leaning on the mouth, spinning, under an aligning moment",
+    parse,
+    ranges: &[ranges::PEG, DROP],
+};
+
+/// `drop.gamma`.
+pub const GAMMA: FieldRange = FieldRange::new(
+    "drop.gamma",
+    0.0,
+    1.2,
+    "rad",
+    "a lean from upright to about 69 degrees; it must also admit the rigid three-point lean, gamma > gamma0 = arccos(d/D)",
+);
+/// `drop.azimuth_deg`.
+pub const AZIMUTH: FieldRange = FieldRange::new(
+    "drop.azimuth_deg",
+    -360.0,
+    360.0,
+    "deg",
+    "a direction, at most one turn either way",
+);
+/// `drop.spin_rate`.
+pub const SPIN_RATE: FieldRange = FieldRange::new(
+    "drop.spin_rate",
+    -1e3,
+    1e3,
+    "rad/s",
+    "a spin of up to about 160 turns per second",
+);
+/// `drop.aligning_moment`.
+pub const ALIGNING_MOMENT: FieldRange = FieldRange::new(
+    "drop.aligning_moment",
+    -1e3,
+    1e3,
+    "N m",
+    "a hand's to a machine's aligning moment, up to a kilonewton metre",
+);
+/// The `[drop]` table.
+pub const DROP: &[FieldRange] = &[GAMMA, AZIMUTH, SPIN_RATE, ALIGNING_MOMENT];
+
+/// The `[drop]` table.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DropTable {
+    /// Tilt `γ` at release (rad).
+    pub gamma: f64,
+    /// Azimuth of the tilt (degrees, default 0).
+    #[serde(default)]
+    pub azimuth_deg: f64,
+    /// Angular velocity about the hole's axis at release (rad/s).
+    pub spin_rate: f64,
+    /// Follower aligning moment `M₀` (N·m).
+    pub aligning_moment: f64,
+}
+
+/// A `drop_3d` scene as written.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct DropScene {
+    /// The `[peg]` table.
+    pub peg: PegTable,
+    /// The `[drop]` table.
+    pub drop: DropTable,
+    /// The `[integrator]` table.
+    pub integrator: IntegratorSpec,
+}
+
+#[derive(Debug)]
+struct Ready {
+    scene: DropScene,
+    params: Peg3dParams,
+    start: SVector<f64, N_STATE>,
+    integrator: IntegratorSpec,
+    method_reason: &'static str,
+}
+
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+    let s: DropScene = doc.body()?;
+    let mut c = Checker::default();
+    let params = s.peg.build(&mut c);
+    let d = &s.drop;
+    GAMMA.require(&mut c, d.gamma);
+    AZIMUTH.require(&mut c, d.azimuth_deg);
+    SPIN_RATE.require(&mut c, d.spin_rate);
+    ALIGNING_MOMENT.require(&mut c, d.aligning_moment);
+    c.extend(s.integrator.check("integrator"));
+    c.finish()?;
+    let (p, q) = lean_pose(&params, d.gamma, d.azimuth_deg.to_radians()).map_err(|e| {
+        SceneErrors::from(SceneError::invalid("drop.gamma", d.gamma, e.to_string()))
+    })?;
+    let omega_body = q.inverse() * Vector3::new(0.0, 0.0, d.spin_rate);
+    let ys = pose_state(p, q, Vector3::zeros(), omega_body);
+    let mut start = SVector::<f64, N_STATE>::zeros();
+    start.fixed_rows_mut::<15>(0).copy_from(&ys);
+    let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::NON_STIFF);
+    Ok(Box::new(Ready {
+        scene: s,
+        params,
+        start,
+        integrator,
+        method_reason,
+    }))
+}
+
+impl Scene for Ready {
+    fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
+        self.scene.integrator.work("integrator")
+    }
+
+    fn describe(&self) -> String {
+        let d = &self.scene.drop;
+        format!(
+            "compliant 3-D peg dropped leaning on the mouth: D = {} m, c = {}, gamma = {} rad, \
+             spin {} rad/s, aligning moment {} N m, mu = {}; {} ({})",
+            crate::scene::numbers::significant(self.params.hole_diameter),
+            crate::scene::numbers::significant(self.scene.peg.clearance_ratio),
+            crate::scene::numbers::significant(d.gamma),
+            crate::scene::numbers::significant(d.spin_rate),
+            crate::scene::numbers::significant(d.aligning_moment),
+            crate::scene::numbers::significant(self.params.friction),
+            self.integrator.describe(),
+            self.method_reason
+        )
+    }
+
+    fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
+        let sys = Insertion::new(self.params, None, self.scene.drop.aligning_moment);
+        let counter = Insertion::new(self.params, None, 0.0);
+        let cache = CountCache::new(&counter);
+        let (events, what) = transition_events(&cache);
+        let sol = integrate(
+            &sys,
+            self.start,
+            &self.integrator,
+            events,
+            &mut ctx.progress,
+        )?;
+        if let Some(ModelError::Hertz(e)) = sol.model_error.clone() {
+            return Err(RunError::Hertz(e));
+        }
+        let names: Vec<String> = what
+            .iter()
+            .map(|(i, k)| format!("{} {k}", crate::compliant_peg_3d::Pair::ALL[*i].name()))
+            .collect();
+        let name_refs: Vec<&str> = names.iter().map(String::as_str).collect();
+        let mut out = RunSummary {
+            integration: Some(integration_summary(&self.integrator, &sol, &name_refs)),
+            ..RunSummary::default()
+        };
+        let samples = output::samples(&sys, &sol)?;
+        let peaks = output::write_series(ctx, &samples)?;
+        let rows = output::transitions(&sys, &sol, &what);
+        output::write_events(ctx, &sys, &rows)?;
+        let mut fig = Figure::new();
+        fig.panels.push(output::forces_panel(&samples));
+        fig.panels.push(output::timeline(&samples));
+        fig.panels
+            .push(Panel::new("Tilt", "t [s]", "γ [rad]").with(Series::line(
+                "γ",
+                samples.rows.iter().map(|(t, _, s)| (*t, s.tilt)).collect(),
+            )));
+        ctx.figure(Part::Main, &fig)?;
+        output::write_views(
+            ctx,
+            &sys,
+            (sol.t.first().copied().unwrap_or(0.0), &self.start),
+            &rows,
+            (sol.t_final, &sol.x_final),
+            12,
+        )?;
+        out.metrics = output::metrics(&peaks);
+        out.metrics.retain(|m| !m.name.contains("wrist"));
+        out.metrics
+            .push(Metric::new("contact transitions", rows.len() as f64, ""));
+        for r in rows.iter().take(12) {
+            out.metrics
+                .push(Metric::new(format!("{} ({})", r.what, r.state), r.t, "s"));
+        }
+        Ok(out)
+    }
+}

@@ -1,0 +1,413 @@
+//! Scene kind `rotation_assist`: the `insert_rcc` insertion over a grid of
+//! lateral × angular errors, at several precession rates `ψ̇` and spin
+//! rates `φ̇` (0 included): does rotating the peg help it in? Runs in
+//! parallel (rayon) with a progress line.
+//!
+//! The `[peg]`, `[wrist]`, `[robot]`, `[criteria]` and `[integrator]`
+//! tables are those of `insert_rcc` (the robot's errors and rates are
+//! replaced by the grid's); `[grid]`:
+//!
+//! ```toml
+//! [grid]
+//! lateral_errors = [0.0, 2e-4]          # m
+//! angular_errors_deg = [0.5, 1.5]
+//! precession_rates = [0.0, 20.0]        # rad/s
+//! spin_rates = [0.0, 20.0]              # rad/s
+//! yield_pressure = 1.5e9                # Pa, the stated yield for p0
+//! ```
+//!
+//! Writes `<name>.csv` (`lateral_error_m, angular_error_deg,
+//! precession_rate, spin_rate, outcome, outcome_code, end_time_s,
+//! insertion_time_s, peak_contact_N, peak_pressure_Pa, pressure_over_yield,
+//! peak_wrist_moment_Nm, peak_wrist_force_N`; `insertion_time_s` is the end
+//! time of seated runs, else empty) and `<name>.svg`: per rotation pair,
+//! the outcome and the peak contact force over the error grid.
+
+use serde::Deserialize;
+
+use crate::error::{RunError, SceneErrors};
+use crate::output::csv::format_f64;
+use crate::output::names::Part;
+use crate::output::plot::{Figure, Panel, Series, Style};
+use crate::scene::context::RunContext;
+use crate::scene::document::Document;
+use crate::scene::integrator::DefaultMethod;
+use crate::scene::integrator::IntegratorSpec;
+use crate::scene::kind::{Kind, Scene};
+use crate::scene::limits::WorkItem;
+use crate::scene::progress::{Progress, par_map_counted};
+use crate::scene::ranges::FieldRange;
+use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, outcome_text, run_one};
+use crate::scene::shared::compliant_peg_3d::{ranges, tables};
+use crate::scene::summary::{Metric, RunSummary};
+use crate::scene::validate::Checker;
+
+/// Registry entry.
+pub const KIND: Kind = Kind {
+    name: "rotation_assist",
+    about: "compliant 3-D peg insertions over errors x precession x spin: does rotation help?",
+    parse,
+    ranges: &[
+        ranges::PEG,
+        ranges::WRIST,
+        ranges::ROBOT,
+        ranges::CRITERIA,
+        &[YIELD_PRESSURE],
+    ],
+};
+
+/// `grid.yield_pressure`.
+pub const YIELD_PRESSURE: FieldRange = FieldRange::new(
+    "grid.yield_pressure",
+    1e3,
+    1e12,
+    "Pa",
+    "a yield pressure from soft polymers (kPa) to far above the hardest steels (a few GPa)",
+);
+
+/// The `[grid]` table.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct GridTable {
+    /// Lateral errors (m).
+    pub lateral_errors: Vec<f64>,
+    /// Angular errors (degrees).
+    pub angular_errors_deg: Vec<f64>,
+    /// Precession rates `ψ̇` (rad/s).
+    pub precession_rates: Vec<f64>,
+    /// Spin rates `φ̇` (rad/s).
+    pub spin_rates: Vec<f64>,
+    /// The yield pressure the peak Hertz pressure is compared with (Pa).
+    pub yield_pressure: f64,
+}
+
+/// A `rotation_assist` scene as written.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SweepScene {
+    /// `[peg]`.
+    pub peg: tables::PegTable,
+    /// `[wrist]`.
+    pub wrist: tables::WristTable,
+    /// `[robot]`: the base motion.
+    pub robot: tables::RobotTable,
+    /// `[criteria]`.
+    pub criteria: tables::CriteriaTable,
+    /// `[grid]`.
+    pub grid: GridTable,
+    /// `[integrator]`.
+    pub integrator: IntegratorSpec,
+}
+
+/// One grid point.
+#[derive(Debug, Clone, Copy)]
+struct Point {
+    lateral: f64,
+    angular_deg: f64,
+    precession: f64,
+    spin: f64,
+}
+
+#[derive(Debug)]
+struct Ready {
+    scene: SweepScene,
+    points: Vec<(Point, Built)>,
+    integrator: IntegratorSpec,
+    method_reason: &'static str,
+}
+
+impl SweepScene {
+    fn as_rcc(&self, p: &Point) -> RccScene {
+        let mut robot = self.robot.clone();
+        robot.lateral_error = p.lateral;
+        robot.angular_error_deg = p.angular_deg;
+        robot.precession_rate = p.precession;
+        robot.spin_rate = p.spin;
+        RccScene {
+            peg: self.peg.clone(),
+            wrist: self.wrist.clone(),
+            robot,
+            criteria: self.criteria.clone(),
+            integrator: self.integrator.clone(),
+        }
+    }
+}
+
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+    let s: SweepScene = doc.body()?;
+    let mut c = Checker::default();
+    let g = &s.grid;
+    for (name, list) in [
+        ("lateral_errors", &g.lateral_errors),
+        ("angular_errors_deg", &g.angular_errors_deg),
+        ("precession_rates", &g.precession_rates),
+        ("spin_rates", &g.spin_rates),
+    ] {
+        if list.is_empty() {
+            c.push(crate::error::SceneError::invalid(
+                format!("grid.{name}"),
+                "[]",
+                "must list at least one value",
+            ));
+        }
+        for (k, v) in list.iter().enumerate() {
+            c.finite(&format!("grid.{name}[{k}]"), *v);
+        }
+    }
+    YIELD_PRESSURE.require(&mut c, g.yield_pressure);
+    c.finish()?;
+    let mut points = Vec::new();
+    for &lateral in &g.lateral_errors {
+        for &angular_deg in &g.angular_errors_deg {
+            for &precession in &g.precession_rates {
+                for &spin in &g.spin_rates {
+                    let p = Point {
+                        lateral,
+                        angular_deg,
+                        precession,
+                        spin,
+                    };
+                    let built = s.as_rcc(&p).build()?;
+                    points.push((p, built));
+                }
+            }
+        }
+    }
+    let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::NON_STIFF);
+    Ok(Box::new(Ready {
+        scene: s,
+        points,
+        integrator,
+        method_reason,
+    }))
+}
+
+/// One run's row.
+#[derive(Debug, Clone)]
+struct Row {
+    point: Point,
+    outcome: String,
+    code: f64,
+    end: f64,
+    seated: bool,
+    peak_contact: f64,
+    peak_pressure: f64,
+    peak_moment: f64,
+    peak_wrist: f64,
+}
+
+fn one(p: Point, b: &Built, spec: &IntegratorSpec) -> Result<Row, RunError> {
+    let mut silent = Progress::silent();
+    let run = run_one(b, spec, false, &mut silent)?;
+    let (mut pc, mut pp, mut pm, mut pw) = (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
+    for (&t, y) in run.solution.t.iter().zip(&run.solution.x) {
+        let s = run.system.sample(t, y)?;
+        pc = pc.max(s.peak_normal());
+        pp = pp.max(run.system.peak_pressure(y, &s).0);
+        if let Some(w) = &s.wrist {
+            pm = pm.max(w.moment_robot.xy().norm());
+            pw = pw.max(w.force.norm());
+        }
+    }
+    Ok(Row {
+        point: p,
+        outcome: outcome_text(&run.outcome),
+        code: run.outcome.code(),
+        end: run.solution.t_final,
+        seated: run.outcome == crate::compliant_peg_3d::outcome::Outcome::Seated,
+        peak_contact: pc,
+        peak_pressure: pp,
+        peak_moment: pm,
+        peak_wrist: pw,
+    })
+}
+
+impl Scene for Ready {
+    fn work(&self) -> Vec<WorkItem> {
+        let mut w = self.scene.integrator.work("integrator");
+        w.push(WorkItem::new(
+            "grid",
+            "max_runs",
+            self.points.len() as f64,
+            0.0,
+        ));
+        w
+    }
+
+    fn describe(&self) -> String {
+        format!(
+            "rotation assist: {} insertions ({} lateral x {} angular errors x {} precession x {} \
+             spin rates); {} ({})",
+            self.points.len(),
+            self.scene.grid.lateral_errors.len(),
+            self.scene.grid.angular_errors_deg.len(),
+            self.scene.grid.precession_rates.len(),
+            self.scene.grid.spin_rates.len(),
+            self.integrator.describe(),
+            self.method_reason
+        )
+    }
+
+    fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
+        let rows = par_map_counted(&self.points, &mut ctx.progress, "insertion", |(p, b)| {
+            one(*p, b, &self.integrator)
+        });
+        let rows: Vec<Row> = rows.into_iter().collect::<Result<_, _>>()?;
+        let yield_p = self.scene.grid.yield_pressure;
+        let mut csv = ctx.table(
+            Part::Main,
+            &[
+                "lateral_error_m",
+                "angular_error_deg",
+                "precession_rate",
+                "spin_rate",
+                "outcome",
+                "outcome_code",
+                "end_time_s",
+                "insertion_time_s",
+                "peak_contact_N",
+                "peak_pressure_Pa",
+                "pressure_over_yield",
+                "peak_wrist_moment_Nm",
+                "peak_wrist_force_N",
+            ],
+        )?;
+        for r in &rows {
+            csv.row_cells(&[
+                &format_f64(r.point.lateral),
+                &format_f64(r.point.angular_deg),
+                &format_f64(r.point.precession),
+                &format_f64(r.point.spin),
+                &r.outcome,
+                &format_f64(r.code),
+                &format_f64(r.end),
+                &if r.seated {
+                    format_f64(r.end)
+                } else {
+                    String::new()
+                },
+                &format_f64(r.peak_contact),
+                &format_f64(r.peak_pressure),
+                &format_f64(r.peak_pressure / yield_p),
+                &format_f64(r.peak_moment),
+                &format_f64(r.peak_wrist),
+            ])?;
+        }
+        csv.finish()?;
+        ctx.figure(Part::Main, &heat_maps(&rows))?;
+        let mut out = RunSummary::default();
+        let seated = rows.iter().filter(|r| r.seated).count();
+        out.metrics.push(Metric::new("runs", rows.len() as f64, ""));
+        out.metrics.push(Metric::new("seated", seated as f64, ""));
+        for (pr, sr) in rate_pairs(&rows) {
+            let sel: Vec<&Row> = rows
+                .iter()
+                .filter(|r| r.point.precession == pr && r.point.spin == sr)
+                .collect();
+            let seated: Vec<&&Row> = sel.iter().filter(|r| r.seated).collect();
+            let mean_t = seated.iter().map(|r| r.end).sum::<f64>() / seated.len().max(1) as f64;
+            let peak = sel.iter().map(|r| r.peak_contact).fold(0.0, f64::max);
+            let tag = format!("psidot {pr} rad/s, phidot {sr} rad/s");
+            out.metrics.push(Metric::new(
+                format!("{tag}: seated of {}", sel.len()),
+                seated.len() as f64,
+                "",
+            ));
+            out.metrics.push(Metric::new(
+                format!("{tag}: mean insertion time"),
+                mean_t,
+                "s",
+            ));
+            out.metrics
+                .push(Metric::new(format!("{tag}: peak contact force"), peak, "N"));
+        }
+        let pmax = rows.iter().map(|r| r.peak_pressure).fold(0.0, f64::max);
+        out.metrics.push(Metric::new(
+            "peak Hertz pressure / yield",
+            pmax / yield_p,
+            "",
+        ));
+        Ok(out)
+    }
+}
+
+fn rate_pairs(rows: &[Row]) -> Vec<(f64, f64)> {
+    let mut pairs: Vec<(f64, f64)> = Vec::new();
+    for r in rows {
+        let k = (r.point.precession, r.point.spin);
+        if !pairs.contains(&k) {
+            pairs.push(k);
+        }
+    }
+    pairs
+}
+
+/// Per rotation pair: the outcome over the error grid (one marker series
+/// per outcome) and the peak contact force (one marker series per force
+/// quartile of the whole sweep).
+fn heat_maps(rows: &[Row]) -> Figure {
+    let mut fig = Figure::new();
+    let mut forces: Vec<f64> = rows.iter().map(|r| r.peak_contact).collect();
+    forces.sort_by(f64::total_cmp);
+    let q = |f: f64| forces[((forces.len() - 1) as f64 * f).round() as usize];
+    let bands = [q(0.25), q(0.5), q(0.75)];
+    for (pr, sr) in rate_pairs(rows) {
+        let sel: Vec<&Row> = rows
+            .iter()
+            .filter(|r| r.point.precession == pr && r.point.spin == sr)
+            .collect();
+        let title = format!("ψ̇ = {pr} rad/s, φ̇ = {sr} rad/s");
+        let mut a = Panel::new(
+            &format!("Outcome, {title}"),
+            "lateral error [mm]",
+            "angular error [deg]",
+        );
+        for (code, name) in crate::compliant_peg_3d::outcome::CODE_LEGEND {
+            let pts: Vec<(f64, f64)> = sel
+                .iter()
+                .filter(|r| r.code == code)
+                .map(|r| (r.point.lateral * 1e3, r.point.angular_deg))
+                .collect();
+            if !pts.is_empty() {
+                a = a.with(
+                    Series::line(name, pts)
+                        .styled(Style::Markers)
+                        .colored(code as usize),
+                );
+            }
+        }
+        fig.panels.push(a);
+        let mut b = Panel::new(
+            &format!("Peak contact force, {title}"),
+            "lateral error [mm]",
+            "angular error [deg]",
+        );
+        for band in 0..4 {
+            let lo = if band == 0 {
+                f64::NEG_INFINITY
+            } else {
+                bands[band - 1]
+            };
+            let hi = if band == 3 {
+                f64::INFINITY
+            } else {
+                bands[band]
+            };
+            let pts: Vec<(f64, f64)> = sel
+                .iter()
+                .filter(|r| r.peak_contact > lo && r.peak_contact <= hi)
+                .map(|r| (r.point.lateral * 1e3, r.point.angular_deg))
+                .collect();
+            if !pts.is_empty() {
+                let name = match band {
+                    0 => format!("≤ {:.3} N", bands[0]),
+                    3 => format!("> {:.3} N", bands[2]),
+                    k => format!("{:.3}–{:.3} N", bands[k - 1], bands[k]),
+                };
+                b = b.with(Series::line(name, pts).styled(Style::Markers).colored(band));
+            }
+        }
+        fig.panels.push(b);
+    }
+    fig
+}

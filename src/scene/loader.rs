@@ -1,0 +1,94 @@
+//! Reading a scene: parse the TOML, dispatch on `kind` through the
+//! registry ([`crate::scene::kinds::KINDS`]), validate, bound the work by
+//! the scene's `[limits]`.
+
+use std::path::Path;
+
+use crate::error::{RunError, SceneError, SceneErrors};
+use crate::scene::context::RunContext;
+use crate::scene::document::Document;
+use crate::scene::kind::Scene;
+use crate::scene::kinds::KINDS;
+use crate::scene::limits::LimitOverrides;
+use crate::scene::summary::RunSummary;
+
+/// A scene read from a file.
+#[derive(Debug)]
+pub struct LoadedScene {
+    /// File stem, used to name the outputs.
+    pub name: String,
+    /// The `kind` field.
+    pub kind: &'static str,
+    /// The optional `description` field.
+    pub description: Option<String>,
+    /// The validated scene.
+    pub scene: Box<dyn Scene>,
+}
+
+impl LoadedScene {
+    /// Runs the scene into `ctx`; the summary's `outputs` are the files the
+    /// run wrote, as its sink recorded them.
+    ///
+    /// # Errors
+    /// The scene's run error (files completed before it stay recorded in
+    /// `ctx`'s sink).
+    pub fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
+        let mut summary = self.scene.run(ctx)?;
+        summary.outputs = ctx.sink().written();
+        Ok(summary)
+    }
+}
+
+/// Parses and validates scene text (no file name: the scene is named `scene`).
+pub fn parse(text: &str) -> Result<LoadedScene, SceneErrors> {
+    parse_named(text, "scene")
+}
+
+/// Parses and validates scene text, naming the outputs after `name`.
+pub fn parse_named(text: &str, name: &str) -> Result<LoadedScene, SceneErrors> {
+    parse_named_with(text, name, &LimitOverrides::default())
+}
+
+/// As [`parse_named`], with the scene's `[limits]` replaced key by key by
+/// `overrides` (the `--limit` option of `pegdyn check` and `pegdyn run`).
+pub fn parse_named_with(
+    text: &str,
+    name: &str,
+    overrides: &LimitOverrides,
+) -> Result<LoadedScene, SceneErrors> {
+    let doc = Document::parse(text)?;
+    let kind = KINDS.iter().find(|k| k.name == doc.kind()).ok_or_else(|| {
+        doc.locate_all(SceneErrors::from(SceneError::UnknownKind {
+            value: doc.kind().to_string(),
+            known: KINDS.iter().map(|k| k.name).collect::<Vec<_>>().join(", "),
+        }))
+    })?;
+    let scene = (kind.parse)(&doc).map_err(|e| doc.locate_all(e))?;
+    overrides
+        .apply(doc.limits()?)
+        .check(&scene.work())
+        .map_err(|e| doc.locate_all(e))?;
+    Ok(LoadedScene {
+        name: name.to_string(),
+        kind: kind.name,
+        description: doc.description().map(str::to_string),
+        scene,
+    })
+}
+
+/// Reads, parses and validates the scene file at `path`.
+pub fn load(path: &Path) -> Result<LoadedScene, SceneErrors> {
+    load_with(path, &LimitOverrides::default())
+}
+
+/// As [`load`], with `overrides` applied to the scene's `[limits]`.
+pub fn load_with(path: &Path, overrides: &LimitOverrides) -> Result<LoadedScene, SceneErrors> {
+    let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
+        path: path.to_path_buf(),
+        source,
+    })?;
+    let name = path
+        .file_stem()
+        .map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());
+    parse_named_with(&text, &name, overrides)
+}

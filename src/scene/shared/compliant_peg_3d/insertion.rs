@@ -1,0 +1,187 @@
+//! One insertion of the compliant 3-D peg held by a robot through a
+//! compliant wrist (remote centre compliance), shared by the kinds that run
+//! it (`insert_rcc` once, `rotation_assist` and `design_margins` over
+//! grids): the `insert_rcc` tables as written ([`RccScene`]), validated
+//! ([`Built`]), integrated and classified ([`run_one`]), and the outcome in
+//! words ([`outcome_text`]).
+
+use serde::Deserialize;
+
+use super::tables::{CriteriaTable, PegTable, RobotTable, WristTable, held};
+use crate::compliant_peg_3d::Peg3dParams;
+use crate::compliant_peg_3d::insertion::{Held, Insertion, N_STATE};
+use crate::compliant_peg_3d::outcome::{
+    CountCache, Criteria, Outcome, TERMINAL_NAMES, classify, terminal_events, transition_events,
+};
+use crate::error::{RunError, SceneErrors};
+use crate::integrate::{Solution, StopReason};
+use crate::scene::integrator::IntegratorSpec;
+use crate::scene::numbers::significant;
+use crate::scene::progress::Progress;
+use crate::scene::simulate::{describe_stop, integrate};
+use crate::scene::validate::Checker;
+use crate::system::ModelError;
+
+/// An `insert_rcc` scene as written.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RccScene {
+    /// `[peg]`.
+    pub peg: PegTable,
+    /// `[wrist]`.
+    pub wrist: WristTable,
+    /// `[robot]`.
+    pub robot: RobotTable,
+    /// `[criteria]`.
+    pub criteria: CriteriaTable,
+    /// `[integrator]`.
+    pub integrator: IntegratorSpec,
+}
+
+/// A validated held peg, ready to run.
+#[derive(Debug, Clone, Copy)]
+pub struct Built {
+    /// The peg.
+    pub params: Peg3dParams,
+    /// Wrist and robot.
+    pub held: Held,
+    /// When the run ends.
+    pub criteria: Criteria,
+    /// Tip depth of a start in the bore (m), if `robot.start_height < 0`.
+    pub start_depth: Option<f64>,
+}
+
+impl RccScene {
+    /// Validates every table.
+    ///
+    /// # Errors
+    /// Every invalid field, named.
+    pub fn build(&self) -> Result<Built, SceneErrors> {
+        let mut c = Checker::default();
+        let (params, held, criteria) =
+            held(&self.peg, &self.wrist, &self.robot, &self.criteria, &mut c);
+        c.extend(self.integrator.check("integrator"));
+        c.finish()?;
+        Ok(Built {
+            params,
+            held,
+            criteria,
+            start_depth: (self.robot.start_height < 0.0).then_some(-self.robot.start_height),
+        })
+    }
+}
+
+/// One insertion's result.
+pub struct Run {
+    /// The system.
+    pub system: Insertion,
+    /// The integration.
+    pub solution: Solution<N_STATE>,
+    /// How it ended.
+    pub outcome: Outcome,
+    /// The transition events' meaning.
+    pub transitions: Vec<crate::compliant_peg_3d::outcome::Transition>,
+}
+
+/// Integrates one insertion with its terminal and (if `track`) contact
+/// transition events, and classifies the end.
+///
+/// # Errors
+/// The integrator's refusal or a Hertz setup error.
+pub fn run_one(
+    b: &Built,
+    spec: &IntegratorSpec,
+    track: bool,
+    progress: &mut Progress,
+) -> Result<Run, RunError> {
+    let sys = Insertion::new(b.params, Some(b.held), 0.0);
+    let counter = Insertion::new(b.params, None, 0.0);
+    let y0 = match b.start_depth {
+        Some(d) => sys.centred_start(d),
+        None => sys.held_start(),
+    }
+    .unwrap_or_default();
+    let (solution, what) = {
+        let cache = CountCache::new(&counter);
+        let mut events = terminal_events(&sys, b.criteria);
+        let mut what = Vec::new();
+        if track {
+            let (ev, w) = transition_events(&cache);
+            events.extend(ev);
+            what = w;
+        }
+        (integrate(&sys, y0, spec, events, progress)?, what)
+    };
+    if let Some(ModelError::Hertz(e)) = solution.model_error.clone() {
+        return Err(RunError::Hertz(e));
+    }
+    let terminal = match solution.stop {
+        StopReason::Event { index, .. } if index < TERMINAL_NAMES.len() => Some(index),
+        _ => None,
+    };
+    let reason = describe_stop(&solution.stop, &TERMINAL_NAMES);
+    let outcome = classify(
+        &sys,
+        b.criteria,
+        solution.t_final,
+        &solution.x_final,
+        terminal,
+        &reason,
+    );
+    // A contact force limit reached by a jump between two samples is a
+    // contact the model's pairs missed, not a robot stop.
+    let outcome = match outcome {
+        Outcome::ForceLimit {
+            which: "contact", ..
+        } => {
+            let prev = solution
+                .t
+                .iter()
+                .zip(&solution.x)
+                .rev()
+                .find(|(t, _)| **t < solution.t_final);
+            match prev {
+                Some((&t, y)) => {
+                    let before = sys.sample(t, y)?.peak_normal();
+                    if before < 0.1 * b.criteria.contact_force_limit {
+                        Outcome::ContactJump { before, since: t }
+                    } else {
+                        outcome
+                    }
+                }
+                None => outcome,
+            }
+        }
+        other => other,
+    };
+    // Transition events are indexed after the terminal ones.
+    let mut solution = solution;
+    for e in &mut solution.events {
+        e.index = e.index.wrapping_sub(TERMINAL_NAMES.len());
+    }
+    Ok(Run {
+        system: sys,
+        solution,
+        outcome,
+        transitions: what,
+    })
+}
+
+/// The outcome in words.
+pub fn outcome_text(o: &Outcome) -> String {
+    match o {
+        Outcome::Jammed { contacts } => format!("jammed on {contacts}"),
+        Outcome::Wedged { contacts } => format!("wedged on {contacts}"),
+        Outcome::ForceLimit { which, force } => {
+            format!("{which} force limit ({} N)", significant(*force))
+        }
+        Outcome::Stopped { reason } => format!("stopped: {reason}"),
+        Outcome::ContactJump { before, since } => format!(
+            "contact force jumped to the limit from {} N at t = {} s (a contact the model's \
+             pairs miss)",
+            significant(*before),
+            significant(*since)
+        ),
+        other => other.name().to_string(),
+    }
+}

@@ -1,0 +1,12 @@
+//! What the scene kinds of the compliant 3-D peg share (`drop_3d`,
+//! `insert_rcc`, `rotation_assist`, `design_margins`; `docs/insertion.md`):
+//! the `[peg]`, `[wrist]`, `[robot]` and `[criteria]` tables ([`tables`])
+//! and their declared ranges ([`ranges`]), one held-peg insertion run
+//! ([`insertion`]), its time series, events and views ([`output`]) and its
+//! no-jam margins ([`margins`]).
+
+pub mod insertion;
+pub mod margins;
+pub mod output;
+pub mod ranges;
+pub mod tables;

@@ -1,0 +1,427 @@
+//! Outputs of a run of the compliant 3-D peg: the time series CSV (every
+//! contact force and point, the wrist's force, moment and deflection,
+//! depth, tilt, energy balance), the event list CSV and the figures
+//! (forces against time or depth, the contact-state timeline, side and
+//! top views of the peg at each event).
+//!
+//! Time-series columns: `t_s, depth_m, tilt_rad, azimuth_rad, px_m, py_m,
+//! pz_m, points`, then per pair and slot `k = 1, 2` (the pair's points in
+//! order of edge angle; zeros when absent): `<pair>_<k>_N_N` (normal
+//! force), `<pair>_<k>_Ft_N` (friction), `<pair>_<k>_x_m, _y_m, _z_m`
+//! (point); then `wrist_Fx_N, wrist_Fy_N, wrist_Fz_N` (force on the peg,
+//! robot axes), `wrist_Mx_Nm, wrist_My_Nm, wrist_Mz_Nm` (moment about the
+//! compliance centre), `wrist_dx_m, wrist_dy_m, wrist_dz_m` (deflection),
+//! `kinetic_J, balance_J`.
+
+use nalgebra::{SVector, Vector3};
+
+use crate::compliant_peg_3d::Pair;
+use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, Sample, motion, peg_state};
+use crate::compliant_peg_3d::outcome::{Transition, counts, label, two_point_counts};
+use crate::error::RunError;
+use crate::integrate::Solution;
+use crate::output::csv::format_f64;
+use crate::output::names::Part;
+use crate::output::plot::{Figure, Panel, Series, Style};
+use crate::scene::context::RunContext;
+use crate::scene::summary::Metric;
+
+/// Slots per pair in the CSV.
+const SLOTS: usize = 2;
+
+fn header() -> Vec<String> {
+    let mut h: Vec<String> = [
+        "t_s",
+        "depth_m",
+        "tilt_rad",
+        "azimuth_rad",
+        "px_m",
+        "py_m",
+        "pz_m",
+        "points",
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .collect();
+    for p in Pair::ALL {
+        for k in 1..=SLOTS {
+            for q in ["N_N", "Ft_N", "x_m", "y_m", "z_m"] {
+                h.push(format!("{}_{k}_{q}", p.name()));
+            }
+        }
+    }
+    for q in [
+        "wrist_Fx_N",
+        "wrist_Fy_N",
+        "wrist_Fz_N",
+        "wrist_Mx_Nm",
+        "wrist_My_Nm",
+        "wrist_Mz_Nm",
+        "wrist_dx_m",
+        "wrist_dy_m",
+        "wrist_dz_m",
+        "kinetic_J",
+        "balance_J",
+    ] {
+        h.push(q.into());
+    }
+    h
+}
+
+fn row(t: f64, y: &SVector<f64, N_STATE>, s: &Sample) -> Vec<f64> {
+    let mut r = vec![
+        t,
+        s.depth,
+        s.tilt,
+        s.azimuth,
+        y[0],
+        y[1],
+        y[2],
+        s.forces.len() as f64,
+    ];
+    for p in Pair::ALL {
+        let mut of: Vec<_> = s.forces.iter().filter(|f| f.contact.pair == p).collect();
+        of.sort_by(|a, b| a.contact.angle.total_cmp(&b.contact.angle));
+        for k in 0..SLOTS {
+            match of.get(k) {
+                Some(f) => r.extend([
+                    f.normal_force,
+                    f.friction.norm(),
+                    f.contact.point.x,
+                    f.contact.point.y,
+                    f.contact.point.z,
+                ]),
+                None => r.extend([0.0; 5]),
+            }
+        }
+    }
+    match &s.wrist {
+        Some(w) => {
+            r.extend(w.force_robot.iter());
+            r.extend(w.moment_robot.iter());
+            r.extend(w.deflection.iter());
+        }
+        None => r.extend([0.0; 9]),
+    }
+    r.push(s.kinetic);
+    r.push(s.balance);
+    r
+}
+
+/// What the writer found along the run.
+#[derive(Debug, Default)]
+pub struct Peaks {
+    /// Largest contact normal force (N).
+    pub contact_force: f64,
+    /// Largest wrist force (N).
+    pub wrist_force: f64,
+    /// Largest wrist lateral moment about the compliance centre (N·m).
+    pub wrist_moment: f64,
+    /// Largest `|E − E₀|` (J).
+    pub drift: f64,
+    /// Largest of `|W|`, `|W_r|`, `T`, for the drift's scale (J).
+    pub scale: f64,
+}
+
+/// Samples of the run, one per output time.
+pub struct Samples {
+    /// `(t, y, sample)`.
+    pub rows: Vec<(f64, SVector<f64, N_STATE>, Sample)>,
+}
+
+/// Evaluates every output state of `sol`.
+///
+/// # Errors
+/// A Hertz setup error at an output state.
+pub fn samples(sys: &Insertion, sol: &Solution<N_STATE>) -> Result<Samples, RunError> {
+    let mut rows = Vec::with_capacity(sol.t.len());
+    for (&t, y) in sol.t.iter().zip(&sol.x) {
+        let s = sys.sample(t, y)?;
+        rows.push((t, *y, s));
+    }
+    Ok(Samples { rows })
+}
+
+/// Writes `<name>.csv` and returns the peaks.
+///
+/// # Errors
+/// Output errors.
+pub fn write_series(ctx: &RunContext, s: &Samples) -> Result<Peaks, RunError> {
+    let h = header();
+    let hr: Vec<&str> = h.iter().map(String::as_str).collect();
+    let mut csv = ctx.table(Part::Main, &hr)?;
+    let mut peaks = Peaks::default();
+    let e0 = s.rows.first().map_or(0.0, |r| r.2.balance);
+    for (t, y, smp) in &s.rows {
+        csv.row(&row(*t, y, smp))?;
+        peaks.contact_force = peaks.contact_force.max(smp.peak_normal());
+        if let Some(w) = &smp.wrist {
+            peaks.wrist_force = peaks.wrist_force.max(w.force.norm());
+            peaks.wrist_moment = peaks.wrist_moment.max(w.moment_robot.xy().norm());
+        }
+        peaks.drift = peaks.drift.max((smp.balance - e0).abs());
+        peaks.scale = peaks
+            .scale
+            .max(y[13].abs())
+            .max(y[15].abs())
+            .max(smp.kinetic);
+    }
+    csv.finish()?;
+    Ok(peaks)
+}
+
+/// One located contact transition.
+#[derive(Clone, Debug)]
+pub struct EventRow {
+    /// Time (s).
+    pub t: f64,
+    /// State there.
+    pub y: SVector<f64, N_STATE>,
+    /// What changed, e.g. `edge_side 2 -> 1`.
+    pub what: String,
+    /// The contact state after it.
+    pub state: String,
+    /// Whether the state after it is two-point contact (mouth edge on the
+    /// side and rim on the wall,
+    /// [`two_point`](crate::compliant_peg_3d::outcome::two_point)).
+    pub two_point: bool,
+}
+
+/// The contact transitions of `sol` (events with index below
+/// `what.len()`), described. The contact state after each is the start
+/// state's point counts updated by every transition so far, so the list
+/// reads consistently from the first event to the last.
+pub fn transitions(sys: &Insertion, sol: &Solution<N_STATE>, what: &[Transition]) -> Vec<EventRow> {
+    let mut cur = sol
+        .x
+        .first()
+        .map_or_else(|| vec![0; Pair::ALL.len()], |y| counts(&sys.contacts(y)));
+    sol.events
+        .iter()
+        .filter(|e| e.index < what.len())
+        .map(|e| {
+            let (pair, k) = what[e.index];
+            let (from, to) = if e.rising { (k - 1, k) } else { (k, k - 1) };
+            cur[pair] = to;
+            EventRow {
+                t: e.t,
+                y: e.x,
+                what: format!("{} {from} -> {to}", Pair::ALL[pair].name()),
+                state: label(&cur),
+                two_point: two_point_counts(&cur),
+            }
+        })
+        .collect()
+}
+
+/// Writes `<name>_events.csv` (`t_s, transition, contact_state, depth_m,
+/// tilt_rad`).
+///
+/// # Errors
+/// Output errors.
+pub fn write_events(
+    ctx: &RunContext,
+    sys: &Insertion,
+    events: &[EventRow],
+) -> Result<(), RunError> {
+    let mut csv = ctx.table(
+        Part::Sub("events"),
+        &["t_s", "transition", "contact_state", "depth_m", "tilt_rad"],
+    )?;
+    for e in events {
+        let (d, g, _) =
+            crate::compliant_peg_3d::insertion::depth_tilt(&sys.peg.params, &peg_state(&e.y));
+        csv.row_cells(&[
+            &format_f64(e.t),
+            &e.what,
+            &e.state,
+            &format_f64(d),
+            &format_f64(g),
+        ])?;
+    }
+    Ok(csv.finish()?)
+}
+
+/// The contact-state timeline: each pair's point count against time.
+pub fn timeline(s: &Samples) -> Panel {
+    let mut p = Panel::new("Contact state", "t [s]", "points per pair");
+    for (i, pair) in Pair::ALL.iter().enumerate() {
+        let pts: Vec<(f64, f64)> = s
+            .rows
+            .iter()
+            .map(|(t, _, smp)| {
+                (
+                    *t,
+                    smp.forces
+                        .iter()
+                        .filter(|f| f.contact.pair == *pair)
+                        .count() as f64
+                        + 0.05 * i as f64,
+                )
+            })
+            .collect();
+        if pts.iter().any(|p| p.1 >= 1.0) || i == 0 {
+            p = p.with(Series::line(pair.name(), pts).colored(i));
+        }
+    }
+    p
+}
+
+/// Contact normal forces against time, pair by pair and slot.
+pub fn forces_panel(s: &Samples) -> Panel {
+    let mut p = Panel::new("Contact normal forces", "t [s]", "Q [N]");
+    for (i, pair) in Pair::ALL.iter().enumerate() {
+        for k in 0..SLOTS {
+            let pts: Vec<(f64, f64)> = s
+                .rows
+                .iter()
+                .map(|(t, _, smp)| {
+                    let mut of: Vec<_> = smp
+                        .forces
+                        .iter()
+                        .filter(|f| f.contact.pair == *pair)
+                        .collect();
+                    of.sort_by(|a, b| a.contact.angle.total_cmp(&b.contact.angle));
+                    (*t, of.get(k).map_or(0.0, |f| f.normal_force))
+                })
+                .collect();
+            if pts.iter().any(|p| p.1 > 0.0) {
+                let st = if k == 0 { Style::Solid } else { Style::Dashed };
+                p = p.with(
+                    Series::line(format!("{} {}", pair.name(), k + 1), pts)
+                        .styled(st)
+                        .colored(i),
+                );
+            }
+        }
+    }
+    if p.series.is_empty() {
+        p = p.with(Series::line(
+            "no contact",
+            s.rows.iter().map(|(t, ..)| (*t, 0.0)).collect(),
+        ));
+    }
+    p
+}
+
+fn circle(c: Vector3<f64>, u: Vector3<f64>, v: Vector3<f64>, r: f64) -> Vec<Vector3<f64>> {
+    (0..=48)
+        .map(|k| {
+            let a = std::f64::consts::TAU * k as f64 / 48.0;
+            c + (u * a.cos() + v * a.sin()) * r
+        })
+        .collect()
+}
+
+/// The side (x–z) and top (x–y) views of the peg and the hole at state `y`,
+/// titled `title`, in millimetres.
+pub fn views(sys: &Insertion, y: &SVector<f64, N_STATE>, title: &str) -> [Panel; 2] {
+    let prm = &sys.peg.params;
+    let m = motion(&peg_state(y));
+    let a = m.orientation * Vector3::z();
+    let u = m.orientation * Vector3::x();
+    let v = m.orientation * Vector3::y();
+    let r = prm.peg_radius();
+    let tip = m.centre - a * (0.5 * prm.length);
+    let top = m.centre + a * (0.5 * prm.length);
+    let mm = 1e3;
+    let bottom = circle(tip, u, v, r);
+    let upper = circle(top, u, v, r);
+    let big_r = prm.bore_radius();
+    let depth = prm.bore_depth.min(prm.length);
+    let side_outline = |sel: fn(&Vector3<f64>) -> f64| -> Vec<(f64, f64)> {
+        // The silhouette in the x–z plane: the two generators at ±x of the
+        // axis, and the end ellipses.
+        let mut pts: Vec<(f64, f64)> = bottom.iter().map(|p| (p.x * mm, sel(p) * mm)).collect();
+        pts.push((f64::NAN, f64::NAN));
+        pts.extend(upper.iter().map(|p| (p.x * mm, sel(p) * mm)));
+        pts.push((f64::NAN, f64::NAN));
+        for s in [1.0, -1.0] {
+            let w = Vector3::new(a.z, 0.0, -a.x).normalize() * (s * r);
+            let (p0, p1) = (tip + w, top + w);
+            pts.push((p0.x * mm, sel(&p0) * mm));
+            pts.push((p1.x * mm, sel(&p1) * mm));
+            pts.push((f64::NAN, f64::NAN));
+        }
+        pts
+    };
+    let hole_side = vec![
+        (-2.0 * big_r * mm, 0.0),
+        (-big_r * mm, 0.0),
+        (-big_r * mm, -depth * mm),
+        (f64::NAN, f64::NAN),
+        (big_r * mm, -depth * mm),
+        (big_r * mm, 0.0),
+        (2.0 * big_r * mm, 0.0),
+    ];
+    let side = Panel::new(&format!("{title}: side view"), "x [mm]", "z [mm]")
+        .with(Series::line("hole", hole_side).colored(7))
+        .with(Series::line("peg", side_outline(|p| p.z)).colored(0));
+    let hole_top: Vec<(f64, f64)> = circle(Vector3::zeros(), Vector3::x(), Vector3::y(), big_r)
+        .iter()
+        .map(|p| (p.x * mm, p.y * mm))
+        .collect();
+    let mut contacts: Vec<(f64, f64)> = Vec::new();
+    for c in sys.contacts(y) {
+        contacts.push((c.point.x * mm, c.point.y * mm));
+    }
+    let top_view = Panel::new(&format!("{title}: top view"), "x [mm]", "y [mm]")
+        .with(Series::line("hole", hole_top).colored(7))
+        .with(Series::line("tip", bottom.iter().map(|p| (p.x * mm, p.y * mm)).collect()).colored(0))
+        .with(
+            Series::line("top", upper.iter().map(|p| (p.x * mm, p.y * mm)).collect())
+                .styled(Style::Dashed)
+                .colored(0),
+        )
+        .with(
+            Series::line("contacts", contacts)
+                .styled(Style::Markers)
+                .colored(1),
+        );
+    [side, top_view]
+}
+
+/// Writes `<name>_views.svg`: side and top views at the start, at each
+/// event (at most `max` of them) and at the end.
+///
+/// # Errors
+/// Output errors.
+pub fn write_views(
+    ctx: &RunContext,
+    sys: &Insertion,
+    first: (f64, &SVector<f64, N_STATE>),
+    events: &[EventRow],
+    last: (f64, &SVector<f64, N_STATE>),
+    max: usize,
+) -> Result<(), RunError> {
+    let mut fig = Figure::new();
+    let mut add = |t: f64, y: &SVector<f64, N_STATE>, what: &str| {
+        let [a, b] = views(
+            sys,
+            y,
+            &format!("t = {} s, {what}", crate::scene::numbers::significant(t)),
+        );
+        fig.panels.push(a);
+        fig.panels.push(b);
+    };
+    add(first.0, first.1, "start");
+    for e in events.iter().take(max) {
+        add(e.t, &e.y, &e.what);
+    }
+    add(last.0, last.1, "end");
+    Ok(ctx.figure(Part::Sub("views"), &fig)?)
+}
+
+/// The run's common metrics.
+pub fn metrics(peaks: &Peaks) -> Vec<Metric> {
+    vec![
+        Metric::new("peak contact normal force", peaks.contact_force, "N"),
+        Metric::new("peak wrist force", peaks.wrist_force, "N"),
+        Metric::new("peak wrist lateral moment", peaks.wrist_moment, "N m"),
+        Metric::new(
+            "max |E - E0| / max(|W|, |W_r|, T)",
+            peaks.drift / peaks.scale.max(1e-300),
+            "",
+        ),
+    ]
+}

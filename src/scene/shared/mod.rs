@@ -1,0 +1,16 @@
+//! Tables and code that several scene kinds share; a kind imports from
+//! here, never from another kind.
+//!
+//! - [`material`]: the material table (compliant planar and 3-D pegs);
+//! - [`rigid_peg`]: the `[peg]` table of the rigid three-point peg kinds
+//!   (`fig9`, `align_forward`) and their ranges;
+//! - [`pendulum`]: the ranges of the textbook pendulum kinds;
+//! - [`compliant_peg_3d`]: the `[peg]`, `[wrist]`, `[robot]` and
+//!   `[criteria]` tables of the compliant 3-D peg kinds (`drop_3d`,
+//!   `insert_rcc`, `rotation_assist`, `design_margins`), their ranges, one
+//!   held-peg insertion run, its outputs and margins.
+
+pub mod compliant_peg_3d;
+pub mod material;
+pub mod pendulum;
+pub mod rigid_peg;
