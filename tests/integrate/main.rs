@@ -1,0 +1,10 @@
+//! The integrators: tableaux and order conditions, events on dense output, the
+//! Rosenbrock methods on stiff problems, no allocation on the hot path, hostile
+//! options.
+
+mod events;
+mod hostile;
+mod integrators;
+mod no_alloc;
+mod rodas4;
+mod stiff;

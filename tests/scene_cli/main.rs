@@ -1,0 +1,6 @@
+//! The `pegdyn` command line and scene files: every subcommand, refused scenes
+//! with the field named, and fuzzed scene files.
+
+mod cli;
+mod fuzz;
+mod hostile_scenes;
