@@ -1,4 +1,4 @@
-//! Runs the scene fuzz targets of `tests/fuzz_scenes.rs` for a given time
+//! Runs the scene fuzz targets of `tests/scene_cli/fuzz.rs` for a given time
 //! instead of a fixed case count, and reports cases run and findings.
 //!
 //! ```text

@@ -198,7 +198,7 @@ pub fn rigid_forward() -> Problem<4, RigidSystem> {
 }
 
 /// The frictionless Fig. 9 peg rocking on three points for 1 s (released
-/// at γ = 1.2 rad with ψ̇ = 2 1/s, no loads; `tests/rigid_forward.rs`
+/// at γ = 1.2 rad with ψ̇ = 2 1/s, no loads; `tests/rigid_peg/forward.rs`
 /// checks that it conserves energy and keeps all three contacts).
 pub fn rigid_rocking() -> Problem<4, RigidSystem> {
     let model = ForwardModel::new(

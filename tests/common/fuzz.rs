@@ -1,4 +1,4 @@
-//! Scene fuzzing shared by `tests/fuzz_scenes.rs` (a bounded case count in
+//! Scene fuzzing shared by `tests/scene_cli/fuzz.rs` (a bounded case count in
 //! CI) and `examples/fuzz_scenes.rs` (runs for a given time): generators of
 //! hostile scene texts and the two properties every scene must satisfy.
 //!

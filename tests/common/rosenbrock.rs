@@ -1,5 +1,5 @@
-//! Shared by the Rosenbrock tests (`tests/stiff.rs` for RODAS3,
-//! `tests/rodas4.rs` for RODAS4), included with `#[path]`: the linear
+//! Shared by the Rosenbrock tests (`tests/integrate/stiff.rs` for RODAS3,
+//! `tests/integrate/rodas4.rs` for RODAS4): the linear
 //! stability function of a tableau, its stiff-accuracy defect, a
 //! non-autonomous scalar problem with a closed-form solution, and fixed-step
 //! options.

@@ -141,7 +141,7 @@ fn elastic_law_slides_at_the_coulomb_force() {
 
 #[test]
 fn energy_balance_closes_with_the_stored_tangential_energy() {
-    // The rocking two-point start of tests/compliant_energy.rs.
+    // The rocking two-point start of tests/compliant_peg/energy.rs.
     let p = params(0.3, FrictionLaw::Elastic, 1e-5);
     let load = Load {
         axial: 20.0,

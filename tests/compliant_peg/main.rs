@@ -2,6 +2,9 @@
 //! balance, friction laws, stiff integration, the insertion scene, and the
 //! Hertz kernels under hostile inputs.
 
+#[path = "../common/mod.rs"]
+mod common;
+
 mod elastic_friction;
 mod energy;
 mod geometry;

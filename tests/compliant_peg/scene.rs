@@ -2,8 +2,7 @@
 //! tilted two-point start, writes the CSV/SVG with the documented columns and
 //! keeps the energy balance; bad values are refused naming the TOML field.
 
-#[path = "../common/cli.rs"]
-mod cli;
+use crate::common::cli;
 
 use pegdyn::scene;
 use std::path::Path;

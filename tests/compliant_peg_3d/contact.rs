@@ -2,11 +2,9 @@
 //! dense samplings of the edge circles, the gradient against the force
 //! direction and lever arm, and the energy balance of the dynamics.
 
-#[path = "../common/peg3d.rs"]
-mod peg3d;
+use crate::common::peg3d;
 
-#[path = "../common/rng.rs"]
-mod rng;
+use crate::common::rng;
 
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 use peg3d::{fig9, orientation, rim_on_mouth, tight_dopri5};

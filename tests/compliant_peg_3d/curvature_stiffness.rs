@@ -2,8 +2,7 @@
 //! (`HertzMode::Curvature`): the term `−(2/5) δ^{5/2} ∂k/∂(pose)` against
 //! central differences of `k` and of the contact potential over the pose.
 
-#[path = "../common/peg3d.rs"]
-mod peg3d;
+use crate::common::peg3d;
 
 use nalgebra::{Quaternion, SVector, UnitQuaternion, Vector3};
 use peg3d::{orientation, rim_on_mouth};

@@ -3,8 +3,7 @@
 //! central finite differences of the right-hand side, at contact states of
 //! every pair, with damping, friction, spin and a subtracted col.
 
-#[path = "../common/peg3d.rs"]
-mod peg3d;
+use crate::common::peg3d;
 
 use nalgebra::{SMatrix, SVector, UnitQuaternion, Vector3};
 use peg3d::orientation;

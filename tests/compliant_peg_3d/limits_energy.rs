@@ -3,11 +3,10 @@
 //! velocity rattles between the mouth edge (pair `edge_side`) and the bore
 //! wall (`rim_wall`) on alternating sides while it sinks under gravity and
 //! constant applied loads; kicked out of the plane of the lean, it rocks
-//! and presses the bore wall in every direction. (`tests/compliant_peg_3d.rs`
+//! and presses the bore wall in every direction. (`tests/compliant_peg_3d/contact.rs`
 //! checks the balance for a landing on the top face, one contact.)
 
-#[path = "../common/peg3d.rs"]
-mod peg3d;
+use crate::common::peg3d;
 
 use nalgebra::{Quaternion, SVector, UnitQuaternion, Vector3};
 use peg3d::tight_dopri5;
@@ -56,7 +55,7 @@ fn start(prm: &Peg3dParams, out_of_plane: f64) -> SVector<f64, 15> {
 /// The deepest point of the peg's side in the bore wall (m, `|k_xy| − R`,
 /// negative when clear): over 2000 generators, at the two ends of each
 /// one's part in the bore (the depth along a generator is convex in the
-/// height, `tests/compliant_peg_3d_side_wall.rs`).
+/// height, `tests/compliant_peg_3d/side_wall.rs`).
 fn side_depth(prm: &Peg3dParams, y: &SVector<f64, 15>) -> f64 {
     let x = Peg3d::pose(y);
     let q = UnitQuaternion::from_quaternion(Quaternion::new(x[3], x[4], x[5], x[6]));

@@ -13,8 +13,7 @@
 //! surfaces (half the penetration further along the normal) in the 3-D
 //! model; it vanishes without friction.
 
-#[path = "../common/peg3d.rs"]
-mod peg3d;
+use crate::common::peg3d;
 
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 use peg3d::{Follower, pair_forces};

@@ -12,8 +12,7 @@
 //! both the fillets' and the compliance's departures from the rigid
 //! geometry vanish together.
 
-#[path = "../common/prescribed_rigid.rs"]
-mod prescribed_rigid;
+use crate::common::prescribed_rigid;
 
 use pegdyn::compliant_peg_3d::Peg3dParams;
 use pegdyn::compliant_peg_3d::prescribed::{Motion, PrescribedPeg};

@@ -1,14 +1,13 @@
 //! The compliant 3-D peg against the quasi-static two-point analysis of
 //! jamming (`pegdyn::jamming`): confined to the plane (the setup of
-//! `tests/compliant_peg_3d_limits_planar.rs`: loads fixed in the peg's
+//! `tests/compliant_peg_3d/limits_planar.rs`: loads fixed in the peg's
 //! frame applied through the wrench input, no gravity, one fixed Hertz
 //! stiffness), its contact forces while sliding in two-point contact under
 //! loads on the two-point sliding line approach the quasi-static solution
 //! (paper Eq. 52), and its jam/insert outcomes on a coarse grid of load
 //! ratios agree with the exact parallelogram.
 
-#[path = "../common/peg3d.rs"]
-mod peg3d;
+use crate::common::peg3d;
 
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 use peg3d::{Follower, pair_forces};

@@ -2,6 +2,9 @@
 //! seating, the side wall, and its limits (rigid, planar, quasi-static,
 //! energy).
 
+#[path = "../common/mod.rs"]
+mod common;
+
 mod contact;
 mod curvature_stiffness;
 mod jacobian;

@@ -7,8 +7,7 @@
 //! on the top face, a tilted peg rocking to rest flat with a continuous
 //! force, and the energy balance through the hand-over.
 
-#[path = "../common/peg3d.rs"]
-mod peg3d;
+use crate::common::peg3d;
 
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 use peg3d::{fig9, orientation, tight_dopri5};

@@ -11,11 +11,9 @@
 //! where a peg tilted in any direction and spun about its axis presses its
 //! side against the wall, and check that an accepted contact carries it.
 
-#[path = "../common/peg3d.rs"]
-mod peg3d;
+use crate::common::peg3d;
 
-#[path = "../common/rng.rs"]
-mod rng;
+use crate::common::rng;
 
 use nalgebra::{UnitQuaternion, Vector3};
 use peg3d::{fig9, orientation};

@@ -8,8 +8,7 @@
 //! value, which itself cancels, to 1e-10). The naive form must fail the stated bound (so the
 //! case is hard) and the stable form must meet it.
 
-#[path = "../common/mod.rs"]
-mod common;
+use crate::common;
 
 use common::{eval_dd, eval_f64, ulps};
 use pegdyn::scalar::Dd;

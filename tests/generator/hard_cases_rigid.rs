@@ -4,7 +4,7 @@
 //! frictionless simulation (energy and contact-constraint drift).
 //! The generated rigid model (`pegdyn::generated::rigid_peg*`) is measured
 //! near γ0 by `pegdyn accuracy` (grid in `src/accuracy/grid.rs`, asserted
-//! in `tests/accuracy_report.rs`).
+//! in `tests/generator/accuracy_report.rs`).
 
 use nalgebra::{SVector, Vector2, Vector4};
 use pegdyn::accuracy::ulp;

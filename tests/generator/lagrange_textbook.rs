@@ -18,8 +18,7 @@
 use nalgebra::{DMatrix, SVector};
 use pegdyn::generated::{cart_pole, double_pendulum as dp, pendulum};
 
-#[path = "../common/mod.rs"]
-mod common;
+use crate::common;
 use common::Rng;
 
 const TRIALS: usize = 100;

@@ -4,7 +4,7 @@
 //! with `docs/generated/<module>.rs` and the report with
 //! `docs/generated/codegen_report.txt`. A difference fails the test with
 //! the list of stale files; run
-//! `PEGDYN_BLESS=1 cargo test --test generated_snapshot` to rewrite them,
+//! `PEGDYN_BLESS=1 cargo test --test generator snapshot::` to rewrite them,
 //! then review the diff like any other change. Also checks that the code
 //! compiled into `pegdyn::generated` is the code the generator emits now.
 
@@ -26,7 +26,7 @@ fn expected(generated: &Generated) -> Vec<(String, String)> {
         .map(|m| {
             let header = format!(
                 "// @generated readable copy of `pegdyn::generated::{}` — do not edit.\n\
-                 // Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot\n\n",
+                 // Regenerate: PEGDYN_BLESS=1 cargo test --test generator snapshot::\n\n",
                 m.name
             );
             (format!("{}.rs", m.name), header + &m.code)
@@ -78,7 +78,7 @@ fn docs_generated_is_current() {
     assert!(
         stale.is_empty(),
         "docs/generated/ is out of date: {}.\nIf the change is intended, run \
-         `PEGDYN_BLESS=1 cargo test --test generated_snapshot` and review the diff.",
+         `PEGDYN_BLESS=1 cargo test --test generator snapshot::` and review the diff.",
         stale.join(", ")
     );
 }

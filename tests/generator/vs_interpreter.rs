@@ -21,8 +21,7 @@ use pegdyn_equations::graph::SymKind;
 use pegdyn_equations::model::{FnSpec, Module};
 use pegdyn_equations::{Graph, models};
 
-#[path = "../common/mod.rs"]
-mod common;
+use crate::common;
 use common::Rng;
 
 #[allow(clippy::all, dead_code)]

@@ -2,8 +2,7 @@
 //! `design_margins` scene kind run end to end and refused on bad `[grid]`
 //! fields with the field named (`docs/insertion.md`, "Design margins").
 
-#[path = "../common/cli.rs"]
-mod cli;
+use crate::common::cli;
 
 use pegdyn::compliant_peg_3d::outcome::Outcome;
 use pegdyn::scene::Progress;

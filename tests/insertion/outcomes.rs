@@ -3,11 +3,9 @@
 //! `drop_3d`, `insert_rcc` and `rotation_assist` scene kinds parsed,
 //! refused on bad fields with the field named, and run end to end.
 
-#[path = "../common/cli.rs"]
-mod cli;
+use crate::common::cli;
 
-#[path = "../common/rcc.rs"]
-mod rcc;
+use crate::common::rcc;
 use pegdyn::compliant_peg_3d::outcome::Outcome;
 use pegdyn::scene::Progress;
 use pegdyn::scene::insert_3d::rcc::{RccScene, run_one};

@@ -5,8 +5,7 @@
 //! the tilt) under the wrist's force and gravity, at every depth, to a
 //! tolerance that shrinks as the descent slows.
 
-#[path = "../common/rcc.rs"]
-mod rcc;
+use crate::common::rcc;
 use nalgebra::Vector3;
 use pegdyn::compliant_peg_3d::Pair;
 use pegdyn::jamming::forces::sliding_contact_forces;

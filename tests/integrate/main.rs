@@ -2,6 +2,9 @@
 //! Rosenbrock methods on stiff problems, no allocation on the hot path, hostile
 //! options.
 
+#[path = "../common/mod.rs"]
+mod common;
+
 mod events;
 mod hostile;
 mod integrators;

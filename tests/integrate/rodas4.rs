@@ -8,8 +8,7 @@ use pegdyn::integrate::tableau::RosenbrockTableau;
 use pegdyn::integrate::{Direction, Event, Method, Options, Solver, StopReason, solve};
 use pegdyn::reference_problems::{Pendulum, VanDerPol};
 
-#[path = "../common/rosenbrock.rs"]
-mod rosenbrock;
+use crate::common::rosenbrock;
 use rosenbrock::{Modulated, fixed_step, stability, stiff_accuracy_defect};
 
 const S: usize = 6;

@@ -10,8 +10,7 @@ use pegdyn::integrate::{Direction, Event, Method, Options, Solver, StopReason, s
 use pegdyn::reference_problems::{HarmonicOscillator, Pendulum, StiffLinear, VanDerPol};
 use pegdyn::system::OdeSystem;
 
-#[path = "../common/rosenbrock.rs"]
-mod rosenbrock;
+use crate::common::rosenbrock;
 use rosenbrock::{Modulated, fixed_step, stability, stiff_accuracy_defect};
 
 /// Rosenbrock order conditions (Hairer & Wanner II, §IV.7, Table 7.1) with

@@ -4,8 +4,7 @@
 //! class boundary matches the exact parallelogram within the grid spacing.
 //! The scene's `[sweep]` writes its CSV and SVG.
 
-#[path = "../common/cli.rs"]
-mod cli;
+use crate::common::cli;
 
 use std::path::PathBuf;
 

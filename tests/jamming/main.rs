@@ -1,6 +1,9 @@
 //! Jamming and wedging: diagrams, the quasi-static and dynamic analyses, the
 //! 3-D jamming space, the parallel sweep and the jamming scene.
 
+#[path = "../common/mod.rs"]
+mod common;
+
 mod diagram;
 mod dynamic;
 mod input;

@@ -27,7 +27,7 @@ fn read_csv(path: &std::path::Path) -> (String, Vec<Vec<String>>) {
 #[test]
 fn scene_file_writes_corners_wedging_and_svg() {
     // the analytic part of scenes/jamming.toml (its [sweep] is tested in
-    // tests/jamming_dynamic.rs on a coarser grid)
+    // tests/jamming/dynamic.rs on a coarser grid)
     let path = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenes/jamming.toml");
     let text = std::fs::read_to_string(path).unwrap();
     let analytic = text.split("[sweep]").next().unwrap();

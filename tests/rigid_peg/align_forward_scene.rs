@@ -4,8 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
-#[path = "../common/cli.rs"]
-mod cli_common;
+use crate::common::cli as cli_common;
 use cli_common::{fresh_dir, pegdyn};
 
 fn dir(test: &str) -> PathBuf {

@@ -17,8 +17,7 @@ use pegdyn::rigid_peg::dynamics::{
 };
 use pegdyn::rigid_peg::kinematics::Pose;
 
-#[path = "../common/mod.rs"]
-mod common;
+use crate::common;
 use common::Rng;
 use common::rigid::{gammas, loads, planar_loads};
 

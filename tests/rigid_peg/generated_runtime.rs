@@ -15,8 +15,7 @@ use pegdyn::rigid_peg::kinematics::Pose;
 use pegdyn::rigid_peg::prescribed::{reactions, reactions_hand};
 use pegdyn::rigid_peg::{Loads, PegParams, RigidError};
 
-#[path = "../common/mod.rs"]
-mod common;
+use crate::common;
 use common::rigid::{gammas, loads, planar_loads};
 
 fn directions(v: Variant, p: &PegParams, q: Vector2<f64>, qd: Vector2<f64>) -> [Vector3<f64>; 3] {

@@ -5,8 +5,7 @@
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
-#[path = "../common/cli.rs"]
-mod cli_common;
+use crate::common::cli as cli_common;
 use cli_common::pegdyn;
 
 fn fixture(name: &str) -> String {

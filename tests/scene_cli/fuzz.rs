@@ -2,8 +2,7 @@
 //! count (`PEGDYN_FUZZ_CASES`, default small enough for CI). For long runs
 //! use `examples/fuzz_scenes.rs`; see `docs/fuzzing.md`.
 
-#[path = "../common/fuzz.rs"]
-mod fuzz;
+use crate::common::fuzz;
 
 use proptest::prelude::*;
 

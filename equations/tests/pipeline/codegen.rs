@@ -1,7 +1,7 @@
 //! The code generator: what it emits for each canonical form, what
 //! verification rejects, identifier sanitizing, determinism and
 //! write-only-when-changed. (That the emitted code computes what the
-//! interpreter computes is `tests/generated_vs_interpreter.rs` at the
+//! interpreter computes is `tests/generator/vs_interpreter.rs` at the
 //! workspace root, which compiles it.)
 
 use pegdyn_equations::codegen::schedule::snake_case;
