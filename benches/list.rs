@@ -3,7 +3,7 @@
 //! per function: `for_each_function!(callback!(context…))` expands to
 //! `callback!(context…, model::function(inputs…) [=> hand])` for each. Used
 //! by the criterion groups (`benches/functions.rs`), the instruction counts
-//! (`examples/instr_count.rs`) and `tests/generator/hand_forms.rs`.
+//! (`benches/tools/instr_count.rs`) and `tests/generator/hand_forms.rs`.
 //!
 //! The functions come from the generator (`for_each_generated!`, written
 //! by build.rs beside the registry `pegdyn::generated::registry`), so a new

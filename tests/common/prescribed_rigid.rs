@@ -2,7 +2,7 @@
 //! Fig. 9 motion run on `pegdyn::compliant_peg_3d::prescribed`, compared
 //! with the rigid model's reactions and contact points. Shared by
 //! `tests/compliant_peg_3d/limits_rigid.rs` and (through `#[path]`)
-//! `examples/rigid_limit_table.rs`.
+//! `benches/tools/rigid_limit_table.rs`.
 
 #![allow(dead_code)]
 

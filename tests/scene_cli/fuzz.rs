@@ -1,6 +1,6 @@
 //! Fuzz targets for scenes, run as property tests with a bounded case
 //! count (`PEGDYN_FUZZ_CASES`, default small enough for CI). For long runs
-//! use `examples/fuzz_scenes.rs`; see `docs/fuzzing.md`.
+//! use `benches/tools/fuzz_scenes.rs`; see `docs/fuzzing.md`.
 
 use crate::common::fuzz;
 

@@ -2,9 +2,9 @@
 //! test, not a bench: the Python script runs it and compares).
 //!
 //! ```sh
-//! cargo run --release --example rigid_peer_values -- values     < inputs.txt
-//! cargo run --release --example rigid_peer_values -- time 200000 9 < one_input.txt
-//! cargo run --release --example rigid_peer_values -- integrate 9 1e-6 1e-8 1e-10
+//! cargo run --release -p pegdyn-benches --bin rigid_peer_values -- values     < inputs.txt
+//! cargo run --release -p pegdyn-benches --bin rigid_peer_values -- time 200000 9 < one_input.txt
+//! cargo run --release -p pegdyn-benches --bin rigid_peer_values -- integrate 9 1e-6 1e-8 1e-10
 //! ```
 //!
 //! An input line holds 25 numbers: x = (γ, ψ, γ̇, ψ̇), p = (D, d, H, m, g,
@@ -22,7 +22,7 @@
 //! - `integrate REPEATS RTOL...`: `scenes/align_forward.toml` without events
 //!   (`PegSystem`, exact Coulomb) from its initial state to t = 12 ms (before
 //!   its lift-off of K at 12.98 ms) by DOPRI5 at each rtol (atol = 1e-2 rtol,
-//!   as `examples/work_precision`), plus a reference at rtol 1e-14: final
+//!   as `benches/tools/work_precision`), plus a reference at rtol 1e-14: final
 //!   state, counters and median wall time (ms) per line.
 
 use std::hint::black_box;
@@ -174,7 +174,7 @@ fn time(text: &str, calls: usize, repeats: usize) -> Result<(), String> {
 }
 
 fn integrate(repeats: usize, rtols: &[f64]) -> Result<(), String> {
-    let text = include_str!("../scenes/align_forward.toml");
+    let text = include_str!("../../scenes/align_forward.toml");
     let scene: AlignForwardScene = Document::parse(text)
         .and_then(|d| d.body())
         .map_err(|e| e.to_string())?;
@@ -199,7 +199,7 @@ fn integrate(repeats: usize, rtols: &[f64]) -> Result<(), String> {
         let sol = run(rtol).map_err(|e| e.to_string())?;
         let mut times: Vec<f64> = (0..repeats.max(1))
             .map(|_| {
-                // Batches of ≥ 5 ms, as examples/work_precision.
+                // Batches of ≥ 5 ms, as benches/tools/work_precision.
                 let start = Instant::now();
                 let mut n = 0usize;
                 while n == 0 || start.elapsed().as_secs_f64() < 5e-3 {

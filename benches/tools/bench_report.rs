@@ -1,9 +1,9 @@
 //! Turns criterion's results into the tables of `docs/BENCHMARKS.md`.
 //!
 //! ```sh
-//! cargo bench --bench lib                        # writes target/criterion
+//! cargo bench -p pegdyn-benches --bench lib                        # writes target/criterion
 //! cp -r target/criterion /tmp/run1               # … repeat for run2, run3
-//! cargo run --release --example bench_report -- /tmp/run1 /tmp/run2 /tmp/run3
+//! cargo run --release -p pegdyn-benches --bin bench_report -- /tmp/run1 /tmp/run2 /tmp/run3
 //! ```
 //!
 //! For every bench id it takes criterion's median time per iteration from

@@ -4,7 +4,7 @@
 //! (`stiffness::gradient`), and the right-hand side with a fixed
 //! stiffness, at a rim on the top
 //! face, a rim on the mouth fillet and a peg clear of every surface. Run
-//! with `cargo run --release --example curvature_stiffness_cost` and state
+//! with `cargo run --release -p pegdyn-benches --bin curvature_stiffness_cost` and state
 //! the machine's load beside the figures.
 
 use nalgebra::{SVector, Unit, UnitQuaternion, Vector3};

@@ -7,7 +7,7 @@
 //! (regularized Coulomb, `v_s = 1e-5 m/s`; elastic: Hertz–Mindlin capped by
 //! Coulomb), each against its own reference.
 //!
-//! Run: `cargo run --release --example compliant_run_cost`.
+//! Run: `cargo run --release -p pegdyn-benches --bin compliant_run_cost`.
 //! Prints `law,case,method,rtol,t_sim_s,wall_per_sim_s,steps,error_m,
 //! end_time_error_s`: the error is the largest position difference (x, z,
 //! r·θ) at the end against RODAS4 at rtol 1e-10, and the difference of the

@@ -4,7 +4,7 @@
 //! rigid forward scene (`rigid_events.rs`).
 //!
 //! ```sh
-//! cargo run --release --example work_precision -- --out target/work_precision
+//! cargo run --release -p pegdyn-benches --bin work_precision -- --out target/work_precision
 //! ```
 //!
 //! For each problem and each method setting (RK4 at fixed steps, DOPRI5 at

@@ -16,13 +16,13 @@
 //! (loop, dynamic call, printing) subtracted.
 
 #[allow(dead_code)]
-#[path = "../benches/cases.rs"]
+#[path = "../cases.rs"]
 mod cases;
 #[allow(dead_code)]
-#[path = "../benches/hand.rs"]
+#[path = "../hand.rs"]
 mod hand;
 #[macro_use]
-#[path = "../benches/list.rs"]
+#[path = "../list.rs"]
 mod list;
 
 use std::collections::BTreeMap;

@@ -7,10 +7,10 @@
 //! See `docs/compliant-peg-3d.md`.
 //!
 //! ```text
-//! cargo run --example rigid_limit_table
+//! cargo run -p pegdyn-benches --bin rigid_limit_table
 //! ```
 
-#[path = "../tests/common/prescribed_rigid.rs"]
+#[path = "../../tests/common/prescribed_rigid.rs"]
 mod prescribed_rigid;
 
 use prescribed_rigid::{fillet, grid, run, worst};

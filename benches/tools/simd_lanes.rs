@@ -6,7 +6,7 @@
 //! regularized (`compliant_peg`) and elastic (`compliant_peg_elastic`)
 //! models at the jamming sweep's two-point start under four loads.
 //!
-//! Run: `cargo run --release --example simd_lanes`.
+//! Run: `cargo run --release -p pegdyn-benches --bin simd_lanes`.
 
 use std::hint::black_box;
 use std::ops::{Add, Div, Mul, Neg, Sub};

@@ -110,7 +110,7 @@ pub fn double_pendulum(t_end: f64) -> Problem<4, DoublePendulumSystem> {
 /// The model, loads and start of `scenes/insert_compliant.toml`, read from
 /// the shipped file so that the diagrams follow it.
 fn shipped_insertion() -> pegdyn::scene::insert_compliant::Built {
-    let text = include_str!("../../scenes/insert_compliant.toml");
+    let text = include_str!("../../../scenes/insert_compliant.toml");
     let scene: pegdyn::scene::insert_compliant::InsertCompliantScene =
         pegdyn::scene::document::Document::parse(text)
             .and_then(|d| d.body())
@@ -164,7 +164,7 @@ impl OdeSystem<4> for RigidSystem {
 
 /// `scenes/align_forward.toml` and its forward model.
 pub fn align_forward_scene() -> (AlignForwardScene, ForwardModel) {
-    let text = include_str!("../../scenes/align_forward.toml");
+    let text = include_str!("../../../scenes/align_forward.toml");
     let scene: AlignForwardScene = Document::parse(text)
         .and_then(|d| d.body())
         .expect("shipped scene parses");

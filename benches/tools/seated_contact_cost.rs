@@ -2,8 +2,8 @@
 //! the aligned peg seated on the bore bottom (the ring alone), tilted
 //! 2 mrad (ring and point in the hand-over), tilted 5 mrad (the point
 //! alone), and a peg 20 mm above the bore bottom at 5 mrad (the ring's
-//! test rejects it at once). Run with `cargo run --release --example
-//! seated_contact_cost` and state the machine's load beside the figures.
+//! test rejects it at once). Run with `cargo run --release -p pegdyn-benches
+//! --bin seated_contact_cost` and state the machine's load beside the figures.
 
 use nalgebra::{Unit, UnitQuaternion, Vector3};
 use pegdyn::compliant_peg_3d::{Peg3d, Peg3dParams, pose_state};

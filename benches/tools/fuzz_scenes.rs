@@ -2,15 +2,15 @@
 //! instead of a fixed case count, and reports cases run and findings.
 //!
 //! ```text
-//! cargo run --release --example fuzz_scenes -- parse 10    # target, minutes
-//! cargo run --release --example fuzz_scenes -- run 10
+//! cargo run --release -p pegdyn-benches --bin fuzz_scenes -- parse 10    # target, minutes
+//! cargo run --release -p pegdyn-benches --bin fuzz_scenes -- run 10
 //! ```
 //!
 //! A panic, a finding of the target's property, or a case that takes more
 //! than 120 s (a hang) is printed with the scene text; the exit status is 1
 //! if anything was found. See `docs/fuzzing.md`.
 
-#[path = "../tests/common/fuzz.rs"]
+#[path = "../../tests/common/fuzz.rs"]
 mod fuzz;
 
 use std::sync::atomic::{AtomicU64, Ordering};
