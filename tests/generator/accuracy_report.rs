@@ -3,7 +3,7 @@
 //! `docs/ACCURACY.md` reports it.
 
 use pegdyn::accuracy::{entry_error, grid, measure, measure_function, ulp};
-use pegdyn::generated::registry::FUNCTIONS;
+use pegdyn::generated::registry::DD_FUNCTIONS;
 use pegdyn::scalar::Dd;
 
 /// ulp(1) = 2⁻⁵², an error of one ulp is one ulp, NaN against a finite
@@ -30,13 +30,13 @@ fn the_measure_itself() {
 /// NaN or an infinity where the double-double evaluation is finite.
 #[test]
 fn every_module_has_a_grid_and_no_silent_non_finite() {
-    let report = measure(&FUNCTIONS, None).expect("every grid point names every input");
+    let report = measure(&DD_FUNCTIONS, None).expect("every grid point names every input");
     assert!(
         report.skipped.is_empty(),
         "no grid for {:?}",
         report.skipped
     );
-    assert_eq!(report.functions.len(), FUNCTIONS.len());
+    assert_eq!(report.functions.len(), DD_FUNCTIONS.len());
     for f in &report.functions {
         assert_eq!(f.non_finite, 0, "{}", f.path);
         // Normwise (per output) error at most 1e-8 of the output's largest
@@ -63,11 +63,12 @@ fn compliant_peg_at_zero_tilt_is_accurate_to_a_few_ulps() {
         .into_iter()
         .filter(|p| p.label.contains("theta=0e0"))
         .collect();
-    for f in FUNCTIONS
+    for dd in DD_FUNCTIONS
         .iter()
-        .filter(|f| matches!(f.module, "compliant_peg" | "compliant_peg_lean"))
+        .filter(|dd| matches!(dd.function.module, "compliant_peg" | "compliant_peg_lean"))
     {
-        let a = measure_function(f, &points).expect("inputs");
+        let f = &dd.function;
+        let a = measure_function(dd, &points).expect("inputs");
         let u = f64::EPSILON / 2.0;
         match f.name {
             "contacts" => assert!(
@@ -98,11 +99,12 @@ fn compliant_peg_at_zero_tilt_is_accurate_to_a_few_ulps() {
 fn generated_rigid_peg_near_gamma0() {
     let points = grid::points("rigid_peg").expect("grid");
     let u = f64::EPSILON / 2.0;
-    for f in FUNCTIONS
+    for dd in DD_FUNCTIONS
         .iter()
-        .filter(|f| f.module.starts_with("rigid_peg"))
+        .filter(|dd| dd.function.module.starts_with("rigid_peg"))
     {
-        let a = measure_function(f, &points).expect("inputs");
+        let f = &dd.function;
+        let a = measure_function(dd, &points).expect("inputs");
         if f.name == "geometry" {
             assert!(
                 a.max_ulps <= 64.0,
