@@ -1,5 +1,4 @@
-//! Shared by the Rosenbrock tests (`tests/integrate/stiff.rs` for RODAS3,
-//! `tests/integrate/rodas4.rs` for RODAS4): the linear
+//! Used by the Rosenbrock table (`tests/integrate/rosenbrock.rs`): the linear
 //! stability function of a tableau, its stiff-accuracy defect, a
 //! non-autonomous scalar problem with a closed-form solution, and fixed-step
 //! options.

@@ -9,5 +9,5 @@ mod events;
 mod hostile;
 mod integrators;
 mod no_alloc;
-mod rodas4;
+mod rosenbrock;
 mod stiff;
