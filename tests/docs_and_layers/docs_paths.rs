@@ -1,6 +1,7 @@
 //! Docs that drift from the tree: every repository path that README.md or a
 //! page under docs/ names in backticks (`src/...`, `docs/...`, `scenes/...`,
-//! `tests/...`, `benches/...`, `examples/...`, `equations/...`) must exist.
+//! `tests/...`, `benches/...`, `examples/...`, `equations/...`, `python/...`)
+//! must exist.
 //!
 //! A path may end in `/` (a folder) or carry a `::item` or `#anchor` suffix
 //! (only the file part is checked). Glob-like names (`*`, `{`, `<`) and
@@ -9,7 +10,7 @@
 use std::fs;
 use std::path::{Path, PathBuf};
 
-const ROOTS: [&str; 7] = [
+const ROOTS: [&str; 8] = [
     "src/",
     "docs/",
     "scenes/",
@@ -17,6 +18,7 @@ const ROOTS: [&str; 7] = [
     "benches/",
     "examples/",
     "equations/",
+    "python/",
 ];
 
 fn manifest_dir() -> PathBuf {

@@ -11,8 +11,7 @@
 //! counted; elsewhere the symbolic derivative must match `R2` to
 //! `1e-6·max(1, |R2|)`.
 
-#[path = "../common/mod.rs"]
-mod common;
+use crate::common;
 
 use common::{Point, Tree, build, point, reference, tree};
 use pegdyn_equations::eval::Tape;

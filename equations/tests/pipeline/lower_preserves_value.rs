@@ -12,8 +12,7 @@
 //!    the canonical value under 1e-14 relative input perturbations (how well
 //!    the value is determined in f64 at all).
 
-#[path = "../common/mod.rs"]
-mod common;
+use crate::common;
 
 use common::{Point, build, point, reference, tree};
 use pegdyn_equations::codegen::lower::lower;

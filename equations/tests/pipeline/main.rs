@@ -2,6 +2,9 @@
 //! values, derivatives, Lagrange's equations, the interpreter, lowering and
 //! emission.
 
+#[path = "../common/mod.rs"]
+mod common;
+
 mod builder;
 mod codegen;
 mod diff_vs_finite_difference;

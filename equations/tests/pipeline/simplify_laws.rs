@@ -164,8 +164,7 @@ fn rules_table_is_complete_and_unique() {
     assert!(with_fn >= 15, "only {with_fn} rules with a function");
 }
 
-#[path = "../common/mod.rs"]
-mod common;
+use crate::common;
 
 /// Rebuilds `id` bottom-up through the simplifying constructors.
 fn rebuild(g: &Graph, id: Id, memo: &mut HashMap<Id, Id>) -> Id {

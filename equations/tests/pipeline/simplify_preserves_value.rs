@@ -9,8 +9,7 @@
 //! where the raw tree is undefined (NaN, infinite) are skipped and counted;
 //! the test asserts that most points are actually compared.
 
-#[path = "../common/mod.rs"]
-mod common;
+use crate::common;
 
 use common::{Point, Tree, build, point, reference, tree};
 use pegdyn_equations::Graph;
