@@ -6,7 +6,7 @@
 //!          registry of every function), `$OUT_DIR/codegen_report.txt`
 //!          (operation counts per function), `$OUT_DIR/generated_calls.rs`
 //!          (the emitter-coverage test harness of
-//!          `tests/generated_vs_interpreter.rs`) and
+//!          `tests/generator/vs_interpreter.rs`) and
 //!          `$OUT_DIR/generated_list.rs` (the function and output-struct
 //!          lists of `benches/list.rs`), each rewritten only when its content
 //!          changes.

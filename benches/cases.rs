@@ -3,7 +3,7 @@
 //! [`Cases::new`] builds every registered model (`models::ALL`) in its own
 //! graph and, for each function, draws seeded inputs (SplitMix64, seed 0:
 //! states in [−2, 2], parameters in [0.5, 2], time in [0, 10], as
-//! `tests/generated_vs_interpreter.rs`), then replaces them with physical
+//! `tests/generator/vs_interpreter.rs`), then replaces them with physical
 //! values where the model needs them ([`physical_inputs`]). The interpreter
 //! [`Tape`] of the function's outputs is compiled here, once, outside any
 //! timed loop; only [`Case::interpret`] is timed.

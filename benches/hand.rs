@@ -1,6 +1,6 @@
 //! Hand-derived closed forms of the generated functions, with exactly the
 //! generated signatures, so that benches time both on the same inputs and
-//! `tests/hand_forms.rs` checks that both agree (an independent derivation).
+//! `tests/generator/hand_forms.rs` checks that both agree (an independent derivation).
 //!
 //! Textbook systems (Goldstein §1.6; Tedrake, *Underactuated Robotics*,
 //! ch. 3), written from the closed forms, not from the generated code:

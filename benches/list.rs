@@ -3,7 +3,7 @@
 //! per function: `for_each_function!(callback!(context…))` expands to
 //! `callback!(context…, model::function(inputs…) [=> hand])` for each. Used
 //! by the criterion groups (`benches/functions.rs`), the instruction counts
-//! (`examples/instr_count.rs`) and `tests/hand_forms.rs`.
+//! (`benches/tools/instr_count.rs`) and `tests/generator/hand_forms.rs`.
 //!
 //! The functions come from the generator (`for_each_generated!`, written
 //! by build.rs beside the registry `pegdyn::generated::registry`), so a new
@@ -12,10 +12,10 @@
 include!(concat!(env!("OUT_DIR"), "/generated_list.rs"));
 
 /// Every generated output struct flattens its fields in order, as the
-/// hand forms' tuples do (`crate::cases::Flat`).
+/// hand forms' tuples do (`cases::Flat`).
 macro_rules! flat_struct {
     ($t:ty, $m:ident::$s:ident { $($f:ident),* }) => {
-        impl crate::cases::Flat for pegdyn::generated::$m::$s<$t> {
+        impl super::cases::Flat for pegdyn::generated::$m::$s<$t> {
             fn flat(&self, out: &mut Vec<f64>) {
                 $(self.$f.flat(out);)*
             }

@@ -7,7 +7,7 @@
 //! lists every function with callers at both scalars.
 //!
 //! A readable copy of every module is checked in under `docs/generated/`
-//! and kept current by `tests/generated_snapshot.rs`.
+//! and kept current by `tests/generator/snapshot.rs`.
 
 #[allow(
     clippy::all,
@@ -30,7 +30,7 @@ pub const REPORT: &str = include_str!(concat!(env!("OUT_DIR"), "/codegen_report.
 
 /// One generated function as the registry lists it
 /// (`pegdyn::generated::registry::FUNCTIONS`): where it is, what it takes
-/// and returns, and callers on slices at `f64` and at double-double.
+/// and returns, and a caller on slices at `f64`.
 #[derive(Clone, Copy, Debug)]
 pub struct Function {
     /// The module (model) name.
@@ -44,7 +44,17 @@ pub struct Function {
     /// Calls the function at `f64`: one slice per input, of its length;
     /// returns every output entry flattened in order.
     pub eval_f64: fn(&[&[f64]]) -> Vec<f64>,
-    /// The same at double-double.
+}
+
+/// A generated function with a second caller at double-double, as
+/// `pegdyn::generated::registry::DD_FUNCTIONS` lists it (the reference of
+/// [`crate::accuracy`]). A separate table so that a crate that needs only
+/// the `f64` callers compiles no double-double code.
+#[derive(Clone, Copy, Debug)]
+pub struct DdFunction {
+    /// The function and its `f64` caller.
+    pub function: Function,
+    /// The same caller at double-double.
     pub eval_dd: fn(&[&[crate::scalar::Dd]]) -> Vec<crate::scalar::Dd>,
 }
 

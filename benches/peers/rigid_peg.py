@@ -8,7 +8,7 @@ DOPRI5, all in one run.
     pip install -r benches/peers/requirements.txt
     python3 benches/peers/rigid_peg.py    # about 30 s here after the cargo build
 
-It runs `cargo build --release --example rigid_peer_values` and that
+It runs `cargo build --release -p pegdyn-benches --bin rigid_peer_values` and that
 example (pegdyn's values, timing loop and DOPRI5 runs), writes the generated
 C and the shared libraries to target/peers/, and prints markdown tables.
 Options: --quick (fewer repeats), --json FILE (all numbers), --cflags
@@ -46,7 +46,7 @@ P = PEG + [model.gamma0(PEG[0], PEG[1])]
 
 def example(*args, stdin=""):
     """Runs pegdyn's example (built by main) and returns its JSON lines."""
-    cmd = [os.path.join(ROOT, "target", "release", "examples", "rigid_peer_values"), *args]
+    cmd = [os.path.join(ROOT, "target", "release", "rigid_peer_values"), *args]
     out = subprocess.run(cmd, input=stdin, capture_output=True, text=True, cwd=ROOT, check=True)
     return [json.loads(line) for line in out.stdout.splitlines() if line.strip()]
 
@@ -170,7 +170,7 @@ def main():
     print(f"# {report['uptime_start']}")
     print(f"# Python {report['python']}, SymPy {report['sympy']}, CasADi {report['casadi']}, "
           f"SciPy {report['scipy']}, NumPy {report['numpy']}; {report['cc']}, {a.cflags}")
-    subprocess.run(["cargo", "build", "--quiet", "--release", "--example", "rigid_peer_values"],
+    subprocess.run(["cargo", "build", "--quiet", "--release", "-p", "pegdyn-benches", "--bin", "rigid_peer_values"],
                    cwd=ROOT, check=True)
     sym, cas, peers, c_peers, info = build_peers(a.cflags.split())
     report["build"] = info

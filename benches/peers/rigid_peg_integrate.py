@@ -2,7 +2,7 @@
 (Fig. 9 peg, f = 0.2, released at gamma = 0.3 rad with psidot = 10 1/s under
 M_gamma = -0.15 N m, exact Coulomb sliding on K, B1, B2) from its initial
 state to t = 12 ms, before its first event (lift-off of K at 12.98 ms), as
-`examples/work_precision` integrates it (`rigid_forward`): no events,
+`benches/tools/work_precision` integrates it (`rigid_forward`): no events,
 atol = 1e-2 rtol, error = max(|d gamma|, |d psi|) at 12 ms against pegdyn's
 DOPRI5 at rtol 1e-14. SciPy's nfev (the "rhs calls" column) does not count
 the right-hand sides of Radau's finite-difference Jacobians (4 per "jac").

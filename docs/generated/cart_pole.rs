@@ -1,5 +1,5 @@
 // @generated readable copy of `pegdyn::generated::cart_pole` — do not edit.
-// Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
+// Regenerate: PEGDYN_BLESS=1 cargo test --test generator snapshot::
 
 /// Cart-pole (textbook reference system): cart of mass `mc` at `xc` pushed by force `u`, point
 /// mass `m` on a massless rod of length `l` at angle `theta` from the downward vertical,

@@ -1,5 +1,5 @@
 // @generated readable copy of `pegdyn::generated::compliant_peg` — do not edit.
-// Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
+// Regenerate: PEGDYN_BLESS=1 cargo test --test generator snapshot::
 
 /// Compliant planar peg (*Dynamic analysis for peg-in-hole assembly with contact deformation*, (31)-(51), (55)-(64)) with contacts edge_left, wall_right, edge_right, wall_left. Inputs: state y (see STATE) and parameters p (see P_NAMES). SI units.
 pub mod compliant_peg {

@@ -1,5 +1,5 @@
 // @generated readable copy of `pegdyn::generated::compliant_peg_3d` — do not edit.
-// Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
+// Regenerate: PEGDYN_BLESS=1 cargo test --test generator snapshot::
 
 /// Compliant 3-D peg-in-hole: contact-pair gaps along the edge circles and Newton-Euler dynamics in centre of mass, unit quaternion and body angular velocity. Inputs: pose x (see X_NAMES), edge angle a, state y, contact wrench w, parameters p (see P_NAMES). SI units.
 pub mod compliant_peg_3d {

@@ -1,5 +1,5 @@
 // @generated readable copy of `pegdyn::generated::double_pendulum` — do not edit.
-// Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
+// Regenerate: PEGDYN_BLESS=1 cargo test --test generator snapshot::
 
 /// Double pendulum (textbook reference system): point masses `m1`, `m2` on massless rods of
 /// lengths `l1`, `l2`, absolute angles `theta1`, `theta2` from the downward vertical, gravity `g`.

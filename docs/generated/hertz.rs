@@ -1,5 +1,5 @@
 // @generated readable copy of `pegdyn::generated::hertz` — do not edit.
-// Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
+// Regenerate: PEGDYN_BLESS=1 cargo test --test generator snapshot::
 
 /// Hertz elliptical contact (*Dynamic analysis for peg-in-hole assembly with contact deformation*, (9)-(13)) from setup-time coefficients c = (sum of curvatures 1/m, contact modulus Pa, m_a, m_b, delta_star). SI units.
 pub mod hertz {

@@ -1,5 +1,5 @@
 // @generated readable copy of `pegdyn::generated::pendulum` — do not edit.
-// Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
+// Regenerate: PEGDYN_BLESS=1 cargo test --test generator snapshot::
 
 /// Simple pendulum (textbook reference system): point mass `m` on a massless rod of length `l`,
 /// angle `theta` from the downward vertical, gravity `g`. SI units.

@@ -1,5 +1,5 @@
 // @generated readable copy of `pegdyn::generated::quasi_static` — do not edit.
-// Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
+// Regenerate: PEGDYN_BLESS=1 cargo test --test generator snapshot::
 
 /// Quasi-static contact forces of the planar peg in two-point and one-point contact (*Dynamic analysis for peg-in-hole assembly with contact deformation*, Eqs. 51-54), derived from the contact geometry. Inputs: pose = (theta rad, l m), load = (f1 axial N, f2 radial N), acc = (xdd, ydd m/s^2, thdd rad/s^2), p = (mu, r m, l_c m, m kg, J kg m^2).
 pub mod quasi_static {

@@ -1,5 +1,5 @@
 // @generated readable copy of `pegdyn::generated::rigid_peg` — do not edit.
-// Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
+// Regenerate: PEGDYN_BLESS=1 cargo test --test generator snapshot::
 
 /// Rigid three-point peg leaning on the hole edge at K, B1, B2 (*Peg-on-hole: fundamental principles of motion of a peg leaning on a horizontal hole edge*), variant `Full`, derived by the generator (equations/src/models/rigid_peg.rs).
 /// State x = (`gamma`, `psi`, `gammadot`, `psidot`); parameters p = (D_hole, d_peg, H, m, g, f, gamma0); loads = (`M_gamma`, `M_psi`, `F_x`, `F_y`, `F_z`); friction directions t = (`t_K_eta`, `t_K_n`, `t_K_z`, `t_B1_eta`, `t_B1_n`, `t_B1_z`, `t_B2_eta`, `t_B2_n`, `t_B2_z`) (unit, force on the peg).

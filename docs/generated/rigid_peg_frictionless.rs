@@ -1,5 +1,5 @@
 // @generated readable copy of `pegdyn::generated::rigid_peg_frictionless` — do not edit.
-// Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
+// Regenerate: PEGDYN_BLESS=1 cargo test --test generator snapshot::
 
 /// Rigid three-point peg leaning on the hole edge at K, B1, B2 (*Peg-on-hole: fundamental principles of motion of a peg leaning on a horizontal hole edge*), variant `Frictionless`, derived by the generator (equations/src/models/rigid_peg.rs).
 /// State x = (`gamma`, `psi`, `gammadot`, `psidot`); parameters p = (D_hole, d_peg, H, m, g, f, gamma0); loads = (`M_gamma`, `M_psi`, `F_x`, `F_y`, `F_z`).

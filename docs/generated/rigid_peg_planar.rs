@@ -1,5 +1,5 @@
 // @generated readable copy of `pegdyn::generated::rigid_peg_planar` — do not edit.
-// Regenerate: PEGDYN_BLESS=1 cargo test --test generated_snapshot
+// Regenerate: PEGDYN_BLESS=1 cargo test --test generator snapshot::
 
 /// Rigid three-point peg leaning on the hole edge at K, B1, B2 (*Peg-on-hole: fundamental principles of motion of a peg leaning on a horizontal hole edge*), variant `Planar`, derived by the generator (equations/src/models/rigid_peg.rs).
 /// State x = (`gamma`, `gammadot`); parameters p = (D_hole, d_peg, H, m, g, f, gamma0); loads = (`M_gamma`, `F_x`, `F_z`); friction directions t = (`t_K_eta`, `t_K_z`, `t_B_eta`, `t_B_z`) (unit, force on the peg).

@@ -13,7 +13,7 @@
 //! locally constant there: `d sqrt(u) = du / (2 sqrt(u))` at `u = du = 0`
 //! (e.g. `sqrt(max0(δ))` for an inactive contact: use exponents `>= 1` on a
 //! `max0`, whose derivatives stay finite), `d b^y/dy = b^y ln(b)` at `b = 0`,
-//! and `hypot(a, b)'` at `a = b = 0`. `tests/diff_vs_finite_difference.rs`
+//! and `hypot(a, b)'` at `a = b = 0`. `equations/tests/pipeline/diff_vs_finite_difference.rs`
 //! counts such points in random trees (about 0.1 %).
 //!
 //! [`time_derivative`] is the total derivative d/dt along given

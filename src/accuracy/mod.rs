@@ -17,7 +17,7 @@
 pub mod grid;
 mod table;
 
-use crate::generated::Function;
+use crate::generated::{DdFunction, Function};
 use crate::scalar::Dd;
 pub use grid::Point;
 
@@ -130,7 +130,11 @@ fn inputs(f: &Function, point: &Point) -> Result<Vec<Vec<f64>>, AccuracyError> {
 }
 
 /// Evaluates `f` at every point at both precisions; the worst error.
-pub fn measure_function(f: &Function, points: &[Point]) -> Result<FunctionAccuracy, AccuracyError> {
+pub fn measure_function(
+    dd: &DdFunction,
+    points: &[Point],
+) -> Result<FunctionAccuracy, AccuracyError> {
+    let f = &dd.function;
     let mut acc = FunctionAccuracy {
         path: f.path(),
         points: points.len(),
@@ -149,7 +153,7 @@ pub fn measure_function(f: &Function, points: &[Point]) -> Result<FunctionAccura
             .map(|v| v.iter().map(|&c| Dd::from(c)).collect())
             .collect();
         let xd: Vec<&[Dd]> = xd.iter().map(Vec::as_slice).collect();
-        let (lo, hi) = ((f.eval_f64)(&xf), (f.eval_dd)(&xd));
+        let (lo, hi) = ((f.eval_f64)(&xf), (dd.eval_dd)(&xd));
         // Scale of each output at this point: its largest |reference|.
         let mut scale = Vec::with_capacity(hi.len());
         let mut start = 0;
@@ -191,16 +195,17 @@ pub fn measure_function(f: &Function, points: &[Point]) -> Result<FunctionAccura
 
 /// Measures every function in `functions` on the hard grid of its module,
 /// restricted to the points whose label contains `only` if given.
-pub fn measure(functions: &[Function], only: Option<&str>) -> Result<Report, AccuracyError> {
+pub fn measure(functions: &[DdFunction], only: Option<&str>) -> Result<Report, AccuracyError> {
     let mut report = Report::default();
-    for f in functions {
+    for dd in functions {
+        let f = &dd.function;
         match grid::points(f.module) {
             Some(mut points) => {
                 if let Some(sub) = only {
                     points.retain(|p| p.label.contains(sub));
                 }
                 if !points.is_empty() {
-                    report.functions.push(measure_function(f, &points)?);
+                    report.functions.push(measure_function(dd, &points)?);
                 }
             }
             None => {

@@ -74,7 +74,8 @@ enum Command {
     /// List the scene kinds this build knows.
     Kinds,
     /// Rounding error of every generated function: f64 against double-double
-    /// on a grid of hard points (see docs/ACCURACY.md).
+    /// on a grid of hard points (see docs/ACCURACY.md; needs the `accuracy`
+    /// feature).
     Accuracy {
         /// Also write the table as CSV to this file.
         #[arg(long)]

@@ -219,7 +219,7 @@ pub fn try_solve(ratio: f64) -> Result<Ellipticity, HertzError> {
 /// `K ≈ 1.5277 + 0.6023 ln ratio`.
 ///
 /// The published accuracy is a few per cent on `κ` and better on `E` and
-/// `K` for `1 ≤ ratio ≤ 100`; `tests/hertz.rs` measures the worst relative
+/// `K` for `1 ≤ ratio ≤ 100`; `tests/compliant_peg/hertz.rs` measures the worst relative
 /// error of `κ`, `E`, `K` and of the resulting stiffness against [`solve`]
 /// and `docs/contact-geometry.md` quotes it. The two differences of
 /// [`Ellipticity`] are derived from the fitted `K`, `E` and `κ`.

@@ -38,6 +38,7 @@ mod non_finite;
 mod options;
 mod rosenbrock;
 mod solution;
+mod state;
 mod step_control;
 pub mod tableau;
 
@@ -51,9 +52,9 @@ pub use non_finite::{NonFiniteAt, NonFiniteQuantity};
 pub use options::{IntegrateError, MAX_STEP_BUDGET, MIN_ATOL, MIN_RTOL, Options, OutputMode};
 pub use solution::{EventHit, Solution, Stats, StopReason};
 
-use driver::Hooks;
 use explicit_rk::ExplicitRk;
 use rosenbrock::Rosenbrock;
+use state::Hooks;
 use tableau::{RosenbrockTableau, Tableau};
 
 /// Progress callback type: called with the time after every accepted step.

@@ -1,7 +1,7 @@
 //! Explicit Runge–Kutta methods as data (Butcher tableaux).
 //!
 //! One engine (`integrate/explicit_rk.rs`) runs every tableau here; the tests in
-//! `tests/integrators.rs` check each against the Runge–Kutta order
+//! `tests/integrate/integrators.rs` check each against the Runge–Kutta order
 //! conditions (Hairer, Nørsett & Wanner, *Solving ODEs I*, §II.2, Table 2.2).
 
 /// How a method interpolates inside an accepted step.
@@ -299,7 +299,7 @@ impl<const S: usize> RosenbrockTableau<S> {
 /// stage point plus `u₆`, the embedded solution the fifth), order 4 with an
 /// embedded order-3 solution, L-stable. Stage nodes `αᵢ = (0, 0.386, 0.21,
 /// 0.63, 1, 1)` and `γᵢ = (1/4, −0.1043, 0.1035, −0.0362, 0, 0)` follow from
-/// these; `tests/stiff.rs` checks them and the order conditions.
+/// these; `tests/integrate/rosenbrock.rs` checks them and the order conditions.
 pub const RODAS4_TRANSFORMED: TransformedCoefficients<6> = {
     const A51: f64 = 1.221224509226641;
     const A52: f64 = 6.019134481288629;

@@ -19,7 +19,7 @@
 //! curvature terms of the gaps equal −G_i (a_C⁰, 0, 0) (no curvature formula
 //! needed). A mode S ⊆ {K, B1, B2} is consistent when g̈_S = 0, N_S ≥ 0,
 //! and g̈_j ≥ 0, N_j = 0 off S. S = all reproduces the forward problem
-//! (`tests/rigid_forward.rs`). Friction directions are fixed by the sliding
+//! (`tests/rigid_peg/forward.rs`). Friction directions are fixed by the sliding
 //! velocities, so each mode is a linear solve (8 modes).
 
 use nalgebra::{Matrix3, SMatrix, SVector, Vector2, Vector3};

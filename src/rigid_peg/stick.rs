@@ -2,7 +2,7 @@
 //!
 //! Every contact of the three-point peg slides unless q̇ = 0: each contact
 //! Jacobian J_i has full column rank 2 for γ0 < γ < π/2
-//! (`tests/rigid_stick.rs`). So the peg sticks only when it is at rest.
+//! (`tests/rigid_peg/stick.rs`). So the peg sticks only when it is at rest.
 //! At rest, a motion starts in some direction û of q̈; Coulomb friction at
 //! each contact then opposes J_i û, which fixes the forward system. A start
 //! along û is consistent iff the solved q̈ is a positive multiple of û and

@@ -1,7 +1,7 @@
 //! Elementary functions of [`Dd`] and its [`Real`] implementation.
 //!
 //! Method (accuracy target: a few 1e-32 relative, checked in
-//! `tests/scalar_dd.rs` against values computed independently at 300 bits):
+//! `tests/generator/scalar_dd.rs` against values computed independently at 300 bits):
 //! - `exp`, `exp_m1`: `x = k ln2 + r` (ln 2 in three parts), `r/2¹⁰` by its
 //!   Taylor series for `e^r − 1`, then ten doublings `s ← s(s + 2)`, which
 //!   keep the relative accuracy of `e^r − 1` (no cancellation near 0);

@@ -1,8 +1,7 @@
-//! Shared by the end-to-end tests of the `pegdyn` binary (`tests/cli.rs`,
-//! `tests/align_forward_scene.rs`, `tests/hostile_scenes.rs`), included with
-//! `#[path]`: running the binary from the crate root, a fresh output
-//! directory per test, and running a scene in-process and reading its
-//! summary's metrics.
+//! Shared by the end-to-end tests of the `pegdyn` binary
+//! (`tests/scene_cli/`, the scene tests of the other groups): running the
+//! binary from the crate root, a fresh output directory per test, and
+//! running a scene in-process and reading its summary's metrics.
 
 #![allow(dead_code)]
 

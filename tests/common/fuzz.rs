@@ -1,5 +1,5 @@
-//! Scene fuzzing shared by `tests/fuzz_scenes.rs` (a bounded case count in
-//! CI) and `examples/fuzz_scenes.rs` (runs for a given time): generators of
+//! Scene fuzzing shared by `tests/scene_cli/fuzz.rs` (a bounded case count in
+//! CI) and `benches/tools/fuzz_scenes.rs` (runs for a given time): generators of
 //! hostile scene texts and the two properties every scene must satisfy.
 //!
 //! - [`parse_case`]: arbitrary TOML — shipped scenes with byte-level

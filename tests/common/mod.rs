@@ -1,7 +1,12 @@
-//! Shared by the integration tests (each takes what it needs): a seeded
-//! SplitMix64 source of inputs, the rigid peg fixtures ([`rigid`]), and a
-//! double-double evaluation of any expression graph (the reference for the
-//! `f64` interpreter) with ulps.
+//! Shared by the integration tests: each group's `main.rs` declares this
+//! module once (`#[path = "../common/mod.rs"] mod common;`) and its files take
+//! what they need (`use crate::common::peg3d;`). Here: a double-double
+//! evaluation of any expression graph (the reference for the `f64`
+//! interpreter) with ulps; the submodules hold a seeded SplitMix64 source of
+//! inputs ([`rng`]), the rigid peg fixtures ([`rigid`], [`prescribed_rigid`]),
+//! the compliant 3-D peg's ([`peg3d`]), the wrist insertion's ([`rcc`]), the
+//! Rosenbrock tableau checks ([`rosenbrock`]), running the `pegdyn` binary
+//! ([`cli`]) and the scene fuzzer's strategies ([`fuzz`]).
 
 #![allow(dead_code)]
 
@@ -12,7 +17,13 @@ use pegdyn::scalar::{Dd, Real};
 use pegdyn_equations::graph::{Binary, Node};
 use pegdyn_equations::{Graph, Id};
 
+pub mod cli;
+pub mod fuzz;
+pub mod peg3d;
+pub mod prescribed_rigid;
+pub mod rcc;
 pub mod rigid;
+pub mod rosenbrock;
 
 pub mod rng;
 #[allow(unused_imports)]

@@ -1,4 +1,4 @@
-//! Fixtures of the compliant 3-D peg tests, included with `#[path]`: the
+//! Fixtures of the compliant 3-D peg tests (`tests/compliant_peg_3d/`): the
 //! Fig. 9 peg, orientations by tilt, precession and spin, the rim on the
 //! mouth fillet, the peg under a load fixed in its frame, its two-point
 //! contact forces, and the tight DOPRI5 run the energy tests integrate

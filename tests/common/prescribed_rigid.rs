@@ -1,8 +1,8 @@
 //! The rigid three-point limit of the compliant 3-D peg: the prescribed
 //! Fig. 9 motion run on `pegdyn::compliant_peg_3d::prescribed`, compared
 //! with the rigid model's reactions and contact points. Shared by
-//! `tests/compliant_peg_3d_limits_rigid.rs` and (through `#[path]`)
-//! `examples/rigid_limit_table.rs`.
+//! `tests/compliant_peg_3d/limits_rigid.rs` and (through `#[path]`)
+//! `benches/tools/rigid_limit_table.rs`.
 
 #![allow(dead_code)]
 

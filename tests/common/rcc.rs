@@ -1,5 +1,5 @@
-//! Shared by the insertion tests (`tests/insertion_outcomes.rs`,
-//! `tests/insertion_quasi_static.rs`), included with `#[path]`: an
+//! Shared by the insertion tests (`tests/insertion/outcomes.rs`,
+//! `tests/insertion/quasi_static.rs`): an
 //! `insert_rcc` scene text built and run in-process with its own
 //! integrator (the non-stiff default when it names none).
 

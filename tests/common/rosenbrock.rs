@@ -1,5 +1,4 @@
-//! Shared by the Rosenbrock tests (`tests/stiff.rs` for RODAS3,
-//! `tests/rodas4.rs` for RODAS4), included with `#[path]`: the linear
+//! Used by the Rosenbrock table (`tests/integrate/rosenbrock.rs`): the linear
 //! stability function of a tableau, its stiff-accuracy defect, a
 //! non-autonomous scalar problem with a closed-form solution, and fixed-step
 //! options.

@@ -6,7 +6,7 @@
 //!
 //! It is not part of `pegdyn::generated`: `build.rs` emits it only into the
 //! test call table (`generated_calls.rs`), where
-//! `tests/generated_vs_interpreter.rs` checks it against the interpreter
+//! `tests/generator/vs_interpreter.rs` checks it against the interpreter
 //! on random and special (0, −0, ±∞, NaN) inputs.
 
 use crate::graph::Graph;

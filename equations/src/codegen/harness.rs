@@ -1,6 +1,6 @@
 //! Test scaffolding: the `coverage` module's code and its call table,
 //! `$OUT_DIR/generated_calls.rs`, included only by
-//! `tests/generated_vs_interpreter.rs` (not part of any public API). The
+//! `tests/generator/vs_interpreter.rs` (not part of any public API). The
 //! registered models' functions are not listed here: their one list is the
 //! generated registry (`pegdyn::generated::registry::FUNCTIONS`,
 //! [`super::registry`]), which the test walks.

@@ -1,9 +1,11 @@
 //! The registry of generated functions: `pub mod registry` at the end of
 //! `generated.rs`, a table `FUNCTIONS` with, for every function, its module
 //! and name, its inputs (name and symbol names), its outputs (name and
-//! number of entries) and two callers on slices, one at `f64` and one at
-//! the double-double `Dd`. Tools that evaluate every function
-//! (`pegdyn accuracy`) walk it; adding a model adds its rows.
+//! number of entries) and a caller on slices at `f64`; and `DD_FUNCTIONS`,
+//! the same rows with a second caller at the double-double `Dd`. Tools that
+//! evaluate every function (`pegdyn accuracy`) walk them; adding a model adds
+//! its rows. Generic code is compiled only where it is named, so a crate that
+//! names only `FUNCTIONS` (the Python module) compiles no double-double code.
 //!
 //! A caller takes one slice per input (component `k` of input `i` is
 //! `a[i][k]`) and returns all outputs flattened, outputs in order, matrices
@@ -19,6 +21,7 @@ use crate::model::{Module, Output};
 /// `pub mod registry { .. }` for `modules` (each with its graph).
 pub fn tokens(modules: &[(&Graph, &Module)]) -> TokenStream {
     let mut rows = Vec::new();
+    let mut dd_rows = Vec::new();
     let mut fns = Vec::new();
     for (_, m) in modules {
         for f in &m.functions {
@@ -66,21 +69,27 @@ pub fn tokens(modules: &[(&Graph, &Module)]) -> TokenStream {
                     inputs: &[#(#inputs),*],
                     outputs: &[#(#outputs),*],
                     eval_f64: #caller::<f64>,
-                    eval_dd: #caller::<Dd>,
                 }
+            });
+            let k = Literal::usize_unsuffixed(dd_rows.len());
+            dd_rows.push(quote! {
+                DdFunction { function: FUNCTIONS[#k], eval_dd: #caller::<Dd> }
             });
         }
     }
     let n = Literal::usize_unsuffixed(rows.len());
     quote! {
-        /// Every generated function with callers at `f64` and at the
-        /// double-double `Dd` (used by `pegdyn accuracy`).
+        /// Every generated function with a caller at `f64`, and with a second
+        /// at the double-double `Dd` (used by `pegdyn accuracy`).
         pub mod registry {
             use nalgebra::SVector;
-            use pegdyn::generated::Function;
+            use pegdyn::generated::{DdFunction, Function};
             use pegdyn::scalar::{Dd, Real};
             /// Every generated function, modules in registration order.
             pub const FUNCTIONS: [Function; #n] = [#(#rows),*];
+            /// [`FUNCTIONS`] with callers at double-double (the accuracy
+            /// measure's reference).
+            pub const DD_FUNCTIONS: [DdFunction; #n] = [#(#dd_rows),*];
             #(#fns)*
         }
     }

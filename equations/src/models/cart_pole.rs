@@ -10,7 +10,7 @@
 //!   M = [[mc + m, m l cos θ], [m l cos θ, m l²]],
 //!   f = (u + m l θ̇² sin θ, −m g l sin θ),
 //!
-//! which `tests/lagrange_textbook.rs` checks. Units: SI (kg, m, N, rad, J).
+//! which `tests/generator/lagrange_textbook.rs` checks. Units: SI (kg, m, N, rad, J).
 
 use crate::GenError;
 use crate::builder::{ModelBuilder, Outputs};

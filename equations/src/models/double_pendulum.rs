@@ -11,7 +11,7 @@
 //!   f1 = −m2 l1 l2 θ̇2² sin(θ1−θ2) − (m1+m2) g l1 sin θ1,
 //!   f2 =  m2 l1 l2 θ̇1² sin(θ1−θ2) − m2 g l2 sin θ2,
 //!
-//! which `tests/lagrange_textbook.rs` checks the derivation against.
+//! which `tests/generator/lagrange_textbook.rs` checks the derivation against.
 //! Units: SI (kg, m, m/s², rad, J).
 
 use crate::GenError;

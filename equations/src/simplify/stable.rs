@@ -2,7 +2,7 @@
 //! cancellation, an overflow or a NaN from the *floating-point* evaluation.
 //! Each is a row of [`super::rules::RULES`] with `stable: true` (so that
 //! `Graph::with_stable_rewrites(false)` can switch it off to measure what it
-//! buys); each is shown by a hard case in `tests/hard_cases_rewrites.rs`.
+//! buys); each is shown by a hard case in `tests/generator/hard_cases_rewrites.rs`.
 
 use super::laws::{find_pair, find_term, remove, sum_measure, without};
 use super::{add, all_params, const_of, konst, mul, pow, term_parts, unary};

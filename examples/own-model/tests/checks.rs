@@ -174,7 +174,8 @@ fn an_incomplete_model_is_an_error_naming_model_and_symbol() {
 #[test]
 fn every_generated_function_is_accurate_against_double_double() {
     use pegdyn::accuracy::{grid::Point, measure_function};
-    // The registry evaluates each function at f64 and at double-double;
+    // The registry's DD_FUNCTIONS evaluate each function at f64 and at
+    // double-double;
     // `measure_function` reports the worst error in ulps of the reference.
     let points: Vec<Point> = states()
         .iter()
@@ -198,12 +199,12 @@ fn every_generated_function_is_accurate_against_double_double() {
             )
         })
         .collect();
-    assert_eq!(own_model::generated::registry::FUNCTIONS.len(), 11);
-    for f in own_model::generated::registry::FUNCTIONS
+    assert_eq!(own_model::generated::registry::DD_FUNCTIONS.len(), 11);
+    for dd in own_model::generated::registry::DD_FUNCTIONS
         .iter()
-        .filter(|f| f.module == model::MODEL)
+        .filter(|dd| dd.function.module == model::MODEL)
     {
-        let acc = measure_function(f, &points).unwrap();
+        let acc = measure_function(dd, &points).unwrap();
         assert_eq!(acc.non_finite, 0, "{}", acc.path);
         assert!(
             acc.max_normwise < 1e-13,

@@ -30,7 +30,7 @@
 //! flatten them back), so they live beside the canonical ones in the same
 //! arena and only the emitter sees them. The interpreter
 //! ([`crate::eval::Tape`]) keeps evaluating the canonical DAG: it is the
-//! independent oracle that `tests/generated_vs_interpreter.rs` checks the
+//! independent oracle that `tests/generator/vs_interpreter.rs` checks the
 //! lowered code against. None of the rewrites adds a multiplication.
 
 mod cancel;

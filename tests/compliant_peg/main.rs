@@ -1,0 +1,17 @@
+//! The compliant planar peg and Hertz contact: geometry, the model, energy
+//! balance, friction laws, stiff integration, the insertion scene, and the
+//! Hertz kernels under hostile inputs.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod elastic_friction;
+mod energy;
+mod geometry;
+mod hertz;
+mod hertz_hostile;
+mod insertion;
+mod model;
+mod runtime;
+mod scene;
+mod stiff;

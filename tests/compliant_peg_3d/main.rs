@@ -1,0 +1,16 @@
+//! The compliant 3-D peg: contact search, Jacobian, curvature stiffness,
+//! seating, the side wall, and its limits (rigid, planar, quasi-static,
+//! energy).
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod contact;
+mod curvature_stiffness;
+mod jacobian;
+mod limits_energy;
+mod limits_planar;
+mod limits_rigid;
+mod limits_statics;
+mod seated;
+mod side_wall;

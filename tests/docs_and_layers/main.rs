@@ -1,0 +1,10 @@
+//! The tree itself: every path the docs name exists, the module layers, and
+//! no import cycle between files.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod docs_paths;
+mod import_cycles;
+mod import_graph;
+mod layers;

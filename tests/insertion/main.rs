@@ -1,0 +1,10 @@
+//! Robot insertion through a compliant wrist: the wrist, outcomes, the quasi-
+//! static limit and design margins.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod design_margins;
+mod outcomes;
+mod quasi_static;
+mod wrist;

@@ -1,0 +1,13 @@
+//! The integrators: tableaux and order conditions, events on dense output, the
+//! Rosenbrock methods on stiff problems, no allocation on the hot path, hostile
+//! options.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod events;
+mod hostile;
+mod integrators;
+mod no_alloc;
+mod rosenbrock;
+mod stiff;

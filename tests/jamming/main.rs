@@ -1,0 +1,16 @@
+//! Jamming and wedging: diagrams, the quasi-static and dynamic analyses, the
+//! 3-D jamming space, the parallel sweep and the jamming scene.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod diagram;
+mod dynamic;
+mod input;
+mod quasi_static;
+mod scene;
+mod space3d;
+mod sweep;
+mod sweep_early_stop;
+mod sweep_method;
+mod wedging;

@@ -1,0 +1,9 @@
+//! The `pegdyn` command line and scene files: every subcommand, refused scenes
+//! with the field named, and fuzzed scene files.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+mod cli;
+mod fuzz;
+mod hostile_scenes;
