@@ -190,9 +190,6 @@ fn drop(name: &str, s: &DropScene) -> Result<Replay, Box<dyn Error>> {
 
 fn planar(name: &str, s: &InsertCompliantScene) -> Result<Replay, Box<dyn Error>> {
     let b = s.build().map_err(|e| e.to_string())?;
-    let p = &s.insert_compliant;
-    let spec = s.integrator.resolved(DefaultMethod::STIFF_CONTACT).0;
-    let (lc, target) = (b.params.spec.com_height, p.target_depth);
     fn inserted<'a, const N: usize>(lc: f64, target: f64) -> Event<'a, N> {
         Event::new(move |_t, y: &SVector<f64, N>| y[1] + lc * y[2].cos() - target)
             .direction(Direction::Rising)
@@ -202,14 +199,14 @@ fn planar(name: &str, s: &InsertCompliantScene) -> Result<Replay, Box<dyn Error>
         name: &str,
         s: &InsertCompliantScene,
         b: &pegdyn::scene::insert_compliant::Built,
-        spec: &IntegratorSpec,
         sys: &impl OdeSystem<N>,
         y0: SVector<f64, N>,
         sample: &dyn Fn(&SVector<f64, N>) -> Sample,
-        event: Event<N>,
     ) -> Result<Replay, Box<dyn Error>> {
-        let sol = integrate(sys, y0, spec, vec![event])?;
         let p = &s.insert_compliant;
+        let spec = s.integrator.resolved(DefaultMethod::STIFF_CONTACT).0;
+        let event = inserted(b.params.spec.com_height, p.target_depth);
+        let sol = integrate(sys, y0, &spec, vec![event])?;
         let mark = |_: &EventHit<N>| Some((MarkKind::Seat, "target depth reached".to_string()));
         let r = Run2d {
             title: name,
@@ -231,30 +228,12 @@ fn planar(name: &str, s: &InsertCompliantScene) -> Result<Replay, Box<dyn Error>
         FrictionLaw::Regularized => {
             let sys = CompliantSystem::new(&b.params, &b.load);
             let y0 = b.initial.to_vector();
-            go(
-                name,
-                s,
-                &b,
-                &spec,
-                &sys,
-                y0,
-                &|y| sys.sample(y),
-                inserted(lc, target),
-            )
+            go(name, s, &b, &sys, y0, &|y| sys.sample(y))
         }
         FrictionLaw::Elastic => {
             let sys = ElasticSystem::new(&b.params, &b.load);
             let y0 = b.initial.to_vector_elastic();
-            go(
-                name,
-                s,
-                &b,
-                &spec,
-                &sys,
-                y0,
-                &|y| sys.sample(y),
-                inserted(lc, target),
-            )
+            go(name, s, &b, &sys, y0, &|y| sys.sample(y))
         }
     }
 }

@@ -101,7 +101,7 @@ fn frame(sys: &Insertion, t: f64, y: &SVector<f64, N_STATE>) -> Result<Frame, Re
         .sample(t, y)
         .map_err(|source| ReplayError::Model { t, source })?;
     let m = motion(&peg_state(y));
-    let points: Vec<_> = s.forces.iter().map(|f| f.contact.clone()).collect();
+    let points: Vec<_> = s.forces.iter().map(|f| f.contact).collect();
     let contacts = s
         .forces
         .iter()
@@ -185,4 +185,13 @@ pub fn replay(run: &Run3d<'_>, budget: Budget) -> Result<Replay, ReplayError> {
         exaggeration: Replay::suggested_exaggeration(geometry.hole_radius, geometry.clearance()),
         geometry,
     })
+}
+
+/// The page of `run` with the default [`Budget`]: [`replay`], then
+/// [`super::html`].
+///
+/// # Errors
+/// As [`replay`] and [`super::html`].
+pub fn page(run: &Run3d<'_>) -> Result<String, ReplayError> {
+    super::html(&replay(run, Budget::default())?)
 }

@@ -204,3 +204,12 @@ pub fn replay<const N: usize>(run: &Run2d<'_, N>, budget: Budget) -> Result<Repl
         geometry,
     })
 }
+
+/// The page of `run` with the default [`Budget`]: [`replay`], then
+/// [`super::html`].
+///
+/// # Errors
+/// As [`replay`] and [`super::html`].
+pub fn page<const N: usize>(run: &Run2d<'_, N>) -> Result<String, ReplayError> {
+    super::html(&replay(run, Budget::default())?)
+}

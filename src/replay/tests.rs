@@ -264,3 +264,30 @@ fn the_planar_peg_in_two_point_contact_touches_the_left_edge_and_the_right_wall(
     assert_eq!(r.view, View::Section);
     assert!(!r.geometry.bore_bottom);
 }
+
+#[test]
+fn the_replay_uses_the_models_not_the_scenes_or_the_output_writers() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/replay");
+    let mut files: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|e| e == "rs"))
+        .collect();
+    files.sort();
+    assert!(files.len() >= 8);
+    for f in files {
+        let text = std::fs::read_to_string(&f).unwrap();
+        for line in text.lines().map(|l| l.split("//").next().unwrap_or("")) {
+            for upper in ["scene", "output", "cli"] {
+                for root in ["crate::", "pegdyn::", "super::super::"] {
+                    let path = format!("{root}{upper}");
+                    let hit = line.match_indices(&path).any(|(i, _)| {
+                        !line[i + path.len()..]
+                            .starts_with(|c: char| c.is_alphanumeric() || c == '_')
+                    });
+                    assert!(!hit, "{}: {line}", f.display());
+                }
+            }
+        }
+    }
+}

@@ -277,6 +277,11 @@
     get cursor() { return plots.length ? plots[0].cursor : state.time; },
     seek: seek,
     jump: jump,
+    step: function (i) {
+      var k = Math.max(0, Math.min(n - 1, i));
+      state.time = t[k];
+      setFrame(k);
+    },
     play: play,
     pause: pause,
     pegBox: function () { return view ? view.pegBox() : null; },

@@ -38,6 +38,9 @@ Replay.View = function (T, container, data) {
   this.light = new T.DirectionalLight(0xffffff, 2.2);
   this.camera.add(this.light);
   this.light.position.set(0.3, 0.6, 0.2);
+  var fill = new T.DirectionalLight(0xffffff, 1.1);
+  fill.position.set(-0.7, 0.1, 0.3);
+  this.camera.add(fill);
   this.scene.add(this.camera);
   this.block = new Replay.Block(T, g, section);
   this.peg = new Replay.Peg(T, g, section);
