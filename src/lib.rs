@@ -15,6 +15,7 @@ pub mod integrate;
 pub mod jamming;
 pub mod output;
 pub mod reference_problems;
+pub mod replay;
 pub mod rigid_peg;
 pub mod scalar;
 pub mod scene;
