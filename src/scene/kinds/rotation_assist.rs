@@ -38,7 +38,8 @@ use crate::scene::limits::WorkItem;
 use crate::scene::progress::{Progress, par_map_counted};
 use crate::scene::ranges::FieldRange;
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, outcome_text, run_one};
-use crate::scene::shared::compliant_peg_3d::{ranges, tables};
+use crate::scene::shared::compliant_peg_3d::{ranges, replay, tables};
+use crate::scene::shared::replay::{GridReplayTable, RunChoice};
 use crate::scene::summary::{Metric, RunSummary};
 use crate::scene::validate::Checker;
 
@@ -97,6 +98,9 @@ pub struct SweepScene {
     pub grid: GridTable,
     /// `[integrator]`.
     pub integrator: IntegratorSpec,
+    /// `[replay]` (optional; the page shows the worst run by default).
+    #[serde(default)]
+    pub replay: GridReplayTable,
 }
 
 /// One grid point.
@@ -112,6 +116,8 @@ struct Point {
 struct Ready {
     scene: SweepScene,
     points: Vec<(Point, Built)>,
+    /// The `[robot]` table's own run, when `replay.run = "nominal"`.
+    nominal: Option<(Point, Built)>,
     integrator: IntegratorSpec,
     method_reason: &'static str,
 }
@@ -129,6 +135,7 @@ impl SweepScene {
             robot,
             criteria: self.criteria.clone(),
             integrator: self.integrator.clone(),
+            replay: Default::default(),
         }
     }
 }
@@ -173,10 +180,24 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
             }
         }
     }
+    let nominal = match s.replay.run.map(|r| r.check(points.len())).transpose()? {
+        Some(RunChoice::Nominal) => {
+            let r = &s.robot;
+            let p = Point {
+                lateral: r.lateral_error,
+                angular_deg: r.angular_error_deg,
+                precession: r.precession_rate,
+                spin: r.spin_rate,
+            };
+            Some((p, s.as_rcc(&p).build()?))
+        }
+        _ => None,
+    };
     let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::NON_STIFF);
     Ok(Box::new(Ready {
         scene: s,
         points,
+        nominal,
         integrator,
         method_reason,
     }))
@@ -327,7 +348,32 @@ impl Scene for Ready {
             pmax / yield_p,
             "",
         ));
+        if self.scene.replay.wanted(ctx) {
+            self.page(ctx, &rows)?;
+        }
         Ok(out)
+    }
+}
+
+impl Ready {
+    /// Writes the replay page of the run `replay.run` picks (default the
+    /// worst), integrated again with its contact transitions tracked.
+    fn page(&self, ctx: &RunContext, rows: &[Row]) -> Result<(), RunError> {
+        let outcomes: Vec<(bool, f64)> = rows.iter().map(|r| (r.seated, r.end)).collect();
+        let choice = self.scene.replay.run.unwrap_or(RunChoice::Worst);
+        let ((point, built), which) = match (choice.pick(&outcomes), &self.nominal) {
+            (Some((k, why)), _) => (&self.points[k], format!("grid point {k} ({why})")),
+            (None, Some(nominal)) => (nominal, "the [robot] table's run".to_string()),
+            // "worst" on an empty grid, which validation refuses.
+            (None, None) => return Ok(()),
+        };
+        let run = run_one(built, &self.integrator, true, &mut Progress::silent())?;
+        let what = format!(
+            "compliant 3-D peg held by a compliant wrist, {which}: lateral error {} m, angular \
+             error {} deg, precession {} rad/s, spin {} rad/s",
+            point.lateral, point.angular_deg, point.precession, point.spin
+        );
+        crate::scene::shared::replay::write(ctx, &replay::insertion(ctx.name(), &what, &run)?)
     }
 }
 

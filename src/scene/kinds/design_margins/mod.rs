@@ -28,13 +28,14 @@
 //! `<name>.svg` (the success region: simulated outcome per grid point with
 //! the capture rule's boundaries) and `<name>_nojam.svg` (Whitney's no-jam
 //! region at several depths with the wrist's load ratio, and the margin
-//! against depth).
+//! against depth) and the replay page `<name>.html` of one run ([`replay`]).
 
 pub mod chamfer;
 pub mod depth;
 pub mod design;
 mod figures;
 pub mod ranges;
+pub mod replay;
 pub mod report;
 
 pub use design::{Design, DesignScene, GridRun, GridTable, Point};
@@ -47,6 +48,7 @@ use crate::scene::kind::{Kind, Scene};
 use crate::scene::limits::WorkItem;
 use crate::scene::numbers::significant;
 use crate::scene::shared::compliant_peg_3d::ranges as peg_3d;
+use crate::scene::shared::replay::RunChoice;
 use crate::scene::summary::RunSummary;
 
 /// Registry entry.
@@ -100,14 +102,17 @@ impl Scene for Design {
     }
 
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
+        let page = self.scene.replay.wanted(ctx);
+        let choice = self.scene.replay.run.unwrap_or(RunChoice::Nominal);
+        let track = page && choice == RunChoice::Nominal;
         let (nominal, grid) = {
             let progress = &mut ctx.progress;
             rayon::join(
-                || depth::nominal(&self.nominal, &self.integrator),
+                || depth::nominal(&self.nominal, &self.integrator, track),
                 || self.run_grid(progress),
             )
         };
-        let nominal = nominal?;
+        let (nominal, nominal_run) = nominal?;
         let rows = grid?;
         report::write_grid(ctx, &rows)?;
         let table = depth::table(
@@ -122,6 +127,9 @@ impl Scene for Design {
         let mut metrics = report::analytic_metrics(self);
         metrics.extend(nominal.metrics(&self.nominal.params, self.scene.peg.clearance_ratio));
         metrics.extend(report::grid_metrics(&rows));
+        if page {
+            replay::write(self, ctx, choice, &rows, nominal_run)?;
+        }
         Ok(RunSummary {
             metrics,
             ..RunSummary::default()

@@ -8,6 +8,7 @@
 use serde::Deserialize;
 
 use super::tables::{CriteriaTable, PegTable, RobotTable, WristTable, held};
+use crate::scene::shared::replay::ReplayTable;
 use crate::compliant_peg_3d::Peg3dParams;
 use crate::compliant_peg_3d::insertion::{Held, Insertion, N_STATE};
 use crate::compliant_peg_3d::outcome::{
@@ -36,6 +37,9 @@ pub struct RccScene {
     pub criteria: CriteriaTable,
     /// `[integrator]`.
     pub integrator: IntegratorSpec,
+    /// `[replay]` (optional).
+    #[serde(default)]
+    pub replay: ReplayTable,
 }
 
 /// A validated held peg, ready to run.
