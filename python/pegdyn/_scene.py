@@ -233,6 +233,7 @@ class Result:
 
 
 def _result(summary: Dict[str, Any], name: str, kind: Optional[str] = None) -> Result:
+    files = summary.pop("files", None) or {}
     outputs = list(summary["outputs"])
     tables: Dict[str, Dict[str, Any]] = summary["tables"] or {}
     if summary["tables"] is None:
@@ -266,5 +267,5 @@ def _result(summary: Dict[str, Any], name: str, kind: Optional[str] = None) -> R
         text=summary["text"],
         paths=outputs,
         kind=kind,
-        _page=next((b for f, b in (summary.get("files") or {}).items() if f.endswith(".html")), None),
+        _page=next((b for f, b in files.items() if f.endswith(".html")), None),
     )
