@@ -24,6 +24,10 @@ class NonFiniteWarning(RuntimeWarning):
 def _first_bad(a: np.ndarray, rows: Optional[np.ndarray]) -> Optional[Tuple[int, int, int]]:
     """(row, column, count) of the first non-finite entry of the 2-D array
     `a` among `rows` (a boolean row selection, None for all)."""
+    if np.isfinite(a.sum()):
+        # A NaN or an infinity reaches the sum: a finite sum has none (one
+        # fast pass; an overflowing sum falls through to the exact count).
+        return None
     bad = ~np.isfinite(a)
     if rows is not None:
         bad &= rows[:, None]
@@ -168,7 +172,7 @@ class Function:
                 r, c, count = hit
                 name, entry = self._output_at(c)
                 message = (
-                    f"{self.path}: output `{name}`{entry} is {_entry(flat, r, c)} at row {r} from finite"
+                    f"{self.path}: output `{name}{entry}` is {_entry(flat, r, c)} at row {r} from finite"
                     f" inputs ({count} non-finite output entr{'y' if count == 1 else 'ies'}): the point is"
                     " outside the model's domain or overflows"
                 )
