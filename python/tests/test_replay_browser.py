@@ -269,6 +269,34 @@ def test_without_webgl_the_page_says_so_and_the_timeline_works(playwright, pages
         b.close()
 
 
+def test_the_notebook_iframe_runs_the_page(browser, tmp_path):
+    """`Result._repr_html_()` as Jupyter shows it: the page in a sandboxed
+    iframe (scripts allowed, no same-origin) loads, draws and jumps."""
+    import pegdyn
+
+    text = (ROOT / "scenes" / "insert_compliant.toml").read_text().replace("t_end = 0.3 ", "t_end = 0.05")
+    shown = pegdyn.loads(text, "notebook").run()._repr_html_()
+    cell = tmp_path / "cell.html"
+    cell.write_text(f"<!DOCTYPE html><html><body><h1>a notebook cell</h1>{shown}</body></html>")
+    context = browser.new_context(viewport=VIEWPORT)
+    errors = []
+    page = context.new_page()
+    page.on("console", lambda m: m.type == "error" and errors.append(m.text))
+    try:
+        page.goto(cell.as_uri())
+        frame = page.frame_locator("iframe")
+        inner = next(f for f in page.frames if f != page.main_frame)
+        inner.wait_for_function("window.pegdynReplay && window.pegdynReplay.ready")
+        assert inner.evaluate("pegdynReplay.webgl")
+        inner.wait_for_function("pegdynReplay.renders > 0")
+        marks = inner.evaluate("pegdynReplay.marks")
+        frame.locator(f'#events button[data-index="{len(marks) - 1}"]').click()
+        assert inner.evaluate("pegdynReplay.time") == marks[-1]["t"]
+        assert errors == [], errors
+    finally:
+        context.close()
+
+
 def write_shots(out: Path):
     """Screenshots of the shipped insert_rcc, close up: the whole page at the
     two-point contact, and the view one frame after each pair's first

@@ -77,7 +77,10 @@ fn pegdyn_run_writes_the_page_unless_told_not_to() {
     let out_s = out.to_string_lossy().into_owned();
     let stdout = run_cli(&["run", &scene, "--out", &out_s, "-q"]);
     let page = out.join(page_name("tilted"));
-    assert!(stdout.contains(&format!("wrote {}", page.display())), "{stdout}");
+    assert!(
+        stdout.contains(&format!("wrote {}", page.display())),
+        "{stdout}"
+    );
     let html = std::fs::read_to_string(&page).expect("the page is written");
     assert!(html.starts_with("<!DOCTYPE html>"), "{}", &html[..40]);
     assert!(html.contains("compliant planar peg pushed in from a two-point start"));
@@ -113,7 +116,10 @@ fn a_run_in_memory_keeps_the_same_page_and_a_sweep_run_makes_none() {
     let files = ctx.sink().take_files();
     assert_eq!(files.len(), 1);
     assert_eq!(files[0].file, page_name("mem"));
-    assert!(files[0].bytes == on_disk, "the page in memory differs from the file");
+    assert!(
+        files[0].bytes == on_disk,
+        "the page in memory differs from the file"
+    );
 
     let mut ctx = RunContext::new(Sink::memory("mem", Keep::Nothing), Progress::silent());
     assert!(!ctx.replay_wanted());
@@ -138,7 +144,8 @@ fn a_grid_kind_shows_the_run_replay_run_picks() {
     // Default "worst": nothing seats in 40 ms, so the first point.
     let worst = page_in_memory(&tiny_grid(|_| {}));
     assert!(
-        worst.contains("grid point 0 (the first that did not seat)") && worst.contains("spin 0 rad/s"),
+        worst.contains("grid point 0 (the first that did not seat)")
+            && worst.contains("spin 0 rad/s"),
         "worst"
     );
     let second = page_in_memory(&tiny_grid(|t| set(t, "replay.run", 1)));
@@ -147,7 +154,10 @@ fn a_grid_kind_shows_the_run_replay_run_picks() {
         "index 1"
     );
     let nominal = page_in_memory(&tiny_grid(|t| set(t, "replay.run", "nominal")));
-    assert!(nominal.contains("the [robot] table's run"), "nominal");
+    assert!(
+        nominal.contains("the nominal run (the [robot] table as written)"),
+        "nominal"
+    );
     assert_ne!(worst, second);
 }
 
@@ -160,16 +170,25 @@ fn a_bad_replay_table_is_refused_naming_the_field() {
         }
     };
     let e = refused(&tiny_grid(|t| set(t, "replay.run", 2)));
-    assert!(e.contains("replay.run") && e.contains("2 points") && e.contains("0 to 1"), "{e}");
+    assert!(
+        e.contains("replay.run") && e.contains("2 points") && e.contains("0 to 1"),
+        "{e}"
+    );
     let e = refused(&tiny_grid(|t| set(t, "replay.run", "best")));
-    assert!(e.contains("replay.run") && e.contains("\"worst\", \"nominal\""), "{e}");
+    assert!(
+        e.contains("replay.run") && e.contains("\"worst\", \"nominal\""),
+        "{e}"
+    );
     let e = refused(&tiny_grid(|t| set(t, "replay.run", -1)));
     assert!(e.contains("replay.run") && e.contains("-1"), "{e}");
     let e = refused(&tiny_grid(|t| set(t, "replay.page", "yes")));
     assert!(e.contains("replay.page"), "{e}");
     // A kind of one run chooses none.
     let e = refused(&planar(|t| set(t, "replay.run", 0)));
-    assert!(e.contains("replay.run") && e.contains("unknown field"), "{e}");
+    assert!(
+        e.contains("replay.run") && e.contains("unknown field"),
+        "{e}"
+    );
     let e = refused(&planar(|t| set(t, "replay.colour", "red")));
     assert!(e.contains("replay.colour"), "{e}");
 }

@@ -40,12 +40,12 @@ use crate::compliant_peg_3d::outcome::{CountCache, transition_events};
 use crate::compliant_peg_3d::{Peg3dParams, pose_state};
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::integrate::EventHit;
+use crate::output::names::Part;
+use crate::output::plot::{Figure, Panel, Series};
 use crate::replay::{
     self,
     peg3d::{Meaning, Run3d},
 };
-use crate::output::names::Part;
-use crate::output::plot::{Figure, Panel, Series};
 use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::DefaultMethod;
@@ -246,7 +246,8 @@ impl Scene for Ready {
                 .push(Metric::new(format!("{} ({})", r.what, r.state), r.t, "s"));
         }
         if self.scene.replay.wanted(ctx) {
-            let meaning = |e: &EventHit<N_STATE>| what.get(e.index).map(|w| Meaning::Transition(*w));
+            let meaning =
+                |e: &EventHit<N_STATE>| what.get(e.index).map(|w| Meaning::Transition(*w));
             let page = replay::peg3d::page(&Run3d {
                 title: ctx.name(),
                 subtitle: "compliant 3-D peg released leaning on the mouth, spinning, under an \

@@ -117,7 +117,7 @@ struct Ready {
     scene: SweepScene,
     points: Vec<(Point, Built)>,
     /// The `[robot]` table's own run, when `replay.run = "nominal"`.
-    nominal: Option<(Point, Built)>,
+    nominal: Option<Built>,
     integrator: IntegratorSpec,
     method_reason: &'static str,
 }
@@ -189,7 +189,7 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
                 precession: r.precession_rate,
                 spin: r.spin_rate,
             };
-            Some((p, s.as_rcc(&p).build()?))
+            Some(s.as_rcc(&p).build()?)
         }
         _ => None,
     };
@@ -349,31 +349,30 @@ impl Scene for Ready {
             "",
         ));
         if self.scene.replay.wanted(ctx) {
-            self.page(ctx, &rows)?;
+            let outcomes: Vec<(bool, f64)> = rows.iter().map(|r| (r.seated, r.end)).collect();
+            let describe = |p: &Point| {
+                format!(
+                    "lateral error {} m, angular error {} deg, precession {} rad/s, spin {} rad/s",
+                    p.lateral, p.angular_deg, p.precession, p.spin
+                )
+            };
+            let spec = &self.integrator;
+            let nominal = || {
+                let run = |b| run_one(b, spec, true, &mut Progress::silent());
+                self.nominal.as_ref().map(run).transpose()
+            };
+            let choice = self.scene.replay.run.unwrap_or(RunChoice::Worst);
+            replay::write_grid(
+                ctx,
+                choice,
+                &outcomes,
+                &self.points,
+                describe,
+                spec,
+                nominal,
+            )?;
         }
         Ok(out)
-    }
-}
-
-impl Ready {
-    /// Writes the replay page of the run `replay.run` picks (default the
-    /// worst), integrated again with its contact transitions tracked.
-    fn page(&self, ctx: &RunContext, rows: &[Row]) -> Result<(), RunError> {
-        let outcomes: Vec<(bool, f64)> = rows.iter().map(|r| (r.seated, r.end)).collect();
-        let choice = self.scene.replay.run.unwrap_or(RunChoice::Worst);
-        let ((point, built), which) = match (choice.pick(&outcomes), &self.nominal) {
-            (Some((k, why)), _) => (&self.points[k], format!("grid point {k} ({why})")),
-            (None, Some(nominal)) => (nominal, "the [robot] table's run".to_string()),
-            // "worst" on an empty grid, which validation refuses.
-            (None, None) => return Ok(()),
-        };
-        let run = run_one(built, &self.integrator, true, &mut Progress::silent())?;
-        let what = format!(
-            "compliant 3-D peg held by a compliant wrist, {which}: lateral error {} m, angular \
-             error {} deg, precession {} rad/s, spin {} rad/s",
-            point.lateral, point.angular_deg, point.precession, point.spin
-        );
-        crate::scene::shared::replay::write(ctx, &replay::insertion(ctx.name(), &what, &run)?)
     }
 }
 

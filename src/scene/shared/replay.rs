@@ -8,8 +8,8 @@
 //! run = "worst"         # rotation_assist, design_margins: "worst" | "nominal" | a grid index
 //! ```
 
-use serde::de::{self, Deserializer, Unexpected, Visitor};
 use serde::Deserialize;
+use serde::de::{self, Deserializer, Unexpected, Visitor};
 
 use crate::error::{RunError, SceneError};
 use crate::output::names::Part;
@@ -58,7 +58,8 @@ pub enum RunChoice {
 
 impl RunChoice {
     /// The words a scene writes for this choice.
-    pub const NAMES: &'static str = "\"worst\", \"nominal\" or a grid index (0 for the CSV's first row)";
+    pub const NAMES: &'static str =
+        "\"worst\", \"nominal\" or a grid index (0 for the CSV's first row)";
 
     /// Checks a grid index against the grid's `points`.
     ///

@@ -9,11 +9,11 @@ use crate::compliant_peg_3d::outcome::Outcome;
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::scene::integrator::{DefaultMethod, IntegratorSpec};
 use crate::scene::progress::{Progress, par_map_counted};
-use crate::scene::shared::replay::GridReplayTable;
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, run_one};
 use crate::scene::shared::compliant_peg_3d::tables::{
     CriteriaTable, PegTable, RobotTable, WristTable,
 };
+use crate::scene::shared::replay::GridReplayTable;
 use crate::scene::validate::Checker;
 
 /// The `[grid]` table.

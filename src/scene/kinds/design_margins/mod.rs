@@ -28,14 +28,14 @@
 //! `<name>.svg` (the success region: simulated outcome per grid point with
 //! the capture rule's boundaries) and `<name>_nojam.svg` (Whitney's no-jam
 //! region at several depths with the wrist's load ratio, and the margin
-//! against depth) and the replay page `<name>.html` of one run ([`replay`]).
+//! against depth) and the replay page `<name>.html` of one run:
+//! `replay.run = "nominal"` (default), `"worst"` or a grid index.
 
 pub mod chamfer;
 pub mod depth;
 pub mod design;
 mod figures;
 pub mod ranges;
-pub mod replay;
 pub mod report;
 
 pub use design::{Design, DesignScene, GridRun, GridTable, Point};
@@ -48,6 +48,7 @@ use crate::scene::kind::{Kind, Scene};
 use crate::scene::limits::WorkItem;
 use crate::scene::numbers::significant;
 use crate::scene::shared::compliant_peg_3d::ranges as peg_3d;
+use crate::scene::shared::compliant_peg_3d::replay;
 use crate::scene::shared::replay::RunChoice;
 use crate::scene::summary::RunSummary;
 
@@ -128,7 +129,22 @@ impl Scene for Design {
         metrics.extend(nominal.metrics(&self.nominal.params, self.scene.peg.clearance_ratio));
         metrics.extend(report::grid_metrics(&rows));
         if page {
-            replay::write(self, ctx, choice, &rows, nominal_run)?;
+            let outcomes: Vec<(bool, f64)> = rows.iter().map(|r| (r.seated(), r.end)).collect();
+            let describe = |p: &Point| {
+                format!(
+                    "compliance centre's lateral error {} m, angular error {} deg",
+                    p.centre_lateral, p.angular_deg
+                )
+            };
+            replay::write_grid(
+                ctx,
+                choice,
+                &outcomes,
+                &self.points,
+                describe,
+                &self.integrator,
+                || Ok(nominal_run),
+            )?;
         }
         Ok(RunSummary {
             metrics,

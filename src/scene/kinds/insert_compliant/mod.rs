@@ -449,7 +449,13 @@ impl Ready {
         };
         write_outputs(ctx, &sample, &sol, &mut out)?;
         if self.scene.replay.wanted(ctx) {
-            replay::write(ctx, &self.scene.insert_compliant, &self.built, &sol, &sample)?;
+            replay::write(
+                ctx,
+                &self.scene.insert_compliant,
+                &self.built,
+                &sol,
+                &sample,
+            )?;
         }
         Ok(out)
     }

@@ -8,7 +8,6 @@
 use serde::Deserialize;
 
 use super::tables::{CriteriaTable, PegTable, RobotTable, WristTable, held};
-use crate::scene::shared::replay::ReplayTable;
 use crate::compliant_peg_3d::Peg3dParams;
 use crate::compliant_peg_3d::insertion::{Held, Insertion, N_STATE};
 use crate::compliant_peg_3d::outcome::{
@@ -19,6 +18,7 @@ use crate::integrate::{Solution, StopReason};
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::numbers::significant;
 use crate::scene::progress::Progress;
+use crate::scene::shared::replay::ReplayTable;
 use crate::scene::simulate::{describe_stop, integrate};
 use crate::scene::validate::Checker;
 use crate::system::ModelError;
