@@ -34,21 +34,23 @@ use std::error::Error;
 use std::path::PathBuf;
 
 fn main() -> Result<(), Box<dyn Error>> {
-    let mut args = std::env::args().skip(1);
+    // Paths need not be UTF-8: arguments are taken as the OS gives them.
+    let mut args = std::env::args_os().skip(1);
     let mut scene = None;
     let mut out = PathBuf::from("out");
     while let Some(a) = args.next() {
-        match a.as_str() {
-            "--out" => out = PathBuf::from(args.next().ok_or("--out needs a directory")?),
-            _ => scene = Some(PathBuf::from(a)),
+        if a == "--out" {
+            out = PathBuf::from(args.next().ok_or("--out needs a directory")?);
+        } else {
+            scene = Some(PathBuf::from(a));
         }
     }
     let path = scene.ok_or("usage: replay SCENE.toml [--out DIR]")?;
     let name = path
         .file_stem()
-        .and_then(|s| s.to_str())
         .ok_or("scene name")?
-        .to_string();
+        .to_string_lossy()
+        .into_owned();
     let text = std::fs::read_to_string(&path)?;
     let doc = Document::parse(&text).map_err(|e| e.to_string())?;
     let replay = match doc.kind() {

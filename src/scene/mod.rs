@@ -52,7 +52,7 @@ pub mod validate;
 pub use context::RunContext;
 pub use document::Document;
 pub use integrator::{IntegratorSpec, Method};
-pub use kind::{Kind, Scene};
+pub use kind::{Kind, Scene, Written};
 pub use kinds::KINDS;
 pub use loader::{LoadedScene, load, load_with, parse, parse_named, parse_named_with};
 pub use numbers::significant;

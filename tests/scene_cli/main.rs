@@ -4,6 +4,8 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod bounded_work;
 mod cli;
 mod fuzz;
 mod hostile_scenes;
+mod run_record;

@@ -28,8 +28,8 @@
 //! ```
 //!
 //! Writes `<name>.csv` (time series, see [`output`]),
-//! `<name>_events.csv`, `<name>.svg` (forces and contact state against
-//! time) and `<name>_views.svg` (side and top views at each transition).
+//! `<name>.events.csv`, `<name>.svg` (forces and contact state against
+//! time) and `<name>.views.svg` (side and top views at each transition).
 
 use serde::Deserialize;
 
@@ -43,7 +43,7 @@ use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::integrator::IntegratorSpec;
-use crate::scene::kind::{Kind, Scene};
+use crate::scene::kind::{Kind, Scene, Written};
 use crate::scene::ranges::FieldRange;
 use crate::scene::shared::compliant_peg_3d::tables::PegTable;
 use crate::scene::shared::compliant_peg_3d::{output, ranges};
@@ -132,7 +132,7 @@ struct Ready {
     method_reason: &'static str,
 }
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: DropScene = doc.body()?;
     let mut c = Checker::default();
     let params = s.peg.build(&mut c);
@@ -160,11 +160,17 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
     }))
 }
 
-impl Scene for Ready {
+impl Written for Ready {
     fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
         self.scene.integrator.work("integrator")
     }
 
+    fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        Ok(self)
+    }
+}
+
+impl Scene for Ready {
     fn describe(&self) -> String {
         let d = &self.scene.drop;
         format!(
