@@ -14,6 +14,7 @@ use pyo3::types::{PyDict, PyList};
 
 use pegdyn::integrate::Interrupt;
 use pegdyn::output::memory::{Keep, Table};
+use pegdyn::output::record::{Origin, RunRecord};
 use pegdyn::output::sink::Sink;
 use pegdyn::scene::limits::LimitOverrides;
 use pegdyn::scene::{self, Progress, RunContext, RunSummary};
@@ -134,7 +135,7 @@ pub fn run_text(
         Ok(s) => s,
         Err(e) => return Outcome::Invalid(e),
     };
-    let sink = match out {
+    let (sink, record) = match out {
         Output::Dir(dir) => {
             if let Err(e) = std::fs::create_dir_all(&dir) {
                 return Outcome::Failed(format!(
@@ -142,13 +143,41 @@ pub fn run_text(
                     dir.display()
                 ));
             }
-            Sink::directory(dir, &loaded.name)
+            // Recorded as `pegdyn run` records it: `running` before any
+            // output is replaced, then how the run ended.
+            let scene = PathBuf::from(format!("(scene text given to Python, named {name})"));
+            let origin = Origin {
+                scene: &scene,
+                text: text.as_bytes(),
+                command: std::env::args_os().collect(),
+                out: &dir,
+            };
+            let record = match RunRecord::start(&dir, &loaded.name, &origin) {
+                Ok((record, _)) => record,
+                Err(e) => return Outcome::Failed(e.to_string()),
+            };
+            (Sink::directory(&dir, &loaded.name), Some(record))
         }
         // Nothing is written: the summary lists no path.
-        Output::Memory(keep) => Sink::memory(&loaded.name, keep),
+        Output::Memory(keep) => (Sink::memory(&loaded.name, keep), None),
     };
     let mut ctx = RunContext::new(sink, Progress::silent().with_interrupt(stop.clone()));
-    match loaded.run(&mut ctx) {
+    let result = loaded.run(&mut ctx);
+    if let Some(record) = record {
+        let status = match &result {
+            Ok(s) if s.success() => "ok".to_owned(),
+            Ok(s) => format!(
+                "partial: integration stopped early: {}",
+                s.integration.as_ref().map_or("", |i| i.stop.as_str())
+            ),
+            Err(pegdyn::error::RunError::Interrupted) => "interrupted: KeyboardInterrupt".into(),
+            Err(e) => format!("failed: {e}"),
+        };
+        // The outputs are complete either way; a manifest that cannot be
+        // written leaves the earlier one, which said `running`.
+        let _ = record.finish(status, &ctx.sink().written());
+    }
+    match result {
         Ok(s) => Outcome::Done(s, ctx.into_sink().into_tables()),
         Err(e) => Outcome::Failed(e.to_string()),
     }

@@ -342,7 +342,7 @@ mod tests {
             w.row(&[0.0, 1.0]).unwrap();
             let e = w.row(&[0.1, f64::NAN]).unwrap_err().to_string();
             assert!(
-                e.contains("n_x.csv") && e.contains("x_m") && e.contains("NaN"),
+                e.contains("n.x.csv") && e.contains("x_m") && e.contains("NaN"),
                 "{e}"
             );
             assert_eq!(w.rows(), 1);
@@ -375,8 +375,8 @@ mod tests {
             sink.written(),
             [
                 dir.join("s.csv"),
-                dir.join("s_note.txt"),
-                dir.join("s_fig.svg")
+                dir.join("s.note.txt"),
+                dir.join("s.fig.svg")
             ]
         );
         assert_eq!(

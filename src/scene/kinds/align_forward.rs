@@ -310,6 +310,7 @@ impl Scene for AlignForwardScene {
         options.output = OutputMode::AtTimes(spec.try_output_times()?);
         let x0 = self.initial_state();
         ctx.progress.set_span(spec.t0, spec.t_end);
+        let interrupt = ctx.progress.interrupt().clone();
         let progress = &mut ctx.progress;
         let tr = simulate_with_progress(
             &model,
@@ -318,7 +319,9 @@ impl Scene for AlignForwardScene {
             method,
             &options,
             &mut |t| progress.update(t),
+            Some(&interrupt),
         )?;
+        ctx.progress.check_interrupt()?;
         let header = [
             "t", "gamma", "psi", "gammadot", "psidot", "N_K", "N_B1", "N_B2",
         ];

@@ -264,6 +264,7 @@ pub fn run(
         )?
     };
     ctx.progress.finish();
+    ctx.progress.check_interrupt()?;
     let whitney = whitney_parallelogram(&setup.spec.peg, setup.depth)?;
 
     let header = [
