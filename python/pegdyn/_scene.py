@@ -87,8 +87,9 @@ class Scene:
         """Runs the scene and returns a :class:`Result`.
 
         ``out``: a directory to write ``<name>.csv``, ``<name>.svg`` (and
-        the scene's other files) into, as ``pegdyn run --out`` does; the
-        paths are in ``Result.paths``. Without it nothing is written: the
+        the scene's other files, ``<name>.<part>.<ext>``) into, with the
+        run manifest ``<name>.run.toml``, as ``pegdyn run --out`` does; the
+        paths are in ``Result.paths`` (the manifest is not among them). Without it nothing is written: the
         tables are kept in memory (the same numbers the files would hold,
         bit for bit) and figures are not drawn (only checked, so a run
         fails the same way as with files).

@@ -11,7 +11,7 @@ use crate::integrate::Interrupt;
 
 /// Progress reporter handed to a running scene via its run context; it
 /// also carries the run's stop request ([`Interrupt`]), which the
-/// integrations of the run ([`crate::scene::simulate`]) and its loops over
+/// integrations of the run (`scene::simulate`) and its loops over
 /// many runs ([`par_map_counted`]) look at.
 #[derive(Debug)]
 pub struct Progress {

@@ -34,6 +34,7 @@ use crate::output::plot::Figure;
 use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::kind::{Kind, Scene, Written};
+use crate::scene::limits::try_with_capacity;
 use crate::scene::summary::{Metric, RunSummary};
 use crate::scene::validate::Checker;
 use sweep::SweepParams;
@@ -195,6 +196,22 @@ impl Scene for JammingScene {
 
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
         let p = &self.jamming;
+        // The tables' rows (eight corners per point) and the sweep's runs,
+        // reserved first: with limits raised past the machine a typed
+        // error, not an aborted process.
+        let points = p.c.len() * p.mu.len() * p.l_m.len();
+        drop(try_with_capacity::<table::CornerRow>(
+            points.saturating_mul(8),
+            "grid points",
+            "max_grid_points",
+        )?);
+        if let Some(s) = &self.sweep {
+            drop(try_with_capacity::<crate::jamming::dynamic::DynamicPoint>(
+                s.n.saturating_mul(s.n).saturating_mul(2),
+                "sweep runs",
+                "max_runs",
+            )?);
+        }
         let corners = table::corner_rows(p.r_m, &p.c, &p.mu, &p.l_m)?;
         let wedging = table::wedging_rows(p.r_m, &p.c, &p.mu)?;
 
