@@ -264,7 +264,7 @@ pub enum RunError {
     /// Memory for a result whose size the scene sets could not be
     /// reserved (the limits were raised past what the machine has).
     #[error(transparent)]
-    Memory(#[from] crate::scene::limits::ReserveError),
+    Memory(#[from] crate::scene::reserve::ReserveError),
 }
 
 impl From<crate::rigid_peg::trajectory::ForwardError> for RunError {
