@@ -4,6 +4,7 @@
 //! ```text
 //! cargo run --release -p pegdyn-benches --bin fuzz_scenes -- parse 10    # target, minutes
 //! cargo run --release -p pegdyn-benches --bin fuzz_scenes -- run 10
+//! cargo run --release -p pegdyn-benches --bin fuzz_scenes -- run3d 10  # the 3-D kinds
 //! ```
 //!
 //! A panic, a finding of the target's property, or a case that takes more
@@ -27,10 +28,16 @@ fn main() {
     let target = args.first().map_or("parse", String::as_str).to_owned();
     let minutes: f64 = args.get(1).and_then(|m| m.parse().ok()).unwrap_or(1.0);
     let seed: u64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(20261124);
-    if target != "parse" && target != "run" {
-        eprintln!("usage: fuzz_scenes parse|run [MINUTES] [SEED]");
+    if !["parse", "run", "run3d"].contains(&target.as_str()) {
+        eprintln!("usage: fuzz_scenes parse|run|run3d [MINUTES] [SEED]");
         std::process::exit(2);
     }
+    let scenes = fuzz::shipped_scenes().len();
+    if scenes == 0 {
+        eprintln!("fuzz_scenes: no shipped scene found under scenes/");
+        std::process::exit(2);
+    }
+    eprintln!("fuzz_scenes: mutating the {scenes} shipped scenes");
     let mut seed_bytes = [0u8; 32];
     seed_bytes[..8].copy_from_slice(&seed.to_le_bytes());
     let mut runner = TestRunner::new_with_rng(
@@ -66,8 +73,11 @@ fn main() {
                 "fuzz".to_owned(),
                 tree.map(|t| t.current()).unwrap_or_default(),
             )
-        } else {
+        } else if target == "run" {
             let tree = fuzz::extreme_scene().new_tree(&mut runner);
+            tree.map(|t| t.current()).unwrap_or_default()
+        } else {
+            let tree = fuzz::extreme_3d_scene().new_tree(&mut runner);
             tree.map(|t| t.current()).unwrap_or_default()
         };
         if let Ok(mut c) = current.lock() {

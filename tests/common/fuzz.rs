@@ -17,9 +17,14 @@ use std::path::{Path, PathBuf};
 
 use proptest::prelude::*;
 
-/// The shipped scenes, `(name, text)`.
+/// The shipped scenes, `(name, text)`: `scenes/` of the crate that
+/// includes this file (pegdyn, or the benches crate one level below it).
 pub fn shipped_scenes() -> Vec<(String, String)> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let dir = [root.join("scenes"), root.join("../scenes")]
+        .into_iter()
+        .find(|d| d.is_dir())
+        .unwrap_or_default();
     let mut out: Vec<(String, String)> = std::fs::read_dir(&dir)
         .map(|d| {
             d.filter_map(Result::ok)
@@ -207,6 +212,59 @@ pub fn extreme_scene() -> impl Strategy<Value = (String, String)> {
             (name, text)
         })
 }
+
+/// The kinds of the compliant 3-D peg, whose scenes [`extreme_3d_scene`]
+/// draws from.
+pub const KINDS_3D: [&str; 4] = ["drop_3d", "insert_rcc", "rotation_assist", "design_margins"];
+
+/// A valid-but-extreme scene of a 3-D kind: a shipped scene of one of
+/// [`KINDS_3D`] with one to three of its numbers changed, each either
+/// scaled by a factor log-uniform over `1e-3 ... 1e3` (most such scenes
+/// pass `check` and run: corners of the valid ranges) or, one time in
+/// five, replaced by a value log-uniform over 600 decades with a random
+/// sign; with [`RUN_LIMITS_3D`].
+pub fn extreme_3d_scene() -> impl Strategy<Value = (String, String)> {
+    let scenes: Vec<(String, String)> = shipped_scenes()
+        .into_iter()
+        .filter(|(_, text)| {
+            KINDS_3D
+                .iter()
+                .any(|k| text.contains(&format!("kind = \"{k}\"")))
+        })
+        .collect();
+    let n = scenes.len().max(1);
+    let change = (
+        any::<usize>(),
+        -3.0..3.0f64,
+        proptest::option::weighted(0.2, extreme()),
+    );
+    (0..n, proptest::collection::vec(change, 1..=3)).prop_map(move |(k, changes)| {
+        let (name, text) = scenes.get(k).cloned().unwrap_or_default();
+        let spans = number_spans(&text);
+        let mut with: Vec<Option<String>> = vec![None; spans.len()];
+        if !spans.is_empty() {
+            for (at, decades, wild) in changes {
+                let i = at % spans.len();
+                let (s, e) = spans[i];
+                let scaled = text[s..e]
+                    .replace('_', "")
+                    .parse::<f64>()
+                    .ok()
+                    .map(|v| v * 10f64.powf(decades));
+                with[i] = wild.or(scaled).map(literal);
+            }
+        }
+        let mut text = replace_spans(&text, &spans, &with);
+        text = text.replace("[integrator]\n", "[integrator]\nmax_steps = 4000\n");
+        text.push_str(RUN_LIMITS_3D);
+        (name, text)
+    })
+}
+
+/// The `[limits]` of the 3-D target: room for the shipped grids (16 and
+/// 26 insertions), each run cut at 4,000 steps (a cut run still writes its
+/// outputs and summary, which are what is checked).
+pub const RUN_LIMITS_3D: &str = "\n[limits]\nmax_output_samples = 20000\nmax_steps = 4000\nmax_grid_points = 2000\nmax_runs = 40\n";
 
 /// The parser and validator answer any text with `Ok` or typed errors
 /// that name a field or a place (a panic fails the caller).
