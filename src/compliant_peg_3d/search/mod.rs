@@ -33,6 +33,31 @@ use nalgebra::SVector;
 pub use certified::{Angles, MAX_MINIMA, Work};
 use profile::Problem;
 
+/// The minimum at `a` (from the profile) as a root of the generated
+/// function's own `g′`: one Newton step on the generated derivatives, kept
+/// when it is short (`10⁻⁹` rad) and lowers `|g′|`. The two agree to
+/// rounding; the step makes a contact of a symmetric pose lie exactly on
+/// the plane of symmetry, as the generated derivative says. Returns the
+/// angle and the generated outputs there.
+fn polish(
+    pair: Pair,
+    x: &SVector<f64, 7>,
+    p: &SVector<f64, 16>,
+    a: f64,
+) -> (f64, super::contact::PairOut<f64>) {
+    let e = pair.eval(x, a, p);
+    if e.d1 != 0.0 && e.d2 > 0.0 {
+        let next = a - e.d1 / e.d2;
+        if (next - a).abs() < 1e-9 {
+            let en = pair.eval(x, next, p);
+            if en.d1.abs() < e.d1.abs() {
+                return (next.rem_euclid(std::f64::consts::TAU), en);
+            }
+        }
+    }
+    (a, e)
+}
+
 /// The contact search of the pairs, with the work its last call did.
 #[derive(Clone, Debug, Default)]
 pub struct Search {
@@ -82,7 +107,7 @@ impl Search {
         let axis = axis_of(x);
         let first = out.len();
         for &a in &minima {
-            let e = pair.eval(x, a, p);
+            let (a, e) = polish(pair, x, p, a);
             if e.gap < 0.0
                 && pair.valid(prm, &axis, &e.normal, &e.point, e.axial)
                 && pair.rim_faces_out(x, &e.normal, &e.point)
