@@ -15,11 +15,15 @@
 //! start to its end; it is found by Newton's method safeguarded by
 //! bisection on the sign of `h′`. Every other arc is halved. A local
 //! minimum `θ*` with `h(θ*) < T` has `h′(θ*) = 0` and `h″(θ*) ≥ 0`, so no
-//! arc containing it is dropped: it lies in a convex arc (found) or in an
-//! arc too short to halve ([`DEPTH`] halvings, about `10⁻¹³` rad), where it
-//! is found when `h′` changes sign across the arc (a minimum and a maximum
-//! closer than that, whose depths differ by less than `|h‴| 10⁻³⁹`, are
-//! below the resolution of `f64` and may be skipped). Neighbouring arcs
+//! arc containing it is dropped: it lies in a convex arc (found) or in a
+//! leaf, an arc too short to halve ([`DEPTH`] halvings, about `10⁻¹³`
+//! rad) or one on which `h′` is within its rounding allowance of zero
+//! (halving it would not narrow the slope's enclosure: a flat stretch,
+//! such as two minima and their col about to merge). In a leaf a minimum
+//! is found when `h′` changes sign from its start to its end; minima and
+//! maxima that alternate within one leaf, whose slopes are below the
+//! rounding of `h′`, are below the resolution of `f64` and may be found
+//! as one. Neighbouring arcs
 //! share their end points and evaluate `h′` there identically, so a sign
 //! change at a shared end is seen by one of them.
 
@@ -54,6 +58,12 @@ pub struct Work {
     pub points: usize,
     /// Arcs left unresolved by the budget (0 in a complete search).
     pub unresolved: usize,
+    /// The profile is constant: no isolated minimum (an aligned peg's rim
+    /// over a plane).
+    pub flat: bool,
+    /// No search: the pair was certified apart at an earlier pose that
+    /// this one is too close to for a contact.
+    pub cached: bool,
 }
 
 /// The enclosure's half-width for the arc `[lo, hi]` about `m`: the arc
@@ -63,10 +73,19 @@ fn half_width(lo: f64, hi: f64, m: f64) -> f64 {
     (hi - m).max(m - lo) * (1.0 + 4.0 * f64::EPSILON) + 1e-15
 }
 
-/// The zero of `h′` in `[lo, hi]` with `h′(lo) ≤ 0 ≤ h′(hi)`: Newton on
-/// `h′` with bisection whenever the step leaves the bracket or `h″ ≤ 0`.
-fn newton(prof: &Profile, mut lo: f64, mut hi: f64, work: &mut Work) -> f64 {
-    let mut a = 0.5 * (lo + hi);
+/// The zero of `h′` in `[lo, hi]`, `h′` increasing there, from the slopes
+/// `s_lo = h′(lo) ≤ 0 ≤ s_hi = h′(hi)`: Newton on `h′` from the end
+/// nearer the zero (by the slopes' sizes), with bisection whenever a step
+/// leaves the bracket or `h″ ≤ 0`. A zero at an end (a pose symmetric
+/// about that angle) is found in one step.
+fn newton(prof: &Profile, mut lo: f64, mut hi: f64, s_lo: f64, s_hi: f64, work: &mut Work) -> f64 {
+    if s_lo == 0.0 {
+        return lo;
+    }
+    if s_hi == 0.0 {
+        return hi;
+    }
+    let mut a = if -s_lo < s_hi { lo } else { hi };
     for _ in 0..100 {
         let (d1, d2) = prof.slope(a);
         work.points += 1;
@@ -78,15 +97,14 @@ fn newton(prof: &Profile, mut lo: f64, mut hi: f64, work: &mut Work) -> f64 {
         } else {
             lo = a;
         }
-        let step = d1 / d2;
-        let newton = a - step;
+        let newton = a - d1 / d2;
         let next = if d2 > 0.0 && newton > lo && newton < hi {
             newton
         } else {
             0.5 * (lo + hi)
         };
-        if (next - a).abs() <= 2.0 * f64::EPSILON * a.abs().max(1.0) || next == lo || next == hi {
-            return next;
+        if (next - a).abs() <= 2.0 * f64::EPSILON * a.abs().max(1.0) || next <= lo || next >= hi {
+            return next.clamp(lo, hi);
         }
         a = next;
     }
@@ -110,8 +128,9 @@ pub fn push(out: &mut Angles, a: f64) -> bool {
 pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
     let mut work = Work::default();
     if let Profile::Trig(f) = prof
-        && f.is_constant()
+        && f.f.is_constant()
     {
+        work.flat = true;
         return work;
     }
     let mut stack = arrayvec::ArrayVec::<(f64, f64, u32), { START + DEPTH as usize + 2 }>::new();
@@ -133,11 +152,11 @@ pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
         work.arcs += 1;
         let m = 0.5 * (lo + hi);
         let (s, c) = m.sin_cos();
-        let e = prof.enclose(c, s, half_width(lo, hi, m));
+        let e = prof.enclose(c, s, half_width(lo, hi, m), level);
         if e.value.lo >= level || e.d1.excludes_zero() || e.d2.hi < 0.0 {
             continue;
         }
-        let leaf = depth >= DEPTH || m <= lo || m >= hi;
+        let leaf = depth >= DEPTH || m <= lo || m >= hi || !e.refinable;
         if e.d2.lo > 0.0 || leaf {
             let (s_lo, _) = prof.slope(lo);
             // The circle's end is its start: one evaluation for both.
@@ -148,7 +167,7 @@ pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
             } else {
                 s_lo <= 0.0 && s_hi >= 0.0
             };
-            if found && !push(out, newton(prof, lo, hi, &mut work)) {
+            if found && !push(out, newton(prof, lo, hi, s_lo, s_hi, &mut work)) {
                 work.unresolved += 1;
             }
             continue;

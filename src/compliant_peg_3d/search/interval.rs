@@ -42,6 +42,17 @@ impl Iv {
         Iv::new(down(c - r), up(c + r))
     }
 
+    /// `max(|lo|, |hi|)`: the largest magnitude in the interval.
+    pub fn mag(self) -> f64 {
+        self.lo.abs().max(self.hi.abs())
+    }
+
+    /// The intersection with `o` (both contain the same quantity, so it is
+    /// not empty).
+    pub fn meet(self, o: Iv) -> Iv {
+        Iv::new(self.lo.max(o.lo), self.hi.min(o.hi))
+    }
+
     /// Whether the interval contains no zero.
     pub fn excludes_zero(self) -> bool {
         self.lo > 0.0 || self.hi < 0.0

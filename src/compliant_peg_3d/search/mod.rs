@@ -23,6 +23,7 @@
 pub mod certified;
 pub mod interval;
 pub mod profile;
+pub mod tori;
 pub mod trig;
 
 use super::contact::{ContactPoint, Contacts, Pair, axis_of};
@@ -58,11 +59,54 @@ fn polish(
     (a, e)
 }
 
-/// The contact search of the pairs, with the work its last call did.
+/// The gap up to which [`Search::find`] also finds the minima of a pair
+/// out of contact (m): their least gap is the clearance by which the pose
+/// may move before the pair can touch.
+pub const CLEARANCE: f64 = 1e-4;
+
+/// A pair certified apart at a pose: every point of the pair's circle has
+/// a gap of at least `margin` there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Clear {
+    pose: SVector<f64, 7>,
+    margin: f64,
+}
+
+/// A bound on how much any point's gap of `pair` changes from pose `a` to
+/// pose `b` (unit quaternions), `p` the parameter vector.
+///
+/// A body point `b_B` (body frame) moves by `|Δp| + |ΔR b_B| ≤ |Δp| +
+/// 2|Δq| |b_B|`: for unit quaternions with `q·q′ ≥ 0` (the sign of `q′`
+/// chosen), `|q − q′| = 2 sin(φ/4)` and `|ΔR b_B| = 2 sin(φ/2) |b_B| ≤
+/// 2|q − q′| |b_B|`, `φ` the rotation between them. A distance to a fixed
+/// set changes by at most its point's displacement, so the rim pairs'
+/// gaps change by at most `|Δp| + 2|Δq| √(ϱ² + (L/2 − ρ_p)²)`. The mouth
+/// edge's distance to the peg's axis line changes by at most the
+/// displacement of the line's point nearest to it, at axial distance at
+/// most `|m − p| ≤ R_m + |p − o|` (`o = −ρ_h e_z` the mouth's centre) from
+/// the centre of mass, in either pose.
+fn moved(pair: Pair, p: &SVector<f64, 16>, a: &SVector<f64, 7>, b: &SVector<f64, 7>) -> f64 {
+    let dp = (b.fixed_rows::<3>(0) - a.fixed_rows::<3>(0)).norm();
+    let (qa, qb) = (a.fixed_rows::<4>(3), b.fixed_rows::<4>(3));
+    let dq = (qb - qa).norm().min((qb + qa).norm());
+    let (r, len, rho_p, big_r, rho_h) = (p[0], p[1], p[2], p[3], p[4]);
+    let reach = match pair {
+        Pair::EdgeSide => {
+            let o = nalgebra::Vector3::new(a[0], a[1], a[2] + rho_h).norm();
+            big_r + rho_h + o + dp
+        }
+        _ => (r - rho_p).hypot(0.5 * len - rho_p),
+    };
+    (dp + 2.0 * dq * reach) * (1.0 + 1e-12)
+}
+
+/// The contact search of one pair: the work its last call did, and the
+/// clearance it certified.
 #[derive(Clone, Debug, Default)]
 pub struct Search {
     /// What the last search did (arcs visited, points evaluated).
     pub work: Work,
+    clear: Option<Clear>,
 }
 
 impl Search {
@@ -81,7 +125,8 @@ impl Search {
         let mut out = Angles::new();
         self.work = Work::default();
         match Problem::of(pair, x, p, below) {
-            Problem::Nothing | Problem::Closed(None) => {}
+            Problem::Nothing => {}
+            Problem::Closed(None) => self.work.flat = true,
             Problem::Closed(Some(a)) => {
                 certified::push(&mut out, a);
             }
@@ -95,6 +140,12 @@ impl Search {
     /// The penetrating, valid local minima of `pair`'s gap at pose `x`
     /// (unit quaternion), appended to `out` with the cols of
     /// [`merge::assign`].
+    ///
+    /// The search also finds the minima below [`CLEARANCE`]: when none
+    /// penetrates, their least gap (or `CLEARANCE`) bounds the gap of
+    /// every point of the circle from below, and later calls at poses
+    /// that moved less than that ([`moved`]) return at once with no
+    /// contact.
     pub fn find(
         &mut self,
         pair: Pair,
@@ -103,11 +154,22 @@ impl Search {
         p: &SVector<f64, 16>,
         out: &mut Contacts,
     ) {
-        let minima = self.minima(pair, x, p, 0.0);
+        if let Some(c) = self.clear
+            && moved(pair, p, &c.pose, x) < c.margin
+        {
+            self.work = Work {
+                cached: true,
+                ..Work::default()
+            };
+            return;
+        }
+        let minima = self.minima(pair, x, p, CLEARANCE);
         let axis = axis_of(x);
         let first = out.len();
+        let mut lowest = CLEARANCE;
         for &a in &minima {
             let (a, e) = polish(pair, x, p, a);
+            lowest = lowest.min(e.gap);
             if e.gap < 0.0
                 && pair.valid(prm, &axis, &e.normal, &e.point, e.axial)
                 && pair.rim_faces_out(x, &e.normal, &e.point)
@@ -127,6 +189,12 @@ impl Search {
                 }
             }
         }
+        // Apart (every minimum found, none below zero): certified clear.
+        let certain = self.work.unresolved == 0 && !self.work.flat;
+        self.clear = (certain && lowest > 0.0).then_some(Clear {
+            pose: *x,
+            margin: lowest * (1.0 - 1e-9),
+        });
         merge::assign(pair, x, p, &mut out[first..]);
     }
 }

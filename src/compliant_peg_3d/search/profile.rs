@@ -37,8 +37,8 @@
 //! In each case `g` is an increasing function of `h` wherever `g` is
 //! smooth, so the local minima of `g` are those of `h`, at the same angles.
 
-use super::interval::Iv;
-use super::trig::{Enclosure, Trig2};
+use super::tori;
+use super::trig::{Bounded, Enclosure, Trig2};
 use crate::compliant_peg_3d::contact::Pair;
 use nalgebra::SVector;
 
@@ -46,13 +46,13 @@ use nalgebra::SVector;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Profile {
     /// A trigonometric polynomial `h` of degree two.
-    Trig(Trig2),
+    Trig(Bounded),
     /// The rim against the mouth edge: `h = (√F − R_m)² + Z²`.
     Tori {
         /// `F = |c_xy|²` of the rim circle.
-        f: Trig2,
+        f: Bounded,
         /// `Z = c_z + ρ_h` of the rim circle (first harmonic only).
-        z: Trig2,
+        z: Bounded,
         /// `R_m = R + ρ_h` (m).
         rm: f64,
     },
@@ -171,13 +171,13 @@ impl Problem {
                     None => f64::INFINITY,
                 };
                 Problem::Search {
-                    h: Profile::Trig(f.neg()),
+                    h: Profile::Trig(f.neg().bounded()),
                     level,
                 }
             }
             Pair::EdgeSide => match positive(r + rho_h + below) {
                 Some(level) => Problem::Search {
-                    h: Profile::Trig(edge(x, p)),
+                    h: Profile::Trig(edge(x, p).bounded()),
                     level,
                 },
                 None => Problem::Nothing,
@@ -188,8 +188,8 @@ impl Problem {
                     z.a0 += rho_h;
                     Problem::Search {
                         h: Profile::Tori {
-                            f,
-                            z,
+                            f: f.bounded(),
+                            z: z.bounded(),
                             rm: big_r + rho_h,
                         },
                         level,
@@ -207,54 +207,21 @@ impl Profile {
         let (s, c) = t.sin_cos();
         match self {
             Profile::Trig(f) => {
-                let [_, d1, d2] = f.at(c, s);
+                let [_, d1, d2] = f.f.at(c, s);
                 (d1, d2)
             }
-            Profile::Tori { f, z, rm } => {
-                let [f0, f1, f2] = f.at(c, s);
-                let [z0, z1, z2] = z.at(c, s);
-                let rho = f0.sqrt();
-                let k = 1.0 - rm / rho;
-                (
-                    f1 * k + 2.0 * z0 * z1,
-                    f2 * k + rm * f1 * f1 / (2.0 * rho * rho * rho) + 2.0 * z1 * z1 + 2.0 * z0 * z2,
-                )
-            }
+            Profile::Tori { f, z, rm } => tori::slope(f, z, *rm, c, s),
         }
     }
 
     /// Enclosures of `h`, `h′`, `h″` over `|θ − m| ≤ w`, `(c, s)` the
-    /// cosine and sine of `m`. For the two tori, interval arithmetic on the
-    /// enclosures of `F` and `Z` (derivatives unbounded where `F` may
-    /// vanish).
-    pub fn enclose(&self, c: f64, s: f64, w: f64) -> Enclosure {
+    /// cosine and sine of `m` ([`Bounded::enclose`], [`tori::enclose`];
+    /// the derivatives may be left unbounded where the value is at least
+    /// `level`).
+    pub fn enclose(&self, c: f64, s: f64, w: f64, level: f64) -> Enclosure {
         match self {
             Profile::Trig(f) => f.enclose(c, s, w),
-            Profile::Tori { f, z, rm } => {
-                let fe = f.enclose(c, s, w);
-                let ze = z.enclose(c, s, w);
-                let rho = fe.value.sqrt();
-                let value = rho.plus(-rm).square().add(ze.value.square());
-                if fe.value.lo <= 0.0 {
-                    return Enclosure {
-                        value,
-                        d1: Iv::ALL,
-                        d2: Iv::ALL,
-                    };
-                }
-                // 1 − R_m/ρ and R_m/(2ρ³).
-                let k = rho.recip_times(*rm).scale(-1.0).plus(1.0);
-                let rho3 = rho.mul(rho).mul(rho);
-                let q = rho3.recip_times(0.5 * rm);
-                let d1 = fe.d1.mul(k).add(ze.value.mul(ze.d1).scale(2.0));
-                let d2 = fe
-                    .d2
-                    .mul(k)
-                    .add(fe.d1.square().mul(q))
-                    .add(ze.d1.square().scale(2.0))
-                    .add(ze.value.mul(ze.d2).scale(2.0));
-                Enclosure { value, d1, d2 }
-            }
+            Profile::Tori { f, z, rm } => tori::enclose(f, z, *rm, c, s, w, level),
         }
     }
 }

@@ -51,6 +51,10 @@ pub struct Enclosure {
     pub d1: Iv,
     /// Its second derivative.
     pub d2: Iv,
+    /// Whether a shorter arc can still narrow the slope's enclosure: false
+    /// once the part that shrinks with the arc is below the rounding
+    /// allowance (a flat stretch, such as two minima about to merge).
+    pub refinable: bool,
 }
 
 impl Trig2 {
@@ -98,13 +102,39 @@ impl Trig2 {
         ]
     }
 
+    /// The polynomial with the constants of its enclosures.
+    pub fn bounded(self) -> Bounded {
+        let (n1, n2) = self.amplitudes();
+        Bounded {
+            f: self,
+            m3: up(n1 + 8.0 * n2),
+            e: self.rounding(),
+        }
+    }
+}
+
+/// A [`Trig2`] with the bound `M₃ ≥ |f‴|` and the rounding allowances of
+/// its values, computed once.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bounded {
+    /// The polynomial.
+    pub f: Trig2,
+    m3: f64,
+    e: [f64; 3],
+}
+
+impl Bounded {
+    /// The bound `M₃ ≥ |f‴|` (`n₁ + 8 n₂`).
+    pub fn m3(&self) -> f64 {
+        self.m3
+    }
+
     /// The enclosures of `f`, `f′`, `f″` over `|θ − m| ≤ w`, `(c, s)` the
     /// cosine and sine of `m` (see the module's inequalities).
     pub fn enclose(&self, c: f64, s: f64, w: f64) -> Enclosure {
-        let [f0, f1, f2] = self.at(c, s);
-        let [e0, e1, e2] = self.rounding();
-        let (n1, n2) = self.amplitudes();
-        let m3 = up(n1 + 8.0 * n2);
+        let [f0, f1, f2] = self.f.at(c, s);
+        let [e0, e1, e2] = self.e;
+        let m3 = self.m3;
         let rem0 = up(m3 * w * w * w / 6.0);
         // {f₁ δ + f₂ δ²/2 : |δ| ≤ w}: the ends and, inside, the vertex.
         let (qa, qb) = (-f1 * w + 0.5 * f2 * w * w, f1 * w + 0.5 * f2 * w * w);
@@ -120,12 +150,14 @@ impl Trig2 {
             down(f0 + qlo - rem0 - e0 - qe),
             up(f0 + qhi + rem0 + e0 + qe),
         );
-        let r1 = up(f2.abs() * w + 0.5 * m3 * w * w + e1 + ROUND * f2.abs() * w);
+        let shrinks = f2.abs() * w + 0.5 * m3 * w * w;
+        let r1 = up(shrinks + e1 + ROUND * f2.abs() * w);
         let r2 = up(m3 * w + e2);
         Enclosure {
             value,
             d1: Iv::around(f1, r1),
             d2: Iv::around(f2, r2),
+            refinable: shrinks > e1,
         }
     }
 }
@@ -167,7 +199,7 @@ mod tests {
             b2: 0.25,
         };
         for (m, w) in [(0.0, 0.8), (1.0, 0.1), (2.5, 1.6), (-0.7, 0.01)] {
-            let e = t.enclose(f64::cos(m), f64::sin(m), w);
+            let e = t.bounded().enclose(f64::cos(m), f64::sin(m), w);
             for k in 0..=1000 {
                 let th = m - w + 2.0 * w * k as f64 / 1000.0;
                 let [v, d1, d2] = f(&t, th);
