@@ -495,7 +495,8 @@ pub fn near_contact(g: &Geo, pair: Pair, rng: &mut Rng) -> Pose {
             (gap(g, pair, &plus, a) - gap(g, pair, &minus, a)) / (2.0 * e)
         });
         let n2 = grad.norm_squared();
-        if !(n2 > 1e-6) {
+        // Also stops at a NaN gradient.
+        if n2.partial_cmp(&1e-6) != Some(std::cmp::Ordering::Greater) {
             break;
         }
         let dp = grad * ((-delta - g0) / n2);

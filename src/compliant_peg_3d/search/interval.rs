@@ -63,24 +63,6 @@ impl Iv {
         Iv::new(down(self.lo + c), up(self.hi + c))
     }
 
-    /// `self + o`.
-    pub fn add(self, o: Iv) -> Iv {
-        Iv::new(down(self.lo + o.lo), up(self.hi + o.hi))
-    }
-
-    /// `self · o`.
-    pub fn mul(self, o: Iv) -> Iv {
-        let p = [
-            self.lo * o.lo,
-            self.lo * o.hi,
-            self.hi * o.lo,
-            self.hi * o.hi,
-        ];
-        let lo = p.iter().copied().fold(f64::INFINITY, f64::min);
-        let hi = p.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-        Iv::new(down(lo), up(hi))
-    }
-
     /// `self · c` for a real `c`.
     pub fn scale(self, c: f64) -> Iv {
         let (a, b) = (self.lo * c, self.hi * c);
@@ -110,13 +92,39 @@ impl Iv {
     }
 }
 
+impl std::ops::Add for Iv {
+    type Output = Iv;
+
+    /// `self + o`.
+    fn add(self, o: Iv) -> Iv {
+        Iv::new(down(self.lo + o.lo), up(self.hi + o.hi))
+    }
+}
+
+impl std::ops::Mul for Iv {
+    type Output = Iv;
+
+    /// `self · o`.
+    fn mul(self, o: Iv) -> Iv {
+        let p = [
+            self.lo * o.lo,
+            self.lo * o.hi,
+            self.hi * o.lo,
+            self.hi * o.hi,
+        ];
+        let lo = p.iter().copied().fold(f64::INFINITY, f64::min);
+        let hi = p.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        Iv::new(down(lo), up(hi))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::{Iv, down, up};
 
     #[test]
     fn nudges_move_past_the_neighbouring_floats() {
-        for x in [0.0, 1.0, -1.0, 1e-300, -3.5e7, 6.283185307179586] {
+        for x in [0.0, 1.0, -1.0, 1e-300, -3.5e7, std::f64::consts::TAU] {
             assert!(down(x) < x && up(x) > x, "{x}");
         }
     }
@@ -125,7 +133,7 @@ mod tests {
     fn operations_contain_the_exact_results_of_their_bounds() {
         let a = Iv::new(-0.3, 0.7);
         let b = Iv::new(0.2, 0.5);
-        let p = a.mul(b);
+        let p = a * b;
         assert!(p.lo <= -0.15 && p.hi >= 0.35);
         assert_eq!(a.square().lo, 0.0);
         assert!(a.square().hi >= 0.49);

@@ -171,7 +171,7 @@ impl Problem {
                     None => f64::INFINITY,
                 };
                 Problem::Search {
-                    h: Profile::Trig(f.neg().bounded()),
+                    h: Profile::Trig((-f).bounded()),
                     level,
                 }
             }

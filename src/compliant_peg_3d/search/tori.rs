@@ -34,20 +34,16 @@ use super::trig::{Bounded, Enclosure};
 /// `F` may vanish.
 fn natural(fe: &Enclosure, ze: &Enclosure, rm: f64) -> (Iv, Option<(Iv, Iv, Iv)>) {
     let rho = fe.value.sqrt();
-    let value = rho.plus(-rm).square().add(ze.value.square());
+    let value = rho.plus(-rm).square() + ze.value.square();
     if fe.value.lo <= 0.0 {
         return (value, None);
     }
     // 1 − R_m/ρ and R_m/(2ρ³).
     let k = rho.recip_times(rm).scale(-1.0).plus(1.0);
-    let q = rho.mul(rho).mul(rho).recip_times(0.5 * rm);
-    let d1 = fe.d1.mul(k).add(ze.value.mul(ze.d1).scale(2.0));
-    let d2 = fe
-        .d2
-        .mul(k)
-        .add(fe.d1.square().mul(q))
-        .add(ze.d1.square().scale(2.0))
-        .add(ze.value.mul(ze.d2).scale(2.0));
+    let q = (rho * rho * rho).recip_times(0.5 * rm);
+    let d1 = fe.d1 * k + (ze.value * ze.d1).scale(2.0);
+    let d2 =
+        fe.d2 * k + fe.d1.square() * q + ze.d1.square().scale(2.0) + (ze.value * ze.d2).scale(2.0);
     (value, Some((d1, d2, rho)))
 }
 
@@ -70,7 +66,7 @@ pub fn enclose(f: &Bounded, z: &Bounded, rm: f64, c: f64, s: f64, w: f64, level:
     let fe = f.enclose(c, s, w);
     let ze = z.enclose(c, s, w);
     // The value alone first: an arc above the level needs no more.
-    let value = fe.value.sqrt().plus(-rm).square().add(ze.value.square());
+    let value = fe.value.sqrt().plus(-rm).square() + ze.value.square();
     if value.lo >= level {
         return Enclosure {
             value,

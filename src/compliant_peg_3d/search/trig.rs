@@ -57,9 +57,11 @@ pub struct Enclosure {
     pub refinable: bool,
 }
 
-impl Trig2 {
+impl std::ops::Neg for Trig2 {
+    type Output = Trig2;
+
     /// `−f`.
-    pub fn neg(self) -> Trig2 {
+    fn neg(self) -> Trig2 {
         Trig2 {
             a0: -self.a0,
             a1: -self.a1,
@@ -68,7 +70,9 @@ impl Trig2 {
             b2: -self.b2,
         }
     }
+}
 
+impl Trig2 {
     /// `(f, f′, f″)` at the angle whose cosine and sine are `(c, s)`.
     #[inline]
     pub fn at(&self, c: f64, s: f64) -> [f64; 3] {
