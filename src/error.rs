@@ -245,6 +245,10 @@ pub enum RunError {
     /// state (relative curvature not positive).
     #[error("Hertz contact: {0}")]
     Hertz(#[from] crate::hertz::HertzError),
+    /// The run's replay page could not be made (a run without samples, a
+    /// non-finite number in the record, a state the model refuses).
+    #[error("replay page: {0}")]
+    Replay(#[from] crate::replay::ReplayError),
 }
 
 impl From<crate::rigid_peg::trajectory::ForwardError> for RunError {

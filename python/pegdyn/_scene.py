@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
+import html
+from dataclasses import dataclass, field
 from typing import Any, Dict, List, Mapping, NamedTuple, Optional, Tuple, Union
 
 from . import _pegdyn as _core
@@ -66,9 +67,9 @@ class Scene:
         see ``Result.outcome.success``.
         """
         if out is None:
-            return _result(_core.run(self.text, self.name, None), self.name)
+            return _result(_core.run(self.text, self.name, None), self.name, self.kind)
         os.makedirs(out, exist_ok=True)
-        return _result(_core.run(self.text, self.name, os.fspath(out)), self.name)
+        return _result(_core.run(self.text, self.name, os.fspath(out)), self.name, self.kind)
 
     def __reduce__(self):
         return (Scene, (self.text, self.name))
@@ -153,7 +154,14 @@ class Result:
       that fired, in time order (a terminal one last);
     - ``metrics``: scalar results ``{name: value}``; ``units`` their units;
     - ``summary``: the raw summary dict; ``text``: what ``pegdyn run`` prints;
-    - ``paths``: files written (empty when ``run`` had no ``out``).
+    - ``paths``: files written (empty when ``run`` had no ``out``);
+    - ``kind``: the scene's kind.
+
+    The run's replay page (``docs/replay.md``; the 3-D kinds and
+    ``insert_compliant``, unless the scene says ``[replay] page = false``)
+    shows inline in a Jupyter notebook (:meth:`_repr_html_`) and
+    :meth:`replay` writes it to a file. A run in memory keeps the page; a
+    run into a directory reads it from its file there.
     """
 
     columns: Dict[str, Any]
@@ -165,6 +173,56 @@ class Result:
     summary: Dict[str, Any]
     text: str
     paths: List[str]
+    kind: Optional[str] = None
+    _page: Optional[bytes] = field(default=None, repr=False, compare=False)
+
+    def _page_bytes(self) -> Optional[bytes]:
+        if self._page is not None:
+            return self._page
+        for p in self.paths:
+            if p.endswith(".html"):
+                with open(p, "rb") as fh:
+                    return fh.read()
+        return None
+
+    @property
+    def has_replay(self) -> bool:
+        """Whether the run made a replay page."""
+        return self._page is not None or any(p.endswith(".html") for p in self.paths)
+
+    def replay(self, path: PathLike) -> str:
+        """Writes the run's replay page (one self-contained HTML file that
+        opens from disk with no network) to ``path``; returns the path.
+
+        Raises ValueError when the run has no page: its kind makes none
+        (the pendulums, the rigid peg, jamming), or the scene turned it off
+        with ``[replay] page = false``. A sweep's runs make no page: run the
+        point's scene (``scene.with_values(point).run()``) to see one.
+        """
+        page = self._page_bytes()
+        if page is None:
+            raise ValueError(
+                f"this {self.kind or 'scene'} run has no replay page: pages are made by the "
+                "compliant 3-D peg kinds (drop_3d, insert_rcc, rotation_assist, design_margins) "
+                "and insert_compliant, unless the scene says [replay] page = false"
+            )
+        out = os.fspath(path)
+        with open(out, "wb") as fh:
+            fh.write(page)
+        return out
+
+    def _repr_html_(self) -> Optional[str]:
+        """The replay page inline (Jupyter): an iframe whose ``srcdoc`` is
+        the page, sandboxed to run its scripts only; None without a page
+        (Jupyter then shows the plain repr)."""
+        page = self._page_bytes()
+        if page is None:
+            return None
+        doc = html.escape(page.decode("utf-8"), quote=True)
+        return (
+            '<iframe sandbox="allow-scripts" style="width:100%;height:760px;border:0" '
+            f'title="pegdyn replay" srcdoc="{doc}"></iframe>'
+        )
 
     def to_pandas(self, table: Optional[str] = None):
         """The main table (or ``tables[table]``) as a pandas DataFrame
@@ -174,7 +232,8 @@ class Result:
         return pd.DataFrame(self.columns if table is None else self.tables[table])
 
 
-def _result(summary: Dict[str, Any], name: str) -> Result:
+def _result(summary: Dict[str, Any], name: str, kind: Optional[str] = None) -> Result:
+    files = summary.pop("files", None) or {}
     outputs = list(summary["outputs"])
     tables: Dict[str, Dict[str, Any]] = summary["tables"] or {}
     if summary["tables"] is None:
@@ -207,4 +266,6 @@ def _result(summary: Dict[str, Any], name: str) -> Result:
         summary=summary,
         text=summary["text"],
         paths=outputs,
+        kind=kind,
+        _page=next((b for f, b in files.items() if f.endswith(".html")), None),
     )

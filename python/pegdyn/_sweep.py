@@ -7,6 +7,7 @@ import math
 from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence
 
 from . import _pegdyn as _core
+from ._pegdyn import SceneError
 from ._scene import Scene
 
 #: Row fields every sweep row has, besides the inputs and the metrics.
@@ -86,6 +87,39 @@ def _points(grid: Optional[Mapping[str, Sequence[Any]]], points) -> tuple:
     return keys, out
 
 
+def _check_keys(scene: Scene, keys: List[str], first: list) -> None:
+    """Raises SceneError before any run when a swept key names no field of
+    the scene (a typo such as ``pendulum.lenght``), listing the valid
+    names; the first point's other problems (a value out of range) stay
+    per-row outcomes."""
+    for k in keys:
+        if not isinstance(k, str) or not k or any(not part for part in k.split(".")):
+            raise SceneError(f"pegdyn.sweep: `{k}` is not a dotted field name such as `pendulum.mass`")
+    try:
+        scene.with_values(dict(zip(keys, first)))
+    except SceneError as e:
+        unknown = [
+            (field, reason)
+            for field, _, reason in getattr(e, "errors", [])
+            if field and reason.startswith("unknown field") and any(k == field or k.startswith(field + ".") for k in keys)
+        ]
+        if unknown:
+            field, reason = unknown[0]
+            key = next(k for k in keys if k == field or k.startswith(field + "."))
+            err = SceneError(
+                f"pegdyn.sweep: `{key}` names no field of this {scene.kind} scene (`{field}`: {reason});"
+                " no point was run"
+            )
+            err.field, err.value, err.reason = field, None, reason
+            err.errors = [(f, None, r) for f, r in unknown]
+            raise err from None
+    except ValueError as e:
+        # A key whose table is a value (`pendulum.mass.x`).
+        if "is not a table" in str(e):
+            raise SceneError(f"pegdyn.sweep: {e}; no point was run") from None
+        raise
+
+
 def run_batch(text: str, name: str, keys: List[str], points: List[list], first: int, threads=None):
     """One Dask task: runs ``points`` (numbered from ``first``) in Rust and
     returns their rows. Module-level so that workers import it by name."""
@@ -117,7 +151,9 @@ def sweep(
     ``{"table.field": value}`` dicts with the same keys. Each point's scene
     is the base scene with those fields replaced, validated like a scene
     file: a point that does not validate gives a row with outcome
-    ``"invalid"`` rather than an exception.
+    ``"invalid"`` rather than an exception. A key that names no field of
+    the scene (a typo) raises :class:`SceneError` before any run, listing
+    the table's valid names.
 
     Without ``client`` the points run in parallel on this machine (Rust
     threads, ``threads`` of them, default every core), with the GIL
@@ -134,6 +170,8 @@ def sweep(
     """
     keys, pts = _points(grid, points)
     n = len(pts)
+    if pts:
+        _check_keys(scene, keys, pts[0])
     if client is None:
         raw = _core.run_points(scene.text, scene.name, keys, pts, 0, threads)
         return SweepResult(keys, _rows(keys, pts, raw))

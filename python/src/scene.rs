@@ -10,9 +10,9 @@ use std::time::Duration;
 
 use pyo3::exceptions::PyRuntimeError;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::{PyBytes, PyDict, PyList};
 
-use pegdyn::output::memory::{Keep, Table};
+use pegdyn::output::memory::{Keep, KeptFile, Table};
 use pegdyn::output::sink::Sink;
 use pegdyn::scene::{self, Progress, RunContext, RunSummary};
 
@@ -90,8 +90,8 @@ pub enum Outcome {
     Invalid(pegdyn::error::SceneErrors),
     Failed(String),
     /// The summary and, for a run in memory with [`Keep::Tables`], the
-    /// tables it wrote.
-    Done(RunSummary, Vec<Table>),
+    /// tables and the other files (the replay page) it wrote.
+    Done(RunSummary, Vec<Table>, Vec<KeptFile>),
 }
 
 /// Where a run's outputs go.
@@ -123,7 +123,10 @@ pub fn run_text(text: &str, name: &str, out: Output) -> Outcome {
     };
     let mut ctx = RunContext::new(sink, Progress::silent());
     match loaded.run(&mut ctx) {
-        Ok(s) => Outcome::Done(s, ctx.into_sink().into_tables()),
+        Ok(s) => {
+            let files = ctx.sink().take_files();
+            Outcome::Done(s, ctx.into_sink().into_tables(), files)
+        }
         Err(e) => Outcome::Failed(e.to_string()),
     }
 }
@@ -179,8 +182,9 @@ pub fn summary_dict<'py>(py: Python<'py>, s: &RunSummary) -> PyResult<Bound<'py,
 /// `out_dir`, or, without it, in memory (no file is written); returns the
 /// summary dict of [`summary_dict`] plus `tables`: None with `out_dir`,
 /// else `{file stem: {column: array | list[str]}}` in the order the run
-/// finished them. Raises SceneError for an invalid scene and RunError
-/// when the run fails.
+/// finished them; and `files`: None with `out_dir`, else `{file name:
+/// bytes}` of the other files (the replay page). Raises SceneError for an
+/// invalid scene and RunError when the run fails.
 #[pyfunction]
 #[pyo3(signature = (text, name, out_dir=None))]
 pub fn run<'py>(
@@ -194,12 +198,18 @@ pub fn run<'py>(
     match interruptible(py, move || run_text(&text, &name, out))? {
         Outcome::Invalid(e) => Err(scene_error(py, &e, None)),
         Outcome::Failed(msg) => Err(RunError::new_err(msg)),
-        Outcome::Done(s, tables) => {
+        Outcome::Done(s, tables, files) => {
             let d = summary_dict(py, &s)?;
             if in_memory {
                 d.set_item("tables", table::tables_dict(py, tables)?)?;
+                let kept = PyDict::new(py);
+                for f in files {
+                    kept.set_item(f.file, PyBytes::new(py, &f.bytes))?;
+                }
+                d.set_item("files", kept)?;
             } else {
                 d.set_item("tables", py.None())?;
+                d.set_item("files", py.None())?;
             }
             Ok(d)
         }

@@ -65,7 +65,7 @@ fn run_point(
     };
     // Only the summary is kept: the run writes no file and keeps no table.
     let result = match run_text(&text, name, Output::Memory(Keep::Nothing)) {
-        Outcome::Done(s, _) => Ok(s),
+        Outcome::Done(s, ..) => Ok(s),
         Outcome::Invalid(e) => Err(("invalid".into(), e.to_string())),
         Outcome::Failed(m) => Err(("failed".into(), m)),
     };

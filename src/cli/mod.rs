@@ -55,6 +55,10 @@ enum Command {
         /// be left out). Repeatable; replaces the scene's own value.
         #[arg(long = "limit", value_name = "KEY=VALUE")]
         limits: Vec<String>,
+        /// Write no replay page (OUT/<scene>.html), whatever the scene's
+        /// [replay] table says.
+        #[arg(long)]
+        no_replay: bool,
     },
     /// Validate scene files without running them.
     Check {
@@ -117,8 +121,9 @@ pub fn main() -> ExitCode {
             out,
             quiet,
             limits,
+            no_replay,
         } => match limit_overrides(&limits) {
-            Some(o) => run::run(&scene, &out, quiet, &o),
+            Some(o) => run::run(&scene, &out, quiet, &o, no_replay),
             None => ExitCode::from(2),
         },
         Command::Check { scenes, limits } => match limit_overrides(&limits) {

@@ -18,8 +18,15 @@ fn scene_in_outputs(path: &Path, out: &Path) -> bool {
     scene_dir.is_some() && scene_dir == dir(out) && path.extension().is_none_or(|e| e != "toml")
 }
 
-/// Runs one scene file, writing into `out`.
-pub fn run(path: &Path, out: &Path, quiet: bool, limits: &LimitOverrides) -> ExitCode {
+/// Runs one scene file, writing into `out` (with `no_replay`, no replay
+/// page).
+pub fn run(
+    path: &Path,
+    out: &Path,
+    quiet: bool,
+    limits: &LimitOverrides,
+    no_replay: bool,
+) -> ExitCode {
     let loaded = match scene::load_with(path, limits) {
         Ok(s) => s,
         Err(errors) => {
@@ -54,6 +61,9 @@ pub fn run(path: &Path, out: &Path, quiet: bool, limits: &LimitOverrides) -> Exi
     // The scene file is never replaced by an output.
     let sink = Sink::directory(out, &loaded.name).protecting(path);
     let mut ctx = RunContext::new(sink, Progress::new(quiet));
+    if no_replay {
+        ctx = ctx.without_replay();
+    }
     let result = loaded.run(&mut ctx);
     ctx.progress.finish();
     let (code, status) = match result {

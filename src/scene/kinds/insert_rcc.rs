@@ -43,7 +43,9 @@
 //! Writes `<name>.csv` (time series), `<name>_events.csv` (contact
 //! transitions), `<name>.svg` (Whitney's plot: insertion force and the
 //! wrist's lateral force and moment against depth; contact forces and the
-//! contact-state timeline against time) and `<name>_views.svg`.
+//! contact-state timeline against time), `<name>_views.svg` and the replay
+//! page `<name>.html` (`docs/replay.md`; `[replay] page = false` or
+//! `pegdyn run --no-replay` turns it off).
 
 use crate::compliant_peg_3d::outcome::TERMINAL_NAMES;
 use crate::error::{RunError, SceneErrors};
@@ -57,7 +59,9 @@ use crate::scene::kind::{Kind, Scene};
 use crate::scene::limits::WorkItem;
 use crate::scene::numbers::significant;
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, outcome_text, run_one};
+use crate::scene::shared::compliant_peg_3d::replay::insertion;
 use crate::scene::shared::compliant_peg_3d::{margins, output, ranges};
+use crate::scene::shared::replay;
 use crate::scene::simulate::{describe_stop, integration_summary};
 use crate::scene::summary::{Metric, RunSummary};
 
@@ -223,6 +227,10 @@ impl Scene for Ready {
             ));
         }
         out.metrics.extend(margin_metrics);
+        if self.scene.replay.wanted(ctx) {
+            let what = "compliant 3-D peg held by a compliant wrist";
+            replay::write(ctx, &insertion(ctx.name(), what, &run)?)?;
+        }
         Ok(out)
     }
 }

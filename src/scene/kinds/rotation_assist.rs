@@ -38,7 +38,8 @@ use crate::scene::limits::WorkItem;
 use crate::scene::progress::{Progress, par_map_counted};
 use crate::scene::ranges::FieldRange;
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, outcome_text, run_one};
-use crate::scene::shared::compliant_peg_3d::{ranges, tables};
+use crate::scene::shared::compliant_peg_3d::{ranges, replay, tables};
+use crate::scene::shared::replay::{GridReplayTable, RunChoice};
 use crate::scene::summary::{Metric, RunSummary};
 use crate::scene::validate::Checker;
 
@@ -97,6 +98,9 @@ pub struct SweepScene {
     pub grid: GridTable,
     /// `[integrator]`.
     pub integrator: IntegratorSpec,
+    /// `[replay]` (optional; the page shows the worst run by default).
+    #[serde(default)]
+    pub replay: GridReplayTable,
 }
 
 /// One grid point.
@@ -112,6 +116,8 @@ struct Point {
 struct Ready {
     scene: SweepScene,
     points: Vec<(Point, Built)>,
+    /// The `[robot]` table's own run, when `replay.run = "nominal"`.
+    nominal: Option<Built>,
     integrator: IntegratorSpec,
     method_reason: &'static str,
 }
@@ -129,6 +135,7 @@ impl SweepScene {
             robot,
             criteria: self.criteria.clone(),
             integrator: self.integrator.clone(),
+            replay: Default::default(),
         }
     }
 }
@@ -173,10 +180,24 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
             }
         }
     }
+    let nominal = match s.replay.run.map(|r| r.check(points.len())).transpose()? {
+        Some(RunChoice::Nominal) => {
+            let r = &s.robot;
+            let p = Point {
+                lateral: r.lateral_error,
+                angular_deg: r.angular_error_deg,
+                precession: r.precession_rate,
+                spin: r.spin_rate,
+            };
+            Some(s.as_rcc(&p).build()?)
+        }
+        _ => None,
+    };
     let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::NON_STIFF);
     Ok(Box::new(Ready {
         scene: s,
         points,
+        nominal,
         integrator,
         method_reason,
     }))
@@ -327,6 +348,30 @@ impl Scene for Ready {
             pmax / yield_p,
             "",
         ));
+        if self.scene.replay.wanted(ctx) {
+            let outcomes: Vec<(bool, f64)> = rows.iter().map(|r| (r.seated, r.end)).collect();
+            let describe = |p: &Point| {
+                format!(
+                    "lateral error {} m, angular error {} deg, precession {} rad/s, spin {} rad/s",
+                    p.lateral, p.angular_deg, p.precession, p.spin
+                )
+            };
+            let spec = &self.integrator;
+            let nominal = || {
+                let run = |b| run_one(b, spec, true, &mut Progress::silent());
+                self.nominal.as_ref().map(run).transpose()
+            };
+            let choice = self.scene.replay.run.unwrap_or(RunChoice::Worst);
+            replay::write_grid(
+                ctx,
+                choice,
+                &outcomes,
+                &self.points,
+                describe,
+                spec,
+                nominal,
+            )?;
+        }
         Ok(out)
     }
 }

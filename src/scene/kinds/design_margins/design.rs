@@ -13,6 +13,7 @@ use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, run_one
 use crate::scene::shared::compliant_peg_3d::tables::{
     CriteriaTable, PegTable, RobotTable, WristTable,
 };
+use crate::scene::shared::replay::GridReplayTable;
 use crate::scene::validate::Checker;
 
 /// The `[grid]` table.
@@ -44,6 +45,9 @@ pub struct DesignScene {
     pub grid: GridTable,
     /// `[integrator]`.
     pub integrator: IntegratorSpec,
+    /// `[replay]` (optional; the page shows the nominal run by default).
+    #[serde(default)]
+    pub replay: GridReplayTable,
 }
 
 /// One grid point: the robot's initial errors.
@@ -139,6 +143,7 @@ impl DesignScene {
             robot,
             criteria,
             integrator: self.integrator.clone(),
+            replay: Default::default(),
         }
     }
 
@@ -150,6 +155,7 @@ impl DesignScene {
             robot: self.robot.clone(),
             criteria: self.criteria.clone(),
             integrator: self.integrator.clone(),
+            replay: Default::default(),
         }
     }
 
@@ -227,6 +233,9 @@ impl DesignScene {
             }
         }
         c.finish()?;
+        if let Some(run) = self.replay.run {
+            run.check(points.len())?;
+        }
         let prm = &nominal.params;
         let capture = Capture {
             peg_radius: prm.peg_radius(),

@@ -28,7 +28,8 @@
 //! `<name>.svg` (the success region: simulated outcome per grid point with
 //! the capture rule's boundaries) and `<name>_nojam.svg` (Whitney's no-jam
 //! region at several depths with the wrist's load ratio, and the margin
-//! against depth).
+//! against depth) and the replay page `<name>.html` of one run:
+//! `replay.run = "nominal"` (default), `"worst"` or a grid index.
 
 pub mod chamfer;
 pub mod depth;
@@ -47,6 +48,8 @@ use crate::scene::kind::{Kind, Scene};
 use crate::scene::limits::WorkItem;
 use crate::scene::numbers::significant;
 use crate::scene::shared::compliant_peg_3d::ranges as peg_3d;
+use crate::scene::shared::compliant_peg_3d::replay;
+use crate::scene::shared::replay::RunChoice;
 use crate::scene::summary::RunSummary;
 
 /// Registry entry.
@@ -100,14 +103,17 @@ impl Scene for Design {
     }
 
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
+        let page = self.scene.replay.wanted(ctx);
+        let choice = self.scene.replay.run.unwrap_or(RunChoice::Nominal);
+        let track = page && choice == RunChoice::Nominal;
         let (nominal, grid) = {
             let progress = &mut ctx.progress;
             rayon::join(
-                || depth::nominal(&self.nominal, &self.integrator),
+                || depth::nominal(&self.nominal, &self.integrator, track),
                 || self.run_grid(progress),
             )
         };
-        let nominal = nominal?;
+        let (nominal, nominal_run) = nominal?;
         let rows = grid?;
         report::write_grid(ctx, &rows)?;
         let table = depth::table(
@@ -122,6 +128,24 @@ impl Scene for Design {
         let mut metrics = report::analytic_metrics(self);
         metrics.extend(nominal.metrics(&self.nominal.params, self.scene.peg.clearance_ratio));
         metrics.extend(report::grid_metrics(&rows));
+        if page {
+            let outcomes: Vec<(bool, f64)> = rows.iter().map(|r| (r.seated(), r.end)).collect();
+            let describe = |p: &Point| {
+                format!(
+                    "compliance centre's lateral error {} m, angular error {} deg",
+                    p.centre_lateral, p.angular_deg
+                )
+            };
+            replay::write_grid(
+                ctx,
+                choice,
+                &outcomes,
+                &self.points,
+                describe,
+                &self.integrator,
+                || Ok(nominal_run),
+            )?;
+        }
         Ok(RunSummary {
             metrics,
             ..RunSummary::default()

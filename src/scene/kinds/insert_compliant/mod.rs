@@ -40,6 +40,7 @@ use serde::Deserialize;
 
 pub mod output;
 pub mod ranges;
+pub mod replay;
 
 use output::write_outputs;
 
@@ -56,6 +57,7 @@ use crate::scene::integrator::DefaultMethod;
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::kind::{Kind, Scene};
 use crate::scene::shared::material::{MaterialSpec, steel};
+use crate::scene::shared::replay::ReplayTable;
 use crate::scene::simulate::{integrate, integration_summary};
 use crate::scene::summary::RunSummary;
 use crate::scene::validate::Checker;
@@ -185,6 +187,9 @@ pub struct InsertCompliantScene {
     pub insert_compliant: InsertParams,
     /// The `[integrator]` table.
     pub integrator: IntegratorSpec,
+    /// The `[replay]` table (optional).
+    #[serde(default)]
+    pub replay: ReplayTable,
 }
 
 /// What the scene builds from its tables.
@@ -442,7 +447,16 @@ impl Ready {
             integration: Some(integration_summary(&self.integrator, &sol, &["inserted"])),
             ..RunSummary::default()
         };
-        write_outputs(ctx, sample, &sol, &mut out)?;
+        write_outputs(ctx, &sample, &sol, &mut out)?;
+        if self.scene.replay.wanted(ctx) {
+            replay::write(
+                ctx,
+                &self.scene.insert_compliant,
+                &self.built,
+                &sol,
+                &sample,
+            )?;
+        }
         Ok(out)
     }
 }
