@@ -144,8 +144,8 @@ impl Search {
     /// The search also finds the minima below [`CLEARANCE`]: when none
     /// penetrates, their least gap (or `CLEARANCE`) bounds the gap of
     /// every point of the circle from below, and later calls at poses
-    /// that moved less than that ([`moved`]) return at once with no
-    /// contact.
+    /// that moved less than that return at once with no
+    /// contact (a body point moves by at most `|Δp| + 2|Δq| |b_B|`).
     pub fn find(
         &mut self,
         pair: Pair,
