@@ -8,7 +8,7 @@ from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence
 
 from . import _pegdyn as _core
 from ._pegdyn import SceneError
-from ._scene import Scene
+from ._scene import Limits, Scene, _limit_args, _list
 
 #: Row fields every sweep row has, besides the inputs and the metrics.
 FIXED = ("index", "outcome", "error", "stop", "t_end", "steps", "rhs_calls")
@@ -120,10 +120,12 @@ def _check_keys(scene: Scene, keys: List[str], first: list) -> None:
         raise
 
 
-def run_batch(text: str, name: str, keys: List[str], points: List[list], first: int, threads=None):
+def run_batch(
+    text: str, name: str, keys: List[str], points: List[list], first: int, threads=None, limits=None
+):
     """One Dask task: runs ``points`` (numbered from ``first``) in Rust and
     returns their rows. Module-level so that workers import it by name."""
-    return _core.run_points(text, name, keys, points, first, threads)
+    return _core.run_points(text, name, keys, points, first, threads, limits)
 
 
 def _rows(keys, points, raw) -> List[Dict[str, Any]]:
@@ -143,6 +145,7 @@ def sweep(
     client=None,
     batch_size: Optional[int] = None,
     threads: Optional[int] = None,
+    limits: Limits = None,
 ) -> SweepResult:
     """Runs ``scene`` once per point and returns one row per run.
 
@@ -167,13 +170,23 @@ def sweep(
     scheduler run its batches again elsewhere; every index is checked to
     come back exactly once. The rows are identical to the local sweep.
     Workers need this package (same version) installed; nothing else.
+
+    The sweep is bounded before it starts, as one scene is: its points
+    times the runs of one point (one, or the scene's grid) must stay within
+    ``max_runs`` and their rows within ``max_memory_mb`` of the scene's
+    ``[limits]``, with ``limits`` (default: the scene's own ``limits``)
+    applied, e.g. ``limits={"max_runs": 100_000}``; else
+    :class:`SceneError` names ``sweep`` and the limit. Each point's scene
+    is validated under the same limits.
     """
     keys, pts = _points(grid, points)
     n = len(pts)
+    args = _list(_limit_args(limits)) if limits is not None else _list(scene.limits)
+    _core.check_sweep(scene.text, scene.name, n, args)
     if pts:
         _check_keys(scene, keys, pts[0])
     if client is None:
-        raw = _core.run_points(scene.text, scene.name, keys, pts, 0, threads)
+        raw = _core.run_points(scene.text, scene.name, keys, pts, 0, threads, args)
         return SweepResult(keys, _rows(keys, pts, raw))
     if batch_size is None:
         slots = max(1, sum(client.nthreads().values()))
@@ -183,7 +196,7 @@ def sweep(
     starts = list(range(0, n, batch_size))
     from dask.base import tokenize
 
-    token = tokenize(scene.text, scene.name, keys, pts, batch_size, threads)
+    token = tokenize(scene.text, scene.name, keys, pts, batch_size, threads, args)
     futures = [
         client.submit(
             run_batch,
@@ -193,6 +206,7 @@ def sweep(
             pts[s : s + batch_size],
             s,
             threads,
+            args,
             key=f"pegdyn-sweep-{token}-{s}",
             retries=2,
         )

@@ -1,6 +1,7 @@
 //! Command-line interface: argument definitions (clap derive) and dispatch.
 //!
-//! Exit codes: 0 success, 1 a scene or run failed, 2 usage error.
+//! Exit codes: 0 success, 1 a scene or run failed, 2 usage error, 128 +
+//! the signal for a run stopped by SIGINT (130) or SIGTERM (143).
 //! One file per subcommand; `bench` will join them.
 
 /// `println!` that does not panic when stdout is closed early (`| head`):

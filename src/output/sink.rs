@@ -366,7 +366,7 @@ mod tests {
             w.row(&[0.0, 1.0]).unwrap();
             let e = w.row(&[0.1, f64::NAN]).unwrap_err().to_string();
             assert!(
-                e.contains("n_x.csv") && e.contains("x_m") && e.contains("NaN"),
+                e.contains("n.x.csv") && e.contains("x_m") && e.contains("NaN"),
                 "{e}"
             );
             assert_eq!(w.rows(), 1);
@@ -399,8 +399,8 @@ mod tests {
             sink.written(),
             [
                 dir.join("s.csv"),
-                dir.join("s_note.txt"),
-                dir.join("s_fig.svg")
+                dir.join("s.note.txt"),
+                dir.join("s.fig.svg")
             ]
         );
         assert_eq!(
@@ -419,7 +419,7 @@ mod tests {
         assert!(!Path::new("k.html").exists() && kept.written().is_empty());
         let files = kept.take_files();
         let names: Vec<&str> = files.iter().map(|f| f.file.as_str()).collect();
-        assert_eq!(names, ["k.html", "k_x.txt"]);
+        assert_eq!(names, ["k.html", "k.x.txt"]);
         assert_eq!(files[0].bytes, b"<p>1</p>");
         assert!(kept.take_files().is_empty());
         let dropped = Sink::memory("d", Keep::Nothing);

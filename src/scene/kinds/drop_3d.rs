@@ -28,8 +28,8 @@
 //! ```
 //!
 //! Writes `<name>.csv` (time series, see [`output`]),
-//! `<name>_events.csv`, `<name>.svg` (forces and contact state against
-//! time), `<name>_views.svg` (side and top views at each transition) and
+//! `<name>.events.csv`, `<name>.svg` (forces and contact state against
+//! time), `<name>.views.svg` (side and top views at each transition) and
 //! the replay page `<name>.html` (`docs/replay.md`; `[replay] page = false`
 //! or `pegdyn run --no-replay` turns it off).
 
@@ -50,7 +50,7 @@ use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::integrator::IntegratorSpec;
-use crate::scene::kind::{Kind, Scene};
+use crate::scene::kind::{Kind, Scene, Written};
 use crate::scene::ranges::FieldRange;
 use crate::scene::shared::compliant_peg_3d::tables::PegTable;
 use crate::scene::shared::compliant_peg_3d::{output, ranges};
@@ -143,7 +143,7 @@ struct Ready {
     method_reason: &'static str,
 }
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: DropScene = doc.body()?;
     let mut c = Checker::default();
     let params = s.peg.build(&mut c);
@@ -171,11 +171,17 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
     }))
 }
 
-impl Scene for Ready {
+impl Written for Ready {
     fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
         self.scene.integrator.work("integrator")
     }
 
+    fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        Ok(self)
+    }
+}
+
+impl Scene for Ready {
     fn describe(&self) -> String {
         let d = &self.scene.drop;
         format!(

@@ -187,7 +187,7 @@ pub fn table(
         .collect()
 }
 
-/// Writes `<name>_depth.csv`.
+/// Writes `<name>.depth.csv`.
 ///
 /// # Errors
 /// An output error.

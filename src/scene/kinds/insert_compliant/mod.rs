@@ -55,7 +55,7 @@ use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::integrator::IntegratorSpec;
-use crate::scene::kind::{Kind, Scene};
+use crate::scene::kind::{Kind, Scene, Written};
 use crate::scene::shared::material::{MaterialSpec, steel};
 use crate::scene::shared::replay::ReplayTable;
 use crate::scene::simulate::{integrate, integration_summary};
@@ -72,7 +72,7 @@ pub const KIND: Kind = Kind {
     ranges: &[],
 };
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: InsertCompliantScene = doc.body()?;
     let built = s.build()?;
     let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::STIFF_CONTACT);
@@ -366,11 +366,17 @@ impl InsertCompliantScene {
     }
 }
 
-impl Scene for Ready {
+impl Written for Ready {
     fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
         self.scene.integrator.work("integrator")
     }
 
+    fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        Ok(self)
+    }
+}
+
+impl Scene for Ready {
     fn describe(&self) -> String {
         let p = &self.scene.insert_compliant;
         format!(
