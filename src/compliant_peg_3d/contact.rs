@@ -159,6 +159,17 @@ pub struct Geometry<T> {
     pub penetration: T,
 }
 
+/// The most contact points of one state: at most two minima of each
+/// trigonometric profile of degree two (the mouth edge on the side, the rim
+/// on the wall), one of each rim–plane sinusoid, the search's
+/// [`super::search::MAX_MINIMA`] of the rim on the mouth, and a ring per
+/// flat.
+pub const MAX_CONTACTS: usize = 16;
+
+/// The contact points of one state, in a fixed-capacity array (no
+/// allocation in the right-hand side).
+pub type Contacts = arrayvec::ArrayVec<ContactPoint, MAX_CONTACTS>;
+
 /// One contact point: a penetrating local minimum of a pair's gap.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ContactPoint {

@@ -15,7 +15,7 @@
 //! force is `−∂V/∂x`: a point's at its minimizing angle, the ring's in
 //! closed form).
 
-use super::contact::{ContactPoint, Geometry, Pair};
+use super::contact::{ContactPoint, Contacts, Geometry, MAX_CONTACTS, Pair};
 use super::face;
 use super::frame::{Motion, axis};
 use super::law::{self, Col, LawParams, Load, Point};
@@ -117,6 +117,10 @@ pub struct Setup {
     pub weighted: bool,
 }
 
+/// The setups of one state's contacts, in a fixed-capacity array (no
+/// allocation in the right-hand side).
+pub type Setups = arrayvec::ArrayVec<Setup, MAX_CONTACTS>;
+
 /// The hand-over weight `s` of the plane pairs' point contacts at pose `x`
 /// (where their ring applies).
 pub fn point_weight<T: Real>(x: &[T; 7]) -> T {
@@ -150,10 +154,11 @@ pub fn setups(
     prm: &Peg3dParams,
     p: &SVector<f64, 16>,
     x: &SVector<f64, 7>,
-    contacts: &[ContactPoint],
-) -> Result<Vec<Setup>, HertzError> {
+    contacts: &Contacts,
+) -> Result<Setups, HertzError> {
     let weight = point_weight(&(*x).into());
-    let mut out = Vec::with_capacity(contacts.len());
+    // One setup per contact: `out` has the capacity of `contacts`.
+    let mut out = Setups::new();
     for c in contacts.iter().filter(|c| !c.ring) {
         let weighted = face::plane(c.pair, prm).is_some()
             && prune::ring_applies(c.pair, prm, x)
@@ -175,7 +180,7 @@ pub fn setups(
             }
             None => (0.0, [kf, kt]),
         };
-        out.push(Setup {
+        let _ = out.try_push(Setup {
             contact: *c,
             stiffness: k,
             col_stiffness,
@@ -184,7 +189,7 @@ pub fn setups(
         });
     }
     for c in contacts.iter().filter(|c| c.ring) {
-        out.push(Setup {
+        let _ = out.try_push(Setup {
             contact: *c,
             stiffness: face::line_stiffness(prm),
             col_stiffness: 0.0,

@@ -28,7 +28,7 @@
 //! (elastic only: no damping, no friction) with the point it is attached to
 //! (the minimum before it in angle).
 
-use super::contact::{ContactPoint, Pair, Saddle};
+use super::contact::{ContactPoint, MAX_CONTACTS, Pair, Saddle};
 use nalgebra::SVector;
 use std::f64::consts::TAU;
 
@@ -63,24 +63,26 @@ fn col(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, mut lo: f64, mut h
 /// return) by the inclusion–exclusion rule of this module: the col after
 /// each point in angle, when it penetrates and is subtracted.
 pub fn assign(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, points: &mut [ContactPoint]) {
-    let n = points.len();
+    // One pair has at most MAX_CONTACTS points (the search's minima).
+    let n = points.len().min(MAX_CONTACTS);
+    let points = &mut points[..n];
     if n < 2 {
         return;
     }
-    points.sort_by(|a, b| a.angle.total_cmp(&b.angle));
+    points.sort_unstable_by(|a, b| a.angle.total_cmp(&b.angle));
     // The col between point k and point k+1 (cyclically), with its
     // penetration (≤ 0 when the profile leaves the overlap between them).
-    let cols: Vec<(f64, f64)> = (0..n)
-        .map(|k| {
-            let lo = points[k].angle;
-            let mut hi = points[(k + 1) % n].angle;
-            if hi <= lo {
-                hi += TAU;
-            }
-            let a = col(pair, x, p, lo, hi);
-            (a, -pair.eval(x, a, p).gap)
-        })
-        .collect();
+    let mut cols = [(0.0, 0.0); MAX_CONTACTS];
+    for (k, c) in cols.iter_mut().enumerate().take(n) {
+        let lo = points[k].angle;
+        let mut hi = points[(k + 1) % n].angle;
+        if hi <= lo {
+            hi += TAU;
+        }
+        let a = col(pair, x, p, lo, hi);
+        *c = (a, -pair.eval(x, a, p).gap);
+    }
+    let cols = &cols[..n];
     // One ring: keep the least penetrating col.
     let keep = if cols.iter().all(|c| c.1 > 0.0) {
         (0..n).min_by(|&a, &b| cols[a].1.total_cmp(&cols[b].1))

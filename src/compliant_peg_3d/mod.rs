@@ -15,8 +15,10 @@
 //!   numbers, the peg's axis.
 //! - [`merge`]: the continuous rule by which two points of one pair share
 //!   their force as they merge (prominence above the col between them).
-//! - [`search`]: the local maxima of penetration of each contact pair by
-//!   Newton in the edge angle, warm-started, with a bracketing scan.
+//! - [`search`]: every local maximum of penetration of each contact pair,
+//!   with certainty: each gap as a trigonometric profile of the edge
+//!   angle, closed forms for the rim on a plane, certified branch and
+//!   bound over arcs with Newton for the others.
 //! - [`face`]: the peg's bottom on a flat at small tilt: the rim circle
 //!   as a distributed line contact (closed-form ring potential), handed
 //!   over to the rim's Hertz point contact as the tilt grows.
@@ -57,7 +59,7 @@ pub mod search;
 pub mod stiffness;
 pub mod system;
 
-pub use contact::{ContactPoint, Pair, Saddle, axis_of};
+pub use contact::{ContactPoint, Contacts, MAX_CONTACTS, Pair, Saddle, axis_of};
 pub use forces::ContactForce;
 pub use params::{HertzMode, Peg3dParams};
 pub use search::Search;

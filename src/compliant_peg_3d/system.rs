@@ -12,9 +12,9 @@
 //! [`crate::integrate::Solution::model_error`]. Further generalized forces
 //! (a wrist spring–damper, a prescribed frame) add to the same wrench.
 
-use super::contact::{ContactPoint, Pair};
+use super::contact::{ContactPoint, Contacts, Pair};
 use super::face;
-use super::forces::{self, ContactForce, Setup};
+use super::forces::{self, ContactForce, Setups};
 use super::frame;
 use super::jacobian;
 use super::law::LawParams;
@@ -80,8 +80,14 @@ impl Peg3d {
     /// bottom at small tilt, the distributed ring of [`super::face`] (the
     /// point search is skipped where the ring carries the flat alone).
     pub fn contacts(&self, y: &SVector<f64, 15>) -> Vec<ContactPoint> {
+        self.contacts_fixed(y).to_vec()
+    }
+
+    /// [`Peg3d::contacts`] in a fixed-capacity array (what the right-hand
+    /// side uses: no allocation).
+    pub fn contacts_fixed(&self, y: &SVector<f64, 15>) -> Contacts {
         let x = Self::pose(y);
-        let mut out = Vec::new();
+        let mut out = Contacts::new();
         let mut s = self.searches.borrow_mut();
         for (k, pair) in Pair::ALL.iter().enumerate() {
             let ring = prune::ring_applies(*pair, &self.params, &x);
@@ -92,7 +98,10 @@ impl Peg3d {
                 s[k] = Search::default();
             }
             if ring && weight < 1.0 {
-                out.extend(self.ring_contact(*pair, &x));
+                // A ring per flat: within MAX_CONTACTS.
+                if let Some(c) = self.ring_contact(*pair, &x) {
+                    let _ = out.try_push(c);
+                }
             }
         }
         out
@@ -127,8 +136,13 @@ impl Peg3d {
     ///
     /// # Errors
     /// A contact whose Hertz setup fails (relative curvature not positive).
-    pub fn setups(&self, y: &SVector<f64, 15>) -> Result<Vec<Setup>, HertzError> {
-        forces::setups(&self.params, &self.p, &Self::pose(y), &self.contacts(y))
+    pub fn setups(&self, y: &SVector<f64, 15>) -> Result<Setups, HertzError> {
+        forces::setups(
+            &self.params,
+            &self.p,
+            &Self::pose(y),
+            &self.contacts_fixed(y),
+        )
     }
 
     /// Every contact with its forces at state `y`: the point contacts,

@@ -24,6 +24,7 @@ pub mod prescribed_rigid;
 pub mod rcc;
 pub mod rigid;
 pub mod rosenbrock;
+pub mod search_reference;
 
 pub mod rng;
 #[allow(unused_imports)]

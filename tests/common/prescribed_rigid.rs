@@ -70,7 +70,7 @@ pub fn gaps(sys: &PrescribedPeg, c: &Vector3<f64>) -> [f64; 3] {
     let e_n = Vector3::new(-sys.motion.psi.sin(), sys.motion.psi.cos(), 0.0);
     let mut g = [f64::NAN; 3];
     for pair in [Pair::EdgeSide, Pair::RimEdge] {
-        for a in Search::default().minima(pair, prm, &x, pv) {
+        for a in Search::default().minima(pair, &x, pv, 1e-3) {
             let e = pair.eval(&x, a, pv);
             let (gap, n, pt, axial) = (e.gap, e.normal, e.point, e.axial);
             if !(pair.valid(prm, &axis, &n, &pt, axial) && pair.rim_faces_out(&x, &n, &pt)) {

@@ -8,7 +8,7 @@ use crate::common::rng;
 
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 use peg3d::{fig9, orientation, rim_on_mouth, tight_dopri5};
-use pegdyn::compliant_peg_3d::{HertzMode, Pair, Peg3d, Peg3dParams, Search, pose_state};
+use pegdyn::compliant_peg_3d::{Contacts, HertzMode, Pair, Peg3d, Peg3dParams, Search, pose_state};
 use pegdyn::integrate::{Method, Options, solve};
 use rng::Rng;
 use std::f64::consts::TAU;
@@ -81,7 +81,7 @@ fn check_pose(prm: &Peg3dParams, p: Vector3<f64>, q: UnitQuaternion<f64>) -> usi
         let gaps: Vec<f64> = (0..DENSE)
             .map(|k| brute_gap(prm, pair, &p, &q, k as f64 * h))
             .collect();
-        let found = Search::default().minima(pair, prm, &x, &pv);
+        let found = Search::default().minima(pair, &x, &pv, 1e-3);
         let span = gaps.iter().cloned().fold(f64::MIN, f64::max)
             - gaps.iter().cloned().fold(f64::MAX, f64::min);
         // The sampling error of a minimum: |g''| h^2 / 8 with |g''| <= span-scale.
@@ -708,12 +708,12 @@ fn pruned_pairs_never_hide_a_contact() {
         let y = pose_state(p, q, Vector3::zeros(), Vector3::zeros());
         let x = Peg3d::pose(&y);
         let pruned = Peg3d::new(prm).contacts(&y);
-        let mut full = Vec::new();
+        let mut full = Contacts::new();
         for pair in Pair::ALL {
             Search::default().find(pair, &prm, &x, &pv, &mut full);
             skipped += usize::from(!pegdyn::compliant_peg_3d::prune::can_touch(pair, &prm, &x));
         }
-        assert_eq!(pruned, full, "pose {p} {q}");
+        assert_eq!(pruned, full.to_vec(), "pose {p} {q}");
         contacts += full.len();
     }
     eprintln!("pruning: {skipped} of 1000 pair scans skipped, {contacts} contacts");

@@ -12,5 +12,6 @@ mod limits_energy;
 mod limits_planar;
 mod limits_rigid;
 mod limits_statics;
+mod search_property;
 mod seated;
 mod side_wall;

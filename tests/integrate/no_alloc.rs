@@ -4,7 +4,9 @@
 //! compliant model's `rhs` / `jacobian` / `time_derivative`, the pendulum
 //! scenes' systems, the rigid `PegSystem`), and the interpreter's
 //! `Tape::eval_into` with reused buffers (every function of every model)
-//! are measured with a counting global allocator.
+//! are measured with a counting global allocator; so are the compliant 3-D
+//! peg's right-hand side and exact Jacobian (cold and warm contact
+//! search), the wrist insertion's and the prescribed 3-D peg's adapters.
 //!
 //! The counter is per thread (the test harness allocates on other threads),
 //! and each measured closure is first called once outside the window so
@@ -314,4 +316,122 @@ fn interpreter_tape_with_reused_buffers_allocates_nothing() {
             );
         }
     }
+}
+
+/// Allocations made by one call of `f` on a value built outside the
+/// window (a cold first call: no warm start, no cached clearance).
+fn allocs_of_first<T, R>(build: impl FnOnce() -> T, f: impl FnOnce(&T) -> R) -> usize {
+    let value = build();
+    let before = allocations();
+    black_box(f(black_box(&value)));
+    allocations() - before
+}
+
+#[test]
+fn compliant_3d_rhs_and_jacobian_allocate_nothing() {
+    // The contact search, the Hertz setups and the law run in fixed-capacity
+    // arrays: the right-hand side and the exact Jacobian allocate nothing,
+    // in contact or apart, at a cold first call and at warm later ones.
+    // The stiffness from the curvatures at a one-point rim-on-mouth
+    // contact; fixed where the curvatures make no point contact (the side
+    // pressed along the wall, the rim's two mouth points merging).
+    use crate::common::peg3d::{fig9, rim_on_mouth};
+    use nalgebra::UnitQuaternion;
+    use pegdyn::compliant_peg_3d::{HertzMode, Peg3d, pose_state};
+    let (curvature, mut fixed) = (fig9(), fig9());
+    fixed.hertz = HertzMode::Fixed(2e10);
+    let pressed = pose_state(
+        Vector3::new(40e-6, 0.0, -0.02),
+        UnitQuaternion::identity(),
+        Vector3::new(1e-3, 0.0, -1e-3),
+        Vector3::new(0.0, 0.0, 2.0),
+    );
+    let apart = pose_state(
+        Vector3::new(0.06, 0.0, 0.05),
+        UnitQuaternion::identity(),
+        Vector3::zeros(),
+        Vector3::zeros(),
+    );
+    let cases = [
+        (curvature, rim_on_mouth(&curvature, 0.02, 8e-6), 1),
+        (curvature, apart, 0),
+        (fixed, pressed, 2),
+        (fixed, rim_on_mouth(&fixed, 0.0455, 2e-6), 1),
+        (fixed, apart, 0),
+    ];
+    for (prm, y, at_least) in &cases {
+        let sys = Peg3d::new(*prm);
+        assert!(sys.contacts(y).len() >= *at_least, "{y:?}");
+        let rhs = sys.try_rhs(0.0, y).expect("a point contact");
+        let jac = sys.try_jacobian(0.0, y).expect("a point contact");
+        assert!(rhs.iter().chain(jac.iter()).all(|v| v.is_finite()));
+        let cold = |f: fn(&Peg3d, &SVector<f64, 15>) -> bool| {
+            allocs_of_first(|| Peg3d::new(*prm), |s| f(s, y))
+        };
+        assert_eq!(cold(|s, y| s.try_rhs(0.0, y).is_ok()), 0, "{y:?}");
+        assert_eq!(cold(|s, y| s.try_jacobian(0.0, y).is_ok()), 0, "{y:?}");
+        assert_eq!(allocs_of(|| sys.try_rhs(0.0, black_box(y))), 0);
+        assert_eq!(allocs_of(|| sys.rhs(0.0, black_box(y))), 0);
+        assert_eq!(allocs_of(|| sys.try_jacobian(0.0, black_box(y))), 0);
+        assert_eq!(allocs_of(|| sys.jacobian(0.0, black_box(y))), 0);
+        assert_eq!(allocs_of(|| sys.contact_wrench(black_box(y))), 0);
+    }
+}
+
+#[test]
+fn wrist_and_prescribed_3d_adapters_allocate_nothing() {
+    // The wrist-held insertion of the shipped scene and the peg driven
+    // along a prescribed orientation: right-hand side, the
+    // finite-difference Jacobian and time derivative an implicit method
+    // calls, leaning on the mouth and at the start above the hole.
+    use pegdyn::compliant_peg_3d::insertion::{Insertion, N_STATE};
+    use pegdyn::compliant_peg_3d::prescribed::{Motion, PrescribedPeg};
+    use pegdyn::scene::shared::compliant_peg_3d::insertion::RccScene;
+    let scene = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/insert_rcc.toml"
+    ))
+    .expect("the shipped scene");
+    let mut doc: toml::Table = toml::from_str(&scene).expect("TOML");
+    doc.remove("kind");
+    doc.remove("description");
+    let rcc: RccScene = doc.try_into().expect("an insert_rcc scene");
+    let built = rcc.build().expect("valid");
+    let held = Insertion::new(built.params, Some(built.held), 0.0);
+    let start = held.held_start().expect("held");
+    let mut leaning = SVector::<f64, N_STATE>::zeros();
+    leaning
+        .fixed_rows_mut::<15>(0)
+        .copy_from(&crate::common::peg3d::rim_on_mouth(
+            &built.params,
+            0.02,
+            1e-6,
+        ));
+    assert!(held.contacts(&start).is_empty());
+    assert!(!held.contacts(&leaning).is_empty());
+    for y in [&start, &leaning] {
+        assert_eq!(allocs_of(|| held.try_rhs(0.1, black_box(y))), 0);
+        assert_eq!(allocs_of(|| held.jacobian(0.1, black_box(y))), 0);
+        assert_eq!(allocs_of(|| held.time_derivative(0.1, black_box(y))), 0);
+    }
+    let mut prm = crate::common::peg3d::fig9();
+    prm.hertz = pegdyn::compliant_peg_3d::HertzMode::Fixed(2e10);
+    let merging = crate::common::peg3d::rim_on_mouth(&prm, 0.0455, 2e-6);
+    let driven = PrescribedPeg::try_new(
+        prm,
+        Motion {
+            gamma: 0.0455,
+            gammadot: -2.0,
+            psi: 0.0,
+            psidot: 10.0,
+        },
+    )
+    .expect("a valid peg");
+    let y7 = SVector::<f64, 7>::from_column_slice(&[
+        merging[0], merging[1], merging[2], 0.0, 0.0, 0.0, 0.0,
+    ]);
+    assert!(!driven.forces(0.0, &y7).expect("valid").is_empty());
+    assert_eq!(allocs_of(|| driven.try_rhs(0.0, black_box(&y7))), 0);
+    assert_eq!(allocs_of(|| driven.jacobian(0.0, black_box(&y7))), 0);
+    assert_eq!(allocs_of(|| driven.time_derivative(0.0, black_box(&y7))), 0);
 }

@@ -1,0 +1,183 @@
+//! The certified search for the local minima of a profile `h(θ)` below a
+//! level `T` on the circle: branch and bound over arcs with the
+//! enclosures of [`Profile::enclose`].
+//!
+//! The circle is cut into [`START`] arcs. An arc is dropped when its
+//! enclosures show that it holds no local minimum below `T`:
+//!
+//! - `h > T` on the arc (the value's lower bound is at least `T`),
+//! - `h′ ≠ 0` on the arc (the slope's enclosure excludes zero: `h` is
+//!   monotone on the closed arc, so it has no stationary point there),
+//! - `h″ < 0` on the arc (concave: a stationary point there is a maximum).
+//!
+//! An arc with `h″ > 0` on it (convex) has at most one stationary point,
+//! a minimum, which exists exactly when `h′` changes sign from the arc's
+//! start to its end; it is found by Newton's method safeguarded by
+//! bisection on the sign of `h′`. Every other arc is halved. A local
+//! minimum `θ*` with `h(θ*) < T` has `h′(θ*) = 0` and `h″(θ*) ≥ 0`, so no
+//! arc containing it is dropped: it lies in a convex arc (found) or in a
+//! leaf, an arc too short to halve ([`DEPTH`] halvings, about `10⁻¹³`
+//! rad) or one on which `h′` is within its rounding allowance of zero
+//! (halving it would not narrow the slope's enclosure: a flat stretch,
+//! such as two minima and their col about to merge). In a leaf a minimum
+//! is found when `h′` changes sign from its start to its end; minima and
+//! maxima that alternate within one leaf, whose slopes are below the
+//! rounding of `h′`, are below the resolution of `f64` and may be found
+//! as one. Neighbouring arcs
+//! share their end points and evaluate `h′` there identically, so a sign
+//! change at a shared end is seen by one of them.
+
+use super::profile::Profile;
+use std::f64::consts::TAU;
+
+/// The number of arcs the circle starts as.
+pub const START: usize = 8;
+
+/// The most halvings of a start arc (`2π/8 · 2⁻⁴⁰ ≈ 7·10⁻¹³` rad).
+pub const DEPTH: u32 = 40;
+
+/// The most arcs visited in one search: none of the pairs comes near it
+/// (the work is about twice the depth per minimum); reaching it stops the
+/// search with what it has found and says so.
+pub const BUDGET: usize = 4096;
+
+/// The most minima one search returns (a trigonometric polynomial of
+/// degree two has at most two; the two tori's `h` at most six).
+pub const MAX_MINIMA: usize = 8;
+
+/// The angles (rad) of the minima a search found.
+pub type Angles = arrayvec::ArrayVec<f64, MAX_MINIMA>;
+
+/// What a search did: arcs visited and whether it ran out of budget or
+/// room.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Work {
+    /// Arcs whose enclosures were evaluated.
+    pub arcs: usize,
+    /// Profile evaluations at a point (end-point slopes and Newton).
+    pub points: usize,
+    /// Arcs left unresolved by the budget (0 in a complete search).
+    pub unresolved: usize,
+    /// The profile is constant: no isolated minimum (an aligned peg's rim
+    /// over a plane).
+    pub flat: bool,
+    /// No search: the pair was certified apart at an earlier pose that
+    /// this one is too close to for a contact.
+    pub cached: bool,
+}
+
+/// The enclosure's half-width for the arc `[lo, hi]` about `m`: the arc
+/// widened by `10⁻¹⁵` rad (which also covers the difference between the
+/// float `2π` and the end of the circle).
+fn half_width(lo: f64, hi: f64, m: f64) -> f64 {
+    (hi - m).max(m - lo) * (1.0 + 4.0 * f64::EPSILON) + 1e-15
+}
+
+/// The zero of `h′` in `[lo, hi]`, `h′` increasing there, from the slopes
+/// `s_lo = h′(lo) ≤ 0 ≤ s_hi = h′(hi)`: Newton on `h′` from the end
+/// nearer the zero (by the slopes' sizes), with bisection whenever a step
+/// leaves the bracket or `h″ ≤ 0`. A zero at an end (a pose symmetric
+/// about that angle) is found in one step.
+fn newton(prof: &Profile, mut lo: f64, mut hi: f64, s_lo: f64, s_hi: f64, work: &mut Work) -> f64 {
+    if s_lo == 0.0 {
+        return lo;
+    }
+    if s_hi == 0.0 {
+        return hi;
+    }
+    let mut a = if -s_lo < s_hi { lo } else { hi };
+    for _ in 0..100 {
+        let (d1, d2) = prof.slope(a);
+        work.points += 1;
+        if d1 == 0.0 {
+            return a;
+        }
+        if d1 > 0.0 {
+            hi = a;
+        } else {
+            lo = a;
+        }
+        let newton = a - d1 / d2;
+        let next = if d2 > 0.0 && newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+        if (next - a).abs() <= 2.0 * f64::EPSILON * a.abs().max(1.0) || next <= lo || next >= hi {
+            return next.clamp(lo, hi);
+        }
+        a = next;
+    }
+    a
+}
+
+/// Adds the angle `a` (wrapped into `[0, 2π)`) unless a minimum within
+/// `10⁻⁹` rad is there already; false when `out` is full.
+pub fn push(out: &mut Angles, a: f64) -> bool {
+    let a = a.rem_euclid(TAU);
+    let a = if a >= TAU { 0.0 } else { a };
+    let near = |m: f64| {
+        let d = (m - a).rem_euclid(TAU);
+        d.min(TAU - d) <= 1e-9
+    };
+    out.iter().any(|&m| near(m)) || out.try_push(a).is_ok()
+}
+
+/// Every local minimum of `prof` with `h < level` (and possibly other
+/// local minima), angles in `[0, 2π)`, into `out`.
+pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
+    let mut work = Work::default();
+    if let Profile::Trig(f) = prof
+        && f.f.is_constant()
+    {
+        work.flat = true;
+        return work;
+    }
+    let mut stack = arrayvec::ArrayVec::<(f64, f64, u32), { START + DEPTH as usize + 2 }>::new();
+    let step = TAU / START as f64;
+    for k in (0..START).rev() {
+        let lo = k as f64 * step;
+        let hi = if k + 1 == START {
+            TAU
+        } else {
+            (k + 1) as f64 * step
+        };
+        let _ = stack.try_push((lo, hi, 0));
+    }
+    while let Some((lo, hi, depth)) = stack.pop() {
+        if work.arcs >= BUDGET {
+            work.unresolved += 1 + stack.len();
+            break;
+        }
+        work.arcs += 1;
+        let m = 0.5 * (lo + hi);
+        let (s, c) = m.sin_cos();
+        let e = prof.enclose(c, s, half_width(lo, hi, m), level);
+        if e.value.lo >= level || e.d1.excludes_zero() || e.d2.hi < 0.0 {
+            continue;
+        }
+        let leaf = depth >= DEPTH || m <= lo || m >= hi || !e.refinable;
+        if e.d2.lo > 0.0 || leaf {
+            let (s_lo, _) = prof.slope(lo);
+            // The circle's end is its start: one evaluation for both.
+            let (s_hi, _) = prof.slope(if hi >= TAU { 0.0 } else { hi });
+            work.points += 2;
+            let found = if leaf {
+                s_lo < 0.0 && s_hi > 0.0
+            } else {
+                s_lo <= 0.0 && s_hi >= 0.0
+            };
+            if found && !push(out, newton(prof, lo, hi, s_lo, s_hi, &mut work)) {
+                work.unresolved += 1;
+            }
+            continue;
+        }
+        // The stack holds at most START + DEPTH arcs (each level adds one).
+        if stack.try_push((m, hi, depth + 1)).is_err()
+            || stack.try_push((lo, m, depth + 1)).is_err()
+        {
+            work.unresolved += 1;
+        }
+    }
+    work
+}

@@ -1,0 +1,200 @@
+//! The contact search: for each pair, every local minimum of the gap
+//! `g(α)` along its circle that lies below zero (every contact), found
+//! with certainty.
+//!
+//! Each pair's gap is an increasing function of a simpler profile `h`
+//! ([`profile`]): a trigonometric polynomial of degree two for the mouth
+//! edge on the peg's side and the rim on the bore wall (squared distances
+//! to a line and to the hole's axis), a sinusoid for the rim on a plane,
+//! and for the rim on the mouth edge the squared distance between the two
+//! tube-centre circles, `(√F − R_m)² + Z²`. The plane pairs have their one
+//! minimum in closed form. The others are searched by branch and bound
+//! over arcs ([`certified`]): an arc is dropped only when an enclosure of
+//! `h`, `h′` or `h″` over it ([`trig`], [`interval`]) proves that it holds
+//! no minimum below the level, and the minimum of a convex arc is found by
+//! safeguarded Newton. A minimum is never missed by sampling between
+//! points; the search needs no warm start, so it is the same at a start,
+//! after an impact, along a sweep and along a smooth run.
+//!
+//! Only penetrating minima (`g < 0`) on the part of each surface that
+//! exists (see [`Pair::valid`]) become contacts; minima closer than
+//! `10⁻⁹` rad are one.
+
+pub mod certified;
+pub mod interval;
+pub mod profile;
+pub mod tori;
+pub mod trig;
+
+use super::contact::{ContactPoint, Contacts, Pair, axis_of};
+use super::merge;
+use super::params::Peg3dParams;
+use nalgebra::SVector;
+
+pub use certified::{Angles, MAX_MINIMA, Work};
+use profile::Problem;
+
+/// The minimum at `a` (from the profile) as a root of the generated
+/// function's own `g′`: one Newton step on the generated derivatives, kept
+/// when it is short (`10⁻⁹` rad) and lowers `|g′|`. The two agree to
+/// rounding; the step makes a contact of a symmetric pose lie exactly on
+/// the plane of symmetry, as the generated derivative says. Returns the
+/// angle and the generated outputs there.
+fn polish(
+    pair: Pair,
+    x: &SVector<f64, 7>,
+    p: &SVector<f64, 16>,
+    a: f64,
+) -> (f64, super::contact::PairOut<f64>) {
+    let e = pair.eval(x, a, p);
+    if e.d1 != 0.0 && e.d2 > 0.0 {
+        let next = a - e.d1 / e.d2;
+        if (next - a).abs() < 1e-9 {
+            let en = pair.eval(x, next, p);
+            if en.d1.abs() < e.d1.abs() {
+                return (next.rem_euclid(std::f64::consts::TAU), en);
+            }
+        }
+    }
+    (a, e)
+}
+
+/// The gap up to which [`Search::find`] also finds the minima of a pair
+/// out of contact (m): their least gap is the clearance by which the pose
+/// may move before the pair can touch.
+pub const CLEARANCE: f64 = 1e-4;
+
+/// A pair certified apart at a pose: every point of the pair's circle has
+/// a gap of at least `margin` there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Clear {
+    pose: SVector<f64, 7>,
+    margin: f64,
+}
+
+/// A bound on how much any point's gap of `pair` changes from pose `a` to
+/// pose `b` (unit quaternions), `p` the parameter vector.
+///
+/// A body point `b_B` (body frame) moves by `|Δp| + |ΔR b_B| ≤ |Δp| +
+/// 2|Δq| |b_B|`: for unit quaternions with `q·q′ ≥ 0` (the sign of `q′`
+/// chosen), `|q − q′| = 2 sin(φ/4)` and `|ΔR b_B| = 2 sin(φ/2) |b_B| ≤
+/// 2|q − q′| |b_B|`, `φ` the rotation between them. A distance to a fixed
+/// set changes by at most its point's displacement, so the rim pairs'
+/// gaps change by at most `|Δp| + 2|Δq| √(ϱ² + (L/2 − ρ_p)²)`. The mouth
+/// edge's distance to the peg's axis line changes by at most the
+/// displacement of the line's point nearest to it, at axial distance at
+/// most `|m − p| ≤ R_m + |p − o|` (`o = −ρ_h e_z` the mouth's centre) from
+/// the centre of mass, in either pose.
+fn moved(pair: Pair, p: &SVector<f64, 16>, a: &SVector<f64, 7>, b: &SVector<f64, 7>) -> f64 {
+    let dp = (b.fixed_rows::<3>(0) - a.fixed_rows::<3>(0)).norm();
+    let (qa, qb) = (a.fixed_rows::<4>(3), b.fixed_rows::<4>(3));
+    let dq = (qb - qa).norm().min((qb + qa).norm());
+    let (r, len, rho_p, big_r, rho_h) = (p[0], p[1], p[2], p[3], p[4]);
+    let reach = match pair {
+        Pair::EdgeSide => {
+            let o = nalgebra::Vector3::new(a[0], a[1], a[2] + rho_h).norm();
+            big_r + rho_h + o + dp
+        }
+        _ => (r - rho_p).hypot(0.5 * len - rho_p),
+    };
+    (dp + 2.0 * dq * reach) * (1.0 + 1e-12)
+}
+
+/// The contact search of one pair: the work its last call did, and the
+/// clearance it certified.
+#[derive(Clone, Debug, Default)]
+pub struct Search {
+    /// What the last search did (arcs visited, points evaluated).
+    pub work: Work,
+    clear: Option<Clear>,
+}
+
+impl Search {
+    /// Every local minimum of `pair`'s gap below `below` (m) at pose `x`
+    /// (unit quaternion), `p` the generated functions' parameter vector
+    /// ([`Peg3dParams::vector`]): angles in `[0, 2π)`. The result may hold
+    /// further local minima of the gap (at or above `below`), never a point
+    /// that is not one.
+    pub fn minima(
+        &mut self,
+        pair: Pair,
+        x: &SVector<f64, 7>,
+        p: &SVector<f64, 16>,
+        below: f64,
+    ) -> Angles {
+        let mut out = Angles::new();
+        self.work = Work::default();
+        match Problem::of(pair, x, p, below) {
+            Problem::Nothing => {}
+            Problem::Closed(None) => self.work.flat = true,
+            Problem::Closed(Some(a)) => {
+                certified::push(&mut out, a);
+            }
+            Problem::Search { h, level } => {
+                self.work = certified::minima(&h, level, &mut out);
+            }
+        }
+        out
+    }
+
+    /// The penetrating, valid local minima of `pair`'s gap at pose `x`
+    /// (unit quaternion), appended to `out` with the cols of
+    /// [`merge::assign`].
+    ///
+    /// The search also finds the minima below [`CLEARANCE`]: when none
+    /// penetrates, their least gap (or `CLEARANCE`) bounds the gap of
+    /// every point of the circle from below, and later calls at poses
+    /// that moved less than that return at once with no
+    /// contact (a body point moves by at most `|Δp| + 2|Δq| |b_B|`).
+    pub fn find(
+        &mut self,
+        pair: Pair,
+        prm: &Peg3dParams,
+        x: &SVector<f64, 7>,
+        p: &SVector<f64, 16>,
+        out: &mut Contacts,
+    ) {
+        if let Some(c) = self.clear
+            && moved(pair, p, &c.pose, x) < c.margin
+        {
+            self.work = Work {
+                cached: true,
+                ..Work::default()
+            };
+            return;
+        }
+        let minima = self.minima(pair, x, p, CLEARANCE);
+        let axis = axis_of(x);
+        let first = out.len();
+        let mut lowest = CLEARANCE;
+        for &a in &minima {
+            let (a, e) = polish(pair, x, p, a);
+            lowest = lowest.min(e.gap);
+            if e.gap < 0.0
+                && pair.valid(prm, &axis, &e.normal, &e.point, e.axial)
+                && pair.rim_faces_out(x, &e.normal, &e.point)
+            {
+                let point = ContactPoint {
+                    pair,
+                    angle: a,
+                    penetration: -e.gap,
+                    gradient: e.grad,
+                    normal: e.normal,
+                    point: e.point,
+                    saddle: None,
+                    ring: false,
+                };
+                if out.try_push(point).is_err() {
+                    self.work.unresolved += 1;
+                }
+            }
+        }
+        // Apart (every minimum found, none below zero): certified clear.
+        let certain = self.work.unresolved == 0 && !self.work.flat;
+        self.clear = (certain && lowest > 0.0).then_some(Clear {
+            pose: *x,
+            margin: lowest * (1.0 - 1e-9),
+        });
+        merge::assign(pair, x, p, &mut out[first..]);
+    }
+}

@@ -1,0 +1,227 @@
+//! Each pair's gap along its circle as a trigonometric polynomial of the
+//! angle (or, for the rim on the mouth, a function of two of them), built
+//! once per pose: the functions the certified search bounds.
+//!
+//! With the pose's rotation `R = (e₁ e₂ a)` and `ϱ = r − ρ_p`, the rim's
+//! tube-centre circle is `c(β) = c_r + ϱ (cos β e₁ + sin β e₂)`,
+//! `c_r = p + (ρ_p − L/2) a`, and the mouth's is
+//! `m(α) = R_m (cos α, sin α, 0) − ρ_h e_z`, `R_m = R + ρ_h`.
+//!
+//! - **Rim against a plane** `z = z₀`: `g(β) = c_z(β) − ρ_p − z₀`, a
+//!   sinusoid `c_{r,z} + ϱ (e₁,z cos β + e₂,z sin β) − ρ_p − z₀` with its
+//!   one minimum at `(cos β, sin β) = −(e₁,z, e₂,z)/|(e₁,z, e₂,z)|`.
+//! - **Rim against the bore wall**: `g = R − ρ_p − √F(β)`,
+//!   `F = |c_xy|²`, a trigonometric polynomial of degree two:
+//!   `F = |c_{r,xy}|² + ϱ²(1 + a_z²)/2 + 2ϱ (c_{r,xy}·e₁ cos β + c_{r,xy}·e₂
+//!   sin β) + ϱ²((e₂,z² − e₁,z²)/2 cos 2β − e₁,z e₂,z sin 2β)`
+//!   (with `|e_{i,xy}|² = 1 − e_{i,z}²` and `e₁·e₂ = 0`). The minima of `g`
+//!   are the maxima of `F`: the search minimizes `h = −F`, and `g < g_b`
+//!   exactly where `h < −(R − ρ_p − g_b)²`.
+//! - **Mouth edge against the peg's side** (the axis line `p + t a`):
+//!   `g = √F(α) − r − ρ_h`, `F = |u|² − (u·a)²`, `u = m(α) − p`:
+//!   with `o = −ρ_h e_z − p`,
+//!   `F = |o × a|² + R_m²(a_z² + (a_x² + a_y²)/2) + 2R_m((o_x − (o·a) a_x)
+//!   cos α + (o_y − (o·a) a_y) sin α) − R_m²((a_x² − a_y²)/2 cos 2α +
+//!   a_x a_y sin 2α)`. `h = F`, `g < g_b` where `h < (r + ρ_h + g_b)²`.
+//! - **Rim against the mouth edge** (two tori): `g = √h − ρ_p − ρ_h`,
+//!   `h(β) = (ρ − R_m)² + Z²` with `ρ = √F(β)` (the bore wall's `F`) and
+//!   `Z = c_z + ρ_h` a sinusoid;
+//!
+//!   ```text
+//!   h′ = F′ (1 − R_m/ρ) + 2 Z Z′
+//!   h″ = F″ (1 − R_m/ρ) + R_m F′²/(2ρ³) + 2 Z′² + 2 Z Z″
+//!   ```
+//!
+//!   and `g < g_b` where `h < (ρ_p + ρ_h + g_b)²`.
+//!
+//! In each case `g` is an increasing function of `h` wherever `g` is
+//! smooth, so the local minima of `g` are those of `h`, at the same angles.
+
+use super::tori;
+use super::trig::{Bounded, Enclosure, Trig2};
+use crate::compliant_peg_3d::contact::Pair;
+use nalgebra::SVector;
+
+/// The function of one angle whose local minima are a pair's contacts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Profile {
+    /// A trigonometric polynomial `h` of degree two.
+    Trig(Bounded),
+    /// The rim against the mouth edge: `h = (√F − R_m)² + Z²`.
+    Tori {
+        /// `F = |c_xy|²` of the rim circle.
+        f: Bounded,
+        /// `Z = c_z + ρ_h` of the rim circle (first harmonic only).
+        z: Bounded,
+        /// `R_m = R + ρ_h` (m).
+        rm: f64,
+    },
+}
+
+/// A pair's search problem at one pose: its profile `h` and the level
+/// below which a minimum of `h` is a minimum of `g` below the asked
+/// bound; or, for the plane pairs, the one minimum in closed form.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Problem {
+    /// Find the minima of `h` below `level`.
+    Search {
+        /// The profile.
+        h: Profile,
+        /// The level `T`.
+        level: f64,
+    },
+    /// The sinusoid's one minimum (rad), or `None` for a constant.
+    Closed(Option<f64>),
+    /// No point of the circle comes below the bound.
+    Nothing,
+}
+
+/// `(e₁, e₂, a)`: the columns of the rotation matrix of the unit
+/// quaternion `x[3..7]` (the generated functions' matrix).
+fn columns(x: &SVector<f64, 7>) -> [[f64; 3]; 3] {
+    let (w, i, j, k) = (x[3], x[4], x[5], x[6]);
+    [
+        [
+            1.0 - 2.0 * (j * j + k * k),
+            2.0 * (i * j + w * k),
+            2.0 * (i * k - w * j),
+        ],
+        [
+            2.0 * (i * j - w * k),
+            1.0 - 2.0 * (i * i + k * k),
+            2.0 * (j * k + w * i),
+        ],
+        [
+            2.0 * (i * k + w * j),
+            2.0 * (j * k - w * i),
+            1.0 - 2.0 * (i * i + j * j),
+        ],
+    ]
+}
+
+/// `F = |c_xy(β)|²` and `c_z(β)` of the rim's tube-centre circle.
+fn rim(x: &SVector<f64, 7>, p: &SVector<f64, 16>) -> (Trig2, Trig2) {
+    let [e1, e2, a] = columns(x);
+    let (r, len, rho_p) = (p[0], p[1], p[2]);
+    let rr = r - rho_p;
+    let h = rho_p - 0.5 * len;
+    let cr = [x[0] + h * a[0], x[1] + h * a[1], x[2] + h * a[2]];
+    let f = Trig2 {
+        a0: cr[0] * cr[0] + cr[1] * cr[1] + 0.5 * rr * rr * (1.0 + a[2] * a[2]),
+        a1: 2.0 * rr * (cr[0] * e1[0] + cr[1] * e1[1]),
+        b1: 2.0 * rr * (cr[0] * e2[0] + cr[1] * e2[1]),
+        a2: 0.5 * rr * rr * (e2[2] * e2[2] - e1[2] * e1[2]),
+        b2: -rr * rr * e1[2] * e2[2],
+    };
+    let z = Trig2 {
+        a0: cr[2],
+        a1: rr * e1[2],
+        b1: rr * e2[2],
+        a2: 0.0,
+        b2: 0.0,
+    };
+    (f, z)
+}
+
+/// `F = |u|² − (u·a)²` of the mouth circle against the peg's axis line.
+fn edge(x: &SVector<f64, 7>, p: &SVector<f64, 16>) -> Trig2 {
+    let a = columns(x)[2];
+    let (big_r, rho_h) = (p[3], p[4]);
+    let rm = big_r + rho_h;
+    let o = [-x[0], -x[1], -rho_h - x[2]];
+    let oa = o[0] * a[0] + o[1] * a[1] + o[2] * a[2];
+    let cx = [
+        o[1] * a[2] - o[2] * a[1],
+        o[2] * a[0] - o[0] * a[2],
+        o[0] * a[1] - o[1] * a[0],
+    ];
+    let axy = a[0] * a[0] + a[1] * a[1];
+    Trig2 {
+        a0: cx[0] * cx[0] + cx[1] * cx[1] + cx[2] * cx[2] + rm * rm * (a[2] * a[2] + 0.5 * axy),
+        a1: 2.0 * rm * (o[0] - oa * a[0]),
+        b1: 2.0 * rm * (o[1] - oa * a[1]),
+        a2: -0.5 * rm * rm * (a[0] * a[0] - a[1] * a[1]),
+        b2: -rm * rm * a[0] * a[1],
+    }
+}
+
+impl Problem {
+    /// The search problem of `pair` at pose `x` (unit quaternion) for the
+    /// minima of the gap below `below` (m), `p` the generated functions'
+    /// parameter vector.
+    pub fn of(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, below: f64) -> Problem {
+        let (r, rho_p, big_r, rho_h, depth) = (p[0], p[2], p[3], p[4], p[5]);
+        let positive = |v: f64| if v > 0.0 { Some(v * v) } else { None };
+        match pair {
+            Pair::RimTop | Pair::RimBottom => {
+                let (_, z) = rim(x, p);
+                let plane = if pair == Pair::RimTop { 0.0 } else { -depth };
+                let amp = z.a1.hypot(z.b1);
+                if z.a0 - amp - rho_p - plane >= below {
+                    return Problem::Nothing;
+                }
+                let angle =
+                    (amp > 0.0).then(|| f64::atan2(-z.b1, -z.a1).rem_euclid(std::f64::consts::TAU));
+                Problem::Closed(angle)
+            }
+            Pair::RimWall => {
+                let (f, _) = rim(x, p);
+                let level = match positive(big_r - rho_p - below) {
+                    Some(v) => -v,
+                    None => f64::INFINITY,
+                };
+                Problem::Search {
+                    h: Profile::Trig((-f).bounded()),
+                    level,
+                }
+            }
+            Pair::EdgeSide => match positive(r + rho_h + below) {
+                Some(level) => Problem::Search {
+                    h: Profile::Trig(edge(x, p).bounded()),
+                    level,
+                },
+                None => Problem::Nothing,
+            },
+            Pair::RimEdge => match positive(rho_p + rho_h + below) {
+                Some(level) => {
+                    let (f, mut z) = rim(x, p);
+                    z.a0 += rho_h;
+                    Problem::Search {
+                        h: Profile::Tori {
+                            f: f.bounded(),
+                            z: z.bounded(),
+                            rm: big_r + rho_h,
+                        },
+                        level,
+                    }
+                }
+                None => Problem::Nothing,
+            },
+        }
+    }
+}
+
+impl Profile {
+    /// `(h′, h″)` at angle `t` (rad).
+    pub fn slope(&self, t: f64) -> (f64, f64) {
+        let (s, c) = t.sin_cos();
+        match self {
+            Profile::Trig(f) => {
+                let [_, d1, d2] = f.f.at(c, s);
+                (d1, d2)
+            }
+            Profile::Tori { f, z, rm } => tori::slope(f, z, *rm, c, s),
+        }
+    }
+
+    /// Enclosures of `h`, `h′`, `h″` over `|θ − m| ≤ w`, `(c, s)` the
+    /// cosine and sine of `m` ([`Bounded::enclose`], [`tori::enclose`];
+    /// the derivatives may be left unbounded where the value is at least
+    /// `level`).
+    pub fn enclose(&self, c: f64, s: f64, w: f64, level: f64) -> Enclosure {
+        match self {
+            Profile::Trig(f) => f.enclose(c, s, w),
+            Profile::Tori { f, z, rm } => tori::enclose(f, z, *rm, c, s, w, level),
+        }
+    }
+}

@@ -1,0 +1,216 @@
+//! Trigonometric polynomials of degree two in an angle, and enclosures of
+//! them and their first two derivatives over an arc.
+//!
+//! ```text
+//! f(θ) = a₀ + a₁ cos θ + b₁ sin θ + a₂ cos 2θ + b₂ sin 2θ
+//! ```
+//!
+//! With the amplitudes `n₁ = |(a₁, b₁)|`, `n₂ = |(a₂, b₂)|` every
+//! derivative is bounded by `|f⁽ʲ⁾| ≤ n₁ + 2ʲ n₂` (`j ≥ 1`), so over an
+//! arc `|θ − m| ≤ w` Taylor's theorem with the Lagrange remainder gives,
+//! with `M₃ = n₁ + 8 n₂` and `fⱼ = f⁽ʲ⁾(m)`,
+//!
+//! ```text
+//! f(θ)   ∈ f₀ + {f₁ δ + f₂ δ²/2 : |δ| ≤ w} ± M₃ w³/6
+//! f′(θ)  ∈ f₁ ± (|f₂| w + M₃ w²/2)
+//! f″(θ)  ∈ f₂ ± M₃ w
+//! ```
+//!
+//! The values `fⱼ` are computed in floating point from `cos m`, `sin m`
+//! (each within an ulp) with a handful of operations, each term at most
+//! the sum `Sⱼ` of the absolute coefficients (`2ʲ`-weighted for the second
+//! harmonic, `a₀` only in `S₀`); their rounding error is below `8 u Sⱼ`
+//! (`u = 2⁻⁵³`), and the enclosures add `64 u Sⱼ`.
+
+use super::interval::{Iv, down, up};
+
+/// The rounding allowance per unit of `Sⱼ` (`64 u`).
+const ROUND: f64 = 32.0 * f64::EPSILON;
+
+/// `a₀ + a₁ cos θ + b₁ sin θ + a₂ cos 2θ + b₂ sin 2θ`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Trig2 {
+    /// Constant term.
+    pub a0: f64,
+    /// `cos θ` coefficient.
+    pub a1: f64,
+    /// `sin θ` coefficient.
+    pub b1: f64,
+    /// `cos 2θ` coefficient.
+    pub a2: f64,
+    /// `sin 2θ` coefficient.
+    pub b2: f64,
+}
+
+/// Enclosures of a function and its first two derivatives over an arc.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Enclosure {
+    /// The function's values.
+    pub value: Iv,
+    /// Its first derivative.
+    pub d1: Iv,
+    /// Its second derivative.
+    pub d2: Iv,
+    /// Whether a shorter arc can still narrow the slope's enclosure: false
+    /// once the part that shrinks with the arc is below the rounding
+    /// allowance (a flat stretch, such as two minima about to merge).
+    pub refinable: bool,
+}
+
+impl std::ops::Neg for Trig2 {
+    type Output = Trig2;
+
+    /// `−f`.
+    fn neg(self) -> Trig2 {
+        Trig2 {
+            a0: -self.a0,
+            a1: -self.a1,
+            b1: -self.b1,
+            a2: -self.a2,
+            b2: -self.b2,
+        }
+    }
+}
+
+impl Trig2 {
+    /// `(f, f′, f″)` at the angle whose cosine and sine are `(c, s)`.
+    #[inline]
+    pub fn at(&self, c: f64, s: f64) -> [f64; 3] {
+        let (c2, s2) = (c * c - s * s, 2.0 * c * s);
+        let h1 = self.a1 * c + self.b1 * s;
+        let h2 = self.a2 * c2 + self.b2 * s2;
+        let k1 = self.b1 * c - self.a1 * s;
+        let k2 = self.b2 * c2 - self.a2 * s2;
+        [self.a0 + h1 + h2, k1 + 2.0 * k2, -h1 - 4.0 * h2]
+    }
+
+    /// `(n₁, n₂)`: the amplitudes of the two harmonics.
+    pub fn amplitudes(&self) -> (f64, f64) {
+        (self.a1.hypot(self.b1), self.a2.hypot(self.b2))
+    }
+
+    /// Whether the polynomial is constant (no harmonic).
+    pub fn is_constant(&self) -> bool {
+        self.a1 == 0.0 && self.b1 == 0.0 && self.a2 == 0.0 && self.b2 == 0.0
+    }
+
+    /// The rounding allowances `(e₀, e₁, e₂)` of `f`, `f′`, `f″` computed
+    /// by [`Trig2::at`].
+    fn rounding(&self) -> [f64; 3] {
+        let s1 = self.a1.abs() + self.b1.abs();
+        let s2 = self.a2.abs() + self.b2.abs();
+        [
+            ROUND * (self.a0.abs() + s1 + s2),
+            ROUND * (s1 + 2.0 * s2),
+            ROUND * (s1 + 4.0 * s2),
+        ]
+    }
+
+    /// The polynomial with the constants of its enclosures.
+    pub fn bounded(self) -> Bounded {
+        let (n1, n2) = self.amplitudes();
+        Bounded {
+            f: self,
+            m3: up(n1 + 8.0 * n2),
+            e: self.rounding(),
+        }
+    }
+}
+
+/// A [`Trig2`] with the bound `M₃ ≥ |f‴|` and the rounding allowances of
+/// its values, computed once.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bounded {
+    /// The polynomial.
+    pub f: Trig2,
+    m3: f64,
+    e: [f64; 3],
+}
+
+impl Bounded {
+    /// The bound `M₃ ≥ |f‴|` (`n₁ + 8 n₂`).
+    pub fn m3(&self) -> f64 {
+        self.m3
+    }
+
+    /// The enclosures of `f`, `f′`, `f″` over `|θ − m| ≤ w`, `(c, s)` the
+    /// cosine and sine of `m` (see the module's inequalities).
+    pub fn enclose(&self, c: f64, s: f64, w: f64) -> Enclosure {
+        let [f0, f1, f2] = self.f.at(c, s);
+        let [e0, e1, e2] = self.e;
+        let m3 = self.m3;
+        let rem0 = up(m3 * w * w * w / 6.0);
+        // {f₁ δ + f₂ δ²/2 : |δ| ≤ w}: the ends and, inside, the vertex.
+        let (qa, qb) = (-f1 * w + 0.5 * f2 * w * w, f1 * w + 0.5 * f2 * w * w);
+        let (mut qlo, mut qhi) = (qa.min(qb), qa.max(qb));
+        if f2 != 0.0 && (f1 / f2).abs() <= w {
+            let v = -0.5 * f1 * f1 / f2;
+            qlo = qlo.min(v);
+            qhi = qhi.max(v);
+        }
+        // The quadratic's own rounding is a few ulps of its terms.
+        let qe = ROUND * (f1.abs() * w + f2.abs() * w * w);
+        let value = Iv::new(
+            down(f0 + qlo - rem0 - e0 - qe),
+            up(f0 + qhi + rem0 + e0 + qe),
+        );
+        let shrinks = f2.abs() * w + 0.5 * m3 * w * w;
+        let r1 = up(shrinks + e1 + ROUND * f2.abs() * w);
+        let r2 = up(m3 * w + e2);
+        Enclosure {
+            value,
+            d1: Iv::around(f1, r1),
+            d2: Iv::around(f2, r2),
+            refinable: shrinks > e1,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Trig2;
+
+    fn f(t: &Trig2, th: f64) -> [f64; 3] {
+        t.at(th.cos(), th.sin())
+    }
+
+    #[test]
+    fn derivatives_match_central_differences() {
+        let t = Trig2 {
+            a0: 0.3,
+            a1: -1.2,
+            b1: 0.4,
+            a2: 0.7,
+            b2: -0.9,
+        };
+        let h = 1e-5;
+        for k in 0..20 {
+            let th = 0.31 * k as f64;
+            let [_, d1, d2] = f(&t, th);
+            let fd1 = (f(&t, th + h)[0] - f(&t, th - h)[0]) / (2.0 * h);
+            let fd2 = (f(&t, th + h)[1] - f(&t, th - h)[1]) / (2.0 * h);
+            assert!((d1 - fd1).abs() < 1e-8 && (d2 - fd2).abs() < 1e-8, "{th}");
+        }
+    }
+
+    #[test]
+    fn enclosures_contain_dense_samples() {
+        let t = Trig2 {
+            a0: 1.0,
+            a1: 0.5,
+            b1: -2.0,
+            a2: 1.5,
+            b2: 0.25,
+        };
+        for (m, w) in [(0.0, 0.8), (1.0, 0.1), (2.5, 1.6), (-0.7, 0.01)] {
+            let e = t.bounded().enclose(f64::cos(m), f64::sin(m), w);
+            for k in 0..=1000 {
+                let th = m - w + 2.0 * w * k as f64 / 1000.0;
+                let [v, d1, d2] = f(&t, th);
+                assert!(e.value.lo <= v && v <= e.value.hi, "value at {th}");
+                assert!(e.d1.lo <= d1 && d1 <= e.d1.hi, "d1 at {th}");
+                assert!(e.d2.lo <= d2 && d2 <= e.d2.hi, "d2 at {th}");
+            }
+        }
+    }
+}
