@@ -32,6 +32,7 @@ mod events;
 mod explicit_rk;
 mod fallible;
 mod iteration;
+mod kinematic;
 mod lu;
 mod method;
 mod non_finite;
