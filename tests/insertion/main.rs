@@ -5,6 +5,7 @@
 mod common;
 
 mod design_margins;
+mod industreal;
 mod jacobian;
 mod outcomes;
 mod quasi_static;
