@@ -7,7 +7,7 @@
 //! size.
 //!
 //! `implicit_probe limit SCENE TA TB` starts from the state at `TA`
-//! (RODAS4, rtol 1e-9) and counts the steps to `TB` of RODAS4 and DOPRI5
+//! (RODAS4, rtol 1e-9), prints the eigenvalues of the Jacobian there, and counts the steps to `TB` of RODAS4 and DOPRI5
 //! at rtol 1e-4 to 1e-8; of RODAS4 with its Jacobian and/or time
 //! derivative replaced by central differences; and of RODAS4 at rtol 1e-6
 //! with the tolerance of each state component in turn relaxed by 10^3.
@@ -111,6 +111,23 @@ fn limit() {
         .solve(&sys, 0.0, y0, ta)
         .unwrap();
     let ya = sol.x_final;
+    let _ = sys.rhs(ta, &ya);
+    let mut eig: Vec<_> = sys
+        .jacobian(ta, &ya)
+        .complex_eigenvalues()
+        .iter()
+        .copied()
+        .collect();
+    eig.sort_by(|a, b| b.norm().total_cmp(&a.norm()));
+    for e in eig.iter().filter(|e| e.norm() > 1.0) {
+        println!(
+            "eigenvalue {:.4e} {:+.4e}i (|λ| {:.3e} 1/s, damping ratio {:.2e})",
+            e.re,
+            e.im,
+            e.norm(),
+            -e.re / e.norm()
+        );
+    }
     for rtol in [1e-4, 1e-5, 1e-6, 1e-7, 1e-8] {
         for m in [Method::Rodas4, Method::Dopri5] {
             let mut o = Options::with_tolerances(rtol, rtol * 1e-4);

@@ -365,13 +365,14 @@ fn three_d_cases(only: &[String]) -> Vec<three_d::Case> {
             );
             c.reference = (Rodas4, 1e-9);
             c.check = (Rodas4, 1e-8);
-            // DOPRI5 is stability-bound on the light pegs: the 4 mm peg
-            // does not finish in 10^6 steps.
-            let dopri5: &[f64] = if size == 4 { &[] } else { &[1e-4, 1e-6] };
+            // DOPRI5 is stability-bound on the light pegs (the 8 mm peg
+            // takes 279k steps, the 4 mm peg does not finish in 10^6):
+            // measured at the shipped rtol on the two heavier ones.
+            let dopri5: &[f64] = if size >= 12 { &[1e-6] } else { &[] };
             c.settings = [
                 grid(Dopri5, dopri5),
-                grid(Rodas3, &[1e-3, 1e-4, 1e-5]),
-                grid(Rodas4, &[1e-3, 1e-4, 1e-5, 1e-6, 1e-7]),
+                grid(Rodas3, &[1e-4, 1e-5]),
+                grid(Rodas4, &[1e-4, 1e-5, 1e-6]),
             ]
             .concat();
             out.push(c);

@@ -575,7 +575,7 @@ const METHODS: [MethodKind; 4] = [
 
 /// Five panels (depth, tilt, peak force, transition times, end time): error
 /// against CPU time per method, the target and the reference's own error
-/// as dashed lines.
+/// as dashed lines; a panel where every run's error is zero is left out.
 pub fn figure(s: &Study) -> Figure {
     let titles = [
         "depth, relative",
@@ -612,22 +612,24 @@ pub fn figure(s: &Study) -> Figure {
                 );
             }
         }
-        if hi > 0.0 {
+        if hi == 0.0 {
+            // No run differs from the reference here (a drop's end time).
+            continue;
+        }
+        panel = panel.with(
+            Series::line("target", vec![(lo, TARGETS[k]), (hi, TARGETS[k])])
+                .styled(Style::Dashed)
+                .colored(4),
+        );
+        if s.reference_errors[k] > 0.0 && s.reference_errors[k].is_finite() {
             panel = panel.with(
-                Series::line("target", vec![(lo, TARGETS[k]), (hi, TARGETS[k])])
-                    .styled(Style::Dashed)
-                    .colored(4),
+                Series::line(
+                    "reference error estimate",
+                    vec![(lo, s.reference_errors[k]), (hi, s.reference_errors[k])],
+                )
+                .styled(Style::Dashed)
+                .colored(7),
             );
-            if s.reference_errors[k] > 0.0 && s.reference_errors[k].is_finite() {
-                panel = panel.with(
-                    Series::line(
-                        "reference error estimate",
-                        vec![(lo, s.reference_errors[k]), (hi, s.reference_errors[k])],
-                    )
-                    .styled(Style::Dashed)
-                    .colored(7),
-                );
-            }
         }
         fig.panels.push(panel);
     }
