@@ -60,6 +60,9 @@ pub enum SceneError {
         /// Why it is rejected.
         reason: String,
     },
+    /// The scene's name (its file's stem) cannot name its output files.
+    #[error(transparent)]
+    Name(#[from] crate::output::names::NameError),
     /// The `kind` field names no registered scene kind.
     #[error("`kind` = {value:?}: unknown scene kind; known kinds: {known}")]
     UnknownKind {
@@ -87,7 +90,7 @@ impl SceneError {
     /// Dotted path of the field this error is about, if any.
     pub fn field(&self) -> Option<&str> {
         match self {
-            SceneError::Io { .. } | SceneError::Syntax { .. } => None,
+            SceneError::Io { .. } | SceneError::Syntax { .. } | SceneError::Name(_) => None,
             SceneError::Missing { field }
             | SceneError::Unknown { field, .. }
             | SceneError::WrongType { field, .. }
@@ -215,6 +218,16 @@ pub enum OutputError {
         /// The output file (the scene file).
         path: PathBuf,
     },
+    /// A file with the run manifest's name exists and is not a pegdyn run
+    /// manifest (a user's own file): it is never replaced.
+    #[error(
+        "refusing to run: {path} exists and is not a pegdyn run manifest, and a run of this scene \
+         would replace it with its own; move that file or choose another --out directory"
+    )]
+    ForeignManifest {
+        /// The file with the manifest's name.
+        path: PathBuf,
+    },
     /// A plot has no finite data point to scale its axes by.
     #[error("cannot draw {path}: panel {panel:?} has no finite data point")]
     EmptyPlot {
@@ -245,6 +258,17 @@ pub enum RunError {
     /// state (relative curvature not positive).
     #[error("Hertz contact: {0}")]
     Hertz(#[from] crate::hertz::HertzError),
+    /// The run's replay page could not be made (a run without samples, a
+    /// non-finite number in the record, a state the model refuses).
+    #[error("replay page: {0}")]
+    Replay(#[from] crate::replay::ReplayError),
+    /// A stop was requested (a signal, Ctrl-C) before the run finished.
+    #[error("interrupted before the run finished")]
+    Interrupted,
+    /// Memory for a result whose size the scene sets could not be
+    /// reserved (the limits were raised past what the machine has).
+    #[error(transparent)]
+    Memory(#[from] crate::scene::reserve::ReserveError),
 }
 
 impl From<crate::rigid_peg::trajectory::ForwardError> for RunError {

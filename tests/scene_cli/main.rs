@@ -4,6 +4,9 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod bounded_work;
 mod cli;
 mod fuzz;
 mod hostile_scenes;
+mod replay;
+mod run_record;

@@ -33,12 +33,13 @@ use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::integrator::IntegratorSpec;
-use crate::scene::kind::{Kind, Scene};
-use crate::scene::limits::WorkItem;
+use crate::scene::kind::{Kind, Scene, Written};
+use crate::scene::limits::{WorkItem, try_with_capacity};
 use crate::scene::progress::{Progress, par_map_counted};
 use crate::scene::ranges::FieldRange;
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, outcome_text, run_one};
-use crate::scene::shared::compliant_peg_3d::{ranges, tables};
+use crate::scene::shared::compliant_peg_3d::{ranges, replay, tables};
+use crate::scene::shared::replay::{GridReplayTable, RunChoice};
 use crate::scene::summary::{Metric, RunSummary};
 use crate::scene::validate::Checker;
 
@@ -97,6 +98,9 @@ pub struct SweepScene {
     pub grid: GridTable,
     /// `[integrator]`.
     pub integrator: IntegratorSpec,
+    /// `[replay]` (optional; the page shows the worst run by default).
+    #[serde(default)]
+    pub replay: GridReplayTable,
 }
 
 /// One grid point.
@@ -112,6 +116,8 @@ struct Point {
 struct Ready {
     scene: SweepScene,
     points: Vec<(Point, Built)>,
+    /// The `[robot]` table's own run, when `replay.run = "nominal"`.
+    nominal: Option<Built>,
     integrator: IntegratorSpec,
     method_reason: &'static str,
 }
@@ -129,11 +135,12 @@ impl SweepScene {
             robot,
             criteria: self.criteria.clone(),
             integrator: self.integrator.clone(),
+            replay: Default::default(),
         }
     }
 }
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: SweepScene = doc.body()?;
     let mut c = Checker::default();
     let g = &s.grid;
@@ -155,31 +162,93 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
         }
     }
     YIELD_PRESSURE.require(&mut c, g.yield_pressure);
+    if let Some(run) = s.replay.run {
+        // A product of list lengths past `usize` saturates: every index is then in range.
+        if let Err(e) = run.check(s.grid_points() as usize) {
+            c.push(e);
+        }
+    }
     c.finish()?;
-    let mut points = Vec::new();
-    for &lateral in &g.lateral_errors {
-        for &angular_deg in &g.angular_errors_deg {
-            for &precession in &g.precession_rates {
-                for &spin in &g.spin_rates {
-                    let p = Point {
-                        lateral,
-                        angular_deg,
-                        precession,
-                        spin,
-                    };
-                    let built = s.as_rcc(&p).build()?;
-                    points.push((p, built));
+    Ok(Box::new(s))
+}
+
+impl SweepScene {
+    /// The number of grid points, from the lists' lengths (as f64: a
+    /// product of four lengths may not fit a `usize`).
+    fn grid_points(&self) -> f64 {
+        let g = &self.grid;
+        [
+            g.lateral_errors.len(),
+            g.angular_errors_deg.len(),
+            g.precession_rates.len(),
+            g.spin_rates.len(),
+        ]
+        .iter()
+        .map(|&n| n as f64)
+        .product()
+    }
+}
+
+impl Written for SweepScene {
+    fn work(&self) -> Vec<WorkItem> {
+        let mut w = self.integrator.work("integrator");
+        // Every point's insertion is built before the runs start, and
+        // every run keeps its row.
+        let each = std::mem::size_of::<(Point, Built)>() + std::mem::size_of::<Row>();
+        w.push(WorkItem::new(
+            "grid",
+            "max_runs",
+            self.grid_points(),
+            each as f64,
+        ));
+        w
+    }
+
+    fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        let s = *self;
+        let g = &s.grid;
+        let n = s.grid_points();
+        let mut points = try_with_capacity(n as usize, "grid points", "max_runs").map_err(|e| {
+            SceneErrors::from(crate::error::SceneError::invalid("grid", n, e.to_string()))
+        })?;
+        for &lateral in &g.lateral_errors {
+            for &angular_deg in &g.angular_errors_deg {
+                for &precession in &g.precession_rates {
+                    for &spin in &g.spin_rates {
+                        let p = Point {
+                            lateral,
+                            angular_deg,
+                            precession,
+                            spin,
+                        };
+                        let built = s.as_rcc(&p).build()?;
+                        points.push((p, built));
+                    }
                 }
             }
         }
+        let nominal = match s.replay.run {
+            Some(RunChoice::Nominal) => {
+                let r = &s.robot;
+                let p = Point {
+                    lateral: r.lateral_error,
+                    angular_deg: r.angular_error_deg,
+                    precession: r.precession_rate,
+                    spin: r.spin_rate,
+                };
+                Some(s.as_rcc(&p).build()?)
+            }
+            _ => None,
+        };
+        let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::NON_STIFF);
+        Ok(Box::new(Ready {
+            scene: s,
+            points,
+            nominal,
+            integrator,
+            method_reason,
+        }))
     }
-    let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::NON_STIFF);
-    Ok(Box::new(Ready {
-        scene: s,
-        points,
-        integrator,
-        method_reason,
-    }))
 }
 
 /// One run's row.
@@ -223,17 +292,6 @@ fn one(p: Point, b: &Built, spec: &IntegratorSpec) -> Result<Row, RunError> {
 }
 
 impl Scene for Ready {
-    fn work(&self) -> Vec<WorkItem> {
-        let mut w = self.scene.integrator.work("integrator");
-        w.push(WorkItem::new(
-            "grid",
-            "max_runs",
-            self.points.len() as f64,
-            0.0,
-        ));
-        w
-    }
-
     fn describe(&self) -> String {
         format!(
             "rotation assist: {} insertions ({} lateral x {} angular errors x {} precession x {} \
@@ -251,7 +309,7 @@ impl Scene for Ready {
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
         let rows = par_map_counted(&self.points, &mut ctx.progress, "insertion", |(p, b)| {
             one(*p, b, &self.integrator)
-        });
+        })?;
         let rows: Vec<Row> = rows.into_iter().collect::<Result<_, _>>()?;
         let yield_p = self.scene.grid.yield_pressure;
         let mut csv = ctx.table(
@@ -327,6 +385,30 @@ impl Scene for Ready {
             pmax / yield_p,
             "",
         ));
+        if self.scene.replay.wanted(ctx) {
+            let outcomes: Vec<(bool, f64)> = rows.iter().map(|r| (r.seated, r.end)).collect();
+            let describe = |p: &Point| {
+                format!(
+                    "lateral error {} m, angular error {} deg, precession {} rad/s, spin {} rad/s",
+                    p.lateral, p.angular_deg, p.precession, p.spin
+                )
+            };
+            let spec = &self.integrator;
+            let nominal = || {
+                let run = |b| run_one(b, spec, true, &mut Progress::silent());
+                self.nominal.as_ref().map(run).transpose()
+            };
+            let choice = self.scene.replay.run.unwrap_or(RunChoice::Worst);
+            replay::write_grid(
+                ctx,
+                choice,
+                &outcomes,
+                &self.points,
+                describe,
+                spec,
+                nominal,
+            )?;
+        }
         Ok(out)
     }
 }

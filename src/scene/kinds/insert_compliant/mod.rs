@@ -40,6 +40,7 @@ use serde::Deserialize;
 
 pub mod output;
 pub mod ranges;
+pub mod replay;
 
 use output::write_outputs;
 
@@ -54,8 +55,9 @@ use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::integrator::IntegratorSpec;
-use crate::scene::kind::{Kind, Scene};
+use crate::scene::kind::{Kind, Scene, Written};
 use crate::scene::shared::material::{MaterialSpec, steel};
+use crate::scene::shared::replay::ReplayTable;
 use crate::scene::simulate::{integrate, integration_summary};
 use crate::scene::summary::RunSummary;
 use crate::scene::validate::Checker;
@@ -70,7 +72,7 @@ pub const KIND: Kind = Kind {
     ranges: &[],
 };
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: InsertCompliantScene = doc.body()?;
     let built = s.build()?;
     let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::STIFF_CONTACT);
@@ -185,6 +187,9 @@ pub struct InsertCompliantScene {
     pub insert_compliant: InsertParams,
     /// The `[integrator]` table.
     pub integrator: IntegratorSpec,
+    /// The `[replay]` table (optional).
+    #[serde(default)]
+    pub replay: ReplayTable,
 }
 
 /// What the scene builds from its tables.
@@ -361,11 +366,17 @@ impl InsertCompliantScene {
     }
 }
 
-impl Scene for Ready {
+impl Written for Ready {
     fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
         self.scene.integrator.work("integrator")
     }
 
+    fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        Ok(self)
+    }
+}
+
+impl Scene for Ready {
     fn describe(&self) -> String {
         let p = &self.scene.insert_compliant;
         format!(
@@ -442,7 +453,16 @@ impl Ready {
             integration: Some(integration_summary(&self.integrator, &sol, &["inserted"])),
             ..RunSummary::default()
         };
-        write_outputs(ctx, sample, &sol, &mut out)?;
+        write_outputs(ctx, &sample, &sol, &mut out)?;
+        if self.scene.replay.wanted(ctx) {
+            replay::write(
+                ctx,
+                &self.scene.insert_compliant,
+                &self.built,
+                &sol,
+                &sample,
+            )?;
+        }
         Ok(out)
     }
 }

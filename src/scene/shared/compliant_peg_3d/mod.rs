@@ -3,10 +3,11 @@
 //! the `[peg]`, `[wrist]`, `[robot]` and `[criteria]` tables ([`tables`])
 //! and their declared ranges ([`ranges`]), one held-peg insertion run
 //! ([`insertion`]), its time series, events and views ([`output`]) and its
-//! no-jam margins ([`margins`]).
+//! no-jam margins ([`margins`]) and its replay page ([`replay`]).
 
 pub mod insertion;
 pub mod margins;
 pub mod output;
 pub mod ranges;
+pub mod replay;
 pub mod tables;

@@ -214,7 +214,7 @@ pub fn transitions(sys: &Insertion, sol: &Solution<N_STATE>, what: &[Transition]
         .collect()
 }
 
-/// Writes `<name>_events.csv` (`t_s, transition, contact_state, depth_m,
+/// Writes `<name>.events.csv` (`t_s, transition, contact_state, depth_m,
 /// tilt_rad`).
 ///
 /// # Errors
@@ -381,7 +381,7 @@ pub fn views(sys: &Insertion, y: &SVector<f64, N_STATE>, title: &str) -> [Panel;
     [side, top_view]
 }
 
-/// Writes `<name>_views.svg`: side and top views at the start, at each
+/// Writes `<name>.views.svg`: side and top views at the start, at each
 /// event (at most `max` of them) and at the end.
 ///
 /// # Errors
