@@ -292,7 +292,7 @@ fn main() -> ExitCode {
             eprintln!("wrote {}", svg.display());
         }
         eprintln!("wrote {}", csv.display());
-        if studies.len() == args.only.len() {
+        if only_three_d {
             return ExitCode::SUCCESS;
         }
     }
