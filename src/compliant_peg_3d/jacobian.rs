@@ -70,7 +70,7 @@ fn lift_one(o: G, x: &[D; 7]) -> D {
 }
 
 /// A contact's geometry in dual numbers of the pose, carried to the state
-/// ([`lift_one`] of every output).
+/// (`lift_one` of every output).
 pub fn lift(g: &Geometry<G>, x: &[D; 7]) -> Geometry<D> {
     Geometry {
         normal: g.normal.map(|o| lift_one(o, x)),
