@@ -25,6 +25,25 @@ pub enum ModelError {
     Hertz(#[from] crate::hertz::HertzError),
 }
 
+/// How a mechanical system's state splits for the linear solves of the
+/// implicit integrators: `positions` components `x` first, then
+/// `velocities` components `u`, then integrals (work, dissipation) that no
+/// rate reads (their columns of the Jacobian are zero), with the positions'
+/// rates a kinematic map of the velocities, `ẋ = K(x) u` (`ṗ = v` and
+/// `q̇ = ½ q ⊗ (0, ω)` for a rigid body with a unit quaternion). The
+/// Rosenbrock methods then factorize an `n_u × n_u` Schur complement
+/// instead of the whole `N × N` iteration matrix (see
+/// [`OdeSystem::kinematic_split`]). Only a speed-up: the solution is the
+/// same to rounding, and a Jacobian that does not have this form (a
+/// non-zero column of an integral) is factorized whole.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct KinematicSplit {
+    /// Number of position components `n_x`.
+    pub positions: usize,
+    /// Number of velocity components `n_u`.
+    pub velocities: usize,
+}
+
 /// A system of ordinary differential equations `ẋ = f(t, x)`, `x ∈ ℝᴺ`.
 ///
 /// The integrators in [`crate::integrate`] count how often they call
@@ -99,6 +118,15 @@ pub trait OdeSystem<const N: usize> {
         let t1 = t + delta;
         let delta = t1 - t;
         (self.rhs(t1, x) - self.rhs(t, x)) / delta
+    }
+
+    /// The split of the state into positions with a kinematic map,
+    /// velocities and integrals ([`KinematicSplit`]), if the model has
+    /// one; `None` (the default) otherwise. A second-order system
+    /// `ẋ = u` need not declare it: its unit position rows are recognized
+    /// in the Jacobian itself.
+    fn kinematic_split(&self) -> Option<KinematicSplit> {
+        None
     }
 
     /// Names of the state components in order (e.g. the generated

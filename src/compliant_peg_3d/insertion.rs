@@ -23,11 +23,11 @@ use super::forces::ContactForce;
 use super::params::Peg3dParams;
 use super::robot::RobotMotion;
 use super::system::{Peg3d, pose_state};
-use super::wrist::{PegMotion, RobotFrame, WristLoad, WristParams};
+use super::wrist::{Kinematics, PegMotion, RobotFrame, WristLoad, WristParams};
 use crate::generated::compliant_peg_3d as generated;
 use crate::hertz::{EllipticityMethod, HertzContact, HertzError};
-use crate::system::{ModelError, OdeSystem};
-use nalgebra::{Quaternion, SVector, UnitQuaternion, Vector3};
+use crate::system::{KinematicSplit, ModelError, OdeSystem};
+use nalgebra::{Quaternion, SMatrix, SVector, UnitQuaternion, Vector3};
 
 /// State dimension of [`Insertion`].
 pub const N_STATE: usize = 16;
@@ -45,9 +45,6 @@ pub const STATE_NAMES: [&str; N_STATE] = {
     names[N_STATE - 1] = "robot_work";
     names
 };
-
-/// Smoothing `s` of the follower moment's direction near `γ = 0`.
-const FOLLOWER_SCALE: f64 = 1e-3;
 
 /// A wrist and the robot motion that carries it.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -149,15 +146,6 @@ impl Insertion {
         }
     }
 
-    /// The follower moment at axis `a` (hole frame, N·m).
-    fn follower(&self, a: &Vector3<f64>) -> Vector3<f64> {
-        if self.aligning_moment == 0.0 {
-            return Vector3::zeros();
-        }
-        let c = Vector3::z().cross(a);
-        c * (-self.aligning_moment / (c.norm_squared() + FOLLOWER_SCALE * FOLLOWER_SCALE).sqrt())
-    }
-
     /// The robot frame and the wrist's load at time `t`, if held.
     pub fn wrist_load(&self, t: f64, y: &SVector<f64, 15>) -> Option<(RobotFrame, WristLoad)> {
         self.held.map(|h| {
@@ -178,22 +166,9 @@ impl Insertion {
         y: &SVector<f64, N_STATE>,
     ) -> Result<SVector<f64, N_STATE>, HertzError> {
         let ys = peg_state(y);
-        let mut w = self.peg.contact_wrench(&ys)?;
-        let mut power = 0.0;
-        if let Some((_, load)) = self.wrist_load(t, &ys) {
-            for k in 0..3 {
-                w[k] += load.force[k];
-                w[3 + k] += load.moment[k];
-            }
-            w[6] += load.dissipation_rate;
-            power += load.robot_power;
-        }
-        let m = motion(&ys);
-        let fm = self.follower(&(m.orientation * Vector3::z()));
-        for k in 0..3 {
-            w[3 + k] += fm[k];
-        }
-        power += fm.dot(&m.angular_velocity);
+        let mut w: [f64; 7] = self.peg.contact_wrench(&ys)?.into();
+        let power = self.add_held(t, &Kinematics::of_state(ys.as_slice()), &mut w);
+        let w = SVector::from(w);
         let d = generated::rhs(&ys, &w, self.peg.param_vector());
         let mut out = SVector::<f64, N_STATE>::zeros();
         out.fixed_rows_mut::<15>(0).copy_from(&d);
@@ -319,6 +294,36 @@ impl OdeSystem<N_STATE> for Insertion {
         y: &SVector<f64, N_STATE>,
     ) -> Result<SVector<f64, N_STATE>, ModelError> {
         Ok(self.rate(t, y)?)
+    }
+
+    /// [`Insertion::exact_jacobian`], NaN after a Hertz setup error.
+    fn jacobian(&self, t: f64, y: &SVector<f64, N_STATE>) -> SMatrix<f64, N_STATE, N_STATE> {
+        self.try_jacobian(t, y)
+            .unwrap_or_else(|_| SMatrix::repeat(f64::NAN))
+    }
+
+    /// [`Insertion::exact_jacobian`]: at the contacts the right-hand side
+    /// just found at `y`.
+    fn try_jacobian(
+        &self,
+        t: f64,
+        y: &SVector<f64, N_STATE>,
+    ) -> Result<SMatrix<f64, N_STATE, N_STATE>, ModelError> {
+        Ok(self.exact_jacobian(t, y)?)
+    }
+
+    /// [`Insertion::time_rate`].
+    fn time_derivative(&self, t: f64, y: &SVector<f64, N_STATE>) -> SVector<f64, N_STATE> {
+        self.time_rate(t, y)
+    }
+
+    /// Positions `(p, q)` with the kinematic map `ṗ = v`,
+    /// `q̇ = ½ q ⊗ (0, ω)`, velocities `(v, ω)`, then the work integrals.
+    fn kinematic_split(&self) -> Option<KinematicSplit> {
+        Some(KinematicSplit {
+            positions: 7,
+            velocities: 6,
+        })
     }
 
     fn state_names(&self) -> &'static [&'static str] {

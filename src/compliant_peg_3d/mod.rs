@@ -40,7 +40,9 @@
 //!   Newton–Euler right-hand side; Hertz errors as values.
 //! - [`prescribed`], [`wrist`], [`robot`], [`insertion`], [`outcome`]: the
 //!   peg driven along a prescribed orientation, held by a compliant wrist
-//!   that a robot moves, and how an insertion ends.
+//!   that a robot moves, and how an insertion ends; [`held`]: the wrist's
+//!   and the follower moment's wrench at any scalar, and the held peg's
+//!   exact Jacobian.
 //!
 //! See `docs/compliant-peg-3d.md`.
 
@@ -49,6 +51,7 @@ pub mod curvature;
 pub mod face;
 pub mod forces;
 pub mod frame;
+pub mod held;
 pub mod jacobian;
 pub mod law;
 pub mod merge;

@@ -25,15 +25,29 @@
 //! pair included, the stiffness fixed or from the curvatures as
 //! [`HertzMode`] says). The rigid three-point peg's bottom edge rests on
 //! the hole edge at B1 and B2: here the pair [`Pair::RimEdge`].
+//!
+//! The exact Jacobian is the contact wrench's in dual numbers of the full
+//! state ([`Peg3d::contact_wrench_dual`], at the contacts the right-hand
+//! side just found), its columns of `p` and `v`; the time derivative
+//! follows the prescribed pose through the chain rule,
+//!
+//! ```text
+//! ∂w/∂t = ∂w/∂q · q̇ + ∂w/∂ω_body · ω̇_body,
+//! q̇ = ½ q ⊗ (0, ω_body),   ω̇_body = Rᵀ γ̇ ψ̇ (cos ψ, sin ψ, 0)
+//! ```
+//!
+//! (`d(Rᵀ ω)/dt = Rᵀ ω̇`: the term `−ω_body × ω_body` vanishes).
 
 #[cfg(doc)]
 use super::contact::Pair;
 use super::forces::ContactForce;
+use super::jacobian::D;
 use super::params::{HertzMode, Peg3dParams};
 use super::system::{Peg3d, pose_state};
 use crate::hertz::HertzError;
 use crate::system::{ModelError, OdeSystem};
-use nalgebra::{SVector, UnitQuaternion, Vector3};
+use nalgebra::{SMatrix, SVector, UnitQuaternion, Vector3};
+use std::cell::RefCell;
 
 /// Steady rates of nutation and precession from a start orientation.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -68,7 +82,18 @@ impl Motion {
         let omega = Vector3::z() * self.psidot - e_n * self.gammadot;
         self.orientation(t).inverse() * omega
     }
+
+    /// `ω̇_body = Rᵀ γ̇ ψ̇ (cos ψ, sin ψ, 0)` (1/s²).
+    pub fn omega_body_rate(&self, t: f64) -> Vector3<f64> {
+        let (_, psi) = self.angles(t);
+        let rate = Vector3::new(psi.cos(), psi.sin(), 0.0) * (self.gammadot * self.psidot);
+        self.orientation(t).inverse() * rate
+    }
 }
+
+/// The time derivative of the last Jacobian, at the `(t, y)` bits it was
+/// evaluated at: a Rosenbrock step asks for both at one state.
+type Memo = ([u64; 8], SVector<f64, 7>);
 
 /// The compliant 3-D peg whose orientation follows [`Motion`].
 pub struct PrescribedPeg {
@@ -76,6 +101,7 @@ pub struct PrescribedPeg {
     pub peg: Peg3d,
     /// The prescribed orientation.
     pub motion: Motion,
+    rate_memo: RefCell<Option<Memo>>,
 }
 
 impl PrescribedPeg {
@@ -94,6 +120,7 @@ impl PrescribedPeg {
             _ => Ok(PrescribedPeg {
                 peg: Peg3d::new(params),
                 motion,
+                rate_memo: RefCell::new(None),
             }),
         }
     }
@@ -120,6 +147,71 @@ impl PrescribedPeg {
     }
 }
 
+impl PrescribedPeg {
+    /// The exact Jacobian (7 × 7) and time derivative at `(t, y)` of the
+    /// module documentation.
+    ///
+    /// # Errors
+    /// As [`Peg3d::setups`] when the contacts have to be searched.
+    pub fn linearization(
+        &self,
+        t: f64,
+        y: &SVector<f64, 7>,
+    ) -> Result<(SMatrix<f64, 7, 7>, SVector<f64, 7>), HertzError> {
+        let full = self.full_state(t, y);
+        let w: [D; 7] = self.peg.contact_wrench_dual(&full)?;
+        let inv_m = 1.0 / self.peg.params.mass;
+        let mut j = SMatrix::<f64, 7, 7>::zeros();
+        for k in 0..3 {
+            j[(k, 3 + k)] = 1.0;
+        }
+        // State slots: p 0–2, v 7–9 of the full state; rows F (0–2), Ṡ (6).
+        for (r, scale) in [(0, inv_m), (1, inv_m), (2, inv_m), (6, 1.0)] {
+            let row = if r == 6 { 6 } else { 3 + r };
+            for c in 0..3 {
+                j[(row, c)] = w[r].d[c] * scale;
+                j[(row, 3 + c)] = w[r].d[7 + c] * scale;
+            }
+        }
+        // ∂w/∂t through q(t) and ω_body(t).
+        let q = [full[3], full[4], full[5], full[6]];
+        let om = [full[10], full[11], full[12]];
+        let q_dot = [
+            -0.5 * (q[1] * om[0] + q[2] * om[1] + q[3] * om[2]),
+            0.5 * (q[0] * om[0] + q[2] * om[2] - q[3] * om[1]),
+            0.5 * (q[0] * om[1] + q[3] * om[0] - q[1] * om[2]),
+            0.5 * (q[0] * om[2] + q[1] * om[1] - q[2] * om[0]),
+        ];
+        let om_dot = self.motion.omega_body_rate(t);
+        let dt = |r: usize| {
+            let d = &w[r].d;
+            (0..4).map(|k| d[3 + k] * q_dot[k]).sum::<f64>()
+                + (0..3).map(|k| d[10 + k] * om_dot[k]).sum::<f64>()
+        };
+        let rate = SVector::<f64, 7>::from_column_slice(&[
+            0.0,
+            0.0,
+            0.0,
+            dt(0) * inv_m,
+            dt(1) * inv_m,
+            dt(2) * inv_m,
+            dt(6),
+        ]);
+        Ok((j, rate))
+    }
+}
+
+/// The bits of `(t, y)`.
+fn key(t: f64, y: &SVector<f64, 7>) -> [u64; 8] {
+    std::array::from_fn(|k| {
+        if k == 0 {
+            t.to_bits()
+        } else {
+            y[k - 1].to_bits()
+        }
+    })
+}
+
 impl OdeSystem<7> for PrescribedPeg {
     /// [`OdeSystem::try_rhs`], NaN when [`PrescribedPeg::forces`] fails.
     fn rhs(&self, t: f64, y: &SVector<f64, 7>) -> SVector<f64, 7> {
@@ -138,6 +230,33 @@ impl OdeSystem<7> for PrescribedPeg {
         Ok(SVector::<f64, 7>::from_column_slice(&[
             y[3], y[4], y[5], a.x, a.y, a.z, w[6],
         ]))
+    }
+
+    /// [`PrescribedPeg::linearization`]'s Jacobian, NaN after a Hertz
+    /// setup error.
+    fn jacobian(&self, t: f64, y: &SVector<f64, 7>) -> SMatrix<f64, 7, 7> {
+        self.try_jacobian(t, y)
+            .unwrap_or_else(|_| SMatrix::repeat(f64::NAN))
+    }
+
+    /// [`PrescribedPeg::linearization`]'s Jacobian; its time derivative is
+    /// kept for [`OdeSystem::time_derivative`] at the same `(t, y)`.
+    fn try_jacobian(&self, t: f64, y: &SVector<f64, 7>) -> Result<SMatrix<f64, 7, 7>, ModelError> {
+        let (j, rate) = self.linearization(t, y)?;
+        *self.rate_memo.borrow_mut() = Some((key(t, y), rate));
+        Ok(j)
+    }
+
+    /// [`PrescribedPeg::linearization`]'s time derivative (NaN after a
+    /// Hertz setup error).
+    fn time_derivative(&self, t: f64, y: &SVector<f64, 7>) -> SVector<f64, 7> {
+        if let Some((k, rate)) = &*self.rate_memo.borrow()
+            && *k == key(t, y)
+        {
+            return *rate;
+        }
+        self.linearization(t, y)
+            .map_or_else(|_| SVector::repeat(f64::NAN), |(_, rate)| rate)
     }
 
     fn state_names(&self) -> &'static [&'static str] {

@@ -23,7 +23,7 @@ use super::prune;
 use super::search::Search;
 use crate::generated::compliant_peg_3d as generated;
 use crate::hertz::HertzError;
-use crate::system::{ModelError, OdeSystem};
+use crate::system::{KinematicSplit, ModelError, OdeSystem};
 use nalgebra::{SMatrix, SVector, UnitQuaternion, Vector3};
 use std::cell::RefCell;
 
@@ -53,6 +53,26 @@ pub struct Peg3d {
     /// The warm starts of each pair's search: a cache (any call may
     /// search from scratch), not state of the model.
     searches: RefCell<[Search; Pair::ALL.len()]>,
+    /// The contacts the last right-hand side found ([`Found`]).
+    found: RefCell<Option<Found>>,
+}
+
+/// The contacts and Hertz setups that the last right-hand side
+/// ([`Peg3d::contact_wrench`]) found, with what they were found at: the
+/// bits of the pose part `(p, q)` of the state (the search and the setups
+/// read nothing else of it) and the parameters. The Jacobian at the same
+/// state, which a Rosenbrock step asks for right after `f(y)`, takes
+/// these instead of searching again ([`Peg3d::with_setups`]); at any other
+/// state, or after the parameters changed, it searches.
+struct Found {
+    pose_bits: [u64; 7],
+    params: Peg3dParams,
+    setups: Vec<Setup>,
+}
+
+/// The bits of the pose part `(p, q)` of a state.
+fn pose_bits(y: &SVector<f64, 15>) -> [u64; 7] {
+    std::array::from_fn(|k| y[k].to_bits())
 }
 
 impl Peg3d {
@@ -62,6 +82,7 @@ impl Peg3d {
             p: params.vector(),
             params,
             searches: RefCell::new(Default::default()),
+            found: RefCell::new(None),
         }
     }
 
@@ -165,13 +186,55 @@ impl Peg3d {
         let setups = self.setups(y)?;
         let m = frame::Motion::of_state(y.as_slice());
         let law = LawParams::of(&self.params);
-        Ok(SVector::from(forces::contact_wrench(
+        let w = SVector::from(forces::contact_wrench(
             &self.params,
             &law,
             &m,
             &setups,
             |_, _, at| *at,
-        )))
+        ));
+        *self.found.borrow_mut() = Some(Found {
+            pose_bits: pose_bits(y),
+            params: self.params,
+            setups,
+        });
+        Ok(w)
+    }
+
+    /// `f` of the setups of state `y`: those the last right-hand side found
+    /// when it was evaluated at the same pose with the same parameters,
+    /// else those of a new search ([`Peg3d::setups`]).
+    ///
+    /// # Errors
+    /// As [`Peg3d::setups`] when it has to search.
+    pub fn with_setups<R>(
+        &self,
+        y: &SVector<f64, 15>,
+        f: impl FnOnce(&[Setup]) -> R,
+    ) -> Result<R, HertzError> {
+        if let Some(found) = self
+            .found
+            .borrow()
+            .as_ref()
+            .filter(|c| c.pose_bits == pose_bits(y) && c.params == self.params)
+        {
+            return Ok(f(&found.setups));
+        }
+        Ok(f(&self.setups(y)?))
+    }
+
+    /// The contact wrench at state `y` in dual numbers of the state
+    /// ([`jacobian::wrench_dual`]): its value and exact derivative, at the
+    /// contacts of [`Peg3d::with_setups`].
+    ///
+    /// # Errors
+    /// As [`Peg3d::setups`] when it has to search.
+    pub fn contact_wrench_dual(
+        &self,
+        y: &SVector<f64, 15>,
+    ) -> Result<[jacobian::D; 7], HertzError> {
+        let yd = jacobian::seeded(y);
+        self.with_setups(y, |s| jacobian::wrench_dual(&self.params, &self.p, &yd, s))
     }
 
     /// The contact wrench `(F, T about the centre of mass, Ṡ)` of
@@ -211,17 +274,27 @@ impl OdeSystem<15> for Peg3d {
     }
 
     /// The exact Jacobian ([`super::jacobian`]) at the contacts of `y`
-    /// (searched again, from the warm starts the last call left).
+    /// ([`Peg3d::with_setups`]: those the right-hand side just found at
+    /// `y`, no second search).
     fn try_jacobian(
         &self,
         _t: f64,
         y: &SVector<f64, 15>,
     ) -> Result<SMatrix<f64, 15, 15>, ModelError> {
-        Ok(jacobian::of(&self.params, &self.p, y, &self.setups(y)?))
+        Ok(self.with_setups(y, |s| jacobian::of(&self.params, &self.p, y, s))?)
     }
 
     fn time_derivative(&self, _t: f64, _y: &SVector<f64, 15>) -> SVector<f64, 15> {
         SVector::zeros()
+    }
+
+    /// Positions `(p, q)` with the kinematic map `ṗ = v`,
+    /// `q̇ = ½ q ⊗ (0, ω)`, velocities `(v, ω)`, then the work integrals.
+    fn kinematic_split(&self) -> Option<KinematicSplit> {
+        Some(KinematicSplit {
+            positions: 7,
+            velocities: 6,
+        })
     }
 
     fn state_names(&self) -> &'static [&'static str] {

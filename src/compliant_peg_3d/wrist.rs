@@ -30,6 +30,8 @@
 //! `ḋ_R = −R_Rᵀ ċ_R − Ω_R × d` the part of `ḋ` due to the robot's motion,
 //! so that `T + m g z + V_c + V − W − W_r + S + S_w` is constant.
 
+use super::frame::{V3, add, cross, dot, rotate, scale, sub, unit_quaternion};
+use crate::scalar::Real;
 use nalgebra::{Matrix3, UnitQuaternion, Vector3};
 
 /// Stiffness and damping of a compliant wrist (SI units, robot axes).
@@ -106,68 +108,183 @@ pub struct WristLoad {
     pub robot_power: f64,
 }
 
+/// The peg's motion at any scalar ([`Real`]), as the wrist reads it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Kinematics<T> {
+    /// Centre of mass (m).
+    pub centre: V3<T>,
+    /// Orientation, a unit quaternion `(w, i, j, k)` (body to hole frame).
+    pub orientation: [T; 4],
+    /// Centre-of-mass velocity (m/s).
+    pub velocity: V3<T>,
+    /// Angular velocity, hole frame (rad/s).
+    pub angular_velocity: V3<T>,
+}
+
+impl<T: Real> Kinematics<T> {
+    /// The motion of a peg state `y = (p, q, v, ω_body, …)` (at least 13
+    /// components): `q` normalized once, in the storage order `(i, j, k,
+    /// w)` as nalgebra's `UnitQuaternion::from_quaternion` normalizes it,
+    /// and `ω = R(q) ω_body`.
+    pub fn of_state(y: &[T]) -> Kinematics<T> {
+        let q = unit_quaternion(&[y[0], y[1], y[2], y[3], y[4], y[5], y[6]]);
+        Kinematics {
+            centre: [y[0], y[1], y[2]],
+            orientation: q,
+            velocity: [y[7], y[8], y[9]],
+            angular_velocity: rotate(&q, &[y[10], y[11], y[12]]),
+        }
+    }
+}
+
+/// What the wrist does to the peg, at any scalar: the fields of
+/// [`WristLoad`] that are smooth in the state (no rotation angle), and
+/// the relative rotation `q_rel = (w, u)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LoadOf<T> {
+    /// Force on the peg, hole frame (N).
+    pub force: V3<T>,
+    /// Moment on the peg about its centre of mass, hole frame (N·m).
+    pub moment: V3<T>,
+    /// Force on the peg in the robot axes (N).
+    pub force_robot: V3<T>,
+    /// Moment on the peg about the compliance centre, robot axes (N·m).
+    pub moment_robot: V3<T>,
+    /// Deflection `d` of the compliance centre, robot axes (m).
+    pub deflection: V3<T>,
+    /// `q_rel = q_R* ⊗ q` as `(w, i, j, k)`.
+    pub relative: [T; 4],
+    /// Elastic energy `V` (J).
+    pub potential: T,
+    /// Dissipation rate of the dampers `Ṡ_w` (W).
+    pub dissipation_rate: T,
+    /// Power delivered by the robot `Ẇ_r` (W).
+    pub robot_power: T,
+}
+
+/// The rows of a 3 × 3 matrix.
+fn rows(m: &Matrix3<f64>) -> [V3<f64>; 3] {
+    std::array::from_fn(|i| [m[(i, 0)], m[(i, 1)], m[(i, 2)]])
+}
+
+/// `M v` for a constant matrix `M` (rows), in nalgebra's order:
+/// `(m_{i0} v₀ + m_{i1} v₁) + m_{i2} v₂`.
+fn mat_vec<T: Real>(m: &[V3<f64>; 3], v: &V3<T>) -> V3<T> {
+    let c = T::from_f64;
+    std::array::from_fn(|i| c(m[i][0]) * v[0] + c(m[i][1]) * v[1] + c(m[i][2]) * v[2])
+}
+
 impl WristParams {
-    /// `(K_x, K_y, K_z)` as a diagonal matrix; `K_z = 0` under a force.
-    fn translational(&self, force_mode: bool) -> Matrix3<f64> {
+    /// `(K_x, K_y, K_z)` as the rows of a diagonal matrix; `K_z = 0` under
+    /// a force.
+    fn translational(&self, force_mode: bool) -> [V3<f64>; 3] {
         let kz = if force_mode { 0.0 } else { self.axial };
-        Matrix3::from_diagonal(&Vector3::new(self.lateral[0], self.lateral[1], kz))
+        let [kx, ky] = self.lateral;
+        [[kx, 0.0, 0.0], [0.0, ky, 0.0], [0.0, 0.0, kz]]
     }
 
     /// The wrist's load on a peg of length `length` in motion `m` held by
-    /// the robot frame `r`.
+    /// the robot frame `r`: [`WristParams::load_of`] at `f64`.
     pub fn load(&self, length: f64, m: &PegMotion, r: &RobotFrame) -> WristLoad {
-        let axis = m.orientation * Vector3::z();
-        let arm = axis * (self.centre_height - 0.5 * length);
-        let cp = m.centre + arm;
-        let rr = r.orientation.to_rotation_matrix();
-        let rt = rr.transpose();
-        let omega_rb = rt * r.angular_velocity;
-        let d = rt * (cp - r.position);
-        let kt = self.translational(r.axial_force.is_some());
-        let mut g = kt * d;
-        let mut potential = 0.5 * d.dot(&g);
-        if let Some(f) = r.axial_force {
-            g.z = f;
-            potential += f * d.z;
+        let q = m.orientation.quaternion();
+        let k = Kinematics {
+            centre: m.centre.into(),
+            orientation: [q.w, q.i, q.j, q.k],
+            velocity: m.velocity.into(),
+            angular_velocity: m.angular_velocity.into(),
+        };
+        let l = self.load_of(length, &k, r);
+        let [w, ui, uj, uk] = l.relative;
+        let u = Vector3::new(ui, uj, uk);
+        WristLoad {
+            force: l.force.into(),
+            moment: l.moment.into(),
+            force_robot: l.force_robot.into(),
+            moment_robot: l.moment_robot.into(),
+            deflection: l.deflection.into(),
+            rotation: 2.0 * u.norm().atan2(w.abs()),
+            potential: l.potential,
+            dissipation_rate: l.dissipation_rate,
+            robot_power: l.robot_power,
         }
-        let v_cp = m.velocity + m.angular_velocity.cross(&arm);
-        let d_robot = -(rt * r.velocity) - omega_rb.cross(&d);
-        let d_dot = rt * v_cp + d_robot;
-        let ct = Vector3::new(
+    }
+
+    /// The wrist's load at any scalar ([`Real`]): the formulas of the
+    /// module documentation on a peg of length `length` in motion `m` held
+    /// by the robot frame `r` (constants). At `f64` every operation keeps
+    /// the order in which nalgebra evaluates the same formula (a product
+    /// `M v` of a constant 3 × 3 matrix as `(m₀₀v₀ + m₀₁v₁) + m₀₂v₂`, the
+    /// quaternion product component by component), so [`WristParams::load`]
+    /// is the nalgebra form to the last bit; at dual numbers it carries the
+    /// load's derivative in the peg's state (the exact Jacobian of
+    /// [`super::insertion::Insertion`]).
+    pub fn load_of<T: Real>(&self, length: f64, m: &Kinematics<T>, r: &RobotFrame) -> LoadOf<T> {
+        let c = T::from_f64;
+        // The robot frame's quantities are constants, formed at f64 as
+        // nalgebra forms them.
+        let rot = r.orientation.to_rotation_matrix();
+        let (rr, rt) = (rows(rot.matrix()), rows(rot.transpose().matrix()));
+        let omega_rb = rot.transpose() * r.angular_velocity;
+        let robot_velocity = -(rot.transpose() * r.velocity);
+        let lift = |v: &Vector3<f64>| [c(v.x), c(v.y), c(v.z)];
+        let q = &m.orientation;
+        let axis = rotate(q, &[c(0.0), c(0.0), c(1.0)]);
+        let arm = scale(&axis, c(self.centre_height - 0.5 * length));
+        let cp = add(&m.centre, &arm);
+        let d = mat_vec(&rt, &sub(&cp, &lift(&r.position)));
+        let mut g = mat_vec(&self.translational(r.axial_force.is_some()), &d);
+        let mut potential = c(0.5) * dot(&d, &g);
+        if let Some(f) = r.axial_force {
+            g[2] = c(f);
+            potential = potential + c(f) * d[2];
+        }
+        let v_cp = add(&m.velocity, &cross(&m.angular_velocity, &arm));
+        let d_robot = sub(&lift(&robot_velocity), &cross(&lift(&omega_rb), &d));
+        let d_dot = add(&mat_vec(&rt, &v_cp), &d_robot);
+        let ct = [
             self.lateral_damping,
             self.lateral_damping,
             self.axial_damping,
-        );
-        let damp_t = ct.component_mul(&d_dot);
-        let force_robot = -(g + damp_t);
+        ];
+        let damp_t: V3<T> = std::array::from_fn(|k| c(ct[k]) * d_dot[k]);
+        let pushed = add(&g, &damp_t);
+        let force_robot = pushed.map(|v| -v);
 
-        let rel = r.orientation.inverse() * m.orientation;
-        let (w, u) = (rel.w, Vector3::new(rel.i, rel.j, rel.k));
-        let kr = Vector3::new(self.angular, self.angular, self.torsional);
-        let ku = kr.component_mul(&u);
-        let h = (ku * w + ku.cross(&u)) * 2.0;
-        let omega_rel = rt * (m.angular_velocity - r.angular_velocity);
-        let damp_r = omega_rel * self.angular_damping;
+        // q_rel = q_R* ⊗ q, nalgebra's product (storage order i, j, k, w).
+        let a = r.orientation.inverse().into_inner().coords;
+        let (a0, a1, a2, a3) = (c(a[0]), c(a[1]), c(a[2]), c(a[3]));
+        let (b0, b1, b2, b3) = (q[1], q[2], q[3], q[0]);
+        let w = a3 * b3 - a0 * b0 - a1 * b1 - a2 * b2;
+        let u = [
+            a3 * b0 + a0 * b3 + a1 * b2 - a2 * b1,
+            a3 * b1 - a0 * b2 + a1 * b3 + a2 * b0,
+            a3 * b2 + a0 * b1 - a1 * b0 + a2 * b3,
+        ];
+        let kr = [self.angular, self.angular, self.torsional];
+        let ku: V3<T> = std::array::from_fn(|k| c(kr[k]) * u[k]);
+        let h = scale(&add(&scale(&ku, w), &cross(&ku, &u)), c(2.0));
+        let omega_rel = mat_vec(&rt, &sub(&m.angular_velocity, &lift(&r.angular_velocity)));
+        let damp_r = scale(&omega_rel, c(self.angular_damping));
         // `h` is in the peg's body axes (the gradient in a body rotation),
         // the damping moment in the robot's.
-        let spring_moment = m.orientation * (-h);
-        let pure = spring_moment - rr * damp_r;
-        let moment_robot = rt * pure;
-        let potential = potential + 2.0 * u.dot(&ku);
-
-        let force = rr * force_robot;
-        let moment = pure + arm.cross(&force);
-        let dissipation_rate = d_dot.dot(&damp_t) + omega_rel.dot(&damp_r);
-        let robot_power = (g + damp_t).dot(&d_robot)
-            - 2.0 * omega_rb.dot(&(ku * w + u.cross(&ku)))
-            - damp_r.dot(&omega_rb);
-        WristLoad {
+        let spring_moment = rotate(q, &h.map(|v| -v));
+        let pure = sub(&spring_moment, &mat_vec(&rr, &damp_r));
+        let moment_robot = mat_vec(&rt, &pure);
+        let potential = potential + c(2.0) * dot(&u, &ku);
+        let force = mat_vec(&rr, &force_robot);
+        let moment = add(&pure, &cross(&arm, &force));
+        let dissipation_rate = dot(&d_dot, &damp_t) + dot(&omega_rel, &damp_r);
+        let omega_rb = lift(&omega_rb);
+        let robot_power = dot(&pushed, &d_robot)
+            - c(2.0) * dot(&omega_rb, &add(&scale(&ku, w), &cross(&u, &ku)))
+            - dot(&damp_r, &omega_rb);
+        LoadOf {
             force,
             moment,
             force_robot,
             moment_robot,
             deflection: d,
-            rotation: 2.0 * u.norm().atan2(w.abs()),
+            relative: [w, u[0], u[1], u[2]],
             potential,
             dissipation_rate,
             robot_power,
@@ -195,5 +312,132 @@ impl WristParams {
             out.push(((-b + disc) / (2.0 * a)).sqrt());
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::Quaternion;
+
+    /// The load in nalgebra's types: the formulas of the module
+    /// documentation as written before they were made generic, the
+    /// reference of [`WristParams::load`] to the last bit.
+    fn reference(w: &WristParams, length: f64, m: &PegMotion, r: &RobotFrame) -> WristLoad {
+        let axis = m.orientation * Vector3::z();
+        let arm = axis * (w.centre_height - 0.5 * length);
+        let cp = m.centre + arm;
+        let rr = r.orientation.to_rotation_matrix();
+        let rt = rr.transpose();
+        let omega_rb = rt * r.angular_velocity;
+        let d = rt * (cp - r.position);
+        let kz = if r.axial_force.is_some() {
+            0.0
+        } else {
+            w.axial
+        };
+        let kt = Matrix3::from_diagonal(&Vector3::new(w.lateral[0], w.lateral[1], kz));
+        let mut g = kt * d;
+        let mut potential = 0.5 * d.dot(&g);
+        if let Some(f) = r.axial_force {
+            g.z = f;
+            potential += f * d.z;
+        }
+        let v_cp = m.velocity + m.angular_velocity.cross(&arm);
+        let d_robot = -(rt * r.velocity) - omega_rb.cross(&d);
+        let d_dot = rt * v_cp + d_robot;
+        let ct = Vector3::new(w.lateral_damping, w.lateral_damping, w.axial_damping);
+        let damp_t = ct.component_mul(&d_dot);
+        let force_robot = -(g + damp_t);
+        let rel = r.orientation.inverse() * m.orientation;
+        let (qw, u) = (rel.w, Vector3::new(rel.i, rel.j, rel.k));
+        let kr = Vector3::new(w.angular, w.angular, w.torsional);
+        let ku = kr.component_mul(&u);
+        let h = (ku * qw + ku.cross(&u)) * 2.0;
+        let omega_rel = rt * (m.angular_velocity - r.angular_velocity);
+        let damp_r = omega_rel * w.angular_damping;
+        let spring_moment = m.orientation * (-h);
+        let pure = spring_moment - rr * damp_r;
+        let moment_robot = rt * pure;
+        let potential = potential + 2.0 * u.dot(&ku);
+        let force = rr * force_robot;
+        let moment = pure + arm.cross(&force);
+        WristLoad {
+            force,
+            moment,
+            force_robot,
+            moment_robot,
+            deflection: d,
+            rotation: 2.0 * u.norm().atan2(qw.abs()),
+            potential,
+            dissipation_rate: d_dot.dot(&damp_t) + omega_rel.dot(&damp_r),
+            robot_power: (g + damp_t).dot(&d_robot)
+                - 2.0 * omega_rb.dot(&(ku * qw + u.cross(&ku)))
+                - damp_r.dot(&omega_rb),
+        }
+    }
+
+    /// A reproducible stream of numbers in (−1, 1) (xorshift).
+    fn stream(seed: u64) -> impl FnMut() -> f64 {
+        let mut s = seed;
+        move || {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            (s >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+        }
+    }
+
+    fn bits(v: &Vector3<f64>) -> [u64; 3] {
+        [v.x.to_bits(), v.y.to_bits(), v.z.to_bits()]
+    }
+
+    #[test]
+    fn the_generic_load_is_the_nalgebra_form_to_the_last_bit() {
+        let mut r = stream(0x2545_f491_4f6c_dd1d);
+        let mut v3 = |s: f64| Vector3::new(r() * s, r() * s, r() * s);
+        for k in 0..20_000 {
+            let wrist = WristParams {
+                centre_height: 0.03 * (1.0 + v3(1.0).x),
+                lateral: [2e4 * (1.5 + v3(1.0).x), 2e4 * (1.5 + v3(1.0).y)],
+                axial: 2e5 * (1.5 + v3(1.0).z),
+                angular: 20.0 * (1.5 + v3(1.0).x),
+                torsional: 20.0 * (1.5 + v3(1.0).y),
+                lateral_damping: 40.0 * (1.5 + v3(1.0).z),
+                axial_damping: 400.0 * (1.5 + v3(1.0).x),
+                angular_damping: 0.04 * (1.5 + v3(1.0).y),
+            };
+            let q4 = v3(1.0);
+            let q = UnitQuaternion::from_quaternion(Quaternion::new(v3(1.0).x, q4.x, q4.y, q4.z));
+            let m = PegMotion {
+                centre: v3(0.03),
+                orientation: q,
+                velocity: v3(0.1),
+                angular_velocity: v3(10.0),
+            };
+            let rq = UnitQuaternion::from_scaled_axis(v3(0.05));
+            let frame = RobotFrame {
+                position: v3(0.03),
+                orientation: rq,
+                velocity: v3(0.02),
+                angular_velocity: v3(5.0),
+                axial_force: (k % 3 == 0).then(|| 20.0 * (1.5 + v3(1.0).x)),
+            };
+            let a = wrist.load(0.05, &m, &frame);
+            let b = reference(&wrist, 0.05, &m, &frame);
+            assert_eq!(bits(&a.force), bits(&b.force), "{k}");
+            assert_eq!(bits(&a.moment), bits(&b.moment), "{k}");
+            assert_eq!(bits(&a.force_robot), bits(&b.force_robot), "{k}");
+            assert_eq!(bits(&a.moment_robot), bits(&b.moment_robot), "{k}");
+            assert_eq!(bits(&a.deflection), bits(&b.deflection), "{k}");
+            for (x, y) in [
+                (a.rotation, b.rotation),
+                (a.potential, b.potential),
+                (a.dissipation_rate, b.dissipation_rate),
+                (a.robot_power, b.robot_power),
+            ] {
+                assert_eq!(x.to_bits(), y.to_bits(), "{k}: {x} {y}");
+            }
+        }
     }
 }

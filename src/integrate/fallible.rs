@@ -10,7 +10,7 @@ use std::cell::Cell;
 
 use nalgebra::{SMatrix, SVector};
 
-use crate::system::{ModelError, OdeSystem};
+use crate::system::{KinematicSplit, ModelError, OdeSystem};
 
 /// `system` seen through its fallible forms, keeping the first refusal.
 pub(crate) struct Checked<'s, S> {
@@ -54,6 +54,10 @@ impl<const N: usize, S: OdeSystem<N>> OdeSystem<N> for Checked<'_, S> {
 
     fn time_derivative(&self, t: f64, x: &SVector<f64, N>) -> SVector<f64, N> {
         self.system.time_derivative(t, x)
+    }
+
+    fn kinematic_split(&self) -> Option<KinematicSplit> {
+        self.system.kinematic_split()
     }
 
     fn state_names(&self) -> &'static [&'static str] {

@@ -27,10 +27,16 @@
 //! ones in the position rows, zero columns for the integrals), so a
 //! generated Jacobian gets the reduction and a finite-difference one, whose
 //! position rows are not exact, the full factorization.
+//!
+//! A system whose positions have a kinematic map `ẋ = K(x) u` (a rigid
+//! body's quaternion) declares its [`KinematicSplit`]; its iteration
+//! matrix is reduced to the velocities by `super::kinematic`.
 
 use nalgebra::{SMatrix, SVector};
 
+use super::kinematic::{Kinematic, Refused};
 use super::lu::Lu;
+use crate::system::KinematicSplit;
 
 /// The factorized iteration matrix `cI − J` of one step (borrowing `J`).
 #[derive(Debug, Clone)]
@@ -39,6 +45,8 @@ pub(crate) enum IterationLu<'j, const N: usize> {
     Dense(Lu<N>),
     /// The reduced `n × n` system of a second-order Jacobian.
     SecondOrder(Reduced<'j, N>),
+    /// The velocity block of a state with a kinematic split.
+    Kinematic(Kinematic<'j, N>),
 }
 
 /// The reduced system `(cI − B − A/c) u_v = r_v + A r_q / c`.
@@ -56,9 +64,22 @@ pub(crate) struct Reduced<'j, const N: usize> {
 
 impl<'j, const N: usize> IterationLu<'j, N> {
     /// Factorizes `cI − jac`, reduced when `jac` has the second-order
-    /// block form; `None` if a pivot is zero or not finite.
-    pub(crate) fn new(jac: &'j SMatrix<f64, N, N>, c: f64) -> Option<Self> {
-        match second_order_split(jac) {
+    /// block form or fits the system's kinematic `split`; `None` if a
+    /// pivot is zero or not finite.
+    pub(crate) fn new(
+        jac: &'j SMatrix<f64, N, N>,
+        c: f64,
+        split: Option<KinematicSplit>,
+    ) -> Option<Self> {
+        let second_order = second_order_split(jac);
+        if let (None, Some(split)) = (second_order, split) {
+            match Kinematic::new(jac, c, split) {
+                Ok(k) => return Some(IterationLu::Kinematic(k)),
+                Err(Refused::Singular) => return None,
+                Err(Refused::NotThisForm | Refused::PositionsSingular) => {}
+            }
+        }
+        match second_order {
             Some(n) => {
                 let mut s = SMatrix::<f64, N, N>::zeros();
                 for i in 0..n {
@@ -84,13 +105,14 @@ impl<'j, const N: usize> IterationLu<'j, N> {
         match self {
             IterationLu::Dense(lu) => lu.solve(r),
             IterationLu::SecondOrder(reduced) => reduced.solve(r),
+            IterationLu::Kinematic(k) => k.solve(r),
         }
     }
 
     /// `true` when the reduced system is used.
     #[cfg(test)]
     fn is_reduced(&self) -> bool {
-        matches!(self, IterationLu::SecondOrder(_))
+        !matches!(self, IterationLu::Dense(_))
     }
 }
 
@@ -208,7 +230,7 @@ mod tests {
             SVector::<f64, 8>::from_fn(|i, _| (1.0 + i as f64).sin() * 10f64.powi(i as i32 - 4));
         // c = 1/(hγ) from huge steps to tiny ones
         for c in [1e-3, 1.0, 4e2, 1e5, 1e9] {
-            let reduced = IterationLu::new(&j, c).expect("regular");
+            let reduced = IterationLu::new(&j, c, None).expect("regular");
             assert!(reduced.is_reduced());
             let full = Lu::new(SMatrix::<f64, 8, 8>::identity() * c - j).expect("regular");
             let (u, v) = (reduced.solve(&r), full.solve(&r));
@@ -239,7 +261,11 @@ mod tests {
         let sys = crate::compliant_peg::CompliantSystem::new(&setup.params, &load);
         let j = sys.jacobian(0.0, &setup.start.to_vector());
         assert_eq!(second_order_split(&j), Some(3));
-        assert!(IterationLu::new(&j, 1e3).expect("regular").is_reduced());
+        assert!(
+            IterationLu::new(&j, 1e3, None)
+                .expect("regular")
+                .is_reduced()
+        );
     }
 
     #[test]
@@ -247,7 +273,7 @@ mod tests {
         // v' = q + v at c = ... : cI - B - A/c = c - 1 - 1/c = 0 at c = golden ratio
         let j = nalgebra::Matrix2::new(0.0, 1.0, 1.0, 1.0);
         let golden = 0.5 * (1.0 + 5f64.sqrt());
-        let w = IterationLu::new(&j, golden);
+        let w = IterationLu::new(&j, golden, None);
         // the pivot is a rounding residue or exactly zero: either refused
         // or tiny enough to be; the full matrix is singular there too
         if let Some(w) = w {
@@ -256,6 +282,6 @@ mod tests {
         }
         let mut nan = j;
         nan[(1, 1)] = f64::NAN;
-        assert!(IterationLu::new(&nan, 1.0).is_none());
+        assert!(IterationLu::new(&nan, 1.0, None).is_none());
     }
 }

@@ -33,6 +33,7 @@ mod explicit_rk;
 mod fallible;
 mod interrupt;
 mod iteration;
+mod kinematic;
 mod lu;
 mod method;
 mod non_finite;

@@ -3,9 +3,9 @@
 //! Runs a [`RosenbrockTableau`] in the transformed form of Hairer & Wanner
 //! II, §IV.7, eq. (7.25), which needs no matrix–vector products:
 //! `(I/(hγ) − J) uᵢ = f(t + αᵢh, x + Σⱼ<ᵢ aᵢⱼuⱼ) + Σⱼ<ᵢ (cᵢⱼ/h) uⱼ + γᵢh ∂f/∂t`,
-//! `x₁ = x + Σ mᵢuᵢ`, one LU factorization per step (of `n` unknowns
-//! instead of `N` when `J` has a second-order system's block form:
-//! `super::iteration`). `J` and `∂f/∂t` are
+//! `x₁ = x + Σ mᵢuᵢ`, one LU factorization per step (of the velocities
+//! only when `J` has a second-order system's block form or the system
+//! declares a kinematic split: `super::iteration`). `J` and `∂f/∂t` are
 //! evaluated once per step start and reused when the step is retried.
 //! Dense output is the cubic Hermite interpolant of the step.
 
@@ -158,7 +158,8 @@ impl<const N: usize, const S: usize> Stepper<N> for Rosenbrock<N, S> {
         let dfdt = &lin.dfdt;
         let k = &self.coef;
         stats.lu_factorizations += 1;
-        let Some(lu) = IterationLu::new(&lin.jac, 1.0 / (h * k.gamma)) else {
+        let Some(lu) = IterationLu::new(&lin.jac, 1.0 / (h * k.gamma), system.kinematic_split())
+        else {
             return Attempt::Singular;
         };
         for i in 0..S {

@@ -29,6 +29,7 @@ pub struct Dual<const N: usize> {
 }
 
 impl<const N: usize> PartialOrd for Dual<N> {
+    #[inline]
     fn partial_cmp(&self, o: &Dual<N>) -> Option<std::cmp::Ordering> {
         self.v.partial_cmp(&o.v)
     }
@@ -36,11 +37,13 @@ impl<const N: usize> PartialOrd for Dual<N> {
 
 impl<const N: usize> Dual<N> {
     /// A constant (zero derivatives).
+    #[inline]
     pub fn constant(v: f64) -> Dual<N> {
         Dual { v, d: [0.0; N] }
     }
 
     /// The variable number `k` with value `v` (derivative 1 in slot `k`).
+    #[inline]
     pub fn variable(v: f64, k: usize) -> Dual<N> {
         let mut d = [0.0; N];
         d[k] = 1.0;
@@ -48,6 +51,7 @@ impl<const N: usize> Dual<N> {
     }
 
     /// `f(self)` given `f(v)` and `f′(v)`.
+    #[inline]
     fn chain(self, value: f64, slope: f64) -> Dual<N> {
         let mut d = self.d;
         for x in &mut d {
@@ -59,6 +63,7 @@ impl<const N: usize> Dual<N> {
 
 impl<const N: usize> Add for Dual<N> {
     type Output = Dual<N>;
+    #[inline]
     fn add(self, o: Dual<N>) -> Dual<N> {
         let mut d = self.d;
         for (x, y) in d.iter_mut().zip(o.d) {
@@ -70,13 +75,19 @@ impl<const N: usize> Add for Dual<N> {
 
 impl<const N: usize> Sub for Dual<N> {
     type Output = Dual<N>;
+    #[inline]
     fn sub(self, o: Dual<N>) -> Dual<N> {
-        self + (-o)
+        let mut d = self.d;
+        for (x, y) in d.iter_mut().zip(o.d) {
+            *x -= y;
+        }
+        Dual { v: self.v - o.v, d }
     }
 }
 
 impl<const N: usize> Neg for Dual<N> {
     type Output = Dual<N>;
+    #[inline]
     fn neg(self) -> Dual<N> {
         self.chain(-self.v, -1.0)
     }
@@ -84,6 +95,7 @@ impl<const N: usize> Neg for Dual<N> {
 
 impl<const N: usize> Mul for Dual<N> {
     type Output = Dual<N>;
+    #[inline]
     fn mul(self, o: Dual<N>) -> Dual<N> {
         let mut d = [0.0; N];
         for (k, x) in d.iter_mut().enumerate() {
@@ -95,6 +107,7 @@ impl<const N: usize> Mul for Dual<N> {
 
 impl<const N: usize> Div for Dual<N> {
     type Output = Dual<N>;
+    #[inline]
     fn div(self, o: Dual<N>) -> Dual<N> {
         let q = self.v / o.v;
         let mut d = [0.0; N];
@@ -106,31 +119,40 @@ impl<const N: usize> Div for Dual<N> {
 }
 
 impl<const N: usize> Real for Dual<N> {
+    #[inline]
     fn from_f64(v: f64) -> Dual<N> {
         Dual::constant(v)
     }
+    #[inline]
     fn to_f64(self) -> f64 {
         self.v
     }
+    #[inline]
     fn sin(self) -> Dual<N> {
         self.chain(self.v.sin(), self.v.cos())
     }
+    #[inline]
     fn cos(self) -> Dual<N> {
         self.chain(self.v.cos(), -self.v.sin())
     }
+    #[inline]
     fn tan(self) -> Dual<N> {
         let t = self.v.tan();
         self.chain(t, 1.0 + t * t)
     }
+    #[inline]
     fn asin(self) -> Dual<N> {
         self.chain(self.v.asin(), 1.0 / (1.0 - self.v * self.v).sqrt())
     }
+    #[inline]
     fn acos(self) -> Dual<N> {
         self.chain(self.v.acos(), -1.0 / (1.0 - self.v * self.v).sqrt())
     }
+    #[inline]
     fn atan(self) -> Dual<N> {
         self.chain(self.v.atan(), 1.0 / (1.0 + self.v * self.v))
     }
+    #[inline]
     fn atan2(self, x: Dual<N>) -> Dual<N> {
         // d atan2(y, x) = (x dy − y dx) / (x² + y²)
         let r2 = self.v * self.v + x.v * x.v;
@@ -143,30 +165,38 @@ impl<const N: usize> Real for Dual<N> {
             d,
         }
     }
+    #[inline]
     fn exp(self) -> Dual<N> {
         let e = self.v.exp();
         self.chain(e, e)
     }
+    #[inline]
     fn exp_m1(self) -> Dual<N> {
         self.chain(self.v.exp_m1(), self.v.exp())
     }
+    #[inline]
     fn ln(self) -> Dual<N> {
         self.chain(self.v.ln(), 1.0 / self.v)
     }
+    #[inline]
     fn ln_1p(self) -> Dual<N> {
         self.chain(self.v.ln_1p(), 1.0 / (1.0 + self.v))
     }
+    #[inline]
     fn sqrt(self) -> Dual<N> {
         let s = self.v.sqrt();
         self.chain(s, 0.5 / s)
     }
+    #[inline]
     fn cbrt(self) -> Dual<N> {
         let c = self.v.cbrt();
         self.chain(c, 1.0 / (3.0 * c * c))
     }
+    #[inline]
     fn sin_cos(self) -> (Dual<N>, Dual<N>) {
         (Real::sin(self), Real::cos(self))
     }
+    #[inline]
     fn powi(self, n: i32) -> Dual<N> {
         let slope = if n == 0 {
             0.0
@@ -175,6 +205,7 @@ impl<const N: usize> Real for Dual<N> {
         };
         self.chain(self.v.powi(n), slope)
     }
+    #[inline]
     fn powf(self, e: Dual<N>) -> Dual<N> {
         // d a^e = e a^(e−1) da + a^e ln a de (the second term only where e varies).
         let val = self.v.powf(e.v);
@@ -190,19 +221,24 @@ impl<const N: usize> Real for Dual<N> {
         }
         Dual { v: val, d }
     }
+    #[inline]
     fn hypot(self, y: Dual<N>) -> Dual<N> {
         (self * self + y * y).sqrt()
     }
+    #[inline]
     fn abs(self) -> Dual<N> {
         if self.v < 0.0 { -self } else { self }
     }
+    #[inline]
     fn tanh(self) -> Dual<N> {
         let t = self.v.tanh();
         self.chain(t, 1.0 - t * t)
     }
+    #[inline]
     fn sign(self) -> Dual<N> {
         Dual::constant(Real::sign(self.v))
     }
+    #[inline]
     fn max0(self) -> Dual<N> {
         if self.v > 0.0 {
             self
@@ -210,9 +246,11 @@ impl<const N: usize> Real for Dual<N> {
             Dual::constant(Real::max0(self.v))
         }
     }
+    #[inline]
     fn step(self) -> Dual<N> {
         Dual::constant(Real::step(self.v))
     }
+    #[inline]
     fn is_nan(self) -> bool {
         self.v.is_nan()
     }

@@ -1,7 +1,7 @@
 //! Shared by the insertion tests (`tests/insertion/outcomes.rs`,
 //! `tests/insertion/quasi_static.rs`): an
 //! `insert_rcc` scene text built and run in-process with its own
-//! integrator (the non-stiff default when it names none).
+//! integrator (RODAS4, the kind's default, when it names none).
 
 #![allow(dead_code)]
 
@@ -19,7 +19,7 @@ pub fn run(text: &str) -> (RccScene, Built, Run) {
     let built = scene.build().expect("the test scene is valid");
     let (spec, _) = scene
         .integrator
-        .resolved(pegdyn::scene::integrator::DefaultMethod::NON_STIFF);
+        .resolved(pegdyn::scene::integrator::DefaultMethod::STIFF_CONTACT);
     let run = run_one(&built, &spec, false, &mut Progress::silent()).expect("the run starts");
     (scene, built, run)
 }

@@ -157,3 +157,55 @@ fn rodas4_with_the_exact_jacobian_lands_like_dopri5() {
         "never touched"
     );
 }
+
+#[test]
+fn the_prescribed_peg_s_jacobian_and_time_derivative_match_central_differences() {
+    // The Fig. 9 motion preloaded with the rigid reactions (three points:
+    // K on the side, B1 and B2 on the mouth), aligning and precessing.
+    use crate::common::prescribed_rigid::{GAMMADOT, params, preloaded_state};
+    use pegdyn::compliant_peg_3d::prescribed::{Motion, PrescribedPeg};
+    use pegdyn::rigid_peg::prescribed::reactions;
+    use pegdyn::rigid_peg::{Loads, PegParams};
+    let rigid = PegParams::fig9();
+    let k = 2.4e10;
+    let motion = Motion {
+        gamma: 0.2,
+        gammadot: GAMMADOT,
+        psi: 0.3,
+        psidot: 10.0,
+    };
+    let sys = PrescribedPeg::try_new(params(&rigid, k), motion).unwrap();
+    let normal = reactions(
+        &rigid,
+        &Loads::default(),
+        nalgebra::Vector2::new(motion.gamma, motion.psi),
+        nalgebra::Vector2::new(GAMMADOT, motion.psidot),
+        nalgebra::Vector2::zeros(),
+    )
+    .unwrap()
+    .normal;
+    let y = preloaded_state(&sys, &rigid, normal, k);
+    let t = 0.0;
+    assert_eq!(sys.forces(t, &y).unwrap().len(), 3, "three contacts");
+    let _ = sys.rhs(t, &y);
+    let exact = sys.jacobian(t, &y);
+    let big = (0..7).map(|c| exact.column(c).norm()).fold(0.0, f64::max);
+    for c in 0..7 {
+        let h = if c < 3 { 1e-10 } else { 1e-7 };
+        let (mut a, mut b) = (y, y);
+        a[c] += h;
+        b[c] -= h;
+        let fd = (sys.rhs(t, &a) - sys.rhs(t, &b)) / (2.0 * h);
+        let err = (fd - exact.column(c)).norm() / (exact.column(c).norm() + 1e-2 * big);
+        assert!(
+            err < 1e-5,
+            "column {c}: {err:.2e}\n{}\n{fd}",
+            exact.column(c)
+        );
+    }
+    let dt = 1e-8;
+    let fd = (sys.rhs(t + dt, &y) - sys.rhs(t - dt, &y)) / (2.0 * dt);
+    let exact = sys.time_derivative(t, &y);
+    let err = (fd - exact).norm() / exact.norm();
+    assert!(err < 1e-5, "time derivative: {err:.2e}\n{exact}\n{fd}");
+}

@@ -5,6 +5,8 @@
 mod common;
 
 mod design_margins;
+mod industreal;
+mod jacobian;
 mod outcomes;
 mod quasi_static;
 mod wrist;

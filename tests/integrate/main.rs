@@ -8,6 +8,7 @@ mod common;
 mod events;
 mod hostile;
 mod integrators;
+mod kinematic;
 mod no_alloc;
 mod rosenbrock;
 mod stiff;

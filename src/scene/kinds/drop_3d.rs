@@ -143,24 +143,37 @@ struct Ready {
     method_reason: &'static str,
 }
 
+impl DropScene {
+    /// Validates every table and builds the peg and its start: the rigid
+    /// three-point lean at `drop.gamma` lowered onto the fillets
+    /// ([`lean_pose`]), spinning at `drop.spin_rate` about the hole's axis.
+    ///
+    /// # Errors
+    /// Every invalid field, named; `drop.gamma` where no lean exists.
+    pub fn build(&self) -> Result<(Peg3dParams, SVector<f64, N_STATE>), SceneErrors> {
+        let mut c = Checker::default();
+        let params = self.peg.build(&mut c);
+        let d = &self.drop;
+        GAMMA.require(&mut c, d.gamma);
+        AZIMUTH.require(&mut c, d.azimuth_deg);
+        SPIN_RATE.require(&mut c, d.spin_rate);
+        ALIGNING_MOMENT.require(&mut c, d.aligning_moment);
+        c.extend(self.integrator.check("integrator"));
+        c.finish()?;
+        let (p, q) = lean_pose(&params, d.gamma, d.azimuth_deg.to_radians()).map_err(|e| {
+            SceneErrors::from(SceneError::invalid("drop.gamma", d.gamma, e.to_string()))
+        })?;
+        let omega_body = q.inverse() * Vector3::new(0.0, 0.0, d.spin_rate);
+        let ys = pose_state(p, q, Vector3::zeros(), omega_body);
+        let mut start = SVector::<f64, N_STATE>::zeros();
+        start.fixed_rows_mut::<15>(0).copy_from(&ys);
+        Ok((params, start))
+    }
+}
+
 fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: DropScene = doc.body()?;
-    let mut c = Checker::default();
-    let params = s.peg.build(&mut c);
-    let d = &s.drop;
-    GAMMA.require(&mut c, d.gamma);
-    AZIMUTH.require(&mut c, d.azimuth_deg);
-    SPIN_RATE.require(&mut c, d.spin_rate);
-    ALIGNING_MOMENT.require(&mut c, d.aligning_moment);
-    c.extend(s.integrator.check("integrator"));
-    c.finish()?;
-    let (p, q) = lean_pose(&params, d.gamma, d.azimuth_deg.to_radians()).map_err(|e| {
-        SceneErrors::from(SceneError::invalid("drop.gamma", d.gamma, e.to_string()))
-    })?;
-    let omega_body = q.inverse() * Vector3::new(0.0, 0.0, d.spin_rate);
-    let ys = pose_state(p, q, Vector3::zeros(), omega_body);
-    let mut start = SVector::<f64, N_STATE>::zeros();
-    start.fixed_rows_mut::<15>(0).copy_from(&ys);
+    let (params, start) = s.build()?;
     let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::NON_STIFF);
     Ok(Box::new(Ready {
         scene: s,

@@ -84,7 +84,7 @@ struct Ready {
 fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: RccScene = doc.body()?;
     let built = s.build()?;
-    let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::NON_STIFF);
+    let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::STIFF_CONTACT);
     Ok(Box::new(Ready {
         scene: s,
         built,
