@@ -67,7 +67,7 @@ pub struct Peg3d {
 struct Found {
     pose_bits: [u64; 7],
     params: Peg3dParams,
-    setups: Vec<Setup>,
+    setups: Setups,
 }
 
 /// The bits of the pose part `(p, q)` of a state.
@@ -210,7 +210,7 @@ impl Peg3d {
     pub fn with_setups<R>(
         &self,
         y: &SVector<f64, 15>,
-        f: impl FnOnce(&[Setup]) -> R,
+        f: impl FnOnce(&[forces::Setup]) -> R,
     ) -> Result<R, HertzError> {
         if let Some(found) = self
             .found

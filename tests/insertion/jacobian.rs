@@ -268,7 +268,10 @@ fn rodas4_with_the_exact_jacobian_inserts_like_dopri5() {
     let prm = peg();
     let sys = Insertion::new(prm, Some(held()), 0.0);
     let y0 = states(&prm)[0].1;
-    let opts = Options::with_tolerances(1e-9, 1e-13);
+    // Each bounce amplifies the integration error (at rtol 1e-8 to 1e-10 the
+    // two methods end 1e-7 to 5e-7 apart, not monotonically), so both run
+    // tight enough that their difference is the methods', not the bounces'.
+    let opts = Options::with_tolerances(1e-11, 1e-15);
     let end = 2e-3;
     let r4 = solve(&sys, Method::Rodas4, (0.0, y0), end, &opts).unwrap();
     let dp = solve(&sys, Method::Dopri5, (0.0, y0), end, &opts).unwrap();
@@ -283,7 +286,7 @@ fn rodas4_with_the_exact_jacobian_inserts_like_dopri5() {
         dp.stats.steps,
         (a - b).amax()
     );
-    assert!((a - b).amax() < 1e-7, "{a} vs {b}");
+    assert!((a - b).amax() < 1e-8, "{a} vs {b}");
     let touching = r4.x.iter().filter(|y| !sys.contacts(y).is_empty()).count();
     assert!(
         touching > r4.x.len() / 2,
