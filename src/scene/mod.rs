@@ -47,6 +47,7 @@ pub mod ranges;
 pub mod shared;
 pub(crate) mod simulate;
 mod summary;
+mod translate;
 pub mod validate;
 
 pub use context::RunContext;

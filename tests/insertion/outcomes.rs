@@ -202,7 +202,14 @@ fn insert_rcc_runs_end_to_end_and_writes_its_files() {
         .iter()
         .find(|m| m.name.starts_with("outcome"))
         .unwrap();
-    assert_eq!(outcome.name, "outcome: seated");
+    assert_eq!(
+        (
+            outcome.name.as_str(),
+            outcome.text.as_deref(),
+            outcome.value
+        ),
+        ("outcome", Some("seated"), 0.0)
+    );
     let csv = std::fs::read_to_string(&s.outputs[0]).unwrap();
     assert!(csv.lines().next().unwrap().contains("rim_wall_1_N_N"));
 }

@@ -53,6 +53,10 @@ use crate::scene::validate::Checker;
 use crate::system::ModelError;
 use nalgebra::{SVector, Vector3};
 
+/// How many contact transitions the summary lists and the views draw (the
+/// events table has them all).
+const LISTED: usize = 12;
+
 /// Registry entry.
 pub const KIND: Kind = Kind {
     name: "drop_3d",
@@ -206,7 +210,7 @@ impl Scene for Ready {
             ..RunSummary::default()
         };
         let samples = output::samples(&sys, &sol)?;
-        let peaks = output::write_series(ctx, &samples)?;
+        let peaks = output::write_series(ctx, &sys, &samples, &sol.events)?;
         let rows = output::transitions(&sys, &sol, &what);
         output::write_events(ctx, &sys, &rows)?;
         let mut fig = Figure::new();
@@ -224,13 +228,27 @@ impl Scene for Ready {
             (sol.t.first().copied().unwrap_or(0.0), &self.start),
             &rows,
             (sol.t_final, &sol.x_final),
-            12,
+            LISTED,
         )?;
         out.metrics = output::metrics(&peaks);
         out.metrics.retain(|m| !m.name.contains("wrist"));
         out.metrics
             .push(Metric::new("contact transitions", rows.len() as f64, ""));
-        for r in rows.iter().take(12) {
+        if rows.len() > LISTED {
+            let events = ctx.sink().path(Part::Sub("events"), "csv");
+            let file = events
+                .file_name()
+                .map_or_else(String::new, |f| f.to_string_lossy().into_owned());
+            out.metrics.push(Metric::new(
+                format!(
+                    "transitions listed below (the first {LISTED} of {}; every one is in {file})",
+                    rows.len()
+                ),
+                LISTED as f64,
+                "",
+            ));
+        }
+        for r in rows.iter().take(LISTED) {
             out.metrics
                 .push(Metric::new(format!("{} ({})", r.what, r.state), r.t, "s"));
         }

@@ -135,7 +135,7 @@ impl Scene for Ready {
             ..RunSummary::default()
         };
         let samples = output::samples(sys, sol)?;
-        let peaks = output::write_series(ctx, &samples)?;
+        let peaks = output::write_series(ctx, sys, &samples, &sol.events)?;
         let rows = output::transitions(sys, sol, &run.transitions);
         output::write_events(ctx, sys, &rows)?;
         let mm = 1e3;
@@ -197,10 +197,10 @@ impl Scene for Ready {
             12,
         )?;
         out.metrics = output::metrics(&peaks);
-        out.metrics.push(Metric::new(
-            format!("outcome: {}", outcome_text(&run.outcome)),
+        out.metrics.push(Metric::coded(
+            "outcome",
             run.outcome.code(),
-            "",
+            outcome_text(&run.outcome),
         ));
         out.metrics.push(Metric::new("end time", sol.t_final, "s"));
         let (depth, tilt, _) = crate::compliant_peg_3d::insertion::depth_tilt(

@@ -199,26 +199,17 @@ struct Row {
 fn one(p: Point, b: &Built, spec: &IntegratorSpec) -> Result<Row, RunError> {
     let mut silent = Progress::silent();
     let run = run_one(b, spec, false, &mut silent)?;
-    let (mut pc, mut pp, mut pm, mut pw) = (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
-    for (&t, y) in run.solution.t.iter().zip(&run.solution.x) {
-        let s = run.system.sample(t, y)?;
-        pc = pc.max(s.peak_normal());
-        pp = pp.max(run.system.peak_pressure(y, &s).0);
-        if let Some(w) = &s.wrist {
-            pm = pm.max(w.moment_robot.xy().norm());
-            pw = pw.max(w.force.norm());
-        }
-    }
+    let peaks = run.peaks()?;
     Ok(Row {
         point: p,
         outcome: outcome_text(&run.outcome),
         code: run.outcome.code(),
         end: run.solution.t_final,
         seated: run.outcome == crate::compliant_peg_3d::outcome::Outcome::Seated,
-        peak_contact: pc,
-        peak_pressure: pp,
-        peak_moment: pm,
-        peak_wrist: pw,
+        peak_contact: peaks.contact,
+        peak_pressure: peaks.pressure,
+        peak_moment: peaks.wrist_moment,
+        peak_wrist: peaks.wrist_force,
     })
 }
 
@@ -305,7 +296,6 @@ impl Scene for Ready {
                 .filter(|r| r.point.precession == pr && r.point.spin == sr)
                 .collect();
             let seated: Vec<&&Row> = sel.iter().filter(|r| r.seated).collect();
-            let mean_t = seated.iter().map(|r| r.end).sum::<f64>() / seated.len().max(1) as f64;
             let peak = sel.iter().map(|r| r.peak_contact).fold(0.0, f64::max);
             let tag = format!("psidot {pr} rad/s, phidot {sr} rad/s");
             out.metrics.push(Metric::new(
@@ -313,11 +303,15 @@ impl Scene for Ready {
                 seated.len() as f64,
                 "",
             ));
-            out.metrics.push(Metric::new(
-                format!("{tag}: mean insertion time"),
-                mean_t,
-                "s",
-            ));
+            // A mean over no seated run is not a time: left out.
+            if !seated.is_empty() {
+                let mean_t = seated.iter().map(|r| r.end).sum::<f64>() / seated.len() as f64;
+                out.metrics.push(Metric::new(
+                    format!("{tag}: mean insertion time"),
+                    mean_t,
+                    "s",
+                ));
+            }
             out.metrics
                 .push(Metric::new(format!("{tag}: peak contact force"), peak, "N"));
         }

@@ -87,9 +87,11 @@ pub struct GridRun {
     pub end_depth: f64,
     /// The contact pairs at the end, e.g. `rim_top`.
     pub end_contacts: String,
-    /// Largest contact normal force over the output samples (N).
+    /// Largest contact normal force over the output samples, the events
+    /// and the final state (N).
     pub peak_contact: f64,
-    /// Largest wrist force over the output samples (N).
+    /// Largest wrist force over the output samples, the events and the
+    /// final state (N).
     pub peak_wrist: f64,
 }
 
@@ -274,14 +276,7 @@ impl Design {
 
     fn one(&self, p: Point, b: &Built) -> Result<GridRun, RunError> {
         let run = run_one(b, &self.integrator, false, &mut Progress::silent())?;
-        let (mut pc, mut pw) = (0.0_f64, 0.0_f64);
-        for (&t, y) in run.solution.t.iter().zip(&run.solution.x) {
-            let s = run.system.sample(t, y)?;
-            pc = pc.max(s.peak_normal());
-            if let Some(w) = &s.wrist {
-                pw = pw.max(w.force.norm());
-            }
-        }
+        let peaks = run.peaks()?;
         let end = run
             .system
             .sample(run.solution.t_final, &run.solution.x_final)?;
@@ -294,8 +289,8 @@ impl Design {
             end: run.solution.t_final,
             end_depth: end.depth,
             end_contacts: pairs.join(" "),
-            peak_contact: pc,
-            peak_wrist: pw,
+            peak_contact: peaks.contact,
+            peak_wrist: peaks.wrist_force,
         })
     }
 }

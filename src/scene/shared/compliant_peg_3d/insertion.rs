@@ -167,6 +167,45 @@ pub fn run_one(
     })
 }
 
+/// The largest values along one insertion, over its stored samples (which
+/// end with the final state) and its located events.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct RunPeaks {
+    /// Largest contact normal force (N).
+    pub contact: f64,
+    /// Largest Hertz pressure `p₀` (Pa).
+    pub pressure: f64,
+    /// Largest wrist lateral moment about the compliance centre (N·m).
+    pub wrist_moment: f64,
+    /// Largest wrist force (N).
+    pub wrist_force: f64,
+}
+
+impl Run {
+    /// The peaks of the run over every stored sample and every event state
+    /// (a terminal force limit is located between two samples: its state
+    /// holds the peak the limit stopped).
+    ///
+    /// # Errors
+    /// A Hertz setup error at one of those states.
+    pub fn peaks(&self) -> Result<RunPeaks, RunError> {
+        let sol = &self.solution;
+        let samples = sol.t.iter().copied().zip(sol.x.iter());
+        let events = sol.events.iter().map(|e| (e.t, &e.x));
+        let mut p = RunPeaks::default();
+        for (t, y) in samples.chain(events) {
+            let s = self.system.sample(t, y)?;
+            p.contact = p.contact.max(s.peak_normal());
+            p.pressure = p.pressure.max(self.system.peak_pressure(y, &s).0);
+            if let Some(w) = &s.wrist {
+                p.wrist_moment = p.wrist_moment.max(w.moment_robot.xy().norm());
+                p.wrist_force = p.wrist_force.max(w.force.norm());
+            }
+        }
+        Ok(p)
+    }
+}
+
 /// The outcome in words.
 pub fn outcome_text(o: &Outcome) -> String {
     match o {

@@ -19,7 +19,7 @@ use crate::compliant_peg_3d::Pair;
 use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, Sample, motion, peg_state};
 use crate::compliant_peg_3d::outcome::{Transition, counts, label, two_point_counts};
 use crate::error::RunError;
-use crate::integrate::Solution;
+use crate::integrate::{EventHit, Solution};
 use crate::output::csv::format_f64;
 use crate::output::names::Part;
 use crate::output::plot::{Figure, Panel, Series, Style};
@@ -142,11 +142,38 @@ pub fn samples(sys: &Insertion, sol: &Solution<N_STATE>) -> Result<Samples, RunE
     Ok(Samples { rows })
 }
 
-/// Writes `<name>.csv` and returns the peaks.
+impl Peaks {
+    /// Takes state `y` with its sample `smp` into the peaks; `e0` is the
+    /// energy balance at the start.
+    fn include(&mut self, y: &SVector<f64, N_STATE>, smp: &Sample, e0: f64) {
+        self.contact_force = self.contact_force.max(smp.peak_normal());
+        if let Some(w) = &smp.wrist {
+            self.wrist_force = self.wrist_force.max(w.force.norm());
+            self.wrist_moment = self.wrist_moment.max(w.moment_robot.xy().norm());
+        }
+        self.drift = self.drift.max((smp.balance - e0).abs());
+        self.scale = self
+            .scale
+            .max(y[13].abs())
+            .max(y[15].abs())
+            .max(smp.kinetic);
+    }
+}
+
+/// Writes `<name>.csv` (the samples, which end with the run's final state)
+/// and returns the peaks over the samples and the states of `events` (the
+/// located events of the run, contact transitions and the terminal one),
+/// so that a peak is never missed because it fell between two samples at
+/// an event.
 ///
 /// # Errors
-/// Output errors.
-pub fn write_series(ctx: &RunContext, s: &Samples) -> Result<Peaks, RunError> {
+/// Output errors; a Hertz setup error at an event state.
+pub fn write_series(
+    ctx: &RunContext,
+    sys: &Insertion,
+    s: &Samples,
+    events: &[EventHit<N_STATE>],
+) -> Result<Peaks, RunError> {
     let h = header();
     let hr: Vec<&str> = h.iter().map(String::as_str).collect();
     let mut csv = ctx.table(Part::Main, &hr)?;
@@ -154,19 +181,12 @@ pub fn write_series(ctx: &RunContext, s: &Samples) -> Result<Peaks, RunError> {
     let e0 = s.rows.first().map_or(0.0, |r| r.2.balance);
     for (t, y, smp) in &s.rows {
         csv.row(&row(*t, y, smp))?;
-        peaks.contact_force = peaks.contact_force.max(smp.peak_normal());
-        if let Some(w) = &smp.wrist {
-            peaks.wrist_force = peaks.wrist_force.max(w.force.norm());
-            peaks.wrist_moment = peaks.wrist_moment.max(w.moment_robot.xy().norm());
-        }
-        peaks.drift = peaks.drift.max((smp.balance - e0).abs());
-        peaks.scale = peaks
-            .scale
-            .max(y[13].abs())
-            .max(y[15].abs())
-            .max(smp.kinetic);
+        peaks.include(y, smp, e0);
     }
     csv.finish()?;
+    for e in events {
+        peaks.include(&e.x, &sys.sample(e.t, &e.x)?, e0);
+    }
     Ok(peaks)
 }
 
