@@ -275,6 +275,18 @@ pub enum RunError {
     /// state (relative curvature not positive).
     #[error("Hertz contact: {0}")]
     Hertz(#[from] crate::hertz::HertzError),
+    /// The contact law refused a state during a run, with the time and
+    /// the scene fields that set the refused quantity.
+    #[error("Hertz contact refused at t = {t} s: {source}; {fields}")]
+    HertzAt {
+        /// Time of the run's last state, s.
+        t: f64,
+        /// The scene fields that set the law, with their values and what
+        /// to change, in words.
+        fields: String,
+        /// The law's refusal.
+        source: crate::hertz::HertzError,
+    },
 }
 
 impl From<crate::rigid_peg::trajectory::ForwardError> for RunError {

@@ -33,7 +33,16 @@ impl LoadedScene {
     /// The scene's run error (files completed before it stay recorded in
     /// `ctx`'s sink).
     pub fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
+        let scales = self.scene.time_scales();
+        ctx.progress.explain(scales.as_ref());
         let mut summary = self.scene.run(ctx)?;
+        if let Some(i) = summary.integration.as_mut()
+            && let Some((t, h)) = i.step_failure
+            && let Some(scales) = &scales
+        {
+            i.stop.push_str("; likely cause: ");
+            i.stop.push_str(&scales.step_failure_cause(t, h));
+        }
         summary.outputs = ctx.sink().written();
         Ok(summary)
     }

@@ -11,7 +11,7 @@
 //! The framework: [`kind`] (what a kind provides), [`loader`]
 //! (parse, dispatch, validate), [`document`], [`validate`], [`ranges`]
 //! (declared valid ranges), [`limits`], [`integrator`], [`context`] (the run
-//! context and its output sink), progress and summary. Each kind lives in
+//! context and its output sink), progress, summary and [`timescales`]. Each kind lives in
 //! [`kinds`], in a file or folder named as its `kind` string; tables and
 //! code several kinds share are in [`shared`] (a kind imports from there,
 //! never from another kind).
@@ -47,6 +47,7 @@ pub mod ranges;
 pub mod shared;
 pub(crate) mod simulate;
 mod summary;
+pub mod timescales;
 mod translate;
 pub mod validate;
 
@@ -59,3 +60,4 @@ pub use loader::{LoadedScene, load, load_with, parse, parse_named, parse_named_w
 pub use numbers::significant;
 pub use progress::{Progress, par_map_counted};
 pub use summary::{EventRecord, IntegrationSummary, Metric, RunSummary};
+pub use timescales::{TimeScale, TimeScales};

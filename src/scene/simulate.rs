@@ -206,6 +206,10 @@ pub fn integration_summary<const N: usize>(
         rejected: sol.stats.rejected,
         rhs_calls: sol.stats.rhs_calls,
         events: event_records(sol, event_names),
+        step_failure: match sol.stop {
+            StopReason::StepSizeTooSmall { t, h } => Some((t, h)),
+            _ => None,
+        },
     }
 }
 

@@ -34,6 +34,15 @@ impl Metric {
         }
     }
 
+    /// A statement without a number (value NaN), printed as
+    /// `name: text`, e.g. a check that could not be made.
+    pub fn note(name: impl Into<String>, text: impl Into<String>) -> Self {
+        Metric {
+            text: Some(text.into()),
+            ..Metric::new(name, f64::NAN, "")
+        }
+    }
+
     /// A coded metric: `code` stands for `text`, printed as
     /// `name = text (code c)`.
     pub fn coded(name: impl Into<String>, code: f64, text: impl Into<String>) -> Self {
@@ -65,6 +74,10 @@ pub struct IntegrationSummary {
     /// Every event that fired, in time order; a terminal event is last.
     /// (`pegdyn run` prints only [`IntegrationSummary::stop`].)
     pub events: Vec<EventRecord>,
+    /// `(t, h)` when the run stopped because the step became too small
+    /// (time, s; the rejected step, s): [`crate::scene::LoadedScene::run`]
+    /// adds the likely cause to [`IntegrationSummary::stop`].
+    pub step_failure: Option<(f64, f64)>,
 }
 
 /// One event that fired during an integration.
@@ -94,6 +107,7 @@ impl IntegrationSummary {
         self.stop = later.stop;
         self.success = later.success;
         self.method = later.method;
+        self.step_failure = later.step_failure;
     }
 }
 
@@ -135,6 +149,7 @@ impl fmt::Display for RunSummary {
             let sep = if m.unit.is_empty() { "" } else { " " };
             let v = format_metric(m.value);
             match &m.text {
+                Some(text) if m.value.is_nan() => writeln!(f, "  {}: {text}", m.name)?,
                 Some(text) => writeln!(f, "  {} = {text} (code {v})", m.name)?,
                 None => writeln!(f, "  {} = {v}{sep}{}", m.name, m.unit)?,
             }
@@ -180,6 +195,7 @@ mod tests {
                 terminal: !success,
                 details: vec![],
             }],
+            step_failure: None,
         }
     }
 
@@ -225,6 +241,7 @@ mod tests {
                 Metric::coded("outcome", 0.0, "seated"),
                 Metric::coded("outcome", 4.0, "wrist force limit (2 N)"),
                 Metric::new("mean insertion time", -0.0, "s"),
+                Metric::note("diagram check", "not made"),
             ],
             ..RunSummary::default()
         };
@@ -235,6 +252,7 @@ mod tests {
             "{text}"
         );
         assert!(text.contains("mean insertion time = 0 s"), "{text}");
+        assert!(text.contains("  diagram check: not made\n"), "{text}");
         assert!(!text.contains("-0"), "{text}");
     }
 }

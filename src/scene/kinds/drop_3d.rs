@@ -154,6 +154,19 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
     let ys = pose_state(p, q, Vector3::zeros(), omega_body);
     let mut start = SVector::<f64, N_STATE>::zeros();
     start.fixed_rows_mut::<15>(0).copy_from(&ys);
+    let sys = Insertion::new(params, None, d.aligning_moment);
+    if let Some(o) = crate::scene::shared::compliant_peg_3d::start::overlap(&sys, &start) {
+        return Err(SceneErrors::from(SceneError::invalid(
+            "drop.gamma",
+            d.gamma,
+            format!(
+                "{}: the lean at this tilt, lowered until the fillets touch, overlaps by more \
+                 than it touches (lifting it {} m clears it)",
+                o.describe(),
+                crate::scene::numbers::significant(o.lift)
+            ),
+        )));
+    }
     let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::NON_STIFF);
     Ok(Box::new(Ready {
         scene: s,
@@ -167,6 +180,24 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
 impl Scene for Ready {
     fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
         self.scene.integrator.work("integrator")
+    }
+
+    fn time_scales(&self) -> Option<crate::scene::TimeScales> {
+        use crate::scene::shared::compliant_peg_3d::timescales;
+        let m0 = self.scene.drop.aligning_moment;
+        // The moment presses the rim into the mouth with about M / r.
+        let push = m0 / self.params.peg_radius();
+        let mut scales = timescales::peg(&self.params, timescales::load(&self.params, push));
+        scales.extend(timescales::aligning(&self.params, m0));
+        let spin = self.scene.drop.spin_rate;
+        if spin != 0.0 {
+            scales.push(crate::scene::TimeScale::new(
+                "a turn at the spin rate, 2 pi / rate",
+                format!("drop.spin_rate = {} rad/s", crate::scene::significant(spin)),
+                std::f64::consts::TAU / spin.abs(),
+            ));
+        }
+        Some(crate::scene::TimeScales::new(&self.integrator, scales))
     }
 
     fn describe(&self) -> String {
@@ -198,7 +229,13 @@ impl Scene for Ready {
             &mut ctx.progress,
         )?;
         if let Some(ModelError::Hertz(e)) = sol.model_error.clone() {
-            return Err(RunError::Hertz(e));
+            return Err(
+                crate::scene::shared::compliant_peg_3d::start::hertz_refusal(
+                    &self.params,
+                    sol.t_final,
+                    e,
+                ),
+            );
         }
         let names: Vec<String> = what
             .iter()

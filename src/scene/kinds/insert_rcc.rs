@@ -57,7 +57,7 @@ use crate::scene::kind::{Kind, Scene};
 use crate::scene::limits::WorkItem;
 use crate::scene::numbers::significant;
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, outcome_text, run_one};
-use crate::scene::shared::compliant_peg_3d::{margins, output, ranges};
+use crate::scene::shared::compliant_peg_3d::{margins, output, ranges, timescales};
 use crate::scene::simulate::{describe_stop, integration_summary};
 use crate::scene::summary::{Metric, RunSummary};
 
@@ -92,6 +92,11 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
 impl Scene for Ready {
     fn work(&self) -> Vec<WorkItem> {
         self.scene.integrator.work("integrator")
+    }
+
+    fn time_scales(&self) -> Option<crate::scene::TimeScales> {
+        let scales = timescales::held(&self.built.params, &self.built.held);
+        Some(crate::scene::TimeScales::new(&self.integrator, scales))
     }
 
     fn describe(&self) -> String {

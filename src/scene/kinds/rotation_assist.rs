@@ -37,7 +37,9 @@ use crate::scene::kind::{Kind, Scene};
 use crate::scene::limits::WorkItem;
 use crate::scene::progress::{Progress, par_map_counted};
 use crate::scene::ranges::FieldRange;
-use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, outcome_text, run_one};
+use crate::scene::shared::compliant_peg_3d::insertion::{
+    Built, RccScene, at_grid_point, outcome_text, run_one,
+};
 use crate::scene::shared::compliant_peg_3d::{ranges, tables};
 use crate::scene::summary::{Metric, RunSummary};
 use crate::scene::validate::Checker;
@@ -52,9 +54,40 @@ pub const KIND: Kind = Kind {
         ranges::WRIST,
         ranges::ROBOT,
         ranges::CRITERIA,
-        &[YIELD_PRESSURE],
+        GRID,
     ],
 };
+
+/// `grid.lateral_errors` (each entry; the robot's range, within two bore
+/// diameters: the check uses the scene's `D`).
+pub const LATERAL_ERRORS: FieldRange = FieldRange {
+    field: "grid.lateral_errors",
+    ..ranges::LATERAL_ERROR
+};
+/// `grid.angular_errors_deg` (each entry; the robot's range).
+pub const ANGULAR_ERRORS: FieldRange = FieldRange {
+    field: "grid.angular_errors_deg",
+    ..ranges::ANGULAR_ERROR
+};
+/// `grid.precession_rates` (each entry; the robot's range).
+pub const PRECESSION_RATES: FieldRange = FieldRange {
+    field: "grid.precession_rates",
+    ..ranges::PRECESSION_RATE
+};
+/// `grid.spin_rates` (each entry; the robot's range).
+pub const SPIN_RATES: FieldRange = FieldRange {
+    field: "grid.spin_rates",
+    ..ranges::SPIN_RATE
+};
+
+/// The `[grid]` table.
+pub const GRID: &[FieldRange] = &[
+    LATERAL_ERRORS,
+    ANGULAR_ERRORS,
+    PRECESSION_RATES,
+    SPIN_RATES,
+    YIELD_PRESSURE,
+];
 
 /// `grid.yield_pressure`.
 pub const YIELD_PRESSURE: FieldRange = FieldRange::new(
@@ -137,42 +170,52 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
     let s: SweepScene = doc.body()?;
     let mut c = Checker::default();
     let g = &s.grid;
-    for (name, list) in [
-        ("lateral_errors", &g.lateral_errors),
-        ("angular_errors_deg", &g.angular_errors_deg),
-        ("precession_rates", &g.precession_rates),
-        ("spin_rates", &g.spin_rates),
+    // Each entry against the robot's range of the field it replaces, named
+    // as the grid entry (the bore's D narrows the lateral range).
+    let d = s.peg.hole_diameter.abs();
+    for (range, list) in [
+        (LATERAL_ERRORS.within(-2.0 * d, 2.0 * d), &g.lateral_errors),
+        (ANGULAR_ERRORS, &g.angular_errors_deg),
+        (PRECESSION_RATES, &g.precession_rates),
+        (SPIN_RATES, &g.spin_rates),
     ] {
         if list.is_empty() {
             c.push(crate::error::SceneError::invalid(
-                format!("grid.{name}"),
+                range.field,
                 "[]",
                 "must list at least one value",
             ));
         }
         for (k, v) in list.iter().enumerate() {
-            c.finite(&format!("grid.{name}[{k}]"), *v);
+            let field = format!("{}[{k}]", range.field);
+            c.finite(&field, *v);
+            range.check_as(&mut c, &field, *v);
         }
+        c.distinct(range.field, list);
     }
     YIELD_PRESSURE.require(&mut c, g.yield_pressure);
     c.finish()?;
     let mut points = Vec::new();
-    for &lateral in &g.lateral_errors {
-        for &angular_deg in &g.angular_errors_deg {
-            for &precession in &g.precession_rates {
-                for &spin in &g.spin_rates {
+    let mut c = Checker::default();
+    for (i, &lateral) in g.lateral_errors.iter().enumerate() {
+        for (j, &angular_deg) in g.angular_errors_deg.iter().enumerate() {
+            for (k, &precession) in g.precession_rates.iter().enumerate() {
+                for (l, &spin) in g.spin_rates.iter().enumerate() {
                     let p = Point {
                         lateral,
                         angular_deg,
                         precession,
                         spin,
                     };
-                    let built = s.as_rcc(&p).build()?;
-                    points.push((p, built));
+                    match s.as_rcc(&p).build() {
+                        Ok(built) => points.push((p, built)),
+                        Err(e) => grid_point_errors(e, &p, [i, j, k, l], &mut c),
+                    }
                 }
             }
         }
     }
+    c.finish()?;
     let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::NON_STIFF);
     Ok(Box::new(Ready {
         scene: s,
@@ -180,6 +223,32 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
         integrator,
         method_reason,
     }))
+}
+
+/// The errors of the grid point `p` at list indices `at` (lateral,
+/// angular, precession, spin) named as the grid's entries, not as the
+/// robot fields they replace.
+fn grid_point_errors(e: SceneErrors, p: &Point, at: [usize; 4], c: &mut Checker) {
+    let [i, j, k, l] = at;
+    let names = [
+        format!("grid.lateral_errors[{i}]"),
+        format!("grid.precession_rates[{k}]"),
+        format!("grid.spin_rates[{l}]"),
+        format!("grid.angular_errors_deg[{j}]"),
+    ];
+    let point = [
+        (names[0].clone(), p.lateral),
+        (names[1].clone(), p.precession),
+        (names[2].clone(), p.spin),
+        (names[3].clone(), p.angular_deg),
+    ];
+    let renames = [
+        ("robot.lateral_error", names[0].as_str(), p.lateral),
+        ("robot.precession_rate", names[1].as_str(), p.precession),
+        ("robot.spin_rate", names[2].as_str(), p.spin),
+        ("robot.angular_error_deg", names[3].as_str(), p.angular_deg),
+    ];
+    at_grid_point(e, &point, &renames, c);
 }
 
 /// One run's row.

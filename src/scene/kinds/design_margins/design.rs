@@ -9,7 +9,7 @@ use crate::compliant_peg_3d::outcome::Outcome;
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::scene::integrator::{DefaultMethod, IntegratorSpec};
 use crate::scene::progress::{Progress, par_map_counted};
-use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, run_one};
+use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, at_grid_point, run_one};
 use crate::scene::shared::compliant_peg_3d::tables::{
     CriteriaTable, PegTable, RobotTable, WristTable,
 };
@@ -188,6 +188,7 @@ impl DesignScene {
                 c.finite(&field, *v);
                 range.check_as(&mut c, &field, *v);
             }
+            c.distinct(&format!("grid.{name}"), list);
         }
         if let Some(s) = g.seat_depth {
             c.finite("grid.seat_depth", s);
@@ -205,7 +206,7 @@ impl DesignScene {
         let mut points = Vec::new();
         let mut c = Checker::default();
         for (i, &centre_lateral) in g.centre_lateral_errors.iter().enumerate() {
-            for &angular_deg in &g.angular_errors_deg {
+            for (j, &angular_deg) in g.angular_errors_deg.iter().enumerate() {
                 let p = Point {
                     centre_lateral,
                     angular_deg,
@@ -225,7 +226,27 @@ impl DesignScene {
                     ));
                     continue;
                 }
-                points.push((p, rcc.build()?));
+                match rcc.build() {
+                    Ok(built) => points.push((p, built)),
+                    Err(e) => {
+                        let (lateral, angular) = (
+                            format!("grid.centre_lateral_errors[{i}]"),
+                            format!("grid.angular_errors_deg[{j}]"),
+                        );
+                        at_grid_point(
+                            e,
+                            &[
+                                (lateral.clone(), centre_lateral),
+                                (angular.clone(), angular_deg),
+                            ],
+                            &[
+                                ("robot.lateral_error", &lateral, centre_lateral),
+                                ("robot.angular_error_deg", &angular, angular_deg),
+                            ],
+                            &mut c,
+                        );
+                    }
+                }
             }
         }
         c.finish()?;

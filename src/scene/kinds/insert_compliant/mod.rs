@@ -40,6 +40,7 @@ use serde::Deserialize;
 
 pub mod output;
 pub mod ranges;
+mod start;
 
 use output::write_outputs;
 
@@ -353,6 +354,7 @@ impl InsertCompliantScene {
             radial: p.radial_force,
             torque: p.torque,
         };
+        start::overlap(&params, &load, &initial, p)?;
         Ok(Built {
             params,
             load,
@@ -364,6 +366,11 @@ impl InsertCompliantScene {
 impl Scene for Ready {
     fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
         self.scene.integrator.work("integrator")
+    }
+
+    fn time_scales(&self) -> Option<crate::scene::TimeScales> {
+        let scales = start::time_scales(&self.built, &self.scene.insert_compliant);
+        Some(crate::scene::TimeScales::new(&self.integrator, scales))
     }
 
     fn describe(&self) -> String {

@@ -135,6 +135,7 @@ impl JammingScene {
             for (i, &v) in values.iter().enumerate() {
                 range.check_as(&mut c, &format!("jamming.{field}[{i}]"), v);
             }
+            c.distinct(&format!("jamming.{field}"), values);
         }
         c.finish()
     }

@@ -7,13 +7,17 @@
 
 use serde::Deserialize;
 
+use nalgebra::SVector;
+
+use super::start;
 use super::tables::{CriteriaTable, PegTable, RobotTable, WristTable, held};
 use crate::compliant_peg_3d::Peg3dParams;
 use crate::compliant_peg_3d::insertion::{Held, Insertion, N_STATE};
 use crate::compliant_peg_3d::outcome::{
     CountCache, Criteria, Outcome, TERMINAL_NAMES, classify, terminal_events, transition_events,
 };
-use crate::error::{RunError, SceneErrors};
+use crate::compliant_peg_3d::robot::Descent;
+use crate::error::{RunError, SceneError, SceneErrors};
 use crate::integrate::{Solution, StopReason};
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::numbers::significant;
@@ -62,12 +66,147 @@ impl RccScene {
             held(&self.peg, &self.wrist, &self.robot, &self.criteria, &mut c);
         c.extend(self.integrator.check("integrator"));
         c.finish()?;
-        Ok(Built {
+        let built = Built {
             params,
             held,
             criteria,
             start_depth: (self.robot.start_height < 0.0).then_some(-self.robot.start_height),
-        })
+        };
+        let sys = Insertion::new(built.params, Some(built.held), 0.0);
+        match start::overlap(&sys, &built.start_state(&sys)) {
+            Some(o) => Err(SceneErrors::from(self.start_refusal(&built, &o))),
+            None => Ok(built),
+        }
+    }
+
+    /// Why the start pose is refused, on the field that places the peg
+    /// there: `wrist.axial_stiffness` when the wrist's static sag under
+    /// the peg's weight is what sinks it, else `robot.start_height`, the
+    /// errors named in the reason with the start height that clears.
+    fn start_refusal(&self, b: &Built, o: &start::Overlap) -> SceneError {
+        let r = &self.robot;
+        let h = r.start_height;
+        let clears = h + o.lift;
+        let sag = b.sag();
+        if b.start_depth.is_some() {
+            return SceneError::invalid(
+                "robot.start_height",
+                h,
+                format!(
+                    "{}: the peg starts in the bore, centred and aligned, at that depth",
+                    o.describe()
+                ),
+            );
+        }
+        if sag > 0.0 && sag >= 0.5 * o.lift {
+            return SceneError::invalid(
+                "wrist.axial_stiffness",
+                self.wrist.axial_stiffness,
+                format!(
+                    "{}: the wrist's static sag m g / K_z = {} m under the peg's weight puts the \
+                     peg that far below robot.start_height = {} m; a stiffer wrist, or \
+                     robot.start_height of at least {} m, clears the block",
+                    o.describe(),
+                    significant(sag),
+                    significant(h),
+                    significant(clears)
+                ),
+            );
+        }
+        SceneError::invalid(
+            "robot.start_height",
+            h,
+            format!(
+                "{}: with robot.angular_error_deg = {}, robot.lateral_error = {} m{} the tip \
+                 starts too low; robot.start_height of at least {} m (or smaller errors) clears \
+                 the block",
+                o.describe(),
+                significant(r.angular_error_deg),
+                significant(r.lateral_error),
+                if sag > 0.0 {
+                    format!(
+                        " and the wrist's static sag m g / K_z = {} m",
+                        significant(sag)
+                    )
+                } else {
+                    String::new()
+                },
+                significant(clears)
+            ),
+        )
+    }
+}
+
+impl Built {
+    /// The start state of the run: in the bore (`robot.start_height < 0`)
+    /// or held above it.
+    pub fn start_state(&self, sys: &Insertion) -> SVector<f64, N_STATE> {
+        match self.start_depth {
+            Some(d) => sys.centred_start(d),
+            None => sys.held_start(),
+        }
+        .unwrap_or_default()
+    }
+
+    /// The wrist's static axial sag `m g / K_z` at a speed-controlled start
+    /// held above the bore (m; 0 under an axial force or in the bore).
+    pub fn sag(&self) -> f64 {
+        let forced = matches!(self.held.robot.descent, Descent::Force { .. });
+        if forced || self.start_depth.is_some() || self.held.wrist.axial <= 0.0 {
+            0.0
+        } else {
+            self.params.mass * self.params.gravity / self.held.wrist.axial
+        }
+    }
+}
+
+/// The errors of grid point `point` (its entries, e.g.
+/// `("grid.lateral_errors[1]", 2e-4)`) with the robot fields the grid
+/// replaces renamed as the grid's entries (`renames`: robot field, grid
+/// entry, the grid value), and a start-pose refusal named on the last
+/// entry with the point in its reason; identical errors (one per point of
+/// a field every point shares) are kept once by [`Checker::push_once`].
+pub fn at_grid_point(
+    errors: SceneErrors,
+    point: &[(String, f64)],
+    renames: &[(&str, &str, f64)],
+    c: &mut Checker,
+) {
+    let at = point
+        .iter()
+        .map(|(f, v)| format!("{f} = {}", significant(*v)))
+        .collect::<Vec<_>>()
+        .join(", ");
+    for e in errors.errors {
+        let error = match e.error {
+            SceneError::Invalid {
+                field,
+                value,
+                reason,
+            } => {
+                if let Some((_, grid, v)) = renames.iter().find(|(robot, ..)| *robot == field) {
+                    SceneError::invalid(*grid, v, format!("at the grid point ({at}): {reason}"))
+                } else if field == "robot.start_height"
+                    && let Some((last, v)) = point.last()
+                {
+                    SceneError::invalid(
+                        last.clone(),
+                        v,
+                        format!(
+                            "at the grid point ({at}), from robot.start_height = {value}: {reason}"
+                        ),
+                    )
+                } else {
+                    SceneError::Invalid {
+                        field,
+                        value,
+                        reason,
+                    }
+                }
+            }
+            other => other,
+        };
+        c.push_once(error);
     }
 }
 
@@ -96,11 +235,7 @@ pub fn run_one(
 ) -> Result<Run, RunError> {
     let sys = Insertion::new(b.params, Some(b.held), 0.0);
     let counter = Insertion::new(b.params, None, 0.0);
-    let y0 = match b.start_depth {
-        Some(d) => sys.centred_start(d),
-        None => sys.held_start(),
-    }
-    .unwrap_or_default();
+    let y0 = b.start_state(&sys);
     let (solution, what) = {
         let cache = CountCache::new(&counter);
         let mut events = terminal_events(&sys, b.criteria);
@@ -113,7 +248,7 @@ pub fn run_one(
         (integrate(&sys, y0, spec, events, progress)?, what)
     };
     if let Some(ModelError::Hertz(e)) = solution.model_error.clone() {
-        return Err(RunError::Hertz(e));
+        return Err(start::hertz_refusal(&b.params, solution.t_final, e));
     }
     let terminal = match solution.stop {
         StopReason::Event { index, .. } if index < TERMINAL_NAMES.len() => Some(index),

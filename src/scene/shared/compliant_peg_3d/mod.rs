@@ -2,11 +2,14 @@
 //! `insert_rcc`, `rotation_assist`, `design_margins`; `docs/insertion.md`):
 //! the `[peg]`, `[wrist]`, `[robot]` and `[criteria]` tables ([`tables`])
 //! and their declared ranges ([`ranges`]), one held-peg insertion run
-//! ([`insertion`]), its time series, events and views ([`output`]) and its
-//! no-jam margins ([`margins`]).
+//! ([`insertion`]), its time series, events and views ([`output`]), its
+//! no-jam margins ([`margins`]) and the check of its start pose
+//! ([`start`]), its time scales ([`timescales`]).
 
 pub mod insertion;
 pub mod margins;
 pub mod output;
 pub mod ranges;
+pub mod start;
 pub mod tables;
+pub mod timescales;
