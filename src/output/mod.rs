@@ -6,8 +6,10 @@
 //! what a run wrote.
 
 pub mod atomic;
+mod axes;
 pub mod csv;
 pub mod decimate;
+mod legend;
 pub mod manifest;
 pub mod memory;
 pub mod names;

@@ -122,22 +122,22 @@ impl TimeScales {
         };
         if fast.period < RESOLUTION_STEPS * floor {
             format!(
-                "{} is too short to follow: f64 resolves steps of {} s at t_end = {} s, a \
-                 {} of it; change {} (or shorten the run: the resolution is 16 eps t)",
+                "{} is too short to follow: f64 resolves steps of {} s at t_end = {} s, {} it; \
+                 change {} (or shorten the run: the resolution is 16 eps t)",
                 fast.describe(),
                 significant(floor),
                 significant(self.span.1),
-                fraction(floor / fast.period),
+                share(floor / fast.period),
                 fast.fields
             )
         } else if h < TOLERANCE_BOUND * fast.period {
             format!(
-                "the tolerance: the step failed at {} s, a {} of the fastest time scale ({}), \
+                "the tolerance: the step failed at {} s, {} the fastest time scale ({}), \
                  so the error test asks for more digits than f64 holds; integrator.atol = {} \
                  is likely far below the state's scale (components that start at zero need \
                  an absolute tolerance of at least 1e-15 of their scale)",
                 significant(h),
-                fraction(h / fast.period),
+                share(h / fast.period),
                 fast.describe(),
                 significant(self.atol)
             )
@@ -151,12 +151,13 @@ impl TimeScales {
     }
 }
 
-/// `r` as "1e-4th"-style words: `1/10000`.
-fn fraction(r: f64) -> String {
+/// The ratio `r` of a step to a time scale in words: `1/10000 of`,
+/// `17 times`.
+fn share(r: f64) -> String {
     if r > 0.0 && r < 1.0 {
-        format!("1/{}", significant((1.0 / r).round()))
+        format!("1/{} of", significant((1.0 / r).round()))
     } else {
-        significant(r)
+        format!("{} times", significant(r))
     }
 }
 

@@ -187,7 +187,11 @@ impl Scene for Ready {
         let m0 = self.scene.drop.aligning_moment;
         // The moment presses the rim into the mouth with about M / r.
         let push = m0 / self.params.peg_radius();
-        let mut scales = timescales::peg(&self.params, timescales::load(&self.params, push));
+        let mut scales = timescales::peg(
+            &self.params,
+            timescales::load(&self.params, push),
+            "the peg's weight plus drop.aligning_moment / r",
+        );
         scales.extend(timescales::aligning(&self.params, m0));
         let spin = self.scene.drop.spin_rate;
         if spin != 0.0 {

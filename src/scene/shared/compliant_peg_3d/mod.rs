@@ -2,7 +2,8 @@
 //! `insert_rcc`, `rotation_assist`, `design_margins`; `docs/insertion.md`):
 //! the `[peg]`, `[wrist]`, `[robot]` and `[criteria]` tables ([`tables`])
 //! and their declared ranges ([`ranges`]), one held-peg insertion run
-//! ([`insertion`]), its time series, events and views ([`output`]), its
+//! ([`insertion`]), its time series and events ([`output`]) and views
+//! ([`views`]), its
 //! no-jam margins ([`margins`]) and the check of its start pose
 //! ([`start`]), its time scales ([`timescales`]).
 
@@ -13,3 +14,4 @@ pub mod ranges;
 pub mod start;
 pub mod tables;
 pub mod timescales;
+pub mod views;

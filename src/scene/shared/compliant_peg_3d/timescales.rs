@@ -11,15 +11,16 @@ use crate::hertz::contact_modulus;
 use crate::scene::numbers::significant as sig;
 use crate::scene::timescales::TimeScale;
 
-/// The peg's own scales under a reference contact load `load` (N): the
-/// contact's natural period and the friction's time constant.
-pub fn peg(p: &Peg3dParams, load: f64) -> Vec<TimeScale> {
+/// The peg's own scales under a reference contact load `load` (N; what
+/// sets it in words, `load_from`): the contact's natural period and the
+/// friction's time constant.
+pub fn peg(p: &Peg3dParams, load: f64, load_from: &str) -> Vec<TimeScale> {
     let m = p.mass;
     let (k, fields) = match p.hertz {
         HertzMode::Fixed(k) => (
             k,
             format!(
-                "peg.contact_stiffness = {} N/m^1.5 on a peg of {} kg",
+                "peg.contact_stiffness = {} N/m^1.5 on a peg of {} kg, at {load_from}",
                 sig(k),
                 sig(m)
             ),
@@ -31,7 +32,7 @@ pub fn peg(p: &Peg3dParams, load: f64) -> Vec<TimeScale> {
                 4.0 / 3.0 * e * r.sqrt(),
                 format!(
                     "k = 4/3 E* sqrt(R) of the fillet R = {} m (peg.rim_fillet, \
-                     peg.mouth_fillet) and E* = {} Pa, on a peg of {} kg",
+                     peg.mouth_fillet) and E* = {} Pa, on a peg of {} kg, at {load_from}",
                     sig(r),
                     sig(e),
                     sig(m)
@@ -52,9 +53,10 @@ pub fn peg(p: &Peg3dParams, load: f64) -> Vec<TimeScale> {
         out.push(TimeScale::new(
             "the regularized friction's time constant m v_s / (mu F)",
             format!(
-                "peg.slip_velocity = {} m/s, peg.friction = {}",
+                "peg.slip_velocity = {} m/s, peg.friction = {}, on a peg of {} kg at {load_from}",
                 sig(p.slip_scale),
-                sig(p.friction)
+                sig(p.friction),
+                sig(m)
             ),
             m * p.slip_scale / (p.friction * load),
         ));
@@ -70,11 +72,11 @@ pub fn load(p: &Peg3dParams, push: f64) -> f64 {
 /// The scales of a held peg: the peg's at its weight plus the axial force,
 /// the wrist's periods and damping times, the robot's rates.
 pub fn held(p: &Peg3dParams, h: &Held) -> Vec<TimeScale> {
-    let push = match h.robot.descent {
-        Descent::Force { force } => force,
-        Descent::Speed { .. } => 0.0,
+    let (push, from) = match h.robot.descent {
+        Descent::Force { force } => (force, "the peg's weight plus robot.axial_force"),
+        Descent::Speed { .. } => (0.0, "the peg's weight"),
     };
-    let mut out = peg(p, load(p, push));
+    let mut out = peg(p, load(p, push), from);
     let (m, it, ia) = (p.mass, p.inertia_transverse, p.inertia_axial);
     let w = &h.wrist;
     for (what, field, inertia, k) in [

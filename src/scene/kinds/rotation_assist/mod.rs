@@ -23,12 +23,14 @@
 //! time of seated runs, else empty) and `<name>.svg`: per rotation pair,
 //! the outcome and the peak contact force over the error grid.
 
+mod figure;
+pub mod grid;
+
 use serde::Deserialize;
 
 use crate::error::{RunError, SceneErrors};
 use crate::output::csv::format_f64;
 use crate::output::names::Part;
-use crate::output::plot::{Figure, Panel, Series, Style};
 use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::DefaultMethod;
@@ -36,13 +38,13 @@ use crate::scene::integrator::IntegratorSpec;
 use crate::scene::kind::{Kind, Scene};
 use crate::scene::limits::WorkItem;
 use crate::scene::progress::{Progress, par_map_counted};
-use crate::scene::ranges::FieldRange;
 use crate::scene::shared::compliant_peg_3d::insertion::{
     Built, RccScene, at_grid_point, outcome_text, run_one,
 };
 use crate::scene::shared::compliant_peg_3d::{ranges, tables};
 use crate::scene::summary::{Metric, RunSummary};
 use crate::scene::validate::Checker;
+use grid::{ANGULAR_ERRORS, LATERAL_ERRORS, PRECESSION_RATES, SPIN_RATES, YIELD_PRESSURE};
 
 /// Registry entry.
 pub const KIND: Kind = Kind {
@@ -54,49 +56,9 @@ pub const KIND: Kind = Kind {
         ranges::WRIST,
         ranges::ROBOT,
         ranges::CRITERIA,
-        GRID,
+        grid::GRID,
     ],
 };
-
-/// `grid.lateral_errors` (each entry; the robot's range, within two bore
-/// diameters: the check uses the scene's `D`).
-pub const LATERAL_ERRORS: FieldRange = FieldRange {
-    field: "grid.lateral_errors",
-    ..ranges::LATERAL_ERROR
-};
-/// `grid.angular_errors_deg` (each entry; the robot's range).
-pub const ANGULAR_ERRORS: FieldRange = FieldRange {
-    field: "grid.angular_errors_deg",
-    ..ranges::ANGULAR_ERROR
-};
-/// `grid.precession_rates` (each entry; the robot's range).
-pub const PRECESSION_RATES: FieldRange = FieldRange {
-    field: "grid.precession_rates",
-    ..ranges::PRECESSION_RATE
-};
-/// `grid.spin_rates` (each entry; the robot's range).
-pub const SPIN_RATES: FieldRange = FieldRange {
-    field: "grid.spin_rates",
-    ..ranges::SPIN_RATE
-};
-
-/// The `[grid]` table.
-pub const GRID: &[FieldRange] = &[
-    LATERAL_ERRORS,
-    ANGULAR_ERRORS,
-    PRECESSION_RATES,
-    SPIN_RATES,
-    YIELD_PRESSURE,
-];
-
-/// `grid.yield_pressure`.
-pub const YIELD_PRESSURE: FieldRange = FieldRange::new(
-    "grid.yield_pressure",
-    1e3,
-    1e12,
-    "Pa",
-    "a yield pressure from soft polymers (kPa) to far above the hardest steels (a few GPa)",
-);
 
 /// The `[grid]` table.
 #[derive(Debug, Clone, Deserialize)]
@@ -354,7 +316,7 @@ impl Scene for Ready {
             ])?;
         }
         csv.finish()?;
-        ctx.figure(Part::Main, &heat_maps(&rows))?;
+        ctx.figure(Part::Main, &figure::heat_maps(&rows))?;
         let mut out = RunSummary::default();
         let seated = rows.iter().filter(|r| r.seated).count();
         out.metrics.push(Metric::new("runs", rows.len() as f64, ""));
@@ -403,74 +365,4 @@ fn rate_pairs(rows: &[Row]) -> Vec<(f64, f64)> {
         }
     }
     pairs
-}
-
-/// Per rotation pair: the outcome over the error grid (one marker series
-/// per outcome) and the peak contact force (one marker series per force
-/// quartile of the whole sweep).
-fn heat_maps(rows: &[Row]) -> Figure {
-    let mut fig = Figure::new();
-    let mut forces: Vec<f64> = rows.iter().map(|r| r.peak_contact).collect();
-    forces.sort_by(f64::total_cmp);
-    let q = |f: f64| forces[((forces.len() - 1) as f64 * f).round() as usize];
-    let bands = [q(0.25), q(0.5), q(0.75)];
-    for (pr, sr) in rate_pairs(rows) {
-        let sel: Vec<&Row> = rows
-            .iter()
-            .filter(|r| r.point.precession == pr && r.point.spin == sr)
-            .collect();
-        let title = format!("ψ̇ = {pr} rad/s, φ̇ = {sr} rad/s");
-        let mut a = Panel::new(
-            &format!("Outcome, {title}"),
-            "lateral error [mm]",
-            "angular error [deg]",
-        );
-        for (code, name) in crate::compliant_peg_3d::outcome::CODE_LEGEND {
-            let pts: Vec<(f64, f64)> = sel
-                .iter()
-                .filter(|r| r.code == code)
-                .map(|r| (r.point.lateral * 1e3, r.point.angular_deg))
-                .collect();
-            if !pts.is_empty() {
-                a = a.with(
-                    Series::line(name, pts)
-                        .styled(Style::Markers)
-                        .colored(code as usize),
-                );
-            }
-        }
-        fig.panels.push(a);
-        let mut b = Panel::new(
-            &format!("Peak contact force, {title}"),
-            "lateral error [mm]",
-            "angular error [deg]",
-        );
-        for band in 0..4 {
-            let lo = if band == 0 {
-                f64::NEG_INFINITY
-            } else {
-                bands[band - 1]
-            };
-            let hi = if band == 3 {
-                f64::INFINITY
-            } else {
-                bands[band]
-            };
-            let pts: Vec<(f64, f64)> = sel
-                .iter()
-                .filter(|r| r.peak_contact > lo && r.peak_contact <= hi)
-                .map(|r| (r.point.lateral * 1e3, r.point.angular_deg))
-                .collect();
-            if !pts.is_empty() {
-                let name = match band {
-                    0 => format!("≤ {:.3} N", bands[0]),
-                    3 => format!("> {:.3} N", bands[2]),
-                    k => format!("{:.3}–{:.3} N", bands[k - 1], bands[k]),
-                };
-                b = b.with(Series::line(name, pts).styled(Style::Markers).colored(band));
-            }
-        }
-        fig.panels.push(b);
-    }
-    fig
 }
