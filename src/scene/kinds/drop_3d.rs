@@ -263,7 +263,7 @@ impl Scene for Ready {
                 samples.rows.iter().map(|(t, _, s)| (*t, s.tilt)).collect(),
             )));
         ctx.figure(Part::Main, &fig)?;
-        output::write_views(
+        crate::scene::shared::compliant_peg_3d::views::write_views(
             ctx,
             &sys,
             (sol.t.first().copied().unwrap_or(0.0), &self.start),

@@ -190,7 +190,7 @@ impl Scene for Ready {
             fig.panels.push(margin_panel);
         }
         ctx.figure(Part::Main, &fig)?;
-        output::write_views(
+        crate::scene::shared::compliant_peg_3d::views::write_views(
             ctx,
             sys,
             (

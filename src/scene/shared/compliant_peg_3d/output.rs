@@ -332,8 +332,6 @@ pub fn forces_panel(s: &Samples) -> Panel {
     p
 }
 
-pub use super::views::{views, write_views};
-
 /// The run's common metrics.
 pub fn metrics(peaks: &Peaks) -> Vec<Metric> {
     vec![
