@@ -7,4 +7,6 @@ mod common;
 mod design_margins;
 mod outcomes;
 mod quasi_static;
+mod start_poses;
+mod summaries;
 mod wrist;

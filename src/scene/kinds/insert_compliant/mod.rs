@@ -68,7 +68,7 @@ pub const KIND: Kind = Kind {
     name: "insert_compliant",
     about: "compliant planar peg: insertion with Hertz contacts and friction",
     parse,
-    ranges: &[],
+    ranges: &[ranges::INSERT_COMPLIANT],
 };
 
 fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
@@ -269,6 +269,9 @@ impl InsertCompliantScene {
         let cr = c.finite(&f("clearance_ratio"), p.clearance_ratio);
         let len = c.positive(&f("peg_length"), p.peg_length);
         c.positive(&f("density"), p.density);
+        ranges::HOLE_DIAMETER.check(&mut c, d);
+        ranges::PEG_LENGTH.check(&mut c, len);
+        ranges::DENSITY.check(&mut c, p.density);
         c.finite(&f("axial_force"), p.axial_force);
         c.finite(&f("radial_force"), p.radial_force);
         c.finite(&f("torque"), p.torque);
@@ -339,13 +342,33 @@ impl InsertCompliantScene {
         } else {
             PegState::centred(&params, p.initial_depth)
         };
-        if p.target_depth <= initial.depth(&params) {
+        let depth = initial.depth(&params);
+        if p.initial_tilt > 0.0 && depth >= len {
+            // The two-point depth grows like c D / theta: a tilt this small
+            // starts the peg deeper than it is long.
+            return Err(SceneErrors::from(SceneError::invalid(
+                f("initial_tilt"),
+                p.initial_tilt,
+                format!(
+                    "the two-point start at this tilt lies {} m deep (about c D / tilt), beyond \
+                     insert_compliant.peg_length = {} m; a larger tilt starts higher",
+                    crate::scene::numbers::significant(depth),
+                    crate::scene::numbers::significant(len)
+                ),
+            )));
+        }
+        if p.target_depth <= depth {
+            let from = if p.initial_tilt > 0.0 {
+                "the two-point start of insert_compliant.initial_tilt"
+            } else {
+                "insert_compliant.initial_depth"
+            };
             return Err(SceneErrors::from(SceneError::invalid(
                 f("target_depth"),
                 p.target_depth,
                 format!(
-                    "must exceed the initial depth {:e} m",
-                    initial.depth(&params)
+                    "must exceed the initial depth {} m ({from})",
+                    crate::scene::numbers::significant(depth)
                 ),
             )));
         }

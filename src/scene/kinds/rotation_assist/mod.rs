@@ -132,9 +132,17 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
     let s: SweepScene = doc.body()?;
     let mut c = Checker::default();
     let g = &s.grid;
+    // The shared tables first, so that a bad peg is named as such and not
+    // through the ranges it narrows.
+    let _ = s.peg.build(&mut c);
     // Each entry against the robot's range of the field it replaces, named
-    // as the grid entry (the bore's D narrows the lateral range).
-    let d = s.peg.hole_diameter.abs();
+    // as the grid entry (the bore's D narrows the lateral range, once it is
+    // valid itself).
+    let d = if ranges::HOLE_DIAMETER.contains(s.peg.hole_diameter) {
+        s.peg.hole_diameter
+    } else {
+        f64::NAN
+    };
     for (range, list) in [
         (LATERAL_ERRORS.within(-2.0 * d, 2.0 * d), &g.lateral_errors),
         (ANGULAR_ERRORS, &g.angular_errors_deg),
@@ -156,6 +164,15 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
         c.distinct(range.field, list);
     }
     YIELD_PRESSURE.require(&mut c, g.yield_pressure);
+    // The robot's own errors and rates, which the grid replaces, are values
+    // of the scene all the same: finite and in their ranges.
+    let r = &s.robot;
+    ranges::LATERAL_ERROR
+        .within(-2.0 * d, 2.0 * d)
+        .require(&mut c, r.lateral_error);
+    ranges::ANGULAR_ERROR.require(&mut c, r.angular_error_deg);
+    ranges::PRECESSION_RATE.require(&mut c, r.precession_rate);
+    ranges::SPIN_RATE.require(&mut c, r.spin_rate);
     c.finish()?;
     let mut points = Vec::new();
     let mut c = Checker::default();

@@ -73,10 +73,31 @@ impl RccScene {
             start_depth: (self.robot.start_height < 0.0).then_some(-self.robot.start_height),
         };
         let sys = Insertion::new(built.params, Some(built.held), 0.0);
-        match start::overlap(&sys, &built.start_state(&sys)) {
-            Some(o) => Err(SceneErrors::from(self.start_refusal(&built, &o))),
-            None => Ok(built),
+        let y0 = built.start_state(&sys);
+        if let Some(o) = start::overlap(&sys, &y0) {
+            return Err(SceneErrors::from(self.start_refusal(&built, &o)));
         }
+        // A limit the start already passes is never crossed (the limit's
+        // event fires on a rise through it) and the summary would report a
+        // stop at a later, smaller force.
+        let at_start = sys
+            .sample(0.0, &y0)
+            .ok()
+            .and_then(|s| s.wrist)
+            .map_or(0.0, |w| w.force.norm());
+        if at_start >= built.criteria.wrist_force_limit {
+            return Err(SceneErrors::from(SceneError::invalid(
+                "criteria.wrist_force_limit",
+                self.criteria.wrist_force_limit,
+                format!(
+                    "the wrist already carries {} N at the start ({}), so the limit would be \
+                     passed before the run begins and never detected; it must exceed that force",
+                    significant(at_start),
+                    built.start_load()
+                ),
+            )));
+        }
+        Ok(built)
     }
 
     /// Why the start pose is refused, on the field that places the peg
@@ -148,6 +169,19 @@ impl Built {
         .unwrap_or_default()
     }
 
+    /// What loads the wrist at the start, in words (for a refusal of a
+    /// force limit the start already passes).
+    fn start_load(&self) -> &'static str {
+        if self.start_depth.is_some() {
+            "the peg starts centred and upright in the bore, so the wrist is deflected by \
+             robot.lateral_error and robot.angular_error_deg and carries the peg's weight"
+        } else if matches!(self.held.robot.descent, Descent::Force { .. }) {
+            "the robot's axial push and the peg's weight"
+        } else {
+            "the peg's weight m g, held by the wrist's static sag"
+        }
+    }
+
     /// The wrist's static axial sag `m g / K_z` at a speed-controlled start
     /// held above the bore (m; 0 under an axial force or in the bore).
     pub fn sag(&self) -> f64 {
@@ -163,8 +197,9 @@ impl Built {
 /// The errors of grid point `point` (its entries, e.g.
 /// `("grid.lateral_errors[1]", 2e-4)`) with the robot fields the grid
 /// replaces renamed as the grid's entries (`renames`: robot field, grid
-/// entry, the grid value), and a start-pose refusal named on the last
-/// entry with the point in its reason; identical errors (one per point of
+/// entry, the grid value), and a start-pose refusal (on
+/// `robot.start_height`) named on the last entry with the point in its
+/// reason; identical errors (one per point of
 /// a field every point shares) are kept once by [`Checker::push_once`].
 pub fn at_grid_point(
     errors: SceneErrors,
@@ -187,6 +222,7 @@ pub fn at_grid_point(
                 if let Some((_, grid, v)) = renames.iter().find(|(robot, ..)| *robot == field) {
                     SceneError::invalid(*grid, v, format!("at the grid point ({at}): {reason}"))
                 } else if field == "robot.start_height"
+                    && reason.starts_with(start::OVERLAP)
                     && let Some((last, v)) = point.last()
                 {
                     SceneError::invalid(

@@ -21,6 +21,9 @@ use crate::scene::numbers::significant;
 /// start is bisected, far below any overlap that carries a load.
 pub const TOUCH_FRACTION: f64 = 1e-6;
 
+/// How a start-pose refusal begins ([`Overlap::describe`]).
+pub const OVERLAP: &str = "the start pose overlaps the block";
+
 /// The deepest overlap of a start pose.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Overlap {
@@ -91,8 +94,8 @@ impl Overlap {
             "a contact whose Hertz law cannot be set up".to_owned()
         };
         format!(
-            "the start pose overlaps the block: the {} contact penetrates {} m ({force}), so \
-             the peg would start inside the block",
+            "{OVERLAP}: the {} contact penetrates {} m ({force}), so the peg would start \
+             inside the block",
             self.pair.name(),
             significant(self.penetration)
         )
