@@ -10,7 +10,7 @@ use crate::scene::document::Document;
 use crate::scene::kind::Scene;
 use crate::scene::kinds::KINDS;
 use crate::scene::limits::LimitOverrides;
-use crate::scene::summary::RunSummary;
+use crate::scene::summary::{RunSummary, StepFailure};
 
 /// A scene read from a file.
 #[derive(Debug)]
@@ -37,11 +37,14 @@ impl LoadedScene {
         ctx.progress.explain(scales.as_ref());
         let mut summary = self.scene.run(ctx)?;
         if let Some(i) = summary.integration.as_mut()
-            && let Some((t, h)) = i.step_failure
+            && let Some(failure) = i.step_failure
             && let Some(scales) = &scales
         {
             i.stop.push_str("; likely cause: ");
-            i.stop.push_str(&scales.step_failure_cause(t, h));
+            i.stop.push_str(&match failure {
+                StepFailure::TooSmall { t, h } => scales.step_failure_cause(t, h),
+                StepFailure::Budget { t, mean } => scales.budget_cause(t, mean),
+            });
         }
         summary.outputs = ctx.sink().written();
         Ok(summary)

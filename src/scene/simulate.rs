@@ -13,7 +13,7 @@ use crate::scene::integrator::DefaultMethod;
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::numbers::significant;
 use crate::scene::progress::Progress;
-use crate::scene::summary::{EventRecord, IntegrationSummary};
+use crate::scene::summary::{EventRecord, IntegrationSummary, StepFailure};
 use crate::system::OdeSystem;
 
 /// The integrator method and options described by `spec`.
@@ -207,7 +207,11 @@ pub fn integration_summary<const N: usize>(
         rhs_calls: sol.stats.rhs_calls,
         events: event_records(sol, event_names),
         step_failure: match sol.stop {
-            StopReason::StepSizeTooSmall { t, h } => Some((t, h)),
+            StopReason::StepSizeTooSmall { t, h } => Some(StepFailure::TooSmall { t, h }),
+            StopReason::MaxSteps { t, steps } if steps > 0 => Some(StepFailure::Budget {
+                t,
+                mean: (t - spec.t0) / steps as f64,
+            }),
             _ => None,
         },
     }

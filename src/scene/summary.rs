@@ -74,10 +74,30 @@ pub struct IntegrationSummary {
     /// Every event that fired, in time order; a terminal event is last.
     /// (`pegdyn run` prints only [`IntegrationSummary::stop`].)
     pub events: Vec<EventRecord>,
-    /// `(t, h)` when the run stopped because the step became too small
-    /// (time, s; the rejected step, s): [`crate::scene::LoadedScene::run`]
-    /// adds the likely cause to [`IntegrationSummary::stop`].
-    pub step_failure: Option<(f64, f64)>,
+    /// Why the run stopped short, when its steps were the reason:
+    /// [`crate::scene::LoadedScene::run`] adds the likely cause to
+    /// [`IntegrationSummary::stop`].
+    pub step_failure: Option<StepFailure>,
+}
+
+/// A run stopped by its steps: one too small to take, or too many of them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum StepFailure {
+    /// The step became too small at time `t` (s): the rejected step `h` (s).
+    TooSmall {
+        /// Time of the last accepted step, s.
+        t: f64,
+        /// The rejected step, s.
+        h: f64,
+    },
+    /// The step budget ran out at time `t` (s) after steps of `mean` (s) on
+    /// average (the time covered over the steps attempted).
+    Budget {
+        /// Time of the last accepted step, s.
+        t: f64,
+        /// The mean step, s.
+        mean: f64,
+    },
 }
 
 /// One event that fired during an integration.

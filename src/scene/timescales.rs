@@ -76,6 +76,13 @@ pub struct TimeScales {
 /// digits than the state has.
 const TOLERANCE_BOUND: f64 = 1e-6;
 
+/// Steps that ran out their budget this far below the fastest time scale
+/// on average were set by the error test: an explicit method needs some
+/// tens of steps per period, not thousands (a wrist insertion at
+/// `atol = 1e-40` averaged 1/1140 of its fastest scale, at `1e-10` about as
+/// long as it).
+const BUDGET_TOLERANCE_BOUND: f64 = 1e-3;
+
 /// A time scale within this many smallest steps of f64's resolution at
 /// the run's times cannot be followed: an explicit method needs some tens
 /// of steps per period.
@@ -149,6 +156,46 @@ impl TimeScales {
             )
         }
     }
+
+    /// The likely cause of a step budget that ran out at time `t` after
+    /// steps of `mean` (s) on average: the tolerance when the mean step is
+    /// far below every scale ([`BUDGET_TOLERANCE_BOUND`]), else
+    /// the fastest scale, which sets the steps the run needs, about
+    /// `(t_end - t0) / mean` of them.
+    pub fn budget_cause(&self, t: f64, mean: f64) -> String {
+        let needed = (self.span.1 - self.span.0) / mean;
+        let Some(fast) = self.fastest() else {
+            return format!(
+                "steps of {} s on average, about {} for the whole run; integrator.atol = {} far \
+                 below the state's scale, or an extreme scene value",
+                significant(mean),
+                significant(needed.round()),
+                significant(self.atol)
+            );
+        };
+        if mean < BUDGET_TOLERANCE_BOUND * fast.period {
+            format!(
+                "the tolerance: the steps to t = {} s were {} s on average, {} the fastest time \
+                 scale ({}), so the error test asks for more digits than f64 holds; \
+                 integrator.atol = {} is likely far below the state's scale (components that \
+                 start at zero need an absolute tolerance of at least 1e-15 of their scale)",
+                significant(t),
+                significant(mean),
+                share(mean / fast.period),
+                fast.describe(),
+                significant(self.atol)
+            )
+        } else {
+            format!(
+                "{}, which sets the steps: at {} s on average the run needs about {} of them; \
+                 raise integrator.max_steps, or change {}",
+                fast.describe(),
+                significant(mean),
+                significant(needed.round()),
+                fast.fields
+            )
+        }
+    }
 }
 
 /// The ratio `r` of a step to a time scale in words: `1/10000 of`,
@@ -214,5 +261,25 @@ mod tests {
         // F = k δ^1.5 at δ = 1e-6, k = 1e10: F = 10 N, dF/dδ = 1.5 k δ^0.5 = 1.5e7.
         let k = TimeScale::hertz_stiffness(1e10, 10.0);
         assert!((k / 1.5e7 - 1.0).abs() < 1e-12, "{k}");
+    }
+
+    #[test]
+    fn a_step_budget_names_the_tolerance_or_the_scale_that_set_the_steps() {
+        let mut t = scales(3e-5);
+        t.atol = 1e-300;
+        // 1e6 steps to 4.5e-7 s: 4.5e-13 s each, 1/6.7e7 of the scale.
+        let s = t.budget_cause(4.5e-7, 4.5e-13);
+        assert!(
+            s.starts_with("the tolerance") && s.contains("integrator.atol = 1e-300"),
+            "{s}"
+        );
+        // Steps of a tenth of the scale over 0.05 s: 16667 of them.
+        let s = t.budget_cause(0.01, 3e-6);
+        assert!(
+            s.starts_with("the contact's natural period = 3e-5 s")
+                && s.contains("about 16667 of them")
+                && s.contains("raise integrator.max_steps, or change peg.k = 1e15"),
+            "{s}"
+        );
     }
 }

@@ -163,3 +163,46 @@ fn starts_that_only_touch_run() {
         parse_named(&tiny, "tiny").err().map(|e| e.to_string())
     );
 }
+
+#[test]
+fn an_insert_compliant_tilt_out_of_its_start_range_is_named_with_the_bound() {
+    let base = shipped("insert_compliant");
+    // Too small: the two-point start lies deeper than the peg is long.
+    for tilt in ["1e-4", "1e-3"] {
+        let e = parse_named(&with(&base, "initial_tilt", tilt), "c").expect_err(tilt);
+        let shown = e.to_string();
+        assert_eq!(
+            e.errors[0].error.field(),
+            Some("insert_compliant.initial_tilt"),
+            "{shown}"
+        );
+        assert!(
+            shown.contains("beyond insert_compliant.peg_length = 0.1 m"),
+            "{shown}"
+        );
+    }
+    // Too large: past the wall contact's split tilt, with its value.
+    for tilt in ["0.2", "0.5", "1.5"] {
+        let e = parse_named(&with(&base, "initial_tilt", tilt), "c").expect_err(tilt);
+        let shown = e.to_string();
+        assert_eq!(
+            e.errors[0].error.field(),
+            Some("insert_compliant.initial_tilt"),
+            "{shown}"
+        );
+        let bound: f64 = shown
+            .split("below ")
+            .nth(1)
+            .and_then(|r| r.split(' ').next())
+            .and_then(|v| v.parse().ok())
+            .unwrap_or_else(|| panic!("no bound in {shown}"));
+        // About 0.8 sqrt(2 c) at c = 0.002.
+        assert!(
+            (bound / (0.8 * 0.004_f64.sqrt()) - 1.0).abs() < 0.1,
+            "{shown}"
+        );
+        let inside = with(&base, "initial_tilt", &format!("{}", 0.9 * bound));
+        assert!(parse_named(&inside, "c").is_ok(), "{shown}");
+    }
+    assert!(parse_named(&with(&base, "initial_tilt", "0.05"), "c").is_ok());
+}

@@ -254,6 +254,10 @@ fn sweep_fields_out_of_their_physical_ranges_are_refused_by_name() {
         ("m_over_rfz_max", "1e-300", "sweep.m_over_rfz_max"),
         ("contact_damping", "nan", "sweep.contact_damping"),
         ("n", "2", "sweep.n"),
+        // Not in the shipped table: written after `window_s`.
+        ("window_s", "0.05\natol = 1e-300", "sweep.atol"),
+        ("window_s", "0.05\natol = 1e-2", "sweep.atol"),
+        ("window_s", "0.05\nrtol = 1e-300", "sweep.rtol"),
     ] {
         let e = refusal(&set(key, value), "jamming").unwrap_or_else(|| panic!("{key} accepted"));
         assert!(

@@ -8,3 +8,4 @@ mod cli;
 mod errors;
 mod fuzz;
 mod hostile_scenes;
+mod step_causes;

@@ -369,7 +369,7 @@ impl Scene for AlignForwardScene {
             step_failure: match tr.stop {
                 crate::rigid_peg::stop::ForwardStop::Integrator(
                     crate::integrate::StopReason::StepSizeTooSmall { t, h },
-                ) => Some((t, h)),
+                ) => Some(crate::scene::summary::StepFailure::TooSmall { t, h }),
                 _ => None,
             },
         };

@@ -38,10 +38,12 @@
 
 use serde::Deserialize;
 
+mod model_errors;
 pub mod output;
 pub mod ranges;
 mod start;
 
+use model_errors::{tilt_error, to_scene_error};
 use output::write_outputs;
 
 use crate::compliant_peg::{
@@ -49,7 +51,7 @@ use crate::compliant_peg::{
     PegHoleGeometry, PegState, Sample,
 };
 use crate::error::{RunError, SceneError, SceneErrors};
-use crate::hertz::{HertzError, Material};
+use crate::hertz::Material;
 use crate::integrate::{Direction, Event};
 use crate::scene::context::RunContext;
 use crate::scene::document::Document;
@@ -209,55 +211,6 @@ struct Ready {
     method_reason: &'static str,
 }
 
-/// The scene field a model-level field corresponds to.
-fn scene_field(field: &str) -> String {
-    let t = "insert_compliant";
-    let mapped = match field {
-        "peg_radius" => "clearance_ratio".to_owned(),
-        "mass" | "inertia" => "density".to_owned(),
-        "tilt" => "initial_tilt".to_owned(),
-        "damping" => "contact_damping".to_owned(),
-        f => f
-            .replace("peg.", "peg_material.")
-            .replace("hole.", "hole_material."),
-    };
-    format!("{t}.{mapped}")
-}
-
-fn to_scene_error(e: HertzError, p: &InsertParams) -> SceneErrors {
-    match e {
-        // The model's peg radius and mass are derived from the scene's
-        // clearance ratio and density: say so rather than print the derived
-        // value as if it were the scene's.
-        HertzError::Invalid {
-            field,
-            value,
-            reason,
-        } if matches!(field.as_str(), "peg_radius" | "mass" | "inertia") => {
-            let own = if field == "peg_radius" {
-                p.clearance_ratio
-            } else {
-                p.density
-            };
-            SceneErrors::from(SceneError::invalid(
-                scene_field(&field),
-                own,
-                format!("gives {field} = {value:e}, which {reason}"),
-            ))
-        }
-        HertzError::Invalid {
-            field,
-            value,
-            reason,
-        } => SceneErrors::from(SceneError::invalid(scene_field(&field), value, reason)),
-        other => SceneErrors::from(SceneError::invalid(
-            "insert_compliant",
-            f64::NAN,
-            other.to_string(),
-        )),
-    }
-}
-
 impl InsertCompliantScene {
     /// Validates every field and builds the model parameters, loads and
     /// initial state.
@@ -338,7 +291,8 @@ impl InsertCompliantScene {
         };
         let params = CompliantParams::try_new(spec).map_err(|e| to_scene_error(e, p))?;
         let initial = if p.initial_tilt > 0.0 {
-            PegState::two_point(&params, p.initial_tilt, 0.0).map_err(|e| to_scene_error(e, p))?
+            PegState::two_point(&params, p.initial_tilt, 0.0)
+                .map_err(|e| tilt_error(e, &params, p))?
         } else {
             PegState::centred(&params, p.initial_depth)
         };

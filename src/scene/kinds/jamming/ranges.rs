@@ -89,6 +89,14 @@ pub const N: FieldRange = FieldRange::new(
     "",
     "grid points per axis: at least 3 so that the grid has an inside and an outside; the runs n^2 are bounded by [limits] max_runs",
 );
+/// `sweep.atol` (default `1e-8`; m, rad, m/s, rad/s).
+pub const ATOL: FieldRange = FieldRange::new(
+    "sweep.atol",
+    1e-20,
+    1e-6,
+    "",
+    "the absolute tolerance of the runs' lengths (m), angles (rad) and their rates: above 1e-6 the error allowed in a coordinate reaches the 2 um the stuck test measures per window (at 1e-2 every judged point of the shipped sweep contradicts the diagram); far below 1e-20 the error test of a component at zero asks for digits f64 does not hold (at 1e-50 every run exhausts its step budget)",
+);
 
 /// The `[sweep]` table.
 pub const SWEEP: &[FieldRange] = &[
@@ -111,4 +119,5 @@ pub const SWEEP: &[FieldRange] = &[
     ADVANCE,
     WINDOW,
     N,
+    ATOL,
 ];

@@ -186,6 +186,7 @@ impl SweepParams {
             .require(&mut c, self.window_s);
         r::N.check(&mut c, self.n as f64);
         crate::scene::integrator::check_tolerances(&mut c, "sweep", self.rtol, self.atol);
+        r::ATOL.check(&mut c, self.atol);
         let method = self.method();
         let integrator = c.check(
             method.with_step(None).ok_or_else(|| {
@@ -306,7 +307,18 @@ pub fn run(
     let plain: Vec<_> = points.iter().map(|p| p.point).collect();
     let exact = sweep::check(&setup.diagram, &plain, grid.resolution());
     let small = sweep::check(&whitney, &plain, grid.resolution());
-    Ok(super::comparison::comparison(points.len(), &exact, &small))
+    let tolerances = format!(
+        "sweep.method = {}, sweep.rtol = {}, sweep.atol = {}",
+        params.method().name(),
+        crate::scene::numbers::significant(params.rtol),
+        crate::scene::numbers::significant(params.atol)
+    );
+    Ok(super::comparison::comparison(
+        points.len(),
+        &exact,
+        &small,
+        &tolerances,
+    ))
 }
 
 fn figure(
@@ -327,6 +339,7 @@ fn figure(
         (RunClass::Jammed, 1),
         (RunClass::Wedged, 4),
         (RunClass::Other, 7),
+        (RunClass::Failed, 3),
     ];
     for (class, colour) in classes {
         let pts: Vec<(f64, f64)> = points
