@@ -206,3 +206,34 @@ fn an_insert_compliant_tilt_out_of_its_start_range_is_named_with_the_bound() {
     }
     assert!(parse_named(&with(&base, "initial_tilt", "0.05"), "c").is_ok());
 }
+
+#[test]
+fn a_lateral_offset_that_puts_the_rim_into_the_top_face_is_refused() {
+    for (offset, height) in [
+        ("0.0126", "0.0"),
+        ("0.0126", "1e-5"),
+        ("0.03", "0.0"),
+        ("0.03", "1e-5"),
+    ] {
+        let text = with(
+            &with(&shipped("insert_rcc"), "lateral_error", offset),
+            "start_height",
+            height,
+        );
+        let e = parse_named(&text, "rcc").expect_err("an overlapping start");
+        let shown = e.to_string();
+        assert_eq!(
+            e.errors[0].error.field(),
+            Some("robot.start_height"),
+            "{shown}"
+        );
+        assert!(
+            shown.contains("the start pose overlaps the block")
+                && shown.contains(&format!("robot.lateral_error = {offset} m")),
+            "{shown}"
+        );
+        let clears = at_least(&shown) + 1e-6;
+        let text = with(&text, "start_height", &format!("{clears:e}"));
+        assert!(parse_named(&text, "rcc").is_ok(), "{offset} at {clears}");
+    }
+}
