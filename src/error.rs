@@ -64,6 +64,9 @@ pub enum SceneError {
         /// Why it is rejected.
         reason: String,
     },
+    /// The scene's name (its file's stem) cannot name its output files.
+    #[error(transparent)]
+    Name(#[from] crate::output::names::NameError),
     /// The `kind` field names no registered scene kind.
     #[error(
         "`kind` = {}: unknown scene kind; known kinds: {known}",
@@ -94,7 +97,7 @@ impl SceneError {
     /// Dotted path of the field this error is about, if any.
     pub fn field(&self) -> Option<&str> {
         match self {
-            SceneError::Io { .. } | SceneError::Syntax { .. } => None,
+            SceneError::Io { .. } | SceneError::Syntax { .. } | SceneError::Name(_) => None,
             SceneError::Missing { field }
             | SceneError::Unknown { field, .. }
             | SceneError::WrongType { field, .. }
@@ -245,6 +248,16 @@ pub enum OutputError {
         /// The output file (the scene file).
         path: PathBuf,
     },
+    /// A file with the run manifest's name exists and is not a pegdyn run
+    /// manifest (a user's own file): it is never replaced.
+    #[error(
+        "refusing to run: {path} exists and is not a pegdyn run manifest, and a run of this scene \
+         would replace it with its own; move that file or choose another --out directory"
+    )]
+    ForeignManifest {
+        /// The file with the manifest's name.
+        path: PathBuf,
+    },
     /// A plot has no finite data point to scale its axes by.
     #[error("cannot draw {path}: panel {panel:?} has no finite data point")]
     EmptyPlot {
@@ -287,6 +300,17 @@ pub enum RunError {
         /// The law's refusal.
         source: crate::hertz::HertzError,
     },
+    /// The run's replay page could not be made (a run without samples, a
+    /// non-finite number in the record, a state the model refuses).
+    #[error("replay page: {0}")]
+    Replay(#[from] crate::replay::ReplayError),
+    /// A stop was requested (a signal, Ctrl-C) before the run finished.
+    #[error("interrupted before the run finished")]
+    Interrupted,
+    /// Memory for a result whose size the scene sets could not be
+    /// reserved (the limits were raised past what the machine has).
+    #[error(transparent)]
+    Memory(#[from] crate::scene::reserve::ReserveError),
 }
 
 impl From<crate::rigid_peg::trajectory::ForwardError> for RunError {

@@ -36,10 +36,10 @@ dynamic sweep (the ``[sweep]`` table of the scene; ``src/jamming/dynamic.rs``,
   run per grid point.
 
 Usage (after ``pegdyn run scenes/jamming.toml``, which writes
-``out/jamming_sweep.csv``)::
+``out/jamming.sweep.csv``)::
 
-    python3 benches/peers/mujoco_jamming.py --setting defaults --pegdyn out/jamming_sweep.csv
-    python3 benches/peers/mujoco_jamming.py --setting tuned --pegdyn out/jamming_sweep.csv \\
+    python3 benches/peers/mujoco_jamming.py --setting defaults --pegdyn out/jamming.sweep.csv
+    python3 benches/peers/mujoco_jamming.py --setting tuned --pegdyn out/jamming.sweep.csv \\
         --out out/mujoco_tuned.csv
     python3 benches/peers/mujoco_jamming.py --setting tuned --step 4e-5 ...   # convergence check
     python3 benches/peers/mujoco_jamming.py --setting defaults --option cone=elliptic \\
@@ -267,7 +267,7 @@ def main():
         description="pegdyn's planar jamming sweep in MuJoCo: classes and time per simulated second."
     )
     ap.add_argument("--scene", default=str(REPO / "scenes" / "jamming.toml"), help="scene with the [sweep] table")
-    ap.add_argument("--pegdyn", help="pegdyn's jamming_sweep.csv (from `pegdyn run scenes/jamming.toml`) to compare with")
+    ap.add_argument("--pegdyn", help="pegdyn's jamming.sweep.csv (from `pegdyn run scenes/jamming.toml`) to compare with")
     ap.add_argument("--setting", choices=sorted(SETTINGS), default="tuned", help="MuJoCo solver setting")
     ap.add_argument("--step", type=float, help="time step, s (default: the setting's)")
     ap.add_argument("--no-early-stop", action="store_true", help="classify stuck runs only at window ends")

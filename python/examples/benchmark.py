@@ -199,7 +199,7 @@ def no_output(runs=2000):
 def sweep(runs, dask=True):
     scene = cheap_scene()
     grid = {"pendulum.theta0_deg": np.linspace(1.0, 120.0, runs)}
-    t_local = best(lambda: pegdyn.sweep(scene, grid, threads=2), 2)
+    t_local = best(lambda: pegdyn.sweep(scene, grid, threads=2, limits={"max_runs": runs}), 2)
     print(f"sweep of {runs} runs: local (2 Rust threads) {t_local:.2f} s ({t_local / runs * 1e6:.0f} us per run)")
     if not dask:
         return
@@ -208,7 +208,9 @@ def sweep(runs, dask=True):
     with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
         with Client(cluster) as client:
             pegdyn.sweep(scene, {"pendulum.theta0_deg": [1.0, 2.0]}, client=client)  # warm up imports
-            t_dask = best(lambda: pegdyn.sweep(scene, grid, client=client, threads=1), 2)
+            t_dask = best(
+                lambda: pegdyn.sweep(scene, grid, client=client, threads=1, limits={"max_runs": runs}), 2
+            )
     print(f"sweep of {runs} runs: local (2 Rust threads) {t_local:.2f} s, "
           f"2-worker LocalCluster {t_dask:.2f} s, overhead {100 * (t_dask / t_local - 1):+.0f} %")
 

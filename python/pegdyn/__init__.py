@@ -19,12 +19,13 @@ with the messages of ``pegdyn check`` and the offending ``field``,
 
 from ._pegdyn import RunError, SceneError, __version__
 from ._scene import Event, Outcome, Result, Scene, from_dict, kinds, load, loads
-from ._functions import Function, function, functions, generated
+from ._functions import Function, NonFiniteWarning, function, functions, generated
 from ._sweep import SweepResult, sweep
 
 __all__ = [
     "Event",
     "Function",
+    "NonFiniteWarning",
     "Outcome",
     "Result",
     "RunError",

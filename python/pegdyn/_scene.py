@@ -3,12 +3,35 @@
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
-from typing import Any, Dict, List, Mapping, NamedTuple, Optional, Tuple, Union
+import html
+from dataclasses import dataclass, field
+from typing import Any, Dict, List, Mapping, NamedTuple, Optional, Sequence, Tuple, Union
 
 from . import _pegdyn as _core
 
 PathLike = Union[str, "os.PathLike[str]"]
+
+#: Work limits: ``{"max_runs": 10_000}`` or ``["max_runs=1e4"]``, the keys of
+#: a scene's ``[limits]`` table (the ``max_`` prefix may be left out), as
+#: ``pegdyn run --limit KEY=VALUE``.
+Limits = Union[Mapping[str, Union[int, float, str]], Sequence[str], None]
+
+
+def _limit_args(limits: Limits) -> Optional[Tuple[str, ...]]:
+    """``limits`` as ``KEY=VALUE`` strings (None for none); checked by the
+    core, which raises ValueError naming an unusable one."""
+    if limits is None:
+        return None
+    if isinstance(limits, str):
+        raise TypeError('limits: give a dict {"max_runs": 10000} or a list of "KEY=VALUE" strings')
+    if isinstance(limits, Mapping):
+        out = []
+        for k, v in limits.items():
+            if isinstance(v, float) and v.is_integer() and abs(v) < 2.0**64:
+                v = int(v)
+            out.append(f"{k}={v}")
+        return tuple(out)
+    return tuple(str(a) for a in limits)
 
 
 def kinds() -> List[Tuple[str, str]]:
@@ -20,20 +43,32 @@ class Scene:
     """A validated scene: TOML text plus the name its outputs are given.
 
     Build one with :func:`load`, :func:`loads` or :func:`from_dict`; the
-    constructor validates (raises :class:`SceneError`). A scene is
-    immutable and cheap to pickle (it is its text), so it travels to Dask
-    workers as is.
+    constructor validates (raises :class:`SceneError`), under the scene's
+    ``[limits]`` with ``limits`` applied (as ``pegdyn check --limit``): a
+    scene asking for more work than the limits allow is refused before
+    anything is built. A scene is immutable and cheap to pickle (it is its
+    text, name and limits), so it travels to Dask workers as is.
 
-    Attributes: ``text`` (TOML), ``name`` (stem of output files), ``kind``,
-    ``description`` (or None).
+    Attributes: ``text`` (TOML), ``name`` (stem of output files; it cannot
+    contain ``.``), ``kind``, ``description`` (or None), ``limits`` (the
+    ``KEY=VALUE`` overrides, or None).
     """
 
-    __slots__ = ("text", "name", "kind", "description", "_describe")
+    __slots__ = ("text", "name", "kind", "description", "limits", "_describe")
 
-    def __init__(self, text: str, name: str = "scene", *, _prefix: Optional[str] = None):
-        kind, description, describe = _core.check(text, name, _prefix)
+    def __init__(
+        self,
+        text: str,
+        name: str = "scene",
+        *,
+        limits: Limits = None,
+        _prefix: Optional[str] = None,
+    ):
+        args = _limit_args(limits)
+        kind, description, describe = _core.check(text, name, _prefix, _list(args))
         self.text = text
         self.name = name
+        self.limits = args
         self.kind = kind
         self.description = description
         self._describe = describe
@@ -47,14 +82,15 @@ class Scene:
         (validated: raises :class:`SceneError`)."""
         keys = list(values)
         text = _core.set_fields(self.text, keys, [values[k] for k in keys])
-        return Scene(text, self.name)
+        return Scene(text, self.name, limits=self.limits)
 
     def run(self, out: Optional[PathLike] = None) -> "Result":
         """Runs the scene and returns a :class:`Result`.
 
         ``out``: a directory to write ``<name>.csv``, ``<name>.svg`` (and
-        the scene's other files) into, as ``pegdyn run --out`` does; the
-        paths are in ``Result.paths``. Without it nothing is written: the
+        the scene's other files, ``<name>.<part>.<ext>``) into, with the
+        run manifest ``<name>.run.toml``, as ``pegdyn run --out`` does; the
+        paths are in ``Result.paths`` (the manifest is not among them). Without it nothing is written: the
         tables are kept in memory (the same numbers the files would hold,
         bit for bit) and figures are not drawn (only checked, so a run
         fails the same way as with files).
@@ -65,44 +101,60 @@ class Scene:
         fails; an integration that stops unplanned is *not* an exception:
         see ``Result.outcome.success``.
         """
+        limits = _list(self.limits)
         if out is None:
-            return _result(_core.run(self.text, self.name, None), self.name)
+            return _result(_core.run(self.text, self.name, None, limits), self.name, self.kind)
         os.makedirs(out, exist_ok=True)
-        return _result(_core.run(self.text, self.name, os.fspath(out)), self.name)
+        return _result(_core.run(self.text, self.name, os.fspath(out), limits), self.name, self.kind)
 
     def __reduce__(self):
-        return (Scene, (self.text, self.name))
+        return (_restore, (self.text, self.name, self.limits))
 
     def __eq__(self, other: object) -> bool:
-        return isinstance(other, Scene) and (self.text, self.name) == (other.text, other.name)
+        return isinstance(other, Scene) and (self.text, self.name, self.limits) == (
+            other.text,
+            other.name,
+            other.limits,
+        )
 
     def __hash__(self) -> int:
-        return hash((self.text, self.name))
+        return hash((self.text, self.name, self.limits))
 
     def __repr__(self) -> str:
         return f"<pegdyn.Scene {self.name!r} kind={self.kind!r}: {self._describe}>"
 
 
-def load(path: PathLike) -> Scene:
+def _list(args: Optional[Tuple[str, ...]]) -> Optional[List[str]]:
+    return None if args is None else list(args)
+
+
+def _restore(text: str, name: str, limits: Optional[Tuple[str, ...]]) -> Scene:
+    return Scene(text, name, limits=limits)
+
+
+def load(path: PathLike, *, limits: Limits = None) -> Scene:
     """Reads and validates the scene file at ``path``; the scene is named
     after the file stem (as ``pegdyn run`` names its outputs). Errors carry
-    ``pegdyn check``'s message, prefixed with the path the same way."""
+    ``pegdyn check``'s message, prefixed with the path the same way.
+    ``limits`` as for :class:`Scene`."""
     p = os.fspath(path)
     with open(p, encoding="utf-8") as fh:
         text = fh.read()
     name = os.path.splitext(os.path.basename(p))[0] or "scene"
-    return Scene(text, name, _prefix=p)
+    return Scene(text, name, limits=limits, _prefix=p)
 
 
-def loads(text: str, name: str = "scene") -> Scene:
-    """Validates scene TOML ``text``; outputs are named after ``name``."""
-    return Scene(text, name)
+def loads(text: str, name: str = "scene", *, limits: Limits = None) -> Scene:
+    """Validates scene TOML ``text``; outputs are named after ``name``.
+    ``limits`` as for :class:`Scene`."""
+    return Scene(text, name, limits=limits)
 
 
-def from_dict(d: Mapping[str, Any], name: str = "scene") -> Scene:
+def from_dict(d: Mapping[str, Any], name: str = "scene", *, limits: Limits = None) -> Scene:
     """Validates a scene given as a dict (nested dicts are TOML tables,
-    values bool/int/float/str/lists; numpy scalars and arrays accepted)."""
-    return Scene(_core.to_toml(dict(d)), name)
+    values bool/int/float/str/lists; numpy scalars and arrays accepted).
+    ``limits`` as for :class:`Scene`."""
+    return Scene(_core.to_toml(dict(d)), name, limits=limits)
 
 
 class Event(NamedTuple):
@@ -153,7 +205,14 @@ class Result:
       that fired, in time order (a terminal one last);
     - ``metrics``: scalar results ``{name: value}``; ``units`` their units;
     - ``summary``: the raw summary dict; ``text``: what ``pegdyn run`` prints;
-    - ``paths``: files written (empty when ``run`` had no ``out``).
+    - ``paths``: files written (empty when ``run`` had no ``out``);
+    - ``kind``: the scene's kind.
+
+    The run's replay page (``docs/replay.md``; the 3-D kinds and
+    ``insert_compliant``, unless the scene says ``[replay] page = false``)
+    shows inline in a Jupyter notebook (:meth:`_repr_html_`) and
+    :meth:`replay` writes it to a file. A run in memory keeps the page; a
+    run into a directory reads it from its file there.
     """
 
     columns: Dict[str, Any]
@@ -165,6 +224,56 @@ class Result:
     summary: Dict[str, Any]
     text: str
     paths: List[str]
+    kind: Optional[str] = None
+    _page: Optional[bytes] = field(default=None, repr=False, compare=False)
+
+    def _page_bytes(self) -> Optional[bytes]:
+        if self._page is not None:
+            return self._page
+        for p in self.paths:
+            if p.endswith(".html"):
+                with open(p, "rb") as fh:
+                    return fh.read()
+        return None
+
+    @property
+    def has_replay(self) -> bool:
+        """Whether the run made a replay page."""
+        return self._page is not None or any(p.endswith(".html") for p in self.paths)
+
+    def replay(self, path: PathLike) -> str:
+        """Writes the run's replay page (one self-contained HTML file that
+        opens from disk with no network) to ``path``; returns the path.
+
+        Raises ValueError when the run has no page: its kind makes none
+        (the pendulums, the rigid peg, jamming), or the scene turned it off
+        with ``[replay] page = false``. A sweep's runs make no page: run the
+        point's scene (``scene.with_values(point).run()``) to see one.
+        """
+        page = self._page_bytes()
+        if page is None:
+            raise ValueError(
+                f"this {self.kind or 'scene'} run has no replay page: pages are made by the "
+                "compliant 3-D peg kinds (drop_3d, insert_rcc, rotation_assist, design_margins) "
+                "and insert_compliant, unless the scene says [replay] page = false"
+            )
+        out = os.fspath(path)
+        with open(out, "wb") as fh:
+            fh.write(page)
+        return out
+
+    def _repr_html_(self) -> Optional[str]:
+        """The replay page inline (Jupyter): an iframe whose ``srcdoc`` is
+        the page, sandboxed to run its scripts only; None without a page
+        (Jupyter then shows the plain repr)."""
+        page = self._page_bytes()
+        if page is None:
+            return None
+        doc = html.escape(page.decode("utf-8"), quote=True)
+        return (
+            '<iframe sandbox="allow-scripts" style="width:100%;height:760px;border:0" '
+            f'title="pegdyn replay" srcdoc="{doc}"></iframe>'
+        )
 
     def to_pandas(self, table: Optional[str] = None):
         """The main table (or ``tables[table]``) as a pandas DataFrame
@@ -174,7 +283,8 @@ class Result:
         return pd.DataFrame(self.columns if table is None else self.tables[table])
 
 
-def _result(summary: Dict[str, Any], name: str) -> Result:
+def _result(summary: Dict[str, Any], name: str, kind: Optional[str] = None) -> Result:
+    files = summary.pop("files", None) or {}
     outputs = list(summary["outputs"])
     tables: Dict[str, Dict[str, Any]] = summary["tables"] or {}
     if summary["tables"] is None:
@@ -207,4 +317,6 @@ def _result(summary: Dict[str, Any], name: str) -> Result:
         summary=summary,
         text=summary["text"],
         paths=outputs,
+        kind=kind,
+        _page=next((b for f, b in files.items() if f.endswith(".html")), None),
     )

@@ -7,7 +7,8 @@ import math
 from typing import Any, Dict, Iterator, List, Mapping, Optional, Sequence
 
 from . import _pegdyn as _core
-from ._scene import Scene
+from ._pegdyn import SceneError
+from ._scene import Limits, Scene, _limit_args, _list
 
 #: Row fields every sweep row has, besides the inputs and the metrics.
 FIXED = ("index", "outcome", "error", "stop", "t_end", "steps", "rhs_calls")
@@ -86,10 +87,45 @@ def _points(grid: Optional[Mapping[str, Sequence[Any]]], points) -> tuple:
     return keys, out
 
 
-def run_batch(text: str, name: str, keys: List[str], points: List[list], first: int, threads=None):
+def _check_keys(scene: Scene, keys: List[str], first: list) -> None:
+    """Raises SceneError before any run when a swept key names no field of
+    the scene (a typo such as ``pendulum.lenght``), listing the valid
+    names; the first point's other problems (a value out of range) stay
+    per-row outcomes."""
+    for k in keys:
+        if not isinstance(k, str) or not k or any(not part for part in k.split(".")):
+            raise SceneError(f"pegdyn.sweep: `{k}` is not a dotted field name such as `pendulum.mass`")
+    try:
+        scene.with_values(dict(zip(keys, first)))
+    except SceneError as e:
+        unknown = [
+            (field, reason)
+            for field, _, reason in getattr(e, "errors", [])
+            if field and reason.startswith("unknown field") and any(k == field or k.startswith(field + ".") for k in keys)
+        ]
+        if unknown:
+            field, reason = unknown[0]
+            key = next(k for k in keys if k == field or k.startswith(field + "."))
+            err = SceneError(
+                f"pegdyn.sweep: `{key}` names no field of this {scene.kind} scene (`{field}`: {reason});"
+                " no point was run"
+            )
+            err.field, err.value, err.reason = field, None, reason
+            err.errors = [(f, None, r) for f, r in unknown]
+            raise err from None
+    except ValueError as e:
+        # A key whose table is a value (`pendulum.mass.x`).
+        if "is not a table" in str(e):
+            raise SceneError(f"pegdyn.sweep: {e}; no point was run") from None
+        raise
+
+
+def run_batch(
+    text: str, name: str, keys: List[str], points: List[list], first: int, threads=None, limits=None
+):
     """One Dask task: runs ``points`` (numbered from ``first``) in Rust and
     returns their rows. Module-level so that workers import it by name."""
-    return _core.run_points(text, name, keys, points, first, threads)
+    return _core.run_points(text, name, keys, points, first, threads, limits)
 
 
 def _rows(keys, points, raw) -> List[Dict[str, Any]]:
@@ -109,6 +145,7 @@ def sweep(
     client=None,
     batch_size: Optional[int] = None,
     threads: Optional[int] = None,
+    limits: Limits = None,
 ) -> SweepResult:
     """Runs ``scene`` once per point and returns one row per run.
 
@@ -117,7 +154,9 @@ def sweep(
     ``{"table.field": value}`` dicts with the same keys. Each point's scene
     is the base scene with those fields replaced, validated like a scene
     file: a point that does not validate gives a row with outcome
-    ``"invalid"`` rather than an exception.
+    ``"invalid"`` rather than an exception. A key that names no field of
+    the scene (a typo) raises :class:`SceneError` before any run, listing
+    the table's valid names.
 
     Without ``client`` the points run in parallel on this machine (Rust
     threads, ``threads`` of them, default every core), with the GIL
@@ -131,11 +170,23 @@ def sweep(
     scheduler run its batches again elsewhere; every index is checked to
     come back exactly once. The rows are identical to the local sweep.
     Workers need this package (same version) installed; nothing else.
+
+    The sweep is bounded before it starts, as one scene is: its points
+    times the runs of one point (one, or the scene's grid) must stay within
+    ``max_runs`` and their rows within ``max_memory_mb`` of the scene's
+    ``[limits]``, with ``limits`` (default: the scene's own ``limits``)
+    applied, e.g. ``limits={"max_runs": 100_000}``; else
+    :class:`SceneError` names ``sweep`` and the limit. Each point's scene
+    is validated under the same limits.
     """
     keys, pts = _points(grid, points)
     n = len(pts)
+    args = _list(_limit_args(limits)) if limits is not None else _list(scene.limits)
+    _core.check_sweep(scene.text, scene.name, n, args)
+    if pts:
+        _check_keys(scene, keys, pts[0])
     if client is None:
-        raw = _core.run_points(scene.text, scene.name, keys, pts, 0, threads)
+        raw = _core.run_points(scene.text, scene.name, keys, pts, 0, threads, args)
         return SweepResult(keys, _rows(keys, pts, raw))
     if batch_size is None:
         slots = max(1, sum(client.nthreads().values()))
@@ -145,7 +196,7 @@ def sweep(
     starts = list(range(0, n, batch_size))
     from dask.base import tokenize
 
-    token = tokenize(scene.text, scene.name, keys, pts, batch_size, threads)
+    token = tokenize(scene.text, scene.name, keys, pts, batch_size, threads, args)
     futures = [
         client.submit(
             run_batch,
@@ -155,6 +206,7 @@ def sweep(
             pts[s : s + batch_size],
             s,
             threads,
+            args,
             key=f"pegdyn-sweep-{token}-{s}",
             retries=2,
         )

@@ -10,7 +10,7 @@ use pyo3::types::PyTuple;
 use pegdyn::error::{SceneError as CoreError, SceneErrors};
 
 create_exception!(
-    _pegdyn,
+    pegdyn,
     SceneError,
     PyValueError,
     "A scene that does not parse or validate.\n\n\
@@ -20,7 +20,7 @@ create_exception!(
      lists every problem as `(field, value, reason)` tuples."
 );
 create_exception!(
-    _pegdyn,
+    pegdyn,
     RunError,
     PyRuntimeError,
     "A valid scene whose run failed (an output could not be written, the \

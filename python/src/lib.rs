@@ -31,6 +31,7 @@ fn _pegdyn(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(functions::evaluate, m)?)?;
     m.add_function(wrap_pyfunction!(functions::rust_loop_ns, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::run_points, m)?)?;
+    m.add_function(wrap_pyfunction!(sweep::check_sweep, m)?)?;
     m.add_function(wrap_pyfunction!(sweep::set_fields, m)?)?;
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     Ok(())

@@ -7,11 +7,13 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use rayon::prelude::*;
 
-use pegdyn::scene::RunSummary;
-
+use pegdyn::integrate::Interrupt;
 use pegdyn::output::memory::Keep;
+use pegdyn::scene::limits::{LimitOverrides, WorkItem};
+use pegdyn::scene::{self, RunSummary};
 
-use crate::scene::{Outcome, Output, interruptible, run_text};
+use crate::errors::scene_error;
+use crate::scene::{Outcome, Output, interruptible, overrides, run_text};
 use crate::value;
 
 /// One finished point.
@@ -38,13 +40,23 @@ fn set(doc: &mut toml::Table, key: &str, v: toml::Value) -> Result<(), String> {
     Ok(())
 }
 
-fn run_point(
-    base: &toml::Table,
-    name: &str,
-    keys: &[String],
-    point: &[toml::Value],
-    index: usize,
-) -> Row {
+/// The fixed context of every point of a sweep.
+struct Sweep<'a> {
+    base: &'a toml::Table,
+    name: &'a str,
+    keys: &'a [String],
+    limits: &'a LimitOverrides,
+    stop: &'a Interrupt,
+}
+
+fn run_point(sw: &Sweep<'_>, point: &[toml::Value], index: usize) -> Row {
+    let Sweep {
+        base,
+        name,
+        keys,
+        limits,
+        stop,
+    } = *sw;
     let mut doc = base.clone();
     for (k, v) in keys.iter().zip(point) {
         if let Err(e) = set(&mut doc, k, v.clone()) {
@@ -64,19 +76,79 @@ fn run_point(
         }
     };
     // Only the summary is kept: the run writes no file and keeps no table.
-    let result = match run_text(&text, name, Output::Memory(Keep::Nothing)) {
-        Outcome::Done(s, _) => Ok(s),
+    if stop.is_requested() {
+        return Row {
+            index,
+            result: Err(("failed".into(), "interrupted".into())),
+        };
+    }
+    let result = match run_text(&text, name, Output::Memory(Keep::Nothing), limits, stop) {
+        Outcome::Done(s, ..) => Ok(s),
         Outcome::Invalid(e) => Err(("invalid".into(), e.to_string())),
         Outcome::Failed(m) => Err(("failed".into(), m)),
     };
     Row { index, result }
 }
 
-/// run_points(text, name, keys, points, first_index=0, threads=None) -> list[dict]
+/// Bytes a sweep keeps per row: a dict of the inputs, the fixed fields and
+/// the run's metrics (a few dozen entries of about 100 bytes each).
+const ROW_BYTES: f64 = 4096.0;
+
+/// The work of a sweep of `points` runs of `loaded`: `points` times the
+/// runs of one point (its grid's, or one), bounded by `max_runs`, each
+/// keeping a row.
+fn sweep_work(loaded: &scene::LoadedScene, points: usize) -> Vec<WorkItem> {
+    let runs_each: f64 = loaded
+        .work
+        .iter()
+        .filter(|w| w.limit == "max_runs")
+        .map(|w| w.count)
+        .sum();
+    vec![
+        WorkItem::new(
+            "sweep",
+            "max_runs",
+            points as f64 * runs_each.max(1.0),
+            ROW_BYTES,
+        )
+        .with_value(points as f64),
+    ]
+}
+
+/// check_sweep(text, name, points, limits=None)
+///
+/// Refuses, before any run starts, a sweep of `points` runs of scene
+/// `text` whose work (`points` times the runs of one point, each keeping
+/// a row) exceeds the scene's `[limits]` with `limits` applied: raises
+/// SceneError naming `sweep` and the limit (`max_runs`, `max_memory_mb`).
+#[pyfunction]
+#[pyo3(signature = (text, name, points, limits=None))]
+pub fn check_sweep(
+    py: Python<'_>,
+    text: &str,
+    name: &str,
+    points: usize,
+    limits: Option<Vec<String>>,
+) -> PyResult<()> {
+    let limits = overrides(limits)?;
+    let loaded = scene::parse_named_with(text, name, &limits).map_err(|e| scene_error(py, &e, None))?;
+    let bounds = limits.apply(
+        scene::Document::parse(text)
+            .and_then(|d| d.limits())
+            .map_err(|e| scene_error(py, &e, None))?,
+    );
+    bounds
+        .check(&sweep_work(&loaded, points))
+        .map_err(|e| scene_error(py, &e, None))
+}
+
+/// run_points(text, name, keys, points, first_index=0, threads=None, limits=None) -> list[dict]
 ///
 /// Runs scene `text` once per point, field `keys[j]` set to `point[j]`,
-/// in parallel (rayon; `threads` caps the pool, default all cores), with
-/// the GIL released and Ctrl-C honoured. Row `k` (in point order) has
+/// in parallel (rayon; `threads` caps the pool, default all cores), each
+/// point's scene validated under `limits` (as `check`), with the GIL
+/// released and Ctrl-C honoured (no further run starts, runs in progress
+/// stop at their next step). Row `k` (in point order) has
 /// `index` = `first_index + k`, the `outcome` (`"ok"`, `"stopped"` for an
 /// unplanned integration stop, `"invalid"`, `"failed"`), `error` (message
 /// or None), `stop`, `t_end`, `steps`, `rhs_calls` (None without time
@@ -84,7 +156,8 @@ fn run_point(
 /// `"name [unit]"` (or `name` when dimensionless). Input values are added
 /// by the caller.
 #[pyfunction]
-#[pyo3(signature = (text, name, keys, points, first_index=0, threads=None))]
+#[pyo3(signature = (text, name, keys, points, first_index=0, threads=None, limits=None))]
+#[allow(clippy::too_many_arguments)]
 pub fn run_points<'py>(
     py: Python<'py>,
     text: &str,
@@ -93,7 +166,9 @@ pub fn run_points<'py>(
     points: Vec<Vec<Bound<'py, PyAny>>>,
     first_index: usize,
     threads: Option<usize>,
+    limits: Option<Vec<String>>,
 ) -> PyResult<Vec<Bound<'py, PyDict>>> {
+    let limits = overrides(limits)?;
     let base: toml::Table = toml::from_str(text)
         .map_err(|e| PyValueError::new_err(format!("scene text is not TOML: {e}")))?;
     let mut pts = Vec::with_capacity(points.len());
@@ -112,11 +187,20 @@ pub fn run_points<'py>(
             .collect();
         pts.push(vals?);
     }
-    let rows = interruptible(py, move || {
+    let stop = Interrupt::new();
+    let run_stop = stop.clone();
+    let rows = interruptible(py, &stop, move || {
+        let sw = Sweep {
+            base: &base,
+            name: &name,
+            keys: &keys,
+            limits: &limits,
+            stop: &run_stop,
+        };
         let work = || {
             pts.par_iter()
                 .enumerate()
-                .map(|(k, p)| run_point(&base, &name, &keys, p, first_index + k))
+                .map(|(k, p)| run_point(&sw, p, first_index + k))
                 .collect::<Vec<Row>>()
         };
         match threads {

@@ -19,14 +19,16 @@ def inputs_for(f, n):
 def test_vectorized_equals_single_calls(f):
     n = 7
     xs = inputs_for(f, n)
-    many = f(*xs)
+    # Random points can leave a model's domain (the rigid peg's geometry
+    # gives NaN there): compared as computed, without the warning.
+    many = f(*xs, errors="propagate")
     assert set(many) == {name for name, _ in f.outputs}
     for i in range(n):
-        one = f(*[x[i] for x in xs])
+        one = f(*[x[i] for x in xs], errors="propagate")
         for name, k in f.outputs:
             got = many[name][i]
             assert np.array_equal(np.asarray(got), np.asarray(one[name]), equal_nan=True), (name, i)
-    flat = f.raw(*xs)
+    flat = f.raw(*xs, errors="propagate")
     assert flat.shape == (n, sum(k for _, k in f.outputs))
 
 

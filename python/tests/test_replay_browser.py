@@ -46,29 +46,29 @@ ARGS = [
 VIEWPORT = {"width": 1200, "height": 800}
 
 
-def replay_tool() -> Path:
-    """The program that writes a scene's replay page: cargo's example `replay`
-    (built by `cargo test`), or $PEGDYN_REPLAY."""
-    if os.environ.get("PEGDYN_REPLAY"):
-        return Path(os.environ["PEGDYN_REPLAY"])
-    target = Path(os.environ.get("CARGO_TARGET_DIR", ROOT / "target"))
-    exe = target / "debug" / "examples" / "replay"
-    if not exe.exists():
-        subprocess.run(["cargo", "build", "--locked", "--example", "replay"], cwd=ROOT, check=True)
-    return exe
+def replay_page(stdout: str) -> Path:
+    """The replay page among the files a `pegdyn run` reports (its `wrote
+    PATH` lines): the one place these tests learn a page's file name."""
+    written = [line.split("wrote ", 1)[1] for line in stdout.splitlines() if "wrote " in line]
+    pages = [Path(w) for w in written if w.endswith(".html")]
+    assert len(pages) == 1, f"one replay page expected among {written}"
+    return pages[0]
 
 
 def make_pages(out: Path) -> dict:
-    """Writes every shipped scene's page into `out`; returns {scene: path}."""
-    tool = replay_tool()
+    """Runs every shipped scene with `pegdyn run SCENE --out OUT` (the CLI
+    that `cargo test` built, or $PEGDYN_CLI); returns {scene: its page}."""
+    from conftest import cli_path
+
     pages = {}
     for name in SCENES:
-        subprocess.run(
-            [str(tool), str(ROOT / "scenes" / f"{name}.toml"), "--out", str(out)],
+        done = subprocess.run(
+            [str(cli_path()), "run", str(ROOT / "scenes" / f"{name}.toml"), "--out", str(out), "-q"],
             check=True,
             capture_output=True,
+            text=True,
         )
-        pages[name] = out / f"{name}.html"
+        pages[name] = replay_page(done.stdout)
     return pages
 
 
@@ -186,12 +186,12 @@ def union(a, b):
 @pytest.mark.parametrize("name", SCENES)
 def test_the_page_is_small_loads_without_error_and_draws(opened, pages, name):
     size = pages[name].stat().st_size
-    assert size <= MAX_PAGE, f"{name}.html is {size} bytes"
+    assert size <= MAX_PAGE, f"{pages[name].name} is {size} bytes"
     o = opened(name)
     assert o.state("webgl"), "WebGL did not start under SwiftShader"
     assert o.errors == [], o.errors
     frames = o.state("frames")
-    print(f"{name}.html: {size} bytes, {frames} frames, loaded and drawn in {o.load_seconds:.2f} s")
+    print(f"{pages[name].name}: {size} bytes, {frames} frames, loaded and drawn in {o.load_seconds:.2f} s")
     assert frames >= 100
     assert o.page.locator("#nogl").is_hidden()
 
@@ -267,6 +267,34 @@ def test_without_webgl_the_page_says_so_and_the_timeline_works(playwright, pages
         assert o.errors == [], o.errors
     finally:
         b.close()
+
+
+def test_the_notebook_iframe_runs_the_page(browser, tmp_path):
+    """`Result._repr_html_()` as Jupyter shows it: the page in a sandboxed
+    iframe (scripts allowed, no same-origin) loads, draws and jumps."""
+    import pegdyn
+
+    text = (ROOT / "scenes" / "insert_compliant.toml").read_text().replace("t_end = 0.3 ", "t_end = 0.05")
+    shown = pegdyn.loads(text, "notebook").run()._repr_html_()
+    cell = tmp_path / "cell.html"
+    cell.write_text(f"<!DOCTYPE html><html><body><h1>a notebook cell</h1>{shown}</body></html>")
+    context = browser.new_context(viewport=VIEWPORT)
+    errors = []
+    page = context.new_page()
+    page.on("console", lambda m: m.type == "error" and errors.append(m.text))
+    try:
+        page.goto(cell.as_uri())
+        frame = page.frame_locator("iframe")
+        inner = next(f for f in page.frames if f != page.main_frame)
+        inner.wait_for_function("window.pegdynReplay && window.pegdynReplay.ready")
+        assert inner.evaluate("pegdynReplay.webgl")
+        inner.wait_for_function("pegdynReplay.renders > 0")
+        marks = inner.evaluate("pegdynReplay.marks")
+        frame.locator(f'#events button[data-index="{len(marks) - 1}"]').click()
+        assert inner.evaluate("pegdynReplay.time") == marks[-1]["t"]
+        assert errors == [], errors
+    finally:
+        context.close()
 
 
 def write_shots(out: Path):

@@ -1,6 +1,7 @@
 //! Command-line interface: argument definitions (clap derive) and dispatch.
 //!
-//! Exit codes: 0 success, 1 a scene or run failed, 2 usage error.
+//! Exit codes: 0 success, 1 a scene or run failed, 2 usage error, 128 +
+//! the signal for a run stopped by SIGINT (130) or SIGTERM (143).
 //! One file per subcommand; `bench` will join them.
 
 /// `println!` that does not panic when stdout is closed early (`| head`):
@@ -55,6 +56,10 @@ enum Command {
         /// be left out). Repeatable; replaces the scene's own value.
         #[arg(long = "limit", value_name = "KEY=VALUE")]
         limits: Vec<String>,
+        /// Write no replay page (OUT/<scene>.html), whatever the scene's
+        /// [replay] table says.
+        #[arg(long)]
+        no_replay: bool,
     },
     /// Validate scene files without running them.
     Check {
@@ -117,8 +122,9 @@ pub fn main() -> ExitCode {
             out,
             quiet,
             limits,
+            no_replay,
         } => match limit_overrides(&limits) {
-            Some(o) => run::run(&scene, &out, quiet, &o),
+            Some(o) => run::run(&scene, &out, quiet, &o, no_replay),
             None => ExitCode::from(2),
         },
         Command::Check { scenes, limits } => match limit_overrides(&limits) {

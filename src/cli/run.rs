@@ -1,13 +1,19 @@
-//! `pegdyn run SCENE [--out DIR]`: load, validate, run, print a summary,
-//! and record the run in `<out>/<scene>.run.toml`.
+//! `pegdyn run SCENE [--out DIR]`: load, validate, record the run as
+//! running, run (SIGINT and SIGTERM stop it cooperatively), print a
+//! summary, and record how it ended in `<out>/<scene>.run.toml`.
 
 use std::path::Path;
 use std::process::ExitCode;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
-use pegdyn::output::manifest;
+use pegdyn::error::RunError;
+use pegdyn::integrate::Interrupt;
+use pegdyn::output::record::{Origin, RunRecord};
 use pegdyn::output::sink::Sink;
 use pegdyn::scene::limits::LimitOverrides;
 use pegdyn::scene::{self, Progress, RunContext};
+use signal_hook::consts::{SIGINT, SIGTERM};
 
 /// Whether the scene file lies in `out` under a name an output could take
 /// (any extension but `.toml`: outputs are `.csv`, `.svg`, `.run.toml`).
@@ -18,9 +24,44 @@ fn scene_in_outputs(path: &Path, out: &Path) -> bool {
     scene_dir.is_some() && scene_dir == dir(out) && path.extension().is_none_or(|e| e != "toml")
 }
 
-/// Runs one scene file, writing into `out`.
-pub fn run(path: &Path, out: &Path, quiet: bool, limits: &LimitOverrides) -> ExitCode {
-    let loaded = match scene::load_with(path, limits) {
+/// Makes SIGINT and SIGTERM request `stop` (the run ends cooperatively at
+/// its next step and records `interrupted`); a second signal ends the
+/// process at once (exit 128 + signal, the manifest left `running` as
+/// after `kill -9`, for the next run to report). Returns the number of the
+/// last signal received (0 for none).
+fn on_signals(stop: &Interrupt) -> std::io::Result<Arc<AtomicUsize>> {
+    let which = Arc::new(AtomicUsize::new(0));
+    for sig in [SIGINT, SIGTERM] {
+        // Registered first, so that it sees the flag as the earlier signal left it.
+        signal_hook::flag::register_conditional_shutdown(sig, 128 + sig, stop.flag())?;
+        signal_hook::flag::register_usize(sig, Arc::clone(&which), sig as usize)?;
+        signal_hook::flag::register(sig, stop.flag())?;
+    }
+    Ok(which)
+}
+
+fn signal_name(sig: usize) -> &'static str {
+    match i32::try_from(sig) {
+        Ok(SIGINT) => "SIGINT",
+        Ok(SIGTERM) => "SIGTERM",
+        _ => "a stop request",
+    }
+}
+
+/// Runs one scene file, writing into `out` (with `no_replay`, no replay
+/// page).
+pub fn run(
+    path: &Path,
+    out: &Path,
+    quiet: bool,
+    limits: &LimitOverrides,
+    no_replay: bool,
+) -> ExitCode {
+    // The text is read once: what is parsed is what the manifest hashes.
+    let loaded = scene::loader::read(path).and_then(|(text, name)| {
+        scene::parse_named_with(&text, &name, limits).map(|loaded| (loaded, text))
+    });
+    let (loaded, text) = match loaded {
         Ok(s) => s,
         Err(errors) => {
             for e in errors.to_string().lines() {
@@ -45,6 +86,33 @@ pub fn run(path: &Path, out: &Path, quiet: bool, limits: &LimitOverrides) -> Exi
         );
         return ExitCode::FAILURE;
     }
+    let stop = Interrupt::new();
+    let signal = on_signals(&stop).unwrap_or_else(|e| {
+        errln!(
+            "{}: warning: cannot catch SIGINT/SIGTERM ({e}): an interrupted run will leave its \
+             manifest saying \"running\"",
+            path.display()
+        );
+        Arc::new(AtomicUsize::new(0))
+    });
+    let origin = Origin {
+        scene: path,
+        text: text.as_bytes(),
+        command: std::env::args_os().collect(),
+        out,
+    };
+    let record = match RunRecord::start(out, &loaded.name, &origin) {
+        Ok((record, notices)) => {
+            for n in notices {
+                errln!("{}: warning: {n}", path.display());
+            }
+            record
+        }
+        Err(e) => {
+            errln!("{}: error: {e}", path.display());
+            return ExitCode::FAILURE;
+        }
+    };
     outln!(
         "{} ({}): {}",
         loaded.name,
@@ -53,7 +121,11 @@ pub fn run(path: &Path, out: &Path, quiet: bool, limits: &LimitOverrides) -> Exi
     );
     // The scene file is never replaced by an output.
     let sink = Sink::directory(out, &loaded.name).protecting(path);
-    let mut ctx = RunContext::new(sink, Progress::new(quiet));
+    let progress = Progress::new(quiet).with_interrupt(stop);
+    let mut ctx = RunContext::new(sink, progress);
+    if no_replay {
+        ctx = ctx.without_replay();
+    }
     let result = loaded.run(&mut ctx);
     ctx.progress.finish();
     let (code, status) = match result {
@@ -74,22 +146,28 @@ pub fn run(path: &Path, out: &Path, quiet: bool, limits: &LimitOverrides) -> Exi
                 _ => (ExitCode::SUCCESS, "ok".to_owned()),
             }
         }
+        Err(RunError::Interrupted) => {
+            let sig = signal.load(Ordering::Relaxed);
+            errln!(
+                "{}: error: interrupted by {}; the outputs completed before are listed in the \
+                 manifest",
+                path.display(),
+                signal_name(sig)
+            );
+            let code = u8::try_from(128 + sig).unwrap_or(1);
+            (
+                ExitCode::from(code),
+                format!("interrupted: {}", signal_name(sig)),
+            )
+        }
         Err(e) => {
             errln!("{}: error: {e}", path.display());
             (ExitCode::FAILURE, format!("failed: {e}"))
         }
     };
-    let text = std::fs::read(path).unwrap_or_default();
-    let record = manifest::Manifest {
-        scene: path,
-        scene_text: &text,
-        command: std::env::args().collect::<Vec<_>>().join(" "),
-        status,
-        files: ctx.sink().written(),
-    };
-    match manifest::write(out, &loaded.name, &record) {
-        Ok((_, stale)) if !stale.is_empty() => {
-            let names: Vec<String> = stale.iter().map(|p| p.display().to_string()).collect();
+    match record.finish(status, &ctx.sink().written()) {
+        Ok(m) if !m.stale.is_empty() => {
+            let names: Vec<String> = m.stale.iter().map(|p| p.display().to_string()).collect();
             errln!(
                 "{}: warning: files of an earlier run, not written by this one: {}",
                 path.display(),

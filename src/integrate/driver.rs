@@ -17,7 +17,7 @@ use super::dense::Interpolant;
 use super::events::Event;
 use super::options::Options;
 use super::solution::{Solution, Stats, StopReason};
-use super::state::{Control, Hooks, State};
+use super::state::{Control, Hooks, State, Storage};
 use super::step_control::{PiController, initial_step};
 
 /// The outcome of one attempted step.
@@ -90,9 +90,10 @@ pub(crate) fn run<const N: usize, S: OdeSystem<N>, M: Stepper<N>>(
     fixed_h: Option<f64>,
     events: &[Event<'_, N>],
     hooks: &mut Hooks<'_, N>,
+    storage: Storage<N>,
 ) -> Solution<N> {
     let mut run = Run::new(
-        stepper, system, start, t_end, options, fixed_h, events, hooks,
+        stepper, system, start, t_end, options, fixed_h, events, hooks, storage,
     );
     loop {
         if let Some(stop) = run.step() {
@@ -125,8 +126,9 @@ impl<'r, 'e, 'h, const N: usize, S: OdeSystem<N>, M: Stepper<N>> Run<'r, 'e, 'h,
         fixed_h: Option<f64>,
         events: &'r [Event<'e, N>],
         hooks: &'r mut Hooks<'h, N>,
+        storage: Storage<N>,
     ) -> Self {
-        let mut state = State::new((t0, x0), t_end, options, events, hooks);
+        let mut state = State::new((t0, x0), t_end, options, events, hooks, storage);
         let f = system.rhs(t0, &x0);
         state.stats.rhs_calls += 1;
         state.f = f;

@@ -31,6 +31,7 @@ mod driver;
 mod events;
 mod explicit_rk;
 mod fallible;
+mod interrupt;
 mod iteration;
 mod lu;
 mod method;
@@ -47,6 +48,7 @@ use nalgebra::SVector;
 use crate::system::OdeSystem;
 
 pub use events::{Direction, Event, EventFn};
+pub use interrupt::Interrupt;
 pub use method::{Method, MethodKind};
 pub use non_finite::{NonFiniteAt, NonFiniteQuantity};
 pub use options::{IntegrateError, MAX_STEP_BUDGET, MIN_ATOL, MIN_RTOL, Options, OutputMode};
@@ -54,7 +56,7 @@ pub use solution::{EventHit, Solution, Stats, StopReason};
 
 use explicit_rk::ExplicitRk;
 use rosenbrock::Rosenbrock;
-use state::Hooks;
+use state::{Hooks, Storage};
 use tableau::{RosenbrockTableau, Tableau};
 
 /// Progress callback type: called with the time after every accepted step.
@@ -70,6 +72,7 @@ pub struct Solver<'a, const N: usize> {
     events: Vec<Event<'a, N>>,
     progress: Option<Box<ProgressFn<'a>>>,
     observer: Option<Box<ObserverFn<'a, N>>>,
+    interrupt: Option<Interrupt>,
 }
 
 impl<'a, const N: usize> Solver<'a, N> {
@@ -81,6 +84,7 @@ impl<'a, const N: usize> Solver<'a, N> {
             events: Vec::new(),
             progress: None,
             observer: None,
+            interrupt: None,
         }
     }
 
@@ -100,6 +104,13 @@ impl<'a, const N: usize> Solver<'a, N> {
     /// Sets the observer (every reported point, e.g. to stream CSV rows).
     pub fn with_observer(mut self, observer: impl FnMut(f64, &SVector<f64, N>) + 'a) -> Self {
         self.observer = Some(Box::new(observer));
+        self
+    }
+
+    /// Stops the integration with [`StopReason::Interrupted`] before the
+    /// next attempted step once `interrupt` is requested.
+    pub fn with_interrupt(mut self, interrupt: &Interrupt) -> Self {
+        self.interrupt = Some(interrupt.clone());
         self
     }
 
@@ -133,8 +144,10 @@ impl<'a, const N: usize> Solver<'a, N> {
                 .observer
                 .as_deref_mut()
                 .map(|o| o as &mut dyn FnMut(f64, &SVector<f64, N>)),
+            interrupt: self.interrupt.as_ref(),
         };
         let start = (t0, x0);
+        let storage = Storage::reserve(&self.options)?;
         let (options, events) = (&self.options, self.events.as_slice());
         let checked = fallible::Checked::new(system);
         let system = &checked;
@@ -161,6 +174,7 @@ impl<'a, const N: usize> Solver<'a, N> {
                     h,
                     events,
                     &mut hooks,
+                    storage,
                 )
             };
         }

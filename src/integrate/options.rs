@@ -186,4 +186,16 @@ pub enum IntegrateError {
         /// The offending value.
         value: f64,
     },
+    /// The memory to store the requested output samples cannot be
+    /// reserved (instead of the process aborting half-way).
+    #[error(
+        "cannot reserve memory to store {samples} output samples ({bytes:.3e} bytes); \
+         sample less often or stream the output"
+    )]
+    OutOfMemory {
+        /// Samples requested ([`OutputMode::AtTimes`]).
+        samples: usize,
+        /// Bytes asked for.
+        bytes: f64,
+    },
 }

@@ -40,6 +40,12 @@ pub enum StopReason {
         /// Number of attempted steps.
         steps: usize,
     },
+    /// A stop was requested from outside ([`super::Interrupt`], e.g. a
+    /// signal or Ctrl-C) before the step from time `t`.
+    Interrupted {
+        /// Time of the last accepted step.
+        t: f64,
+    },
 }
 
 impl StopReason {

@@ -18,6 +18,36 @@ use super::step_control::{PiController, error_norm};
 pub(crate) struct Hooks<'h, const N: usize> {
     pub(crate) progress: Option<&'h mut dyn FnMut(f64)>,
     pub(crate) observer: Option<&'h mut super::ObserverFn<'h, N>>,
+    /// A stop request looked at before every attempted step.
+    pub(crate) interrupt: Option<&'h super::Interrupt>,
+}
+
+/// Room for the stored points of a run, reserved before it starts.
+#[derive(Default)]
+pub(crate) struct Storage<const N: usize> {
+    pub(crate) t: Vec<f64>,
+    pub(crate) x: Vec<SVector<f64, N>>,
+}
+
+impl<const N: usize> Storage<N> {
+    /// Room for every point `options` asks to store when that number is
+    /// known in advance (stored output at given times).
+    ///
+    /// # Errors
+    /// [`super::IntegrateError::OutOfMemory`] when it cannot be reserved.
+    pub(crate) fn reserve(options: &Options) -> Result<Self, super::IntegrateError> {
+        let mut s = Storage::default();
+        if let (true, OutputMode::AtTimes(times)) = (options.store, &options.output) {
+            let n = times.len();
+            if s.t.try_reserve_exact(n).is_err() || s.x.try_reserve_exact(n).is_err() {
+                return Err(super::IntegrateError::OutOfMemory {
+                    samples: n,
+                    bytes: n as f64 * (8 * (N + 1)) as f64,
+                });
+            }
+        }
+        Ok(s)
+    }
 }
 
 /// Collects the reported points according to the output mode.
@@ -106,13 +136,15 @@ pub(super) struct State<'r, 'e, 'h, const N: usize> {
 }
 
 impl<'r, 'e, 'h, const N: usize> State<'r, 'e, 'h, N> {
-    /// The state at the start, `t0` reported.
+    /// The state at the start, `t0` reported; stored points go into
+    /// `storage` (reserved by the caller).
     pub(super) fn new(
         (t0, x0): (f64, SVector<f64, N>),
         t_end: f64,
         options: &'r Options,
         events: &'r [Event<'e, N>],
         hooks: &'r mut Hooks<'h, N>,
+        storage: Storage<N>,
     ) -> Self {
         let mut recorder = Recorder {
             times: match &options.output {
@@ -121,8 +153,8 @@ impl<'r, 'e, 'h, const N: usize> State<'r, 'e, 'h, N> {
             },
             next: 0,
             store: options.store,
-            t: Vec::new(),
-            x: Vec::new(),
+            t: storage.t,
+            x: storage.x,
         };
         recorder.advance(t0, &x0, None, hooks);
         let needs_dense = !events.is_empty() || recorder.times.is_some();
@@ -165,6 +197,13 @@ impl<'r, 'e, 'h, const N: usize> State<'r, 'e, 'h, N> {
         let (t, t_end) = (self.t, self.t_end);
         if t >= t_end {
             return Err(StopReason::ReachedEnd);
+        }
+        if self
+            .hooks
+            .interrupt
+            .is_some_and(super::Interrupt::is_requested)
+        {
+            return Err(StopReason::Interrupted { t });
         }
         if self.attempts >= self.options.max_steps {
             return Err(StopReason::MaxSteps {

@@ -16,7 +16,7 @@ pub enum DiagramKind {
 }
 
 impl DiagramKind {
-    /// Name as written in `jamming_corners.csv`.
+    /// Name as written in `<name>.corners.csv`.
     pub fn name(self) -> &'static str {
         match self {
             DiagramKind::Whitney => "whitney",

@@ -1,26 +1,44 @@
-//! The run manifest `<out>/<scene>.run.toml`: what produced the files in an
-//! output directory, and whether it succeeded.
+//! The run manifest `<out>/<scene>.run.toml`: which run produced the files
+//! of a scene in an output directory, and how it ended. It is written
+//! before the run replaces any output (`status = "running"`) and again
+//! when the run ends ([`super::record::RunRecord`]):
 //!
 //! ```toml
+//! # pegdyn run manifest: the run that wrote the files listed below
+//! pegdyn_manifest = 1
 //! scene = "scenes/pendulum.toml"
 //! scene_hash = "fnv1a64:9c1f0e2d7a4b3c5e"
 //! pegdyn_version = "0.1.0"
 //! command = "pegdyn run scenes/pendulum.toml --out out"
+//! out = "out"
+//! lossy = []
+//! pid = 4242
+//! started = "2026-11-26T01:02:03Z"
 //! status = "ok"
+//! ended = "2026-11-26T01:02:04Z"
 //! files = ["pendulum.csv", "pendulum.svg"]
 //! stale = []
 //! ```
 //!
-//! `files` lists what this run wrote (its sink's record,
-//! [`super::sink::Sink::written`]); `stale` lists files of the same scene
-//! name ([`super::names::of_scene`]) in the directory that this run did not
-//! write — left by an earlier run, and not to be read as this run's.
+//! - `scene_hash`: of the text that was parsed (read once, before the run).
+//! - `lossy`: which of `scene`, `command`, `out` held bytes that are not
+//!   UTF-8 (shown here with U+FFFD in their place).
+//! - `status`: `running` (with `pid` and `started`), then `ok`,
+//!   `partial: <why>` (an integration stopped early), `failed: <error>`
+//!   or `interrupted: <signal>`; a `running` manifest whose process is
+//!   gone is a run that was killed.
+//! - `files`: what this run wrote (its sink's record,
+//!   [`super::sink::Sink::written`]); `stale`: files named like this
+//!   scene's outputs ([`super::names::of_scene`]) that this run did not
+//!   write — an earlier run's, not to be read as this run's.
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 
-use super::{atomic, names};
-use crate::error::OutputError;
+use super::names;
+
+/// The format number written as `pegdyn_manifest`.
+pub const FORMAT: i64 = 1;
 
 /// The FNV-1a 64-bit hash of `bytes`, as 16 hex digits (identifies a scene
 /// file's exact text; not a cryptographic hash).
@@ -34,42 +52,30 @@ pub fn fnv1a64(bytes: &[u8]) -> String {
 }
 
 /// What a manifest records.
-#[derive(Debug, Clone)]
-pub struct Manifest<'a> {
-    /// The scene file as given on the command line.
-    pub scene: &'a Path,
-    /// The scene file's text.
-    pub scene_text: &'a [u8],
-    /// The command line.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Manifest {
+    /// The scene file as given (lossy if not UTF-8, see `lossy`).
+    pub scene: String,
+    /// `fnv1a64:<hex>` of the scene text that was parsed.
+    pub scene_hash: String,
+    /// The command line (arguments joined by spaces).
     pub command: String,
-    /// `ok`, or `failed: <reason>`.
+    /// The output directory as given.
+    pub out: String,
+    /// Which of `scene`, `command`, `out` were not UTF-8.
+    pub lossy: Vec<&'static str>,
+    /// The process that ran.
+    pub pid: u32,
+    /// When the run started (RFC 3339, UTC).
+    pub started: String,
+    /// `running`, `ok`, `partial: ...`, `failed: ...`, `interrupted: ...`.
     pub status: String,
-    /// Files this run wrote (absolute or relative to the output
-    /// directory; listed by file name, sorted).
+    /// When the run ended (absent while running).
+    pub ended: Option<String>,
+    /// Files this run wrote (file names, sorted).
     pub files: Vec<PathBuf>,
-}
-
-/// Files in `dir` named like outputs of scene `name`
-/// ([`names::of_scene`]), other than its manifest, that are not in
-/// `written`, sorted.
-pub fn stale_files(dir: &Path, name: &str, written: &[PathBuf]) -> Vec<PathBuf> {
-    let Ok(entries) = std::fs::read_dir(dir) else {
-        return Vec::new();
-    };
-    let names: Vec<_> = written.iter().filter_map(|p| p.file_name()).collect();
-    let manifest = names::manifest(name);
-    let mut stale: Vec<PathBuf> = entries
-        .filter_map(Result::ok)
-        .map(|e| e.path())
-        .filter(|p| {
-            p.file_name().is_some_and(|f| {
-                let f_s = f.to_string_lossy();
-                names::of_scene(name, &f_s) && f_s != manifest && !names.contains(&f)
-            })
-        })
-        .collect();
-    stale.sort();
-    stale
+    /// Files of this scene's name this run did not write.
+    pub stale: Vec<PathBuf>,
 }
 
 fn quoted(s: &str) -> String {
@@ -104,62 +110,198 @@ fn list(paths: &[PathBuf]) -> String {
     format!("[{}]", items.join(", "))
 }
 
-/// Writes `<dir>/<name>.run.toml` atomically; returns its path and the
-/// stale files it lists.
-///
-/// # Errors
-/// [`OutputError::Io`] if the file cannot be written.
-pub fn write(
-    dir: &Path,
-    name: &str,
-    m: &Manifest<'_>,
-) -> Result<(PathBuf, Vec<PathBuf>), OutputError> {
-    let stale = stale_files(dir, name, &m.files);
-    let text = format!(
-        "scene = {}\nscene_hash = {}\npegdyn_version = {}\ncommand = {}\nstatus = {}\nfiles = {}\nstale = {}\n",
-        quoted(&m.scene.to_string_lossy()),
-        quoted(&format!("fnv1a64:{}", fnv1a64(m.scene_text))),
-        quoted(env!("CARGO_PKG_VERSION")),
-        quoted(&m.command),
-        quoted(&m.status),
-        list(&m.files),
-        list(&stale),
-    );
-    let path = dir.join(names::manifest(name));
-    atomic::write(&path, text.as_bytes())?;
-    Ok((path, stale))
+impl Manifest {
+    /// The manifest's TOML text.
+    pub fn to_toml(&self) -> String {
+        let lossy: Vec<String> = self.lossy.iter().map(|f| quoted(f)).collect();
+        let mut text = format!(
+            "# pegdyn run manifest: the run that wrote the files listed below\n\
+             pegdyn_manifest = {FORMAT}\nscene = {}\nscene_hash = {}\npegdyn_version = {}\n\
+             command = {}\nout = {}\nlossy = [{}]\npid = {}\nstarted = {}\nstatus = {}\n",
+            quoted(&self.scene),
+            quoted(&self.scene_hash),
+            quoted(env!("CARGO_PKG_VERSION")),
+            quoted(&self.command),
+            quoted(&self.out),
+            lossy.join(", "),
+            self.pid,
+            quoted(&self.started),
+            quoted(&self.status),
+        );
+        if let Some(ended) = &self.ended {
+            let _ = writeln!(text, "ended = {}", quoted(ended));
+        }
+        let _ = write!(
+            text,
+            "files = {}\nstale = {}\n",
+            list(&self.files),
+            list(&self.stale)
+        );
+        text
+    }
+}
+
+/// What an existing file with a manifest's name holds.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Existing {
+    /// No such file.
+    None,
+    /// A pegdyn manifest; `running` with the process id when its run had
+    /// not ended when it was written.
+    Manifest {
+        /// `Some((pid, started))` for `status = "running"`.
+        running: Option<(u32, String)>,
+    },
+    /// Something else (a user's file, a directory, unreadable): never
+    /// replaced.
+    Foreign,
+}
+
+/// Reads `path` and says whether it is a pegdyn manifest: a TOML table with
+/// `pegdyn_manifest`, or, as written before that key existed, with
+/// `pegdyn_version`, `scene_hash` and `status`.
+pub fn existing(path: &Path) -> Existing {
+    let meta = match std::fs::symlink_metadata(path) {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Existing::None,
+        Err(_) => return Existing::Foreign,
+        Ok(m) => m,
+    };
+    // A manifest is small; anything large or not a plain file is not one.
+    if !meta.is_file() || meta.len() > 1 << 22 {
+        return Existing::Foreign;
+    }
+    let Ok(text) = std::fs::read_to_string(path) else {
+        return Existing::Foreign;
+    };
+    let Ok(t) = text.parse::<toml::Table>() else {
+        return Existing::Foreign;
+    };
+    let str_of = |k: &str| t.get(k).and_then(toml::Value::as_str);
+    let ours = t
+        .get("pegdyn_manifest")
+        .is_some_and(toml::Value::is_integer)
+        || (str_of("pegdyn_version").is_some()
+            && str_of("scene_hash").is_some()
+            && str_of("status").is_some());
+    if !ours {
+        return Existing::Foreign;
+    }
+    let pid = t
+        .get("pid")
+        .and_then(toml::Value::as_integer)
+        .and_then(|p| u32::try_from(p).ok());
+    let running = match (str_of("status"), pid) {
+        (Some("running"), Some(pid)) => Some((pid, str_of("started").unwrap_or("").to_owned())),
+        _ => None,
+    };
+    Existing::Manifest { running }
+}
+
+/// Files in `dir` named like outputs of scene `name`
+/// ([`names::of_scene`]), other than its manifest, that are not in
+/// `written`, sorted.
+pub fn stale_files(dir: &Path, name: &str, written: &[PathBuf]) -> Vec<PathBuf> {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return Vec::new();
+    };
+    let written: Vec<_> = written.iter().filter_map(|p| p.file_name()).collect();
+    let manifest = names::manifest(name);
+    let mut stale: Vec<PathBuf> = entries
+        .filter_map(Result::ok)
+        .map(|e| e.path())
+        .filter(|p| {
+            p.file_name().is_some_and(|f| {
+                let f_s = f.to_string_lossy();
+                names::of_scene(name, &f_s) && f_s != manifest && !written.contains(&f)
+            })
+        })
+        .collect();
+    stale.sort();
+    stale
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    fn sample() -> Manifest {
+        Manifest {
+            scene: "scenes/s.toml".into(),
+            scene_hash: format!("fnv1a64:{}", fnv1a64(b"kind = \"pendulum\"")),
+            command: "pegdyn run \"scenes/s.toml\"".into(),
+            out: "out".into(),
+            lossy: vec!["out"],
+            pid: 77,
+            started: "2026-01-02T03:04:05Z".into(),
+            status: "running".into(),
+            ended: None,
+            files: vec![],
+            stale: vec![PathBuf::from("out/s.old.svg")],
+        }
+    }
+
     #[test]
-    fn manifest_lists_files_and_stale_outputs() {
+    fn a_manifest_round_trips_and_is_recognized() {
         let dir = std::env::temp_dir().join(format!("pegdyn-manifest-{}", std::process::id()));
         std::fs::create_dir_all(&dir).unwrap();
-        std::fs::write(dir.join("s.csv"), "t\n").unwrap();
-        std::fs::write(dir.join("s_old.svg"), "").unwrap();
-        std::fs::write(dir.join("other.csv"), "").unwrap();
-        let m = Manifest {
-            scene: Path::new("scenes/s.toml"),
-            scene_text: b"kind = \"pendulum\"",
-            command: "pegdyn run \"scenes/s.toml\"".into(),
-            status: "ok".into(),
-            files: vec![dir.join("s.csv")],
-        };
-        let (path, stale) = write(&dir, "s", &m).unwrap();
-        assert_eq!(stale, vec![dir.join("s_old.svg")]);
-        let text = std::fs::read_to_string(&path).unwrap();
-        let parsed: toml::Table = text.parse().unwrap();
-        assert_eq!(parsed["status"].as_str(), Some("ok"));
-        assert_eq!(parsed["files"].as_array().map(Vec::len), Some(1));
-        assert_eq!(parsed["stale"][0].as_str(), Some("s_old.svg"));
+        let path = dir.join("s.run.toml");
+        let mut m = sample();
+        std::fs::write(&path, m.to_toml()).unwrap();
+        let parsed: toml::Table = m.to_toml().parse().unwrap();
+        assert_eq!(parsed["status"].as_str(), Some("running"));
+        assert_eq!(parsed["pid"].as_integer(), Some(77));
+        assert_eq!(parsed["lossy"][0].as_str(), Some("out"));
+        assert_eq!(parsed["stale"][0].as_str(), Some("s.old.svg"));
+        assert!(parsed.get("ended").is_none());
         assert_eq!(
-            parsed["command"].as_str(),
-            Some("pegdyn run \"scenes/s.toml\"")
+            existing(&path),
+            Existing::Manifest {
+                running: Some((77, "2026-01-02T03:04:05Z".into()))
+            }
         );
+        m.status = "ok".into();
+        m.ended = Some("2026-01-02T03:04:06Z".into());
+        std::fs::write(&path, m.to_toml()).unwrap();
+        assert_eq!(existing(&path), Existing::Manifest { running: None });
+        // The format written before `pegdyn_manifest` existed.
+        std::fs::write(
+            &path,
+            "scene = \"a\"\nscene_hash = \"fnv1a64:0\"\npegdyn_version = \"0.1.0\"\nstatus = \"ok\"\n",
+        )
+        .unwrap();
+        assert_eq!(existing(&path), Existing::Manifest { running: None });
+        for foreign in [
+            "[tool]\nname = \"mine\"\n",
+            "not toml at all",
+            "status = \"ok\"\n",
+        ] {
+            std::fs::write(&path, foreign).unwrap();
+            assert_eq!(existing(&path), Existing::Foreign, "{foreign}");
+        }
+        std::fs::remove_file(&path).unwrap();
+        assert_eq!(existing(&path), Existing::None);
+        std::fs::create_dir(&path).unwrap();
+        assert_eq!(existing(&path), Existing::Foreign);
+        std::fs::remove_dir_all(&dir).unwrap();
         assert_eq!(fnv1a64(b""), "cbf29ce484222325");
+    }
+
+    #[test]
+    fn stale_files_are_only_this_scenes() {
+        let dir = std::env::temp_dir().join(format!("pegdyn-stale-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap();
+        for f in [
+            "s.csv",
+            "s.old.svg",
+            "s.run.toml",
+            "s_rcc.csv",
+            "other.csv",
+            ".s.csv.tmp-1",
+        ] {
+            std::fs::write(dir.join(f), "").unwrap();
+        }
+        let stale = stale_files(&dir, "s", &[dir.join("s.csv")]);
+        assert_eq!(stale, vec![dir.join("s.old.svg")]);
         std::fs::remove_dir_all(&dir).unwrap();
     }
 }

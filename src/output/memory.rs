@@ -12,11 +12,22 @@ use super::csv::format_f64;
 /// What a memory sink keeps of the tables written into it.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Keep {
-    /// Every CSV table, column by column.
+    /// Every CSV table, column by column, and every other file's bytes
+    /// (e.g. the replay page) as written.
     Tables,
     /// Nothing: rows are checked as for a file and dropped (a sweep that
     /// wants only the run summaries).
     Nothing,
+}
+
+/// A file other than a table that a run wrote into memory (e.g. the
+/// replay page `<scene>.html`), kept with [`Keep::Tables`].
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct KeptFile {
+    /// The name the file would have had, e.g. `insert_rcc.html`.
+    pub file: String,
+    /// Its bytes.
+    pub bytes: Vec<u8>,
 }
 
 /// One column of a captured table: numbers when every cell is a number

@@ -3,7 +3,8 @@
 //! writes a file: CSV tables ([`csv`], or [`memory`] tables), SVG line plots
 //! ([`plot`] describes a figure, [`svg`] renders it) and other files, each
 //! whole or not at all ([`atomic`]). The run manifest ([`manifest`]) records
-//! what a run wrote.
+//! what a run wrote and how it ended, kept true from its start by the run's
+//! [`record`].
 
 pub mod atomic;
 mod axes;
@@ -14,5 +15,6 @@ pub mod manifest;
 pub mod memory;
 pub mod names;
 pub mod plot;
+pub mod record;
 pub mod sink;
 pub mod svg;

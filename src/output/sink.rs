@@ -34,7 +34,7 @@ use std::sync::{Arc, Mutex, PoisonError};
 
 use super::atomic;
 use super::csv::{CsvWriter, RowCheck};
-use super::memory::{Keep, Table, TableBuilder};
+use super::memory::{Keep, KeptFile, Table, TableBuilder};
 use super::names::Part;
 use super::plot::Figure;
 use crate::error::OutputError;
@@ -52,6 +52,8 @@ struct Record {
     written: Vec<PathBuf>,
     /// Tables kept in memory, in the order they were finished.
     tables: Vec<Table>,
+    /// Other files kept in memory, in the order they were written.
+    files: Vec<KeptFile>,
 }
 
 type Shared = Arc<Mutex<Record>>;
@@ -172,7 +174,8 @@ impl Sink {
     }
 
     /// Writes `bytes` as the file of `part` with extension `ext` (e.g. an
-    /// HTML page); in memory, drops them.
+    /// HTML page); in memory, keeps them with [`Keep::Tables`]
+    /// ([`Sink::take_files`]) and drops them with [`Keep::Nothing`].
     ///
     /// # Errors
     /// An I/O error or a protected path.
@@ -185,8 +188,29 @@ impl Sink {
                 self.wrote(path);
                 Ok(())
             }
-            Target::Memory(_) => Ok(()),
+            Target::Memory(Keep::Tables) => {
+                lock(&self.record).files.push(KeptFile {
+                    file: path.to_string_lossy().into_owned(),
+                    bytes: bytes.to_vec(),
+                });
+                Ok(())
+            }
+            Target::Memory(Keep::Nothing) => Ok(()),
         }
+    }
+
+    /// Whether a file handed to [`Sink::file`] is kept (written to the
+    /// directory, or kept in memory): false for [`Keep::Nothing`], so that
+    /// a run can skip making a file nobody will see.
+    pub fn keeps_files(&self) -> bool {
+        !matches!(self.target, Target::Memory(Keep::Nothing))
+    }
+
+    /// The files other than tables kept in memory so far, in the order
+    /// they were written, taken out of the sink (none in a directory or
+    /// with [`Keep::Nothing`]).
+    pub fn take_files(&self) -> Vec<KeptFile> {
+        std::mem::take(&mut lock(&self.record).files)
     }
 
     /// The files completed so far, in the order they were completed (none
@@ -342,7 +366,7 @@ mod tests {
             w.row(&[0.0, 1.0]).unwrap();
             let e = w.row(&[0.1, f64::NAN]).unwrap_err().to_string();
             assert!(
-                e.contains("n_x.csv") && e.contains("x_m") && e.contains("NaN"),
+                e.contains("n.x.csv") && e.contains("x_m") && e.contains("NaN"),
                 "{e}"
             );
             assert_eq!(w.rows(), 1);
@@ -375,8 +399,8 @@ mod tests {
             sink.written(),
             [
                 dir.join("s.csv"),
-                dir.join("s_note.txt"),
-                dir.join("s_fig.svg")
+                dir.join("s.note.txt"),
+                dir.join("s.fig.svg")
             ]
         );
         assert_eq!(
@@ -384,6 +408,24 @@ mod tests {
             "t_s\n1\n"
         );
         std::fs::remove_dir_all(&dir).unwrap();
+    }
+
+    #[test]
+    fn memory_keeps_other_files_whole_only_when_keeping_tables() {
+        let kept = Sink::memory("k", Keep::Tables);
+        assert!(kept.keeps_files());
+        kept.file(Part::Main, "html", b"<p>1</p>").unwrap();
+        kept.file(Part::Sub("x"), "txt", b"two").unwrap();
+        assert!(!Path::new("k.html").exists() && kept.written().is_empty());
+        let files = kept.take_files();
+        let names: Vec<&str> = files.iter().map(|f| f.file.as_str()).collect();
+        assert_eq!(names, ["k.html", "k.x.txt"]);
+        assert_eq!(files[0].bytes, b"<p>1</p>");
+        assert!(kept.take_files().is_empty());
+        let dropped = Sink::memory("d", Keep::Nothing);
+        assert!(!dropped.keeps_files());
+        dropped.file(Part::Main, "html", b"<p>1</p>").unwrap();
+        assert!(dropped.take_files().is_empty());
     }
 
     #[test]

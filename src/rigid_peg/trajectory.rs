@@ -109,10 +109,12 @@ pub fn simulate(
     method: Method,
     options: &Options,
 ) -> Result<Trajectory, ForwardError> {
-    simulate_with_progress(model, x0, (t0, t_end), method, options, &mut |_| {})
+    simulate_with_progress(model, x0, (t0, t_end), method, options, &mut |_| {}, None)
 }
 
-/// [`simulate`] calling `progress` with the time after every accepted step.
+/// [`simulate`] calling `progress` with the time after every accepted step,
+/// and stopping with [`StopReason::Interrupted`] once `interrupt` (when
+/// given) is requested.
 ///
 /// # Errors
 /// As [`simulate`].
@@ -123,6 +125,7 @@ pub fn simulate_with_progress(
     method: Method,
     options: &Options,
     progress: &mut dyn FnMut(f64),
+    interrupt: Option<&crate::integrate::Interrupt>,
 ) -> Result<Trajectory, ForwardError> {
     options.validate(t0, t_end)?;
     crate::rigid_peg::kinematics::Geometry::try_new(&model.params, x0[0])?;
@@ -205,6 +208,9 @@ pub fn simulate_with_progress(
         let mut solver = Solver::new(method, opts);
         for e in evs {
             solver = solver.with_event(e);
+        }
+        if let Some(i) = interrupt {
+            solver = solver.with_interrupt(i);
         }
         let mut solver = solver.with_progress(&mut *progress);
         let system = PegSystem { model, start };

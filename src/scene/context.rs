@@ -7,19 +7,40 @@ use crate::output::sink::{Sink, TableWriter};
 use crate::scene::progress::Progress;
 
 /// What a running scene gets from the caller: the sink its outputs go to
-/// (a directory or memory; the only way a scene writes a file) and a
-/// progress reporter.
+/// (a directory or memory; the only way a scene writes a file), a
+/// progress reporter, and whether replay pages are wanted.
 #[derive(Debug)]
 pub struct RunContext {
     sink: Sink,
     /// Progress reporter.
     pub progress: Progress,
+    replay: bool,
 }
 
 impl RunContext {
-    /// A context writing into `sink`.
+    /// A context writing into `sink`; replay pages are made when the sink
+    /// keeps files ([`Sink::keeps_files`]: not for a sweep's runs).
     pub fn new(sink: Sink, progress: Progress) -> Self {
-        RunContext { sink, progress }
+        let replay = sink.keeps_files();
+        RunContext {
+            sink,
+            progress,
+            replay,
+        }
+    }
+
+    /// The same context making no replay page (`pegdyn run --no-replay`),
+    /// whatever the scene's `[replay]` table says.
+    #[must_use]
+    pub fn without_replay(mut self) -> Self {
+        self.replay = false;
+        self
+    }
+
+    /// Whether the caller wants replay pages: a kind that makes one writes
+    /// it when this and its scene's `replay.page` are true.
+    pub fn replay_wanted(&self) -> bool {
+        self.replay
     }
 
     /// The scene's name (file stem), the stem of every output file.

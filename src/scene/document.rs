@@ -36,6 +36,10 @@ impl<'a> Document<'a> {
                 }],
             }
         })?;
+        let wide = wide_integers(text, &root);
+        if !wide.is_empty() {
+            return Err(SceneErrors { errors: wide });
+        }
         let mut doc = Document {
             text,
             root,
@@ -202,6 +206,56 @@ fn split_index(key: &str) -> (&str, Option<usize>) {
         .unwrap_or((key, None))
 }
 
+/// Every integer of the tree outside TOML's 64-bit signed range (the
+/// parser keeps integers as text, so `2^63` would otherwise reach the
+/// fields that take `u64` and be refused by every other TOML reader),
+/// named by its dotted path and located. The walk keeps its own stack: a
+/// deeply nested file cannot exhaust the thread's.
+fn wide_integers(text: &str, root: &Spanned<DeTable<'_>>) -> Vec<Located> {
+    type Stack<'t, 'i> = Vec<(String, &'t Spanned<DeValue<'i>>)>;
+    fn push_table<'t, 'i>(stack: &mut Stack<'t, 'i>, path: &str, t: &'t DeTable<'i>) {
+        for (k, v) in t.iter() {
+            let key = k.get_ref();
+            let sub = if path.is_empty() {
+                key.to_string()
+            } else {
+                format!("{path}.{key}")
+            };
+            stack.push((sub, v));
+        }
+    }
+    let mut found = Vec::new();
+    let mut stack = Stack::new();
+    push_table(&mut stack, "", root.get_ref());
+    while let Some((path, v)) = stack.pop() {
+        match v.get_ref() {
+            DeValue::Integer(i) if i64::from_str_radix(i.as_str(), i.radix()).is_err() => {
+                found.push(Located {
+                    error: SceneError::Invalid {
+                        field: path,
+                        value: text.get(v.span()).unwrap_or(i.as_str()).to_string(),
+                        reason: format!(
+                            "a TOML integer is a whole number from {} to {}",
+                            i64::MIN,
+                            i64::MAX
+                        ),
+                    },
+                    at: Some(location(text, v.span().start)),
+                });
+            }
+            DeValue::Table(t) => push_table(&mut stack, &path, t),
+            DeValue::Array(a) => {
+                for (k, item) in a.iter().enumerate() {
+                    stack.push((format!("{path}[{k}]"), item));
+                }
+            }
+            _ => {}
+        }
+    }
+    found.sort_by_key(|l| l.at.map(|a| (a.line, a.column)));
+    found
+}
+
 /// 1-based line and column of byte offset `at` in `text`.
 pub fn location(text: &str, at: usize) -> Location {
     let at = at.min(text.len());
@@ -319,6 +373,36 @@ mod tests {
         // An index beyond the array falls back to the array itself.
         let e = doc.locate_all(SceneErrors::from(SceneError::invalid("grid.v[7]", 0, "x")));
         assert_eq!(e.errors[0].at, Some(Location { line: 3, column: 5 }));
+    }
+
+    #[test]
+    fn integers_past_64_bits_are_refused_where_they_stand() {
+        let text = "kind = \"pendulum\"\n[limits]\nmax_steps = 10000000000000000000\n\
+                    [grid]\nn = [1, 0x8000000000000000, -9223372036854775808]\n\
+                    deep = { a = { b = -9223372036854775809 } }\n";
+        let e = Document::parse(text).err().unwrap();
+        let got: Vec<(String, String, usize)> = e
+            .errors
+            .iter()
+            .map(|l| match &l.error {
+                SceneError::Invalid { field, value, .. } => {
+                    (field.clone(), value.clone(), l.at.unwrap().line)
+                }
+                other => panic!("{other}"),
+            })
+            .collect();
+        assert_eq!(
+            got,
+            [
+                ("limits.max_steps".into(), "10000000000000000000".into(), 3),
+                ("grid.n[1]".into(), "0x8000000000000000".into(), 5),
+                ("grid.deep.a.b".into(), "-9223372036854775809".into(), 6),
+            ]
+        );
+        assert!(e.to_string().contains("9223372036854775807"), "{e}");
+        // The edges of the range are TOML integers.
+        let edge = "kind = \"k\"\na = 9223372036854775807\nb = -9223372036854775808\n";
+        assert!(Document::parse(edge).is_ok());
     }
 
     #[test]

@@ -19,7 +19,7 @@ use serde::{Deserialize, Deserializer};
 use crate::integrate::MethodKind;
 
 use crate::error::{SceneError, SceneErrors};
-use crate::scene::limits::{WorkItem, sample_count};
+use crate::scene::limits::{ReserveError, WorkItem, sample_count, try_with_capacity};
 use crate::scene::validate::Checker;
 
 /// The output times of an [`IntegratorSpec`]: `t0 + i dt` for
@@ -279,6 +279,20 @@ impl IntegratorSpec {
             n: last as u64,
             extra,
         }
+    }
+
+    /// [`Self::output_times`] collected, the memory reserved first:
+    /// a [`ReserveError`] naming `max_output_samples` rather than an
+    /// aborted process when the limits were raised past the machine.
+    ///
+    /// # Errors
+    /// The memory for the times cannot be reserved.
+    pub fn try_output_times(&self) -> Result<Vec<f64>, ReserveError> {
+        let count = sample_count(self.t0, self.t_end, self.output_interval());
+        // `as` saturates: an infinite count asks for `usize::MAX`, refused.
+        let mut times = try_with_capacity(count as usize, "output samples", "max_output_samples")?;
+        times.extend(self.output_times());
+        Ok(times)
     }
 
     /// The work this table asks for: the stored output samples (field

@@ -27,6 +27,8 @@ use serde::Deserialize;
 
 use crate::error::{SceneError, SceneErrors};
 
+pub use super::reserve::{ReserveError, try_with_capacity};
+
 /// The `[limits]` table: upper bounds on the work one scene may ask for.
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields, default)]

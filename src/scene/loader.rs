@@ -1,6 +1,7 @@
 //! Reading a scene: parse the TOML, dispatch on `kind` through the
-//! registry ([`crate::scene::kinds::KINDS`]), validate, bound the work by
-//! the scene's `[limits]`.
+//! registry ([`crate::scene::kinds::KINDS`]), check the kind's tables,
+//! bound the work they ask for by the scene's `[limits]`, and only then
+//! build the runnable scene.
 
 use std::path::Path;
 
@@ -9,7 +10,7 @@ use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::kind::Scene;
 use crate::scene::kinds::KINDS;
-use crate::scene::limits::LimitOverrides;
+use crate::scene::limits::{LimitOverrides, WorkItem};
 use crate::scene::summary::{RunSummary, StepFailure};
 
 /// A scene read from a file.
@@ -23,6 +24,8 @@ pub struct LoadedScene {
     pub description: Option<String>,
     /// The validated scene.
     pub scene: Box<dyn Scene>,
+    /// The work it asks for, as checked against its limits.
+    pub work: Vec<WorkItem>,
 }
 
 impl LoadedScene {
@@ -68,6 +71,7 @@ pub fn parse_named_with(
     name: &str,
     overrides: &LimitOverrides,
 ) -> Result<LoadedScene, SceneErrors> {
+    crate::output::names::check_scene_name(name).map_err(SceneError::from)?;
     let doc = Document::parse(text)?;
     let kind = KINDS.iter().find(|k| k.name == doc.kind()).ok_or_else(|| {
         doc.locate_all(SceneErrors::from(SceneError::UnknownKind {
@@ -75,16 +79,20 @@ pub fn parse_named_with(
             known: KINDS.iter().map(|k| k.name).collect::<Vec<_>>().join(", "),
         }))
     })?;
-    let scene = (kind.parse)(&doc).map_err(|e| doc.locate_all(e))?;
+    let written = (kind.parse)(&doc).map_err(|e| doc.locate_all(e))?;
+    // Bounded before anything the scene sizes is built.
+    let work = written.work();
     overrides
         .apply(doc.limits()?)
-        .check(&scene.work())
+        .check(&work)
         .map_err(|e| doc.locate_all(e))?;
+    let scene = written.build().map_err(|e| doc.locate_all(e))?;
     Ok(LoadedScene {
         name: name.to_string(),
         kind: kind.name,
         description: doc.description().map(str::to_string),
         scene,
+        work,
     })
 }
 
@@ -95,6 +103,17 @@ pub fn load(path: &Path) -> Result<LoadedScene, SceneErrors> {
 
 /// As [`load`], with `overrides` applied to the scene's `[limits]`.
 pub fn load_with(path: &Path, overrides: &LimitOverrides) -> Result<LoadedScene, SceneErrors> {
+    let (text, name) = read(path)?;
+    parse_named_with(&text, &name, overrides)
+}
+
+/// The text of the scene file at `path` and the scene's name, its file
+/// stem (lossy where the stem is not UTF-8). Read once: the text returned
+/// is the text to parse and to record.
+///
+/// # Errors
+/// [`SceneError::Io`] if the file cannot be read or is not UTF-8.
+pub fn read(path: &Path) -> Result<(String, String), SceneErrors> {
     let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
         path: path.to_path_buf(),
         source,
@@ -102,5 +121,5 @@ pub fn load_with(path: &Path, overrides: &LimitOverrides) -> Result<LoadedScene,
     let name = path
         .file_stem()
         .map_or_else(|| "scene".into(), |s| s.to_string_lossy().into_owned());
-    parse_named_with(&text, &name, overrides)
+    Ok((text, name))
 }

@@ -10,7 +10,7 @@
 //!
 //! The framework: [`kind`] (what a kind provides), [`loader`]
 //! (parse, dispatch, validate), [`document`], [`validate`], [`ranges`]
-//! (declared valid ranges), [`limits`], [`integrator`], [`context`] (the run
+//! (declared valid ranges), [`limits`] (and [`reserve`]), [`integrator`], [`context`] (the run
 //! context and its output sink), progress, summary and [`timescales`]. Each kind lives in
 //! [`kinds`], in a file or folder named as its `kind` string; tables and
 //! code several kinds share are in [`shared`] (a kind imports from there,
@@ -44,6 +44,7 @@ pub mod loader;
 mod numbers;
 mod progress;
 pub mod ranges;
+pub mod reserve;
 pub mod shared;
 pub(crate) mod simulate;
 mod summary;
@@ -54,7 +55,7 @@ pub mod validate;
 pub use context::RunContext;
 pub use document::Document;
 pub use integrator::{IntegratorSpec, Method};
-pub use kind::{Kind, Scene};
+pub use kind::{Kind, Scene, Written};
 pub use kinds::KINDS;
 pub use loader::{LoadedScene, load, load_with, parse, parse_named, parse_named_with};
 pub use numbers::significant;

@@ -15,12 +15,18 @@
 use std::io::{IsTerminal, Write};
 use std::time::{Duration, Instant};
 
+use crate::error::RunError;
+use crate::integrate::Interrupt;
 use crate::scene::numbers::significant;
 use crate::scene::timescales::TimeScales;
 
-/// Progress reporter handed to a running scene via its run context.
+/// Progress reporter handed to a running scene via its run context; it
+/// also carries the run's stop request ([`Interrupt`]), which the
+/// integrations of the run (`scene::simulate`) and its loops over
+/// many runs ([`par_map_counted`]) look at.
 #[derive(Debug)]
 pub struct Progress {
+    interrupt: Interrupt,
     enabled: bool,
     notices: bool,
     t0: f64,
@@ -110,6 +116,7 @@ impl Progress {
     /// is a terminal; the slow-run notice prints in any case.
     pub fn new(quiet: bool) -> Self {
         Progress {
+            interrupt: Interrupt::new(),
             enabled: !quiet && std::io::stderr().is_terminal(),
             notices: true,
             t0: 0.0,
@@ -134,6 +141,30 @@ impl Progress {
     /// is named as what sets the step).
     pub fn explain(&mut self, scales: Option<&TimeScales>) {
         self.cause = scales.and_then(|s| s.fastest()).map(|f| f.describe());
+    }
+
+    /// The same reporter, stopping when `interrupt` is requested.
+    #[must_use]
+    pub fn with_interrupt(mut self, interrupt: Interrupt) -> Self {
+        self.interrupt = interrupt;
+        self
+    }
+
+    /// The run's stop request.
+    pub fn interrupt(&self) -> &Interrupt {
+        &self.interrupt
+    }
+
+    /// [`RunError::Interrupted`] once a stop was requested.
+    ///
+    /// # Errors
+    /// The stop request.
+    pub fn check_interrupt(&self) -> Result<(), RunError> {
+        if self.interrupt.is_requested() {
+            Err(RunError::Interrupted)
+        } else {
+            Ok(())
+        }
     }
 
     /// Sets the simulated time span the percentage refers to.
@@ -236,37 +267,46 @@ impl Drop for Progress {
 
 /// `f` over `items` in parallel (rayon), counting each finished item on
 /// `progress` as `what` and finishing the line at the end; results in item
-/// order.
+/// order. Once `progress`'s stop is requested no further item starts.
+///
+/// # Errors
+/// [`RunError::Interrupted`] when a stop was requested before every item
+/// ran.
 pub fn par_map_counted<T: Sync, R: Send>(
     items: &[T],
     progress: &mut Progress,
     what: &str,
     f: impl Fn(&T) -> R + Sync + Send,
-) -> Vec<R> {
+) -> Result<Vec<R>, RunError> {
     use rayon::prelude::*;
     use std::sync::Mutex;
     use std::sync::atomic::{AtomicUsize, Ordering};
     let total = items.len();
     let done = AtomicUsize::new(0);
+    let interrupt = progress.interrupt().clone();
     let shared = Mutex::new(&mut *progress);
-    let out = items
+    let out: Option<Vec<R>> = items
         .par_iter()
         .map(|item| {
+            if interrupt.is_requested() {
+                return None;
+            }
             let r = f(item);
             let n = done.fetch_add(1, Ordering::Relaxed) + 1;
             if let Ok(mut pr) = shared.lock() {
                 pr.update_count(n, total, what);
             }
-            r
+            Some(r)
         })
         .collect();
     progress.finish();
-    out
+    out.ok_or(RunError::Interrupted)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use std::sync::atomic::{AtomicUsize, Ordering};
 
     #[test]
     fn a_run_is_slow_after_its_step_count_or_its_wall_time_and_says_why() {
@@ -306,5 +346,21 @@ mod tests {
         assert_eq!(eta(Duration::from_secs(3600), 0.5), ", ETA 1h00m");
         assert_eq!(eta(Duration::from_secs(1), 0.0), "");
         assert_eq!(eta(Duration::from_secs(1), f64::NAN), "");
+    }
+
+    #[test]
+    fn a_requested_stop_starts_no_further_item() {
+        let mut progress = Progress::silent();
+        let items: Vec<u32> = (0..64).collect();
+        let all = par_map_counted(&items, &mut progress, "item", |i| i * 2).unwrap();
+        assert_eq!(all[63], 126);
+        progress.interrupt().request();
+        let ran = AtomicUsize::new(0);
+        let r = par_map_counted(&items, &mut progress, "item", |_| {
+            ran.fetch_add(1, Ordering::Relaxed);
+        });
+        assert!(matches!(r, Err(RunError::Interrupted)));
+        assert_eq!(ran.load(Ordering::Relaxed), 0);
+        assert!(progress.check_interrupt().is_err());
     }
 }

@@ -32,7 +32,7 @@ pub fn solver_config(spec: &IntegratorSpec) -> Result<(integrate::Method, Option
     })?;
     let mut options = Options::with_tolerances(spec.rtol, spec.atol);
     options.max_steps = spec.max_steps;
-    options.output = OutputMode::AtTimes(spec.output_times().collect());
+    options.output = OutputMode::AtTimes(spec.try_output_times()?);
     if spec.method.is_adaptive() {
         options.h0 = spec.h;
     }
@@ -54,9 +54,17 @@ pub fn integrate<'a, const N: usize, S: OdeSystem<N>>(
 ) -> Result<Solution<N>, RunError> {
     let mut solver =
         configured(spec, events, true, progress)?.with_progress(|t| progress.update(t));
-    let mut sol = solver.solve(system, spec.t0, x0, spec.t_end)?;
+    let mut sol = interrupted(solver.solve(system, spec.t0, x0, spec.t_end)?)?;
     with_final_sample(&mut sol);
     Ok(sol)
+}
+
+/// The solution, or [`RunError::Interrupted`] when a stop was requested.
+fn interrupted<const N: usize>(sol: Solution<N>) -> Result<Solution<N>, RunError> {
+    match sol.stop {
+        StopReason::Interrupted { .. } => Err(RunError::Interrupted),
+        _ => Ok(sol),
+    }
 }
 
 /// Appends the final state `(t_final, x_final)` to the stored samples when
@@ -83,7 +91,8 @@ fn configured<'a, const N: usize>(
     progress.set_span(spec.t0, spec.t_end);
     Ok(events
         .into_iter()
-        .fold(Solver::new(method, options), Solver::with_event))
+        .fold(Solver::new(method, options), Solver::with_event)
+        .with_interrupt(progress.interrupt()))
 }
 
 /// As [`integrate`], without storing the samples: each sample goes to
@@ -130,7 +139,7 @@ pub fn integrate_streaming<'a, const N: usize, S: OdeSystem<N>>(
     }
     match failed {
         Some(e) => Err(e),
-        None => Ok(sol),
+        None => interrupted(sol),
     }
 }
 
@@ -154,6 +163,9 @@ pub fn describe_stop(stop: &StopReason, event_names: &[&str]) -> String {
              moduli over many decades, or a tolerance below f64 resolution)",
             significant(t)
         ),
+        StopReason::Interrupted { t } => {
+            format!("interrupted at t = {} s", significant(t))
+        }
         StopReason::MaxSteps { t, steps } => {
             format!(
                 "step budget of {steps} steps exhausted at t = {} s",

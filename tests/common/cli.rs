@@ -5,16 +5,48 @@
 
 #![allow(dead_code)]
 
+use std::ffi::OsStr;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+use std::process::{Child, Command, Output, Stdio};
 
 /// Runs the `pegdyn` binary with `args` in the crate root.
 pub fn pegdyn(args: &[&str]) -> Output {
+    pegdyn_os(args)
+}
+
+/// As [`pegdyn`], with arguments that need not be UTF-8 (paths).
+pub fn pegdyn_os<S: AsRef<OsStr>>(args: &[S]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_pegdyn"))
         .args(args)
         .current_dir(env!("CARGO_MANIFEST_DIR"))
         .output()
         .expect("the pegdyn binary runs")
+}
+
+/// Starts the `pegdyn` binary with `args` in the crate root, its output
+/// captured, without waiting for it.
+pub fn spawn_pegdyn(args: &[&str]) -> Child {
+    Command::new(env!("CARGO_BIN_EXE_pegdyn"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("the pegdyn binary starts")
+}
+
+/// Runs `pegdyn args` with its address space capped at `kib` KiB (`ulimit
+/// -v` in `sh`), so that an allocation the machine cannot hold fails
+/// instead of succeeding lazily.
+pub fn pegdyn_capped(kib: u64, args: &[&str]) -> Output {
+    Command::new("sh")
+        .arg("-c")
+        .arg(format!("ulimit -v {kib} && exec \"$0\" \"$@\""))
+        .arg(env!("CARGO_BIN_EXE_pegdyn"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("sh runs the pegdyn binary")
 }
 
 /// An empty directory `<prefix>-<test>` under the target's temporary dir,

@@ -216,12 +216,12 @@ fn design_margins_runs_end_to_end_and_writes_its_files() {
     assert!((metric("wedging possible") - 0.2 * 0.025 * 0.997).abs() < 1e-12);
     let grid = std::fs::read_to_string(dir.join("design.csv")).unwrap();
     assert_eq!(grid.lines().count(), 3, "{grid}");
-    let depth = std::fs::read_to_string(dir.join("design_depth.csv")).unwrap();
+    let depth = std::fs::read_to_string(dir.join("design.depth.csv")).unwrap();
     assert_eq!(depth.lines().count(), 65);
     // The nominal run reaches two-point contact: some rows carry its ratio.
     let simulated = depth.lines().skip(1).filter(|l| !l.ends_with(',')).count();
     assert!(simulated > 5, "{depth}");
-    for f in ["design.svg", "design_nojam.svg"] {
+    for f in ["design.svg", "design.nojam.svg"] {
         let svg = std::fs::read_to_string(dir.join(f)).unwrap();
         assert!(svg.contains("<svg"), "{f}");
     }

@@ -221,7 +221,10 @@ fn insert_rcc_runs_end_to_end_and_writes_its_files() {
     let text = variant(&[("seat_depth", "0.003"), ("output_interval", "2e-3")]);
     let s = run_scene(&text, "rcc");
     assert!(s.success());
-    assert_eq!(s.outputs.len(), 4);
+    // CSV, events, figure, views, and last the replay page.
+    assert_eq!(s.outputs.len(), 5);
+    let page = pegdyn::output::names::Part::Main.file_name("rcc", "html");
+    assert!(s.outputs[4].ends_with(page), "{:?}", s.outputs);
     for p in &s.outputs {
         assert!(std::fs::metadata(p).unwrap().len() > 100, "{}", p.display());
     }
@@ -246,7 +249,9 @@ fn insert_rcc_runs_end_to_end_and_writes_its_files() {
 fn drop_3d_runs_end_to_end_and_lists_transitions() {
     let text = include_str!("../../scenes/drop_3d.toml").replace("t_end = 0.05", "t_end = 0.01");
     let s = run_scene(&text, "drop");
-    assert_eq!(s.outputs.len(), 4);
+    assert_eq!(s.outputs.len(), 5);
+    let page = pegdyn::output::names::Part::Main.file_name("drop", "html");
+    assert!(s.outputs[4].ends_with(page), "{:?}", s.outputs);
     let events = std::fs::read_to_string(&s.outputs[1]).unwrap();
     assert!(
         events.starts_with("t_s,transition,contact_state"),

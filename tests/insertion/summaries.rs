@@ -198,7 +198,7 @@ fn drop_3d_says_when_its_list_of_transitions_is_cut() {
         if let Some(m) = note {
             assert!(
                 m.name.contains(&format!("the first 12 of {n}"))
-                    && m.name.contains("drop_events.csv"),
+                    && m.name.contains("drop.events.csv"),
                 "{}",
                 m.name
             );

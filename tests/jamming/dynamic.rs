@@ -51,7 +51,7 @@ fn sweep_scene_boundary_matches_the_exact_diagram() {
     assert_eq!(metric("points contradicting the exact diagram"), 0.0);
     let judged = metric("grid points judged");
     assert!(judged >= 15.0, "{judged}");
-    let csv = std::fs::read_to_string(dir.join("jamming_sweep.csv")).unwrap();
+    let csv = std::fs::read_to_string(dir.join("jamming.sweep.csv")).unwrap();
     let mut lines = csv.lines();
     assert_eq!(
         lines.next().unwrap(),
@@ -60,6 +60,6 @@ fn sweep_scene_boundary_matches_the_exact_diagram() {
     let classes: Vec<&str> = lines.map(|l| l.split(',').nth(2).unwrap()).collect();
     assert_eq!(classes.len(), 81);
     assert!(classes.contains(&"inserted") && classes.contains(&"jammed"));
-    assert!(dir.join("jamming_sweep.svg").exists());
+    assert!(dir.join("jamming.sweep.svg").exists());
     std::fs::remove_dir_all(&dir).unwrap();
 }

@@ -39,7 +39,7 @@ fn scene_file_writes_corners_wedging_and_svg() {
     let mut ctx = RunContext::new(sink, Progress::silent());
     loaded.run(&mut ctx).unwrap();
 
-    let (header, rows) = read_csv(&dir.join("jamming_corners.csv"));
+    let (header, rows) = read_csv(&dir.join("jamming.corners.csv"));
     assert_eq!(header, "l_m,c,mu,kind,fx_over_fz,m_over_rfz");
     // 2 c × 2 μ × (3 Whitney + 2 exact: l = 1 mm is too shallow) × 4 corners
     assert_eq!(rows.len(), 2 * 2 * 5 * 4);
@@ -57,7 +57,7 @@ fn scene_file_writes_corners_wedging_and_svg() {
         assert!(!(row[3] == "exact" && l == 0.001), "{row:?}");
     }
 
-    let (header, rows) = read_csv(&dir.join("wedging.csv"));
+    let (header, rows) = read_csv(&dir.join("jamming.wedging.csv"));
     assert_eq!(header, "c,mu,theta_wedge_rad");
     assert_eq!(rows.len(), 4);
     for row in &rows {

@@ -380,7 +380,7 @@ fn outputs_are_recorded_and_never_replace_the_scene() {
     std::fs::write(&scene, &text).unwrap();
     let out_dir = d.join("out");
     std::fs::create_dir_all(&out_dir).unwrap();
-    std::fs::write(out_dir.join("p_old.csv"), "t\n").unwrap();
+    std::fs::write(out_dir.join("p.old.csv"), "t\n").unwrap();
     let out = pegdyn(&[
         "run",
         scene.to_str().unwrap(),
@@ -389,7 +389,7 @@ fn outputs_are_recorded_and_never_replace_the_scene() {
     ]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{stderr}");
-    assert!(stderr.contains("p_old.csv"), "{stderr}");
+    assert!(stderr.contains("p.old.csv"), "{stderr}");
     let m: toml::Table = std::fs::read_to_string(out_dir.join("p.run.toml"))
         .unwrap()
         .parse()
@@ -402,7 +402,7 @@ fn outputs_are_recorded_and_never_replace_the_scene() {
         .filter_map(|v| v.as_str())
         .collect();
     assert_eq!(files, ["p.csv", "p.svg"]);
-    assert_eq!(m["stale"][0].as_str(), Some("p_old.csv"));
+    assert_eq!(m["stale"][0].as_str(), Some("p.old.csv"));
     assert!(m["scene_hash"].as_str().unwrap().starts_with("fnv1a64:"));
     // No temporary file is left.
     let names: Vec<String> = std::fs::read_dir(&out_dir)

@@ -48,7 +48,7 @@ use crate::rigid_peg::{Loads, RigidError};
 use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::IntegratorSpec;
-use crate::scene::kind::{Kind, Scene};
+use crate::scene::kind::{Kind, Scene, Written};
 use crate::scene::shared::rigid_peg::{self, PegTable};
 use crate::scene::simulate::solver_config;
 use crate::scene::summary::{EventRecord, IntegrationSummary, Metric, RunSummary};
@@ -62,7 +62,7 @@ pub const KIND: Kind = Kind {
     ranges: &[rigid_peg::PEG, rigid_peg::ALIGN_FORWARD],
 };
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: AlignForwardScene = doc.body()?;
     s.check()?;
     Ok(Box::new(s))
@@ -276,11 +276,17 @@ impl AlignForwardScene {
     }
 }
 
-impl Scene for AlignForwardScene {
+impl Written for AlignForwardScene {
     fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
         self.integrator.work("integrator")
     }
 
+    fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        Ok(self)
+    }
+}
+
+impl Scene for AlignForwardScene {
     fn describe(&self) -> String {
         let (p, i, l) = (self.peg.params(), &self.initial, &self.loads);
         format!(
@@ -301,9 +307,10 @@ impl Scene for AlignForwardScene {
         let model = self.forward_model()?;
         let spec = &self.integrator;
         let (method, mut options): (_, Options) = solver_config(spec)?;
-        options.output = OutputMode::AtTimes(spec.output_times().collect());
+        options.output = OutputMode::AtTimes(spec.try_output_times()?);
         let x0 = self.initial_state();
         ctx.progress.set_span(spec.t0, spec.t_end);
+        let interrupt = ctx.progress.interrupt().clone();
         let progress = &mut ctx.progress;
         let tr = simulate_with_progress(
             &model,
@@ -312,7 +319,9 @@ impl Scene for AlignForwardScene {
             method,
             &options,
             &mut |t| progress.update(t),
+            Some(&interrupt),
         )?;
+        ctx.progress.check_interrupt()?;
         let header = [
             "t", "gamma", "psi", "gammadot", "psidot", "N_K", "N_B1", "N_B2",
         ];

@@ -40,7 +40,7 @@ use crate::output::plot::{Figure, Panel, Series};
 use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::IntegratorSpec;
-use crate::scene::kind::{Kind, Scene};
+use crate::scene::kind::{Kind, Scene, Written};
 use crate::scene::limits::sample_count;
 use crate::scene::simulate::{integrate_streaming, integration_summary};
 use crate::scene::summary::{Metric, RunSummary};
@@ -56,7 +56,7 @@ pub const KIND: Kind = Kind {
     ranges: &[crate::scene::shared::pendulum::DOUBLE_PENDULUM],
 };
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: DoublePendulumScene = doc.body()?;
     s.check()?;
     Ok(Box::new(s))
@@ -110,11 +110,17 @@ impl DoublePendulumScene {
     }
 }
 
-impl Scene for DoublePendulumScene {
+impl Written for DoublePendulumScene {
     fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
         self.integrator.work("integrator")
     }
 
+    fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        Ok(self)
+    }
+}
+
+impl Scene for DoublePendulumScene {
     fn time_scales(&self) -> Option<crate::scene::TimeScales> {
         use crate::scene::{TimeScale, TimeScales, significant};
         let p = &self.double_pendulum;

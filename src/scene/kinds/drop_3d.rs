@@ -28,8 +28,10 @@
 //! ```
 //!
 //! Writes `<name>.csv` (time series, see [`output`]),
-//! `<name>_events.csv`, `<name>.svg` (forces and contact state against
-//! time) and `<name>_views.svg` (side and top views at each transition).
+//! `<name>.events.csv`, `<name>.svg` (forces and contact state against
+//! time), `<name>.views.svg` (side and top views at each transition) and
+//! the replay page `<name>.html` (`docs/replay.md`; `[replay] page = false`
+//! or `pegdyn run --no-replay` turns it off).
 
 use serde::Deserialize;
 
@@ -37,16 +39,22 @@ use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, lean_pose};
 use crate::compliant_peg_3d::outcome::{CountCache, transition_events};
 use crate::compliant_peg_3d::{Peg3dParams, pose_state};
 use crate::error::{RunError, SceneError, SceneErrors};
+use crate::integrate::EventHit;
 use crate::output::names::Part;
 use crate::output::plot::{Figure, Panel, Series};
+use crate::replay::{
+    self,
+    peg3d::{Meaning, Run3d},
+};
 use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::integrator::IntegratorSpec;
-use crate::scene::kind::{Kind, Scene};
+use crate::scene::kind::{Kind, Scene, Written};
 use crate::scene::ranges::FieldRange;
 use crate::scene::shared::compliant_peg_3d::tables::PegTable;
 use crate::scene::shared::compliant_peg_3d::{output, ranges};
+use crate::scene::shared::replay::{self as shared_replay, ReplayTable};
 use crate::scene::simulate::{integrate, integration_summary};
 use crate::scene::summary::{Metric, RunSummary};
 use crate::scene::validate::Checker;
@@ -125,6 +133,9 @@ pub struct DropScene {
     pub drop: DropTable,
     /// The `[integrator]` table.
     pub integrator: IntegratorSpec,
+    /// The `[replay]` table (optional).
+    #[serde(default)]
+    pub replay: ReplayTable,
 }
 
 #[derive(Debug)]
@@ -136,7 +147,7 @@ struct Ready {
     method_reason: &'static str,
 }
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: DropScene = doc.body()?;
     let mut c = Checker::default();
     let params = s.peg.build(&mut c);
@@ -177,11 +188,17 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
     }))
 }
 
-impl Scene for Ready {
+impl Written for Ready {
     fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
         self.scene.integrator.work("integrator")
     }
 
+    fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        Ok(self)
+    }
+}
+
+impl Scene for Ready {
     fn time_scales(&self) -> Option<crate::scene::TimeScales> {
         use crate::scene::shared::compliant_peg_3d::timescales;
         let m0 = self.scene.drop.aligning_moment;
@@ -292,6 +309,20 @@ impl Scene for Ready {
         for r in rows.iter().take(LISTED) {
             out.metrics
                 .push(Metric::new(format!("{} ({})", r.what, r.state), r.t, "s"));
+        }
+        if self.scene.replay.wanted(ctx) {
+            let meaning =
+                |e: &EventHit<N_STATE>| what.get(e.index).map(|w| Meaning::Transition(*w));
+            let page = replay::peg3d::page(&Run3d {
+                title: ctx.name(),
+                subtitle: "compliant 3-D peg released leaning on the mouth, spinning, under an \
+                           aligning moment"
+                    .into(),
+                system: &sys,
+                solution: &sol,
+                meaning: &meaning,
+            })?;
+            shared_replay::write(ctx, &page)?;
         }
         Ok(out)
     }

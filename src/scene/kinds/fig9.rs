@@ -35,7 +35,8 @@ use crate::output::plot::{Figure, Panel, Scale, Series};
 use crate::rigid_peg::prescribed::{Fig9Row, fig9_rows, gamma_grid};
 use crate::scene::context::RunContext;
 use crate::scene::document::Document;
-use crate::scene::kind::{Kind, Scene};
+use crate::scene::kind::{Kind, Scene, Written};
+use crate::scene::limits::try_with_capacity;
 use crate::scene::shared::rigid_peg::{self, PegTable, check_rate};
 use crate::scene::summary::{Metric, RunSummary};
 use crate::scene::validate::Checker;
@@ -48,7 +49,7 @@ pub const KIND: Kind = Kind {
     ranges: &[rigid_peg::PEG],
 };
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: Fig9Scene = doc.body()?;
     s.check()?;
     Ok(Box::new(s))
@@ -110,6 +111,14 @@ impl Fig9Scene {
             self.gamma.end.unwrap_or(f64::NAN),
             self.gamma.count.unwrap_or(2),
         )
+    }
+
+    /// The number of γ values (after [`Fig9Scene::check`]).
+    fn gamma_count(&self) -> usize {
+        self.gamma
+            .values
+            .as_ref()
+            .map_or(self.gamma.count.unwrap_or(2), Vec::len)
     }
 
     /// Validates every field, reporting all problems.
@@ -205,12 +214,13 @@ impl Fig9Scene {
     }
 }
 
-impl Scene for Fig9Scene {
+impl Written for Fig9Scene {
     fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
-        let (field, gammas) = match (&self.gamma.values, self.gamma.count) {
-            (Some(v), _) => ("gamma.values", v.len() as f64),
-            (None, n) => ("gamma.count", n.unwrap_or(2) as f64),
+        let field = match &self.gamma.values {
+            Some(_) => "gamma.values",
+            None => "gamma.count",
         };
+        let gammas = self.gamma_count() as f64;
         // One row of a dozen numbers per grid point, and the plot's copy.
         vec![
             crate::scene::limits::WorkItem::new(
@@ -223,6 +233,12 @@ impl Scene for Fig9Scene {
         ]
     }
 
+    fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        Ok(self)
+    }
+}
+
+impl Scene for Fig9Scene {
     fn describe(&self) -> String {
         let p = self.peg.params();
         format!(
@@ -239,6 +255,14 @@ impl Scene for Fig9Scene {
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
         let p = self.peg.params();
         p.validate()?;
+        // The table's rows, reserved first: with limits raised past the
+        // machine this is a typed error, not an aborted process.
+        let points = self.gamma_count() * self.motion.psidot.len();
+        drop(try_with_capacity::<Fig9Row>(
+            points,
+            "grid points",
+            "max_grid_points",
+        )?);
         let gammas = self.gammas();
         let rows = fig9_rows(&p, &gammas, self.motion.gammadot, &self.motion.psidot)?;
         let header = [

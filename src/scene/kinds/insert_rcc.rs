@@ -40,10 +40,12 @@
 //! output_interval = 1e-3
 //! ```
 //!
-//! Writes `<name>.csv` (time series), `<name>_events.csv` (contact
+//! Writes `<name>.csv` (time series), `<name>.events.csv` (contact
 //! transitions), `<name>.svg` (Whitney's plot: insertion force and the
 //! wrist's lateral force and moment against depth; contact forces and the
-//! contact-state timeline against time) and `<name>_views.svg`.
+//! contact-state timeline against time), `<name>.views.svg` and the replay
+//! page `<name>.html` (`docs/replay.md`; `[replay] page = false` or
+//! `pegdyn run --no-replay` turns it off).
 
 use crate::compliant_peg_3d::outcome::TERMINAL_NAMES;
 use crate::error::{RunError, SceneErrors};
@@ -53,11 +55,13 @@ use crate::output::plot::{Figure, Panel, Series};
 use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::{DefaultMethod, IntegratorSpec};
-use crate::scene::kind::{Kind, Scene};
+use crate::scene::kind::{Kind, Scene, Written};
 use crate::scene::limits::WorkItem;
 use crate::scene::numbers::significant;
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, outcome_text, run_one};
+use crate::scene::shared::compliant_peg_3d::replay::insertion;
 use crate::scene::shared::compliant_peg_3d::{margins, output, ranges, timescales};
+use crate::scene::shared::replay;
 use crate::scene::simulate::{describe_stop, integration_summary};
 use crate::scene::summary::{Metric, RunSummary};
 
@@ -77,7 +81,7 @@ struct Ready {
     method_reason: &'static str,
 }
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: RccScene = doc.body()?;
     let built = s.build()?;
     let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::NON_STIFF);
@@ -89,11 +93,17 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
     }))
 }
 
-impl Scene for Ready {
+impl Written for Ready {
     fn work(&self) -> Vec<WorkItem> {
         self.scene.integrator.work("integrator")
     }
 
+    fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        Ok(self)
+    }
+}
+
+impl Scene for Ready {
     fn time_scales(&self) -> Option<crate::scene::TimeScales> {
         let scales = timescales::held(&self.built.params, &self.built.held);
         Some(crate::scene::TimeScales::new(&self.integrator, scales))
@@ -228,6 +238,10 @@ impl Scene for Ready {
             ));
         }
         out.metrics.extend(margin_metrics);
+        if self.scene.replay.wanted(ctx) {
+            let what = "compliant 3-D peg held by a compliant wrist";
+            replay::write(ctx, &insertion(ctx.name(), what, &run)?)?;
+        }
         Ok(out)
     }
 }

@@ -36,7 +36,7 @@ use crate::output::plot::{Figure, Panel, Series};
 use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::IntegratorSpec;
-use crate::scene::kind::{Kind, Scene};
+use crate::scene::kind::{Kind, Scene, Written};
 use crate::scene::limits::sample_count;
 use crate::scene::simulate::{integrate_streaming, integration_summary};
 use crate::scene::summary::{Metric, RunSummary};
@@ -52,7 +52,7 @@ pub const KIND: Kind = Kind {
     ranges: &[crate::scene::shared::pendulum::PENDULUM],
 };
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: PendulumScene = doc.body()?;
     s.check()?;
     Ok(Box::new(s))
@@ -88,11 +88,17 @@ impl PendulumScene {
     }
 }
 
-impl Scene for PendulumScene {
+impl Written for PendulumScene {
     fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
         self.integrator.work("integrator")
     }
 
+    fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        Ok(self)
+    }
+}
+
+impl Scene for PendulumScene {
     fn time_scales(&self) -> Option<crate::scene::TimeScales> {
         use crate::scene::{TimeScale, TimeScales, significant};
         let p = &self.pendulum;

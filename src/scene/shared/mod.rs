@@ -8,9 +8,12 @@
 //! - [`compliant_peg_3d`]: the `[peg]`, `[wrist]`, `[robot]` and
 //!   `[criteria]` tables of the compliant 3-D peg kinds (`drop_3d`,
 //!   `insert_rcc`, `rotation_assist`, `design_margins`), their ranges, one
-//!   held-peg insertion run, its outputs and margins.
+//!   held-peg insertion run, its outputs, margins and replay page;
+//! - [`replay`]: the `[replay]` table of the kinds that write a replay
+//!   page, and the page's file.
 
 pub mod compliant_peg_3d;
 pub mod material;
 pub mod pendulum;
+pub mod replay;
 pub mod rigid_peg;

@@ -24,7 +24,7 @@ use crate::output::names::Part;
 use crate::scene::context::RunContext;
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::progress::Progress;
-use crate::scene::shared::compliant_peg_3d::insertion::{Built, outcome_text, run_one};
+use crate::scene::shared::compliant_peg_3d::insertion::{Built, Run, outcome_text, run_one};
 use crate::scene::shared::compliant_peg_3d::margins::ratio;
 use crate::scene::shared::compliant_peg_3d::output::samples;
 use crate::scene::summary::Metric;
@@ -46,12 +46,19 @@ pub struct Nominal {
     pub two_point_from: Option<f64>,
 }
 
-/// Integrates the nominal insertion and extracts its load ratio.
+/// Integrates the nominal insertion and extracts its load ratio; with
+/// `track`, the contact transitions are located too (for the replay page:
+/// the same trajectory, the transitions only observe it) and the run is
+/// handed back.
 ///
 /// # Errors
 /// The integrator's refusal or a Hertz setup error.
-pub fn nominal(b: &Built, spec: &IntegratorSpec) -> Result<Nominal, RunError> {
-    let run = run_one(b, spec, false, &mut Progress::silent())?;
+pub fn nominal(
+    b: &Built,
+    spec: &IntegratorSpec,
+    track: bool,
+) -> Result<(Nominal, Option<Run>), RunError> {
+    let run = run_one(b, spec, track, &mut Progress::silent())?;
     let s = samples(&run.system, &run.solution)?;
     let two_point_from = s
         .rows
@@ -61,12 +68,13 @@ pub fn nominal(b: &Built, spec: &IntegratorSpec) -> Result<Nominal, RunError> {
                 && smp.depth > b.params.mouth_fillet
         })
         .map(|(_, _, smp)| smp.depth);
-    Ok(Nominal {
-        outcome: run.outcome,
+    let nominal = Nominal {
+        outcome: run.outcome.clone(),
         end: run.solution.t_final,
         ratio: ratio(&b.params, &s),
         two_point_from,
-    })
+    };
+    Ok((nominal, track.then_some(run)))
 }
 
 impl Nominal {
@@ -179,7 +187,7 @@ pub fn table(
         .collect()
 }
 
-/// Writes `<name>_depth.csv`.
+/// Writes `<name>.depth.csv`.
 ///
 /// # Errors
 /// An output error.

@@ -8,11 +8,13 @@ use super::ranges;
 use crate::compliant_peg_3d::outcome::Outcome;
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::scene::integrator::{DefaultMethod, IntegratorSpec};
+use crate::scene::limits::try_with_capacity;
 use crate::scene::progress::{Progress, par_map_counted};
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, at_grid_point, run_one};
 use crate::scene::shared::compliant_peg_3d::tables::{
     CriteriaTable, PegTable, RobotTable, WristTable,
 };
+use crate::scene::shared::replay::GridReplayTable;
 use crate::scene::validate::Checker;
 
 /// The `[grid]` table.
@@ -44,6 +46,9 @@ pub struct DesignScene {
     pub grid: GridTable,
     /// `[integrator]`.
     pub integrator: IntegratorSpec,
+    /// `[replay]` (optional; the page shows the nominal run by default).
+    #[serde(default)]
+    pub replay: GridReplayTable,
 }
 
 /// One grid point: the robot's initial errors.
@@ -141,6 +146,7 @@ impl DesignScene {
             robot,
             criteria,
             integrator: self.integrator.clone(),
+            replay: Default::default(),
         }
     }
 
@@ -152,18 +158,28 @@ impl DesignScene {
             robot: self.robot.clone(),
             criteria: self.criteria.clone(),
             integrator: self.integrator.clone(),
+            replay: Default::default(),
         }
     }
 
-    /// Validates every table and builds every grid point.
+    /// Validates every table and builds every grid point: [`Self::checked`]
+    /// then [`Checked::build`].
     ///
     /// # Errors
     /// Every invalid field, named (grid points by their list index).
     pub fn prepare(&self) -> Result<Design, SceneErrors> {
+        self.checked()?.build()
+    }
+
+    /// Validates every table and the nominal insertion, building no grid
+    /// point.
+    ///
+    /// # Errors
+    /// Every invalid field, named (list entries by their index).
+    pub fn checked(&self) -> Result<Checked, SceneErrors> {
         let nominal = self.nominal().build()?;
         let mut c = Checker::default();
         let g = &self.grid;
-        let d = nominal.params.hole_diameter;
         for (name, list, range) in [
             (
                 "centre_lateral_errors",
@@ -202,8 +218,48 @@ impl DesignScene {
                 ));
             }
         }
+        if let Some(run) = self.replay.run {
+            let points = g.centre_lateral_errors.len() * g.angular_errors_deg.len();
+            if let Err(e) = run.check(points) {
+                c.push(e);
+            }
+        }
         c.finish()?;
-        let mut points = Vec::new();
+        Ok(Checked {
+            scene: self.clone(),
+            nominal,
+        })
+    }
+}
+
+/// A `design_margins` scene whose tables and nominal insertion are
+/// valid, its grid not yet built.
+#[derive(Debug, Clone)]
+pub struct Checked {
+    /// The scene as written.
+    pub scene: DesignScene,
+    /// The nominal insertion.
+    pub nominal: Built,
+}
+
+impl Checked {
+    /// The number of grid points, from the lists' lengths.
+    pub fn grid_points(&self) -> f64 {
+        let g = &self.scene.grid;
+        g.centre_lateral_errors.len() as f64 * g.angular_errors_deg.len() as f64
+    }
+
+    /// Builds every grid point's insertion.
+    ///
+    /// # Errors
+    /// A grid point whose tip error leaves the robot's range (naming the
+    /// list entry), or the memory for the points cannot be reserved.
+    pub fn build(self) -> Result<Design, SceneErrors> {
+        let Checked { scene, nominal } = self;
+        let n = scene.grid.centre_lateral_errors.len() * scene.grid.angular_errors_deg.len();
+        let mut points = try_with_capacity(n, "grid points", "max_runs")
+            .map_err(|e| SceneErrors::from(SceneError::invalid("grid", n, e.to_string())))?;
+        let (g, d) = (&scene.grid, nominal.params.hole_diameter);
         let mut c = Checker::default();
         for (i, &centre_lateral) in g.centre_lateral_errors.iter().enumerate() {
             for (j, &angular_deg) in g.angular_errors_deg.iter().enumerate() {
@@ -211,7 +267,7 @@ impl DesignScene {
                     centre_lateral,
                     angular_deg,
                 };
-                let rcc = self.as_rcc(&p);
+                let rcc = scene.as_rcc(&p);
                 // The robot accepts tip errors within ±2 D: name the grid
                 // entry that leads there.
                 if rcc.robot.lateral_error.abs() > 2.0 * d {
@@ -259,9 +315,9 @@ impl DesignScene {
             friction: prm.friction,
             centre_height: nominal.held.wrist.centre_height,
         };
-        let (integrator, method_reason) = self.integrator.resolved(DefaultMethod::NON_STIFF);
+        let (integrator, method_reason) = scene.integrator.resolved(DefaultMethod::NON_STIFF);
         Ok(Design {
-            scene: self.clone(),
+            scene,
             nominal,
             points,
             capture,
@@ -290,7 +346,7 @@ impl Design {
     pub fn run_grid(&self, progress: &mut Progress) -> Result<Vec<GridRun>, RunError> {
         par_map_counted(&self.points, progress, "insertion", |(p, b)| {
             self.one(*p, b)
-        })
+        })?
         .into_iter()
         .collect()
     }

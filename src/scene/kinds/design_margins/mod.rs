@@ -23,12 +23,13 @@
 //! The errors lie along `robot.lateral_error_direction_deg`; the robot
 //! places the tip at `e_c − L_c sin θ (cos ψ, sin ψ)`.
 //!
-//! Writes `<name>.csv` (one row per grid point), `<name>_depth.csv` (the
+//! Writes `<name>.csv` (one row per grid point), `<name>.depth.csv` (the
 //! analytic margins against depth with the nominal run's load ratio),
 //! `<name>.svg` (the success region: simulated outcome per grid point with
-//! the capture rule's boundaries) and `<name>_nojam.svg` (Whitney's no-jam
+//! the capture rule's boundaries) and `<name>.nojam.svg` (Whitney's no-jam
 //! region at several depths with the wrist's load ratio, and the margin
-//! against depth).
+//! against depth) and the replay page `<name>.html` of one run:
+//! `replay.run = "nominal"` (default), `"worst"` or a grid index.
 
 pub mod chamfer;
 pub mod depth;
@@ -37,16 +38,19 @@ mod figures;
 pub mod ranges;
 pub mod report;
 
-pub use design::{Design, DesignScene, GridRun, GridTable, Point};
+pub use design::{Checked, Design, DesignScene, GridRun, GridTable, Point};
 
 use crate::error::{RunError, SceneErrors};
 use crate::output::names::Part;
 use crate::scene::context::RunContext;
 use crate::scene::document::Document;
-use crate::scene::kind::{Kind, Scene};
+use crate::scene::kind::{Kind, Scene, Written};
 use crate::scene::limits::WorkItem;
 use crate::scene::numbers::significant;
+use crate::scene::shared::compliant_peg_3d::insertion::Built;
 use crate::scene::shared::compliant_peg_3d::ranges as peg_3d;
+use crate::scene::shared::compliant_peg_3d::replay;
+use crate::scene::shared::replay::RunChoice;
 use crate::scene::summary::RunSummary;
 
 /// Registry entry.
@@ -63,23 +67,32 @@ pub const KIND: Kind = Kind {
     ],
 };
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: DesignScene = doc.body()?;
-    Ok(Box::new(s.prepare()?))
+    Ok(Box::new(s.checked()?))
 }
 
-impl Scene for Design {
+impl Written for Checked {
     fn work(&self) -> Vec<WorkItem> {
         let mut w = self.scene.integrator.work("integrator");
+        // Every point's insertion is built before the runs start, and
+        // every run keeps its row; one more run is the nominal insertion.
+        let each = std::mem::size_of::<(Point, Built)>() + std::mem::size_of::<GridRun>();
         w.push(WorkItem::new(
             "grid",
             "max_runs",
-            (self.points.len() + 1) as f64,
-            0.0,
+            self.grid_points() + 1.0,
+            each as f64,
         ));
         w
     }
 
+    fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        Ok(Box::new(Checked::build(*self)?))
+    }
+}
+
+impl Scene for Design {
     fn describe(&self) -> String {
         let w = &self.nominal.held.wrist;
         format!(
@@ -100,14 +113,17 @@ impl Scene for Design {
     }
 
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
+        let page = self.scene.replay.wanted(ctx);
+        let choice = self.scene.replay.run.unwrap_or(RunChoice::Nominal);
+        let track = page && choice == RunChoice::Nominal;
         let (nominal, grid) = {
             let progress = &mut ctx.progress;
             rayon::join(
-                || depth::nominal(&self.nominal, &self.integrator),
+                || depth::nominal(&self.nominal, &self.integrator, track),
                 || self.run_grid(progress),
             )
         };
-        let nominal = nominal?;
+        let (nominal, nominal_run) = nominal?;
         let rows = grid?;
         report::write_grid(ctx, &rows)?;
         let table = depth::table(
@@ -122,6 +138,24 @@ impl Scene for Design {
         let mut metrics = report::analytic_metrics(self);
         metrics.extend(nominal.metrics(&self.nominal.params, self.scene.peg.clearance_ratio));
         metrics.extend(report::grid_metrics(&rows));
+        if page {
+            let outcomes: Vec<(bool, f64)> = rows.iter().map(|r| (r.seated(), r.end)).collect();
+            let describe = |p: &Point| {
+                format!(
+                    "compliance centre's lateral error {} m, angular error {} deg",
+                    p.centre_lateral, p.angular_deg
+                )
+            };
+            replay::write_grid(
+                ctx,
+                choice,
+                &outcomes,
+                &self.points,
+                describe,
+                &self.integrator,
+                || Ok(nominal_run),
+            )?;
+        }
         Ok(RunSummary {
             metrics,
             ..RunSummary::default()

@@ -41,6 +41,7 @@ use serde::Deserialize;
 mod model_errors;
 pub mod output;
 pub mod ranges;
+pub mod replay;
 mod start;
 
 use model_errors::{tilt_error, to_scene_error};
@@ -57,8 +58,9 @@ use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::integrator::IntegratorSpec;
-use crate::scene::kind::{Kind, Scene};
+use crate::scene::kind::{Kind, Scene, Written};
 use crate::scene::shared::material::{MaterialSpec, steel};
+use crate::scene::shared::replay::ReplayTable;
 use crate::scene::simulate::{integrate, integration_summary};
 use crate::scene::summary::RunSummary;
 use crate::scene::validate::Checker;
@@ -73,7 +75,7 @@ pub const KIND: Kind = Kind {
     ranges: &[ranges::INSERT_COMPLIANT],
 };
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: InsertCompliantScene = doc.body()?;
     let built = s.build()?;
     let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::STIFF_CONTACT);
@@ -188,6 +190,9 @@ pub struct InsertCompliantScene {
     pub insert_compliant: InsertParams,
     /// The `[integrator]` table.
     pub integrator: IntegratorSpec,
+    /// The `[replay]` table (optional).
+    #[serde(default)]
+    pub replay: ReplayTable,
 }
 
 /// What the scene builds from its tables.
@@ -340,11 +345,17 @@ impl InsertCompliantScene {
     }
 }
 
-impl Scene for Ready {
+impl Written for Ready {
     fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
         self.scene.integrator.work("integrator")
     }
 
+    fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        Ok(self)
+    }
+}
+
+impl Scene for Ready {
     fn time_scales(&self) -> Option<crate::scene::TimeScales> {
         let scales = start::time_scales(&self.built, &self.scene.insert_compliant);
         Some(crate::scene::TimeScales::new(&self.integrator, scales))
@@ -426,7 +437,16 @@ impl Ready {
             integration: Some(integration_summary(&self.integrator, &sol, &["inserted"])),
             ..RunSummary::default()
         };
-        write_outputs(ctx, sample, &sol, &mut out)?;
+        write_outputs(ctx, &sample, &sol, &mut out)?;
+        if self.scene.replay.wanted(ctx) {
+            replay::write(
+                ctx,
+                &self.scene.insert_compliant,
+                &self.built,
+                &sol,
+                &sample,
+            )?;
+        }
         Ok(out)
     }
 }

@@ -11,10 +11,10 @@
 //! l_m = [0.001, 0.005, 0.01]   # insertion depths l, m, each > 0
 //! ```
 //!
-//! Writes `<out>/jamming_corners.csv` (`l_m,c,mu,kind,fx_over_fz,m_over_rfz`:
+//! Writes `<out>/<name>.corners.csv` (`l_m,c,mu,kind,fx_over_fz,m_over_rfz`:
 //! every corner of Whitney's small-angle parallelogram and of the exact
 //! finite-angle one; no exact rows where two-point contact is impossible),
-//! `<out>/wedging.csv` (`c,mu,theta_wedge_rad`; `inf` where wedging is
+//! `<out>/<name>.wedging.csv` (`c,mu,theta_wedge_rad`; `inf` where wedging is
 //! impossible at any tilt) and `<out>/<name>.svg` (the diagrams, Fig. 6
 //! style). An optional `[sweep]` table adds the dynamic check of one
 //! diagram ([`sweep`]).
@@ -34,7 +34,8 @@ use crate::output::names::Part;
 use crate::output::plot::Figure;
 use crate::scene::context::RunContext;
 use crate::scene::document::Document;
-use crate::scene::kind::{Kind, Scene};
+use crate::scene::kind::{Kind, Scene, Written};
+use crate::scene::limits::try_with_capacity;
 use crate::scene::summary::{Metric, RunSummary};
 use crate::scene::validate::Checker;
 use sweep::SweepParams;
@@ -47,12 +48,9 @@ pub const KIND: Kind = Kind {
     ranges: &[ranges::JAMMING, ranges::SWEEP],
 };
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
-    let mut s: JammingScene = doc.body()?;
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
+    let s: JammingScene = doc.body()?;
     s.check()?;
-    if let Some(sweep) = &s.sweep {
-        s.setup = Some(sweep.prepare()?);
-    }
     Ok(Box::new(s))
 }
 
@@ -142,7 +140,7 @@ impl JammingScene {
     }
 }
 
-impl Scene for JammingScene {
+impl Written for JammingScene {
     fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
         use crate::scene::limits::WorkItem;
         let mut work = vec![WorkItem::new(
@@ -160,6 +158,15 @@ impl Scene for JammingScene {
         work
     }
 
+    fn build(mut self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        if let Some(sweep) = &self.sweep {
+            self.setup = Some(sweep.prepare()?);
+        }
+        Ok(self)
+    }
+}
+
+impl Scene for JammingScene {
     fn describe(&self) -> String {
         let p = &self.jamming;
         let mut text = format!(
@@ -191,11 +198,27 @@ impl Scene for JammingScene {
 
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
         let p = &self.jamming;
+        // The tables' rows (eight corners per point) and the sweep's runs,
+        // reserved first: with limits raised past the machine a typed
+        // error, not an aborted process.
+        let points = p.c.len() * p.mu.len() * p.l_m.len();
+        drop(try_with_capacity::<table::CornerRow>(
+            points.saturating_mul(8),
+            "grid points",
+            "max_grid_points",
+        )?);
+        if let Some(s) = &self.sweep {
+            drop(try_with_capacity::<crate::jamming::dynamic::DynamicPoint>(
+                s.n.saturating_mul(s.n).saturating_mul(2),
+                "sweep runs",
+                "max_runs",
+            )?);
+        }
         let corners = table::corner_rows(p.r_m, &p.c, &p.mu, &p.l_m)?;
         let wedging = table::wedging_rows(p.r_m, &p.c, &p.mu)?;
 
         let header = ["l_m", "c", "mu", "kind", "fx_over_fz", "m_over_rfz"];
-        let mut w = ctx.table(Part::Fixed("jamming_corners"), &header)?;
+        let mut w = ctx.table(Part::Sub("corners"), &header)?;
         for row in &corners {
             let cells = [
                 format_f64(row.l),
@@ -209,7 +232,7 @@ impl Scene for JammingScene {
         }
         w.finish()?;
 
-        let mut w = ctx.table(Part::Fixed("wedging"), &["c", "mu", "theta_wedge_rad"])?;
+        let mut w = ctx.table(Part::Sub("wedging"), &["c", "mu", "theta_wedge_rad"])?;
         // `inf`: no tilt wedges the peg (documented above), not an overflow.
         w.allow_infinite("theta_wedge_rad");
         for row in &wedging {

@@ -32,8 +32,8 @@
 //! make the runs stiff, and an explicit method's steps are bounded by that
 //! time constant however smooth the motion (see docs/BENCHMARKS.md).
 //!
-//! Writes `<out>/jamming_sweep.csv` (`fx_over_fz,m_over_rfz,class,lean_plus,
-//! lean_minus,margin_exact,margin_whitney`) and `<out>/jamming_sweep.svg`
+//! Writes `<out>/<name>.sweep.csv` (`fx_over_fz,m_over_rfz,class,lean_plus,
+//! lean_minus,margin_exact,margin_whitney`) and `<out>/<name>.sweep.svg`
 //! (simulated classes as markers, exact parallelogram solid, Whitney's
 //! dashed).
 
@@ -273,6 +273,7 @@ pub fn run(
         )?
     };
     ctx.progress.finish();
+    ctx.progress.check_interrupt()?;
     let whitney = whitney_parallelogram(&setup.spec.peg, setup.depth)?;
 
     let header = [
@@ -284,7 +285,7 @@ pub fn run(
         "margin_exact",
         "margin_whitney",
     ];
-    let mut w = ctx.table(Part::Fixed("jamming_sweep"), &header)?;
+    let mut w = ctx.table(Part::Sub("sweep"), &header)?;
     for p in &points {
         let q = p.point.ratio;
         let cells = [
@@ -299,10 +300,7 @@ pub fn run(
         w.row_cells(&cells.each_ref().map(String::as_str))?;
     }
     w.finish()?;
-    ctx.figure(
-        Part::Fixed("jamming_sweep"),
-        &figure(setup, &whitney, &points),
-    )?;
+    ctx.figure(Part::Sub("sweep"), &figure(setup, &whitney, &points))?;
 
     let plain: Vec<_> = points.iter().map(|p| p.point).collect();
     let exact = sweep::check(&setup.diagram, &plain, grid.resolution());

@@ -35,13 +35,14 @@ use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::integrator::IntegratorSpec;
-use crate::scene::kind::{Kind, Scene};
-use crate::scene::limits::WorkItem;
+use crate::scene::kind::{Kind, Scene, Written};
+use crate::scene::limits::{WorkItem, try_with_capacity};
 use crate::scene::progress::{Progress, par_map_counted};
 use crate::scene::shared::compliant_peg_3d::insertion::{
     Built, RccScene, at_grid_point, outcome_text, run_one,
 };
-use crate::scene::shared::compliant_peg_3d::{ranges, tables};
+use crate::scene::shared::compliant_peg_3d::{ranges, replay, tables};
+use crate::scene::shared::replay::{GridReplayTable, RunChoice};
 use crate::scene::summary::{Metric, RunSummary};
 use crate::scene::validate::Checker;
 use grid::{ANGULAR_ERRORS, LATERAL_ERRORS, PRECESSION_RATES, SPIN_RATES, YIELD_PRESSURE};
@@ -92,6 +93,9 @@ pub struct SweepScene {
     pub grid: GridTable,
     /// `[integrator]`.
     pub integrator: IntegratorSpec,
+    /// `[replay]` (optional; the page shows the worst run by default).
+    #[serde(default)]
+    pub replay: GridReplayTable,
 }
 
 /// One grid point.
@@ -107,6 +111,8 @@ struct Point {
 struct Ready {
     scene: SweepScene,
     points: Vec<(Point, Built)>,
+    /// The `[robot]` table's own run, when `replay.run = "nominal"`.
+    nominal: Option<Built>,
     integrator: IntegratorSpec,
     method_reason: &'static str,
 }
@@ -124,11 +130,12 @@ impl SweepScene {
             robot,
             criteria: self.criteria.clone(),
             integrator: self.integrator.clone(),
+            replay: Default::default(),
         }
     }
 }
 
-fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
+fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: SweepScene = doc.body()?;
     let mut c = Checker::default();
     let g = &s.grid;
@@ -173,35 +180,100 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Scene>, SceneErrors> {
     ranges::ANGULAR_ERROR.require(&mut c, r.angular_error_deg);
     ranges::PRECESSION_RATE.require(&mut c, r.precession_rate);
     ranges::SPIN_RATE.require(&mut c, r.spin_rate);
+    // The integrator's span sets the work estimate: checked before it.
+    c.extend(s.integrator.check("integrator"));
+    if let Some(run) = s.replay.run {
+        // A product of list lengths past `usize` saturates: every index is then in range.
+        if let Err(e) = run.check(s.grid_points() as usize) {
+            c.push(e);
+        }
+    }
     c.finish()?;
-    let mut points = Vec::new();
-    let mut c = Checker::default();
-    for (i, &lateral) in g.lateral_errors.iter().enumerate() {
-        for (j, &angular_deg) in g.angular_errors_deg.iter().enumerate() {
-            for (k, &precession) in g.precession_rates.iter().enumerate() {
-                for (l, &spin) in g.spin_rates.iter().enumerate() {
-                    let p = Point {
-                        lateral,
-                        angular_deg,
-                        precession,
-                        spin,
-                    };
-                    match s.as_rcc(&p).build() {
-                        Ok(built) => points.push((p, built)),
-                        Err(e) => grid_point_errors(e, &p, [i, j, k, l], &mut c),
+    Ok(Box::new(s))
+}
+
+impl SweepScene {
+    /// The number of grid points, from the lists' lengths (as f64: a
+    /// product of four lengths may not fit a `usize`).
+    fn grid_points(&self) -> f64 {
+        let g = &self.grid;
+        [
+            g.lateral_errors.len(),
+            g.angular_errors_deg.len(),
+            g.precession_rates.len(),
+            g.spin_rates.len(),
+        ]
+        .iter()
+        .map(|&n| n as f64)
+        .product()
+    }
+}
+
+impl Written for SweepScene {
+    fn work(&self) -> Vec<WorkItem> {
+        let mut w = self.integrator.work("integrator");
+        // Every point's insertion is built before the runs start, and
+        // every run keeps its row.
+        let each = std::mem::size_of::<(Point, Built)>() + std::mem::size_of::<Row>();
+        w.push(WorkItem::new(
+            "grid",
+            "max_runs",
+            self.grid_points(),
+            each as f64,
+        ));
+        w
+    }
+
+    fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
+        let s = *self;
+        let g = &s.grid;
+        let n = s.grid_points();
+        let mut points = try_with_capacity(n as usize, "grid points", "max_runs").map_err(|e| {
+            SceneErrors::from(crate::error::SceneError::invalid("grid", n, e.to_string()))
+        })?;
+        // Each point's refusals named as the grid's entries.
+        let mut c = Checker::default();
+        for (i, &lateral) in g.lateral_errors.iter().enumerate() {
+            for (j, &angular_deg) in g.angular_errors_deg.iter().enumerate() {
+                for (k, &precession) in g.precession_rates.iter().enumerate() {
+                    for (l, &spin) in g.spin_rates.iter().enumerate() {
+                        let p = Point {
+                            lateral,
+                            angular_deg,
+                            precession,
+                            spin,
+                        };
+                        match s.as_rcc(&p).build() {
+                            Ok(built) => points.push((p, built)),
+                            Err(e) => grid_point_errors(e, &p, [i, j, k, l], &mut c),
+                        }
                     }
                 }
             }
         }
+        c.finish()?;
+        let nominal = match s.replay.run {
+            Some(RunChoice::Nominal) => {
+                let r = &s.robot;
+                let p = Point {
+                    lateral: r.lateral_error,
+                    angular_deg: r.angular_error_deg,
+                    precession: r.precession_rate,
+                    spin: r.spin_rate,
+                };
+                Some(s.as_rcc(&p).build()?)
+            }
+            _ => None,
+        };
+        let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::NON_STIFF);
+        Ok(Box::new(Ready {
+            scene: s,
+            points,
+            nominal,
+            integrator,
+            method_reason,
+        }))
     }
-    c.finish()?;
-    let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::NON_STIFF);
-    Ok(Box::new(Ready {
-        scene: s,
-        points,
-        integrator,
-        method_reason,
-    }))
 }
 
 /// The errors of the grid point `p` at list indices `at` (lateral,
@@ -262,17 +334,6 @@ fn one(p: Point, b: &Built, spec: &IntegratorSpec) -> Result<Row, RunError> {
 }
 
 impl Scene for Ready {
-    fn work(&self) -> Vec<WorkItem> {
-        let mut w = self.scene.integrator.work("integrator");
-        w.push(WorkItem::new(
-            "grid",
-            "max_runs",
-            self.points.len() as f64,
-            0.0,
-        ));
-        w
-    }
-
     fn describe(&self) -> String {
         format!(
             "rotation assist: {} insertions ({} lateral x {} angular errors x {} precession x {} \
@@ -290,7 +351,7 @@ impl Scene for Ready {
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
         let rows = par_map_counted(&self.points, &mut ctx.progress, "insertion", |(p, b)| {
             one(*p, b, &self.integrator)
-        });
+        })?;
         let rows: Vec<Row> = rows.into_iter().collect::<Result<_, _>>()?;
         let yield_p = self.scene.grid.yield_pressure;
         let mut csv = ctx.table(
@@ -369,6 +430,30 @@ impl Scene for Ready {
             pmax / yield_p,
             "",
         ));
+        if self.scene.replay.wanted(ctx) {
+            let outcomes: Vec<(bool, f64)> = rows.iter().map(|r| (r.seated, r.end)).collect();
+            let describe = |p: &Point| {
+                format!(
+                    "lateral error {} m, angular error {} deg, precession {} rad/s, spin {} rad/s",
+                    p.lateral, p.angular_deg, p.precession, p.spin
+                )
+            };
+            let spec = &self.integrator;
+            let nominal = || {
+                let run = |b| run_one(b, spec, true, &mut Progress::silent());
+                self.nominal.as_ref().map(run).transpose()
+            };
+            let choice = self.scene.replay.run.unwrap_or(RunChoice::Worst);
+            replay::write_grid(
+                ctx,
+                choice,
+                &outcomes,
+                &self.points,
+                describe,
+                spec,
+                nominal,
+            )?;
+        }
         Ok(out)
     }
 }

@@ -22,6 +22,7 @@ use crate::integrate::{Solution, StopReason};
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::numbers::significant;
 use crate::scene::progress::Progress;
+use crate::scene::shared::replay::ReplayTable;
 use crate::scene::simulate::{describe_stop, integrate};
 use crate::scene::validate::Checker;
 use crate::system::ModelError;
@@ -40,6 +41,9 @@ pub struct RccScene {
     pub criteria: CriteriaTable,
     /// `[integrator]`.
     pub integrator: IntegratorSpec,
+    /// `[replay]` (optional).
+    #[serde(default)]
+    pub replay: ReplayTable,
 }
 
 /// A validated held peg, ready to run.

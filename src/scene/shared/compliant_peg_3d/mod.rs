@@ -3,14 +3,15 @@
 //! the `[peg]`, `[wrist]`, `[robot]` and `[criteria]` tables ([`tables`])
 //! and their declared ranges ([`ranges`]), one held-peg insertion run
 //! ([`insertion`]), its time series and events ([`output`]) and views
-//! ([`views`]), its
-//! no-jam margins ([`margins`]) and the check of its start pose
-//! ([`start`]), its time scales ([`timescales`]).
+//! ([`views`]), its no-jam margins ([`margins`]), the check of its start
+//! pose ([`start`]), its time scales ([`timescales`]) and its replay page
+//! ([`replay`]).
 
 pub mod insertion;
 pub mod margins;
 pub mod output;
 pub mod ranges;
+pub mod replay;
 pub mod start;
 pub mod tables;
 pub mod timescales;

@@ -242,7 +242,7 @@ pub fn transitions(sys: &Insertion, sol: &Solution<N_STATE>, what: &[Transition]
         .collect()
 }
 
-/// Writes `<name>_events.csv` (`t_s, transition, contact_state, depth_m,
+/// Writes `<name>.events.csv` (`t_s, transition, contact_state, depth_m,
 /// tilt_rad`).
 ///
 /// # Errors

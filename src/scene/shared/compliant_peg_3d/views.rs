@@ -88,7 +88,7 @@ pub fn views(sys: &Insertion, y: &SVector<f64, N_STATE>, title: &str) -> [Panel;
     [side, top_view]
 }
 
-/// Writes `<name>_views.svg`: side and top views at the start, at each
+/// Writes `<name>.views.svg`: side and top views at the start, at each
 /// event (at most `max` of them) and at the end.
 ///
 /// # Errors
