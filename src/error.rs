@@ -26,13 +26,13 @@ pub enum SceneError {
         message: String,
     },
     /// A required field is absent.
-    #[error("missing field `{field}`")]
+    #[error("missing field `{}`", shown(field))]
     Missing {
         /// Dotted path of the missing field, e.g. `pendulum.length`.
         field: String,
     },
     /// A field that this scene kind does not know (often a typo).
-    #[error("unknown field `{field}`; {expected}")]
+    #[error("unknown field `{}`; {expected}", shown(field))]
     Unknown {
         /// Dotted path of the unknown field.
         field: String,
@@ -40,7 +40,11 @@ pub enum SceneError {
         expected: String,
     },
     /// A field holds a value of the wrong TOML type.
-    #[error("`{field}` has the wrong type: found {found}, expected {expected}")]
+    #[error(
+        "`{}` has the wrong type: found {}, expected {expected}",
+        shown(field),
+        shown(found)
+    )]
     WrongType {
         /// Dotted path of the field.
         field: String,
@@ -51,7 +55,7 @@ pub enum SceneError {
     },
     /// A field holds a value of the right type that is not acceptable
     /// (NaN, negative mass, `t_end <= t0`, an unknown method name, ...).
-    #[error("`{field}` = {value}: {reason}")]
+    #[error("`{}` = {}: {reason}", shown(field), shown(value))]
     Invalid {
         /// Dotted path of the field.
         field: String,
@@ -64,7 +68,10 @@ pub enum SceneError {
     #[error(transparent)]
     Name(#[from] crate::output::names::NameError),
     /// The `kind` field names no registered scene kind.
-    #[error("`kind` = {value:?}: unknown scene kind; known kinds: {known}")]
+    #[error(
+        "`kind` = {}: unknown scene kind; known kinds: {known}",
+        shown(&format!("{value:?}"))
+    )]
     UnknownKind {
         /// The kind as written.
         value: String,
@@ -98,6 +105,29 @@ impl SceneError {
             SceneError::UnknownKind { .. } => Some("kind"),
         }
     }
+}
+
+/// Longest text of the scene file an error message repeats whole (a key,
+/// a value): longer text is cut, so that a megabyte key is not echoed to
+/// the terminal.
+pub const SHOWN_CHARS: usize = 80;
+
+/// `text` as an error message shows it: whole up to [`SHOWN_CHARS`]
+/// characters, else its first 60 characters and how long it is.
+///
+/// ```
+/// use pegdyn::error::shown;
+/// assert_eq!(shown("pendulum.length"), "pendulum.length");
+/// let long = "x".repeat(10_000_000);
+/// let s = shown(&long);
+/// assert!(s.len() < 100 && s.ends_with("… (10000000 bytes)"), "{s}");
+/// ```
+pub fn shown(text: &str) -> std::borrow::Cow<'_, str> {
+    if text.chars().nth(SHOWN_CHARS).is_none() {
+        return text.into();
+    }
+    let head: String = text.chars().take(60).collect();
+    format!("{head}… ({} bytes)", text.len()).into()
 }
 
 /// A position in a scene file, 1-based.
@@ -258,6 +288,18 @@ pub enum RunError {
     /// state (relative curvature not positive).
     #[error("Hertz contact: {0}")]
     Hertz(#[from] crate::hertz::HertzError),
+    /// The contact law refused a state during a run, with the time and
+    /// the scene fields that set the refused quantity.
+    #[error("Hertz contact refused at t = {t} s: {source}; {fields}")]
+    HertzAt {
+        /// Time of the run's last state, s.
+        t: f64,
+        /// The scene fields that set the law, with their values and what
+        /// to change, in words.
+        fields: String,
+        /// The law's refusal.
+        source: crate::hertz::HertzError,
+    },
     /// The run's replay page could not be made (a run without samples, a
     /// non-finite number in the record, a state the model refuses).
     #[error("replay page: {0}")]

@@ -352,7 +352,7 @@ pub enum LeanError {
 /// sharp-edged peg and hole (`crate::rigid_peg::kinematics::Pose`: peg
 /// side on the edge at K, bottom rim on the edge at B1, B2), lowered along
 /// the hole's axis until the filleted surfaces first touch (bisection to
-/// 1e-10 m). Returns the centre of mass and the orientation (axis
+/// 1e-10 m, or 1e-7 of the smaller fillet when that is finer). Returns the centre of mass and the orientation (axis
 /// `−sin γ e_η + cos γ e_z`, no twist).
 ///
 /// # Errors
@@ -406,9 +406,13 @@ pub fn lean_pose(
     } else if !touches(hi) {
         return Err(LeanError::NoContact(hi));
     }
-    // Bisection to 0.1 nm, at most 200 halvings (a peg of any size).
+    // Bisection to 0.1 nm, or 1e-7 of the smaller fillet when that is
+    // finer (a micrometre peg touches within 1e-14 m, not within 0.1 nm,
+    // which would press its fillets far into the block), at most 200
+    // halvings (a peg of any size).
+    let tolerance = 1e-10_f64.min(1e-7 * prm.rim_fillet.min(prm.mouth_fillet));
     for _ in 0..200 {
-        if hi - lo <= 1e-10 {
+        if hi - lo <= tolerance {
             break;
         }
         let mid = 0.5 * (lo + hi);

@@ -182,6 +182,7 @@ impl SweepSetup {
             InsertionOutcome::Inserted { .. } => RunClass::Inserted,
             InsertionOutcome::Jammed { .. } => RunClass::Jammed,
             InsertionOutcome::Wedged { .. } => RunClass::Wedged,
+            InsertionOutcome::Failed { .. } => RunClass::Failed,
             _ => RunClass::Other,
         })
     }
@@ -203,6 +204,7 @@ fn combine(a: RunClass, b: RunClass) -> RunClass {
     match (a, b) {
         (Wedged, _) | (_, Wedged) => Wedged,
         (Jammed, _) | (_, Jammed) => Jammed,
+        (Failed, _) | (_, Failed) => Failed,
         (Inserted, Inserted) => Inserted,
         _ => Other,
     }

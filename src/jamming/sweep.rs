@@ -21,8 +21,11 @@ pub enum RunClass {
     Jammed,
     /// Stopped in two-point contact with the contact line inside both cones.
     Wedged,
-    /// Anything else (left the hole, no contact, unfinished, failed).
+    /// Anything else (left the hole, no contact, unfinished).
     Other,
+    /// The integrator could not finish the run (step size underflow,
+    /// non-finite values, step budget).
+    Failed,
 }
 
 impl RunClass {
@@ -33,6 +36,7 @@ impl RunClass {
             RunClass::Jammed => "jammed",
             RunClass::Wedged => "wedged",
             RunClass::Other => "other",
+            RunClass::Failed => "failed",
         }
     }
 
@@ -124,8 +128,11 @@ pub struct BoundaryCheck {
     pub mismatches: Vec<SweepPoint>,
     /// Points farther than `tolerance` from the boundary (the ones judged).
     pub judged: usize,
-    /// Points of class [`RunClass::Other`] (not judged).
+    /// Points of class [`RunClass::Other`] or [`RunClass::Failed`] (not
+    /// judged).
     pub other: usize,
+    /// Of [`Self::other`], the points of class [`RunClass::Failed`].
+    pub failed: usize,
     /// Distance to the boundary within which any class is accepted.
     pub tolerance: f64,
 }
@@ -138,11 +145,13 @@ pub fn check(par: &Parallelogram, points: &[SweepPoint], tolerance: f64) -> Boun
         mismatches: Vec::new(),
         judged: 0,
         other: 0,
+        failed: 0,
         tolerance,
     };
     for p in points {
-        if p.class == RunClass::Other {
+        if matches!(p.class, RunClass::Other | RunClass::Failed) {
             out.other += 1;
+            out.failed += usize::from(p.class == RunClass::Failed);
             continue;
         }
         let margin = par.margin(p.ratio);

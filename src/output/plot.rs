@@ -42,6 +42,11 @@ pub struct Series {
     pub style: Style,
     /// Colour index into a fixed palette; `None` = the series' position.
     pub color: Option<usize>,
+    /// A shade of the grey ramp instead, `(step, steps)`: step 0 light,
+    /// step `steps − 1` black. For ordered bands of one quantity (e.g. a
+    /// force's quartiles), so that they never share a colour with the
+    /// palette's categories (e.g. outcomes) in the same figure.
+    pub shade: Option<(usize, usize)>,
 }
 
 impl Series {
@@ -52,6 +57,7 @@ impl Series {
             points,
             style: Style::Solid,
             color: None,
+            shade: None,
         }
     }
 
@@ -64,6 +70,13 @@ impl Series {
     /// The same series with a fixed palette colour.
     pub fn colored(mut self, color: usize) -> Self {
         self.color = Some(color);
+        self
+    }
+
+    /// The same series in shade `step` of `steps` of the grey ramp (light
+    /// to black; see [`Series::shade`]).
+    pub fn shaded(mut self, step: usize, steps: usize) -> Self {
+        self.shade = Some((step, steps));
         self
     }
 

@@ -18,6 +18,8 @@ use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
 
 use crate::error::OutputError;
+use crate::output::axes::{bounds, drawable, tick};
+use crate::output::legend;
 use crate::output::plot::{Figure, Panel, Scale, Style};
 
 const PALETTE: [RGBColor; 8] = [
@@ -30,6 +32,14 @@ const PALETTE: [RGBColor; 8] = [
     RGBColor(227, 119, 194),
     RGBColor(127, 127, 127),
 ];
+
+/// Shade `step` of `steps` of the grey ramp: from light grey (170) at
+/// step 0 to black at the last step.
+fn shade(step: usize, steps: usize) -> RGBColor {
+    let last = steps.saturating_sub(1).max(1) as f64;
+    let level = (170.0 * (1.0 - (step as f64 / last).min(1.0))).round() as u8;
+    RGBColor(level, level, level)
+}
 
 impl Figure {
     /// Renders to an SVG string.
@@ -83,15 +93,18 @@ impl Figure {
                         panel: panel.title.clone(),
                     });
                 };
+                let plan = legend::plan(panel, plotting_area(area.dim_in_pixel(), panel), x, y);
+                let (y, legend) = (plan.y, plan.position);
                 let (xs, ys) = (x.1 - x.0, y.1 - y.0);
                 let (xl, yl) = ((x.0..x.1).log_scale(), (y.0..y.1).log_scale());
                 let (xr, yr) = (x.0..x.1, y.0..y.1);
                 let clip = (x, y);
+                let (area, l) = ((area, panel), legend);
                 let r = match (panel.x_scale, panel.y_scale) {
-                    (Scale::Linear, Scale::Linear) => draw(area, panel, clip, (xr, xs), (yr, ys)),
-                    (Scale::Linear, Scale::Log) => draw(area, panel, clip, (xr, xs), (yl, 0.0)),
-                    (Scale::Log, Scale::Linear) => draw(area, panel, clip, (xl, 0.0), (yr, ys)),
-                    (Scale::Log, Scale::Log) => draw(area, panel, clip, (xl, 0.0), (yl, 0.0)),
+                    (Scale::Linear, Scale::Linear) => draw(area, clip, (xr, xs), (yr, ys), l),
+                    (Scale::Linear, Scale::Log) => draw(area, clip, (xr, xs), (yl, 0.0), l),
+                    (Scale::Log, Scale::Linear) => draw(area, clip, (xl, 0.0), (yr, ys), l),
+                    (Scale::Log, Scale::Log) => draw(area, clip, (xl, 0.0), (yl, 0.0), l),
                 };
                 r.map_err(plot_err)?;
             }
@@ -101,113 +114,31 @@ impl Figure {
     }
 }
 
-/// Whether point coordinate `v` can be drawn on an axis of scale `s`.
-fn drawable(v: f64, s: Scale) -> bool {
-    v.is_finite() && (s == Scale::Linear || v > 0.0)
+/// The chart layout of every panel: title, margins, axis label areas.
+fn chart<'a, 'b, DB: DrawingBackend + 'a>(
+    area: &'a DrawingArea<DB, Shift>,
+    title: &'b str,
+) -> ChartBuilder<'a, 'b, DB> {
+    let mut b = ChartBuilder::on(area);
+    b.caption(title, ("sans-serif", 20))
+        .margin(12)
+        .x_label_area_size(40)
+        .y_label_area_size(70);
+    b
 }
 
-/// Largest magnitude an axis end may take: the axis width `hi − lo` must
-/// stay finite (plotters' tick search divides by it and loops without end
-/// on an infinite or NaN width). Points beyond are drawn off the chart.
-const AXIS_LIMIT: f64 = 1e300;
-
-/// Largest and inverse smallest end of a log axis: the ratio of the ends
-/// must stay finite (plotters counts decades as `ln(end/start)` and loops
-/// without end when it is infinite).
-const LOG_AXIS_LIMIT: f64 = 1e150;
-
-/// Smallest axis width relative to the largest magnitude on the axis:
-/// below, ticks are closer than f64 resolves and plotters' tick search
-/// never finds a spacing (it kept dividing the spacing by ten).
-const MIN_RELATIVE_WIDTH: f64 = 1e-9;
-
-/// Axis range over the drawable points of the panel, padded by 5 % on a
-/// linear axis and to whole decades' fractions on a log axis, then made
-/// safe to draw ([`drawable_range`]).
-fn bounds(panel: &Panel, s: Scale, pick: impl Fn(&(f64, f64)) -> f64) -> Option<(f64, f64)> {
-    let (xs, ys) = (panel.x_scale, panel.y_scale);
-    let vals = panel
-        .series
-        .iter()
-        .flat_map(|se| se.points.iter())
-        .filter(|p| drawable(p.0, xs) && drawable(p.1, ys))
-        .map(pick);
-    let (lo, hi) = vals.fold(None, |acc: Option<(f64, f64)>, v| {
-        Some(acc.map_or((v, v), |(l, h)| (l.min(v), h.max(v))))
-    })?;
-    Some(drawable_range(lo, hi, s))
-}
-
-/// The axis `[lo, hi]` (data extremes, `lo <= hi`) padded and bounded so
-/// that its ends are within `±AXIS_LIMIT` (log: `[1/LOG_AXIS_LIMIT,
-/// LOG_AXIS_LIMIT]`) and its width is at least `MIN_RELATIVE_WIDTH` of its
-/// largest magnitude (log: a ratio of at least 4).
-fn drawable_range(lo: f64, hi: f64, s: Scale) -> (f64, f64) {
-    match s {
-        Scale::Linear => {
-            let (lo, hi) = (
-                lo.clamp(-AXIS_LIMIT, AXIS_LIMIT),
-                hi.clamp(-AXIS_LIMIT, AXIS_LIMIT),
-            );
-            let pad = if hi > lo {
-                0.05 * (hi - lo)
-            } else {
-                0.5 * lo.abs().max(1.0)
-            };
-            let (lo, hi) = (
-                (lo - pad).max(-1.1 * AXIS_LIMIT),
-                (hi + pad).min(1.1 * AXIS_LIMIT),
-            );
-            let magnitude = lo.abs().max(hi.abs());
-            let half = 0.5 * MIN_RELATIVE_WIDTH * magnitude;
-            if hi - lo >= 2.0 * half {
-                (lo, hi)
-            } else {
-                let mid = 0.5 * lo + 0.5 * hi;
-                (mid - half, mid + half)
-            }
-        }
-        Scale::Log => {
-            let (lo, hi) = (
-                lo.clamp(1.0 / LOG_AXIS_LIMIT, LOG_AXIS_LIMIT),
-                hi.clamp(1.0 / LOG_AXIS_LIMIT, LOG_AXIS_LIMIT),
-            );
-            if hi > 4.0 * lo {
-                (lo / 1.2, hi * 1.2)
-            } else {
-                (lo / 2.0, hi * 2.0)
-            }
-        }
-    }
-}
-
-/// A short tick label: `0` when `|v|` is below `1e-9 * span` (rounding
-/// noise on a linear axis of width `span`), up to four decimals in
-/// `[1e-3, 1e5)`, otherwise three significant digits in scientific
-/// notation; trailing zeros dropped.
-fn tick(v: f64, span: f64) -> String {
-    let a = v.abs();
-    if a <= 1e-9 * span {
-        return "0".into();
-    }
-    if (1e-3..1e5).contains(&a) {
-        let s = format!("{v:.4}");
-        let s = s.trim_end_matches('0').trim_end_matches('.');
-        if s == "-0" { "0".into() } else { s.into() }
-    } else {
-        let s = format!("{v:.2e}");
-        match s.split_once('e') {
-            Some((m, e)) => {
-                let m = if m.contains('.') {
-                    m.trim_end_matches('0').trim_end_matches('.')
-                } else {
-                    m
-                };
-                format!("{m}e{e}")
-            }
-            None => s,
-        }
-    }
+/// The size in pixels of the plotting area of `panel` in an area of
+/// `dims` pixels (the layout of [`chart`], measured on a scratch drawing).
+fn plotting_area(dims: (u32, u32), panel: &Panel) -> (f64, f64) {
+    let mut scratch = String::new();
+    let root = SVGBackend::with_string(&mut scratch, dims).into_drawing_area();
+    chart(&root, &panel.title)
+        .build_cartesian_2d(0.0..1.0, 0.0..1.0)
+        .map(|c| {
+            let (w, h) = c.plotting_area().dim_in_pixel();
+            (f64::from(w), f64::from(h))
+        })
+        .unwrap_or((f64::from(dims.0), f64::from(dims.1)))
 }
 
 /// Splits points into runs of drawable points.
@@ -227,11 +158,11 @@ fn segments(points: &[(f64, f64)], xs: Scale, ys: Scale) -> Vec<Vec<(f64, f64)>>
 }
 
 fn draw<X, Y>(
-    area: &DrawingArea<SVGBackend<'_>, Shift>,
-    panel: &Panel,
+    (area, panel): (&DrawingArea<SVGBackend<'_>, Shift>, &Panel),
     clip: ((f64, f64), (f64, f64)),
     (x, x_span): (X, f64),
     (y, y_span): (Y, f64),
+    legend: legend::Place,
 ) -> Result<(), String>
 where
     X: AsRangedCoord<Value = f64>,
@@ -239,11 +170,7 @@ where
     X::CoordDescType: ValueFormatter<f64>,
     Y::CoordDescType: ValueFormatter<f64>,
 {
-    let mut chart = ChartBuilder::on(area)
-        .caption(&panel.title, ("sans-serif", 20))
-        .margin(12)
-        .x_label_area_size(40)
-        .y_label_area_size(70)
+    let mut chart = chart(area, &panel.title)
         .build_cartesian_2d(x, y)
         .map_err(|e| e.to_string())?;
     chart
@@ -256,7 +183,10 @@ where
         .draw()
         .map_err(|e| e.to_string())?;
     for (i, s) in panel.series.iter().enumerate() {
-        let color = PALETTE[s.color.unwrap_or(i) % PALETTE.len()];
+        let color = match s.shade {
+            Some((step, steps)) => shade(step, steps),
+            None => PALETTE[s.color.unwrap_or(i) % PALETTE.len()],
+        };
         let line = ShapeStyle::from(color).stroke_width(2);
         let mut labelled = s.name.is_empty();
         for seg in segments(&s.points, panel.x_scale, panel.y_scale) {
@@ -284,16 +214,24 @@ where
             if !labelled {
                 labelled = true;
                 let style = s.style;
-                // Both arms build the same element type: a dashed legend is
-                // two short strokes, a solid one a full stroke and an empty one.
+                // One element type for every style: a dashed legend is two
+                // short strokes, a solid one a full stroke and an empty one,
+                // a marker series its marker (a ring) and an empty stroke.
                 let (a, b) = if style == Style::Dashed {
                     (7, 13)
                 } else {
                     (20, 20)
                 };
+                let first: Vec<(i32, i32)> = if style == Style::Markers {
+                    // A small closed ring about the symbol's middle: the
+                    // marker, drawn with the line's 2-pixel stroke.
+                    vec![(12, 0), (11, 2), (9, 2), (8, 0), (9, -2), (11, -2), (12, 0)]
+                } else {
+                    vec![(0, 0), (a, 0)]
+                };
                 anno.label(s.name.as_str()).legend(move |(x, y)| {
                     EmptyElement::at((x, y))
-                        + PathElement::new(vec![(0, 0), (a, 0)], line)
+                        + PathElement::new(first.clone(), line)
                         + PathElement::new(vec![(b, 0), (20, 0)], line)
                 });
             }
@@ -302,7 +240,7 @@ where
     if panel.series.iter().any(|s| !s.name.is_empty()) {
         chart
             .configure_series_labels()
-            .position(SeriesLabelPosition::UpperRight)
+            .position(legend.position())
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK)
             .draw()
@@ -318,16 +256,6 @@ mod tests {
 
     fn count(svg: &str, what: &str) -> usize {
         svg.matches(what).count()
-    }
-
-    #[test]
-    fn tick_labels_are_short() {
-        assert_eq!(tick(1e-11 * (1.0 - f64::EPSILON), 0.0), "1e-11");
-        assert_eq!(tick(-1e-17, 2.0), "0");
-        assert_eq!(tick(-1e-17, 1e-15), "-1e-17");
-        assert_eq!(tick(0.25, 1.0), "0.25");
-        assert_eq!(tick(2.0, 1.0), "2");
-        assert_eq!(tick(123456.0, 1.0), "1.23e5");
     }
 
     #[test]

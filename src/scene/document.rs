@@ -8,6 +8,7 @@ use toml::Spanned;
 use toml::de::{DeTable, DeValue};
 
 use crate::error::{Located, Location, SceneError, SceneErrors};
+use crate::scene::translate::translate;
 
 /// Top-level keys every scene may have, whatever its kind.
 pub const COMMON_KEYS: [&str; 3] = ["kind", "description", "limits"];
@@ -92,13 +93,7 @@ impl<'a> Document<'a> {
         let root = self.root.clone();
         Common::deserialize(toml::de::Deserializer::from(root))
             .map(|c| c.limits)
-            .map_err(|e| {
-                let at = e.span().map(|s| location(self.text, s.start));
-                let error = translate(e);
-                self.locate_all(SceneErrors {
-                    errors: vec![Located { error, at }],
-                })
-            })
+            .map_err(|e| self.translated(e))
     }
 
     /// Deserializes the kind-specific part of the document (everything but
@@ -109,13 +104,51 @@ impl<'a> Document<'a> {
         for key in COMMON_KEYS {
             root.get_mut().remove(key);
         }
-        T::deserialize(toml::de::Deserializer::from(root)).map_err(|e| {
-            let at = e.span().map(|s| location(self.text, s.start));
-            let error = translate(e);
-            self.locate_all(SceneErrors {
-                errors: vec![Located { error, at }],
-            })
+        T::deserialize(toml::de::Deserializer::from(root)).map_err(|e| self.translated(e))
+    }
+
+    /// A deserialization error as located [`SceneErrors`], the value found
+    /// described by its TOML type and text ([`translate`]).
+    fn translated(&self, e: toml::de::Error) -> SceneErrors {
+        let at = e.span().map(|s| location(self.text, s.start));
+        let error = translate(e, |path| self.found_at(path));
+        self.locate_all(SceneErrors {
+            errors: vec![Located { error, at }],
         })
+    }
+
+    /// The value at dotted `path` as an error message shows it: its TOML
+    /// type and the text written, e.g. ``a datetime `1979-05-27` ``.
+    fn found_at(&self, path: &str) -> Option<String> {
+        let v = self.value_at(path)?;
+        let span = v.span();
+        let written = self.text.get(span.start..span.end)?.trim();
+        Some(format!("{} `{written}`", type_name(v.get_ref())))
+    }
+
+    /// The value at dotted `path`, where a key may end in `[k]` (the
+    /// `k`-th element of an array, e.g. `grid.lateral_errors[2]`).
+    fn value_at(&self, path: &str) -> Option<&Spanned<DeValue<'a>>> {
+        let mut table = self.root.get_ref();
+        let mut keys = path.split('.').peekable();
+        while let Some(key) = keys.next() {
+            let (name, index) = split_index(key);
+            let mut v = table.get(name)?;
+            if let Some(k) = index {
+                match v.get_ref() {
+                    DeValue::Array(a) => v = a.get(k)?,
+                    _ => return None,
+                }
+            }
+            if keys.peek().is_none() {
+                return Some(v);
+            }
+            match v.get_ref() {
+                DeValue::Table(t) => table = t,
+                _ => return None,
+            }
+        }
+        None
     }
 
     /// Attaches the file location of each error's field, where it can be found.
@@ -136,16 +169,25 @@ impl<'a> Document<'a> {
         self.locate_all(SceneErrors::from(error))
     }
 
-    /// Byte offset of the value at dotted `path`, or of its deepest existing
-    /// parent table's key when the field itself is absent.
+    /// Byte offset of the value at dotted `path` (a key may end in `[k]`,
+    /// an array element), or of its deepest existing parent table's key
+    /// when the field itself is absent.
     fn span_of(&self, path: &str) -> Option<usize> {
         let mut table = self.root.get_ref();
         let mut found = None;
         for key in path.split('.') {
-            let Some((k, v)) = table.get_key_value(key) else {
+            let (name, index) = split_index(key);
+            let Some((k, v)) = table.get_key_value(name) else {
                 return found;
             };
             found = Some(k.span().start);
+            let v = match (index, v.get_ref()) {
+                (Some(i), DeValue::Array(a)) => match a.get(i) {
+                    Some(element) => element,
+                    None => return Some(v.span().start),
+                },
+                _ => v,
+            };
             match v.get_ref() {
                 DeValue::Table(t) => table = t,
                 _ => return Some(v.span().start),
@@ -153,6 +195,15 @@ impl<'a> Document<'a> {
         }
         found
     }
+}
+
+/// A key of a dotted path and its array index: `lateral_errors[2]` is
+/// `("lateral_errors", Some(2))`.
+fn split_index(key: &str) -> (&str, Option<usize>) {
+    key.strip_suffix(']')
+        .and_then(|k| k.split_once('['))
+        .and_then(|(name, i)| Some((name, Some(i.parse().ok()?))))
+        .unwrap_or((key, None))
 }
 
 /// Every integer of the tree outside TOML's 64-bit signed range (the
@@ -227,84 +278,6 @@ fn type_name(v: &DeValue<'_>) -> &'static str {
     }
 }
 
-/// Translates a serde/TOML deserialization error into a [`SceneError`] with
-/// the dotted field path. The path comes from the error's key trail, which
-/// `toml` prints as a trailing ``in `a.b` `` line when the error carries no
-/// input text (ours never does: the deserializer is built from a tree).
-fn translate(e: toml::de::Error) -> SceneError {
-    let message = e.message().to_string();
-    let shown = e.to_string();
-    let trail = shown
-        .lines()
-        .rev()
-        .find_map(|l| l.strip_prefix("in `").and_then(|l| l.strip_suffix('`')))
-        .unwrap_or("")
-        .to_string();
-    let join = |name: &str| {
-        if trail.is_empty() {
-            name.to_string()
-        } else {
-            format!("{trail}.{name}")
-        }
-    };
-    let ticked = |s: &str| -> Option<(String, String)> {
-        let rest = s.strip_prefix('`')?;
-        let end = rest.find('`')?;
-        Some((rest[..end].to_string(), rest[end + 1..].to_string()))
-    };
-    if let Some((name, _)) = message.strip_prefix("missing field ").and_then(ticked) {
-        return SceneError::Missing { field: join(&name) };
-    }
-    if let Some((name, rest)) = message.strip_prefix("unknown field ").and_then(ticked) {
-        let expected = rest.trim_start_matches(", ").trim();
-        let expected = if expected.starts_with("there are no fields") {
-            "this table takes no fields".to_string()
-        } else {
-            expected.to_string()
-        };
-        return SceneError::Unknown {
-            field: join(&name),
-            expected,
-        };
-    }
-    if let Some((name, rest)) = message.strip_prefix("unknown variant ").and_then(ticked) {
-        return SceneError::Invalid {
-            field: trail,
-            value: format!("{name:?}"),
-            reason: rest.trim_start_matches(", ").trim().to_string(),
-        };
-    }
-    if let Some(rest) = message.strip_prefix("invalid value: ") {
-        if let Some((value, expected)) = rest.rsplit_once(", expected ") {
-            return SceneError::Invalid {
-                field: trail,
-                value: value.to_string(),
-                reason: format!("expected {expected}"),
-            };
-        }
-    }
-    if let Some(rest) = message.strip_prefix("invalid type: ") {
-        if let Some((found, expected)) = rest.rsplit_once(", expected ") {
-            let expected = match expected {
-                "f64" => "a number",
-                "usize" | "u64" | "u32" => "a non-negative integer",
-                "a string" | "string" => "a string",
-                e => e,
-            };
-            return SceneError::WrongType {
-                field: trail,
-                found: found.to_string(),
-                expected: expected.to_string(),
-            };
-        }
-    }
-    SceneError::Invalid {
-        field: trail,
-        value: String::from("(see reason)"),
-        reason: message,
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -359,6 +332,47 @@ mod tests {
         assert!(
             matches!(&e.errors[0].error, SceneError::WrongType { field, .. } if field == "kind")
         );
+    }
+
+    #[test]
+    fn wrong_types_are_named_in_toml_words_with_the_value_written() {
+        for (value, found) in [
+            ("{ a = 1 }", "a table `{ a = 1 }`"),
+            ("1979-05-27", "a datetime `1979-05-27`"),
+            ("[1, 2]", "an array `[1, 2]`"),
+            ("1.5", "a float `1.5`"),
+            ("\"x\"", "a string `\"x\"`"),
+            ("99999999999999999999", ""),
+        ] {
+            let e = Document::parse(&format!("kind = 'x'\n[peg]\nmass = 1.0\nn = {value}\n"))
+                .and_then(|d| d.body::<Body>())
+                .unwrap_err()
+                .to_string();
+            assert!(e.contains("`peg.n`") && e.contains(found), "{value}: {e}");
+            for jargon in ["u64", "usize", "i128", "map", "sequence", "floating point"] {
+                assert!(!e.contains(jargon), "{value}: {jargon} in {e}");
+            }
+        }
+        let e = err("kind = 'x'\n[peg]\nmass = 1.0\nn = -3\n").to_string();
+        assert!(
+            e.contains("`peg.n` = -3: must be a non-negative integer"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn an_array_element_is_located_on_its_own_line() {
+        let doc = Document::parse("kind = 'x'\n[grid]\nv = [\n  1.0,\n  2.0,\n]\n").unwrap();
+        let e = doc.locate_all(SceneErrors::from(SceneError::invalid(
+            "grid.v[1]",
+            2.0,
+            "test",
+        )));
+        assert_eq!(e.errors[0].at, Some(Location { line: 5, column: 3 }));
+        assert_eq!(doc.found_at("grid.v[1]").as_deref(), Some("a float `2.0`"));
+        // An index beyond the array falls back to the array itself.
+        let e = doc.locate_all(SceneErrors::from(SceneError::invalid("grid.v[7]", 0, "x")));
+        assert_eq!(e.errors[0].at, Some(Location { line: 3, column: 5 }));
     }
 
     #[test]

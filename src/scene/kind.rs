@@ -14,6 +14,7 @@ use crate::scene::document::Document;
 use crate::scene::limits::WorkItem;
 use crate::scene::ranges::FieldRange;
 use crate::scene::summary::RunSummary;
+use crate::scene::timescales::TimeScales;
 
 /// A validated scene, ready to run.
 pub trait Scene: fmt::Debug {
@@ -22,6 +23,13 @@ pub trait Scene: fmt::Debug {
     /// Integrates the scene and writes its outputs through `ctx`. Run a
     /// loaded scene with [`crate::scene::LoadedScene::run`], which lists the files written.
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError>;
+    /// The scene's time scales estimated from its parameters (the fastest
+    /// bounds the step): named as the likely cause when a step becomes too
+    /// small, and when a run is unusually slow. `None` when the kind
+    /// estimates none.
+    fn time_scales(&self) -> Option<TimeScales> {
+        None
+    }
 }
 
 /// A scene as read from its tables, each field checked on its own, before

@@ -11,7 +11,7 @@ use crate::scene::document::Document;
 use crate::scene::kind::Scene;
 use crate::scene::kinds::KINDS;
 use crate::scene::limits::{LimitOverrides, WorkItem};
-use crate::scene::summary::RunSummary;
+use crate::scene::summary::{RunSummary, StepFailure};
 
 /// A scene read from a file.
 #[derive(Debug)]
@@ -36,7 +36,19 @@ impl LoadedScene {
     /// The scene's run error (files completed before it stay recorded in
     /// `ctx`'s sink).
     pub fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
+        let scales = self.scene.time_scales();
+        ctx.progress.explain(scales.as_ref());
         let mut summary = self.scene.run(ctx)?;
+        if let Some(i) = summary.integration.as_mut()
+            && let Some(failure) = i.step_failure
+            && let Some(scales) = &scales
+        {
+            i.stop.push_str("; likely cause: ");
+            i.stop.push_str(&match failure {
+                StepFailure::TooSmall { t, h } => scales.step_failure_cause(t, h),
+                StepFailure::Budget { t, mean } => scales.budget_cause(t, mean),
+            });
+        }
         summary.outputs = ctx.sink().written();
         Ok(summary)
     }

@@ -11,7 +11,7 @@
 //! The framework: [`kind`] (what a kind provides), [`loader`]
 //! (parse, dispatch, validate), [`document`], [`validate`], [`ranges`]
 //! (declared valid ranges), [`limits`] (and [`reserve`]), [`integrator`], [`context`] (the run
-//! context and its output sink), progress and summary. Each kind lives in
+//! context and its output sink), progress, summary and [`timescales`]. Each kind lives in
 //! [`kinds`], in a file or folder named as its `kind` string; tables and
 //! code several kinds share are in [`shared`] (a kind imports from there,
 //! never from another kind).
@@ -48,6 +48,8 @@ pub mod reserve;
 pub mod shared;
 pub(crate) mod simulate;
 mod summary;
+pub mod timescales;
+mod translate;
 pub mod validate;
 
 pub use context::RunContext;
@@ -58,4 +60,5 @@ pub use kinds::KINDS;
 pub use loader::{LoadedScene, load, load_with, parse, parse_named, parse_named_with};
 pub use numbers::significant;
 pub use progress::{Progress, par_map_counted};
-pub use summary::{EventRecord, IntegrationSummary, Metric, RunSummary};
+pub use summary::{EventRecord, IntegrationSummary, Metric, RunSummary, StepFailure};
+pub use timescales::{TimeScale, TimeScales};

@@ -1,13 +1,24 @@
-//! A throttled progress line on stderr for long runs.
+//! A throttled progress line on stderr for long runs, and one line saying
+//! why when a run is unusually slow.
 //!
-//! Quiet when stderr is not a terminal (pipes, tests, CI) or when the user
-//! passed `--quiet`; at most ten updates per second otherwise.
+//! The progress line is shown when stderr is a terminal and the user did
+//! not pass `--quiet`, at most ten updates per second. The slow-run notice
+//! is printed once, also with `--quiet` and on a pipe (a run that takes
+//! minutes in silence looks hung), when the run has taken
+//! [`SLOW_STEPS`] accepted steps (a count, the same on every machine) or
+//! [`SLOW_AFTER`] of wall time: how far it is, the steps it took and
+//! those it will take at this rate, the time left and the fastest time
+//! scale of the scene, which sets the step ([`crate::scene::timescales`]).
+//! [`Progress::silent`] prints neither (in-process runs, sweeps' inner
+//! runs).
 
 use std::io::{IsTerminal, Write};
 use std::time::{Duration, Instant};
 
 use crate::error::RunError;
 use crate::integrate::Interrupt;
+use crate::scene::numbers::significant;
+use crate::scene::timescales::TimeScales;
 
 /// Progress reporter handed to a running scene via its run context; it
 /// also carries the run's stop request ([`Interrupt`]), which the
@@ -17,11 +28,68 @@ use crate::integrate::Interrupt;
 pub struct Progress {
     interrupt: Interrupt,
     enabled: bool,
+    notices: bool,
     t0: f64,
     t_end: f64,
     last: Option<Instant>,
     shown: bool,
     started: Option<Instant>,
+    /// Accepted steps reported since the span was set.
+    steps: u64,
+    noticed: bool,
+    /// The fastest time scale of the scene, in words.
+    cause: Option<String>,
+}
+
+/// Accepted steps after which a run is called unusually slow: the shipped
+/// scenes take below 10⁴; 10⁵ steps of the compliant 3-D peg are some
+/// tens of seconds.
+pub const SLOW_STEPS: u64 = 100_000;
+
+/// Wall time after which a run is called unusually slow (an implicit
+/// method's steps cost far more than an explicit one's).
+pub const SLOW_AFTER: Duration = Duration::from_secs(30);
+
+/// The slow-run notice of a run that took `steps` accepted steps (or
+/// `elapsed` of wall time) to reach simulated time `t` of `[t0, t_end]`;
+/// `cause` is the scene's fastest time scale in words. `None` until the
+/// run is unusually slow ([`SLOW_STEPS`], [`SLOW_AFTER`]).
+pub fn slow_notice(
+    steps: u64,
+    (t0, t, t_end): (f64, f64, f64),
+    elapsed: Duration,
+    cause: Option<&str>,
+) -> Option<String> {
+    if steps < SLOW_STEPS && elapsed < SLOW_AFTER {
+        return None;
+    }
+    let span = t_end - t0;
+    let fraction = if span > 0.0 {
+        ((t - t0) / span).clamp(0.0, 1.0)
+    } else {
+        1.0
+    };
+    let rate = if fraction > 0.0 {
+        let total = steps as f64 / fraction;
+        format!(
+            "; at this rate about {} steps in all (mean step {} s{})",
+            significant(total.round()),
+            significant((t - t0) / steps.max(1) as f64),
+            eta(elapsed, fraction)
+        )
+    } else {
+        "; the simulated time has not advanced".to_owned()
+    };
+    let why = cause.map_or_else(String::new, |c| {
+        format!("; the fastest time scale of the scene: {c}")
+    });
+    Some(format!(
+        "note: slow run: {steps} steps in {} s of wall time to t = {} s of {} s ({:.1}%){rate}{why}",
+        elapsed.as_secs(),
+        significant(t),
+        significant(t_end),
+        100.0 * fraction
+    ))
 }
 
 /// The estimated time left when `fraction` of the work took `elapsed`:
@@ -44,22 +112,35 @@ pub fn eta(elapsed: Duration, fraction: f64) -> String {
 const EVERY: Duration = Duration::from_millis(100);
 
 impl Progress {
-    /// A reporter that prints only if `!quiet` and stderr is a terminal.
+    /// A reporter whose progress line prints only if `!quiet` and stderr
+    /// is a terminal; the slow-run notice prints in any case.
     pub fn new(quiet: bool) -> Self {
         Progress {
             interrupt: Interrupt::new(),
             enabled: !quiet && std::io::stderr().is_terminal(),
+            notices: true,
             t0: 0.0,
             t_end: 1.0,
             last: None,
             shown: false,
             started: None,
+            steps: 0,
+            noticed: false,
+            cause: None,
         }
     }
 
     /// A reporter that never prints.
     pub fn silent() -> Self {
-        Progress::new(true)
+        let mut p = Progress::new(true);
+        p.notices = false;
+        p
+    }
+
+    /// Gives the slow-run notice the scene's time scales (the fastest one
+    /// is named as what sets the step).
+    pub fn explain(&mut self, scales: Option<&TimeScales>) {
+        self.cause = scales.and_then(|s| s.fastest()).map(|f| f.describe());
     }
 
     /// The same reporter, stopping when `interrupt` is requested.
@@ -91,10 +172,20 @@ impl Progress {
         self.t0 = t0;
         self.t_end = t_end;
         self.started = Some(Instant::now());
+        self.steps = 0;
     }
 
-    /// Reports simulated time `t`, s (throttled).
+    /// Reports simulated time `t`, s, after an accepted step (throttled;
+    /// the slow-run notice once).
     pub fn update(&mut self, t: f64) {
+        self.steps += 1;
+        if self.notices && !self.noticed && self.steps % 64 == 0 {
+            let elapsed = self.started.map_or(Duration::ZERO, |s| s.elapsed());
+            let cause = self.cause.as_deref();
+            if let Some(text) = slow_notice(self.steps, (self.t0, t, self.t_end), elapsed, cause) {
+                self.print_notice(&text);
+            }
+        }
         if !self.enabled || self.last.is_some_and(|l| l.elapsed() < EVERY) {
             return;
         }
@@ -118,10 +209,33 @@ impl Progress {
         self.shown = true;
     }
 
+    /// Prints `text` on its own line (once), clearing the progress line.
+    fn print_notice(&mut self, text: &str) {
+        self.noticed = true;
+        let mut err = std::io::stderr().lock();
+        let clear = if self.shown { "\r" } else { "" };
+        // Best effort, as the progress line.
+        let _ = writeln!(err, "{clear}{text:80}");
+        let _ = err.flush();
+    }
+
     /// Reports `done` of `total` work items, e.g. runs of a sweep
-    /// (throttled; the last one is always shown).
+    /// (throttled; the last one is always shown). After [`SLOW_AFTER`] of
+    /// wall time with work left, one line says how far the work is.
     pub fn update_count(&mut self, done: usize, total: usize, what: &str) {
         let last = done >= total;
+        if self.notices && !self.noticed && !last {
+            let elapsed = self.started.map_or(Duration::ZERO, |s| s.elapsed());
+            if elapsed >= SLOW_AFTER {
+                let fraction = done as f64 / total.max(1) as f64;
+                let text = format!(
+                    "note: slow run: {done} of {total} {what}s done in {} s of wall time{}",
+                    elapsed.as_secs(),
+                    eta(elapsed, fraction)
+                );
+                self.print_notice(&text);
+            }
+        }
         if !self.enabled || (!last && self.last.is_some_and(|l| l.elapsed() < EVERY)) {
             return;
         }
@@ -193,6 +307,37 @@ pub fn par_map_counted<T: Sync, R: Send>(
 mod tests {
     use super::*;
     use std::sync::atomic::{AtomicUsize, Ordering};
+
+    #[test]
+    fn a_run_is_slow_after_its_step_count_or_its_wall_time_and_says_why() {
+        let cause = Some("the contact's natural period = 2e-9 s (peg.contact_stiffness = 1e15)");
+        let quick = Duration::from_secs(1);
+        assert_eq!(
+            slow_notice(SLOW_STEPS - 1, (0.0, 0.01, 1.2), quick, cause),
+            None
+        );
+        let s = slow_notice(SLOW_STEPS, (0.0, 0.012, 1.2), quick, cause).unwrap_or_default();
+        for part in [
+            "100000 steps in 1 s of wall time to t = 0.012 s of 1.2 s (1.0%)",
+            "about 1e7 steps in all (mean step 1.2e-7 s, ETA 1m39s)",
+            "the fastest time scale of the scene: the contact's natural period",
+        ] {
+            assert!(s.contains(part), "{part:?} missing in {s}");
+        }
+        // Few steps but long: the wall time makes it slow.
+        let s = slow_notice(500, (0.0, 0.6, 1.2), SLOW_AFTER, None).unwrap_or_default();
+        assert!(
+            s.contains("500 steps in 30 s") && s.contains("about 1000 steps in all"),
+            "{s}"
+        );
+        assert!(!s.contains("time scale"), "{s}");
+        // No progress in simulated time: no projection.
+        let s = slow_notice(SLOW_STEPS, (0.0, 0.0, 1.0), quick, None).unwrap_or_default();
+        assert!(
+            s.contains("has not advanced") && !s.contains("in all"),
+            "{s}"
+        );
+    }
 
     #[test]
     fn eta_scales_elapsed_by_the_work_left() {

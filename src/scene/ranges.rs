@@ -93,11 +93,14 @@ impl FieldRange {
             } else {
                 format!(" {}", self.unit)
             };
-            // Zero reads as `0`, not `0e0`.
+            // Zero reads as `0`, not `0e0`; a bound computed from other
+            // fields (`within`) is shown to six digits, not with the
+            // rounding noise of its computation.
             let limit = |x: f64| {
                 if x == 0.0 {
                     "0".to_owned()
                 } else {
+                    let x: f64 = format!("{x:.5e}").parse().unwrap_or(x);
                     format!("{x:e}")
                 }
             };
@@ -184,6 +187,9 @@ mod tests {
             e.contains("0.01: must lie in [1e-7, 5e-3] m: at most r/2"),
             "{e}"
         );
+        let noisy = 0.5 * 0.5 * 1e-6 * (1.0 - 0.001);
+        let e = refusal(r.within(0.0, noisy), 1e-3);
+        assert!(e.contains("must lie in [1e-7, 2.4975e-7] m"), "{e}");
         let e = refusal(r.within(0.0, f64::NAN), 2e3);
         assert!(e.contains("2000.0: must lie in [1e-7, 1e3] m"), "{e}");
         let e = refusal(r.within(0.0, 0.005), f64::INFINITY);

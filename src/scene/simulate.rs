@@ -13,7 +13,7 @@ use crate::scene::integrator::DefaultMethod;
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::numbers::significant;
 use crate::scene::progress::Progress;
-use crate::scene::summary::{EventRecord, IntegrationSummary};
+use crate::scene::summary::{EventRecord, IntegrationSummary, StepFailure};
 use crate::system::OdeSystem;
 
 /// The integrator method and options described by `spec`.
@@ -54,7 +54,9 @@ pub fn integrate<'a, const N: usize, S: OdeSystem<N>>(
 ) -> Result<Solution<N>, RunError> {
     let mut solver =
         configured(spec, events, true, progress)?.with_progress(|t| progress.update(t));
-    interrupted(solver.solve(system, spec.t0, x0, spec.t_end)?)
+    let mut sol = interrupted(solver.solve(system, spec.t0, x0, spec.t_end)?)?;
+    with_final_sample(&mut sol);
+    Ok(sol)
 }
 
 /// The solution, or [`RunError::Interrupted`] when a stop was requested.
@@ -62,6 +64,17 @@ fn interrupted<const N: usize>(sol: Solution<N>) -> Result<Solution<N>, RunError
     match sol.stop {
         StopReason::Interrupted { .. } => Err(RunError::Interrupted),
         _ => Ok(sol),
+    }
+}
+
+/// Appends the final state `(t_final, x_final)` to the stored samples when
+/// the last sample is earlier (a terminal event, or a stop between two
+/// output times): a time series ends where its run ended, so that every
+/// peak or end value read from the samples includes the end.
+pub fn with_final_sample<const N: usize>(sol: &mut Solution<N>) {
+    if sol.t.last().is_none_or(|&t| t < sol.t_final) {
+        sol.t.push(sol.t_final);
+        sol.x.push(sol.x_final);
     }
 }
 
@@ -83,10 +96,12 @@ fn configured<'a, const N: usize>(
 }
 
 /// As [`integrate`], without storing the samples: each sample goes to
-/// `sink(t, x)` as the integrator reports it (in time order), so that a
-/// scene can stream its CSV in bounded memory. The returned solution has
-/// empty `t` / `x`; the first error `sink` returns stops further calls
-/// and is returned after the integration.
+/// `sink(t, x)` as the integrator reports it (in time order), then the
+/// final state when it is later than the last sample (as
+/// [`with_final_sample`]), so that a scene can stream its CSV in bounded
+/// memory. The returned solution has empty `t` / `x`; the first error
+/// `sink` returns stops further calls and is returned after the
+/// integration.
 ///
 /// # Errors
 /// [`RunError::Integrate`] when the integrator rejects its input; the
@@ -101,11 +116,13 @@ pub fn integrate_streaming<'a, const N: usize, S: OdeSystem<N>>(
 ) -> Result<Solution<N>, RunError> {
     let solver = configured(spec, events, false, progress)?;
     let mut failed: Option<RunError> = None;
+    let mut last: Option<f64> = None;
     let sol = {
-        let failed = &mut failed;
+        let (failed, last, sink) = (&mut failed, &mut last, &mut sink);
         let mut solver = solver
             .with_progress(|t| progress.update(t))
             .with_observer(move |t, x| {
+                *last = Some(t);
                 if failed.is_none()
                     && let Err(e) = sink(t, x)
                 {
@@ -114,6 +131,12 @@ pub fn integrate_streaming<'a, const N: usize, S: OdeSystem<N>>(
             });
         solver.solve(system, spec.t0, x0, spec.t_end)?
     };
+    if failed.is_none()
+        && last.is_none_or(|t| t < sol.t_final)
+        && let Err(e) = sink(sol.t_final, &sol.x_final)
+    {
+        failed = Some(e);
+    }
     match failed {
         Some(e) => Err(e),
         None => interrupted(sol),
@@ -195,6 +218,14 @@ pub fn integration_summary<const N: usize>(
         rejected: sol.stats.rejected,
         rhs_calls: sol.stats.rhs_calls,
         events: event_records(sol, event_names),
+        step_failure: match sol.stop {
+            StopReason::StepSizeTooSmall { t, h } => Some(StepFailure::TooSmall { t, h }),
+            StopReason::MaxSteps { t, steps } if steps > 0 => Some(StepFailure::Budget {
+                t,
+                mean: (t - spec.t0) / steps as f64,
+            }),
+            _ => None,
+        },
     }
 }
 

@@ -17,6 +17,10 @@ pub struct Metric {
     pub value: f64,
     /// Its unit (`""` for dimensionless).
     pub unit: &'static str,
+    /// What the value stands for when it is a code (e.g. an outcome's
+    /// name): printed first, the value after it as the code, so that
+    /// `outcome = seated (code 0)` does not read as "zero seated".
+    pub text: Option<String>,
 }
 
 impl Metric {
@@ -26,6 +30,25 @@ impl Metric {
             name: name.into(),
             value,
             unit,
+            text: None,
+        }
+    }
+
+    /// A statement without a number (value NaN), printed as
+    /// `name: text`, e.g. a check that could not be made.
+    pub fn note(name: impl Into<String>, text: impl Into<String>) -> Self {
+        Metric {
+            text: Some(text.into()),
+            ..Metric::new(name, f64::NAN, "")
+        }
+    }
+
+    /// A coded metric: `code` stands for `text`, printed as
+    /// `name = text (code c)`.
+    pub fn coded(name: impl Into<String>, code: f64, text: impl Into<String>) -> Self {
+        Metric {
+            text: Some(text.into()),
+            ..Metric::new(name, code, "")
         }
     }
 }
@@ -51,6 +74,30 @@ pub struct IntegrationSummary {
     /// Every event that fired, in time order; a terminal event is last.
     /// (`pegdyn run` prints only [`IntegrationSummary::stop`].)
     pub events: Vec<EventRecord>,
+    /// Why the run stopped short, when its steps were the reason:
+    /// [`crate::scene::LoadedScene::run`] adds the likely cause to
+    /// [`IntegrationSummary::stop`].
+    pub step_failure: Option<StepFailure>,
+}
+
+/// A run stopped by its steps: one too small to take, or too many of them.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum StepFailure {
+    /// The step became too small at time `t` (s): the rejected step `h` (s).
+    TooSmall {
+        /// Time of the last accepted step, s.
+        t: f64,
+        /// The rejected step, s.
+        h: f64,
+    },
+    /// The step budget ran out at time `t` (s) after steps of `mean` (s) on
+    /// average (the time covered over the steps attempted).
+    Budget {
+        /// Time of the last accepted step, s.
+        t: f64,
+        /// The mean step, s.
+        mean: f64,
+    },
 }
 
 /// One event that fired during an integration.
@@ -80,6 +127,7 @@ impl IntegrationSummary {
         self.stop = later.stop;
         self.success = later.success;
         self.method = later.method;
+        self.step_failure = later.step_failure;
     }
 }
 
@@ -120,7 +168,11 @@ impl fmt::Display for RunSummary {
         for m in &self.metrics {
             let sep = if m.unit.is_empty() { "" } else { " " };
             let v = format_metric(m.value);
-            writeln!(f, "  {} = {v}{sep}{}", m.name, m.unit)?;
+            match &m.text {
+                Some(text) if m.value.is_nan() => writeln!(f, "  {}: {text}", m.name)?,
+                Some(text) => writeln!(f, "  {} = {text} (code {v})", m.name)?,
+                None => writeln!(f, "  {} = {v}{sep}{}", m.name, m.unit)?,
+            }
         }
         for p in &self.outputs {
             writeln!(f, "  wrote {}", p.display())?;
@@ -130,9 +182,12 @@ impl fmt::Display for RunSummary {
 }
 
 /// Integers (counts) as integers, `[1e-3, 1e6)` with six decimals, the
-/// rest with four significant digits in scientific notation.
+/// rest with four significant digits in scientific notation; zero as `0`
+/// whatever its sign (an empty sum is `-0.0`).
 fn format_metric(v: f64) -> String {
-    if v.fract() == 0.0 && v.abs() < 1e15 {
+    if v == 0.0 {
+        "0".to_owned()
+    } else if v.fract() == 0.0 && v.abs() < 1e15 {
         format!("{v:.0}")
     } else if (1e-3..1e6).contains(&v.abs()) {
         format!("{v:.6}")
@@ -160,6 +215,7 @@ mod tests {
                 terminal: !success,
                 details: vec![],
             }],
+            step_failure: None,
         }
     }
 
@@ -186,6 +242,8 @@ mod tests {
         let text = s.to_string();
         assert!(text.contains("period = 2 s"), "{text}");
         assert_eq!(format_metric(0.0), "0");
+        assert_eq!(format_metric(-0.0), "0");
+        assert_eq!(format_metric([0.0_f64; 0].iter().sum::<f64>()), "0");
         assert_eq!(format_metric(169.0), "169");
         assert_eq!(format_metric(2.5), "2.500000");
         assert!(text.contains("drift = 1.500e-11\n"), "{text}");
@@ -194,5 +252,27 @@ mod tests {
             "{text}"
         );
         assert!(s.success() && RunSummary::default().success());
+    }
+
+    #[test]
+    fn a_coded_metric_prints_its_meaning_before_its_code() {
+        let s = RunSummary {
+            metrics: vec![
+                Metric::coded("outcome", 0.0, "seated"),
+                Metric::coded("outcome", 4.0, "wrist force limit (2 N)"),
+                Metric::new("mean insertion time", -0.0, "s"),
+                Metric::note("diagram check", "not made"),
+            ],
+            ..RunSummary::default()
+        };
+        let text = s.to_string();
+        assert!(text.contains("  outcome = seated (code 0)\n"), "{text}");
+        assert!(
+            text.contains("  outcome = wrist force limit (2 N) (code 4)\n"),
+            "{text}"
+        );
+        assert!(text.contains("mean insertion time = 0 s"), "{text}");
+        assert!(text.contains("  diagram check: not made\n"), "{text}");
+        assert!(!text.contains("-0"), "{text}");
     }
 }

@@ -103,6 +103,15 @@ impl Checker {
         self.errors.push(error);
     }
 
+    /// Records `error` unless the same error (same message) is recorded
+    /// already: a problem every point of a grid shares is reported once.
+    pub fn push_once(&mut self, error: SceneError) {
+        let text = error.to_string();
+        if !self.errors.iter().any(|e| e.to_string() == text) {
+            self.errors.push(error);
+        }
+    }
+
     /// Appends the errors of a nested check (e.g. an integrator table).
     pub fn extend(&mut self, result: Result<(), SceneErrors>) {
         if let Err(e) = result {
@@ -133,6 +142,22 @@ impl Checker {
     /// See [`greater_than`].
     pub fn greater_than(&mut self, field: &str, v: f64, bound_field: &str, bound: f64) -> f64 {
         self.check(greater_than(field, v, bound_field, bound), v)
+    }
+
+    /// Refuses every entry of the list `field` that repeats an earlier one
+    /// (`field[k]` named, with the index it repeats): a grid or list point
+    /// is computed once, so a repeat would either run twice and count
+    /// twice or be silently dropped.
+    pub fn distinct(&mut self, field: &str, values: &[f64]) {
+        for (k, v) in values.iter().enumerate() {
+            if let Some(j) = values[..k].iter().position(|u| u == v) {
+                self.push(SceneError::invalid(
+                    format!("{field}[{k}]"),
+                    v,
+                    format!("repeats {field}[{j}]: each value is computed once; remove the repeat"),
+                ));
+            }
+        }
     }
 
     /// Whether a problem of `field` has been recorded.
@@ -179,6 +204,24 @@ mod tests {
         assert!(in_range("a", 1.5, 0.0, 1.0).is_err());
         assert!(greater_than("t_end", 1.0, "t0", 1.0).is_err());
         assert_eq!(greater_than("t_end", 2.0, "t0", 1.0).ok(), Some(2.0));
+    }
+
+    #[test]
+    fn repeated_list_entries_are_named_with_the_entry_they_repeat() {
+        let mut c = Checker::default();
+        c.distinct("grid.a", &[0.0, 2e-4, 1.0, 2e-4, -0.0, 3.0]);
+        c.distinct("grid.b", &[1.0, f64::NAN, f64::NAN]);
+        let e = c.finish().unwrap_err();
+        let got: Vec<String> = e.errors.iter().map(|l| l.error.to_string()).collect();
+        assert_eq!(got.len(), 2, "{got:?}");
+        assert!(
+            got[0].starts_with("`grid.a[3]` = 0.0002: repeats grid.a[1]"),
+            "{got:?}"
+        );
+        assert!(
+            got[1].starts_with("`grid.a[4]` = -0.0: repeats grid.a[0]"),
+            "{got:?}"
+        );
     }
 
     #[test]

@@ -6,7 +6,8 @@
 //! inputs ([`rng`]), the rigid peg fixtures ([`rigid`], [`prescribed_rigid`]),
 //! the compliant 3-D peg's ([`peg3d`]), the wrist insertion's ([`rcc`]), the
 //! Rosenbrock tableau checks ([`rosenbrock`]), running the `pegdyn` binary
-//! ([`cli`]) and the scene fuzzer's strategies ([`fuzz`]).
+//! ([`cli`]), the scene fuzzer's strategies ([`fuzz`]) and the numeric
+//! fields of a scene text by path and line ([`fields`]).
 
 #![allow(dead_code)]
 
@@ -18,6 +19,7 @@ use pegdyn_equations::graph::{Binary, Node};
 use pegdyn_equations::{Graph, Id};
 
 pub mod cli;
+pub mod fields;
 pub mod fuzz;
 pub mod peg3d;
 pub mod prescribed_rigid;

@@ -9,4 +9,6 @@ mod industreal;
 mod jacobian;
 mod outcomes;
 mod quasi_static;
+mod start_poses;
+mod summaries;
 mod wrist;

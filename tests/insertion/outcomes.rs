@@ -110,14 +110,42 @@ fn a_lateral_error_beyond_the_mouth_misses() {
 
 #[test]
 fn a_low_wrist_limit_stops_the_robot_on_one_contact() {
-    let (o, _, _) = outcome(&[("wrist_force_limit", "4.0")]);
-    match o {
-        Outcome::ForceLimit { which, force } => {
-            assert_eq!(which, "wrist");
-            assert!((force - 4.0).abs() < 1e-6, "{force}");
+    // Held above the mouth the wrist starts with the peg's weight (1.9 N)
+    // and the limit is reached on the chamfer.
+    for limit in ["2.5", "3.0"] {
+        let text = variant_from(&[("wrist_force_limit", limit)], &[]);
+        let (_, _, run) = rcc::run(&text);
+        match run.outcome {
+            Outcome::ForceLimit { which, force } => {
+                assert_eq!(which, "wrist");
+                let limit: f64 = limit.parse().unwrap();
+                assert!((force - limit).abs() < 1e-6, "{force}");
+            }
+            other => panic!("{other:?}"),
         }
-        other => panic!("{other:?}"),
     }
+}
+
+#[test]
+fn a_wrist_limit_below_the_preload_of_a_start_in_the_bore_is_refused() {
+    // Centred and upright 2 mm deep, the wrist is deflected by the robot's
+    // 0.3 mm and 1 degree errors: 6.1 N before the run begins.
+    for limit in ["4.0", "6.0"] {
+        let text = variant(&[("wrist_force_limit", limit)]);
+        let e = pegdyn::scene::parse_named(&format!("{text}\n"), "rcc")
+            .expect_err("a limit below the start's force");
+        let shown = e.to_string();
+        assert_eq!(
+            e.errors[0].error.field(),
+            Some("criteria.wrist_force_limit"),
+            "{shown}"
+        );
+        assert!(
+            shown.contains("already carries 6.0") && shown.contains("centred and upright"),
+            "{shown}"
+        );
+    }
+    assert!(pegdyn::scene::parse_named(&variant(&[("wrist_force_limit", "6.5")]), "rcc").is_ok());
 }
 
 /// `text` run in-process as scene `name` into a fresh directory.
@@ -205,7 +233,14 @@ fn insert_rcc_runs_end_to_end_and_writes_its_files() {
         .iter()
         .find(|m| m.name.starts_with("outcome"))
         .unwrap();
-    assert_eq!(outcome.name, "outcome: seated");
+    assert_eq!(
+        (
+            outcome.name.as_str(),
+            outcome.text.as_deref(),
+            outcome.value
+        ),
+        ("outcome", Some("seated"), 0.0)
+    );
     let csv = std::fs::read_to_string(&s.outputs[0]).unwrap();
     assert!(csv.lines().next().unwrap().contains("rim_wall_1_N_N"));
 }

@@ -6,7 +6,9 @@ mod common;
 
 mod bounded_work;
 mod cli;
+mod errors;
 mod fuzz;
 mod hostile_scenes;
 mod replay;
 mod run_record;
+mod step_causes;

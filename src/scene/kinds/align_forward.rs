@@ -375,6 +375,12 @@ impl Scene for AlignForwardScene {
             rejected: tr.stats.rejected,
             rhs_calls: tr.stats.rhs_calls,
             events: events(&tr.restarts, &tr.stop, t_final),
+            step_failure: match tr.stop {
+                crate::rigid_peg::stop::ForwardStop::Integrator(
+                    crate::integrate::StopReason::StepSizeTooSmall { t, h },
+                ) => Some(crate::scene::summary::StepFailure::TooSmall { t, h }),
+                _ => None,
+            },
         };
         let mut metrics = vec![
             Metric::new(format!("event `{}` at t", tr.stop.name()), t_final, "s"),

@@ -121,6 +121,24 @@ impl Written for DoublePendulumScene {
 }
 
 impl Scene for DoublePendulumScene {
+    fn time_scales(&self) -> Option<crate::scene::TimeScales> {
+        use crate::scene::{TimeScale, TimeScales, significant};
+        let p = &self.double_pendulum;
+        let mut scales = Vec::new();
+        for (k, l) in [(1, p.length1), (2, p.length2)] {
+            scales.push(TimeScale::new(
+                format!("link {k}'s small-swing period 2 pi sqrt(l/g)"),
+                format!(
+                    "double_pendulum.length{k} = {} m, double_pendulum.gravity = {} m/s^2",
+                    significant(l),
+                    significant(p.gravity)
+                ),
+                std::f64::consts::TAU * (l / p.gravity).sqrt(),
+            ));
+        }
+        Some(TimeScales::new(&self.integrator, scales))
+    }
+
     fn describe(&self) -> String {
         let p = &self.double_pendulum;
         format!(

@@ -61,6 +61,10 @@ use crate::scene::validate::Checker;
 use crate::system::ModelError;
 use nalgebra::{SVector, Vector3};
 
+/// How many contact transitions the summary lists and the views draw (the
+/// events table has them all).
+const LISTED: usize = 12;
+
 /// Registry entry.
 pub const KIND: Kind = Kind {
     name: "drop_3d",
@@ -149,7 +153,8 @@ impl DropScene {
     /// ([`lean_pose`]), spinning at `drop.spin_rate` about the hole's axis.
     ///
     /// # Errors
-    /// Every invalid field, named; `drop.gamma` where no lean exists.
+    /// Every invalid field, named; `drop.gamma` where no lean exists or the
+    /// lean overlaps the block.
     pub fn build(&self) -> Result<(Peg3dParams, SVector<f64, N_STATE>), SceneErrors> {
         let mut c = Checker::default();
         let params = self.peg.build(&mut c);
@@ -167,6 +172,19 @@ impl DropScene {
         let ys = pose_state(p, q, Vector3::zeros(), omega_body);
         let mut start = SVector::<f64, N_STATE>::zeros();
         start.fixed_rows_mut::<15>(0).copy_from(&ys);
+        let sys = Insertion::new(params, None, d.aligning_moment);
+        if let Some(o) = crate::scene::shared::compliant_peg_3d::start::overlap(&sys, &start) {
+            return Err(SceneErrors::from(SceneError::invalid(
+                "drop.gamma",
+                d.gamma,
+                format!(
+                    "{}: the lean at this tilt, lowered until the fillets touch, overlaps by more \
+                     than it touches (lifting it {} m clears it)",
+                    o.describe(),
+                    crate::scene::numbers::significant(o.lift)
+                ),
+            )));
+        }
         Ok((params, start))
     }
 }
@@ -195,6 +213,28 @@ impl Written for Ready {
 }
 
 impl Scene for Ready {
+    fn time_scales(&self) -> Option<crate::scene::TimeScales> {
+        use crate::scene::shared::compliant_peg_3d::timescales;
+        let m0 = self.scene.drop.aligning_moment;
+        // The moment presses the rim into the mouth with about M / r.
+        let push = m0 / self.params.peg_radius();
+        let mut scales = timescales::peg(
+            &self.params,
+            timescales::load(&self.params, push),
+            "the peg's weight plus drop.aligning_moment / r",
+        );
+        scales.extend(timescales::aligning(&self.params, m0));
+        let spin = self.scene.drop.spin_rate;
+        if spin != 0.0 {
+            scales.push(crate::scene::TimeScale::new(
+                "a turn at the spin rate, 2 pi / rate",
+                format!("drop.spin_rate = {} rad/s", crate::scene::significant(spin)),
+                std::f64::consts::TAU / spin.abs(),
+            ));
+        }
+        Some(crate::scene::TimeScales::new(&self.integrator, scales))
+    }
+
     fn describe(&self) -> String {
         let d = &self.scene.drop;
         format!(
@@ -224,7 +264,13 @@ impl Scene for Ready {
             &mut ctx.progress,
         )?;
         if let Some(ModelError::Hertz(e)) = sol.model_error.clone() {
-            return Err(RunError::Hertz(e));
+            return Err(
+                crate::scene::shared::compliant_peg_3d::start::hertz_refusal(
+                    &self.params,
+                    sol.t_final,
+                    e,
+                ),
+            );
         }
         let names: Vec<String> = what
             .iter()
@@ -236,7 +282,7 @@ impl Scene for Ready {
             ..RunSummary::default()
         };
         let samples = output::samples(&sys, &sol)?;
-        let peaks = output::write_series(ctx, &samples)?;
+        let peaks = output::write_series(ctx, &sys, &samples, &sol.events)?;
         let rows = output::transitions(&sys, &sol, &what);
         output::write_events(ctx, &sys, &rows)?;
         let mut fig = Figure::new();
@@ -248,19 +294,33 @@ impl Scene for Ready {
                 samples.rows.iter().map(|(t, _, s)| (*t, s.tilt)).collect(),
             )));
         ctx.figure(Part::Main, &fig)?;
-        output::write_views(
+        crate::scene::shared::compliant_peg_3d::views::write_views(
             ctx,
             &sys,
             (sol.t.first().copied().unwrap_or(0.0), &self.start),
             &rows,
             (sol.t_final, &sol.x_final),
-            12,
+            LISTED,
         )?;
         out.metrics = output::metrics(&peaks);
         out.metrics.retain(|m| !m.name.contains("wrist"));
         out.metrics
             .push(Metric::new("contact transitions", rows.len() as f64, ""));
-        for r in rows.iter().take(12) {
+        if rows.len() > LISTED {
+            let events = ctx.sink().path(Part::Sub("events"), "csv");
+            let file = events
+                .file_name()
+                .map_or_else(String::new, |f| f.to_string_lossy().into_owned());
+            out.metrics.push(Metric::new(
+                format!(
+                    "transitions listed below (the first {LISTED} of {}; every one is in {file})",
+                    rows.len()
+                ),
+                LISTED as f64,
+                "",
+            ));
+        }
+        for r in rows.iter().take(LISTED) {
             out.metrics
                 .push(Metric::new(format!("{} ({})", r.what, r.state), r.t, "s"));
         }

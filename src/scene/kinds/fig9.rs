@@ -155,6 +155,7 @@ impl Fig9Scene {
                 ));
             }
         }
+        c.distinct("motion.psidot", &self.motion.psidot);
         if !c.is_ok() {
             return c.finish();
         }
@@ -174,10 +175,11 @@ impl Fig9Scene {
                         c.push(SceneError::invalid(format!("gamma.values[{i}]"), v, three_point.as_str()));
                     }
                 }
+                c.distinct("gamma.values", values);
             }
-            (None, Some(_), Some(_)) => c.push(SceneError::invalid(
+            (None, Some(start), Some(_)) => c.push(SceneError::invalid(
                 "gamma.start",
-                g.start,
+                start,
                 "give either gamma.start or gamma.start_over_gamma0, not both",
             )),
             (None, start, ratio) if start.is_some() || ratio.is_some() => {
@@ -193,11 +195,13 @@ impl Fig9Scene {
                 }
                 match g.end {
                     Some(e) if e > g0 && e < half_pi => {}
-                    e => c.push(SceneError::invalid("gamma.end", e, three_point.as_str())),
+                    Some(e) => c.push(SceneError::invalid("gamma.end", e, three_point.as_str())),
+                    None => c.push(SceneError::Missing { field: "gamma.end".into() }),
                 }
                 match g.count {
                     Some(n) if n >= 2 => {}
-                    n => c.push(SceneError::invalid("gamma.count", n, "must be at least 2")),
+                    Some(n) => c.push(SceneError::invalid("gamma.count", n, "must be at least 2")),
+                    None => c.push(SceneError::Missing { field: "gamma.count".into() }),
                 }
             }
             _ => c.push(SceneError::invalid(

@@ -60,7 +60,7 @@ use crate::scene::limits::WorkItem;
 use crate::scene::numbers::significant;
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, outcome_text, run_one};
 use crate::scene::shared::compliant_peg_3d::replay::insertion;
-use crate::scene::shared::compliant_peg_3d::{margins, output, ranges};
+use crate::scene::shared::compliant_peg_3d::{margins, output, ranges, timescales};
 use crate::scene::shared::replay;
 use crate::scene::simulate::{describe_stop, integration_summary};
 use crate::scene::summary::{Metric, RunSummary};
@@ -104,6 +104,11 @@ impl Written for Ready {
 }
 
 impl Scene for Ready {
+    fn time_scales(&self) -> Option<crate::scene::TimeScales> {
+        let scales = timescales::held(&self.built.params, &self.built.held);
+        Some(crate::scene::TimeScales::new(&self.integrator, scales))
+    }
+
     fn describe(&self) -> String {
         let r = &self.scene.robot;
         let w = &self.built.held.wrist;
@@ -145,7 +150,7 @@ impl Scene for Ready {
             ..RunSummary::default()
         };
         let samples = output::samples(sys, sol)?;
-        let peaks = output::write_series(ctx, &samples)?;
+        let peaks = output::write_series(ctx, sys, &samples, &sol.events)?;
         let rows = output::transitions(sys, sol, &run.transitions);
         output::write_events(ctx, sys, &rows)?;
         let mm = 1e3;
@@ -195,7 +200,7 @@ impl Scene for Ready {
             fig.panels.push(margin_panel);
         }
         ctx.figure(Part::Main, &fig)?;
-        output::write_views(
+        crate::scene::shared::compliant_peg_3d::views::write_views(
             ctx,
             sys,
             (
@@ -207,10 +212,10 @@ impl Scene for Ready {
             12,
         )?;
         out.metrics = output::metrics(&peaks);
-        out.metrics.push(Metric::new(
-            format!("outcome: {}", outcome_text(&run.outcome)),
+        out.metrics.push(Metric::coded(
+            "outcome",
             run.outcome.code(),
-            "",
+            outcome_text(&run.outcome),
         ));
         out.metrics.push(Metric::new("end time", sol.t_final, "s"));
         let (depth, tilt, _) = crate::compliant_peg_3d::insertion::depth_tilt(

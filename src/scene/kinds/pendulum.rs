@@ -99,6 +99,28 @@ impl Written for PendulumScene {
 }
 
 impl Scene for PendulumScene {
+    fn time_scales(&self) -> Option<crate::scene::TimeScales> {
+        use crate::scene::{TimeScale, TimeScales, significant};
+        let p = &self.pendulum;
+        let mut scales = vec![TimeScale::new(
+            "the small-swing period 2 pi sqrt(L/g)",
+            format!(
+                "pendulum.length = {} m, pendulum.gravity = {} m/s^2",
+                significant(p.length),
+                significant(p.gravity)
+            ),
+            std::f64::consts::TAU * (p.length / p.gravity).sqrt(),
+        )];
+        if p.omega0 != 0.0 {
+            scales.push(TimeScale::new(
+                "a turn at the initial rate, 2 pi / omega0",
+                format!("pendulum.omega0 = {} rad/s", significant(p.omega0)),
+                std::f64::consts::TAU / p.omega0.abs(),
+            ));
+        }
+        Some(TimeScales::new(&self.integrator, scales))
+    }
+
     fn describe(&self) -> String {
         let p = &self.pendulum;
         format!(

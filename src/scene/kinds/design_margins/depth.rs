@@ -81,10 +81,10 @@ impl Nominal {
     /// The nominal run's metrics.
     pub fn metrics(&self, prm: &Peg3dParams, clearance_ratio: f64) -> Vec<Metric> {
         let mut m = vec![
-            Metric::new(
-                format!("nominal run outcome: {}", outcome_text(&self.outcome)),
+            Metric::coded(
+                "nominal run outcome",
                 self.outcome.code(),
-                "",
+                outcome_text(&self.outcome),
             ),
             Metric::new("nominal run end time", self.end, "s"),
         ];

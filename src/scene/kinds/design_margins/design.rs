@@ -10,7 +10,7 @@ use crate::error::{RunError, SceneError, SceneErrors};
 use crate::scene::integrator::{DefaultMethod, IntegratorSpec};
 use crate::scene::limits::try_with_capacity;
 use crate::scene::progress::{Progress, par_map_counted};
-use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, run_one};
+use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, at_grid_point, run_one};
 use crate::scene::shared::compliant_peg_3d::tables::{
     CriteriaTable, PegTable, RobotTable, WristTable,
 };
@@ -92,9 +92,11 @@ pub struct GridRun {
     pub end_depth: f64,
     /// The contact pairs at the end, e.g. `rim_top`.
     pub end_contacts: String,
-    /// Largest contact normal force over the output samples (N).
+    /// Largest contact normal force over the output samples, the events
+    /// and the final state (N).
     pub peak_contact: f64,
-    /// Largest wrist force over the output samples (N).
+    /// Largest wrist force over the output samples, the events and the
+    /// final state (N).
     pub peak_wrist: f64,
 }
 
@@ -202,6 +204,7 @@ impl DesignScene {
                 c.finite(&field, *v);
                 range.check_as(&mut c, &field, *v);
             }
+            c.distinct(&format!("grid.{name}"), list);
         }
         if let Some(s) = g.seat_depth {
             c.finite("grid.seat_depth", s);
@@ -259,7 +262,7 @@ impl Checked {
         let (g, d) = (&scene.grid, nominal.params.hole_diameter);
         let mut c = Checker::default();
         for (i, &centre_lateral) in g.centre_lateral_errors.iter().enumerate() {
-            for &angular_deg in &g.angular_errors_deg {
+            for (j, &angular_deg) in g.angular_errors_deg.iter().enumerate() {
                 let p = Point {
                     centre_lateral,
                     angular_deg,
@@ -279,7 +282,27 @@ impl Checked {
                     ));
                     continue;
                 }
-                points.push((p, rcc.build()?));
+                match rcc.build() {
+                    Ok(built) => points.push((p, built)),
+                    Err(e) => {
+                        let (lateral, angular) = (
+                            format!("grid.centre_lateral_errors[{i}]"),
+                            format!("grid.angular_errors_deg[{j}]"),
+                        );
+                        at_grid_point(
+                            e,
+                            &[
+                                (lateral.clone(), centre_lateral),
+                                (angular.clone(), angular_deg),
+                            ],
+                            &[
+                                ("robot.lateral_error", &lateral, centre_lateral),
+                                ("robot.angular_error_deg", &angular, angular_deg),
+                            ],
+                            &mut c,
+                        );
+                    }
+                }
             }
         }
         c.finish()?;
@@ -330,14 +353,7 @@ impl Design {
 
     fn one(&self, p: Point, b: &Built) -> Result<GridRun, RunError> {
         let run = run_one(b, &self.integrator, false, &mut Progress::silent())?;
-        let (mut pc, mut pw) = (0.0_f64, 0.0_f64);
-        for (&t, y) in run.solution.t.iter().zip(&run.solution.x) {
-            let s = run.system.sample(t, y)?;
-            pc = pc.max(s.peak_normal());
-            if let Some(w) = &s.wrist {
-                pw = pw.max(w.force.norm());
-            }
-        }
+        let peaks = run.peaks()?;
         let end = run
             .system
             .sample(run.solution.t_final, &run.solution.x_final)?;
@@ -350,8 +366,8 @@ impl Design {
             end: run.solution.t_final,
             end_depth: end.depth,
             end_contacts: pairs.join(" "),
-            peak_contact: pc,
-            peak_wrist: pw,
+            peak_contact: peaks.contact,
+            peak_wrist: peaks.wrist_force,
         })
     }
 }

@@ -38,10 +38,13 @@
 
 use serde::Deserialize;
 
+mod model_errors;
 pub mod output;
 pub mod ranges;
 pub mod replay;
+mod start;
 
+use model_errors::{tilt_error, to_scene_error};
 use output::write_outputs;
 
 use crate::compliant_peg::{
@@ -49,7 +52,7 @@ use crate::compliant_peg::{
     PegHoleGeometry, PegState, Sample,
 };
 use crate::error::{RunError, SceneError, SceneErrors};
-use crate::hertz::{HertzError, Material};
+use crate::hertz::Material;
 use crate::integrate::{Direction, Event};
 use crate::scene::context::RunContext;
 use crate::scene::document::Document;
@@ -69,7 +72,7 @@ pub const KIND: Kind = Kind {
     name: "insert_compliant",
     about: "compliant planar peg: insertion with Hertz contacts and friction",
     parse,
-    ranges: &[],
+    ranges: &[ranges::INSERT_COMPLIANT],
 };
 
 fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
@@ -213,55 +216,6 @@ struct Ready {
     method_reason: &'static str,
 }
 
-/// The scene field a model-level field corresponds to.
-fn scene_field(field: &str) -> String {
-    let t = "insert_compliant";
-    let mapped = match field {
-        "peg_radius" => "clearance_ratio".to_owned(),
-        "mass" | "inertia" => "density".to_owned(),
-        "tilt" => "initial_tilt".to_owned(),
-        "damping" => "contact_damping".to_owned(),
-        f => f
-            .replace("peg.", "peg_material.")
-            .replace("hole.", "hole_material."),
-    };
-    format!("{t}.{mapped}")
-}
-
-fn to_scene_error(e: HertzError, p: &InsertParams) -> SceneErrors {
-    match e {
-        // The model's peg radius and mass are derived from the scene's
-        // clearance ratio and density: say so rather than print the derived
-        // value as if it were the scene's.
-        HertzError::Invalid {
-            field,
-            value,
-            reason,
-        } if matches!(field.as_str(), "peg_radius" | "mass" | "inertia") => {
-            let own = if field == "peg_radius" {
-                p.clearance_ratio
-            } else {
-                p.density
-            };
-            SceneErrors::from(SceneError::invalid(
-                scene_field(&field),
-                own,
-                format!("gives {field} = {value:e}, which {reason}"),
-            ))
-        }
-        HertzError::Invalid {
-            field,
-            value,
-            reason,
-        } => SceneErrors::from(SceneError::invalid(scene_field(&field), value, reason)),
-        other => SceneErrors::from(SceneError::invalid(
-            "insert_compliant",
-            f64::NAN,
-            other.to_string(),
-        )),
-    }
-}
-
 impl InsertCompliantScene {
     /// Validates every field and builds the model parameters, loads and
     /// initial state.
@@ -273,6 +227,9 @@ impl InsertCompliantScene {
         let cr = c.finite(&f("clearance_ratio"), p.clearance_ratio);
         let len = c.positive(&f("peg_length"), p.peg_length);
         c.positive(&f("density"), p.density);
+        ranges::HOLE_DIAMETER.check(&mut c, d);
+        ranges::PEG_LENGTH.check(&mut c, len);
+        ranges::DENSITY.check(&mut c, p.density);
         c.finite(&f("axial_force"), p.axial_force);
         c.finite(&f("radial_force"), p.radial_force);
         c.finite(&f("torque"), p.torque);
@@ -339,17 +296,38 @@ impl InsertCompliantScene {
         };
         let params = CompliantParams::try_new(spec).map_err(|e| to_scene_error(e, p))?;
         let initial = if p.initial_tilt > 0.0 {
-            PegState::two_point(&params, p.initial_tilt, 0.0).map_err(|e| to_scene_error(e, p))?
+            PegState::two_point(&params, p.initial_tilt, 0.0)
+                .map_err(|e| tilt_error(e, &params, p))?
         } else {
             PegState::centred(&params, p.initial_depth)
         };
-        if p.target_depth <= initial.depth(&params) {
+        let depth = initial.depth(&params);
+        if p.initial_tilt > 0.0 && depth >= len {
+            // The two-point depth grows like c D / theta: a tilt this small
+            // starts the peg deeper than it is long.
+            return Err(SceneErrors::from(SceneError::invalid(
+                f("initial_tilt"),
+                p.initial_tilt,
+                format!(
+                    "the two-point start at this tilt lies {} m deep (about c D / tilt), beyond \
+                     insert_compliant.peg_length = {} m; a larger tilt starts higher",
+                    crate::scene::numbers::significant(depth),
+                    crate::scene::numbers::significant(len)
+                ),
+            )));
+        }
+        if p.target_depth <= depth {
+            let from = if p.initial_tilt > 0.0 {
+                "the two-point start of insert_compliant.initial_tilt"
+            } else {
+                "insert_compliant.initial_depth"
+            };
             return Err(SceneErrors::from(SceneError::invalid(
                 f("target_depth"),
                 p.target_depth,
                 format!(
-                    "must exceed the initial depth {:e} m",
-                    initial.depth(&params)
+                    "must exceed the initial depth {} m ({from})",
+                    crate::scene::numbers::significant(depth)
                 ),
             )));
         }
@@ -358,6 +336,7 @@ impl InsertCompliantScene {
             radial: p.radial_force,
             torque: p.torque,
         };
+        start::overlap(&params, &load, &initial, p)?;
         Ok(Built {
             params,
             load,
@@ -377,6 +356,11 @@ impl Written for Ready {
 }
 
 impl Scene for Ready {
+    fn time_scales(&self) -> Option<crate::scene::TimeScales> {
+        let scales = start::time_scales(&self.built, &self.scene.insert_compliant);
+        Some(crate::scene::TimeScales::new(&self.integrator, scales))
+    }
+
     fn describe(&self) -> String {
         let p = &self.scene.insert_compliant;
         format!(

@@ -14,10 +14,33 @@
 //!   [`MAX_YOUNGS_MODULUS`] (ten times diamond).
 
 use crate::error::SceneError;
+use crate::scene::numbers::significant;
 use crate::scene::ranges::{
-    MAX_CONTACT_OVER_RADIUS, MAX_YOUNGS_MODULUS, MIN_CLEARANCE_RATIO, MIN_YOUNGS_MODULUS,
+    FieldRange, MAX_CONTACT_OVER_RADIUS, MAX_YOUNGS_MODULUS, MIN_CLEARANCE_RATIO,
+    MIN_YOUNGS_MODULUS,
 };
 use crate::scene::validate::Checker;
+
+const WHY_SIZE: &str = "engineering sizes, a micrometre to a kilometre: the peg's mass and inertia and the contact energies stay far inside f64";
+
+/// `insert_compliant.hole_diameter`.
+pub const HOLE_DIAMETER: FieldRange =
+    FieldRange::new("insert_compliant.hole_diameter", 1e-6, 1e3, "m", WHY_SIZE);
+/// `insert_compliant.peg_length`.
+pub const PEG_LENGTH: FieldRange =
+    FieldRange::new("insert_compliant.peg_length", 1e-6, 1e3, "m", WHY_SIZE);
+/// `insert_compliant.density`.
+pub const DENSITY: FieldRange = FieldRange::new(
+    "insert_compliant.density",
+    1.0,
+    1e5,
+    "kg/m^3",
+    "foams to beyond the densest metals (osmium: 22,600 kg/m^3)",
+);
+
+/// The declared ranges of the `[insert_compliant]` table (the others
+/// depend on each other: [`check_compliant`]).
+pub const INSERT_COMPLIANT: &[FieldRange] = &[HOLE_DIAMETER, PEG_LENGTH, DENSITY];
 
 /// The fields of a compliant peg-in-hole scene whose ranges depend on each
 /// other (SI units).
@@ -111,10 +134,13 @@ pub fn check_compliant(c: &mut Checker, table: &str, f: &CompliantFields) {
                 radius,
                 format!(
                     "Hertz contact needs the contact small against the fillet: at the applied load \
-                     {:e} N and E* = {e_star:e} Pa the contact radius would be {ratio:.3e} times the \
-                     fillet radius (limit {MAX_CONTACT_OVER_RADIUS}); use a larger fillet, a stiffer \
-                     material or a smaller load",
-                    f.load
+                     {} N ({t}.axial_force, {t}.radial_force, {t}.torque / r) and E* = {} Pa the \
+                     contact radius would be {ratio:.3e} times the fillet radius (limit \
+                     {MAX_CONTACT_OVER_RADIUS}); use a larger fillet, a stiffer material or a \
+                     smaller load",
+                    significant(f.load),
+                    significant(e_star),
+                    t = table
                 ),
             ));
         }

@@ -19,6 +19,7 @@
 //! style). An optional `[sweep]` table adds the dynamic check of one
 //! diagram ([`sweep`]).
 
+mod comparison;
 pub(crate) mod figure;
 pub mod ranges;
 pub mod sweep;
@@ -133,6 +134,7 @@ impl JammingScene {
             for (i, &v) in values.iter().enumerate() {
                 range.check_as(&mut c, &format!("jamming.{field}[{i}]"), v);
             }
+            c.distinct(&format!("jamming.{field}"), values);
         }
         c.finish()
     }

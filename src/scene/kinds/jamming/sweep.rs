@@ -161,42 +161,32 @@ impl SweepParams {
 
     /// Checks every field and builds the model; errors name `sweep.<field>`.
     pub fn prepare(&self) -> Result<SweepSetup, SceneErrors> {
+        use super::ranges as r;
         let mut c = Checker::default();
-        c.positive("sweep.r_m", self.r_m);
-        c.check(
-            crate::scene::validate::finite("sweep.c", self.c).and_then(|v| {
-                if v > 0.0 && v < 1.0 {
-                    Ok(v)
-                } else {
-                    Err(SceneError::invalid("sweep.c", v, "must lie in (0, 1)"))
-                }
-            }),
-            self.c,
-        );
-        c.positive("sweep.mu", self.mu);
-        c.positive("sweep.l_m", self.l_m);
-        c.positive("sweep.fz_n", self.fz_n);
-        c.positive("sweep.peg_length_m", self.peg_length_m);
-        c.positive("sweep.fx_over_fz_max", self.fx_over_fz_max);
-        c.positive("sweep.m_over_rfz_max", self.m_over_rfz_max);
-        c.positive("sweep.t_max_s", self.t_max_s);
-        c.positive("sweep.advance_m", self.advance_m);
-        c.positive("sweep.window_s", self.window_s);
-        let values = [
-            self.r_m,
-            self.c,
-            self.mu,
-            self.l_m,
-            self.peg_length_m,
-            self.contact_damping,
-        ];
-        for (range, v) in super::ranges::SWEEP.iter().zip(values) {
-            range.check(&mut c, v);
-        }
-        if self.n < 3 {
-            c.push(SceneError::invalid("sweep.n", self.n, "must be at least 3"));
-        }
+        let [r_m, cr, mu, l_m, peg_length, damping, ..] = r::SWEEP else {
+            return Err(SceneErrors::from(SceneError::invalid(
+                "sweep",
+                "",
+                "no ranges",
+            )));
+        };
+        r_m.require(&mut c, self.r_m);
+        cr.require(&mut c, self.c);
+        mu.require(&mut c, self.mu);
+        l_m.require(&mut c, self.l_m);
+        peg_length.require(&mut c, self.peg_length_m);
+        damping.require(&mut c, self.contact_damping);
+        r::FZ.require(&mut c, self.fz_n);
+        r::FX_MAX.require(&mut c, self.fx_over_fz_max);
+        r::M_MAX.require(&mut c, self.m_over_rfz_max);
+        let t_max = r::T_MAX.require(&mut c, self.t_max_s);
+        r::ADVANCE.require(&mut c, self.advance_m);
+        r::WINDOW
+            .within(f64::NAN, if t_max.is_finite() { t_max } else { f64::NAN })
+            .require(&mut c, self.window_s);
+        r::N.check(&mut c, self.n as f64);
         crate::scene::integrator::check_tolerances(&mut c, "sweep", self.rtol, self.atol);
+        r::ATOL.check(&mut c, self.atol);
         let method = self.method();
         let integrator = c.check(
             method.with_step(None).ok_or_else(|| {
@@ -211,6 +201,7 @@ impl SweepParams {
         c.finish()?;
         let peg = PegHole::try_new(self.r_m, self.c, self.mu)
             .map_err(|e| SceneError::invalid(format!("sweep.{}", e.field), e.value, e.reason))?;
+        let refused = |e: crate::hertz::HertzError| self.refusal(e);
         let spec = SweepSpec {
             peg,
             depth: self.l_m,
@@ -231,13 +222,31 @@ impl SweepParams {
         };
         SweepSetup::new(spec)
             .and_then(|s| s.with_friction_law(law))
-            .map_err(|e| {
-                SceneErrors::from(SceneError::invalid(
-                    "sweep",
-                    self.l_m,
-                    format!("the compliant model refused the sweep: {e}"),
-                ))
-            })
+            .map_err(refused)
+    }
+
+    /// The compliant model's refusal of the sweep, named by the `[sweep]`
+    /// field (and its value as written) that the model's field comes from.
+    fn refusal(&self, e: crate::hertz::HertzError) -> SceneErrors {
+        use crate::hertz::HertzError;
+        let (field, value) = match &e {
+            HertzError::Invalid { field, .. } => match field.as_str() {
+                "damping" => ("contact_damping", self.contact_damping),
+                "friction" => ("mu", self.mu),
+                "peg_radius" | "hole_diameter" => ("r_m", self.r_m),
+                "mass" | "inertia" | "com_height" => ("peg_length_m", self.peg_length_m),
+                // The depth, and the tilt of the two-point lean at it.
+                _ => ("l_m", self.l_m),
+            },
+            // A contact that is no point contact at the start: the lean of
+            // the requested depth.
+            _ => ("l_m", self.l_m),
+        };
+        SceneErrors::from(SceneError::invalid(
+            format!("sweep.{field}"),
+            value,
+            format!("the compliant model refused the sweep: {e}"),
+        ))
     }
 }
 
@@ -296,26 +305,18 @@ pub fn run(
     let plain: Vec<_> = points.iter().map(|p| p.point).collect();
     let exact = sweep::check(&setup.diagram, &plain, grid.resolution());
     let small = sweep::check(&whitney, &plain, grid.resolution());
-    let metrics = vec![
-        Metric::new("sweep runs", points.len() as f64, ""),
-        Metric::new(
-            "grid points judged (beyond one cell of the boundary)",
-            exact.judged as f64,
-            "",
-        ),
-        Metric::new(
-            "points contradicting the exact diagram",
-            exact.mismatches.len() as f64,
-            "",
-        ),
-        Metric::new(
-            "points contradicting Whitney's diagram",
-            small.mismatches.len() as f64,
-            "",
-        ),
-        Metric::new("runs neither inserted nor stuck", exact.other as f64, ""),
-    ];
-    Ok(metrics)
+    let tolerances = format!(
+        "sweep.method = {}, sweep.rtol = {}, sweep.atol = {}",
+        params.method().name(),
+        crate::scene::numbers::significant(params.rtol),
+        crate::scene::numbers::significant(params.atol)
+    );
+    Ok(super::comparison::comparison(
+        points.len(),
+        &exact,
+        &small,
+        &tolerances,
+    ))
 }
 
 fn figure(
@@ -336,6 +337,7 @@ fn figure(
         (RunClass::Jammed, 1),
         (RunClass::Wedged, 4),
         (RunClass::Other, 7),
+        (RunClass::Failed, 3),
     ];
     for (class, colour) in classes {
         let pts: Vec<(f64, f64)> = points

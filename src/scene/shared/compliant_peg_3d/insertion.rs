@@ -7,13 +7,17 @@
 
 use serde::Deserialize;
 
+use nalgebra::SVector;
+
+use super::start;
 use super::tables::{CriteriaTable, PegTable, RobotTable, WristTable, held};
 use crate::compliant_peg_3d::Peg3dParams;
 use crate::compliant_peg_3d::insertion::{Held, Insertion, N_STATE};
 use crate::compliant_peg_3d::outcome::{
     CountCache, Criteria, Outcome, TERMINAL_NAMES, classify, terminal_events, transition_events,
 };
-use crate::error::{RunError, SceneErrors};
+use crate::compliant_peg_3d::robot::Descent;
+use crate::error::{RunError, SceneError, SceneErrors};
 use crate::integrate::{Solution, StopReason};
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::numbers::significant;
@@ -66,12 +70,183 @@ impl RccScene {
             held(&self.peg, &self.wrist, &self.robot, &self.criteria, &mut c);
         c.extend(self.integrator.check("integrator"));
         c.finish()?;
-        Ok(Built {
+        let built = Built {
             params,
             held,
             criteria,
             start_depth: (self.robot.start_height < 0.0).then_some(-self.robot.start_height),
-        })
+        };
+        let sys = Insertion::new(built.params, Some(built.held), 0.0);
+        let y0 = built.start_state(&sys);
+        if let Some(o) = start::overlap(&sys, &y0) {
+            return Err(SceneErrors::from(self.start_refusal(&built, &o)));
+        }
+        // A limit the start already passes is never crossed (the limit's
+        // event fires on a rise through it) and the summary would report a
+        // stop at a later, smaller force.
+        let at_start = sys
+            .sample(0.0, &y0)
+            .ok()
+            .and_then(|s| s.wrist)
+            .map_or(0.0, |w| w.force.norm());
+        if at_start >= built.criteria.wrist_force_limit {
+            return Err(SceneErrors::from(SceneError::invalid(
+                "criteria.wrist_force_limit",
+                self.criteria.wrist_force_limit,
+                format!(
+                    "the wrist already carries {} N at the start ({}), so the limit would be \
+                     passed before the run begins and never detected; it must exceed that force",
+                    significant(at_start),
+                    built.start_load()
+                ),
+            )));
+        }
+        Ok(built)
+    }
+
+    /// Why the start pose is refused, on the field that places the peg
+    /// there: `wrist.axial_stiffness` when the wrist's static sag under
+    /// the peg's weight is what sinks it, else `robot.start_height`, the
+    /// errors named in the reason with the start height that clears.
+    fn start_refusal(&self, b: &Built, o: &start::Overlap) -> SceneError {
+        let r = &self.robot;
+        let h = r.start_height;
+        let clears = h + o.lift;
+        let sag = b.sag();
+        if b.start_depth.is_some() {
+            return SceneError::invalid(
+                "robot.start_height",
+                h,
+                format!(
+                    "{}: the peg starts in the bore, centred and aligned, at that depth",
+                    o.describe()
+                ),
+            );
+        }
+        if sag > 0.0 && sag >= 0.5 * o.lift {
+            return SceneError::invalid(
+                "wrist.axial_stiffness",
+                self.wrist.axial_stiffness,
+                format!(
+                    "{}: the wrist's static sag m g / K_z = {} m under the peg's weight puts the \
+                     peg that far below robot.start_height = {} m; a stiffer wrist, or \
+                     robot.start_height of at least {} m, clears the block",
+                    o.describe(),
+                    significant(sag),
+                    significant(h),
+                    significant(clears)
+                ),
+            );
+        }
+        SceneError::invalid(
+            "robot.start_height",
+            h,
+            format!(
+                "{}: with robot.angular_error_deg = {}, robot.lateral_error = {} m{} the tip \
+                 starts too low; robot.start_height of at least {} m (or smaller errors) clears \
+                 the block",
+                o.describe(),
+                significant(r.angular_error_deg),
+                significant(r.lateral_error),
+                if sag > 0.0 {
+                    format!(
+                        " and the wrist's static sag m g / K_z = {} m",
+                        significant(sag)
+                    )
+                } else {
+                    String::new()
+                },
+                significant(clears)
+            ),
+        )
+    }
+}
+
+impl Built {
+    /// The start state of the run: in the bore (`robot.start_height < 0`)
+    /// or held above it.
+    pub fn start_state(&self, sys: &Insertion) -> SVector<f64, N_STATE> {
+        match self.start_depth {
+            Some(d) => sys.centred_start(d),
+            None => sys.held_start(),
+        }
+        .unwrap_or_default()
+    }
+
+    /// What loads the wrist at the start, in words (for a refusal of a
+    /// force limit the start already passes).
+    fn start_load(&self) -> &'static str {
+        if self.start_depth.is_some() {
+            "the peg starts centred and upright in the bore, so the wrist is deflected by \
+             robot.lateral_error and robot.angular_error_deg and carries the peg's weight"
+        } else if matches!(self.held.robot.descent, Descent::Force { .. }) {
+            "the robot's axial push and the peg's weight"
+        } else {
+            "the peg's weight m g, held by the wrist's static sag"
+        }
+    }
+
+    /// The wrist's static axial sag `m g / K_z` at a speed-controlled start
+    /// held above the bore (m; 0 under an axial force or in the bore).
+    pub fn sag(&self) -> f64 {
+        let forced = matches!(self.held.robot.descent, Descent::Force { .. });
+        if forced || self.start_depth.is_some() || self.held.wrist.axial <= 0.0 {
+            0.0
+        } else {
+            self.params.mass * self.params.gravity / self.held.wrist.axial
+        }
+    }
+}
+
+/// The errors of grid point `point` (its entries, e.g.
+/// `("grid.lateral_errors[1]", 2e-4)`) with the robot fields the grid
+/// replaces renamed as the grid's entries (`renames`: robot field, grid
+/// entry, the grid value), and a start-pose refusal (on
+/// `robot.start_height`) named on the last entry with the point in its
+/// reason; identical errors (one per point of
+/// a field every point shares) are kept once by [`Checker::push_once`].
+pub fn at_grid_point(
+    errors: SceneErrors,
+    point: &[(String, f64)],
+    renames: &[(&str, &str, f64)],
+    c: &mut Checker,
+) {
+    let at = point
+        .iter()
+        .map(|(f, v)| format!("{f} = {}", significant(*v)))
+        .collect::<Vec<_>>()
+        .join(", ");
+    for e in errors.errors {
+        let error = match e.error {
+            SceneError::Invalid {
+                field,
+                value,
+                reason,
+            } => {
+                if let Some((_, grid, v)) = renames.iter().find(|(robot, ..)| *robot == field) {
+                    SceneError::invalid(*grid, v, format!("at the grid point ({at}): {reason}"))
+                } else if field == "robot.start_height"
+                    && reason.starts_with(start::OVERLAP)
+                    && let Some((last, v)) = point.last()
+                {
+                    SceneError::invalid(
+                        last.clone(),
+                        v,
+                        format!(
+                            "at the grid point ({at}), from robot.start_height = {value}: {reason}"
+                        ),
+                    )
+                } else {
+                    SceneError::Invalid {
+                        field,
+                        value,
+                        reason,
+                    }
+                }
+            }
+            other => other,
+        };
+        c.push_once(error);
     }
 }
 
@@ -100,11 +275,7 @@ pub fn run_one(
 ) -> Result<Run, RunError> {
     let sys = Insertion::new(b.params, Some(b.held), 0.0);
     let counter = Insertion::new(b.params, None, 0.0);
-    let y0 = match b.start_depth {
-        Some(d) => sys.centred_start(d),
-        None => sys.held_start(),
-    }
-    .unwrap_or_default();
+    let y0 = b.start_state(&sys);
     let (solution, what) = {
         let cache = CountCache::new(&counter);
         let mut events = terminal_events(&sys, b.criteria);
@@ -117,7 +288,7 @@ pub fn run_one(
         (integrate(&sys, y0, spec, events, progress)?, what)
     };
     if let Some(ModelError::Hertz(e)) = solution.model_error.clone() {
-        return Err(RunError::Hertz(e));
+        return Err(start::hertz_refusal(&b.params, solution.t_final, e));
     }
     let terminal = match solution.stop {
         StopReason::Event { index, .. } if index < TERMINAL_NAMES.len() => Some(index),
@@ -169,6 +340,45 @@ pub fn run_one(
         outcome,
         transitions: what,
     })
+}
+
+/// The largest values along one insertion, over its stored samples (which
+/// end with the final state) and its located events.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct RunPeaks {
+    /// Largest contact normal force (N).
+    pub contact: f64,
+    /// Largest Hertz pressure `p₀` (Pa).
+    pub pressure: f64,
+    /// Largest wrist lateral moment about the compliance centre (N·m).
+    pub wrist_moment: f64,
+    /// Largest wrist force (N).
+    pub wrist_force: f64,
+}
+
+impl Run {
+    /// The peaks of the run over every stored sample and every event state
+    /// (a terminal force limit is located between two samples: its state
+    /// holds the peak the limit stopped).
+    ///
+    /// # Errors
+    /// A Hertz setup error at one of those states.
+    pub fn peaks(&self) -> Result<RunPeaks, RunError> {
+        let sol = &self.solution;
+        let samples = sol.t.iter().copied().zip(sol.x.iter());
+        let events = sol.events.iter().map(|e| (e.t, &e.x));
+        let mut p = RunPeaks::default();
+        for (t, y) in samples.chain(events) {
+            let s = self.system.sample(t, y)?;
+            p.contact = p.contact.max(s.peak_normal());
+            p.pressure = p.pressure.max(self.system.peak_pressure(y, &s).0);
+            if let Some(w) = &s.wrist {
+                p.wrist_moment = p.wrist_moment.max(w.moment_robot.xy().norm());
+                p.wrist_force = p.wrist_force.max(w.force.norm());
+            }
+        }
+        Ok(p)
+    }
 }
 
 /// The outcome in words.

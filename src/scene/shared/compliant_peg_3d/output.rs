@@ -2,7 +2,7 @@
 //! contact force and point, the wrist's force, moment and deflection,
 //! depth, tilt, energy balance), the event list CSV and the figures
 //! (forces against time or depth, the contact-state timeline, side and
-//! top views of the peg at each event).
+//! top views of the peg at each event, [`super::views`]).
 //!
 //! Time-series columns: `t_s, depth_m, tilt_rad, azimuth_rad, px_m, py_m,
 //! pz_m, points`, then per pair and slot `k = 1, 2` (the pair's points in
@@ -13,16 +13,16 @@
 //! compliance centre), `wrist_dx_m, wrist_dy_m, wrist_dz_m` (deflection),
 //! `kinetic_J, balance_J`.
 
-use nalgebra::{SVector, Vector3};
+use nalgebra::SVector;
 
 use crate::compliant_peg_3d::Pair;
-use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, Sample, motion, peg_state};
+use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, Sample, peg_state};
 use crate::compliant_peg_3d::outcome::{Transition, counts, label, two_point_counts};
 use crate::error::RunError;
-use crate::integrate::Solution;
+use crate::integrate::{EventHit, Solution};
 use crate::output::csv::format_f64;
 use crate::output::names::Part;
-use crate::output::plot::{Figure, Panel, Series, Style};
+use crate::output::plot::{Panel, Series, Style};
 use crate::scene::context::RunContext;
 use crate::scene::summary::Metric;
 
@@ -142,11 +142,45 @@ pub fn samples(sys: &Insertion, sol: &Solution<N_STATE>) -> Result<Samples, RunE
     Ok(Samples { rows })
 }
 
-/// Writes `<name>.csv` and returns the peaks.
+impl Peaks {
+    /// Takes the forces and moments of sample `smp` into the peaks.
+    fn include(&mut self, smp: &Sample) {
+        self.contact_force = self.contact_force.max(smp.peak_normal());
+        if let Some(w) = &smp.wrist {
+            self.wrist_force = self.wrist_force.max(w.force.norm());
+            self.wrist_moment = self.wrist_moment.max(w.moment_robot.xy().norm());
+        }
+    }
+
+    /// Takes the energy balance of output sample `smp` at state `y` into
+    /// the drift; `e0` is the balance at the start. (Event states are left
+    /// out: at a located contact transition the contact potential is
+    /// evaluated exactly where a point appears, which measures the contact
+    /// search there, not the integration's drift.)
+    fn include_energy(&mut self, y: &SVector<f64, N_STATE>, smp: &Sample, e0: f64) {
+        self.drift = self.drift.max((smp.balance - e0).abs());
+        self.scale = self
+            .scale
+            .max(y[13].abs())
+            .max(y[15].abs())
+            .max(smp.kinetic);
+    }
+}
+
+/// Writes `<name>.csv` (the samples, which end with the run's final state)
+/// and returns the peak forces and moments over the samples and the states
+/// of `events` (the located events of the run, contact transitions and the
+/// terminal one), so that a peak is never missed because it fell between
+/// two samples at an event; the energy drift over the samples.
 ///
 /// # Errors
-/// Output errors.
-pub fn write_series(ctx: &RunContext, s: &Samples) -> Result<Peaks, RunError> {
+/// Output errors; a Hertz setup error at an event state.
+pub fn write_series(
+    ctx: &RunContext,
+    sys: &Insertion,
+    s: &Samples,
+    events: &[EventHit<N_STATE>],
+) -> Result<Peaks, RunError> {
     let h = header();
     let hr: Vec<&str> = h.iter().map(String::as_str).collect();
     let mut csv = ctx.table(Part::Main, &hr)?;
@@ -154,19 +188,13 @@ pub fn write_series(ctx: &RunContext, s: &Samples) -> Result<Peaks, RunError> {
     let e0 = s.rows.first().map_or(0.0, |r| r.2.balance);
     for (t, y, smp) in &s.rows {
         csv.row(&row(*t, y, smp))?;
-        peaks.contact_force = peaks.contact_force.max(smp.peak_normal());
-        if let Some(w) = &smp.wrist {
-            peaks.wrist_force = peaks.wrist_force.max(w.force.norm());
-            peaks.wrist_moment = peaks.wrist_moment.max(w.moment_robot.xy().norm());
-        }
-        peaks.drift = peaks.drift.max((smp.balance - e0).abs());
-        peaks.scale = peaks
-            .scale
-            .max(y[13].abs())
-            .max(y[15].abs())
-            .max(smp.kinetic);
+        peaks.include(smp);
+        peaks.include_energy(y, smp, e0);
     }
     csv.finish()?;
+    for e in events {
+        peaks.include(&sys.sample(e.t, &e.x)?);
+    }
     Ok(peaks)
 }
 
@@ -302,114 +330,6 @@ pub fn forces_panel(s: &Samples) -> Panel {
         ));
     }
     p
-}
-
-fn circle(c: Vector3<f64>, u: Vector3<f64>, v: Vector3<f64>, r: f64) -> Vec<Vector3<f64>> {
-    (0..=48)
-        .map(|k| {
-            let a = std::f64::consts::TAU * k as f64 / 48.0;
-            c + (u * a.cos() + v * a.sin()) * r
-        })
-        .collect()
-}
-
-/// The side (x–z) and top (x–y) views of the peg and the hole at state `y`,
-/// titled `title`, in millimetres.
-pub fn views(sys: &Insertion, y: &SVector<f64, N_STATE>, title: &str) -> [Panel; 2] {
-    let prm = &sys.peg.params;
-    let m = motion(&peg_state(y));
-    let a = m.orientation * Vector3::z();
-    let u = m.orientation * Vector3::x();
-    let v = m.orientation * Vector3::y();
-    let r = prm.peg_radius();
-    let tip = m.centre - a * (0.5 * prm.length);
-    let top = m.centre + a * (0.5 * prm.length);
-    let mm = 1e3;
-    let bottom = circle(tip, u, v, r);
-    let upper = circle(top, u, v, r);
-    let big_r = prm.bore_radius();
-    let depth = prm.bore_depth.min(prm.length);
-    let side_outline = |sel: fn(&Vector3<f64>) -> f64| -> Vec<(f64, f64)> {
-        // The silhouette in the x–z plane: the two generators at ±x of the
-        // axis, and the end ellipses.
-        let mut pts: Vec<(f64, f64)> = bottom.iter().map(|p| (p.x * mm, sel(p) * mm)).collect();
-        pts.push((f64::NAN, f64::NAN));
-        pts.extend(upper.iter().map(|p| (p.x * mm, sel(p) * mm)));
-        pts.push((f64::NAN, f64::NAN));
-        for s in [1.0, -1.0] {
-            let w = Vector3::new(a.z, 0.0, -a.x).normalize() * (s * r);
-            let (p0, p1) = (tip + w, top + w);
-            pts.push((p0.x * mm, sel(&p0) * mm));
-            pts.push((p1.x * mm, sel(&p1) * mm));
-            pts.push((f64::NAN, f64::NAN));
-        }
-        pts
-    };
-    let hole_side = vec![
-        (-2.0 * big_r * mm, 0.0),
-        (-big_r * mm, 0.0),
-        (-big_r * mm, -depth * mm),
-        (f64::NAN, f64::NAN),
-        (big_r * mm, -depth * mm),
-        (big_r * mm, 0.0),
-        (2.0 * big_r * mm, 0.0),
-    ];
-    let side = Panel::new(&format!("{title}: side view"), "x [mm]", "z [mm]")
-        .with(Series::line("hole", hole_side).colored(7))
-        .with(Series::line("peg", side_outline(|p| p.z)).colored(0));
-    let hole_top: Vec<(f64, f64)> = circle(Vector3::zeros(), Vector3::x(), Vector3::y(), big_r)
-        .iter()
-        .map(|p| (p.x * mm, p.y * mm))
-        .collect();
-    let mut contacts: Vec<(f64, f64)> = Vec::new();
-    for c in sys.contacts(y) {
-        contacts.push((c.point.x * mm, c.point.y * mm));
-    }
-    let top_view = Panel::new(&format!("{title}: top view"), "x [mm]", "y [mm]")
-        .with(Series::line("hole", hole_top).colored(7))
-        .with(Series::line("tip", bottom.iter().map(|p| (p.x * mm, p.y * mm)).collect()).colored(0))
-        .with(
-            Series::line("top", upper.iter().map(|p| (p.x * mm, p.y * mm)).collect())
-                .styled(Style::Dashed)
-                .colored(0),
-        )
-        .with(
-            Series::line("contacts", contacts)
-                .styled(Style::Markers)
-                .colored(1),
-        );
-    [side, top_view]
-}
-
-/// Writes `<name>.views.svg`: side and top views at the start, at each
-/// event (at most `max` of them) and at the end.
-///
-/// # Errors
-/// Output errors.
-pub fn write_views(
-    ctx: &RunContext,
-    sys: &Insertion,
-    first: (f64, &SVector<f64, N_STATE>),
-    events: &[EventRow],
-    last: (f64, &SVector<f64, N_STATE>),
-    max: usize,
-) -> Result<(), RunError> {
-    let mut fig = Figure::new();
-    let mut add = |t: f64, y: &SVector<f64, N_STATE>, what: &str| {
-        let [a, b] = views(
-            sys,
-            y,
-            &format!("t = {} s, {what}", crate::scene::numbers::significant(t)),
-        );
-        fig.panels.push(a);
-        fig.panels.push(b);
-    };
-    add(first.0, first.1, "start");
-    for e in events.iter().take(max) {
-        add(e.t, &e.y, &e.what);
-    }
-    add(last.0, last.1, "end");
-    Ok(ctx.figure(Part::Sub("views"), &fig)?)
 }
 
 /// The run's common metrics.

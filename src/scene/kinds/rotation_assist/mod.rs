@@ -23,12 +23,14 @@
 //! time of seated runs, else empty) and `<name>.svg`: per rotation pair,
 //! the outcome and the peak contact force over the error grid.
 
+mod figure;
+pub mod grid;
+
 use serde::Deserialize;
 
 use crate::error::{RunError, SceneErrors};
 use crate::output::csv::format_f64;
 use crate::output::names::Part;
-use crate::output::plot::{Figure, Panel, Series, Style};
 use crate::scene::context::RunContext;
 use crate::scene::document::Document;
 use crate::scene::integrator::DefaultMethod;
@@ -36,12 +38,14 @@ use crate::scene::integrator::IntegratorSpec;
 use crate::scene::kind::{Kind, Scene, Written};
 use crate::scene::limits::{WorkItem, try_with_capacity};
 use crate::scene::progress::{Progress, par_map_counted};
-use crate::scene::ranges::FieldRange;
-use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene, outcome_text, run_one};
+use crate::scene::shared::compliant_peg_3d::insertion::{
+    Built, RccScene, at_grid_point, outcome_text, run_one,
+};
 use crate::scene::shared::compliant_peg_3d::{ranges, replay, tables};
 use crate::scene::shared::replay::{GridReplayTable, RunChoice};
 use crate::scene::summary::{Metric, RunSummary};
 use crate::scene::validate::Checker;
+use grid::{ANGULAR_ERRORS, LATERAL_ERRORS, PRECESSION_RATES, SPIN_RATES, YIELD_PRESSURE};
 
 /// Registry entry.
 pub const KIND: Kind = Kind {
@@ -53,18 +57,9 @@ pub const KIND: Kind = Kind {
         ranges::WRIST,
         ranges::ROBOT,
         ranges::CRITERIA,
-        &[YIELD_PRESSURE],
+        grid::GRID,
     ],
 };
-
-/// `grid.yield_pressure`.
-pub const YIELD_PRESSURE: FieldRange = FieldRange::new(
-    "grid.yield_pressure",
-    1e3,
-    1e12,
-    "Pa",
-    "a yield pressure from soft polymers (kPa) to far above the hardest steels (a few GPa)",
-);
 
 /// The `[grid]` table.
 #[derive(Debug, Clone, Deserialize)]
@@ -144,24 +139,49 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: SweepScene = doc.body()?;
     let mut c = Checker::default();
     let g = &s.grid;
-    for (name, list) in [
-        ("lateral_errors", &g.lateral_errors),
-        ("angular_errors_deg", &g.angular_errors_deg),
-        ("precession_rates", &g.precession_rates),
-        ("spin_rates", &g.spin_rates),
+    // The shared tables first, so that a bad peg is named as such and not
+    // through the ranges it narrows.
+    let _ = s.peg.build(&mut c);
+    // Each entry against the robot's range of the field it replaces, named
+    // as the grid entry (the bore's D narrows the lateral range, once it is
+    // valid itself).
+    let d = if ranges::HOLE_DIAMETER.contains(s.peg.hole_diameter) {
+        s.peg.hole_diameter
+    } else {
+        f64::NAN
+    };
+    for (range, list) in [
+        (LATERAL_ERRORS.within(-2.0 * d, 2.0 * d), &g.lateral_errors),
+        (ANGULAR_ERRORS, &g.angular_errors_deg),
+        (PRECESSION_RATES, &g.precession_rates),
+        (SPIN_RATES, &g.spin_rates),
     ] {
         if list.is_empty() {
             c.push(crate::error::SceneError::invalid(
-                format!("grid.{name}"),
+                range.field,
                 "[]",
                 "must list at least one value",
             ));
         }
         for (k, v) in list.iter().enumerate() {
-            c.finite(&format!("grid.{name}[{k}]"), *v);
+            let field = format!("{}[{k}]", range.field);
+            c.finite(&field, *v);
+            range.check_as(&mut c, &field, *v);
         }
+        c.distinct(range.field, list);
     }
     YIELD_PRESSURE.require(&mut c, g.yield_pressure);
+    // The robot's own errors and rates, which the grid replaces, are values
+    // of the scene all the same: finite and in their ranges.
+    let r = &s.robot;
+    ranges::LATERAL_ERROR
+        .within(-2.0 * d, 2.0 * d)
+        .require(&mut c, r.lateral_error);
+    ranges::ANGULAR_ERROR.require(&mut c, r.angular_error_deg);
+    ranges::PRECESSION_RATE.require(&mut c, r.precession_rate);
+    ranges::SPIN_RATE.require(&mut c, r.spin_rate);
+    // The integrator's span sets the work estimate: checked before it.
+    c.extend(s.integrator.check("integrator"));
     if let Some(run) = s.replay.run {
         // A product of list lengths past `usize` saturates: every index is then in range.
         if let Err(e) = run.check(s.grid_points() as usize) {
@@ -211,22 +231,27 @@ impl Written for SweepScene {
         let mut points = try_with_capacity(n as usize, "grid points", "max_runs").map_err(|e| {
             SceneErrors::from(crate::error::SceneError::invalid("grid", n, e.to_string()))
         })?;
-        for &lateral in &g.lateral_errors {
-            for &angular_deg in &g.angular_errors_deg {
-                for &precession in &g.precession_rates {
-                    for &spin in &g.spin_rates {
+        // Each point's refusals named as the grid's entries.
+        let mut c = Checker::default();
+        for (i, &lateral) in g.lateral_errors.iter().enumerate() {
+            for (j, &angular_deg) in g.angular_errors_deg.iter().enumerate() {
+                for (k, &precession) in g.precession_rates.iter().enumerate() {
+                    for (l, &spin) in g.spin_rates.iter().enumerate() {
                         let p = Point {
                             lateral,
                             angular_deg,
                             precession,
                             spin,
                         };
-                        let built = s.as_rcc(&p).build()?;
-                        points.push((p, built));
+                        match s.as_rcc(&p).build() {
+                            Ok(built) => points.push((p, built)),
+                            Err(e) => grid_point_errors(e, &p, [i, j, k, l], &mut c),
+                        }
                     }
                 }
             }
         }
+        c.finish()?;
         let nominal = match s.replay.run {
             Some(RunChoice::Nominal) => {
                 let r = &s.robot;
@@ -251,6 +276,32 @@ impl Written for SweepScene {
     }
 }
 
+/// The errors of the grid point `p` at list indices `at` (lateral,
+/// angular, precession, spin) named as the grid's entries, not as the
+/// robot fields they replace.
+fn grid_point_errors(e: SceneErrors, p: &Point, at: [usize; 4], c: &mut Checker) {
+    let [i, j, k, l] = at;
+    let names = [
+        format!("grid.lateral_errors[{i}]"),
+        format!("grid.precession_rates[{k}]"),
+        format!("grid.spin_rates[{l}]"),
+        format!("grid.angular_errors_deg[{j}]"),
+    ];
+    let point = [
+        (names[0].clone(), p.lateral),
+        (names[1].clone(), p.precession),
+        (names[2].clone(), p.spin),
+        (names[3].clone(), p.angular_deg),
+    ];
+    let renames = [
+        ("robot.lateral_error", names[0].as_str(), p.lateral),
+        ("robot.precession_rate", names[1].as_str(), p.precession),
+        ("robot.spin_rate", names[2].as_str(), p.spin),
+        ("robot.angular_error_deg", names[3].as_str(), p.angular_deg),
+    ];
+    at_grid_point(e, &point, &renames, c);
+}
+
 /// One run's row.
 #[derive(Debug, Clone)]
 struct Row {
@@ -268,26 +319,17 @@ struct Row {
 fn one(p: Point, b: &Built, spec: &IntegratorSpec) -> Result<Row, RunError> {
     let mut silent = Progress::silent();
     let run = run_one(b, spec, false, &mut silent)?;
-    let (mut pc, mut pp, mut pm, mut pw) = (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
-    for (&t, y) in run.solution.t.iter().zip(&run.solution.x) {
-        let s = run.system.sample(t, y)?;
-        pc = pc.max(s.peak_normal());
-        pp = pp.max(run.system.peak_pressure(y, &s).0);
-        if let Some(w) = &s.wrist {
-            pm = pm.max(w.moment_robot.xy().norm());
-            pw = pw.max(w.force.norm());
-        }
-    }
+    let peaks = run.peaks()?;
     Ok(Row {
         point: p,
         outcome: outcome_text(&run.outcome),
         code: run.outcome.code(),
         end: run.solution.t_final,
         seated: run.outcome == crate::compliant_peg_3d::outcome::Outcome::Seated,
-        peak_contact: pc,
-        peak_pressure: pp,
-        peak_moment: pm,
-        peak_wrist: pw,
+        peak_contact: peaks.contact,
+        peak_pressure: peaks.pressure,
+        peak_moment: peaks.wrist_moment,
+        peak_wrist: peaks.wrist_force,
     })
 }
 
@@ -352,7 +394,7 @@ impl Scene for Ready {
             ])?;
         }
         csv.finish()?;
-        ctx.figure(Part::Main, &heat_maps(&rows))?;
+        ctx.figure(Part::Main, &figure::heat_maps(&rows))?;
         let mut out = RunSummary::default();
         let seated = rows.iter().filter(|r| r.seated).count();
         out.metrics.push(Metric::new("runs", rows.len() as f64, ""));
@@ -363,7 +405,6 @@ impl Scene for Ready {
                 .filter(|r| r.point.precession == pr && r.point.spin == sr)
                 .collect();
             let seated: Vec<&&Row> = sel.iter().filter(|r| r.seated).collect();
-            let mean_t = seated.iter().map(|r| r.end).sum::<f64>() / seated.len().max(1) as f64;
             let peak = sel.iter().map(|r| r.peak_contact).fold(0.0, f64::max);
             let tag = format!("psidot {pr} rad/s, phidot {sr} rad/s");
             out.metrics.push(Metric::new(
@@ -371,11 +412,15 @@ impl Scene for Ready {
                 seated.len() as f64,
                 "",
             ));
-            out.metrics.push(Metric::new(
-                format!("{tag}: mean insertion time"),
-                mean_t,
-                "s",
-            ));
+            // A mean over no seated run is not a time: left out.
+            if !seated.is_empty() {
+                let mean_t = seated.iter().map(|r| r.end).sum::<f64>() / seated.len() as f64;
+                out.metrics.push(Metric::new(
+                    format!("{tag}: mean insertion time"),
+                    mean_t,
+                    "s",
+                ));
+            }
             out.metrics
                 .push(Metric::new(format!("{tag}: peak contact force"), peak, "N"));
         }
@@ -422,74 +467,4 @@ fn rate_pairs(rows: &[Row]) -> Vec<(f64, f64)> {
         }
     }
     pairs
-}
-
-/// Per rotation pair: the outcome over the error grid (one marker series
-/// per outcome) and the peak contact force (one marker series per force
-/// quartile of the whole sweep).
-fn heat_maps(rows: &[Row]) -> Figure {
-    let mut fig = Figure::new();
-    let mut forces: Vec<f64> = rows.iter().map(|r| r.peak_contact).collect();
-    forces.sort_by(f64::total_cmp);
-    let q = |f: f64| forces[((forces.len() - 1) as f64 * f).round() as usize];
-    let bands = [q(0.25), q(0.5), q(0.75)];
-    for (pr, sr) in rate_pairs(rows) {
-        let sel: Vec<&Row> = rows
-            .iter()
-            .filter(|r| r.point.precession == pr && r.point.spin == sr)
-            .collect();
-        let title = format!("ψ̇ = {pr} rad/s, φ̇ = {sr} rad/s");
-        let mut a = Panel::new(
-            &format!("Outcome, {title}"),
-            "lateral error [mm]",
-            "angular error [deg]",
-        );
-        for (code, name) in crate::compliant_peg_3d::outcome::CODE_LEGEND {
-            let pts: Vec<(f64, f64)> = sel
-                .iter()
-                .filter(|r| r.code == code)
-                .map(|r| (r.point.lateral * 1e3, r.point.angular_deg))
-                .collect();
-            if !pts.is_empty() {
-                a = a.with(
-                    Series::line(name, pts)
-                        .styled(Style::Markers)
-                        .colored(code as usize),
-                );
-            }
-        }
-        fig.panels.push(a);
-        let mut b = Panel::new(
-            &format!("Peak contact force, {title}"),
-            "lateral error [mm]",
-            "angular error [deg]",
-        );
-        for band in 0..4 {
-            let lo = if band == 0 {
-                f64::NEG_INFINITY
-            } else {
-                bands[band - 1]
-            };
-            let hi = if band == 3 {
-                f64::INFINITY
-            } else {
-                bands[band]
-            };
-            let pts: Vec<(f64, f64)> = sel
-                .iter()
-                .filter(|r| r.peak_contact > lo && r.peak_contact <= hi)
-                .map(|r| (r.point.lateral * 1e3, r.point.angular_deg))
-                .collect();
-            if !pts.is_empty() {
-                let name = match band {
-                    0 => format!("≤ {:.3} N", bands[0]),
-                    3 => format!("> {:.3} N", bands[2]),
-                    k => format!("{:.3}–{:.3} N", bands[k - 1], bands[k]),
-                };
-                b = b.with(Series::line(name, pts).styled(Style::Markers).colored(band));
-            }
-        }
-        fig.panels.push(b);
-    }
-    fig
 }
