@@ -10,4 +10,5 @@ mod hostile;
 mod integrators;
 mod no_alloc;
 mod rosenbrock;
+mod sensitivity_jump;
 mod stiff;

@@ -75,6 +75,11 @@ pub struct ModelBuilder<'g> {
     pub(super) shared_outputs: Vec<(String, String, Vec<String>)>,
     /// Output structs that are an earlier module's: (struct name, module).
     pub(super) shared_out_types: Vec<(String, String)>,
+    /// Functions marked for their parameter Jacobian.
+    pub(super) param_marks: Vec<super::param_jacobian::Mark<'g>>,
+    /// Whether the generator's options ask for this model's parameter
+    /// Jacobians.
+    pub(crate) parameter_jacobians: bool,
     names: Vec<String>,
 }
 
@@ -106,6 +111,8 @@ impl<'g> ModelBuilder<'g> {
             shared_types: Vec::new(),
             shared_outputs: Vec::new(),
             shared_out_types: Vec::new(),
+            param_marks: Vec::new(),
+            parameter_jacobians: false,
             names: Vec::new(),
         }
     }
