@@ -9,23 +9,13 @@
 //! columns are the parameters in the order of the parameter vector
 //! (`P_NAMES`).
 
-use super::model::ModelBuilder;
+use super::model::{Mark, ModelBuilder};
 use crate::GenError;
 use crate::diff;
 use crate::expr::Expr;
 use crate::graph::{Id, Node, Sym};
 use crate::lagrange::Lagrange;
 use crate::model::{FnSpec, Input, Output, sym_of};
-
-/// A function marked for its parameter Jacobian.
-#[derive(Clone, Debug)]
-pub(super) struct Mark<'g> {
-    /// The marked function.
-    pub(super) function: String,
-    /// `Some(u)` when the function returns a linear system `A u = b` in
-    /// the unknowns `u`: the derivative is then that of `b − A u`.
-    pub(super) unknowns: Option<Vec<Expr<'g>>>,
-}
 
 impl<'g> ModelBuilder<'g> {
     /// Asks for the parameter Jacobian of the declared function `function`
