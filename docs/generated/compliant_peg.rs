@@ -338,7 +338,7 @@ pub mod compliant_peg {
             ],
         )
     }
-    /// Exact parameter Jacobian of [`rhs`]: per output o, d<o>_dp with entry (i, k) = ∂oᵢ/∂p_k (columns in `P_NAMES` order).
+    /// Exact parameter Jacobian of [`rhs`]: `dydot_dp` with entry (i, k) = ∂ydotᵢ/∂p_k (columns in `P_NAMES` order).
     ///
     /// # Inputs
     /// - `y` = (`x`, `z`, `theta`, `xdot`, `zdot`, `thetadot`, `work`, `dissipation`)

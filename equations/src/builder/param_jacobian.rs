@@ -191,10 +191,15 @@ impl<'g> ModelBuilder<'g> {
                     };
                     outputs.push((format!("d{o}_dp"), out));
                 }
+                let each: Vec<String> = f
+                    .outputs
+                    .iter()
+                    .map(|(o, _)| format!("`d{o}_dp` with entry (i, k) = ∂{o}ᵢ/∂p_k"))
+                    .collect();
                 let doc = format!(
-                    "Exact parameter Jacobian of [`{}`]: per output o, d<o>_dp with entry \
-                     (i, k) = ∂oᵢ/∂p_k ({columns}).",
-                    f.name
+                    "Exact parameter Jacobian of [`{}`]: {} ({columns}).",
+                    f.name,
+                    each.join("; ")
                 );
                 Ok(FnSpec {
                     name,
