@@ -338,711 +338,6 @@ pub mod compliant_peg {
             ],
         )
     }
-    /// Exact parameter Jacobian of [`rhs`]: `dydot_dp` with entry (i, k) = ∂ydotᵢ/∂p_k (columns in `P_NAMES` order).
-    ///
-    /// # Inputs
-    /// - `y` = (`x`, `z`, `theta`, `xdot`, `zdot`, `thetadot`, `work`, `dissipation`)
-    /// - `p` = (`m`, `J`, `r`, `l_c`, `D`, `rho_p`, `rho_h`, `mu`, `v_s`, `k_edge`, `k_wall`, `f1`, `f2`, `M`, `e_star`, `edge_sum`, `edge_ma`, `edge_mb`, `edge_dstar`, `wall_sum`, `wall_ma`, `wall_mb`, `wall_dstar`, `hc_alpha`)
-    ///
-    /// # Outputs
-    /// - `dydot_dp`: 8×24 matrix
-    ///
-    /// # Cost
-    /// 364 add/sub, 728 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 280 `let`s.
-    #[inline]
-    pub fn rhs_p<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 24> {
-        let x = y[0];
-        let z = y[1];
-        let theta = y[2];
-        let xdot = y[3];
-        let zdot = y[4];
-        let thetadot = y[5];
-        let m = p[0];
-        let j = p[1];
-        let r = p[2];
-        let l_c = p[3];
-        let d = p[4];
-        let rho_p = p[5];
-        let rho_h = p[6];
-        let mu = p[7];
-        let v_s = p[8];
-        let k_edge = p[9];
-        let k_wall = p[10];
-        let f1 = p[11];
-        let f2 = p[12];
-        let m_2 = p[13];
-        let hc_alpha = p[23];
-        let (sin_theta, cos_theta) = theta.sin_cos();
-        let t0 = T::from_f64(0.5) * d;
-        let t1 = T::from_f64(0.5) * theta;
-        let (t2, t3) = t1.sin_cos();
-        let t4 = t2 * t2;
-        let t5 = r * sin_theta;
-        let t6 = r * cos_theta;
-        let t7 = T::from_f64(2.0) * t4;
-        let t8 = t7 - T::from_f64(1.0);
-        let t9 = zdot * sin_theta;
-        let t10 = t2 * t3;
-        let t11 = l_c - rho_p;
-        let t12 = r - rho_p;
-        let t13 = sin_theta * t11;
-        let t14 = -T::from_f64(2.0) * t4 * t12;
-        let t15 = rho_p * sin_theta;
-        let t16 = cos_theta * (r - T::from_f64(2.0) * rho_p * t4);
-        let t17 = cos_theta * t11;
-        let t18 = rho_h + t0 - x;
-        let t19 = T::from_f64(1.0) / m;
-        let t20 = T::from_f64(1.0) / j;
-        let t21 = t7 - sin_theta;
-        let t22 = sin_theta + t7;
-        let t23 = sin_theta * t19;
-        let t24 = cos_theta * t19;
-        let t25 = z - rho_h;
-        let t26 = sin_theta * t25;
-        let t27 = cos_theta * t25;
-        let t28 = sin_theta * (l_c - rho_p + t15) + t16;
-        let t29 = sin_theta * (-l_c + rho_p + t15) + t16;
-        let t30 = thetadot * t29;
-        let slip_wall_left = zdot + t30;
-        let t31 = v_s.hypot(slip_wall_left);
-        let t32 = T::from_f64(1.0) / t31;
-        let t33 = slip_wall_left * slip_wall_left;
-        let t34 = sin_theta * t18 - t27;
-        let t35 = t5 - cos_theta * t34;
-        let t36 = t6 + sin_theta * t34;
-        let slip_edge_right = sin_theta * (xdot - thetadot * t35)
-            + cos_theta * (zdot - thetadot * t36);
-        let t37 = t27 - T::from_f64(2.0) * t10 * t18;
-        let t38 = v_s.hypot(slip_edge_right);
-        let t39 = T::from_f64(1.0) / t38;
-        let t40 = sin_theta * t35 + cos_theta * t36;
-        let t41 = slip_edge_right * slip_edge_right;
-        let t42 = T::from_f64(2.0) * (t10 * t12);
-        let t43 = t17 + t42;
-        let neg_delta_rate_wall_left = xdot + thetadot * t43;
-        let t44 = T::from_f64(1.0) - hc_alpha * neg_delta_rate_wall_left;
-        let t45 = t44.max0();
-        let t46 = T::from_f64(1.0) - t45;
-        let t47 = -rho_h - t0 - x;
-        let delta_edge_left = r - t0 - x + t26 - T::from_f64(2.0) * t47 * t4;
-        let pen_edge_left = delta_edge_left.max0();
-        let t48 = pen_edge_left * pen_edge_left.sqrt();
-        let step_delta_edge_left = delta_edge_left.step();
-        let delta_wall_right = r - t0 + x + t13 + t14;
-        let pen_wall_right = delta_wall_right.max0();
-        let t49 = pen_wall_right * pen_wall_right.sqrt();
-        let step_delta_wall_right = delta_wall_right.step();
-        let t50 = t17 - t42;
-        let delta_rate_wall_right = xdot + thetadot * t50;
-        let t51 = T::from_f64(1.0) + hc_alpha * delta_rate_wall_right;
-        let t52 = t51.max0();
-        let t53 = sin_theta * t47 - t27;
-        let t54 = cos_theta * t53 + t5;
-        let t55 = t6 - sin_theta * t53;
-        let slip_edge_left = sin_theta * (xdot + thetadot * t54)
-            + cos_theta * (zdot + thetadot * t55);
-        let t56 = t27 - T::from_f64(2.0) * t10 * t47;
-        let t57 = v_s.hypot(slip_edge_left);
-        let t58 = T::from_f64(1.0) / t57;
-        let t59 = sin_theta * t54 + cos_theta * t55;
-        let t60 = slip_edge_left * slip_edge_left;
-        let t61 = T::from_f64(1.0) - t52;
-        let delta_edge_right = r - t0 + x - t26 + T::from_f64(2.0) * t4 * t18;
-        let pen_edge_right = delta_edge_right.max0();
-        let t62 = pen_edge_right * pen_edge_right.sqrt();
-        let step_delta_edge_right = delta_edge_right.step();
-        let t63 = step_delta_wall_right - t61;
-        let delta_wall_left = r - t0 - x - t13 + t14;
-        let pen_wall_left = delta_wall_left.max0();
-        let t64 = pen_wall_left * pen_wall_left.sqrt();
-        let step_delta_wall_left = delta_wall_left.step();
-        let t65 = step_delta_wall_left - t46;
-        let t66 = t64 * (t45 - T::from_f64(1.0) + step_delta_wall_left)
-            - t49 * (-T::from_f64(1.0) + step_delta_wall_right + t52);
-        let t67 = T::from_f64(1.0) / (t31 * t31 * t31);
-        let t68 = T::from_f64(0.5) - t4;
-        let t69 = t33 * t67;
-        let t70 = t67 * (slip_wall_left * slip_wall_left * slip_wall_left);
-        let t71 = thetadot * t28;
-        let t72 = T::from_f64(2.0) * t10;
-        let t73 = t72 - cos_theta;
-        let t74 = cos_theta + t72;
-        let t75 = T::from_f64(2.0) * (cos_theta * t4);
-        let slip_wall_right = zdot - t71;
-        let t76 = v_s.hypot(slip_wall_right);
-        let t77 = T::from_f64(1.0) / t76;
-        let t78 = slip_wall_right * slip_wall_right;
-        let t79 = slip_edge_right * t39;
-        let t80 = slip_wall_right * t77;
-        let t81 = mu * t40;
-        let t82 = t80 * t28;
-        let t83 = t82 * mu;
-        let t84 = t39 * t41;
-        let t85 = t77 * t78;
-        let t86 = slip_wall_left * t32;
-        let t87 = mu * k_wall;
-        let t88 = t32 * t33;
-        let t89 = t86 * t29;
-        let t90 = t89 * mu;
-        let t91 = t90 * t45;
-        let t92 = T::from_f64(1.0) / (t38 * t38 * t38);
-        let t93 = T::from_f64(1.0) / (t76 * t76 * t76);
-        let t94 = sin_theta * (T::from_f64(1.0) - sin_theta) + t75;
-        let t95 = thetadot * hc_alpha;
-        let t96 = t95 * cos_theta;
-        let t97 = t95 * t73;
-        let t98 = mu * sin_theta;
-        let t99 = mu * cos_theta;
-        let t100 = t39 - t41 * t92;
-        let t101 = t10 * t95;
-        let t102 = t95 * t74;
-        let t103 = t32 - t69;
-        let t104 = t78 * t93;
-        let t105 = t77 - t104;
-        let t106 = slip_wall_right * t93;
-        let t107 = t79 * t81;
-        let t108 = t10 * hc_alpha;
-        let t109 = t93 * (slip_wall_right * slip_wall_right * slip_wall_right);
-        let t110 = t10 * thetadot;
-        let t111 = t44.step();
-        let t112 = T::from_f64(1.5) - T::from_f64(1.5) * t45;
-        let t113 = T::from_f64(0.75) - T::from_f64(0.75) * t45;
-        let t114 = hc_alpha * t74 * t111;
-        let t115 = t87 * t19;
-        let t116 = mu * t19;
-        let t117 = k_wall * t20;
-        let t118 = t19 * t19;
-        let t119 = T::from_f64(1.0) - t7;
-        let neg_delta_rate_edge_right = -(xdot * t119) + t9 + thetadot * t37;
-        let t120 = T::from_f64(1.0) - hc_alpha * neg_delta_rate_edge_right;
-        let t121 = t120.max0();
-        let t122 = T::from_f64(1.0) - t121;
-        let t123 = t122 - step_delta_edge_right;
-        let sqrt_pen_edge_left = pen_edge_left.sqrt();
-        let t124 = step_delta_edge_left * step_delta_edge_left;
-        let sqrt_pen_wall_right = pen_wall_right.sqrt();
-        let t125 = step_delta_wall_right * step_delta_wall_right;
-        let t126 = T::from_f64(0.75) * t125;
-        let t127 = sqrt_pen_edge_left * t124;
-        let t128 = t51.step();
-        let t129 = t49 * t61;
-        let t130 = t62 * t122;
-        let t131 = t121 * t62;
-        let t132 = t79 * t131;
-        let t133 = t52 * t49;
-        let t134 = t133 * t80;
-        let t135 = t79 * t121;
-        let t136 = t83 * t52;
-        let t137 = t64 * t45;
-        let t138 = t86 * t137;
-        let t139 = t134 + t138;
-        let t140 = t85 * t133 + t88 * t137;
-        let t141 = t64 * (t91 - t43 * t65) - t49 * (t136 - t50 * t63);
-        let delta_rate_edge_left = xdot * t8 + t9 + thetadot * t56;
-        let t142 = T::from_f64(1.0) + hc_alpha * delta_rate_edge_left;
-        let t143 = t142.max0();
-        let t144 = t142.step();
-        let t145 = t120.step();
-        let t146 = T::from_f64(1.0) / (t57 * t57 * t57);
-        let t147 = sin_theta * (T::from_f64(1.0) + sin_theta) - t75;
-        let t148 = t128 * t49;
-        let t149 = T::from_f64(1.0) - t143;
-        let t150 = t48 * t149;
-        let t151 = step_delta_edge_left - t149;
-        let t152 = slip_edge_left * t58;
-        let t153 = t152 * t143;
-        let t154 = t98 * t153;
-        let t155 = t48 * t143;
-        let t156 = t155 * t152 + t132;
-        let t157 = sin_theta * (t48 * t151 + t62 * t123) + t99 * t156;
-        let sqrt_pen_edge_right = pen_edge_right.sqrt();
-        let t158 = step_delta_edge_right * step_delta_edge_right;
-        let t159 = T::from_f64(1.5) - T::from_f64(1.5) * t143;
-        let t160 = t131 * t100;
-        let t161 = T::from_f64(1.5) - T::from_f64(1.5) * t52;
-        let t162 = sqrt_pen_wall_right
-            * (step_delta_wall_right * t161 - T::from_f64(1.5) * t125);
-        let t163 = step_delta_edge_left * sqrt_pen_edge_left;
-        let t164 = t48 * t144;
-        let t165 = t101 * t164;
-        let t166 = t68 * t159 * t163 + t165;
-        let t167 = T::from_f64(1.5) - T::from_f64(1.5) * t121;
-        let t168 = step_delta_edge_right * sqrt_pen_edge_right;
-        let t169 = t62 * t145;
-        let t170 = t101 * t169;
-        let t171 = t68 * t167 * t168 + t170;
-        let t172 = t135 * step_delta_edge_right;
-        let t173 = T::from_f64(0.75) * t52 - T::from_f64(0.75);
-        let t174 = t97 * t164;
-        let t175 = t102 * t169;
-        let t176 = t163 * t143;
-        let t177 = T::from_f64(1.5) * t176 * t21 + t174;
-        let t178 = t168 * t121;
-        let t179 = T::from_f64(1.5) * t178 * t22 + t175;
-        let t180 = t152 * t177 + t79 * t179;
-        let t181 = t127 * t21;
-        let t182 = sqrt_pen_edge_right * t158;
-        let t183 = t182 * t22;
-        let t184 = k_edge * t156;
-        let t185 = t155 * t146;
-        let t186 = t185 * slip_edge_left;
-        let t187 = t131 * t92;
-        let t188 = t187 * slip_edge_right;
-        let t189 = k_edge * (t186 + t188);
-        let t190 = t164 * delta_rate_edge_left;
-        let t191 = t148 * delta_rate_wall_right;
-        let t192 = t58 - t60 * t146;
-        let t193 = t155 * t192;
-        let t194 = t153 * t163 + t135 * t168;
-        let t195 = step_delta_wall_right * sqrt_pen_wall_right;
-        let t196 = t195 * t52;
-        let t197 = t196 * t80;
-        let t198 = sqrt_pen_edge_left
-            * (T::from_f64(1.5) * t124 - t159 * step_delta_edge_left);
-        let t199 = t148 * t80;
-        let t200 = t52 * t94;
-        let t201 = hc_alpha * t128 * t73;
-        let t202 = t49 * (t200 * t105 + t201 * t80);
-        let t203 = t196 * t21;
-        let t204 = t169 * neg_delta_rate_edge_right;
-        let t205 = t152 * t59;
-        let t206 = t205 * mu;
-        let t207 = t206 * t143;
-        let t208 = sqrt_pen_wall_right * t125;
-        let t209 = t148 * t85;
-        let t210 = t58 * t60;
-        let t211 = t176 * t210 + t178 * t84;
-        let t212 = t196 * t85;
-        let t213 = t210 * t155 + t84 * t131;
-        let t214 = t48 * (t8 * t151 + t154) + t62 * (t135 * t98 - t119 * t123);
-        let t215 = t48 * (t56 * t151 + t207) - t62 * (t81 * t135 - t37 * t123);
-        let t216 = sqrt_pen_edge_right
-            * (T::from_f64(1.5) * t158 - t167 * step_delta_edge_right);
-        let t217 = t174 - t21 * t159 * t163;
-        let t218 = t175 - t22 * t167 * t168;
-        let t219 = T::from_f64(1.5) * t181 + t217;
-        let t220 = T::from_f64(1.5) * t183 + t218;
-        let t221 = -t133 * t105;
-        let t222 = t133 * t28;
-        let t223 = -t133 * (T::from_f64(2.0) * t80 - t109);
-        let t224 = t64 * t46;
-        let sqrt_pen_wall_left = pen_wall_left.sqrt();
-        let t225 = step_delta_wall_left * step_delta_wall_left;
-        let t226 = step_delta_wall_left * t112 - T::from_f64(1.5) * t225;
-        let t227 = sqrt_pen_wall_left * t226;
-        let t228 = -T::from_f64(0.75) * t225;
-        let t229 = t64 * t111;
-        let t230 = t229 * neg_delta_rate_wall_left;
-        let t231 = t137 * t103;
-        let t232 = t86 * t229;
-        let t233 = step_delta_wall_left * sqrt_pen_wall_left;
-        let t234 = t233 * t45;
-        let t235 = t86 * t234;
-        let t236 = t197 + t235;
-        let t237 = k_wall * t119;
-        let t238 = t45 * t147;
-        let t239 = t64 * (t238 * t103 + t114 * t86);
-        let t240 = t137 * (slip_wall_left * t67);
-        let t241 = t195 * t161;
-        let t242 = t241 * t119 + T::from_f64(2.0) * t101 * t148;
-        let t243 = sqrt_pen_wall_left * t225;
-        let t244 = t233 * t112;
-        let t245 = t137 * (T::from_f64(2.0) * t86 - t70);
-        let t246 = t234 * t88;
-        let t247 = t212 + t246;
-        let t248 = t96 * t148 - t241 * sin_theta;
-        let t249 = t97 * t148 - t241 * t21;
-        let t250 = t244 * t119 + T::from_f64(2.0) * t101 * t229;
-        let t251 = t96 * t229 - t244 * sin_theta;
-        let t252 = t102 * t229 - t244 * t22;
-        let t253 = t88 * t229;
-        SMatrix::<
-            T,
-            8,
-            24,
-        >::from_row_slice(
-            &[
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                -(-(k_edge * t214) + k_wall * t66 + f1 * sin_theta + f2 * cos_theta)
-                    * t118,
-                T::from_f64(0.0),
-                t19
-                    * (k_edge
-                        * (t98 * (thetadot * (t160 - t193) - T::from_f64(1.5) * t194)
-                            - t198 * t8 - t216 * t119)
-                        - k_wall
-                            * (t119 * (t227 - t162)
-                                + T::from_f64(2.0) * t101 * (t229 - t148))),
-                k_wall * (sin_theta * (t162 + t227) - t96 * (t148 + t229)) * t19,
-                -t19
-                    * (k_edge
-                        * (-(t68
-                            * (T::from_f64(1.5)
-                                * (t8 * t124 + t154 * step_delta_edge_left)
-                                * sqrt_pen_edge_left
-                                + T::from_f64(1.5) * (t119 * t158 + t172 * t98)
-                                    * sqrt_pen_edge_right))
-                            + t98 * (t164 * t152 + t169 * t79) * t101 + t8 * t166
-                            + t119 * t171)
-                        - k_wall
-                            * (sqrt_pen_wall_right
-                                * (step_delta_wall_right * t173 + t126)
-                                + sqrt_pen_wall_left
-                                    * (step_delta_wall_left * t113 + t228))),
-                k_wall
-                    * (t162 * t21 - t22 * t226 * sqrt_pen_wall_left
-                        + t95 * (t229 * t74 - t148 * t73)) * t19,
-                -(k_edge * (t98 * t180 + t8 * t219 + t119 * t220)) * t19,
-                -t23 * t184,
-                t98 * (t189 * v_s) * t19,
-                -t19 * t214,
-                t19 * t66,
-                t23,
-                t24,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                -t19
-                    * (k_edge * (t190 * (t8 + t98 * t152) - t204 * (t119 + t98 * t79))
-                        + k_wall * (t191 + t230)),
-                (k_edge * t157 + t87 * t139 - f1 * cos_theta + f2 * sin_theta) * t118,
-                T::from_f64(0.0),
-                -t19
-                    * (mu
-                        * (thetadot
-                            * (cos_theta
-                                * (k_edge * (t193 - t160) + k_wall * (t221 + t231))
-                                - T::from_f64(2.0) * (t108 * (t199 + t232)) * k_wall)
-                            + T::from_f64(1.5) * (cos_theta * t194) * k_edge
-                            + T::from_f64(1.5) * t237 * t236)
-                        + sin_theta * (t198 - t216) * k_edge),
-                -t115
-                    * (thetadot
-                        * (sin_theta * (t221 - t231)
-                            + cos_theta * (t199 - t232) * hc_alpha)
-                        + T::from_f64(1.5) * (t197 - t235) * sin_theta),
-                t19
-                    * (k_edge
-                        * (sin_theta
-                            * (T::from_f64(1.5) * (t127 - t182) * t68 - t166 + t171)
-                            + t99
-                                * (-(t152 * (t165 - T::from_f64(1.5) * t176 * t68))
-                                    - t79 * (t170 - T::from_f64(1.5) * t178 * t68)))
-                        + T::from_f64(0.75) * t87 * t236),
-                -t115
-                    * (thetadot * (t202 + t239)
-                        + T::from_f64(1.5) * (t203 * t80 + t235 * t22)),
-                -(k_edge
-                    * (sin_theta * (T::from_f64(1.5) * (t181 - t183) + t217 - t218)
-                        + t99 * t180)) * t19,
-                -t19 * (t184 * cos_theta + k_wall * t139),
-                t116 * (v_s * (t189 * cos_theta + k_wall * (t106 * t133 + t240))),
-                -t19 * t157,
-                -t116 * t139,
-                t24,
-                -t23,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                -t19
-                    * (k_edge
-                        * (sin_theta * (t190 + t204) + t99 * (t190 * t152 - t204 * t79))
-                        + t87 * (t191 * t80 - t230 * t86)),
-                T::from_f64(0.0),
-                (-m_2 + k_edge * t215 + k_wall * t141) * (t20 * t20),
-                t20
-                    * (mu
-                        * (thetadot
-                            * (k_wall
-                                * (cos_theta * (-(t222 * t105) - t231 * t29)
-                                    - T::from_f64(2.0) * t108 * (t82 * t148 - t89 * t229))
-                                + k_edge * (-(t59 * t192 * t155) - t40 * t100 * t131))
-                            + k_edge
-                                * (t135 * (t62 + T::from_f64(1.5) * t168 * t40)
-                                    - t153 * (t48 + T::from_f64(1.5) * t163 * t59))
-                            + k_wall
-                                * (cos_theta * (t134 - t138)
-                                    + T::from_f64(1.5) * (t196 * t82 - t234 * t89) * t119))
-                        + k_wall
-                            * (t10
-                                * (T::from_f64(2.0) * t63 * t49
-                                    + T::from_f64(2.0) * t65 * t64)
-                                - t50 * (T::from_f64(1.5) * t208 * t119 - t242)
-                                + t43 * (T::from_f64(1.5) * t243 * t119 - t250))
-                        + k_edge * (t216 * t37 - t198 * t56)),
-                t117
-                    * (sin_theta
-                        * (mu
-                            * (t52
-                                * (t49 * (t71 * t104 - t77 * (t71 - slip_wall_right))
-                                    + T::from_f64(1.5) * t82 * t195)
-                                + t45
-                                    * (T::from_f64(1.5) * t89 * t233
-                                        - t64 * (t30 * t69 - t32 * (slip_wall_left + t30))))
-                            - T::from_f64(1.5) * (t208 * t50 + t243 * t43))
-                        + cos_theta
-                            * (t49 * (-step_delta_wall_right + t61 + t83 * t95 * t128)
-                                + t64 * (step_delta_wall_left - t46 + t90 * t95 * t111))
-                        - t50 * t248 - t43 * t251),
-                t20
-                    * (k_edge
-                        * (-(t10
-                            * (t48 * (step_delta_edge_left - t149 + t206 * t95 * t144)
-                                - t62
-                                    * (-step_delta_edge_right + t122 + t107 * t95 * t145)))
-                            + t68
-                                * (T::from_f64(1.5)
-                                    * (t56 * t124 + t207 * step_delta_edge_left)
-                                    * sqrt_pen_edge_left
-                                    - T::from_f64(1.5) * (t37 * t158 + t172 * t81)
-                                        * sqrt_pen_edge_right) - t56 * t166 + t37 * t171)
-                        + k_wall
-                            * (sqrt_pen_wall_left
-                                * (t43 * (t228 + t113 * step_delta_wall_left)
-                                    + T::from_f64(0.75) * t91 * step_delta_wall_left)
-                                - sqrt_pen_wall_right
-                                    * (T::from_f64(0.75) * t136 * step_delta_wall_right
-                                        - t50 * (t126 + t173 * step_delta_wall_right)))),
-                -t117
-                    * (mu
-                        * (thetadot * (t239 * t29 - t202 * t28)
-                            - t52 * (T::from_f64(1.5) * t195 * t28 * t21 - t49 * t94)
-                                * t80
-                            + t45 * (t64 * t147 + T::from_f64(1.5) * t233 * t29 * t22)
-                                * t86) + t50 * (T::from_f64(1.5) * t208 * t21 + t249)
-                        + t73 * t63 * t49 - t43 * (T::from_f64(1.5) * t243 * t22 + t252)
-                        + t74 * t65 * t64),
-                -(k_edge
-                    * (mu * (t205 * t177 - t40 * t179 * t79) + t56 * t219
-                        + t73 * t151 * t48 - t37 * t220 - t74 * t123 * t62)) * t20,
-                -t20
-                    * (k_edge * (t205 * t155 - t132 * t40)
-                        - k_wall * (t82 * t133 - t89 * t137)),
-                v_s
-                    * (k_edge * (t186 * t59 - t188 * t40)
-                        - k_wall * (t106 * t222 - t240 * t29)) * mu * t20,
-                -t20 * t215,
-                -t20 * t141,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                t20,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                -t20
-                    * (k_edge * (t190 * (t56 + t206) + t204 * (t37 + t107))
-                        + k_wall * (-(t191 * (t83 - t50)) - t230 * (t90 - t43))),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                zdot * cos_theta + xdot * sin_theta,
-                xdot * cos_theta - t9,
-                thetadot,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                mu
-                    * (thetadot
-                        * (k_wall
-                            * (cos_theta * (t223 + t245)
-                                - T::from_f64(2.0) * t108 * (t209 + t253))
-                            + k_edge
-                                * (t155
-                                    * (T::from_f64(2.0) * t152
-                                        - t146 * (slip_edge_left * slip_edge_left * slip_edge_left))
-                                    - t131
-                                        * (T::from_f64(2.0) * t79
-                                            - t92
-                                                * (slip_edge_right * slip_edge_right * slip_edge_right))))
-                        + T::from_f64(1.5) * t211 * k_edge
-                        + T::from_f64(1.5) * t237 * t247)
-                    + k_wall
-                        * (T::from_f64(2.0) * t110 * (t129 + t224)
-                            - delta_rate_wall_right * t242
-                            + neg_delta_rate_wall_left * t250)
-                    + k_edge
-                        * (t168 * neg_delta_rate_edge_right * t167
-                            - t163 * delta_rate_edge_left * t159),
-                k_wall
-                    * (mu
-                        * (sin_theta
-                            * (thetadot * (t223 - t245)
-                                + T::from_f64(1.5) * (t212 - t246)) - t96 * (t253 - t209))
-                        + cos_theta * (t224 - t129) * thetadot
-                        + delta_rate_wall_right * t248
-                        + neg_delta_rate_wall_left * t251),
-                -(k_edge
-                    * (t110
-                        * (-(hc_alpha * (t210 * t164 + t84 * t169) * mu) + t150 + t130)
-                        + T::from_f64(1.5) * (t68 * t211) * mu
-                        - delta_rate_edge_left * t166
-                        + neg_delta_rate_edge_right * t171))
-                    - k_wall
-                        * (T::from_f64(0.75) * t247 * mu
-                            + t195 * delta_rate_wall_right * t173
-                            + t233 * neg_delta_rate_wall_left * t113),
-                -k_wall
-                    * (mu
-                        * (thetadot
-                            * (t49
-                                * (t109 * t200
-                                    - t77
-                                        * (t201 * t78 + T::from_f64(2.0) * t200 * slip_wall_right))
-                                + t64
-                                    * (t70 * t238
-                                        - t32
-                                            * (t114 * t33 + T::from_f64(2.0) * t238 * slip_wall_left)))
-                            - T::from_f64(1.5) * (t203 * t85 + t246 * t22))
-                        + thetadot * (t129 * t73 + t224 * t74)
-                        - delta_rate_wall_right * t249
-                        + neg_delta_rate_wall_left * t252),
-                -k_edge
-                    * (-(mu * (t210 * t177 + t84 * t179))
-                        + thetadot * (t150 * t73 + t130 * t74)
-                        - delta_rate_edge_left * t217
-                        + neg_delta_rate_edge_right * t218),
-                k_edge * t213 + k_wall * t140,
-                -(v_s
-                    * (k_edge * (t185 * t60 + t187 * t41)
-                        + k_wall * (t104 * t133 + t69 * t137)) * mu),
-                mu * t213 - t150 * delta_rate_edge_left
-                    + t130 * neg_delta_rate_edge_right,
-                mu * t140 - t129 * delta_rate_wall_right
-                    + t224 * neg_delta_rate_wall_left,
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                T::from_f64(0.0),
-                mu
-                    * (k_edge * (t190 * t210 - t84 * t204)
-                        - k_wall * (t230 * t88 - t191 * t85))
-                    + k_edge
-                        * (t164 * (delta_rate_edge_left * delta_rate_edge_left)
-                            + t169
-                                * (neg_delta_rate_edge_right * neg_delta_rate_edge_right))
-                    + k_wall
-                        * (t148 * (delta_rate_wall_right * delta_rate_wall_right)
-                            + t229
-                                * (neg_delta_rate_wall_left * neg_delta_rate_wall_left)),
-            ],
-        )
-    }
     /// Exact Jacobian d(rhs)/dy, row-major 8x8.
     ///
     /// # Inputs
@@ -1178,195 +473,195 @@ pub mod compliant_peg {
         let t81 = pen_wall_left * pen_wall_left.sqrt();
         let step_delta_wall_left = delta_wall_left.step();
         let t82 = T::from_f64(1.0) / (t40 * t40 * t40);
-        let t83 = t82 * (slip_wall_left * slip_wall_left * slip_wall_left);
-        let t84 = slip_edge_right * t54;
-        let t85 = t54 * t56;
-        let t86 = slip_wall_left * t41;
-        let t87 = t41 * t42;
-        let t88 = t51.step();
-        let t89 = T::from_f64(1.0) / (t53 * t53 * t53);
-        let t90 = thetadot * hc_alpha;
-        let t91 = t90 * cos_theta;
-        let t92 = t14 * t90;
-        let t93 = t60.step();
-        let t94 = T::from_f64(1.5) - T::from_f64(1.5) * t61;
-        let sqrt_pen_edge_left = pen_edge_left.sqrt();
-        let t95 = step_delta_edge_left * step_delta_edge_left;
-        let sqrt_pen_wall_right = pen_wall_right.sqrt();
-        let t96 = step_delta_wall_right * step_delta_wall_right;
-        let t97 = -T::from_f64(1.5) * t96;
-        let t98 = sqrt_pen_edge_left * t95;
-        let t99 = t67.step();
-        let t100 = t99 * t65;
-        let sqrt_pen_edge_right = pen_edge_right.sqrt();
-        let t101 = step_delta_edge_right * step_delta_edge_right;
-        let t102 = T::from_f64(1.5) - T::from_f64(1.5) * t68;
-        let t103 = sqrt_pen_wall_right * (step_delta_wall_right * t102 + t97);
-        let t104 = step_delta_edge_left * sqrt_pen_edge_left;
-        let t105 = step_delta_edge_right * sqrt_pen_edge_right;
-        let t106 = sqrt_pen_edge_right * t101;
-        let t107 = step_delta_wall_right * sqrt_pen_wall_right;
-        let t108 = hc_alpha * t99;
-        let sqrt_pen_wall_left = pen_wall_left.sqrt();
-        let t109 = step_delta_wall_left * step_delta_wall_left;
-        let t110 = -T::from_f64(1.5) * t109;
-        let t111 = sqrt_pen_wall_left * (step_delta_wall_left * t94 + t110);
-        let t112 = t81 * t93;
-        let t113 = step_delta_wall_left * sqrt_pen_wall_left;
-        let t114 = r - (t35 + cos_theta * t25);
-        let t115 = t10 - t9 * t9;
-        let t116 = t35 - t25 * t115;
+        let t83 = r - (t35 + cos_theta * t25);
+        let t84 = t10 - t9 * t9;
+        let t85 = t35 - t25 * t84;
         let slip_wall_right = zdot - thetadot * t33;
-        let t117 = v_s.hypot(slip_wall_right);
-        let t118 = T::from_f64(1.0) / t117;
-        let t119 = slip_wall_right * slip_wall_right;
-        let t120 = T::from_f64(1.0) / (t117 * t117 * t117);
-        let t121 = t16 * t115;
-        let t122 = t121 + t17;
-        let t123 = T::from_f64(2.0) * t14 * xdot;
-        let t124 = t56 * t89;
-        let t125 = t52 * (t54 - t124);
-        let t126 = t90 * mu;
-        let t127 = t84 * t55;
-        let t128 = t125 * t55;
-        let t129 = mu * t39;
-        let t130 = t89 * (slip_edge_right * slip_edge_right * slip_edge_right);
-        let t131 = t61 * (t41 - t42 * t82);
-        let t132 = t86 * t61;
-        let t133 = t87 * t61;
-        let t134 = t50 * t50;
-        let t135 = cos_theta * t114 + t47;
-        let t136 = rho_p * (sin_theta - T::from_f64(2.0) * t14);
-        let t137 = hc_alpha * t88;
-        let t138 = t137 * t50;
-        let t139 = t52 * t55;
-        let t140 = k_edge * t27;
-        let t141 = t123 + t32 - thetadot * t116;
-        let t142 = sin_theta * t114 + t44;
-        let t143 = sin_theta * (thetadot * t135 + t49)
-            - cos_theta * (t46 + thetadot * t142);
-        let t144 = t137 * t141;
-        let t145 = t22 - cos_theta * (t136 + t20);
-        let t146 = t22 - cos_theta * (t136 + t38);
-        let t147 = t55 * t143;
-        let t148 = slip_wall_right * t118;
-        let t149 = mu * t33;
-        let t150 = t120 * (slip_wall_right * slip_wall_right * slip_wall_right);
-        let t151 = t59 * t59;
-        let t152 = k_wall * hc_alpha;
-        let t153 = hc_alpha * t93;
-        let t154 = t153 * t122;
-        let t155 = t17 - t121;
-        let t156 = t154 * t86 - t131 * t146;
-        let t157 = t153 * t59;
-        let t158 = t86 * t157;
-        let t159 = t61 * t146;
-        let t160 = t39 * t61;
-        let t161 = t78 * t57;
-        let t162 = t78 * t88;
-        let t163 = t105 * t52;
-        let t164 = r + cos_theta * t63 + t35;
-        let t165 = t35 - t63 * t115;
-        let t166 = t66 * t66;
-        let t167 = sin_theta * t69;
-        let t168 = t12 - t167;
-        let t169 = zdot + thetadot * t168;
-        let slip_edge_left = sin_theta * t72 + cos_theta * t169;
-        let t170 = v_s.hypot(slip_edge_left);
-        let t171 = T::from_f64(1.0) / t170;
-        let t172 = sin_theta * t71 + cos_theta * t168;
-        let t173 = slip_edge_left * slip_edge_left;
-        let t174 = t64 * t76;
-        let t175 = slip_edge_left * t171;
-        let t176 = t175 * t64 * t75 + t84 * t78 * t52;
-        let t177 = T::from_f64(1.0) / (t170 * t170 * t170);
-        let t178 = t125 * t78;
-        let t179 = t173 * t177;
-        let t180 = t78 * (-step_delta_edge_right + t57 + t126 * t127 * t88);
-        let t181 = t177 * (slip_edge_left * slip_edge_left * slip_edge_left);
-        let t182 = t128 * t78;
-        let t183 = sqrt_pen_edge_right
-            * (t50 * t101 + t127 * mu * t52 * step_delta_edge_right);
-        let t184 = t52 * (T::from_f64(2.0) * t84 - t130) * t78;
-        let t185 = t74.step();
-        let t186 = t73 * t73;
-        let t187 = t104 * (T::from_f64(1.5) - T::from_f64(1.5) * t75);
-        let t188 = t64 * t185;
-        let t189 = T::from_f64(2.0) * t92 * t188;
-        let t190 = t187 * t26 + t189;
-        let t191 = t105 * (T::from_f64(1.5) - T::from_f64(1.5) * t52);
-        let t192 = T::from_f64(2.0) * t92 * t162;
-        let t193 = t191 * t26 + t192;
-        let t194 = t104 * t75;
-        let t195 = mu * (t194 * t175 - t163 * t84);
-        let t196 = t98 + t106;
-        let t197 = t26 * t196;
-        let t198 = sin_theta * t164 + t70;
-        let t199 = t75 * (t171 - t179);
-        let t200 = t199 * t64;
-        let t201 = t200 + t178;
-        let t202 = hc_alpha * (t188 + t162);
-        let t203 = hc_alpha * t185;
-        let t204 = t203 * t73;
-        let t205 = hc_alpha * (t188 * t175 - t162 * t84);
-        let t206 = t205 * mu;
-        let t207 = t206 * thetadot;
-        let t208 = hc_alpha * (t188 * t73 + t162 * t50);
-        let t209 = t208 * sin_theta * k_edge;
-        let t210 = t175 * t172;
-        let t211 = sqrt_pen_edge_left
-            * (t73 * t95 + t210 * mu * t75 * step_delta_edge_left);
-        let t212 = t194 * t73;
-        let t213 = t163 * t50;
-        let t214 = hc_alpha * (t210 * t188 + t127 * t162);
-        let t215 = t208 * t26;
-        let t216 = t200 * t172;
-        let t217 = t171 * t173;
-        let t218 = t217 * t188 - t85 * t162;
-        let t219 = t217 * t194 - t85 * t163;
-        let t220 = hc_alpha
-            * (mu * t218 + t188 * delta_rate_edge_left
-                + t162 * neg_delta_rate_edge_right) - t174 + t161;
-        let t221 = t75 * (T::from_f64(2.0) * t175 - t181) * t64;
-        let t222 = t75 * t172;
-        let t223 = t91 * t188 - t187 * sin_theta;
-        let t224 = t91 * t162 - t191 * sin_theta;
-        let t225 = t167 - cos_theta * t164;
-        let t226 = cos_theta * (thetadot * t198 - t72)
-            + sin_theta * (thetadot * t225 + t169);
-        let t227 = t162 * t141;
-        let t228 = t227 * hc_alpha - t191 * t50;
-        let t229 = sin_theta * (cos_theta * (-t200 - t178) * mu + t202 * t26);
-        let t230 = t64 * (t199 * t172 + t204 * t175) - t78 * (t128 + t138 * t84);
-        let t231 = t64 * (step_delta_edge_left - t76 + t126 * t210 * t185);
-        let t232 = t172 * t226;
-        let t233 = thetadot * (t174 - t161);
-        let t234 = t64 * t226;
-        let t235 = t78 * t143;
-        let t236 = t148 * t68;
-        let t237 = t68 * t118 * t119;
-        let t238 = t68 * (t118 - t119 * t120);
-        let t239 = t238 * t65;
-        let t240 = t112 * t122;
-        let t241 = t108 * t66;
-        let t242 = t148 * t241;
-        let t243 = t107 * t66;
-        let t244 = t113 * t59;
-        let t245 = t244 * t94 + t240 * t90;
-        let t246 = t39 * t81;
+        let t86 = v_s.hypot(slip_wall_right);
+        let t87 = T::from_f64(1.0) / t86;
+        let t88 = slip_wall_right * slip_wall_right;
+        let t89 = T::from_f64(1.0) / (t86 * t86 * t86);
+        let t90 = t16 * t84;
+        let t91 = t90 + t17;
+        let t92 = T::from_f64(2.0) * t14 * xdot;
+        let t93 = slip_edge_right * t54;
+        let t94 = t51.step();
+        let t95 = T::from_f64(1.0) / (t53 * t53 * t53);
+        let t96 = t50 * t50;
+        let t97 = thetadot * hc_alpha;
+        let t98 = t14 * t97;
+        let t99 = t97 * cos_theta;
+        let t100 = cos_theta * t83 + t47;
+        let t101 = t56 * t95;
+        let t102 = t52 * (t54 - t101);
+        let t103 = rho_p * (sin_theta - T::from_f64(2.0) * t14);
+        let t104 = t93 * t55;
+        let t105 = t102 * t55;
+        let t106 = mu * t39;
+        let t107 = slip_wall_left * t41;
+        let t108 = hc_alpha * t94;
+        let t109 = t108 * t50;
+        let t110 = t54 * t56;
+        let t111 = t41 * t42;
+        let t112 = t95 * (slip_edge_right * slip_edge_right * slip_edge_right);
+        let t113 = t82 * (slip_wall_left * slip_wall_left * slip_wall_left);
+        let t114 = t52 * t55;
+        let t115 = k_edge * t27;
+        let t116 = t92 + t32 - thetadot * t85;
+        let t117 = sin_theta * t83 + t44;
+        let t118 = sin_theta * (thetadot * t100 + t49)
+            - cos_theta * (t46 + thetadot * t117);
+        let t119 = t108 * t116;
+        let t120 = t22 - cos_theta * (t103 + t20);
+        let t121 = t22 - cos_theta * (t103 + t38);
+        let t122 = t97 * mu;
+        let t123 = t55 * t118;
+        let t124 = t60.step();
+        let t125 = t59 * t59;
+        let t126 = T::from_f64(1.5) - T::from_f64(1.5) * t61;
+        let t127 = k_wall * hc_alpha;
+        let t128 = t61 * (t41 - t42 * t82);
+        let t129 = slip_wall_right * t87;
+        let t130 = mu * t33;
+        let t131 = t107 * t61;
+        let t132 = hc_alpha * t124;
+        let t133 = t132 * t91;
+        let t134 = t111 * t61;
+        let t135 = t89 * (slip_wall_right * slip_wall_right * slip_wall_right);
+        let t136 = t17 - t90;
+        let t137 = t133 * t107 - t128 * t121;
+        let t138 = t132 * t59;
+        let t139 = t107 * t138;
+        let t140 = t61 * t121;
+        let t141 = t39 * t61;
+        let sqrt_pen_edge_left = pen_edge_left.sqrt();
+        let t142 = step_delta_edge_left * step_delta_edge_left;
+        let sqrt_pen_wall_right = pen_wall_right.sqrt();
+        let t143 = step_delta_wall_right * step_delta_wall_right;
+        let t144 = -T::from_f64(1.5) * t143;
+        let t145 = sqrt_pen_edge_left * t142;
+        let t146 = r + cos_theta * t63 + t35;
+        let t147 = t35 - t63 * t84;
+        let t148 = t67.step();
+        let t149 = t66 * t66;
+        let t150 = sin_theta * t69;
+        let t151 = t12 - t150;
+        let t152 = zdot + thetadot * t151;
+        let slip_edge_left = sin_theta * t72 + cos_theta * t152;
+        let t153 = v_s.hypot(slip_edge_left);
+        let t154 = T::from_f64(1.0) / t153;
+        let t155 = sin_theta * t71 + cos_theta * t151;
+        let t156 = slip_edge_left * slip_edge_left;
+        let t157 = t64 * t76;
+        let t158 = t78 * t57;
+        let t159 = slip_edge_left * t154;
+        let t160 = t159 * t64 * t75 + t93 * t78 * t52;
+        let t161 = t74.step();
+        let t162 = T::from_f64(1.0) / (t153 * t153 * t153);
+        let t163 = t73 * t73;
+        let t164 = step_delta_edge_left * sqrt_pen_edge_left;
+        let t165 = t164 * (T::from_f64(1.5) - T::from_f64(1.5) * t75);
+        let t166 = t64 * t161;
+        let t167 = T::from_f64(2.0) * t98 * t166;
+        let t168 = t165 * t26 + t167;
+        let sqrt_pen_edge_right = pen_edge_right.sqrt();
+        let t169 = step_delta_edge_right * step_delta_edge_right;
+        let t170 = step_delta_edge_right * sqrt_pen_edge_right;
+        let t171 = t170 * (T::from_f64(1.5) - T::from_f64(1.5) * t52);
+        let t172 = t78 * t94;
+        let t173 = T::from_f64(2.0) * t98 * t172;
+        let t174 = t171 * t26 + t173;
+        let t175 = t164 * t75;
+        let t176 = t170 * t52;
+        let t177 = mu * (t175 * t159 - t176 * t93);
+        let t178 = T::from_f64(1.5) - T::from_f64(1.5) * t68;
+        let t179 = sqrt_pen_wall_right * (step_delta_wall_right * t178 + t144);
+        let t180 = sqrt_pen_edge_right * t169;
+        let t181 = t145 + t180;
+        let t182 = t26 * t181;
+        let t183 = sin_theta * t146 + t70;
+        let t184 = t156 * t162;
+        let t185 = t75 * (t154 - t184);
+        let t186 = t185 * t64;
+        let t187 = t102 * t78;
+        let t188 = t186 + t187;
+        let t189 = hc_alpha * (t166 + t172);
+        let t190 = t148 * t65;
+        let t191 = hc_alpha * t161;
+        let t192 = t191 * t73;
+        let t193 = hc_alpha * (t166 * t159 - t172 * t93);
+        let t194 = t193 * mu;
+        let t195 = t194 * thetadot;
+        let t196 = hc_alpha * (t166 * t73 + t172 * t50);
+        let t197 = t196 * sin_theta * k_edge;
+        let t198 = t159 * t155;
+        let t199 = sqrt_pen_edge_left
+            * (t73 * t142 + t198 * mu * t75 * step_delta_edge_left);
+        let t200 = sqrt_pen_edge_right
+            * (t50 * t169 + t104 * mu * t52 * step_delta_edge_right);
+        let t201 = t175 * t73;
+        let t202 = t176 * t50;
+        let t203 = t105 * t78;
+        let t204 = hc_alpha * (t198 * t166 + t104 * t172);
+        let t205 = t196 * t26;
+        let t206 = t186 * t155;
+        let t207 = t154 * t156;
+        let t208 = t207 * t166 - t110 * t172;
+        let t209 = t207 * t175 - t110 * t176;
+        let t210 = hc_alpha
+            * (mu * t208 + t166 * delta_rate_edge_left
+                + t172 * neg_delta_rate_edge_right) - t157 + t158;
+        let t211 = t162 * (slip_edge_left * slip_edge_left * slip_edge_left);
+        let t212 = t75 * (T::from_f64(2.0) * t159 - t211) * t64;
+        let t213 = t52 * (T::from_f64(2.0) * t93 - t112) * t78;
+        let t214 = t75 * t155;
+        let t215 = hc_alpha * t148;
+        let t216 = t99 * t166 - t165 * sin_theta;
+        let t217 = t99 * t172 - t171 * sin_theta;
+        let t218 = t150 - cos_theta * t146;
+        let t219 = cos_theta * (thetadot * t183 - t72)
+            + sin_theta * (thetadot * t218 + t152);
+        let t220 = t172 * t116;
+        let t221 = t220 * hc_alpha - t171 * t50;
+        let t222 = sin_theta * (cos_theta * (-t186 - t187) * mu + t189 * t26);
+        let t223 = t64 * (t185 * t155 + t192 * t159) - t78 * (t105 + t109 * t93);
+        let t224 = t64 * (step_delta_edge_left - t76 + t122 * t198 * t161);
+        let t225 = t78 * (-step_delta_edge_right + t57 + t122 * t104 * t94);
+        let t226 = t155 * t219;
+        let t227 = thetadot * (t157 - t158);
+        let t228 = t64 * t219;
+        let t229 = t78 * t118;
+        let sqrt_pen_wall_left = pen_wall_left.sqrt();
+        let t230 = step_delta_wall_left * step_delta_wall_left;
+        let t231 = -T::from_f64(1.5) * t230;
+        let t232 = sqrt_pen_wall_left * (step_delta_wall_left * t126 + t231);
+        let t233 = t81 * t124;
+        let t234 = t233 * t91;
+        let t235 = t68 * (t87 - t88 * t89);
+        let t236 = t235 * t65;
+        let t237 = t215 * t66;
+        let t238 = t129 * t237;
+        let t239 = step_delta_wall_left * sqrt_pen_wall_left;
+        let t240 = t129 * t68;
+        let t241 = step_delta_wall_right * sqrt_pen_wall_right;
+        let t242 = t241 * t66;
+        let t243 = t239 * t59;
+        let t244 = t243 * t126 + t234 * t97;
+        let t245 = t39 * t81;
+        let t246 = t68 * t87 * t88;
         let t247 = t68 * t33;
-        let t248 = t123 + t32 - thetadot * t165;
-        let t249 = t188 * t248;
-        let t250 = t249 * hc_alpha - t187 * t73;
-        let t251 = t203 * t248;
-        let t252 = t64 * (t251 * t175 - t199 * t226) - t78 * (t125 * t143 + t144 * t84)
-            + T::from_f64(1.5) * (t212 * t175 - t213 * t84);
-        let t253 = T::from_f64(1.5) * (t98 * t73 + t106 * t50) + t250 + t228;
-        let t254 = t100 * t155;
-        let t255 = t108 * t155;
-        let t256 = t65 * (t255 * t148 - t238 * t145);
-        let t257 = t243 * t102 + t254 * t90;
-        let t258 = t68 * t145;
+        let t248 = t92 + t32 - thetadot * t147;
+        let t249 = t166 * t248;
+        let t250 = t249 * hc_alpha - t165 * t73;
+        let t251 = t191 * t248;
+        let t252 = t64 * (t251 * t159 - t185 * t219) - t78 * (t102 * t118 + t119 * t93)
+            + T::from_f64(1.5) * (t201 * t159 - t202 * t93);
+        let t253 = T::from_f64(1.5) * (t145 * t73 + t180 * t50) + t250 + t221;
+        let t254 = t190 * t136;
+        let t255 = t215 * t136;
+        let t256 = t65 * (t255 * t129 - t235 * t120);
+        let t257 = t242 * t178 + t254 * t97;
+        let t258 = t68 * t120;
         SMatrix::<
             T,
             8,
@@ -1399,131 +694,131 @@ pub mod compliant_peg {
                 T::from_f64(0.0),
                 t27
                     * (k_edge
-                        * (t26 * (T::from_f64(1.5) * t195 * sin_theta + t190 + t193)
-                            - T::from_f64(1.5) * t196 * t30
-                            - T::from_f64(2.0) * t207 * (t14 * sin_theta))
-                        + k_wall * (t103 + t111)),
-                t140
-                    * (sin_theta * (T::from_f64(1.5) * t197 - t207 * cos_theta)
-                        + t26 * (t223 + t224) - T::from_f64(1.5) * t195 * t29),
+                        * (t26 * (T::from_f64(1.5) * t177 * sin_theta + t168 + t174)
+                            - T::from_f64(1.5) * t181 * t30
+                            - T::from_f64(2.0) * t195 * (t14 * sin_theta))
+                        + k_wall * (t179 + t232)),
+                t115
+                    * (sin_theta * (T::from_f64(1.5) * t182 - t195 * cos_theta)
+                        + t26 * (t216 + t217) - T::from_f64(1.5) * t177 * t29),
                 t27
                     * (k_edge
-                        * (-(mu * (sin_theta * t252 + cos_theta * t176)) + t26 * t253
+                        * (-(mu * (sin_theta * t252 + cos_theta * t160)) + t26 * t253
                             + t14 * (-(T::from_f64(2.0) * t79) - T::from_f64(2.0) * t80))
-                        + k_wall * (t103 * t66 + t111 * t59 + t90 * (t254 + t240)) + t3
+                        + k_wall * (t179 * t66 + t232 * t59 + t97 * (t254 + t234)) + t3
                         + t4),
                 -t27
-                    * (k_edge * (mu * (t29 * t201 - sin_theta * t26 * t205) + t202 * t30)
-                        + t152 * (t100 + t112)),
-                t140 * (t229 - t206 * t29),
+                    * (k_edge * (mu * (t29 * t188 - sin_theta * t26 * t193) + t189 * t30)
+                        + t127 * (t190 + t233)),
+                t115 * (t222 - t194 * t29),
                 -t27
-                    * (k_edge * (sin_theta * t230 * mu - t215)
-                        + t152 * (t100 * t66 + t112 * t59)),
+                    * (k_edge * (sin_theta * t223 * mu - t205)
+                        + t127 * (t190 * t66 + t233 * t59)),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 -t27
                     * (k_edge
-                        * (sin_theta * (-(T::from_f64(1.5) * t197) + t190 + t193)
+                        * (sin_theta * (-(T::from_f64(1.5) * t182) + t168 + t174)
                             - cos_theta
-                                * (t84 * (t192 - T::from_f64(1.5) * t163 * t26)
-                                    - t175 * (t189 - T::from_f64(1.5) * t194 * t26)) * mu)
-                        + T::from_f64(1.5) * (k_wall * (t236 * t107 - t132 * t113))
+                                * (t93 * (t173 - T::from_f64(1.5) * t176 * t26)
+                                    - t159 * (t167 - T::from_f64(1.5) * t175 * t26)) * mu)
+                        + T::from_f64(1.5) * (k_wall * (t240 * t241 - t131 * t239))
                             * mu),
-                -t140
-                    * (sin_theta * (T::from_f64(1.5) * t195 * cos_theta + t223 + t224)
-                        + T::from_f64(1.5) * t196 * t29 + t207 * t31),
+                -t115
+                    * (sin_theta * (T::from_f64(1.5) * t177 * cos_theta + t216 + t217)
+                        + T::from_f64(1.5) * t181 * t29 + t195 * t31),
                 -t27
                     * (-(mu
-                        * (k_edge * (sin_theta * t176 - cos_theta * t252)
+                        * (k_edge * (sin_theta * t160 - cos_theta * t252)
                             - k_wall
-                                * (thetadot * (t81 * t156 - t256)
-                                    + T::from_f64(1.5) * (t236 * t243 - t132 * t244))))
+                                * (thetadot * (t81 * t137 - t256)
+                                    + T::from_f64(1.5) * (t240 * t242 - t131 * t243))))
                         + k_edge * (cos_theta * (t79 + t80) + sin_theta * t253) + t0
                         + t1),
                 t27
-                    * (k_edge * (t229 + cos_theta * t26 * t206)
-                        - t152 * (t100 * t148 - t112 * t86) * mu),
+                    * (k_edge * (t222 + cos_theta * t26 * t194)
+                        - t127 * (t190 * t129 - t233 * t107) * mu),
                 -t27
                     * (mu
-                        * (k_edge * (t31 * t201 + sin_theta * cos_theta * t205)
-                            + k_wall * (t239 + t131 * t81)) + t202 * t29 * k_edge),
+                        * (k_edge * (t31 * t188 + sin_theta * cos_theta * t193)
+                            + k_wall * (t236 + t128 * t81)) + t189 * t29 * k_edge),
                 t27
                     * (mu
                         * (k_wall
-                            * (t81 * (t158 - t131 * t39) - t65 * (t242 - t238 * t33))
-                            - cos_theta * t230 * k_edge) - t209),
+                            * (t81 * (t139 - t128 * t39) - t65 * (t238 - t235 * t33))
+                            - cos_theta * t223 * k_edge) - t197),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 t28
                     * (k_edge
-                        * (t14 * (-(T::from_f64(2.0) * t231) - T::from_f64(2.0) * t180)
-                            + t26 * (T::from_f64(1.5) * t211 + T::from_f64(1.5) * t183)
-                            - t73 * t190 - t50 * t193)
+                        * (t14 * (-(T::from_f64(2.0) * t224) - T::from_f64(2.0) * t225)
+                            + t26 * (T::from_f64(1.5) * t199 + T::from_f64(1.5) * t200)
+                            - t73 * t168 - t50 * t174)
                         + k_wall
                             * (sqrt_pen_wall_right
-                                * (t66 * (t97 + t102 * step_delta_wall_right)
-                                    + T::from_f64(1.5) * t149 * t236 * step_delta_wall_right)
+                                * (t66 * (t144 + t178 * step_delta_wall_right)
+                                    + T::from_f64(1.5) * t130 * t240 * step_delta_wall_right)
                                 + sqrt_pen_wall_left
-                                    * (t59 * (t110 + t94 * step_delta_wall_left)
-                                        + T::from_f64(1.5) * t129 * t132 * step_delta_wall_left))),
+                                    * (t59 * (t231 + t126 * step_delta_wall_left)
+                                        + T::from_f64(1.5) * t106 * t131 * step_delta_wall_left))),
                 -(k_edge
-                    * (cos_theta * (t231 + t180)
+                    * (cos_theta * (t224 + t225)
                         - sin_theta
-                            * (-(T::from_f64(1.5) * t211) - T::from_f64(1.5) * t183)
-                        + t73 * t223 + t50 * t224)) * t28,
+                            * (-(T::from_f64(1.5) * t199) - T::from_f64(1.5) * t200)
+                        + t73 * t216 + t50 * t217)) * t28,
                 -t28
                     * (mu
                         * (k_edge
                             * (t64
-                                * (t251 * t210
+                                * (t251 * t198
                                     - t75
-                                        * (t171
-                                            * (t232
+                                        * (t154
+                                            * (t226
                                                 + slip_edge_left
-                                                    * (sin_theta * (t225 + t168) - cos_theta * (t71 - t198)))
-                                            - t179 * t232))
+                                                    * (sin_theta * (t218 + t151) - cos_theta * (t71 - t183)))
+                                            - t184 * t226))
                                 + t78
                                     * (t52
                                         * (t54
-                                            * (t147
+                                            * (t123
                                                 + slip_edge_right
-                                                    * (sin_theta * (t48 - t135) - cos_theta * (t45 - t142)))
-                                            - t124 * t147) + t144 * t127)
-                                + T::from_f64(1.5) * (t212 * t210 + t213 * t127))
+                                                    * (sin_theta * (t48 - t100) - cos_theta * (t45 - t117)))
+                                            - t101 * t123) + t119 * t104)
+                                + T::from_f64(1.5) * (t201 * t198 + t202 * t104))
                             + k_wall
-                                * (thetadot * (t256 * t33 + t246 * t156)
-                                    - t236 * (T::from_f64(1.5) * t243 * t33 - t65 * t145)
-                                    - t132 * (t81 * t146 + T::from_f64(1.5) * t244 * t39)))
+                                * (thetadot * (t256 * t33 + t245 * t137)
+                                    - t240 * (T::from_f64(1.5) * t242 * t33 - t65 * t120)
+                                    - t131 * (t81 * t121 + T::from_f64(1.5) * t243 * t39)))
                         + k_edge
-                            * (-(t79 * t165) - t80 * t116
-                                + T::from_f64(1.5) * (t98 * t186 + t106 * t134) + t73 * t250
-                                + t50 * t228)
+                            * (-(t79 * t147) - t80 * t85
+                                + T::from_f64(1.5) * (t145 * t163 + t180 * t96) + t73 * t250
+                                + t50 * t221)
                         + k_wall
-                            * (-((step_delta_wall_right - t77) * t155 * t65)
-                                + (step_delta_wall_left - t62) * t122 * t81
+                            * (-((step_delta_wall_right - t77) * t136 * t65)
+                                + (step_delta_wall_left - t62) * t91 * t81
                                 + T::from_f64(1.5)
-                                    * (sqrt_pen_wall_right * t96 * t166
-                                        + sqrt_pen_wall_left * t109 * t151) - t66 * t257
-                                - t59 * t245)),
+                                    * (sqrt_pen_wall_right * t143 * t149
+                                        + sqrt_pen_wall_left * t230 * t125) - t66 * t257
+                                - t59 * t244)),
                 t28
-                    * (k_edge * (mu * (sin_theta * (t182 - t216) + t214 * t26) + t215)
-                        + t152
-                            * (t100 * (t149 * t148 - t66) + t112 * (t129 * t86 - t59))),
+                    * (k_edge * (mu * (sin_theta * (t203 - t206) + t204 * t26) + t205)
+                        + t127
+                            * (t190 * (t130 * t129 - t66) + t233 * (t106 * t107 - t59))),
                 -t28
                     * (mu
-                        * (k_edge * (cos_theta * (t216 - t182) + t214 * sin_theta)
-                            + k_wall * (t246 * t131 - t239 * t33)) + t209),
+                        * (k_edge * (cos_theta * (t206 - t203) + t204 * sin_theta)
+                            + k_wall * (t245 * t128 - t236 * t33)) + t197),
                 -t28
                     * (mu
                         * (k_edge
-                            * (t64 * (t199 * (t172 * t172) + t204 * t210)
-                                + t78 * (t125 * (t55 * t55) + t138 * t127))
+                            * (t64 * (t185 * (t155 * t155) + t192 * t198)
+                                + t78 * (t102 * (t55 * t55) + t109 * t104))
                             - k_wall
-                                * (t65 * (t242 * t33 - t238 * (t33 * t33))
-                                    + t81 * (t158 * t39 - t131 * (t39 * t39))))
+                                * (t65 * (t238 * t33 - t235 * (t33 * t33))
+                                    + t81 * (t139 * t39 - t128 * (t39 * t39))))
                         + hc_alpha
-                            * (k_edge * (t188 * t186 + t162 * t134)
-                                + k_wall * (t100 * t166 + t112 * t151))),
+                            * (k_edge * (t166 * t163 + t172 * t96)
+                                + k_wall * (t190 * t149 + t233 * t125))),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
@@ -1536,86 +831,86 @@ pub mod compliant_peg {
                 T::from_f64(0.0),
                 k_edge
                     * (mu
-                        * (T::from_f64(2.0) * (t14 * t218) * t90
-                            - T::from_f64(1.5) * t219 * t26)
-                        - T::from_f64(2.0) * t233 * t14 + delta_rate_edge_left * t190
-                        + neg_delta_rate_edge_right * t193)
+                        * (T::from_f64(2.0) * (t14 * t208) * t97
+                            - T::from_f64(1.5) * t209 * t26)
+                        - T::from_f64(2.0) * t227 * t14 + delta_rate_edge_left * t168
+                        + neg_delta_rate_edge_right * t174)
                     - k_wall
-                        * (-(T::from_f64(1.5) * (t237 * t107 - t133 * t113) * mu)
-                            + t107 * t102 * delta_rate_wall_right
-                            + t113 * t94 * neg_delta_rate_wall_left),
+                        * (-(T::from_f64(1.5) * (t246 * t241 - t134 * t239) * mu)
+                            + t241 * t178 * delta_rate_wall_right
+                            + t239 * t126 * neg_delta_rate_wall_left),
                 k_edge
                     * (mu
-                        * (T::from_f64(1.5) * t219 * sin_theta + cos_theta * t218 * t90)
-                        - t233 * cos_theta + delta_rate_edge_left * t223
-                        + neg_delta_rate_edge_right * t224),
+                        * (T::from_f64(1.5) * t209 * sin_theta + cos_theta * t208 * t97)
+                        - t227 * cos_theta + delta_rate_edge_left * t216
+                        + neg_delta_rate_edge_right * t217),
                 mu
                     * (k_edge
                         * (t75
-                            * (t234 * t181
-                                - t171
-                                    * (T::from_f64(2.0) * t234 * slip_edge_left
-                                        - T::from_f64(1.5) * t104 * t73 * t173))
+                            * (t228 * t211
+                                - t154
+                                    * (T::from_f64(2.0) * t228 * slip_edge_left
+                                        - T::from_f64(1.5) * t164 * t73 * t156))
                             - t52
                                 * (t54
-                                    * (T::from_f64(1.5) * t105 * t50 * t56
-                                        + T::from_f64(2.0) * t235 * slip_edge_right) - t235 * t130)
-                            + hc_alpha * (t249 * t217 - t227 * t85))
+                                    * (T::from_f64(1.5) * t170 * t50 * t56
+                                        + T::from_f64(2.0) * t229 * slip_edge_right) - t229 * t112)
+                            + hc_alpha * (t249 * t207 - t220 * t110))
                         + k_wall
                             * (thetadot
                                 * (t81
                                     * (t41
-                                        * (t154 * t42 - T::from_f64(2.0) * t159 * slip_wall_left)
-                                        + t159 * t83)
+                                        * (t133 * t42 - T::from_f64(2.0) * t140 * slip_wall_left)
+                                        + t140 * t113)
                                     - t65
-                                        * (t118
-                                            * (t255 * t119 - T::from_f64(2.0) * t258 * slip_wall_right)
-                                            + t258 * t150))
-                                + T::from_f64(1.5) * (t237 * t243 - t133 * t244)))
+                                        * (t87
+                                            * (t255 * t88 - T::from_f64(2.0) * t258 * slip_wall_right)
+                                            + t258 * t135))
+                                + T::from_f64(1.5) * (t246 * t242 - t134 * t243)))
                     + k_edge
-                        * (-(t174 * t248) + delta_rate_edge_left * t250 + t161 * t141
-                            + neg_delta_rate_edge_right * t228)
+                        * (-(t157 * t248) + delta_rate_edge_left * t250 + t158 * t116
+                            + neg_delta_rate_edge_right * t221)
                     - k_wall
-                        * (thetadot * (t81 * t62 * t122 - t65 * t77 * t155)
+                        * (thetadot * (t81 * t62 * t91 - t65 * t77 * t136)
                             + delta_rate_wall_right * t257
-                            + neg_delta_rate_wall_left * t245),
-                -(k_edge * (t26 * t220 + sin_theta * (-t221 - t184) * mu))
+                            + neg_delta_rate_wall_left * t244),
+                -(k_edge * (t26 * t210 + sin_theta * (-t212 - t213) * mu))
                     - k_wall
                         * (t65
-                            * (-(t108 * (mu * t118 * t119 + delta_rate_wall_right)) - t68
+                            * (-(t215 * (mu * t87 * t88 + delta_rate_wall_right)) - t68
                                 + T::from_f64(1.0))
                             + t81
-                                * (t153 * (t87 * mu - neg_delta_rate_wall_left)
+                                * (t132 * (t111 * mu - neg_delta_rate_wall_left)
                                     - T::from_f64(1.0) + t61)),
-                k_edge * (sin_theta * t220 + cos_theta * (t221 + t184) * mu)
+                k_edge * (sin_theta * t210 + cos_theta * (t212 + t213) * mu)
                     + k_wall
-                        * (t68 * (T::from_f64(2.0) * t148 - t150) * t65
-                            + t61 * (T::from_f64(2.0) * t86 - t83) * t81) * mu,
+                        * (t68 * (T::from_f64(2.0) * t129 - t135) * t65
+                            + t61 * (T::from_f64(2.0) * t107 - t113) * t81) * mu,
                 -(mu
                     * (k_edge
                         * (t64
-                            * (t222 * t181
-                                - t171
-                                    * (t204 * t173 + T::from_f64(2.0) * t222 * slip_edge_left))
+                            * (t214 * t211
+                                - t154
+                                    * (t192 * t156 + T::from_f64(2.0) * t214 * slip_edge_left))
                             - t78
-                                * (t139 * t130
+                                * (t114 * t112
                                     - t54
-                                        * (t138 * t56 + T::from_f64(2.0) * t139 * slip_edge_right)))
+                                        * (t109 * t56 + T::from_f64(2.0) * t114 * slip_edge_right)))
                         + k_wall
                             * (t81
                                 * (t41
-                                    * (t157 * t42 - T::from_f64(2.0) * t160 * slip_wall_left)
-                                    + t160 * t83)
+                                    * (t138 * t42 - T::from_f64(2.0) * t141 * slip_wall_left)
+                                    + t141 * t113)
                                 - t65
-                                    * (t118
-                                        * (t241 * t119 - T::from_f64(2.0) * t247 * slip_wall_right)
-                                        + t247 * t150))))
+                                    * (t87
+                                        * (t237 * t88 - T::from_f64(2.0) * t247 * slip_wall_right)
+                                        + t247 * t135))))
                     + k_edge
-                        * (t64 * (t203 * delta_rate_edge_left - t76) * t73
-                            + t78 * (t57 + t137 * neg_delta_rate_edge_right) * t50)
+                        * (t64 * (t191 * delta_rate_edge_left - t76) * t73
+                            + t78 * (t57 + t108 * neg_delta_rate_edge_right) * t50)
                     + k_wall
-                        * (t65 * (t108 * delta_rate_wall_right - t77) * t66
-                            + t81 * (t62 + t153 * neg_delta_rate_wall_left) * t59),
+                        * (t65 * (t215 * delta_rate_wall_right - t77) * t66
+                            + t81 * (t62 + t132 * neg_delta_rate_wall_left) * t59),
                 T::from_f64(0.0),
                 T::from_f64(0.0),
             ],
@@ -1854,5 +1149,710 @@ pub mod compliant_peg {
                 + T::from_f64(0.4) * (t7 + t9) * k_wall,
             depth: z + l_c * cos_theta,
         }
+    }
+    /// Exact parameter Jacobian of [`rhs`]: `dydot_dp` with entry (i, k) = ∂ydotᵢ/∂p_k (columns in `P_NAMES` order).
+    ///
+    /// # Inputs
+    /// - `y` = (`x`, `z`, `theta`, `xdot`, `zdot`, `thetadot`, `work`, `dissipation`)
+    /// - `p` = (`m`, `J`, `r`, `l_c`, `D`, `rho_p`, `rho_h`, `mu`, `v_s`, `k_edge`, `k_wall`, `f1`, `f2`, `M`, `e_star`, `edge_sum`, `edge_ma`, `edge_mb`, `edge_dstar`, `wall_sum`, `wall_ma`, `wall_mb`, `wall_dstar`, `hc_alpha`)
+    ///
+    /// # Outputs
+    /// - `dydot_dp`: 8×24 matrix
+    ///
+    /// # Cost
+    /// 364 add/sub, 728 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 280 `let`s.
+    #[inline]
+    pub fn rhs_p<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 24> {
+        let x = y[0];
+        let z = y[1];
+        let theta = y[2];
+        let xdot = y[3];
+        let zdot = y[4];
+        let thetadot = y[5];
+        let m = p[0];
+        let j = p[1];
+        let r = p[2];
+        let l_c = p[3];
+        let d = p[4];
+        let rho_p = p[5];
+        let rho_h = p[6];
+        let mu = p[7];
+        let v_s = p[8];
+        let k_edge = p[9];
+        let k_wall = p[10];
+        let f1 = p[11];
+        let f2 = p[12];
+        let m_2 = p[13];
+        let hc_alpha = p[23];
+        let (sin_theta, cos_theta) = theta.sin_cos();
+        let t0 = T::from_f64(0.5) * d;
+        let t1 = T::from_f64(0.5) * theta;
+        let (t2, t3) = t1.sin_cos();
+        let t4 = t2 * t2;
+        let t5 = r * sin_theta;
+        let t6 = r * cos_theta;
+        let t7 = T::from_f64(2.0) * t4;
+        let t8 = t7 - T::from_f64(1.0);
+        let t9 = zdot * sin_theta;
+        let t10 = t2 * t3;
+        let t11 = l_c - rho_p;
+        let t12 = r - rho_p;
+        let t13 = sin_theta * t11;
+        let t14 = -T::from_f64(2.0) * t4 * t12;
+        let t15 = rho_p * sin_theta;
+        let t16 = cos_theta * (r - T::from_f64(2.0) * rho_p * t4);
+        let t17 = cos_theta * t11;
+        let t18 = rho_h + t0 - x;
+        let t19 = T::from_f64(1.0) / m;
+        let t20 = T::from_f64(1.0) / j;
+        let t21 = t7 - sin_theta;
+        let t22 = sin_theta + t7;
+        let t23 = sin_theta * t19;
+        let t24 = cos_theta * t19;
+        let t25 = z - rho_h;
+        let t26 = sin_theta * t25;
+        let t27 = cos_theta * t25;
+        let t28 = sin_theta * (l_c - rho_p + t15) + t16;
+        let t29 = sin_theta * (-l_c + rho_p + t15) + t16;
+        let t30 = thetadot * t29;
+        let slip_wall_left = zdot + t30;
+        let t31 = v_s.hypot(slip_wall_left);
+        let t32 = T::from_f64(1.0) / t31;
+        let t33 = slip_wall_left * slip_wall_left;
+        let t34 = sin_theta * t18 - t27;
+        let t35 = t5 - cos_theta * t34;
+        let t36 = t6 + sin_theta * t34;
+        let slip_edge_right = sin_theta * (xdot - thetadot * t35)
+            + cos_theta * (zdot - thetadot * t36);
+        let t37 = t27 - T::from_f64(2.0) * t10 * t18;
+        let t38 = v_s.hypot(slip_edge_right);
+        let t39 = T::from_f64(1.0) / t38;
+        let t40 = sin_theta * t35 + cos_theta * t36;
+        let t41 = slip_edge_right * slip_edge_right;
+        let t42 = T::from_f64(2.0) * (t10 * t12);
+        let t43 = t17 + t42;
+        let neg_delta_rate_wall_left = xdot + thetadot * t43;
+        let t44 = T::from_f64(1.0) - hc_alpha * neg_delta_rate_wall_left;
+        let t45 = t44.max0();
+        let t46 = T::from_f64(1.0) - t45;
+        let t47 = -rho_h - t0 - x;
+        let delta_edge_left = r - t0 - x + t26 - T::from_f64(2.0) * t47 * t4;
+        let pen_edge_left = delta_edge_left.max0();
+        let t48 = pen_edge_left * pen_edge_left.sqrt();
+        let step_delta_edge_left = delta_edge_left.step();
+        let delta_wall_right = r - t0 + x + t13 + t14;
+        let pen_wall_right = delta_wall_right.max0();
+        let t49 = pen_wall_right * pen_wall_right.sqrt();
+        let step_delta_wall_right = delta_wall_right.step();
+        let t50 = t17 - t42;
+        let delta_rate_wall_right = xdot + thetadot * t50;
+        let t51 = T::from_f64(1.0) + hc_alpha * delta_rate_wall_right;
+        let t52 = t51.max0();
+        let t53 = sin_theta * t47 - t27;
+        let t54 = cos_theta * t53 + t5;
+        let t55 = t6 - sin_theta * t53;
+        let slip_edge_left = sin_theta * (xdot + thetadot * t54)
+            + cos_theta * (zdot + thetadot * t55);
+        let t56 = t27 - T::from_f64(2.0) * t10 * t47;
+        let t57 = v_s.hypot(slip_edge_left);
+        let t58 = T::from_f64(1.0) / t57;
+        let t59 = sin_theta * t54 + cos_theta * t55;
+        let t60 = slip_edge_left * slip_edge_left;
+        let t61 = T::from_f64(1.0) - t52;
+        let delta_edge_right = r - t0 + x - t26 + T::from_f64(2.0) * t4 * t18;
+        let pen_edge_right = delta_edge_right.max0();
+        let t62 = pen_edge_right * pen_edge_right.sqrt();
+        let step_delta_edge_right = delta_edge_right.step();
+        let t63 = step_delta_wall_right - t61;
+        let delta_wall_left = r - t0 - x - t13 + t14;
+        let pen_wall_left = delta_wall_left.max0();
+        let t64 = pen_wall_left * pen_wall_left.sqrt();
+        let step_delta_wall_left = delta_wall_left.step();
+        let t65 = step_delta_wall_left - t46;
+        let t66 = t64 * (t45 - T::from_f64(1.0) + step_delta_wall_left)
+            - t49 * (-T::from_f64(1.0) + step_delta_wall_right + t52);
+        let t67 = T::from_f64(1.0) / (t31 * t31 * t31);
+        let t68 = t33 * t67;
+        let t69 = slip_edge_right * t39;
+        let t70 = T::from_f64(1.0) / (t38 * t38 * t38);
+        let t71 = thetadot * hc_alpha;
+        let t72 = t10 * t71;
+        let t73 = t71 * cos_theta;
+        let t74 = slip_wall_left * t32;
+        let t75 = t39 * t41;
+        let t76 = t32 * t33;
+        let t77 = t67 * (slip_wall_left * slip_wall_left * slip_wall_left);
+        let t78 = t44.step();
+        let t79 = T::from_f64(1.5) - T::from_f64(1.5) * t45;
+        let sqrt_pen_edge_left = pen_edge_left.sqrt();
+        let t80 = step_delta_edge_left * step_delta_edge_left;
+        let sqrt_pen_wall_right = pen_wall_right.sqrt();
+        let t81 = step_delta_wall_right * step_delta_wall_right;
+        let t82 = sqrt_pen_edge_left * t80;
+        let t83 = t51.step();
+        let t84 = step_delta_edge_left * sqrt_pen_edge_left;
+        let sqrt_pen_edge_right = pen_edge_right.sqrt();
+        let t85 = step_delta_edge_right * step_delta_edge_right;
+        let t86 = step_delta_edge_right * sqrt_pen_edge_right;
+        let t87 = T::from_f64(1.5) - T::from_f64(1.5) * t52;
+        let t88 = sqrt_pen_wall_right
+            * (step_delta_wall_right * t87 - T::from_f64(1.5) * t81);
+        let t89 = sqrt_pen_edge_right * t85;
+        let t90 = t83 * t49;
+        let sqrt_pen_wall_left = pen_wall_left.sqrt();
+        let t91 = step_delta_wall_left * step_delta_wall_left;
+        let t92 = step_delta_wall_left * t79 - T::from_f64(1.5) * t91;
+        let t93 = sqrt_pen_wall_left * t92;
+        let t94 = t64 * t78;
+        let t95 = step_delta_wall_left * sqrt_pen_wall_left;
+        let t96 = t95 * t79;
+        let t97 = step_delta_wall_right * sqrt_pen_wall_right;
+        let t98 = t97 * t87;
+        let t99 = T::from_f64(0.5) - t4;
+        let t100 = thetadot * t28;
+        let t101 = T::from_f64(2.0) * t10;
+        let t102 = t101 - cos_theta;
+        let t103 = cos_theta + t101;
+        let t104 = T::from_f64(2.0) * (cos_theta * t4);
+        let slip_wall_right = zdot - t100;
+        let t105 = v_s.hypot(slip_wall_right);
+        let t106 = T::from_f64(1.0) / t105;
+        let t107 = slip_wall_right * slip_wall_right;
+        let t108 = slip_wall_right * t106;
+        let t109 = mu * t40;
+        let t110 = t108 * t28;
+        let t111 = t110 * mu;
+        let t112 = t106 * t107;
+        let t113 = mu * k_wall;
+        let t114 = t74 * t29;
+        let t115 = t114 * mu;
+        let t116 = t115 * t45;
+        let t117 = T::from_f64(1.0) / (t105 * t105 * t105);
+        let t118 = t39 - t41 * t70;
+        let t119 = t107 * t117;
+        let t120 = t106 - t119;
+        let t121 = t32 - t68;
+        let t122 = t117 * (slip_wall_right * slip_wall_right * slip_wall_right);
+        let t123 = t69 * t109;
+        let t124 = sin_theta * (T::from_f64(1.0) - sin_theta) + t104;
+        let t125 = t71 * t102;
+        let t126 = mu * sin_theta;
+        let t127 = mu * cos_theta;
+        let t128 = t71 * t103;
+        let t129 = slip_wall_right * t117;
+        let t130 = t10 * hc_alpha;
+        let t131 = t10 * thetadot;
+        let t132 = T::from_f64(0.75) - T::from_f64(0.75) * t45;
+        let t133 = hc_alpha * t103 * t78;
+        let t134 = t113 * t19;
+        let t135 = mu * t19;
+        let t136 = k_wall * t20;
+        let t137 = t19 * t19;
+        let t138 = T::from_f64(1.0) - t7;
+        let neg_delta_rate_edge_right = -(xdot * t138) + t9 + thetadot * t37;
+        let t139 = T::from_f64(1.0) - hc_alpha * neg_delta_rate_edge_right;
+        let t140 = t139.max0();
+        let t141 = T::from_f64(1.0) - t140;
+        let t142 = t141 - step_delta_edge_right;
+        let t143 = t62 * t141;
+        let t144 = t139.step();
+        let t145 = T::from_f64(1.5) - T::from_f64(1.5) * t140;
+        let t146 = t62 * t144;
+        let t147 = t86 * t140;
+        let t148 = t146 * neg_delta_rate_edge_right;
+        let t149 = T::from_f64(0.75) * t81;
+        let t150 = t49 * t61;
+        let t151 = t140 * t62;
+        let t152 = t69 * t151;
+        let t153 = t52 * t49;
+        let t154 = t153 * t108;
+        let t155 = t69 * t140;
+        let t156 = t111 * t52;
+        let t157 = t64 * t45;
+        let t158 = t74 * t157;
+        let t159 = t154 + t158;
+        let t160 = t112 * t153 + t76 * t157;
+        let t161 = t64 * (t116 - t43 * t65) - t49 * (t156 - t50 * t63);
+        let t162 = T::from_f64(1.0) / (t57 * t57 * t57);
+        let t163 = t58 - t60 * t162;
+        let t164 = t151 * t118;
+        let t165 = t155 * step_delta_edge_right;
+        let t166 = t97 * t52;
+        let t167 = t166 * t112;
+        let t168 = slip_edge_left * t58;
+        let t169 = t166 * t108;
+        let t170 = t90 * t108;
+        let t171 = -t153 * t120;
+        let t172 = t153 * t28;
+        let t173 = t157 * t121;
+        let t174 = t95 * t45;
+        let t175 = t174 * t76;
+        let t176 = t157 * (T::from_f64(2.0) * t74 - t77);
+        let t177 = t74 * t174;
+        let t178 = t74 * t94;
+        let delta_rate_edge_left = xdot * t8 + t9 + thetadot * t56;
+        let t179 = T::from_f64(1.0) + hc_alpha * delta_rate_edge_left;
+        let t180 = t179.max0();
+        let t181 = t179.step();
+        let t182 = sin_theta * (T::from_f64(1.0) + sin_theta) - t104;
+        let t183 = T::from_f64(1.0) - t180;
+        let t184 = t48 * t183;
+        let t185 = step_delta_edge_left - t183;
+        let t186 = t168 * t180;
+        let t187 = t126 * t186;
+        let t188 = t48 * t180;
+        let t189 = t188 * t168 + t152;
+        let t190 = sin_theta * (t48 * t185 + t62 * t142) + t127 * t189;
+        let t191 = T::from_f64(1.5) - T::from_f64(1.5) * t180;
+        let t192 = t48 * t181;
+        let t193 = t72 * t192;
+        let t194 = t99 * t191 * t84 + t193;
+        let t195 = t72 * t146;
+        let t196 = t145 * t99 * t86 + t195;
+        let t197 = T::from_f64(0.75) * t52 - T::from_f64(0.75);
+        let t198 = t125 * t192;
+        let t199 = t128 * t146;
+        let t200 = t84 * t180;
+        let t201 = T::from_f64(1.5) * t200 * t21 + t198;
+        let t202 = T::from_f64(1.5) * t147 * t22 + t199;
+        let t203 = t168 * t201 + t69 * t202;
+        let t204 = t82 * t21;
+        let t205 = t89 * t22;
+        let t206 = k_edge * t189;
+        let t207 = t188 * t162;
+        let t208 = t207 * slip_edge_left;
+        let t209 = t151 * t70;
+        let t210 = t209 * slip_edge_right;
+        let t211 = k_edge * (t208 + t210);
+        let t212 = t192 * delta_rate_edge_left;
+        let t213 = t90 * delta_rate_wall_right;
+        let t214 = t188 * t163;
+        let t215 = t186 * t84 + t155 * t86;
+        let t216 = sqrt_pen_edge_left
+            * (T::from_f64(1.5) * t80 - t191 * step_delta_edge_left);
+        let t217 = t52 * t124;
+        let t218 = hc_alpha * t83 * t102;
+        let t219 = t49 * (t217 * t120 + t218 * t108);
+        let t220 = t166 * t21;
+        let t221 = t168 * t59;
+        let t222 = t221 * mu;
+        let t223 = t222 * t180;
+        let t224 = sqrt_pen_wall_right * t81;
+        let t225 = t90 * t112;
+        let t226 = t58 * t60;
+        let t227 = t200 * t226 + t147 * t75;
+        let t228 = t226 * t188 + t75 * t151;
+        let t229 = t48 * (t8 * t185 + t187) + t62 * (t155 * t126 - t138 * t142);
+        let t230 = t48 * (t56 * t185 + t223) - t62 * (t109 * t155 - t37 * t142);
+        let t231 = sqrt_pen_edge_right
+            * (T::from_f64(1.5) * t85 - t145 * step_delta_edge_right);
+        let t232 = t198 - t21 * t191 * t84;
+        let t233 = t199 - t22 * t145 * t86;
+        let t234 = T::from_f64(1.5) * t204 + t232;
+        let t235 = T::from_f64(1.5) * t205 + t233;
+        let t236 = -t153 * (T::from_f64(2.0) * t108 - t122);
+        let t237 = t64 * t46;
+        let t238 = -T::from_f64(0.75) * t91;
+        let t239 = t94 * neg_delta_rate_wall_left;
+        let t240 = t169 + t177;
+        let t241 = k_wall * t138;
+        let t242 = t45 * t182;
+        let t243 = t64 * (t242 * t121 + t133 * t74);
+        let t244 = t157 * (slip_wall_left * t67);
+        let t245 = t98 * t138 + T::from_f64(2.0) * t72 * t90;
+        let t246 = sqrt_pen_wall_left * t91;
+        let t247 = t167 + t175;
+        let t248 = t73 * t90 - t98 * sin_theta;
+        let t249 = t125 * t90 - t98 * t21;
+        let t250 = t96 * t138 + T::from_f64(2.0) * t72 * t94;
+        let t251 = t73 * t94 - t96 * sin_theta;
+        let t252 = t128 * t94 - t96 * t22;
+        let t253 = t76 * t94;
+        SMatrix::<
+            T,
+            8,
+            24,
+        >::from_row_slice(
+            &[
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -(-(k_edge * t229) + k_wall * t66 + f1 * sin_theta + f2 * cos_theta)
+                    * t137,
+                T::from_f64(0.0),
+                t19
+                    * (k_edge
+                        * (t126 * (thetadot * (t164 - t214) - T::from_f64(1.5) * t215)
+                            - t216 * t8 - t231 * t138)
+                        - k_wall
+                            * (t138 * (t93 - t88)
+                                + T::from_f64(2.0) * t72 * (t94 - t90))),
+                k_wall * (sin_theta * (t88 + t93) - t73 * (t90 + t94)) * t19,
+                -t19
+                    * (k_edge
+                        * (-(t99
+                            * (T::from_f64(1.5)
+                                * (t8 * t80 + t187 * step_delta_edge_left)
+                                * sqrt_pen_edge_left
+                                + T::from_f64(1.5) * (t138 * t85 + t165 * t126)
+                                    * sqrt_pen_edge_right))
+                            + t126 * (t192 * t168 + t146 * t69) * t72 + t8 * t194
+                            + t138 * t196)
+                        - k_wall
+                            * (sqrt_pen_wall_right
+                                * (step_delta_wall_right * t197 + t149)
+                                + sqrt_pen_wall_left
+                                    * (step_delta_wall_left * t132 + t238))),
+                k_wall
+                    * (t88 * t21 - t22 * t92 * sqrt_pen_wall_left
+                        + t71 * (t94 * t103 - t90 * t102)) * t19,
+                -(k_edge * (t126 * t203 + t8 * t234 + t138 * t235)) * t19,
+                -t23 * t206,
+                t126 * (t211 * v_s) * t19,
+                -t19 * t229,
+                t19 * t66,
+                t23,
+                t24,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -t19
+                    * (k_edge * (t212 * (t8 + t126 * t168) - t148 * (t138 + t126 * t69))
+                        + k_wall * (t213 + t239)),
+                (k_edge * t190 + t113 * t159 - f1 * cos_theta + f2 * sin_theta) * t137,
+                T::from_f64(0.0),
+                -t19
+                    * (mu
+                        * (thetadot
+                            * (cos_theta
+                                * (k_edge * (t214 - t164) + k_wall * (t171 + t173))
+                                - T::from_f64(2.0) * (t130 * (t170 + t178)) * k_wall)
+                            + T::from_f64(1.5) * (cos_theta * t215) * k_edge
+                            + T::from_f64(1.5) * t241 * t240)
+                        + sin_theta * (t216 - t231) * k_edge),
+                -t134
+                    * (thetadot
+                        * (sin_theta * (t171 - t173)
+                            + cos_theta * (t170 - t178) * hc_alpha)
+                        + T::from_f64(1.5) * (t169 - t177) * sin_theta),
+                t19
+                    * (k_edge
+                        * (sin_theta
+                            * (T::from_f64(1.5) * (t82 - t89) * t99 - t194 + t196)
+                            + t127
+                                * (-(t168 * (t193 - T::from_f64(1.5) * t200 * t99))
+                                    - t69 * (t195 - T::from_f64(1.5) * t147 * t99)))
+                        + T::from_f64(0.75) * t113 * t240),
+                -t134
+                    * (thetadot * (t219 + t243)
+                        + T::from_f64(1.5) * (t220 * t108 + t177 * t22)),
+                -(k_edge
+                    * (sin_theta * (T::from_f64(1.5) * (t204 - t205) + t232 - t233)
+                        + t127 * t203)) * t19,
+                -t19 * (t206 * cos_theta + k_wall * t159),
+                t135 * (v_s * (t211 * cos_theta + k_wall * (t129 * t153 + t244))),
+                -t19 * t190,
+                -t135 * t159,
+                t24,
+                -t23,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -t19
+                    * (k_edge
+                        * (sin_theta * (t212 + t148) + t127 * (t212 * t168 - t148 * t69))
+                        + t113 * (t213 * t108 - t239 * t74)),
+                T::from_f64(0.0),
+                (-m_2 + k_edge * t230 + k_wall * t161) * (t20 * t20),
+                t20
+                    * (mu
+                        * (thetadot
+                            * (k_wall
+                                * (cos_theta * (-(t172 * t120) - t173 * t29)
+                                    - T::from_f64(2.0) * t130 * (t110 * t90 - t114 * t94))
+                                + k_edge * (-(t59 * t163 * t188) - t40 * t118 * t151))
+                            + k_edge
+                                * (t155 * (t62 + T::from_f64(1.5) * t86 * t40)
+                                    - t186 * (t48 + T::from_f64(1.5) * t84 * t59))
+                            + k_wall
+                                * (cos_theta * (t154 - t158)
+                                    + T::from_f64(1.5) * (t166 * t110 - t174 * t114) * t138))
+                        + k_wall
+                            * (t10
+                                * (T::from_f64(2.0) * t63 * t49
+                                    + T::from_f64(2.0) * t65 * t64)
+                                - t50 * (T::from_f64(1.5) * t224 * t138 - t245)
+                                + t43 * (T::from_f64(1.5) * t246 * t138 - t250))
+                        + k_edge * (t231 * t37 - t216 * t56)),
+                t136
+                    * (sin_theta
+                        * (mu
+                            * (t52
+                                * (t49 * (t100 * t119 - t106 * (t100 - slip_wall_right))
+                                    + T::from_f64(1.5) * t110 * t97)
+                                + t45
+                                    * (T::from_f64(1.5) * t114 * t95
+                                        - t64 * (t30 * t68 - t32 * (slip_wall_left + t30))))
+                            - T::from_f64(1.5) * (t224 * t50 + t246 * t43))
+                        + cos_theta
+                            * (t49 * (-step_delta_wall_right + t61 + t111 * t71 * t83)
+                                + t64 * (step_delta_wall_left - t46 + t115 * t71 * t78))
+                        - t50 * t248 - t43 * t251),
+                t20
+                    * (k_edge
+                        * (-(t10
+                            * (t48 * (step_delta_edge_left - t183 + t222 * t71 * t181)
+                                - t62
+                                    * (-step_delta_edge_right + t141 + t123 * t71 * t144)))
+                            + t99
+                                * (T::from_f64(1.5)
+                                    * (t56 * t80 + t223 * step_delta_edge_left)
+                                    * sqrt_pen_edge_left
+                                    - T::from_f64(1.5) * (t37 * t85 + t165 * t109)
+                                        * sqrt_pen_edge_right) - t56 * t194 + t37 * t196)
+                        + k_wall
+                            * (sqrt_pen_wall_left
+                                * (t43 * (t238 + t132 * step_delta_wall_left)
+                                    + T::from_f64(0.75) * t116 * step_delta_wall_left)
+                                - sqrt_pen_wall_right
+                                    * (T::from_f64(0.75) * t156 * step_delta_wall_right
+                                        - t50 * (t149 + t197 * step_delta_wall_right)))),
+                -t136
+                    * (mu
+                        * (thetadot * (t243 * t29 - t219 * t28)
+                            - t52 * (T::from_f64(1.5) * t97 * t28 * t21 - t49 * t124)
+                                * t108
+                            + t45 * (t64 * t182 + T::from_f64(1.5) * t95 * t29 * t22)
+                                * t74) + t50 * (T::from_f64(1.5) * t224 * t21 + t249)
+                        + t102 * t63 * t49 - t43 * (T::from_f64(1.5) * t246 * t22 + t252)
+                        + t103 * t65 * t64),
+                -(k_edge
+                    * (mu * (t221 * t201 - t40 * t202 * t69) + t56 * t234
+                        + t102 * t185 * t48 - t37 * t235 - t103 * t142 * t62)) * t20,
+                -t20
+                    * (k_edge * (t221 * t188 - t152 * t40)
+                        - k_wall * (t110 * t153 - t114 * t157)),
+                v_s
+                    * (k_edge * (t208 * t59 - t210 * t40)
+                        - k_wall * (t129 * t172 - t244 * t29)) * mu * t20,
+                -t20 * t230,
+                -t20 * t161,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t20,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -t20
+                    * (k_edge * (t212 * (t56 + t222) + t148 * (t37 + t123))
+                        + k_wall * (-(t213 * (t111 - t50)) - t239 * (t115 - t43))),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                zdot * cos_theta + xdot * sin_theta,
+                xdot * cos_theta - t9,
+                thetadot,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                mu
+                    * (thetadot
+                        * (k_wall
+                            * (cos_theta * (t236 + t176)
+                                - T::from_f64(2.0) * t130 * (t225 + t253))
+                            + k_edge
+                                * (t188
+                                    * (T::from_f64(2.0) * t168
+                                        - t162 * (slip_edge_left * slip_edge_left * slip_edge_left))
+                                    - t151
+                                        * (T::from_f64(2.0) * t69
+                                            - t70
+                                                * (slip_edge_right * slip_edge_right * slip_edge_right))))
+                        + T::from_f64(1.5) * t227 * k_edge
+                        + T::from_f64(1.5) * t241 * t247)
+                    + k_wall
+                        * (T::from_f64(2.0) * t131 * (t150 + t237)
+                            - delta_rate_wall_right * t245
+                            + neg_delta_rate_wall_left * t250)
+                    + k_edge
+                        * (t86 * neg_delta_rate_edge_right * t145
+                            - t84 * delta_rate_edge_left * t191),
+                k_wall
+                    * (mu
+                        * (sin_theta
+                            * (thetadot * (t236 - t176)
+                                + T::from_f64(1.5) * (t167 - t175)) - t73 * (t253 - t225))
+                        + cos_theta * (t237 - t150) * thetadot
+                        + delta_rate_wall_right * t248
+                        + neg_delta_rate_wall_left * t251),
+                -(k_edge
+                    * (t131
+                        * (-(hc_alpha * (t226 * t192 + t75 * t146) * mu) + t184 + t143)
+                        + T::from_f64(1.5) * (t99 * t227) * mu
+                        - delta_rate_edge_left * t194
+                        + neg_delta_rate_edge_right * t196))
+                    - k_wall
+                        * (T::from_f64(0.75) * t247 * mu
+                            + t97 * delta_rate_wall_right * t197
+                            + t95 * neg_delta_rate_wall_left * t132),
+                -k_wall
+                    * (mu
+                        * (thetadot
+                            * (t49
+                                * (t122 * t217
+                                    - t106
+                                        * (t218 * t107 + T::from_f64(2.0) * t217 * slip_wall_right))
+                                + t64
+                                    * (t77 * t242
+                                        - t32
+                                            * (t133 * t33 + T::from_f64(2.0) * t242 * slip_wall_left)))
+                            - T::from_f64(1.5) * (t220 * t112 + t175 * t22))
+                        + thetadot * (t150 * t102 + t237 * t103)
+                        - delta_rate_wall_right * t249
+                        + neg_delta_rate_wall_left * t252),
+                -k_edge
+                    * (-(mu * (t226 * t201 + t75 * t202))
+                        + thetadot * (t184 * t102 + t143 * t103)
+                        - delta_rate_edge_left * t232
+                        + neg_delta_rate_edge_right * t233),
+                k_edge * t228 + k_wall * t160,
+                -(v_s
+                    * (k_edge * (t207 * t60 + t209 * t41)
+                        + k_wall * (t119 * t153 + t68 * t157)) * mu),
+                mu * t228 - t184 * delta_rate_edge_left
+                    + t143 * neg_delta_rate_edge_right,
+                mu * t160 - t150 * delta_rate_wall_right
+                    + t237 * neg_delta_rate_wall_left,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                mu
+                    * (k_edge * (t212 * t226 - t75 * t148)
+                        - k_wall * (t239 * t76 - t213 * t112))
+                    + k_edge
+                        * (t192 * (delta_rate_edge_left * delta_rate_edge_left)
+                            + t146
+                                * (neg_delta_rate_edge_right * neg_delta_rate_edge_right))
+                    + k_wall
+                        * (t90 * (delta_rate_wall_right * delta_rate_wall_right)
+                            + t94
+                                * (neg_delta_rate_wall_left * neg_delta_rate_wall_left)),
+            ],
+        )
     }
 }

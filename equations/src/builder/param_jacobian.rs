@@ -128,8 +128,9 @@ impl<'g> ModelBuilder<'g> {
         )
     }
 
-    /// The `<function>_p` of every marked function of `fns`, each placed
-    /// right after its function.
+    /// `fns` with the parameter Jacobians last: those of the dynamics
+    /// (`rhs_p`, `parameter_terms`), then `<function>_p` of every marked
+    /// function.
     pub(super) fn with_parameter_jacobians(
         &self,
         fns: Vec<FnSpec>,
@@ -145,16 +146,22 @@ impl<'g> ModelBuilder<'g> {
                 "no declared function of this name",
             ));
         }
-        let mut out = Vec::with_capacity(fns.len());
-        for f in fns {
-            let mark = self.param_marks.iter().find(|m| m.function == f.name);
-            let derived = match mark {
-                Some(m) if self.parameter_jacobians => Some(self.derived(&f, m)?),
-                _ => None,
-            };
-            out.push(f);
-            out.extend(derived);
+        if !self.parameter_jacobians {
+            return Ok(fns);
         }
+        // After every other function, so that those are emitted exactly as
+        // without the parameter Jacobians (lowering a function adds nodes to
+        // the arena, which would reorder the intermediates of the next).
+        let dynamics = ["rhs_p", "parameter_terms"];
+        let (mut out, mut late): (Vec<FnSpec>, Vec<FnSpec>) = fns
+            .into_iter()
+            .partition(|f| !dynamics.contains(&f.name.as_str()));
+        for m in &self.param_marks {
+            if let Some(f) = out.iter().find(|f| f.name == m.function) {
+                late.push(self.derived(f, m)?);
+            }
+        }
+        out.extend(late);
         Ok(out)
     }
 
