@@ -15,7 +15,9 @@
 //! (`pegdyn_equations::models::declare_all` calls `Generator::model` for
 //! each), the same API a downstream crate's build script uses
 //! (docs/own-model.md), and turns on the extras only pegdyn needs
-//! (`Options::registry`, `function_list`, `test_harness`).
+//! (`Options::registry`, `function_list`, `test_harness`, and the parameter
+//! Jacobians of the models whose sensitivities it integrates,
+//! `Options::parameter_jacobians`).
 //!
 //! Environment: `PEGDYN_NAIVE_FORMS=1` generates without the stable
 //! numerical rewrites of the simplifier (`Options::from_env`) (for `pegdyn accuracy`'s "before"
@@ -42,6 +44,12 @@ fn main() {
         registry: true,
         function_list: true,
         test_harness: true,
+        // The parameter Jacobians `∂f/∂p` only of the models whose
+        // sensitivities pegdyn integrates (src/sensitivity).
+        parameter_jacobians: models::PARAMETER_JACOBIANS
+            .iter()
+            .map(|m| (*m).to_owned())
+            .collect(),
         ..Options::from_env()
     };
     let mut generator = Generator::new(options);

@@ -35,6 +35,7 @@ macro_rules! for_each_function {
 #[rustfmt::skip]
 macro_rules! hand_form {
     ($cb:ident!($($ctx:tt)*), rigid_peg::geometry $a:tt) => { $cb!($($ctx)*, rigid_peg::geometry $a) };
+    ($cb:ident!($($ctx:tt)*), rigid_peg::forward_p $a:tt) => { $cb!($($ctx)*, rigid_peg::forward_p $a) };
     ($cb:ident!($($ctx:tt)*), pendulum::$f:ident $a:tt) => { $cb!($($ctx)*, pendulum::$f $a => hand::pendulum::$f) };
     ($cb:ident!($($ctx:tt)*), double_pendulum::$f:ident $a:tt) => { $cb!($($ctx)*, double_pendulum::$f $a => hand::double_pendulum::$f) };
     ($cb:ident!($($ctx:tt)*), cart_pole::$f:ident $a:tt) => { $cb!($($ctx)*, cart_pole::$f $a => hand::cart_pole::$f) };

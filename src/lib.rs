@@ -19,5 +19,6 @@ pub mod replay;
 pub mod rigid_peg;
 pub mod scalar;
 pub mod scene;
+pub mod sensitivity;
 pub mod system;
 pub mod textbook;

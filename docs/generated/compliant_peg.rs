@@ -1150,4 +1150,709 @@ pub mod compliant_peg {
             depth: z + l_c * cos_theta,
         }
     }
+    /// Exact parameter Jacobian of [`rhs`]: `dydot_dp` with entry (i, k) = ∂ydotᵢ/∂p_k (columns in `P_NAMES` order).
+    ///
+    /// # Inputs
+    /// - `y` = (`x`, `z`, `theta`, `xdot`, `zdot`, `thetadot`, `work`, `dissipation`)
+    /// - `p` = (`m`, `J`, `r`, `l_c`, `D`, `rho_p`, `rho_h`, `mu`, `v_s`, `k_edge`, `k_wall`, `f1`, `f2`, `M`, `e_star`, `edge_sum`, `edge_ma`, `edge_mb`, `edge_dstar`, `wall_sum`, `wall_ma`, `wall_mb`, `wall_dstar`, `hc_alpha`)
+    ///
+    /// # Outputs
+    /// - `dydot_dp`: 8×24 matrix
+    ///
+    /// # Cost
+    /// 364 add/sub, 728 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 280 `let`s.
+    #[inline]
+    pub fn rhs_p<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 24> {
+        let x = y[0];
+        let z = y[1];
+        let theta = y[2];
+        let xdot = y[3];
+        let zdot = y[4];
+        let thetadot = y[5];
+        let m = p[0];
+        let j = p[1];
+        let r = p[2];
+        let l_c = p[3];
+        let d = p[4];
+        let rho_p = p[5];
+        let rho_h = p[6];
+        let mu = p[7];
+        let v_s = p[8];
+        let k_edge = p[9];
+        let k_wall = p[10];
+        let f1 = p[11];
+        let f2 = p[12];
+        let m_2 = p[13];
+        let hc_alpha = p[23];
+        let (sin_theta, cos_theta) = theta.sin_cos();
+        let t0 = T::from_f64(0.5) * d;
+        let t1 = T::from_f64(0.5) * theta;
+        let (t2, t3) = t1.sin_cos();
+        let t4 = t2 * t2;
+        let t5 = r * sin_theta;
+        let t6 = r * cos_theta;
+        let t7 = T::from_f64(2.0) * t4;
+        let t8 = t7 - T::from_f64(1.0);
+        let t9 = zdot * sin_theta;
+        let t10 = t2 * t3;
+        let t11 = l_c - rho_p;
+        let t12 = r - rho_p;
+        let t13 = sin_theta * t11;
+        let t14 = -T::from_f64(2.0) * t4 * t12;
+        let t15 = rho_p * sin_theta;
+        let t16 = cos_theta * (r - T::from_f64(2.0) * rho_p * t4);
+        let t17 = cos_theta * t11;
+        let t18 = rho_h + t0 - x;
+        let t19 = T::from_f64(1.0) / m;
+        let t20 = T::from_f64(1.0) / j;
+        let t21 = t7 - sin_theta;
+        let t22 = sin_theta + t7;
+        let t23 = sin_theta * t19;
+        let t24 = cos_theta * t19;
+        let t25 = z - rho_h;
+        let t26 = sin_theta * t25;
+        let t27 = cos_theta * t25;
+        let t28 = sin_theta * (l_c - rho_p + t15) + t16;
+        let t29 = sin_theta * (-l_c + rho_p + t15) + t16;
+        let t30 = thetadot * t29;
+        let slip_wall_left = zdot + t30;
+        let t31 = v_s.hypot(slip_wall_left);
+        let t32 = T::from_f64(1.0) / t31;
+        let t33 = slip_wall_left * slip_wall_left;
+        let t34 = sin_theta * t18 - t27;
+        let t35 = t5 - cos_theta * t34;
+        let t36 = t6 + sin_theta * t34;
+        let slip_edge_right = sin_theta * (xdot - thetadot * t35)
+            + cos_theta * (zdot - thetadot * t36);
+        let t37 = t27 - T::from_f64(2.0) * t10 * t18;
+        let t38 = v_s.hypot(slip_edge_right);
+        let t39 = T::from_f64(1.0) / t38;
+        let t40 = sin_theta * t35 + cos_theta * t36;
+        let t41 = slip_edge_right * slip_edge_right;
+        let t42 = T::from_f64(2.0) * (t10 * t12);
+        let t43 = t17 + t42;
+        let neg_delta_rate_wall_left = xdot + thetadot * t43;
+        let t44 = T::from_f64(1.0) - hc_alpha * neg_delta_rate_wall_left;
+        let t45 = t44.max0();
+        let t46 = T::from_f64(1.0) - t45;
+        let t47 = -rho_h - t0 - x;
+        let delta_edge_left = r - t0 - x + t26 - T::from_f64(2.0) * t47 * t4;
+        let pen_edge_left = delta_edge_left.max0();
+        let t48 = pen_edge_left * pen_edge_left.sqrt();
+        let step_delta_edge_left = delta_edge_left.step();
+        let delta_wall_right = r - t0 + x + t13 + t14;
+        let pen_wall_right = delta_wall_right.max0();
+        let t49 = pen_wall_right * pen_wall_right.sqrt();
+        let step_delta_wall_right = delta_wall_right.step();
+        let t50 = t17 - t42;
+        let delta_rate_wall_right = xdot + thetadot * t50;
+        let t51 = T::from_f64(1.0) + hc_alpha * delta_rate_wall_right;
+        let t52 = t51.max0();
+        let t53 = sin_theta * t47 - t27;
+        let t54 = cos_theta * t53 + t5;
+        let t55 = t6 - sin_theta * t53;
+        let slip_edge_left = sin_theta * (xdot + thetadot * t54)
+            + cos_theta * (zdot + thetadot * t55);
+        let t56 = t27 - T::from_f64(2.0) * t10 * t47;
+        let t57 = v_s.hypot(slip_edge_left);
+        let t58 = T::from_f64(1.0) / t57;
+        let t59 = sin_theta * t54 + cos_theta * t55;
+        let t60 = slip_edge_left * slip_edge_left;
+        let t61 = T::from_f64(1.0) - t52;
+        let delta_edge_right = r - t0 + x - t26 + T::from_f64(2.0) * t4 * t18;
+        let pen_edge_right = delta_edge_right.max0();
+        let t62 = pen_edge_right * pen_edge_right.sqrt();
+        let step_delta_edge_right = delta_edge_right.step();
+        let t63 = step_delta_wall_right - t61;
+        let delta_wall_left = r - t0 - x - t13 + t14;
+        let pen_wall_left = delta_wall_left.max0();
+        let t64 = pen_wall_left * pen_wall_left.sqrt();
+        let step_delta_wall_left = delta_wall_left.step();
+        let t65 = step_delta_wall_left - t46;
+        let t66 = t64 * (t45 - T::from_f64(1.0) + step_delta_wall_left)
+            - t49 * (-T::from_f64(1.0) + step_delta_wall_right + t52);
+        let t67 = T::from_f64(1.0) / (t31 * t31 * t31);
+        let t68 = t33 * t67;
+        let t69 = slip_edge_right * t39;
+        let t70 = T::from_f64(1.0) / (t38 * t38 * t38);
+        let t71 = thetadot * hc_alpha;
+        let t72 = t10 * t71;
+        let t73 = t71 * cos_theta;
+        let t74 = slip_wall_left * t32;
+        let t75 = t39 * t41;
+        let t76 = t32 * t33;
+        let t77 = t67 * (slip_wall_left * slip_wall_left * slip_wall_left);
+        let t78 = t44.step();
+        let t79 = T::from_f64(1.5) - T::from_f64(1.5) * t45;
+        let sqrt_pen_edge_left = pen_edge_left.sqrt();
+        let t80 = step_delta_edge_left * step_delta_edge_left;
+        let sqrt_pen_wall_right = pen_wall_right.sqrt();
+        let t81 = step_delta_wall_right * step_delta_wall_right;
+        let t82 = sqrt_pen_edge_left * t80;
+        let t83 = t51.step();
+        let t84 = step_delta_edge_left * sqrt_pen_edge_left;
+        let sqrt_pen_edge_right = pen_edge_right.sqrt();
+        let t85 = step_delta_edge_right * step_delta_edge_right;
+        let t86 = step_delta_edge_right * sqrt_pen_edge_right;
+        let t87 = T::from_f64(1.5) - T::from_f64(1.5) * t52;
+        let t88 = sqrt_pen_wall_right
+            * (step_delta_wall_right * t87 - T::from_f64(1.5) * t81);
+        let t89 = sqrt_pen_edge_right * t85;
+        let t90 = t83 * t49;
+        let sqrt_pen_wall_left = pen_wall_left.sqrt();
+        let t91 = step_delta_wall_left * step_delta_wall_left;
+        let t92 = step_delta_wall_left * t79 - T::from_f64(1.5) * t91;
+        let t93 = sqrt_pen_wall_left * t92;
+        let t94 = t64 * t78;
+        let t95 = step_delta_wall_left * sqrt_pen_wall_left;
+        let t96 = t95 * t79;
+        let t97 = step_delta_wall_right * sqrt_pen_wall_right;
+        let t98 = t97 * t87;
+        let t99 = T::from_f64(0.5) - t4;
+        let t100 = thetadot * t28;
+        let t101 = T::from_f64(2.0) * t10;
+        let t102 = t101 - cos_theta;
+        let t103 = cos_theta + t101;
+        let t104 = T::from_f64(2.0) * (cos_theta * t4);
+        let slip_wall_right = zdot - t100;
+        let t105 = v_s.hypot(slip_wall_right);
+        let t106 = T::from_f64(1.0) / t105;
+        let t107 = slip_wall_right * slip_wall_right;
+        let t108 = slip_wall_right * t106;
+        let t109 = mu * t40;
+        let t110 = t108 * t28;
+        let t111 = t110 * mu;
+        let t112 = t106 * t107;
+        let t113 = mu * k_wall;
+        let t114 = t74 * t29;
+        let t115 = t114 * mu;
+        let t116 = t115 * t45;
+        let t117 = T::from_f64(1.0) / (t105 * t105 * t105);
+        let t118 = t39 - t41 * t70;
+        let t119 = t107 * t117;
+        let t120 = t106 - t119;
+        let t121 = t32 - t68;
+        let t122 = t117 * (slip_wall_right * slip_wall_right * slip_wall_right);
+        let t123 = t69 * t109;
+        let t124 = sin_theta * (T::from_f64(1.0) - sin_theta) + t104;
+        let t125 = t71 * t102;
+        let t126 = mu * sin_theta;
+        let t127 = mu * cos_theta;
+        let t128 = t71 * t103;
+        let t129 = slip_wall_right * t117;
+        let t130 = t10 * hc_alpha;
+        let t131 = t10 * thetadot;
+        let t132 = T::from_f64(0.75) - T::from_f64(0.75) * t45;
+        let t133 = hc_alpha * t103 * t78;
+        let t134 = t113 * t19;
+        let t135 = mu * t19;
+        let t136 = k_wall * t20;
+        let t137 = t19 * t19;
+        let t138 = T::from_f64(1.0) - t7;
+        let neg_delta_rate_edge_right = -(xdot * t138) + t9 + thetadot * t37;
+        let t139 = T::from_f64(1.0) - hc_alpha * neg_delta_rate_edge_right;
+        let t140 = t139.max0();
+        let t141 = T::from_f64(1.0) - t140;
+        let t142 = t141 - step_delta_edge_right;
+        let t143 = t62 * t141;
+        let t144 = t139.step();
+        let t145 = T::from_f64(1.5) - T::from_f64(1.5) * t140;
+        let t146 = t62 * t144;
+        let t147 = t86 * t140;
+        let t148 = t146 * neg_delta_rate_edge_right;
+        let t149 = T::from_f64(0.75) * t81;
+        let t150 = t49 * t61;
+        let t151 = t140 * t62;
+        let t152 = t69 * t151;
+        let t153 = t52 * t49;
+        let t154 = t153 * t108;
+        let t155 = t69 * t140;
+        let t156 = t111 * t52;
+        let t157 = t64 * t45;
+        let t158 = t74 * t157;
+        let t159 = t154 + t158;
+        let t160 = t112 * t153 + t76 * t157;
+        let t161 = t64 * (t116 - t43 * t65) - t49 * (t156 - t50 * t63);
+        let t162 = T::from_f64(1.0) / (t57 * t57 * t57);
+        let t163 = t58 - t60 * t162;
+        let t164 = t151 * t118;
+        let t165 = t155 * step_delta_edge_right;
+        let t166 = t97 * t52;
+        let t167 = t166 * t112;
+        let t168 = slip_edge_left * t58;
+        let t169 = t166 * t108;
+        let t170 = t90 * t108;
+        let t171 = -t153 * t120;
+        let t172 = t153 * t28;
+        let t173 = t157 * t121;
+        let t174 = t95 * t45;
+        let t175 = t174 * t76;
+        let t176 = t157 * (T::from_f64(2.0) * t74 - t77);
+        let t177 = t74 * t174;
+        let t178 = t74 * t94;
+        let delta_rate_edge_left = xdot * t8 + t9 + thetadot * t56;
+        let t179 = T::from_f64(1.0) + hc_alpha * delta_rate_edge_left;
+        let t180 = t179.max0();
+        let t181 = t179.step();
+        let t182 = sin_theta * (T::from_f64(1.0) + sin_theta) - t104;
+        let t183 = T::from_f64(1.0) - t180;
+        let t184 = t48 * t183;
+        let t185 = step_delta_edge_left - t183;
+        let t186 = t168 * t180;
+        let t187 = t126 * t186;
+        let t188 = t48 * t180;
+        let t189 = t188 * t168 + t152;
+        let t190 = sin_theta * (t48 * t185 + t62 * t142) + t127 * t189;
+        let t191 = T::from_f64(1.5) - T::from_f64(1.5) * t180;
+        let t192 = t48 * t181;
+        let t193 = t72 * t192;
+        let t194 = t99 * t191 * t84 + t193;
+        let t195 = t72 * t146;
+        let t196 = t145 * t99 * t86 + t195;
+        let t197 = T::from_f64(0.75) * t52 - T::from_f64(0.75);
+        let t198 = t125 * t192;
+        let t199 = t128 * t146;
+        let t200 = t84 * t180;
+        let t201 = T::from_f64(1.5) * t200 * t21 + t198;
+        let t202 = T::from_f64(1.5) * t147 * t22 + t199;
+        let t203 = t168 * t201 + t69 * t202;
+        let t204 = t82 * t21;
+        let t205 = t89 * t22;
+        let t206 = k_edge * t189;
+        let t207 = t188 * t162;
+        let t208 = t207 * slip_edge_left;
+        let t209 = t151 * t70;
+        let t210 = t209 * slip_edge_right;
+        let t211 = k_edge * (t208 + t210);
+        let t212 = t192 * delta_rate_edge_left;
+        let t213 = t90 * delta_rate_wall_right;
+        let t214 = t188 * t163;
+        let t215 = t186 * t84 + t155 * t86;
+        let t216 = sqrt_pen_edge_left
+            * (T::from_f64(1.5) * t80 - t191 * step_delta_edge_left);
+        let t217 = t52 * t124;
+        let t218 = hc_alpha * t83 * t102;
+        let t219 = t49 * (t217 * t120 + t218 * t108);
+        let t220 = t166 * t21;
+        let t221 = t168 * t59;
+        let t222 = t221 * mu;
+        let t223 = t222 * t180;
+        let t224 = sqrt_pen_wall_right * t81;
+        let t225 = t90 * t112;
+        let t226 = t58 * t60;
+        let t227 = t200 * t226 + t147 * t75;
+        let t228 = t226 * t188 + t75 * t151;
+        let t229 = t48 * (t8 * t185 + t187) + t62 * (t155 * t126 - t138 * t142);
+        let t230 = t48 * (t56 * t185 + t223) - t62 * (t109 * t155 - t37 * t142);
+        let t231 = sqrt_pen_edge_right
+            * (T::from_f64(1.5) * t85 - t145 * step_delta_edge_right);
+        let t232 = t198 - t21 * t191 * t84;
+        let t233 = t199 - t22 * t145 * t86;
+        let t234 = T::from_f64(1.5) * t204 + t232;
+        let t235 = T::from_f64(1.5) * t205 + t233;
+        let t236 = -t153 * (T::from_f64(2.0) * t108 - t122);
+        let t237 = t64 * t46;
+        let t238 = -T::from_f64(0.75) * t91;
+        let t239 = t94 * neg_delta_rate_wall_left;
+        let t240 = t169 + t177;
+        let t241 = k_wall * t138;
+        let t242 = t45 * t182;
+        let t243 = t64 * (t242 * t121 + t133 * t74);
+        let t244 = t157 * (slip_wall_left * t67);
+        let t245 = t98 * t138 + T::from_f64(2.0) * t72 * t90;
+        let t246 = sqrt_pen_wall_left * t91;
+        let t247 = t167 + t175;
+        let t248 = t73 * t90 - t98 * sin_theta;
+        let t249 = t125 * t90 - t98 * t21;
+        let t250 = t96 * t138 + T::from_f64(2.0) * t72 * t94;
+        let t251 = t73 * t94 - t96 * sin_theta;
+        let t252 = t128 * t94 - t96 * t22;
+        let t253 = t76 * t94;
+        SMatrix::<
+            T,
+            8,
+            24,
+        >::from_row_slice(
+            &[
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -(-(k_edge * t229) + k_wall * t66 + f1 * sin_theta + f2 * cos_theta)
+                    * t137,
+                T::from_f64(0.0),
+                t19
+                    * (k_edge
+                        * (t126 * (thetadot * (t164 - t214) - T::from_f64(1.5) * t215)
+                            - t216 * t8 - t231 * t138)
+                        - k_wall
+                            * (t138 * (t93 - t88)
+                                + T::from_f64(2.0) * t72 * (t94 - t90))),
+                k_wall * (sin_theta * (t88 + t93) - t73 * (t90 + t94)) * t19,
+                -t19
+                    * (k_edge
+                        * (-(t99
+                            * (T::from_f64(1.5)
+                                * (t8 * t80 + t187 * step_delta_edge_left)
+                                * sqrt_pen_edge_left
+                                + T::from_f64(1.5) * (t138 * t85 + t165 * t126)
+                                    * sqrt_pen_edge_right))
+                            + t126 * (t192 * t168 + t146 * t69) * t72 + t8 * t194
+                            + t138 * t196)
+                        - k_wall
+                            * (sqrt_pen_wall_right
+                                * (step_delta_wall_right * t197 + t149)
+                                + sqrt_pen_wall_left
+                                    * (step_delta_wall_left * t132 + t238))),
+                k_wall
+                    * (t88 * t21 - t22 * t92 * sqrt_pen_wall_left
+                        + t71 * (t94 * t103 - t90 * t102)) * t19,
+                -(k_edge * (t126 * t203 + t8 * t234 + t138 * t235)) * t19,
+                -t23 * t206,
+                t126 * (t211 * v_s) * t19,
+                -t19 * t229,
+                t19 * t66,
+                t23,
+                t24,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -t19
+                    * (k_edge * (t212 * (t8 + t126 * t168) - t148 * (t138 + t126 * t69))
+                        + k_wall * (t213 + t239)),
+                (k_edge * t190 + t113 * t159 - f1 * cos_theta + f2 * sin_theta) * t137,
+                T::from_f64(0.0),
+                -t19
+                    * (mu
+                        * (thetadot
+                            * (cos_theta
+                                * (k_edge * (t214 - t164) + k_wall * (t171 + t173))
+                                - T::from_f64(2.0) * (t130 * (t170 + t178)) * k_wall)
+                            + T::from_f64(1.5) * (cos_theta * t215) * k_edge
+                            + T::from_f64(1.5) * t241 * t240)
+                        + sin_theta * (t216 - t231) * k_edge),
+                -t134
+                    * (thetadot
+                        * (sin_theta * (t171 - t173)
+                            + cos_theta * (t170 - t178) * hc_alpha)
+                        + T::from_f64(1.5) * (t169 - t177) * sin_theta),
+                t19
+                    * (k_edge
+                        * (sin_theta
+                            * (T::from_f64(1.5) * (t82 - t89) * t99 - t194 + t196)
+                            + t127
+                                * (-(t168 * (t193 - T::from_f64(1.5) * t200 * t99))
+                                    - t69 * (t195 - T::from_f64(1.5) * t147 * t99)))
+                        + T::from_f64(0.75) * t113 * t240),
+                -t134
+                    * (thetadot * (t219 + t243)
+                        + T::from_f64(1.5) * (t220 * t108 + t177 * t22)),
+                -(k_edge
+                    * (sin_theta * (T::from_f64(1.5) * (t204 - t205) + t232 - t233)
+                        + t127 * t203)) * t19,
+                -t19 * (t206 * cos_theta + k_wall * t159),
+                t135 * (v_s * (t211 * cos_theta + k_wall * (t129 * t153 + t244))),
+                -t19 * t190,
+                -t135 * t159,
+                t24,
+                -t23,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -t19
+                    * (k_edge
+                        * (sin_theta * (t212 + t148) + t127 * (t212 * t168 - t148 * t69))
+                        + t113 * (t213 * t108 - t239 * t74)),
+                T::from_f64(0.0),
+                (-m_2 + k_edge * t230 + k_wall * t161) * (t20 * t20),
+                t20
+                    * (mu
+                        * (thetadot
+                            * (k_wall
+                                * (cos_theta * (-(t172 * t120) - t173 * t29)
+                                    - T::from_f64(2.0) * t130 * (t110 * t90 - t114 * t94))
+                                + k_edge * (-(t59 * t163 * t188) - t40 * t118 * t151))
+                            + k_edge
+                                * (t155 * (t62 + T::from_f64(1.5) * t86 * t40)
+                                    - t186 * (t48 + T::from_f64(1.5) * t84 * t59))
+                            + k_wall
+                                * (cos_theta * (t154 - t158)
+                                    + T::from_f64(1.5) * (t166 * t110 - t174 * t114) * t138))
+                        + k_wall
+                            * (t10
+                                * (T::from_f64(2.0) * t63 * t49
+                                    + T::from_f64(2.0) * t65 * t64)
+                                - t50 * (T::from_f64(1.5) * t224 * t138 - t245)
+                                + t43 * (T::from_f64(1.5) * t246 * t138 - t250))
+                        + k_edge * (t231 * t37 - t216 * t56)),
+                t136
+                    * (sin_theta
+                        * (mu
+                            * (t52
+                                * (t49 * (t100 * t119 - t106 * (t100 - slip_wall_right))
+                                    + T::from_f64(1.5) * t110 * t97)
+                                + t45
+                                    * (T::from_f64(1.5) * t114 * t95
+                                        - t64 * (t30 * t68 - t32 * (slip_wall_left + t30))))
+                            - T::from_f64(1.5) * (t224 * t50 + t246 * t43))
+                        + cos_theta
+                            * (t49 * (-step_delta_wall_right + t61 + t111 * t71 * t83)
+                                + t64 * (step_delta_wall_left - t46 + t115 * t71 * t78))
+                        - t50 * t248 - t43 * t251),
+                t20
+                    * (k_edge
+                        * (-(t10
+                            * (t48 * (step_delta_edge_left - t183 + t222 * t71 * t181)
+                                - t62
+                                    * (-step_delta_edge_right + t141 + t123 * t71 * t144)))
+                            + t99
+                                * (T::from_f64(1.5)
+                                    * (t56 * t80 + t223 * step_delta_edge_left)
+                                    * sqrt_pen_edge_left
+                                    - T::from_f64(1.5) * (t37 * t85 + t165 * t109)
+                                        * sqrt_pen_edge_right) - t56 * t194 + t37 * t196)
+                        + k_wall
+                            * (sqrt_pen_wall_left
+                                * (t43 * (t238 + t132 * step_delta_wall_left)
+                                    + T::from_f64(0.75) * t116 * step_delta_wall_left)
+                                - sqrt_pen_wall_right
+                                    * (T::from_f64(0.75) * t156 * step_delta_wall_right
+                                        - t50 * (t149 + t197 * step_delta_wall_right)))),
+                -t136
+                    * (mu
+                        * (thetadot * (t243 * t29 - t219 * t28)
+                            - t52 * (T::from_f64(1.5) * t97 * t28 * t21 - t49 * t124)
+                                * t108
+                            + t45 * (t64 * t182 + T::from_f64(1.5) * t95 * t29 * t22)
+                                * t74) + t50 * (T::from_f64(1.5) * t224 * t21 + t249)
+                        + t102 * t63 * t49 - t43 * (T::from_f64(1.5) * t246 * t22 + t252)
+                        + t103 * t65 * t64),
+                -(k_edge
+                    * (mu * (t221 * t201 - t40 * t202 * t69) + t56 * t234
+                        + t102 * t185 * t48 - t37 * t235 - t103 * t142 * t62)) * t20,
+                -t20
+                    * (k_edge * (t221 * t188 - t152 * t40)
+                        - k_wall * (t110 * t153 - t114 * t157)),
+                v_s
+                    * (k_edge * (t208 * t59 - t210 * t40)
+                        - k_wall * (t129 * t172 - t244 * t29)) * mu * t20,
+                -t20 * t230,
+                -t20 * t161,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                t20,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                -t20
+                    * (k_edge * (t212 * (t56 + t222) + t148 * (t37 + t123))
+                        + k_wall * (-(t213 * (t111 - t50)) - t239 * (t115 - t43))),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                zdot * cos_theta + xdot * sin_theta,
+                xdot * cos_theta - t9,
+                thetadot,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                mu
+                    * (thetadot
+                        * (k_wall
+                            * (cos_theta * (t236 + t176)
+                                - T::from_f64(2.0) * t130 * (t225 + t253))
+                            + k_edge
+                                * (t188
+                                    * (T::from_f64(2.0) * t168
+                                        - t162 * (slip_edge_left * slip_edge_left * slip_edge_left))
+                                    - t151
+                                        * (T::from_f64(2.0) * t69
+                                            - t70
+                                                * (slip_edge_right * slip_edge_right * slip_edge_right))))
+                        + T::from_f64(1.5) * t227 * k_edge
+                        + T::from_f64(1.5) * t241 * t247)
+                    + k_wall
+                        * (T::from_f64(2.0) * t131 * (t150 + t237)
+                            - delta_rate_wall_right * t245
+                            + neg_delta_rate_wall_left * t250)
+                    + k_edge
+                        * (t86 * neg_delta_rate_edge_right * t145
+                            - t84 * delta_rate_edge_left * t191),
+                k_wall
+                    * (mu
+                        * (sin_theta
+                            * (thetadot * (t236 - t176)
+                                + T::from_f64(1.5) * (t167 - t175)) - t73 * (t253 - t225))
+                        + cos_theta * (t237 - t150) * thetadot
+                        + delta_rate_wall_right * t248
+                        + neg_delta_rate_wall_left * t251),
+                -(k_edge
+                    * (t131
+                        * (-(hc_alpha * (t226 * t192 + t75 * t146) * mu) + t184 + t143)
+                        + T::from_f64(1.5) * (t99 * t227) * mu
+                        - delta_rate_edge_left * t194
+                        + neg_delta_rate_edge_right * t196))
+                    - k_wall
+                        * (T::from_f64(0.75) * t247 * mu
+                            + t97 * delta_rate_wall_right * t197
+                            + t95 * neg_delta_rate_wall_left * t132),
+                -k_wall
+                    * (mu
+                        * (thetadot
+                            * (t49
+                                * (t122 * t217
+                                    - t106
+                                        * (t218 * t107 + T::from_f64(2.0) * t217 * slip_wall_right))
+                                + t64
+                                    * (t77 * t242
+                                        - t32
+                                            * (t133 * t33 + T::from_f64(2.0) * t242 * slip_wall_left)))
+                            - T::from_f64(1.5) * (t220 * t112 + t175 * t22))
+                        + thetadot * (t150 * t102 + t237 * t103)
+                        - delta_rate_wall_right * t249
+                        + neg_delta_rate_wall_left * t252),
+                -k_edge
+                    * (-(mu * (t226 * t201 + t75 * t202))
+                        + thetadot * (t184 * t102 + t143 * t103)
+                        - delta_rate_edge_left * t232
+                        + neg_delta_rate_edge_right * t233),
+                k_edge * t228 + k_wall * t160,
+                -(v_s
+                    * (k_edge * (t207 * t60 + t209 * t41)
+                        + k_wall * (t119 * t153 + t68 * t157)) * mu),
+                mu * t228 - t184 * delta_rate_edge_left
+                    + t143 * neg_delta_rate_edge_right,
+                mu * t160 - t150 * delta_rate_wall_right
+                    + t237 * neg_delta_rate_wall_left,
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                T::from_f64(0.0),
+                mu
+                    * (k_edge * (t212 * t226 - t75 * t148)
+                        - k_wall * (t239 * t76 - t213 * t112))
+                    + k_edge
+                        * (t192 * (delta_rate_edge_left * delta_rate_edge_left)
+                            + t146
+                                * (neg_delta_rate_edge_right * neg_delta_rate_edge_right))
+                    + k_wall
+                        * (t90 * (delta_rate_wall_right * delta_rate_wall_right)
+                            + t94
+                                * (neg_delta_rate_wall_left * neg_delta_rate_wall_left)),
+            ],
+        )
+    }
 }

@@ -17,6 +17,7 @@ pub const REPORT_FILE: &str = "codegen_report.txt";
 /// let o = Options::default();
 /// assert!(o.stable_rewrites);
 /// assert!(!o.registry && !o.function_list && !o.test_harness);
+/// assert!(o.parameter_jacobians.is_empty());
 /// let naive = Options { stable_rewrites: false, ..Options::default() };
 /// assert!(!naive.stable_rewrites);
 /// ```
@@ -42,6 +43,16 @@ pub struct Options {
     /// its call table (`generated_calls.rs`, [`crate::codegen::harness`]).
     /// Off by default; only pegdyn's own build turns it on.
     pub test_harness: bool,
+    /// The models (by module name) whose parameter Jacobians `∂f/∂p` are
+    /// generated beside their functions: `rhs_p` of an explicit model's
+    /// `rhs`, `parameter_terms` of a Lagrangian model, and `<function>_p`
+    /// of every function its declaration marks with
+    /// [`ModelBuilder::parameter_jacobian`](crate::ModelBuilder::parameter_jacobian)
+    /// or [`ModelBuilder::solution_parameter_jacobian`](crate::ModelBuilder::solution_parameter_jacobian).
+    /// Empty by default: they cost generation and compile time, so a build
+    /// names only the models whose sensitivities it integrates. A name that
+    /// is not a declared model is refused by [`crate::Generator::render`].
+    pub parameter_jacobians: Vec<String>,
     /// File name of the generated source in the output directory.
     pub source_file: String,
     /// File name of the operation-count report in the output directory.
@@ -55,6 +66,7 @@ impl Default for Options {
             registry: false,
             function_list: false,
             test_harness: false,
+            parameter_jacobians: Vec::new(),
             source_file: SOURCE_FILE.to_owned(),
             report_file: REPORT_FILE.to_owned(),
         }

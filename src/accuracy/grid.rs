@@ -354,7 +354,8 @@ fn quasi_static() -> Vec<Point> {
 
 /// The rigid three-point peg (Fig. 9 dimensions, D = 50 mm) for
 /// clearances 50 µm, 1 µm and 1 nm: γ = γ0(1 + ε) for ε = 1e-3, 1e-6,
-/// 1e-9, 1e-12 and γ = 0.3, 1.2 rad; ψ̇ = 0, 1e-12 and 1 rad/s; γ0 given
+/// 1e-9, 1e-12 and γ = 0.3, 1.2 rad; ψ̇ = 0, 1e-12 and 1 rad/s (reactions
+/// 2, 1, 1 N where a parameter Jacobian takes them); γ0 given
 /// by [`PegParams::gamma0`], `2 asin(√((D − d)/(2D)))` rounded to `f64`.
 fn rigid() -> Vec<Point> {
     let mut out = Vec::new();
@@ -388,6 +389,9 @@ fn rigid() -> Vec<Point> {
                 ("F_z", -1.0),
                 ("gammaddot", 0.5),
                 ("psiddot", 0.5),
+                ("N_K", 2.0),
+                ("N_B1", 1.0),
+                ("N_B2", 1.0),
             ],
         );
         let mut with_t = base.clone();

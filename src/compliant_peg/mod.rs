@@ -2,7 +2,8 @@
 //! with contact deformation" (sections 2–3): contact
 //! geometry and Hertz stiffness ([`geometry`]), checked parameters
 //! ([`params`]), the generated model as an ODE system ([`system`]), initial
-//! states ([`initial`]) and classified insertion runs ([`simulate`]); the
+//! states ([`initial`]), classified insertion runs ([`simulate`]) and
+//! forward sensitivities ([`sensitivity`]); the
 //! stick-capable friction law's system in [`elastic`].
 //! See `docs/compliant.md` and `docs/contact-geometry.md`.
 
@@ -10,6 +11,7 @@ pub mod elastic;
 pub mod geometry;
 pub mod initial;
 pub mod params;
+pub mod sensitivity;
 pub mod simulate;
 pub mod system;
 

@@ -14,4 +14,5 @@ mod insertion;
 mod model;
 mod runtime;
 mod scene;
+mod sensitivity;
 mod stiff;

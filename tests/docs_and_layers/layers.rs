@@ -19,6 +19,7 @@ const PHYSICS: &[&str] = &[
     "textbook",
     "reference_problems.rs",
     "integrate",
+    "sensitivity",
     "system.rs",
     "scalar",
 ];

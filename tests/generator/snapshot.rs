@@ -23,6 +23,10 @@ fn docs_dir() -> PathBuf {
 fn render_builtins() -> Rendered {
     let mut generator = Generator::new(Options {
         registry: true,
+        parameter_jacobians: models::PARAMETER_JACOBIANS
+            .iter()
+            .map(|m| (*m).to_owned())
+            .collect(),
         ..Options::default()
     });
     models::declare_all(&mut generator)

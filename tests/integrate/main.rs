@@ -11,4 +11,5 @@ mod integrators;
 mod kinematic;
 mod no_alloc;
 mod rosenbrock;
+mod sensitivity_jump;
 mod stiff;

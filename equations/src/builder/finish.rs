@@ -61,6 +61,7 @@ impl<'g> ModelBuilder<'g> {
             }
         };
         functions.extend(self.functions.iter().map(|f| self.declared(f, &sig)));
+        let functions = self.with_parameter_jacobians(functions)?;
         let records = self.records(&functions)?;
         let out_types = self.out_types(&functions)?;
         let layout = self.layout(&derived, outputs);
@@ -104,7 +105,7 @@ impl<'g> ModelBuilder<'g> {
     }
 
     /// `text` with the model's reference appended.
-    fn with_reference(&self, text: &str) -> String {
+    pub(super) fn with_reference(&self, text: &str) -> String {
         if self.reference.is_empty() {
             text.to_owned()
         } else {
@@ -166,6 +167,9 @@ impl<'g> ModelBuilder<'g> {
                 sig.inputs(None),
                 vec![("xdot", Output::vector(&rhs))],
             ));
+        }
+        if self.parameter_jacobians && !self.params.is_empty() {
+            fns.push(self.lagrange_parameter_terms(&lag, sig.inputs(Some(&qdd))));
         }
         if o.jacobian {
             fns.push(FnSpec::new(
@@ -254,6 +258,9 @@ impl<'g> ModelBuilder<'g> {
                 sig.inputs(None),
                 vec![("xdot", Output::vector(rhs))],
             ));
+            if self.parameter_jacobians && !self.params.is_empty() {
+                fns.push(self.explicit_rhs_p(rhs, sig.inputs(None)));
+            }
         }
         if o.jacobian {
             let rows: Vec<Vec<Expr<'g>>> = rhs

@@ -34,6 +34,7 @@ pub mod blocks;
 mod finish;
 mod model;
 mod outputs;
+mod param_jacobian;
 mod types;
 
 use std::path::Path;
@@ -81,6 +82,7 @@ impl Generator {
         let graph = self.options.graph();
         let module = {
             let mut b = ModelBuilder::new(&graph, name, doc);
+            b.parameter_jacobians = self.options.parameter_jacobians.iter().any(|m| m == name);
             build(&mut b)?;
             b.finish()?
         };
@@ -93,8 +95,23 @@ impl Generator {
     ///
     /// # Errors
     /// [`GenError`] naming the module, function and symbol of a model that
-    /// fails verification.
+    /// fails verification, or [`GenError::Model`] for a model named in
+    /// [`Options::parameter_jacobians`] that was not declared.
     pub fn render(&self) -> Result<Rendered, GenError> {
+        let declared = |m: &String| self.entries.iter().any(|e| e.module.name == *m);
+        if let Some(m) = self
+            .options
+            .parameter_jacobians
+            .iter()
+            .find(|m| !declared(m))
+        {
+            return Err(GenError::Model {
+                model: m.clone(),
+                function: "parameter_jacobians".to_owned(),
+                symbol: m.clone(),
+                reason: "named in Options::parameter_jacobians but not declared".to_owned(),
+            });
+        }
         render(&self.entries, &self.options)
     }
 

@@ -47,6 +47,17 @@ pub(super) struct Function<'g> {
     pub(super) of_state: bool,
 }
 
+/// A function marked for its parameter Jacobian
+/// ([`ModelBuilder::parameter_jacobian`]).
+#[derive(Clone, Debug)]
+pub(super) struct Mark<'g> {
+    /// The marked function.
+    pub(super) function: String,
+    /// `Some(u)` when the function returns a linear system `A u = b` in
+    /// the unknowns `u`: the derivative is then that of `b − A u`.
+    pub(super) unknowns: Option<Vec<Expr<'g>>>,
+}
+
 /// Declares one model. Obtained inside [`super::Generator::model`]; every
 /// expression it hands out lives in the model's own [`Graph`].
 pub struct ModelBuilder<'g> {
@@ -75,6 +86,11 @@ pub struct ModelBuilder<'g> {
     pub(super) shared_outputs: Vec<(String, String, Vec<String>)>,
     /// Output structs that are an earlier module's: (struct name, module).
     pub(super) shared_out_types: Vec<(String, String)>,
+    /// Functions marked for their parameter Jacobian.
+    pub(super) param_marks: Vec<Mark<'g>>,
+    /// Whether the generator's options ask for this model's parameter
+    /// Jacobians.
+    pub(crate) parameter_jacobians: bool,
     names: Vec<String>,
 }
 
@@ -106,6 +122,8 @@ impl<'g> ModelBuilder<'g> {
             shared_types: Vec::new(),
             shared_outputs: Vec::new(),
             shared_out_types: Vec::new(),
+            param_marks: Vec::new(),
+            parameter_jacobians: false,
             names: Vec::new(),
         }
     }

@@ -32,14 +32,17 @@ pub struct Builtin {
 }
 
 impl Builtin {
-    /// The model's module, declared in `g` (for tools that evaluate the
-    /// model's expressions, such as the interpreter benches).
+    /// The model's module, declared in `g` as pegdyn's build declares it
+    /// (with its parameter Jacobians when it is one of
+    /// [`PARAMETER_JACOBIANS`]), for tools that evaluate the model's
+    /// expressions, such as the interpreter benches.
     ///
     /// # Panics
     /// If the declaration fails: the built-in models are fixed, so that is
     /// a bug in pegdyn, which the build (`build.rs`) reports first.
     pub fn module(&self, g: &Graph) -> Module {
         let mut b = ModelBuilder::new(g, self.name, "");
+        b.parameter_jacobians = PARAMETER_JACOBIANS.contains(&self.name);
         match (self.declare)(&mut b).and_then(|()| b.finish()) {
             Ok(module) => module,
             Err(e) => panic!("built-in model `{}` is inconsistent: {e}", self.name),
@@ -65,6 +68,11 @@ pub const ALL: &[Builtin] = &[
     Builtin { name: "rigid_peg_planar_frictionless", declare: rigid_peg::declare::declare_planar_frictionless },
     Builtin { name: compliant_peg_3d::NAME, declare: compliant_peg_3d::declare },
 ];
+
+/// The built-in models whose parameter Jacobians pegdyn's build generates
+/// ([`crate::Options::parameter_jacobians`]): those whose sensitivities it
+/// integrates. [`Builtin::module`] declares them the same way.
+pub const PARAMETER_JACOBIANS: &[&str] = &["compliant_peg", "rigid_peg"];
 
 /// Declares every built-in model ([`ALL`]) in `generator`, in order.
 ///

@@ -11,6 +11,7 @@ mod diff_vs_finite_difference;
 mod interpreter;
 mod lagrange;
 mod lower_preserves_value;
+mod parameter_jacobians;
 mod rigid_peg_variants;
 mod simplify_laws;
 mod simplify_preserves_value;

@@ -135,6 +135,7 @@ fn declare_functions<'g>(
             Output::vector(&pp.rhs),
         )],
     )?;
+    b.parameter_jacobian("rhs")?;
     b.function(
         "jacobian",
         &jac_doc,

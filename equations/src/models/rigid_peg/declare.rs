@@ -237,6 +237,7 @@ fn declare<'g>(b: &mut ModelBuilder<'g>, variant: Variant) -> Result<(), GenErro
             ("b", "the right-hand side b = −R at u = 0", Output::vector(&fb)),
         ],
     )?;
+    b.solution_parameter_jacobian("forward", &forward_unknowns)?;
     b.function(
         "prescribed",
         &format!(

@@ -1,0 +1,70 @@
+//! The state and its scaled sensitivities as one system of `M = N (1 + P)`
+//! components: `z = (y, p₁ s₁, …, p_P s_P)` with
+//! `ż = (f, p₁ (J s₁ + ∂f/∂p₁), …)` (column `k` scaled by the parameter's
+//! value `c_k`, 1 for a zero parameter).
+
+use nalgebra::{SMatrix, SVector};
+
+use super::ParameterJacobian;
+use crate::system::{ModelError, OdeSystem};
+
+/// The variational system of `system` (built only by [`super::integrate`],
+/// which checks `M = N (1 + P)`).
+pub(super) struct Variational<'a, S, const N: usize, const P: usize> {
+    pub(super) system: &'a S,
+    /// The column scales `c_k`.
+    pub(super) scale: SVector<f64, P>,
+}
+
+impl<S, const N: usize, const P: usize> Variational<'_, S, N, P> {
+    /// `z` of `y` and the unscaled sensitivities `s`.
+    pub(super) fn pack<const M: usize>(
+        &self,
+        y: &SVector<f64, N>,
+        s: &SMatrix<f64, N, P>,
+    ) -> SVector<f64, M> {
+        SVector::from_fn(|i, _| {
+            if i < N {
+                y[i]
+            } else {
+                let (k, r) = ((i - N) / N, (i - N) % N);
+                self.scale[k] * s[(r, k)]
+            }
+        })
+    }
+
+    /// `y` and the unscaled sensitivities of `z`.
+    pub(super) fn unpack<const M: usize>(
+        &self,
+        z: &SVector<f64, M>,
+    ) -> (SVector<f64, N>, SMatrix<f64, N, P>) {
+        let y = SVector::from_fn(|i, _| z[i]);
+        let s = SMatrix::from_fn(|r, k| z[N + k * N + r] / self.scale[k]);
+        (y, s)
+    }
+}
+
+impl<S: ParameterJacobian<N, P>, const N: usize, const P: usize, const M: usize> OdeSystem<M>
+    for Variational<'_, S, N, P>
+{
+    fn rhs(&self, t: f64, z: &SVector<f64, M>) -> SVector<f64, M> {
+        self.try_rhs(t, z)
+            .unwrap_or_else(|_| SVector::repeat(f64::NAN))
+    }
+
+    /// `ż = (f, c_k (J s_k + ∂f/∂p_k))` with `c_k s_k` read from `z`.
+    fn try_rhs(&self, t: f64, z: &SVector<f64, M>) -> Result<SVector<f64, M>, ModelError> {
+        let y: SVector<f64, N> = SVector::from_fn(|i, _| z[i]);
+        let f = self.system.try_rhs(t, &y)?;
+        let j = self.system.try_jacobian(t, &y)?;
+        let fp = self.system.try_parameter_jacobian(t, &y)?;
+        let mut out = SVector::<f64, M>::zeros();
+        out.fixed_rows_mut::<N>(0).copy_from(&f);
+        for k in 0..P {
+            let sk: SVector<f64, N> = SVector::from_fn(|i, _| z[N + k * N + i]);
+            let dk = j * sk + fp.column(k) * self.scale[k];
+            out.fixed_rows_mut::<N>(N + k * N).copy_from(&dk);
+        }
+        Ok(out)
+    }
+}
