@@ -6,8 +6,9 @@
 //! inputs ([`rng`]), the rigid peg fixtures ([`rigid`], [`prescribed_rigid`]),
 //! the compliant 3-D peg's ([`peg3d`]), the wrist insertion's ([`rcc`]), the
 //! Rosenbrock tableau checks ([`rosenbrock`]), running the `pegdyn` binary
-//! ([`cli`]), the scene fuzzer's strategies ([`fuzz`]) and the numeric
-//! fields of a scene text by path and line ([`fields`]).
+//! ([`cli`]), the scene fuzzer's strategies ([`fuzz`]), the numeric
+//! fields of a scene text by path and line ([`fields`]) and shipped scene
+//! texts ([`scene_text`]).
 
 #![allow(dead_code)]
 
@@ -26,6 +27,7 @@ pub mod prescribed_rigid;
 pub mod rcc;
 pub mod rigid;
 pub mod rosenbrock;
+pub mod scene_text;
 pub mod search_reference;
 
 pub mod rng;

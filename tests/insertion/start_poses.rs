@@ -4,24 +4,9 @@
 //! with the start height that clears the block; that height is accepted.
 //! A start that only touches (the `drop_3d` lean) runs.
 
-use std::path::Path;
+use crate::common::scene_text::{shipped, with};
 
 use pegdyn::scene::parse_named;
-
-fn shipped(name: &str) -> String {
-    std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.toml")),
-    )
-    .expect("the shipped scene reads")
-}
-
-fn with(text: &str, key: &str, value: &str) -> String {
-    let line = text
-        .lines()
-        .find(|l| l.starts_with(&format!("{key} =")))
-        .unwrap_or_else(|| panic!("no {key}"));
-    text.replacen(line, &format!("{key} = {value}"), 1)
-}
 
 /// The number after `at least ` in `text`.
 fn at_least(text: &str) -> f64 {

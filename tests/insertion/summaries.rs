@@ -5,25 +5,10 @@
 //! seated run reports no mean insertion time; `drop_3d` says when its list
 //! of transitions is cut. Each on several inputs.
 
+use crate::common::scene_text::{shipped, with};
 use std::path::Path;
 
 use crate::common::cli::{fresh_dir, metric, run_scene};
-
-fn shipped(name: &str) -> String {
-    std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.toml")),
-    )
-    .expect("the shipped scene reads")
-}
-
-/// `text` with the line starting `key =` replaced by `key = value`.
-fn with(text: &str, key: &str, value: &str) -> String {
-    let line = text
-        .lines()
-        .find(|l| l.starts_with(&format!("{key} =")))
-        .unwrap_or_else(|| panic!("no {key}"));
-    text.replacen(line, &format!("{key} = {value}"), 1)
-}
 
 /// The CSV at `path`: header and rows of numbers (non-numeric cells NaN).
 fn csv(path: &Path) -> (Vec<String>, Vec<Vec<f64>>) {

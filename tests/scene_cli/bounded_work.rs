@@ -7,6 +7,7 @@
 //! -v`), so that building the work first would abort the process instead
 //! of passing slowly.
 
+use crate::common::scene_text::shipped;
 use std::path::{Path, PathBuf};
 
 use crate::common::cli::{fresh_dir, pegdyn_capped};
@@ -14,13 +15,6 @@ use crate::common::cli::{fresh_dir, pegdyn_capped};
 /// 2 GiB of address space: far more than any of these checks needs, far
 /// less than the grids they refuse.
 const CAP_KIB: u64 = 2 * 1024 * 1024;
-
-fn shipped(name: &str) -> String {
-    std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.toml")),
-    )
-    .unwrap()
-}
 
 /// `[a, b, ...]` with `n` distinct values from `start` in steps of `step`.
 fn list(n: usize, start: f64, step: f64) -> String {

@@ -7,18 +7,12 @@
 //! manifest lists only its own scene's files, and a user's file with a
 //! manifest's name is never replaced.
 
+use crate::common::scene_text::shipped;
 use std::path::{Path, PathBuf};
 use std::process::Child;
 use std::time::{Duration, Instant};
 
 use crate::common::cli::{fresh_dir, pegdyn, pegdyn_os, spawn_pegdyn};
-
-fn shipped(name: &str) -> String {
-    std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.toml")),
-    )
-    .unwrap()
-}
 
 /// The shipped scene `name` with `from` replaced by `to` (must occur).
 fn variant(name: &str, from: &str, to: &str) -> String {

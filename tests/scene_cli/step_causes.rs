@@ -4,25 +4,9 @@
 //! out, and the scene's fastest time scale with its fields when the sizes
 //! are at their smallest. Several values per kind, each run in-process.
 
-use std::path::Path;
+use crate::common::scene_text::{shipped, with};
 
 use crate::common::cli::{fresh_dir, run_scene};
-
-fn shipped(name: &str) -> String {
-    std::fs::read_to_string(
-        Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("scenes/{name}.toml")),
-    )
-    .expect("the shipped scene reads")
-}
-
-/// `text` with the line starting `key =` replaced by `key = value`.
-fn with(text: &str, key: &str, value: &str) -> String {
-    let line = text
-        .lines()
-        .find(|l| l.starts_with(&format!("{key} =")))
-        .unwrap_or_else(|| panic!("no {key}"));
-    text.replacen(line, &format!("{key} = {value}"), 1)
-}
 
 /// The stop of `text` run as `name`, which must have failed.
 fn failed_stop(text: &str, name: &str, tag: &str) -> String {
