@@ -220,7 +220,7 @@ impl Progress {
     }
 
     /// Reports `done` of `total` work items, e.g. runs of a sweep
-    /// (throttled; the last one is always shown). After [`SLOW_AFTER`] of
+    /// (throttled; the last one is always shown). After `SLOW_AFTER` of
     /// wall time with work left, one line says how far the work is.
     pub fn update_count(&mut self, done: usize, total: usize, what: &str) {
         let last = done >= total;

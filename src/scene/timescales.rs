@@ -113,7 +113,7 @@ impl TimeScales {
     }
 
     /// The likely cause of a step that became too small (`h`, s) at time
-    /// `t`: the fastest time scale when it is within [`RESOLUTION_STEPS`]
+    /// `t`: the fastest time scale when it is within `RESOLUTION_STEPS`
     /// smallest steps, the tolerance when the step failed far below every
     /// scale, else the fastest scale as the one that sets the steps.
     pub fn step_failure_cause(&self, t: f64, h: f64) -> String {
@@ -159,7 +159,7 @@ impl TimeScales {
 
     /// The likely cause of a step budget that ran out at time `t` after
     /// steps of `mean` (s) on average: the tolerance when the mean step is
-    /// far below every scale ([`BUDGET_TOLERANCE_BOUND`]), else
+    /// far below every scale (`BUDGET_TOLERANCE_BOUND`), else
     /// the fastest scale, which sets the steps the run needs, about
     /// `(t_end - t0) / mean` of them.
     pub fn budget_cause(&self, t: f64, mean: f64) -> String {
