@@ -204,6 +204,9 @@ class Result:
     - ``outcome``: an :class:`Outcome`; ``events``: every :class:`Event`
       that fired, in time order (a terminal one last);
     - ``metrics``: scalar results ``{name: value}``; ``units`` their units;
+    - ``notes``: results in words ``{name: text}``: a coded metric's
+      meaning (``outcome``: ``"seated"``) and notes without a value (a
+      sweep's ``diagram check`` that was not made, and why);
     - ``summary``: the raw summary dict; ``text``: what ``pegdyn run`` prints;
     - ``paths``: files written (empty when ``run`` had no ``out``);
     - ``kind``: the scene's kind.
@@ -225,6 +228,7 @@ class Result:
     text: str
     paths: List[str]
     kind: Optional[str] = None
+    notes: Dict[str, str] = field(default_factory=dict)
     _page: Optional[bytes] = field(default=None, repr=False, compare=False)
 
     def _page_bytes(self) -> Optional[bytes]:
@@ -312,11 +316,13 @@ def _result(summary: Dict[str, Any], name: str, kind: Optional[str] = None) -> R
         tables=tables,
         outcome=outcome,
         events=events,
-        metrics={n: v for n, v, _ in summary["metrics"]},
-        units={n: u for n, _, u in summary["metrics"]},
+        # A note has text and no value: it goes to ``notes``, not ``metrics``.
+        metrics={n: v for n, v, _, t in summary["metrics"] if t is None or v == v},
+        units={n: u for n, v, u, t in summary["metrics"] if t is None or v == v},
         summary=summary,
         text=summary["text"],
         paths=outputs,
         kind=kind,
+        notes={n: t for n, _, _, t in summary["metrics"] if t is not None},
         _page=next((b for f, b in files.items() if f.endswith(".html")), None),
     )

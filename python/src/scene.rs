@@ -217,7 +217,8 @@ pub fn summary_dict<'py>(py: Python<'py>, s: &RunSummary) -> PyResult<Bound<'py,
     d.set_item("events", events)?;
     let metrics = PyList::empty(py);
     for m in &s.metrics {
-        metrics.append((m.name.as_str(), m.value, m.unit))?;
+        // A note (a text without a value) or a coded metric carries its text.
+        metrics.append((m.name.as_str(), m.value, m.unit, m.text.as_deref()))?;
     }
     d.set_item("metrics", metrics)?;
     let outputs: Vec<String> = s

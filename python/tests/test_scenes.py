@@ -110,6 +110,7 @@ def test_run_in_memory_equals_run_to_files(stem, tmp_path):
             else:
                 assert mem.tables[name][col].tobytes() == v.tobytes(), (name, col)
     assert mem.metrics == files.metrics and mem.events == files.events
+    assert mem.notes == files.notes
 
 
 def test_loads_and_from_dict_round_trip():
@@ -195,3 +196,13 @@ def test_ctrl_c_interrupts_a_long_run():
     timer.join()
     # The package is usable afterwards.
     assert pegdyn.load(next(p for p in SCENES if p.stem == "fig9")).run().outcome.success
+
+
+def test_results_in_words_are_notes_not_nan_metrics():
+    # The reduced jamming sweep judges no grid point: its diagram check is
+    # a note with the reason, not a NaN among the numbers.
+    jam = scene_for(next(p for p in SCENES if p.stem == "jamming")).run()
+    assert "diagram check" not in jam.metrics
+    assert jam.notes["diagram check"].startswith("NOT MADE")
+    assert all(v == v for v in jam.metrics.values()), jam.metrics
+    assert set(jam.units) == set(jam.metrics)
