@@ -17,6 +17,18 @@ fn at_least(text: &str) -> f64 {
         .unwrap_or_else(|| panic!("no height in {text}"))
 }
 
+/// The start height a refusal names (`at least h`) clears the block, with
+/// a micrometre to spare: `text` at that height is accepted.
+fn the_named_height_clears(text: &str, shown: &str, case: &str) {
+    let clears = at_least(shown) + 1e-6;
+    let text = with(text, "start_height", &format!("{clears:e}"));
+    assert!(
+        parse_named(&text, "rcc").is_ok(),
+        "{case} at {clears} m: {:?}",
+        parse_named(&text, "rcc").err().map(|e| e.to_string())
+    );
+}
+
 #[test]
 fn a_tilted_start_inside_the_block_is_refused_with_the_height_that_clears_it() {
     for (angle, height) in [
@@ -51,14 +63,7 @@ fn a_tilted_start_inside_the_block_is_refused_with_the_height_that_clears_it() {
         ] {
             assert!(shown.contains(part), "{part:?} missing: {shown}");
         }
-        // The height it names clears the block (with a micrometre to spare).
-        let clears = at_least(&shown) + 1e-6;
-        let text = with(&text, "start_height", &format!("{clears:e}"));
-        assert!(
-            parse_named(&text, "rcc").is_ok(),
-            "{angle} deg at {clears} m: {:?}",
-            parse_named(&text, "rcc").err().map(|e| e.to_string())
-        );
+        the_named_height_clears(&text, &shown, angle);
     }
 }
 
@@ -217,8 +222,6 @@ fn a_lateral_offset_that_puts_the_rim_into_the_top_face_is_refused() {
                 && shown.contains(&format!("robot.lateral_error = {offset} m")),
             "{shown}"
         );
-        let clears = at_least(&shown) + 1e-6;
-        let text = with(&text, "start_height", &format!("{clears:e}"));
-        assert!(parse_named(&text, "rcc").is_ok(), "{offset} at {clears}");
+        the_named_height_clears(&text, &shown, offset);
     }
 }
