@@ -17,13 +17,24 @@
 //! and the peg integrated on its own for a short time. If the contacts
 //! keep at least half of their normal force, the peg is `Wedged` (held by
 //! its own elastic deformation); otherwise it was `Jammed` (held by the
-//! applied forces inside the friction cones).
+//! applied forces inside the friction cones). A jam or wedge found after
+//! a force-limit stop keeps the limit ([`LimitStop`]), so that its summary
+//! says what stopped the run.
 
 use super::contact::{ContactPoint, Pair};
 use super::insertion::{Insertion, N_STATE, peg_state};
 use crate::integrate::{Direction, Event, Method, Options, Solver};
 use nalgebra::SVector;
 use std::cell::RefCell;
+
+/// The force limit whose terminal event stopped a run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LimitStop {
+    /// `wrist` or `contact`.
+    pub which: &'static str,
+    /// The force at the stop (N): the wrist force, or the contact limit.
+    pub force: f64,
+}
 
 /// When a run ends.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -48,12 +59,17 @@ pub enum Outcome {
     Jammed {
         /// The contacts, e.g. `edge_side, rim_wall`.
         contacts: String,
+        /// The force limit that stopped the run, if one did (else the run
+        /// ended without progress).
+        limit: Option<LimitStop>,
     },
     /// Held by the contacts' own elastic deformation: the contact forces
     /// stay when the wrist force is removed.
     Wedged {
         /// The contacts.
         contacts: String,
+        /// The force limit that stopped the run, if one did.
+        limit: Option<LimitStop>,
     },
     /// The axis missed the hole: the rim rests on the top face.
     Missed,
@@ -356,15 +372,17 @@ pub fn classify(
     let (depth, ..) = super::insertion::depth_tilt(&system.peg.params, &ys);
     let names = label(&counts(&contacts));
     let inside = depth > system.peg.params.mouth_fillet;
-    let stuck = |system: &Insertion| {
+    let stuck = |system: &Insertion, limit: Option<LimitStop>| {
         let r = release(system, y, c.release_time);
         if r.held() {
             Outcome::Wedged {
                 contacts: names.clone(),
+                limit,
             }
         } else {
             Outcome::Jammed {
                 contacts: names.clone(),
+                limit,
             }
         }
     };
@@ -372,26 +390,29 @@ pub fn classify(
         Some(0) => Outcome::Seated,
         Some(3) => Outcome::Missed,
         Some(k @ (1 | 2)) => {
-            if inside && contacts.len() >= 2 {
-                stuck(system)
-            } else {
-                let force = if k == 1 {
+            let limit = LimitStop {
+                which: if k == 1 { "wrist" } else { "contact" },
+                force: if k == 1 {
                     system
                         .wrist_load(t, &ys)
                         .map_or(0.0, |(_, l)| l.force.norm())
                 } else {
                     c.contact_force_limit
-                };
+                },
+            };
+            if inside && contacts.len() >= 2 {
+                stuck(system, Some(limit))
+            } else {
                 Outcome::ForceLimit {
-                    which: if k == 1 { "wrist" } else { "contact" },
-                    force,
+                    which: limit.which,
+                    force: limit.force,
                 }
             }
         }
         _ => {
             let speed = ys.fixed_rows::<3>(7).norm();
             if inside && contacts.len() >= 2 && speed < 1e-4 {
-                stuck(system)
+                stuck(system, None)
             } else {
                 Outcome::Stopped {
                     reason: reason.to_string(),

@@ -37,8 +37,8 @@ pub struct Progress {
     /// Accepted steps reported since the span was set.
     steps: u64,
     noticed: bool,
-    /// The fastest time scale of the scene, in words.
-    cause: Option<String>,
+    /// The scene's time scales and tolerances (what makes a run slow).
+    scales: Option<TimeScales>,
 }
 
 /// Accepted steps after which a run is called unusually slow: the shipped
@@ -52,7 +52,7 @@ pub const SLOW_AFTER: Duration = Duration::from_secs(30);
 
 /// The slow-run notice of a run that took `steps` accepted steps (or
 /// `elapsed` of wall time) to reach simulated time `t` of `[t0, t_end]`;
-/// `cause` is the scene's fastest time scale in words. `None` until the
+/// `cause` is what sets the steps, in words ([`TimeScales::slow_cause`]). `None` until the
 /// run is unusually slow ([`SLOW_STEPS`], [`SLOW_AFTER`]).
 pub fn slow_notice(
     steps: u64,
@@ -80,9 +80,7 @@ pub fn slow_notice(
     } else {
         "; the simulated time has not advanced".to_owned()
     };
-    let why = cause.map_or_else(String::new, |c| {
-        format!("; the fastest time scale of the scene: {c}")
-    });
+    let why = cause.map_or_else(String::new, |c| format!("; what sets the steps: {c}"));
     Some(format!(
         "note: slow run: {steps} steps in {} s of wall time to t = {} s of {} s ({:.1}%){rate}{why}",
         elapsed.as_secs(),
@@ -126,7 +124,7 @@ impl Progress {
             started: None,
             steps: 0,
             noticed: false,
-            cause: None,
+            scales: None,
         }
     }
 
@@ -137,10 +135,11 @@ impl Progress {
         p
     }
 
-    /// Gives the slow-run notice the scene's time scales (the fastest one
-    /// is named as what sets the step).
+    /// Gives the slow-run notice the scene's time scales and tolerances:
+    /// it names the tolerances when the steps are far below the fastest
+    /// scale, else that scale ([`TimeScales::slow_cause`]).
     pub fn explain(&mut self, scales: Option<&TimeScales>) {
-        self.cause = scales.and_then(|s| s.fastest()).map(|f| f.describe());
+        self.scales = scales.cloned();
     }
 
     /// The same reporter, stopping when `interrupt` is requested.
@@ -181,8 +180,10 @@ impl Progress {
         self.steps += 1;
         if self.notices && !self.noticed && self.steps % 64 == 0 {
             let elapsed = self.started.map_or(Duration::ZERO, |s| s.elapsed());
-            let cause = self.cause.as_deref();
-            if let Some(text) = slow_notice(self.steps, (self.t0, t, self.t_end), elapsed, cause) {
+            let mean = (t - self.t0) / self.steps as f64;
+            let cause = self.scales.as_ref().map(|s| s.slow_cause(mean));
+            let span = (self.t0, t, self.t_end);
+            if let Some(text) = slow_notice(self.steps, span, elapsed, cause.as_deref()) {
                 self.print_notice(&text);
             }
         }
@@ -320,7 +321,7 @@ mod tests {
         for part in [
             "100000 steps in 1 s of wall time to t = 0.012 s of 1.2 s (1.0%)",
             "about 1e7 steps in all (mean step 1.2e-7 s, ETA 1m39s)",
-            "the fastest time scale of the scene: the contact's natural period",
+            "what sets the steps: the contact's natural period",
         ] {
             assert!(s.contains(part), "{part:?} missing in {s}");
         }

@@ -69,6 +69,8 @@ pub struct TimeScales {
     pub span: (f64, f64),
     /// `integrator.atol`.
     pub atol: f64,
+    /// `integrator.rtol`.
+    pub rtol: f64,
 }
 
 /// A step that fails below this fraction of the fastest time scale failed
@@ -95,6 +97,7 @@ impl TimeScales {
             scales,
             span: (spec.t0, spec.t_end),
             atol: spec.atol,
+            rtol: spec.rtol,
         }
     }
 
@@ -151,6 +154,41 @@ impl TimeScales {
         } else {
             format!(
                 "{}, which sets the step; change {}",
+                fast.describe(),
+                fast.fields
+            )
+        }
+    }
+
+    /// What makes a run slow whose steps were `mean` (s) on average: the
+    /// tolerance when the mean step is far below every scale
+    /// (`BUDGET_TOLERANCE_BOUND`: an explicit method needs some tens of
+    /// steps per period, not thousands), else the fastest scale, which
+    /// sets the step.
+    pub fn slow_cause(&self, mean: f64) -> String {
+        let tolerances = format!(
+            "integrator.rtol = {} and integrator.atol = {}",
+            significant(self.rtol),
+            significant(self.atol)
+        );
+        let Some(fast) = self.fastest() else {
+            return format!(
+                "steps of {} s on average: {tolerances} (or an extreme scene value) set them",
+                significant(mean)
+            );
+        };
+        if mean < BUDGET_TOLERANCE_BOUND * fast.period {
+            format!(
+                "the tolerance: steps of {} s on average are {} the fastest time scale ({}), so \
+                 the error test, not the dynamics, sets them; {tolerances} likely ask for more \
+                 digits than the run needs",
+                significant(mean),
+                share(mean / fast.period),
+                fast.describe()
+            )
+        } else {
+            format!(
+                "the fastest time scale of the scene, {}, which sets the step; change {}",
                 fast.describe(),
                 fast.fields
             )
@@ -221,7 +259,38 @@ mod tests {
             ],
             span: (0.0, 0.05),
             atol: 1e-10,
+            rtol: 1e-6,
         }
+    }
+
+    #[test]
+    fn a_slow_run_names_the_tolerances_or_the_scale_that_set_its_steps() {
+        let mut t = scales(1e-5);
+        t.rtol = 1e-13;
+        t.atol = 1e-20;
+        // Steps of 1e-10 s: 1/100000 of the fastest scale.
+        let s = t.slow_cause(1e-10);
+        assert!(
+            s.starts_with("the tolerance")
+                && s.contains("1/100000 of the fastest time scale")
+                && s.contains("integrator.rtol = 1e-13 and integrator.atol = 1e-20"),
+            "{s}"
+        );
+        // Steps of a tenth of the scale: the scale sets them.
+        let s = t.slow_cause(1e-6);
+        assert!(
+            s.starts_with("the fastest time scale of the scene, the contact's natural period")
+                && s.contains("change peg.k = 1e15")
+                && !s.contains("rtol"),
+            "{s}"
+        );
+        // No scale known: both tolerances are named.
+        t.scales.clear();
+        let s = t.slow_cause(1e-6);
+        assert!(
+            s.contains("integrator.rtol = 1e-13 and integrator.atol = 1e-20"),
+            "{s}"
+        );
     }
 
     #[test]

@@ -68,11 +68,22 @@ fn a_stiff_tilted_wrist_with_low_friction_jams() {
         ("wrist_force_limit", "60.0"),
     ]);
     match o {
-        Outcome::Jammed { contacts } => {
+        Outcome::Jammed { contacts, limit } => {
             assert!(
                 contacts.contains("edge_side") && contacts.contains("rim_wall"),
                 "{contacts}"
-            )
+            );
+            // The robot stopped at its wrist force limit; the summary says so.
+            let l = limit.expect("stopped by a force limit");
+            assert_eq!(l.which, "wrist");
+            assert!((l.force / 60.0 - 1.0).abs() < 1e-3, "{}", l.force);
+            let text = pegdyn::scene::shared::compliant_peg_3d::insertion::outcome_text(
+                &Outcome::Jammed { contacts, limit },
+            );
+            assert!(
+                text.ends_with("(the run stopped at the wrist force limit, 60 N)"),
+                "{text}"
+            );
         }
         other => panic!("{other:?} at {t}"),
     }

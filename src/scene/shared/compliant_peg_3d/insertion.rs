@@ -14,7 +14,8 @@ use super::tables::{CriteriaTable, PegTable, RobotTable, WristTable, held};
 use crate::compliant_peg_3d::Peg3dParams;
 use crate::compliant_peg_3d::insertion::{Held, Insertion, N_STATE};
 use crate::compliant_peg_3d::outcome::{
-    CountCache, Criteria, Outcome, TERMINAL_NAMES, classify, terminal_events, transition_events,
+    CountCache, Criteria, LimitStop, Outcome, TERMINAL_NAMES, classify, terminal_events,
+    transition_events,
 };
 use crate::compliant_peg_3d::robot::Descent;
 use crate::error::{RunError, SceneError, SceneErrors};
@@ -381,11 +382,23 @@ impl Run {
     }
 }
 
+/// The force limit that stopped a jammed or wedged run, in words (empty
+/// when the run ended without progress instead).
+fn stopped_by(limit: &Option<LimitStop>) -> String {
+    limit.map_or_else(String::new, |l| {
+        format!(
+            " (the run stopped at the {} force limit, {} N)",
+            l.which,
+            significant(l.force)
+        )
+    })
+}
+
 /// The outcome in words.
 pub fn outcome_text(o: &Outcome) -> String {
     match o {
-        Outcome::Jammed { contacts } => format!("jammed on {contacts}"),
-        Outcome::Wedged { contacts } => format!("wedged on {contacts}"),
+        Outcome::Jammed { contacts, limit } => format!("jammed on {contacts}{}", stopped_by(limit)),
+        Outcome::Wedged { contacts, limit } => format!("wedged on {contacts}{}", stopped_by(limit)),
         Outcome::ForceLimit { which, force } => {
             format!("{which} force limit ({} N)", significant(*force))
         }
