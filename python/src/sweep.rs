@@ -131,7 +131,8 @@ pub fn check_sweep(
     limits: Option<Vec<String>>,
 ) -> PyResult<()> {
     let limits = overrides(limits)?;
-    let loaded = scene::parse_named_with(text, name, &limits).map_err(|e| scene_error(py, &e, None))?;
+    let loaded =
+        scene::parse_named_with(text, name, &limits).map_err(|e| scene_error(py, &e, None))?;
     let bounds = limits.apply(
         scene::Document::parse(text)
             .and_then(|d| d.limits())

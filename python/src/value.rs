@@ -66,52 +66,52 @@ impl Walk {
     }
 
     fn value(&mut self, obj: &Bound<'_, PyAny>, path: &str) -> PyResult<toml::Value> {
-    if obj.is_instance_of::<PyBool>() {
-        return Ok(toml::Value::Boolean(obj.extract()?));
-    }
-    if obj.is_instance_of::<PyInt>() {
-        let v: i64 = obj.extract().map_err(|_| {
-            PyTypeError::new_err(format!("`{path}`: integer does not fit in 64 bits"))
-        })?;
-        return Ok(toml::Value::Integer(v));
-    }
-    if obj.is_instance_of::<PyFloat>() {
-        return Ok(toml::Value::Float(obj.extract()?));
-    }
-    if obj.is_instance_of::<PyString>() {
-        return Ok(toml::Value::String(obj.extract()?));
-    }
-    if obj.is_instance_of::<PyList>() || obj.is_instance_of::<PyTuple>() {
-        self.enter(obj, path)?;
-        let mut out = Vec::new();
-        for (i, item) in obj.try_iter()?.enumerate() {
-            out.push(self.value(&item?, &format!("{path}[{i}]"))?);
+        if obj.is_instance_of::<PyBool>() {
+            return Ok(toml::Value::Boolean(obj.extract()?));
         }
-        self.open.pop();
-        return Ok(toml::Value::Array(out));
-    }
-    if let Ok(d) = obj.cast::<PyDict>() {
-        return Ok(toml::Value::Table(self.table(d, path)?));
-    }
-    // numpy scalars and 0-d arrays: their `item()` is a Python scalar;
-    // numpy arrays: `tolist()`.
-    for method in ["tolist", "item"] {
-        if obj.hasattr(method)? {
-            let plain = obj.call_method0(method)?;
-            if !plain.is(obj) {
-                // A `tolist()` that hands back another object of its kind
-                // counts as a level, so that it cannot recurse without end.
-                self.enter(obj, path)?;
-                let v = self.value(&plain, path);
-                self.open.pop();
-                return v;
+        if obj.is_instance_of::<PyInt>() {
+            let v: i64 = obj.extract().map_err(|_| {
+                PyTypeError::new_err(format!("`{path}`: integer does not fit in 64 bits"))
+            })?;
+            return Ok(toml::Value::Integer(v));
+        }
+        if obj.is_instance_of::<PyFloat>() {
+            return Ok(toml::Value::Float(obj.extract()?));
+        }
+        if obj.is_instance_of::<PyString>() {
+            return Ok(toml::Value::String(obj.extract()?));
+        }
+        if obj.is_instance_of::<PyList>() || obj.is_instance_of::<PyTuple>() {
+            self.enter(obj, path)?;
+            let mut out = Vec::new();
+            for (i, item) in obj.try_iter()?.enumerate() {
+                out.push(self.value(&item?, &format!("{path}[{i}]"))?);
+            }
+            self.open.pop();
+            return Ok(toml::Value::Array(out));
+        }
+        if let Ok(d) = obj.cast::<PyDict>() {
+            return Ok(toml::Value::Table(self.table(d, path)?));
+        }
+        // numpy scalars and 0-d arrays: their `item()` is a Python scalar;
+        // numpy arrays: `tolist()`.
+        for method in ["tolist", "item"] {
+            if obj.hasattr(method)? {
+                let plain = obj.call_method0(method)?;
+                if !plain.is(obj) {
+                    // A `tolist()` that hands back another object of its kind
+                    // counts as a level, so that it cannot recurse without end.
+                    self.enter(obj, path)?;
+                    let v = self.value(&plain, path);
+                    self.open.pop();
+                    return v;
+                }
             }
         }
-    }
-    Err(PyTypeError::new_err(format!(
-        "`{path}`: cannot put a value of type {} in a scene (bool, int, float, str, list or dict)",
-        obj.get_type().name()?
-    )))
+        Err(PyTypeError::new_err(format!(
+            "`{path}`: cannot put a value of type {} in a scene (bool, int, float, str, list or dict)",
+            obj.get_type().name()?
+        )))
     }
 
     fn table(&mut self, d: &Bound<'_, PyDict>, path: &str) -> PyResult<toml::Table> {

@@ -26,6 +26,7 @@ pub mod quasi_static;
 pub mod space3d;
 pub mod statics;
 pub mod sweep;
+#[cfg(feature = "scenes")]
 pub(crate) mod table;
 pub mod wedging;
 

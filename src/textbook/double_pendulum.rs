@@ -3,19 +3,19 @@
 //! `double_pendulum` model as an [`OdeSystem`].
 
 use nalgebra::{SMatrix, SVector, Vector4};
-use serde::Deserialize;
 
-use super::pendulum::STANDARD_GRAVITY;
 use crate::generated::double_pendulum as generated;
 use crate::system::{OdeSystem, finite_difference_jacobian};
 
+#[cfg(feature = "scenes")]
 fn standard_gravity() -> f64 {
-    STANDARD_GRAVITY
+    super::pendulum::STANDARD_GRAVITY
 }
 
 /// The `[double_pendulum]` table.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[derive(Debug, Clone)]
+#[cfg_attr(feature = "scenes", derive(serde::Deserialize))]
+#[cfg_attr(feature = "scenes", serde(deny_unknown_fields))]
 pub struct DoublePendulumParams {
     /// Upper bob mass `m₁`, kg.
     pub mass1: f64,
@@ -26,17 +26,17 @@ pub struct DoublePendulumParams {
     /// Lower rod length `l₂`, m.
     pub length2: f64,
     /// Gravitational acceleration `g`, m/s².
-    #[serde(default = "standard_gravity")]
+    #[cfg_attr(feature = "scenes", serde(default = "standard_gravity"))]
     pub gravity: f64,
     /// Initial upper angle, degrees from the downward vertical.
     pub theta1_deg: f64,
     /// Initial lower angle, degrees from the downward vertical.
     pub theta2_deg: f64,
     /// Initial upper angular velocity, rad/s.
-    #[serde(default)]
+    #[cfg_attr(feature = "scenes", serde(default))]
     pub omega1: f64,
     /// Initial lower angular velocity, rad/s.
-    #[serde(default)]
+    #[cfg_attr(feature = "scenes", serde(default))]
     pub omega2: f64,
 }
 

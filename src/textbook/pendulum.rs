@@ -3,7 +3,6 @@
 //! `pendulum` model as an [`OdeSystem`] and the exact period.
 
 use nalgebra::{SMatrix, Vector2, Vector3};
-use serde::Deserialize;
 
 use crate::generated::pendulum as generated;
 use crate::hertz::elliptic::carlson_rf;
@@ -12,25 +11,27 @@ use crate::system::{OdeSystem, finite_difference_jacobian};
 /// Standard gravity, m/s².
 pub const STANDARD_GRAVITY: f64 = 9.80665;
 
+#[cfg(feature = "scenes")]
 fn standard_gravity() -> f64 {
     STANDARD_GRAVITY
 }
 
 /// The `[pendulum]` table.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
+#[derive(Debug, Clone)]
+#[cfg_attr(feature = "scenes", derive(serde::Deserialize))]
+#[cfg_attr(feature = "scenes", serde(deny_unknown_fields))]
 pub struct PendulumParams {
     /// Rod length `L`, m.
     pub length: f64,
     /// Bob mass `m`, kg.
     pub mass: f64,
     /// Gravitational acceleration `g`, m/s².
-    #[serde(default = "standard_gravity")]
+    #[cfg_attr(feature = "scenes", serde(default = "standard_gravity"))]
     pub gravity: f64,
     /// Initial angle from the downward vertical, degrees.
     pub theta0_deg: f64,
     /// Initial angular velocity, rad/s.
-    #[serde(default)]
+    #[cfg_attr(feature = "scenes", serde(default))]
     pub omega0: f64,
 }
 
