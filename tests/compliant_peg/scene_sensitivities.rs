@@ -13,18 +13,22 @@ use pegdyn::output::sink::Sink;
 use pegdyn::scene::{self, Progress, RunContext};
 
 /// A short run of the shipped scene at tight tolerances: the tilted
-/// two-point start pushed in and seated a little deeper.
+/// two-point start pushed in leaves two-point contact, strikes again
+/// (the peak force), leaves again and is seated 0.2 mm deeper than it
+/// started, at about 11 ms.
 fn base() -> String {
     let text = crate::common::scene_text::shipped("insert_compliant");
     let text = with(&text, "rtol", "1e-11");
     let text = with(&text, "atol", "1e-15");
-    let text = with(&text, "t_end", T_END);
-    let text = with(&text, "target_depth", TARGET);
+    let text = with(&text, "t_end", "0.014");
+    let text = with(&text, "target_depth", "0.0106");
     format!("{text}\n[sensitivities]\nparameters = [{}]\n", quoted(&FIELDS))
 }
 
-const T_END: &str = "0.004";
-const TARGET: &str = "0.0100125";
+/// The same run ended at 6 ms, before seating: its final depth.
+fn unseated() -> String {
+    with(&base(), "t_end", "0.006")
+}
 
 /// The fields compared with differences, with the key of their line in
 /// the scene.
@@ -95,35 +99,61 @@ fn set(text: &str, field: &str, v: f64) -> String {
     with(text, key, &format!("{v:e}"))
 }
 
-#[test]
-fn derivatives_match_differences_of_full_scene_runs() {
-    let text = base();
-    let rows = run(&text);
-    let metrics = ["seat_time_s", "peak_contact_force_N"];
+/// Below this elasticity the differences are compared with the
+/// derivative of this elasticity instead of their own size (measured:
+/// `∂t_2pt/∂peg_fillet`, elasticity 1.3e-3, agrees to 1.1e-4 of itself;
+/// `∂F_peak/∂density`, elasticity 4e-8, to 2e-2).
+const ELASTICITY_FLOOR: f64 = 0.1;
+
+/// The largest relative difference between the derivatives of `metrics`
+/// in the run of `text` and central differences of full runs (step
+/// `1e-3 q`, Richardson-extrapolated with `h/2`), over [`FIELDS`].
+fn worst_difference(text: &str, metrics: &[&str]) -> f64 {
+    let rows = run(text);
     let mut worst = 0.0_f64;
     for field in FIELDS {
-        let q = value_of(&text, field);
-        let h = 1e-4 * q.abs();
-        let at = |v: f64| run(&set(&text, field, v));
+        let q = value_of(text, field);
+        let h = 1e-3 * q.abs();
+        let at = |v: f64| run(&set(text, field, v));
         let (u1, d1, u2, d2) = (at(q + h), at(q - h), at(q + 0.5 * h), at(q - 0.5 * h));
         for m in metrics {
-            let key = (m.to_owned(), field.to_owned());
+            let key = ((*m).to_owned(), field.to_owned());
             let (value, derivative, _, flag) = &rows[&key];
             assert!(flag.is_empty(), "{m} by {field} flagged: {flag}");
             assert!(value.is_finite() && derivative.is_finite(), "{key:?}");
             let c1 = (u1[&key].0 - d1[&key].0) / (2.0 * h);
             let c2 = (u2[&key].0 - d2[&key].0) / h;
             let fd = (4.0 * c2 - c1) / 3.0;
-            let err = (derivative - fd).abs() / fd.abs().max(1e-12 * value.abs() / q.abs());
+            // Relative to the derivative, or, where the elasticity
+            // q/m dm/dq is below ELASTICITY_FLOOR, to the derivative of
+            // that elasticity: a field that barely moves the metric moves
+            // it by less than the runs' rounding over the step.
+            let floor = ELASTICITY_FLOOR * value.abs() / q.abs();
+            let err = (derivative - fd).abs() / fd.abs().max(floor);
+            eprintln!("d{m}/d{field}: {derivative:e} vs {fd:e}: {err:.1e}");
             worst = worst.max(err);
-            assert!(
-                err < 1e-5,
-                "d{m}/d{field}: sensitivity {derivative:e}, differences {fd:e} ({c1:e} at h, \
-                 {c2:e} at h/2), relative error {err:e}"
-            );
         }
     }
-    eprintln!("worst relative error {worst:e}");
+    worst
+}
+
+#[test]
+fn derivatives_match_differences_of_full_scene_runs() {
+    let seated = worst_difference(
+        &base(),
+        &[
+            "seat_time_s",
+            "peak_contact_force_N",
+            "two_point_start_s",
+            "two_point_end_s",
+        ],
+    );
+    let unseated = worst_difference(&unseated(), &["final_depth_m"]);
+    eprintln!("worst: {seated:e} (seated run), {unseated:e} (final depth)");
+    assert!(
+        seated < 1e-5 && unseated < 1e-5,
+        "worst relative error {seated:e} (seated), {unseated:e} (final depth)"
+    );
 }
 
 /// The value of `field` as written in `text`.
@@ -162,9 +192,8 @@ fn unknown_names_are_refused_with_the_valid_ones() {
 
 #[test]
 fn a_field_the_model_does_not_use_is_a_flagged_zero() {
-    let text = with(&base(), "t_end", "0.0005");
     let text = with(
-        &text,
+        &unseated(),
         "parameters",
         "[\"insert_compliant.tangential_damping\", \"insert_compliant.friction\"]",
     );
@@ -186,7 +215,7 @@ fn a_field_the_model_does_not_use_is_a_flagged_zero() {
 fn a_run_ending_at_t_end_just_short_of_seating_is_flagged() {
     // The same short run with the target just beyond the depth reached at
     // t_end: a 0.1 % change of the load seats it.
-    let short = with(&base(), "t_end", "0.0005");
+    let short = unseated();
     let rows = run(&short);
     let key = (
         "final_depth_m".to_owned(),

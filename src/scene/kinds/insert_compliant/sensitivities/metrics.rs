@@ -135,16 +135,28 @@ pub(super) fn rows(
         });
     }
     // Two-point contact: one edge and the opposite wall closed.
-    // A contact is closed when it penetrates; one only touching at the
+    // A contact is closed when it penetrates. One only touching at the
     // start (a two-point start: within rounding, below 1e-9 of the
-    // smaller fillet) counts as open until its first event, which follows
-    // within rounding of the start when it closes there.
-    let touch = 1e-9 * sys.parameter_vector()[5].min(sys.parameter_vector()[6]);
-    let mut closed: [bool; N_CONTACTS] = std::array::from_fn(|c| sys.delta(c, y0) > touch);
+    // smaller fillet) takes its state at the end of the plain pass's first
+    // step; its events before then are rounding at the start.
+    let p = sys.parameter_vector();
+    let touch = 1e-9 * p[5].min(p[6]);
+    let touching: [bool; N_CONTACTS] = std::array::from_fn(|c| sys.delta(c, y0).abs() <= touch);
+    let mut closed: [bool; N_CONTACTS] = std::array::from_fn(|c| {
+        if touching[c] {
+            scan.first_closed[c]
+        } else {
+            sys.delta(c, y0) > 0.0
+        }
+    });
     let two_point = |s: &[bool; N_CONTACTS]| (s[0] && s[1]) || (s[2] && s[3]);
     let (mut began, mut ended) = (None, None);
     let mut was = two_point(&closed);
+    let first_step = scan.times.get(1).copied().unwrap_or(f64::INFINITY);
     for (c, e) in &d.contacts {
+        if touching[*c] && e.t < first_step {
+            continue;
+        }
         closed[*c] = sys.delta_rate(*c, &e.y) > 0.0;
         let now = two_point(&closed);
         if now && !was && began.is_none() {

@@ -42,6 +42,8 @@ pub(super) struct Scan {
     pub grazing: Option<(usize, f64)>,
     /// The pass's step times.
     pub times: Vec<f64>,
+    /// Which contacts penetrate at the end of the first step.
+    pub first_closed: [bool; N_CONTACTS],
 }
 
 /// The derivatives the metrics are made of.
@@ -120,11 +122,13 @@ pub(super) fn scan(
             }
         }
     }
+    let first_closed = std::array::from_fn(|c| delta.get(1).is_some_and(|d| d[c] > 0.0));
     Ok(Scan {
         peak,
         runner_up,
         grazing,
         times: sol.t,
+        first_closed,
     })
 }
 
