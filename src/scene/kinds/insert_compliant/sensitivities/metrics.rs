@@ -203,6 +203,16 @@ pub(super) fn rows(
                     (Some(der), el)
                 }
             };
+            // A derivative that overflowed (a degenerate contact geometry,
+            // say) is flagged, never written as a number.
+            let (flag, derivative, elasticity) = match derivative {
+                Some(v) if !v.is_finite() || elasticity.is_some_and(|e| !e.is_finite()) => (
+                    Some("the derivative is not finite at this point".to_owned()),
+                    None,
+                    None,
+                ),
+                _ => (flag, derivative, elasticity),
+            };
             out.push(Row {
                 metric: m.name,
                 parameter: FIELDS[k],

@@ -168,7 +168,7 @@ pub(super) fn derivatives(
     let mut legs: Vec<(f64, Option<usize>)> = Vec::new();
     let mut peak_at_end = None;
     if let Some((c, k, _)) = scan.peak {
-        let last = scan.times.len() - 1;
+        let last = scan.times.len().saturating_sub(1);
         if k == 0 {
             // The peak lies on the start: read it there.
             let (g_y, g_q) = sys.force_gradient(c, &start.1);
