@@ -78,10 +78,7 @@ impl<const Q: usize> CompliantDirections<Q> {
     /// `(∂g/∂y, ∂g/∂q = (∂g/∂p) P)` of a dual value seeded by [`Self::seeded`].
     fn split(&self, g: D) -> (SVector<f64, N_STATE>, SVector<f64, Q>) {
         let g_p = SVector::<f64, N_PARAMS>::from_fn(|k, _| g.d[N_STATE + k]);
-        (
-            SVector::from_fn(|i, _| g.d[i]),
-            self.dp.transpose() * g_p,
-        )
+        (SVector::from_fn(|i, _| g.d[i]), self.dp.transpose() * g_p)
     }
 
     fn seeded(&self, y: &SVector<f64, N_STATE>) -> (SVector<D, N_STATE>, SVector<D, N_PARAMS>) {
@@ -171,11 +168,7 @@ impl<const Q: usize> CompliantDirections<Q> {
     }
 
     /// The time derivative `(∂g/∂y) f(y)` of an output `g` of `contacts`.
-    fn rate(
-        &self,
-        y: &SVector<f64, N_STATE>,
-        g: impl Fn(&all::ContactsOut<Dy>) -> Dy,
-    ) -> f64 {
+    fn rate(&self, y: &SVector<f64, N_STATE>, g: impl Fn(&all::ContactsOut<Dy>) -> Dy) -> f64 {
         let yd: SVector<Dy, N_STATE> = SVector::from_fn(|i, _| Dy::variable(y[i], i));
         let pd: SVector<Dy, N_PARAMS> = self.p.map(Dy::constant);
         let g = g(&all::contacts(&yd, &pd));

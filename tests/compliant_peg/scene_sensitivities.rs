@@ -22,7 +22,10 @@ fn base() -> String {
     let text = with(&text, "atol", "1e-15");
     let text = with(&text, "t_end", "0.014");
     let text = with(&text, "target_depth", "0.0106");
-    format!("{text}\n[sensitivities]\nparameters = [{}]\n", quoted(&FIELDS))
+    format!(
+        "{text}\n[sensitivities]\nparameters = [{}]\n",
+        quoted(&FIELDS)
+    )
 }
 
 /// The same run ended at 6 ms, before seating: its final depth.
@@ -170,7 +173,15 @@ fn value_of(text: &str, field: &str) -> f64 {
         .lines()
         .find(|l| l.starts_with(&format!("{key} =")))
         .unwrap();
-    line.split('=').nth(1).unwrap().split('#').next().unwrap().trim().parse().unwrap()
+    line.split('=')
+        .nth(1)
+        .unwrap()
+        .split('#')
+        .next()
+        .unwrap()
+        .trim()
+        .parse()
+        .unwrap()
 }
 
 #[test]

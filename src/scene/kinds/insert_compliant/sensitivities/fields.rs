@@ -215,7 +215,12 @@ pub fn unused(
     dp: &SMatrix<f64, N_PARAMS, N_FIELDS>,
     dy0: &SMatrix<f64, N_STATE, N_FIELDS>,
 ) -> bool {
-    k != TARGET_DEPTH && dp.column(k).iter().chain(dy0.column(k).iter()).all(|v| *v == 0.0)
+    k != TARGET_DEPTH
+        && dp
+            .column(k)
+            .iter()
+            .chain(dy0.column(k).iter())
+            .all(|v| *v == 0.0)
 }
 
 #[cfg(test)]

@@ -55,7 +55,10 @@ pub fn check(table: &SensitivitiesTable, b: &Built) -> Result<Vec<usize>, SceneE
         errors.push(SceneError::invalid(
             FIELD,
             &table.parameters,
-            format!("name at least one field; the fields are: {}", FIELDS.join(", ")),
+            format!(
+                "name at least one field; the fields are: {}",
+                FIELDS.join(", ")
+            ),
         ));
     }
     for name in &table.parameters {
@@ -107,13 +110,27 @@ pub fn run(
     integrator: &IntegratorSpec,
     chosen: &[usize],
 ) -> Result<Vec<Metric>, RunError> {
-    let rows = compute(p, b, integrator, chosen)?;
-    output::write(ctx, &rows)
+    let (rows, work) = compute(p, b, integrator, chosen)?;
+    let mut notes = output::write(ctx, &rows)?;
+    if let Some((steps, calls)) = work {
+        notes.push(Metric::note(
+            "sensitivity run",
+            format!(
+                "{steps} steps, {calls} evaluations of the variational system ({} fields \
+                 integrated together, {} asked for)",
+                N_FIELDS,
+                chosen.len()
+            ),
+        ));
+    }
+    Ok(notes)
 }
 
 /// The rows of `chosen` fields (indices into [`FIELDS`]) for the scene's
 /// parameters `p` built into `b`, integrated with `integrator`'s
-/// tolerances, span and step budget (always Dormand–Prince 5(4)).
+/// tolerances, span and step budget (always Dormand–Prince 5(4)), and the
+/// sensitivity run's accepted steps and right-hand-side evaluations (None
+/// when it failed and every row is flagged).
 ///
 /// # Errors
 /// [`RunError::Sensitivity`] when the model refuses its parameters or
@@ -123,7 +140,7 @@ pub fn compute(
     b: &Built,
     integrator: &IntegratorSpec,
     chosen: &[usize],
-) -> Result<Vec<metrics::Row>, RunError> {
+) -> Result<(Vec<metrics::Row>, Option<(usize, usize)>), RunError> {
     let (dp, dy0) = fields::jacobians(p, b);
     let values = fields::values(p);
     let unused: [bool; N_FIELDS] = std::array::from_fn(|k| fields::unused(k, &dp, &dy0));
@@ -139,20 +156,26 @@ pub fn compute(
     let d = match trajectory::derivatives(&sys, (t0, y0, dy0), t_end, target, &options, &scan) {
         Ok(d) => d,
         Err(StopOrError::Error(SensitivityError::TangentialEvent { t, .. })) => {
-            return Ok(metrics::failed(
-                chosen,
-                &format!("an event is crossed tangentially at t = {t:.6e} s"),
+            return Ok((
+                metrics::failed(
+                    chosen,
+                    &format!("an event is crossed tangentially at t = {t:.6e} s"),
+                ),
+                None,
             ));
         }
         Err(StopOrError::Error(e)) => return Err(e.into()),
         Err(StopOrError::Stopped(stop)) => {
-            return Ok(metrics::failed(
-                chosen,
-                &format!("the sensitivity run stopped short: {stop:?}"),
+            return Ok((
+                metrics::failed(
+                    chosen,
+                    &format!("the sensitivity run stopped short: {stop:?}"),
+                ),
+                None,
             ));
         }
     };
-    Ok(metrics::rows(
+    let rows = metrics::rows(
         &sys,
         &values,
         (&scan, &d),
@@ -160,5 +183,6 @@ pub fn compute(
         (t_end, target),
         chosen,
         &unused,
-    ))
+    );
+    Ok((rows, Some(d.work)))
 }

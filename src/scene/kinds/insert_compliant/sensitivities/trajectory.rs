@@ -62,8 +62,9 @@ pub(super) struct Derivatives {
     pub contacts: Vec<(usize, EventSensitivity<N_STATE, Q>)>,
     /// The peak: contact, time, force (N) and its derivative.
     pub peak: Option<(usize, f64, f64, SVector<f64, Q>)>,
-    /// Work of the sensitivity run: right-hand-side evaluations.
-    pub rhs_calls: usize,
+    /// Work of the sensitivity run: accepted steps and evaluations of the
+    /// variational right-hand side.
+    pub work: (usize, usize),
 }
 
 /// The plain pass: every step of a Dormand–Prince run with `options`,
@@ -161,7 +162,7 @@ pub(super) fn derivatives(
         seated: None,
         contacts: Vec::new(),
         peak: None,
-        rhs_calls: 0,
+        work: (0, 0),
     };
     // The legs: up to the step before the peak, to the step after it with
     // the peak armed, then to the end.
@@ -188,7 +189,8 @@ pub(super) fn derivatives(
             continue;
         }
         let run = integrate::<_, N_STATE, Q, M>(sys, cur, to, options, events(peak))?;
-        out.rhs_calls += run.stats.rhs_calls;
+        out.work.0 += run.stats.steps;
+        out.work.1 += run.stats.rhs_calls;
         for e in run.events {
             match e.index {
                 c if c < N_CONTACTS => out.contacts.push((c, e)),
