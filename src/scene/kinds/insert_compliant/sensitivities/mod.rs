@@ -44,6 +44,11 @@ pub struct SensitivitiesTable {
 
 const FIELD: &str = "sensitivities.parameters";
 
+/// What [`compute`] gives: the rows, and the sensitivity run's accepted
+/// steps and right-hand-side evaluations (None when every row is flagged
+/// because the run failed).
+pub type Computed = (Vec<metrics::Row>, Option<(usize, usize)>);
+
 /// The chosen fields' indices into [`FIELDS`], or the errors naming
 /// `sensitivities.parameters`: an unknown name (with the valid ones), a
 /// name given twice, an empty list, or a model variant without parameter
@@ -140,7 +145,7 @@ pub fn compute(
     b: &Built,
     integrator: &IntegratorSpec,
     chosen: &[usize],
-) -> Result<(Vec<metrics::Row>, Option<(usize, usize)>), RunError> {
+) -> Result<Computed, RunError> {
     let (dp, dy0) = fields::jacobians(p, b);
     let values = fields::values(p);
     let unused: [bool; N_FIELDS] = std::array::from_fn(|k| fields::unused(k, &dp, &dy0));
