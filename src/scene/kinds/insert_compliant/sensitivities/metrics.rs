@@ -134,6 +134,23 @@ pub(super) fn rows(
             }),
         });
     }
+    if d.peak.is_none()
+        && let Some((c, _, f)) = scan.peak
+    {
+        // The plain pass saw the peak; the sensitivity run did not locate
+        // it between that pass's steps around it.
+        metrics.push(Metric {
+            name: METRICS[2],
+            value: Some(f),
+            derivative: SVector::zeros(),
+            flag: Box::new(move |_| {
+                Some(format!(
+                    "the peak on {} was not located by the sensitivity run",
+                    CONTACTS[c]
+                ))
+            }),
+        });
+    }
     // Two-point contact: one edge and the opposite wall closed.
     // A contact is closed when it penetrates. One only touching at the
     // start (a two-point start: within rounding, below 1e-9 of the
