@@ -284,6 +284,9 @@ pub enum RunError {
     /// The integrator rejected its input.
     #[error(transparent)]
     Integrate(#[from] crate::integrate::IntegrateError),
+    /// The forward-sensitivity run refused its model or input.
+    #[error("sensitivities: {0}")]
+    Sensitivity(#[from] crate::sensitivity::SensitivityError),
     /// A Hertz contact of the compliant 3-D peg could not be set up at a
     /// state (relative curvature not positive).
     #[error("Hertz contact: {0}")]

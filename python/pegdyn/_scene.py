@@ -7,6 +7,8 @@ import html
 from dataclasses import dataclass, field
 from typing import Any, Dict, List, Mapping, NamedTuple, Optional, Sequence, Tuple, Union
 
+import numpy as np
+
 from . import _pegdyn as _core
 
 PathLike = Union[str, "os.PathLike[str]"]
@@ -278,6 +280,38 @@ class Result:
             '<iframe sandbox="allow-scripts" style="width:100%;height:760px;border:0" '
             f'title="pegdyn replay" srcdoc="{doc}"></iframe>'
         )
+
+    @property
+    def sensitivities(self) -> Optional[Dict[str, Any]]:
+        """The derivatives a ``[sensitivities]`` table asked for
+        (``<name>.sensitivities.csv``, ``docs/sensitivities.md``) as numpy
+        arrays, one entry per (metric, field) row: ``metric`` and
+        ``parameter`` (str), ``value`` (the metric's value), ``derivative``,
+        ``elasticity`` (float64; NaN where the file's cell is empty: a
+        flagged derivative, a metric without a value) and ``flag`` (str:
+        why there is no derivative, or ``"not used by this model"``; empty
+        where the derivative holds). None when the scene has no such table.
+        """
+        table = next((t for k, t in self.tables.items() if k.endswith(".sensitivities")), None)
+        if table is None:
+            return None
+
+        def numbers(column: Any) -> Any:
+            if isinstance(column, list):
+                return np.array([float(c) if c != "" else np.nan for c in column], dtype=np.float64)
+            return np.asarray(column, dtype=np.float64)
+
+        def text(column: Any) -> Any:
+            return np.array([str(c) for c in column], dtype=str)
+
+        return {
+            "metric": text(table["metric"]),
+            "parameter": text(table["parameter"]),
+            "value": numbers(table["value"]),
+            "derivative": numbers(table["derivative"]),
+            "elasticity": numbers(table["elasticity"]),
+            "flag": text(table["flag"]),
+        }
 
     def to_pandas(self, table: Optional[str] = None):
         """The main table (or ``tables[table]``) as a pandas DataFrame

@@ -3,10 +3,12 @@
 //! geometry and Hertz stiffness ([`geometry`]), checked parameters
 //! ([`params`]), the generated model as an ODE system ([`system`]), initial
 //! states ([`initial`]), classified insertion runs ([`simulate`]) and
-//! forward sensitivities ([`sensitivity`]); the
+//! forward sensitivities ([`sensitivity`], and along design directions in
+//! [`directions`]); the
 //! stick-capable friction law's system in [`elastic`].
 //! See `docs/compliant.md` and `docs/contact-geometry.md`.
 
+pub mod directions;
 pub mod elastic;
 pub mod geometry;
 pub mod initial;

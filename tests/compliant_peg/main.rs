@@ -14,5 +14,6 @@ mod insertion;
 mod model;
 mod runtime;
 mod scene;
+mod scene_sensitivities;
 mod sensitivity;
 mod stiff;

@@ -42,6 +42,7 @@ mod model_errors;
 pub mod output;
 pub mod ranges;
 pub mod replay;
+pub mod sensitivities;
 mod start;
 
 use model_errors::{tilt_error, to_scene_error};
@@ -78,12 +79,17 @@ pub const KIND: Kind = Kind {
 fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: InsertCompliantScene = doc.body()?;
     let built = s.build()?;
+    let sensitivities = match &s.sensitivities {
+        Some(t) => sensitivities::check(t, &built)?,
+        None => Vec::new(),
+    };
     let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::STIFF_CONTACT);
     Ok(Box::new(Ready {
         scene: s,
         built,
         integrator,
         method_reason,
+        sensitivities,
     }))
 }
 
@@ -193,6 +199,10 @@ pub struct InsertCompliantScene {
     /// The `[replay]` table (optional).
     #[serde(default)]
     pub replay: ReplayTable,
+    /// The `[sensitivities]` table (optional): derivatives of the run's
+    /// metrics with respect to the named fields.
+    #[serde(default)]
+    pub sensitivities: Option<sensitivities::SensitivitiesTable>,
 }
 
 /// What the scene builds from its tables.
@@ -214,6 +224,9 @@ struct Ready {
     integrator: IntegratorSpec,
     /// Why that method runs.
     method_reason: &'static str,
+    /// The fields of the `[sensitivities]` table (indices into
+    /// [`sensitivities::fields::FIELDS`]), empty without one.
+    sensitivities: Vec<usize>,
 }
 
 impl InsertCompliantScene {
@@ -438,6 +451,16 @@ impl Ready {
             ..RunSummary::default()
         };
         write_outputs(ctx, &sample, &sol, &mut out)?;
+        if !self.sensitivities.is_empty() {
+            let notes = sensitivities::run(
+                ctx,
+                &self.scene.insert_compliant,
+                &self.built,
+                &self.integrator,
+                &self.sensitivities,
+            )?;
+            out.metrics.extend(notes);
+        }
         if self.scene.replay.wanted(ctx) {
             replay::write(
                 ctx,

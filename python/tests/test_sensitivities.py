@@ -1,0 +1,55 @@
+"""``Result.sensitivities``: the derivatives of a ``[sensitivities]`` table
+as numpy arrays, the numbers of ``<name>.sensitivities.csv``; a derivative
+agrees with differences of two runs."""
+
+import numpy as np
+
+import pegdyn
+from conftest import ROOT
+
+SCENE = ROOT / "scenes" / "insert_compliant_sensitivities.toml"
+PLAIN = ROOT / "scenes" / "insert_compliant.toml"
+
+
+def test_the_table_comes_as_numpy_arrays():
+    r = pegdyn.load(SCENE).run()
+    s = r.sensitivities
+    assert s is not None
+    n = len(s["metric"])
+    assert n > 0 and all(len(v) == n for v in s.values())
+    for k in ("value", "derivative", "elasticity"):
+        assert s[k].dtype == np.float64
+    # The field the model does not use: a zero, flagged.
+    unused = s["parameter"] == "insert_compliant.tangential_damping"
+    assert unused.any()
+    assert np.all(s["flag"][unused] == "not used by this model")
+    assert np.all(s["derivative"][unused] == 0.0)
+    # Unflagged rows: elasticity = q/m dm/dq, here for the friction (q = 0.1).
+    mu = (s["parameter"] == "insert_compliant.friction") & (s["flag"] == "")
+    assert mu.any()
+    np.testing.assert_allclose(
+        s["elasticity"][mu], 0.1 / s["value"][mu] * s["derivative"][mu], rtol=1e-12
+    )
+    # The same numbers as the table the run kept.
+    table = next(t for k, t in r.tables.items() if k.endswith(".sensitivities"))
+    assert list(s["metric"]) == list(table["metric"])
+
+
+def test_the_seat_time_derivative_agrees_with_differences_of_two_runs():
+    scene = pegdyn.load(SCENE)
+    s = scene.run().sensitivities
+    row = (s["metric"] == "seat_time_s") & (s["parameter"] == "insert_compliant.axial_force")
+    d = s["derivative"][row][0]
+
+    def seat(f1):
+        t = scene.with_values({"insert_compliant.axial_force": f1}).run().sensitivities
+        return t["value"][t["metric"] == "seat_time_s"][0]
+
+    h = 0.005
+    fd = (seat(5.0 + h) - seat(5.0 - h)) / (2 * h)
+    assert abs(d - fd) < 1e-4 * abs(fd), (d, fd)
+
+
+def test_a_scene_without_the_table_has_none():
+    scene = pegdyn.load(PLAIN)
+    assert scene.with_values({"integrator.t_end": 0.01}).run().sensitivities is None

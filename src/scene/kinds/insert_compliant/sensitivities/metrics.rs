@@ -1,0 +1,262 @@
+//! The metrics of a sensitivity run and their derivatives along the chosen
+//! scene fields, with elasticities `q/m ∂m/∂q`, or a flag naming why a
+//! derivative does not exist:
+//!
+//! - `seat_time_s`: the time the target depth is reached, `∂t_e/∂q` of the
+//!   seating event;
+//! - `final_depth_m`: the depth at the end, `l_y dy(T)/dq + l_q`;
+//! - `peak_contact_force_N`: the largest normal force, `F_y s(t*) + F_q` at
+//!   its time `t*` (where `dF/dt = 0`, so `t*`'s own change drops out);
+//! - `two_point_start_s`, `two_point_end_s`: the contact events where the
+//!   peg enters or leaves two-point contact (one edge and the opposite wall
+//!   both closed).
+//!
+//! A derivative is flagged instead of given when a change of the field by
+//! [`PERTURBATION`] of its value (predicted to first order) changes the
+//! outcome (seated or not), the peak moves to another force maximum, a
+//! contact grazes (an event appears or vanishes), or an event is crossed
+//! tangentially.
+
+use nalgebra::SVector;
+
+use super::fields::{FIELDS, N_FIELDS};
+use super::trajectory::{Derivatives, N_CONTACTS, Scan};
+use crate::compliant_peg::directions::CompliantDirections;
+use crate::compliant_peg::sensitivity::CONTACTS;
+use crate::compliant_peg::system::N_STATE;
+
+/// The relative change of a field within which a derivative must hold for
+/// it to be reported.
+pub const PERTURBATION: f64 = 1e-3;
+
+/// One metric's derivative along one field.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    /// The metric, with its unit (`seat_time_s`).
+    pub metric: &'static str,
+    /// The field (its name in the scene).
+    pub parameter: &'static str,
+    /// The metric's value (None when the run has none, e.g. not seated).
+    pub value: Option<f64>,
+    /// `∂m/∂q` (None when flagged).
+    pub derivative: Option<f64>,
+    /// `q/m ∂m/∂q` (None when flagged or `m = 0`).
+    pub elasticity: Option<f64>,
+    /// Why there is no derivative, or that the field is not used; empty
+    /// otherwise.
+    pub flag: String,
+}
+
+/// The metric names, in output order.
+pub const METRICS: [&str; 5] = [
+    "seat_time_s",
+    "final_depth_m",
+    "peak_contact_force_N",
+    "two_point_start_s",
+    "two_point_end_s",
+];
+
+/// A metric of the run: value, derivatives along every field, and a flag
+/// for every field (empty where the derivative holds).
+struct Metric<'a> {
+    name: &'static str,
+    value: Option<f64>,
+    derivative: SVector<f64, N_FIELDS>,
+    flag: Box<dyn Fn(usize) -> Option<String> + 'a>,
+}
+
+/// The rows of `chosen` fields (indices into [`FIELDS`]), `unused[k]`
+/// marking the fields that move nothing.
+pub(super) fn rows(
+    sys: &CompliantDirections<N_FIELDS>,
+    values: &SVector<f64, N_FIELDS>,
+    (scan, d): (&Scan, &Derivatives),
+    y0: &SVector<f64, N_STATE>,
+    (t_end, target): (f64, f64),
+    chosen: &[usize],
+    unused: &[bool; N_FIELDS],
+) -> Vec<Row> {
+    let shift = |k: usize, der: f64| PERTURBATION * values[k].abs() * der.abs();
+    let mut metrics: Vec<Metric> = Vec::new();
+    // Seat time.
+    match &d.seated {
+        Some(e) => {
+            let (t, dt) = (e.t, e.dt_dp);
+            metrics.push(Metric {
+                name: METRICS[0],
+                value: Some(t),
+                derivative: dt,
+                flag: Box::new(move |k| {
+                    (t_end - t < shift(k, dt[k])).then(|| {
+                        "seated near t_end: a 0.1% change of the field leaves the peg unseated"
+                            .to_owned()
+                    })
+                }),
+            });
+        }
+        None => metrics.push(Metric {
+            name: METRICS[0],
+            value: None,
+            derivative: SVector::zeros(),
+            flag: Box::new(|_| Some("not seated within t_end".to_owned())),
+        }),
+    }
+    // Final depth.
+    let (l_y, l_q) = sys.depth_gradient(&d.y);
+    let depth = sys.depth(&d.y);
+    let dl = d.dy.transpose() * l_y + l_q;
+    let seated = d.seated.is_some();
+    metrics.push(Metric {
+        name: METRICS[1],
+        value: Some(depth),
+        derivative: dl,
+        flag: Box::new(move |k| {
+            (!seated && target - depth < shift(k, dl[k])).then(|| {
+                "ends near the target depth: a 0.1% change of the field seats the peg".to_owned()
+            })
+        }),
+    });
+    // Peak contact force.
+    if let Some((c, _, f, df)) = d.peak {
+        let gap = f - scan.runner_up;
+        metrics.push(Metric {
+            name: METRICS[2],
+            value: Some(f),
+            derivative: df,
+            flag: Box::new(move |k| {
+                (gap < 2.0 * shift(k, df[k]) || gap <= 1e-9 * f).then(|| {
+                    format!(
+                        "the peak switches to another force maximum within a 0.1% change \
+                         (peak on {} {f:.6e} N; next maximum {:.6e} N)",
+                        CONTACTS[c], scan.runner_up
+                    )
+                })
+            }),
+        });
+    }
+    if d.peak.is_none()
+        && let Some((c, _, f)) = scan.peak
+    {
+        // The plain pass saw the peak; the sensitivity run did not locate
+        // it between that pass's steps around it.
+        metrics.push(Metric {
+            name: METRICS[2],
+            value: Some(f),
+            derivative: SVector::zeros(),
+            flag: Box::new(move |_| {
+                Some(format!(
+                    "the peak on {} was not located by the sensitivity run",
+                    CONTACTS[c]
+                ))
+            }),
+        });
+    }
+    // Two-point contact: one edge and the opposite wall closed.
+    // A contact is closed when it penetrates. One only touching at the
+    // start (a two-point start: within rounding, below 1e-9 of the
+    // smaller fillet) takes its state at the end of the plain pass's first
+    // step; its events before then are rounding at the start.
+    let p = sys.parameter_vector();
+    let touch = 1e-9 * p[5].min(p[6]);
+    let touching: [bool; N_CONTACTS] = std::array::from_fn(|c| sys.delta(c, y0).abs() <= touch);
+    let mut closed: [bool; N_CONTACTS] = std::array::from_fn(|c| {
+        if touching[c] {
+            scan.first_closed[c]
+        } else {
+            sys.delta(c, y0) > 0.0
+        }
+    });
+    let two_point = |s: &[bool; N_CONTACTS]| (s[0] && s[1]) || (s[2] && s[3]);
+    let (mut began, mut ended) = (None, None);
+    let mut was = two_point(&closed);
+    let first_step = scan.times.get(1).copied().unwrap_or(f64::INFINITY);
+    for (c, e) in &d.contacts {
+        if touching[*c] && e.t < first_step {
+            continue;
+        }
+        closed[*c] = sys.delta_rate(*c, &e.y) > 0.0;
+        let now = two_point(&closed);
+        if now && !was && began.is_none() {
+            began = Some((e.t, e.dt_dp));
+        }
+        if !now && was && ended.is_none() {
+            ended = Some((e.t, e.dt_dp));
+        }
+        was = now;
+    }
+    let grazing = scan.grazing;
+    for (name, hit) in [(METRICS[3], began), (METRICS[4], ended)] {
+        if let Some((t, dt)) = hit {
+            metrics.push(Metric {
+                name,
+                value: Some(t),
+                derivative: dt,
+                flag: Box::new(move |_| {
+                    grazing.map(|(c, tg)| {
+                        format!(
+                            "contact {} grazes at t = {tg:.6e} s: an event appears or vanishes \
+                             within a small change",
+                            CONTACTS[c]
+                        )
+                    })
+                }),
+            });
+        }
+    }
+    let mut out = Vec::new();
+    for m in &metrics {
+        for &k in chosen {
+            let flag = if unused[k] {
+                Some("not used by this model".to_owned())
+            } else {
+                (m.flag)(k)
+            };
+            let (derivative, elasticity) = match (&flag, unused[k]) {
+                (_, true) => (Some(0.0), Some(0.0)),
+                (Some(_), false) => (None, None),
+                (None, false) => {
+                    let der = m.derivative[k];
+                    let el = m.value.filter(|v| *v != 0.0).map(|v| values[k] / v * der);
+                    (Some(der), el)
+                }
+            };
+            // A derivative that overflowed (a degenerate contact geometry,
+            // say) is flagged, never written as a number.
+            let (flag, derivative, elasticity) = match derivative {
+                Some(v) if !v.is_finite() || elasticity.is_some_and(|e| !e.is_finite()) => (
+                    Some("the derivative is not finite at this point".to_owned()),
+                    None,
+                    None,
+                ),
+                _ => (flag, derivative, elasticity),
+            };
+            out.push(Row {
+                metric: m.name,
+                parameter: FIELDS[k],
+                value: m.value,
+                derivative,
+                elasticity,
+                flag: flag.unwrap_or_default(),
+            });
+        }
+    }
+    out
+}
+
+/// The rows of a run whose sensitivities failed: every metric of the
+/// chosen fields flagged with `reason`.
+pub(super) fn failed(chosen: &[usize], reason: &str) -> Vec<Row> {
+    METRICS
+        .iter()
+        .flat_map(|m| {
+            chosen.iter().map(move |&k| Row {
+                metric: m,
+                parameter: FIELDS[k],
+                value: None,
+                derivative: None,
+                elasticity: None,
+                flag: reason.to_owned(),
+            })
+        })
+        .collect()
+}

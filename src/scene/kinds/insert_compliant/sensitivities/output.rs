@@ -1,0 +1,125 @@
+//! The outputs of a `[sensitivities]` table: `<scene>.sensitivities.csv`
+//! (one row per metric and field: `metric, parameter, value, derivative,
+//! elasticity, flag`; a flagged derivative and elasticity are empty cells),
+//! the tornado plot `<scene>.sensitivities.svg` (per metric, the fields'
+//! elasticities as bars, largest magnitude on top; flagged fields are left
+//! out) and the ranking `pegdyn run` prints (the fields by |elasticity|
+//! for each metric).
+
+use super::metrics::{METRICS, Row};
+use crate::error::RunError;
+use crate::output::csv::format_f64;
+use crate::output::names::Part;
+use crate::output::plot::{Figure, Panel, Series};
+use crate::scene::context::RunContext;
+use crate::scene::summary::Metric;
+
+/// The CSV's header.
+pub const HEADER: [&str; 6] = [
+    "metric",
+    "parameter",
+    "value",
+    "derivative",
+    "elasticity",
+    "flag",
+];
+
+/// The fields shown per metric in the printed ranking.
+const RANKED: usize = 5;
+
+/// Elasticities below this are left out of the ranking and the plot
+/// (e.g. the final depth of a seated run, the target depth by definition,
+/// moves with no other field).
+const NEGLIGIBLE: f64 = 1e-9;
+
+/// Half the height of a tornado bar (the bars sit on integer rows).
+const BAR: f64 = 0.35;
+
+/// The field's name without the table prefix (`friction`).
+fn short(parameter: &str) -> &str {
+    parameter
+        .strip_prefix("insert_compliant.")
+        .unwrap_or(parameter)
+}
+
+/// Writes the CSV and the tornado plot, and returns the ranking as notes.
+///
+/// # Errors
+/// The files cannot be written.
+pub(super) fn write(ctx: &RunContext, rows: &[Row]) -> Result<Vec<Metric>, RunError> {
+    let part = Part::Sub("sensitivities");
+    let mut csv = ctx.table(part, &HEADER)?;
+    let cell = |v: Option<f64>| v.map(format_f64).unwrap_or_default();
+    for r in rows {
+        csv.row_cells(&[
+            r.metric,
+            r.parameter,
+            &cell(r.value),
+            &cell(r.derivative),
+            &cell(r.elasticity),
+            &r.flag,
+        ])?;
+    }
+    csv.finish()?;
+    let mut fig = Figure::new();
+    let mut notes = Vec::new();
+    for metric in METRICS {
+        let mut ranked: Vec<(&str, f64)> = rows
+            .iter()
+            .filter(|r| r.metric == metric && r.flag.is_empty())
+            .filter_map(|r| r.elasticity.map(|e| (short(r.parameter), e)))
+            .filter(|(_, e)| e.abs() > NEGLIGIBLE)
+            .collect();
+        ranked.sort_by(|a, b| b.1.abs().total_cmp(&a.1.abs()));
+        let flagged = rows
+            .iter()
+            .filter(|r| r.metric == metric && !r.flag.is_empty() && r.derivative.is_none())
+            .count();
+        if ranked.is_empty() {
+            if flagged > 0 {
+                notes.push(Metric::note(
+                    format!("sensitivities of {metric}"),
+                    "every derivative flagged (see the flag column of the CSV)",
+                ));
+            }
+            continue;
+        }
+        let text = ranked
+            .iter()
+            .take(RANKED)
+            .map(|(p, e)| format!("{p} {e:+.3}"))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let more = if flagged > 0 {
+            format!("; {flagged} flagged")
+        } else {
+            String::new()
+        };
+        notes.push(Metric::note(
+            format!("elasticities of {metric}"),
+            format!("{text}{more}"),
+        ));
+        let mut panel = Panel::new(
+            &format!("Elasticities of {metric}"),
+            "q/m dm/dq",
+            "rank (largest on top)",
+        );
+        let n = ranked.len();
+        for (i, (p, e)) in ranked.iter().enumerate() {
+            let y = (n - 1 - i) as f64;
+            let bar = vec![
+                (0.0, y - BAR),
+                (*e, y - BAR),
+                (*e, y + BAR),
+                (0.0, y + BAR),
+                (0.0, y - BAR),
+            ];
+            panel = panel.with(Series::line(format!("{p} {e:+.3}"), bar).colored(i % 8));
+        }
+        fig.panels.push(panel);
+    }
+    if !fig.panels.is_empty() {
+        ctx.figure(part, &fig)?;
+    }
+    Ok(notes)
+}
