@@ -136,14 +136,16 @@ def attrs(d):
     return " ".join(f'{k}="{v}"' for k, v in d.items())
 
 
-def _ring_capsules(name, n, radius, z, size, extra, phase=0.0):
-    """n capsules whose axes circumscribe the circle of `radius` at height z
-    (segment midpoints on the circle, the first at azimuth `phase`)."""
+def _ring_capsules(name, n, radius, z, size, extra, inscribed=False):
+    """n capsules along a polygon about the circle of `radius` at height z:
+    circumscribed (segment midpoints on the circle, at azimuths 2 pi k / n)
+    or inscribed (vertices on the circle, at azimuths 2 pi k / n)."""
     out = []
-    rv = radius / math.cos(math.pi / n)
+    rv = radius if inscribed else radius / math.cos(math.pi / n)
+    half = 0.0 if inscribed else 0.5
     for k in range(n):
-        a0 = phase + (k - 0.5) * 2 * math.pi / n
-        a1 = phase + (k + 0.5) * 2 * math.pi / n
+        a0 = (k - half) * 2 * math.pi / n
+        a1 = (k + 1 - half) * 2 * math.pi / n
         p0 = (rv * math.cos(a0), rv * math.sin(a0), z)
         p1 = (rv * math.cos(a1), rv * math.sin(a1), z)
         ft = " ".join(repr(v) for v in p0 + p1)
@@ -194,7 +196,8 @@ def model_xml(sc, setting):
     # The peg in its body frame: origin at the compliance centre, z along
     # the axis; the tip lc below it.
     tip = -sc.lc
-    rim = _ring_capsules("rim", n, sc.r - sc.rho_p, tip + sc.rho_p, sc.rho_p, f'contype="3" conaffinity="0" {g}')
+    rim = _ring_capsules("rim", n, sc.r - sc.rho_p, tip + sc.rho_p, sc.rho_p, f'contype="3" conaffinity="0" {g}',
+                         inscribed=True)
     side = (f'<geom name="side" type="cylinder" fromto="0 0 {tip + sc.rho_p!r} 0 0 {tip + sc.length!r}" '
             f'size="{sc.r!r}" contype="1" conaffinity="0" {g}/>')
     ix, iy, iz = sc.c0
