@@ -399,7 +399,7 @@ def main():
     ap.add_argument("--settings", default="defaults,converged", help="comma-separated settings")
     ap.add_argument("--pegdyn", default=str(REPO / "target" / "release" / "pegdyn"), help="pegdyn binary")
     ap.add_argument("--no-pegdyn", action="store_true", help="MuJoCo only")
-    ap.add_argument("--timeout", type=float, default=120.0, help="CPU s per MuJoCo run (default 120)")
+    ap.add_argument("--timeout", type=float, default=300.0, help="CPU s per MuJoCo run (default 300)")
     ap.add_argument("--converge", metavar="SCENE", help="print the convergence ladder on SCENE")
     ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
                     help="override a setting's step, timeconst, segments, cone or impratio")
