@@ -12,10 +12,12 @@ scene's TOML (``mujoco_insertion_model.py``):
   round a ring of capsules of radius rho_h (the torus about the circle of
   radius R + rho_h at depth rho_h); the bore a ring of thin boxes whose
   faces touch the bore radius R, the top face a ring of boxes outside the
-  round, the bottom a disc. Capsule rings circumscribe their circle and box
-  faces touch theirs at segment midpoints, the first at azimuth 0 (the
+  round, the bottom a disc. The mouth's capsules circumscribe their circle
+  and the boxes' faces touch theirs at segment midpoints, the rim's
+  capsules meet on their circle at vertices, each at azimuth 0 and pi (the
   scene's lateral error and tilt lie in the x-z plane, where the contacts
-  are). Only pegdyn's five pairs collide: side with round (edge_side), rim
+  are): a rim vertex meets a wall face in one point, not a flat segment
+  lying on a flat face. Only pegdyn's five pairs collide: side with round (edge_side), rim
   with round, wall, top face and bottom. Friction mu on every geom,
   condim 3.
 * Wrist and robot: a heavy body (1e9 kg, gravity compensated) on three
@@ -35,19 +37,23 @@ scene's TOML (``mujoco_insertion_model.py``):
   pegdyn's release test: wrist springs and dampers removed, robot stopped,
   ``criteria.release_time`` simulated; wedged when two or more points keep
   half of the total normal force. A contact point is a cluster of MuJoCo
-  contacts of one pair within 0.5 mm (neighbouring segments share a point);
-  its force is their sum.
+  contacts of one pair, each within 0.2 r of another (neighbouring
+  segments share a point); its force is their sum. Forces are each pair's
+  normal force averaged over the 0.1 ms between checks: MuJoCo's contact
+  forces alternate from step to step (the impulse over the interval is
+  what moves the peg).
 
 Usage::
 
-    python3 benches/peers/mujoco_insertion.py            # both settings, five scenes (~10 min)
-    python3 benches/peers/mujoco_insertion.py --quick    # insert_rcc, both settings (< 2 min)
+    python3 benches/peers/mujoco_insertion.py            # both settings, five scenes (about 4 min CPU)
+    python3 benches/peers/mujoco_insertion.py --quick    # insert_rcc, both settings (about 30 s CPU)
     python3 benches/peers/mujoco_insertion.py --variations   # also lateral errors 0.1 and 0.6 mm
     python3 benches/peers/mujoco_insertion.py --converge scenes/insert_rcc.toml   # the ladder
 
 Prints, per scene and setting, outcome, seat (end) time, peak contact force,
 peak wrist force and CPU s per simulated second beside pegdyn's
-(``target/release/pegdyn run <scene> --out <tmp> --no-replay``, its summary).
+(``target/release/pegdyn run <scene> --out <tmp> --no-replay``, one
+thread: its summary and its CSV).
 """
 
 import argparse
@@ -392,7 +398,7 @@ def converge(path, timeout):
 
 def main():
     ap = argparse.ArgumentParser(description="pegdyn's insert_rcc scenes in MuJoCo beside pegdyn.")
-    ap.add_argument("--quick", action="store_true", help="insert_rcc only (< 2 min)")
+    ap.add_argument("--quick", action="store_true", help="insert_rcc only (about 30 s CPU)")
     ap.add_argument("--variations", action="store_true",
                     help="also insert_rcc with lateral errors of 0.1 and 0.6 mm")
     ap.add_argument("--scenes", help="comma-separated scene files instead of the shipped five")
