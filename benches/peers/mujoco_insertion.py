@@ -284,7 +284,9 @@ class Peer:
             t_end = d.time
             pts = self.points()
             npts = sum(len(p) for p in pts.values())
-            speed = np.linalg.norm(d.cvel[self.peg][3:])
+            vel = np.zeros(6)  # (angular, linear) at the peg frame's origin, world axes
+            mujoco.mj_objectVelocity(m, d, mujoco.mjtObj.mjOBJ_BODY, self.peg, vel, 0)
+            speed = np.linalg.norm(vel[3:])
             if -self.tip()[2] > sc.rho_h and npts >= 2 and speed < 1e-4:
                 outcome = self.stuck(pts, "")
             else:
