@@ -45,7 +45,7 @@ scene's TOML (``mujoco_insertion_model.py``):
 
 Usage::
 
-    python3 benches/peers/mujoco_insertion.py            # both settings, five scenes (about 4 min CPU)
+    python3 benches/peers/mujoco_insertion.py            # both settings, five scenes (about 3 min CPU)
     python3 benches/peers/mujoco_insertion.py --quick    # insert_rcc, both settings (about 30 s CPU)
     python3 benches/peers/mujoco_insertion.py --variations   # also lateral errors 0.1 and 0.6 mm
     python3 benches/peers/mujoco_insertion.py --converge scenes/insert_rcc.toml   # the ladder
