@@ -16,13 +16,12 @@
 
 use nalgebra::{SMatrix, SVector};
 
-use super::params::{CompliantParams, ContactSet, FrictionLaw, Load, N_PARAMS};
+use super::params::{CompliantParams, Load, N_PARAMS};
 use super::system::N_STATE;
 use crate::generated::compliant_peg as all;
 use crate::integrate::Direction;
 use crate::scalar::Dual;
 use crate::sensitivity::{ParameterJacobian, SensitivityError, SensitivityEvent};
-use crate::system::OdeSystem;
 
 /// Dual numbers seeded in the 8 states and the 24 parameters.
 type D = Dual<{ N_STATE + N_PARAMS }>;
@@ -53,16 +52,7 @@ impl<const Q: usize> CompliantDirections<Q> {
         dp: SMatrix<f64, N_PARAMS, Q>,
         values: SVector<f64, Q>,
     ) -> Result<Self, SensitivityError> {
-        if params.spec.contacts != ContactSet::All {
-            return Err(SensitivityError::Unsupported {
-                what: "the compliant planar peg with the lean contact set",
-            });
-        }
-        if params.spec.friction_law != FrictionLaw::Regularized {
-            return Err(SensitivityError::Unsupported {
-                what: "the compliant planar peg with the elastic friction law",
-            });
-        }
+        super::ode_at_parameters::check_supported(params)?;
         Ok(CompliantDirections {
             p: params.vector(load),
             dp,
@@ -200,23 +190,7 @@ impl<const Q: usize> CompliantDirections<Q> {
     }
 }
 
-impl<const Q: usize> OdeSystem<N_STATE> for CompliantDirections<Q> {
-    fn rhs(&self, _t: f64, y: &SVector<f64, N_STATE>) -> SVector<f64, N_STATE> {
-        all::rhs(y, &self.p)
-    }
-
-    fn jacobian(&self, _t: f64, y: &SVector<f64, N_STATE>) -> SMatrix<f64, N_STATE, N_STATE> {
-        all::jacobian(y, &self.p)
-    }
-
-    fn time_derivative(&self, _t: f64, _y: &SVector<f64, N_STATE>) -> SVector<f64, N_STATE> {
-        SVector::zeros()
-    }
-
-    fn state_names(&self) -> &'static [&'static str] {
-        &all::Y_NAMES
-    }
-}
+super::ode_at_parameters::impl_ode_at_parameters!(CompliantDirections, Q);
 
 impl<const Q: usize> ParameterJacobian<N_STATE, Q> for CompliantDirections<Q> {
     fn parameters(&self) -> SVector<f64, Q> {

@@ -12,6 +12,7 @@ pub mod directions;
 pub mod elastic;
 pub mod geometry;
 pub mod initial;
+mod ode_at_parameters;
 pub mod params;
 pub mod sensitivity;
 pub mod simulate;

@@ -16,13 +16,12 @@
 
 use nalgebra::{SMatrix, SVector};
 
-use super::params::{CompliantParams, ContactSet, FrictionLaw, Load, N_PARAMS};
+use super::params::{CompliantParams, Load, N_PARAMS};
 use super::system::N_STATE;
 use crate::generated::compliant_peg as all;
 use crate::integrate::Direction;
 use crate::scalar::Dual;
 use crate::sensitivity::{ParameterJacobian, SensitivityError, SensitivityEvent};
-use crate::system::OdeSystem;
 
 /// The contacts of the model, in the order of its `contacts` outputs.
 pub const CONTACTS: [&str; 4] = ["edge_left", "wall_right", "edge_right", "wall_left"];
@@ -52,16 +51,7 @@ impl<const P: usize> CompliantSensitivity<P> {
         load: &Load,
         names: [&str; P],
     ) -> Result<Self, SensitivityError> {
-        if params.spec.contacts != ContactSet::All {
-            return Err(SensitivityError::Unsupported {
-                what: "the compliant planar peg with the lean contact set",
-            });
-        }
-        if params.spec.friction_law != FrictionLaw::Regularized {
-            return Err(SensitivityError::Unsupported {
-                what: "the compliant planar peg with the elastic friction law",
-            });
-        }
+        super::ode_at_parameters::check_supported(params)?;
         let mut columns = [0; P];
         for (k, name) in names.iter().enumerate() {
             let Some(c) = all::P_NAMES.iter().position(|n| n == name) else {
@@ -148,23 +138,7 @@ impl<const P: usize> CompliantSensitivity<P> {
     }
 }
 
-impl<const P: usize> OdeSystem<N_STATE> for CompliantSensitivity<P> {
-    fn rhs(&self, _t: f64, y: &SVector<f64, N_STATE>) -> SVector<f64, N_STATE> {
-        all::rhs(y, &self.p)
-    }
-
-    fn jacobian(&self, _t: f64, y: &SVector<f64, N_STATE>) -> SMatrix<f64, N_STATE, N_STATE> {
-        all::jacobian(y, &self.p)
-    }
-
-    fn time_derivative(&self, _t: f64, _y: &SVector<f64, N_STATE>) -> SVector<f64, N_STATE> {
-        SVector::zeros()
-    }
-
-    fn state_names(&self) -> &'static [&'static str] {
-        &all::Y_NAMES
-    }
-}
+super::ode_at_parameters::impl_ode_at_parameters!(CompliantSensitivity, P);
 
 impl<const P: usize> ParameterJacobian<N_STATE, P> for CompliantSensitivity<P> {
     fn parameters(&self) -> SVector<f64, P> {
