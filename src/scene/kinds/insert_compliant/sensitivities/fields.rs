@@ -58,32 +58,41 @@ pub const FIELDS: [&str; N_FIELDS] = [
 /// no model parameter, only the seating event).
 pub const TARGET_DEPTH: usize = 16;
 
+/// The field at index `k` of [`FIELDS`] in `p`: one place that ties the
+/// names' order to the scene's fields (`com_height` is written as its
+/// default `L/2` when it was not).
+fn slot(p: &mut InsertParams, k: usize) -> &mut f64 {
+    let half_length = 0.5 * p.peg_length;
+    match k {
+        0 => &mut p.hole_diameter,
+        1 => &mut p.clearance_ratio,
+        2 => &mut p.peg_length,
+        3 => &mut p.density,
+        4 => p.com_height.get_or_insert(half_length),
+        5 => &mut p.peg_fillet,
+        6 => &mut p.hole_fillet,
+        7 => &mut p.friction,
+        8 => &mut p.slip_velocity,
+        9 => &mut p.contact_damping,
+        10 => &mut p.tangential_damping,
+        11 => &mut p.axial_force,
+        12 => &mut p.radial_force,
+        13 => &mut p.torque,
+        14 => &mut p.initial_tilt,
+        15 => &mut p.initial_depth,
+        16 => &mut p.target_depth,
+        17 => &mut p.peg_material.youngs_modulus,
+        18 => &mut p.peg_material.poisson_ratio,
+        19 => &mut p.hole_material.youngs_modulus,
+        _ => &mut p.hole_material.poisson_ratio,
+    }
+}
+
 /// The fields' values in a scene (`com_height` its default `L/2` when not
 /// written).
 pub fn values(p: &InsertParams) -> SVector<f64, N_FIELDS> {
-    SVector::from([
-        p.hole_diameter,
-        p.clearance_ratio,
-        p.peg_length,
-        p.density,
-        p.com_height.unwrap_or(0.5 * p.peg_length),
-        p.peg_fillet,
-        p.hole_fillet,
-        p.friction,
-        p.slip_velocity,
-        p.contact_damping,
-        p.tangential_damping,
-        p.axial_force,
-        p.radial_force,
-        p.torque,
-        p.initial_tilt,
-        p.initial_depth,
-        p.target_depth,
-        p.peg_material.youngs_modulus,
-        p.peg_material.poisson_ratio,
-        p.hole_material.youngs_modulus,
-        p.hole_material.poisson_ratio,
-    ])
+    let mut written = p.clone();
+    SVector::from_fn(|k, _| *slot(&mut written, k))
 }
 
 /// A change of every field (`d` of each, in [`FIELDS`] order).
@@ -238,31 +247,7 @@ mod tests {
     /// The scene with field `k` set to `v`.
     fn with(s: &InsertCompliantScene, k: usize, v: f64) -> InsertCompliantScene {
         let mut s = s.clone();
-        let p = &mut s.insert_compliant;
-        let slot: &mut f64 = match k {
-            0 => &mut p.hole_diameter,
-            1 => &mut p.clearance_ratio,
-            2 => &mut p.peg_length,
-            3 => &mut p.density,
-            4 => p.com_height.insert(v),
-            5 => &mut p.peg_fillet,
-            6 => &mut p.hole_fillet,
-            7 => &mut p.friction,
-            8 => &mut p.slip_velocity,
-            9 => &mut p.contact_damping,
-            10 => &mut p.tangential_damping,
-            11 => &mut p.axial_force,
-            12 => &mut p.radial_force,
-            13 => &mut p.torque,
-            14 => &mut p.initial_tilt,
-            15 => &mut p.initial_depth,
-            16 => &mut p.target_depth,
-            17 => &mut p.peg_material.youngs_modulus,
-            18 => &mut p.peg_material.poisson_ratio,
-            19 => &mut p.hole_material.youngs_modulus,
-            _ => &mut p.hole_material.poisson_ratio,
-        };
-        *slot = v;
+        *slot(&mut s.insert_compliant, k) = v;
         s
     }
 
