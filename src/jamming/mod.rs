@@ -8,6 +8,8 @@
 //! - [`quasi_static`]: the paper's Eqs. 51–54 in the paper's frame.
 //! - [`diagram`]: the jamming parallelogram, Whitney's and exact.
 //! - [`wedging`]: the wedging angle θ_c, exact and series.
+//! - [`sensitivities`]: derivatives of the corners, tilt and wedging angles
+//!   with respect to r, c, μ and l (generated, `jamming_design`).
 //! - [`space3d`]: the 3-D no-jamming inequalities (Eqs. 81–82).
 //! - [`dynamic`]: the sweep of compliant-contact insertions (needs `compliant`).
 //! - [`sweep`]: the dynamic sweep driver (rayon) and its comparison with the diagram.
@@ -23,6 +25,7 @@ pub mod forces;
 pub mod geometry;
 pub mod params;
 pub mod quasi_static;
+pub mod sensitivities;
 pub mod space3d;
 pub mod statics;
 pub mod sweep;
