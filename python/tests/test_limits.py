@@ -105,9 +105,15 @@ def test_part_files_are_named_after_the_scene_with_a_dot(tmp_path):
     names = sorted(p.split("/")[-1] for p in r.paths)
     assert names == [
         "jamming.corners.csv",
+        "jamming.sensitivities.csv",
         "jamming.svg",
         "jamming.sweep.csv",
         "jamming.sweep.svg",
         "jamming.wedging.csv",
     ]
-    assert sorted(r.tables) == ["jamming.corners", "jamming.sweep", "jamming.wedging"]
+    assert sorted(r.tables) == [
+        "jamming.corners",
+        "jamming.sensitivities",
+        "jamming.sweep",
+        "jamming.wedging",
+    ]

@@ -97,6 +97,8 @@ pub fn points(module: &str) -> Option<Vec<Point>> {
         "compliant_peg" | "compliant_peg_lean" => Some(compliant(&steel_params, &[])),
         "compliant_peg_elastic" => Some(compliant(&steel_params_elastic, &UTILISATIONS)),
         "quasi_static" => Some(quasi_static()),
+        "jamming_design" => Some(jamming_design()),
+        "chamfer_capture" => Some(chamfer_capture()),
         "compliant_peg_3d" => Some(compliant_peg_3d()),
         "rigid_peg"
         | "rigid_peg_frictionless"
@@ -346,6 +348,57 @@ fn quasi_static() -> Vec<Point> {
                     .with("fx", ratio)
                     .with("fz", 1.0);
                 out.push(p.labelled(format!("theta={theta:e} l={l:e} ratio={ratio:.3}")));
+            }
+        }
+    }
+    out
+}
+
+/// The quasi-static design quantities of a 25 mm peg: clearance ratios
+/// 1e-5, 1e-3 and 0.04, friction 0.1, 0.5 and 1, depths 1.1, 2 and 100
+/// times the shallowest two-point depth √(D² − d²) (the exact tilt's
+/// square root loses digits as l → l_min), each where the exact wedging
+/// angle exists with a margin ((1 − c)² (1 + μ²) ≥ 1.01; at 1 its
+/// derivative is unbounded).
+fn jamming_design() -> Vec<Point> {
+    let (r, d) = (0.0125, 0.025);
+    let mut out = Vec::new();
+    for &c in &[1e-5, 1e-3, 0.04] {
+        for &mu in &[0.1, 0.5, 1.0] {
+            if (1.0f64 - c).powi(2) * (1.0 + mu * mu) < 1.01 {
+                continue;
+            }
+            let big_d = d / (1.0 - c);
+            let l_min = ((big_d - d) * (big_d + d)).sqrt();
+            for &k in &[1.1, 2.0, 100.0] {
+                let p = Point::new(
+                    format!("c={c:e} mu={mu} l={k} l_min"),
+                    &[("r", r), ("c", c), ("mu", mu), ("l", k * l_min)],
+                );
+                out.push(p);
+            }
+        }
+    }
+    out
+}
+
+/// The chamfer's capture widths: a 25 mm bore, radial clearances 50 µm
+/// and 1 µm, fillets from 0.1 to 2 mm, friction 0, 1e-6, 0.2 and 1.
+fn chamfer_capture() -> Vec<Point> {
+    let mut out = Vec::new();
+    for &gap in &[50e-6, 1e-6] {
+        for &(rho_p, rho_h) in &[(1e-4, 5e-4), (3e-4, 2e-3)] {
+            for &mu in &[0.0, 1e-6, 0.2, 1.0] {
+                out.push(Point::new(
+                    format!("gap={gap:e} rho_p={rho_p:e} rho_h={rho_h:e} mu={mu}"),
+                    &[
+                        ("r_peg", 0.0125 - gap),
+                        ("r_bore", 0.0125),
+                        ("rho_p", rho_p),
+                        ("rho_h", rho_h),
+                        ("mu", mu),
+                    ],
+                ));
             }
         }
     }

@@ -8,6 +8,9 @@
 //! - [`quasi_static`]: the paper's Eqs. 51–54 in the paper's frame.
 //! - [`diagram`]: the jamming parallelogram, Whitney's and exact.
 //! - [`wedging`]: the wedging angle θ_c, exact and series.
+//! - [`mod@sensitivities`]: derivatives of the corners, tilt and wedging
+//!   angles with respect to r, c, μ and l (generated, `jamming_design`;
+//!   [`sensitivities()`](fn@sensitivities) is re-exported here).
 //! - [`space3d`]: the 3-D no-jamming inequalities (Eqs. 81–82).
 //! - [`dynamic`]: the sweep of compliant-contact insertions (needs `compliant`).
 //! - [`sweep`]: the dynamic sweep driver (rayon) and its comparison with the diagram.
@@ -23,6 +26,7 @@ pub mod forces;
 pub mod geometry;
 pub mod params;
 pub mod quasi_static;
+pub mod sensitivities;
 pub mod space3d;
 pub mod statics;
 pub mod sweep;
@@ -32,3 +36,4 @@ pub mod wedging;
 
 pub use error::{ParamError, SlidingIndeterminate};
 pub use params::PegHole;
+pub use sensitivities::sensitivities;

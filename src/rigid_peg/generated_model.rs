@@ -151,7 +151,7 @@ fn lateral(loads: &Loads, psi: f64) -> f64 {
 
 /// Checks the parameters, the state's finiteness and the three-point range;
 /// returns the generated model's parameters (γ0 computed once, here).
-fn checked(
+pub(super) fn checked(
     p: &PegParams,
     q: Vector2<f64>,
     qdot: Vector2<f64>,

@@ -12,6 +12,8 @@
 //!   the generated model is tested against;
 //! - [`generated_model`]: the same model derived by the generator
 //!   (`pegdyn::generated::rigid_peg*`), in four variants;
+//! - [`reaction_sensitivity`]: derivatives of the accelerations and
+//!   reactions with respect to the geometry (γ0 following D and d);
 //! - [`prescribed`]: reactions and driving moments of a prescribed motion
 //!   (Fig. 9), through the generated model;
 //! - [`forward`], [`forward_events`], [`trajectory`], [`stop`]: forward
@@ -31,6 +33,7 @@ pub mod kinematics;
 pub mod modes;
 mod params;
 pub mod prescribed;
+pub mod reaction_sensitivity;
 pub mod static_hold;
 pub mod stick;
 pub mod stop;

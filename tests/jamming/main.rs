@@ -9,6 +9,7 @@ mod dynamic;
 mod input;
 mod quasi_static;
 mod scene;
+mod sensitivities;
 mod space3d;
 mod sweep;
 mod sweep_early_stop;

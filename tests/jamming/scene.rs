@@ -5,6 +5,7 @@
 
 use std::path::PathBuf;
 
+use pegdyn::jamming::sensitivities::sensitivities;
 use pegdyn::jamming::{PegHole, diagram, wedging};
 use pegdyn::output::sink::Sink;
 use pegdyn::scene::{self, Progress, RunContext};
@@ -69,6 +70,51 @@ fn scene_file_writes_corners_wedging_and_svg() {
     }
     let svg = std::fs::read_to_string(dir.join("jamming.svg")).unwrap();
     assert!(svg.starts_with("<svg") && svg.contains("c = 0.01, mu = 0.3"));
+
+    let (header, rows) = read_csv(&dir.join("jamming.sensitivities.csv"));
+    assert_eq!(header, "l_m,c,mu,kind,quantity,value,d_dr,d_dc,d_dmu,d_dl");
+    // 2 c × 2 μ × (3 Whitney + 2 exact) × 7 quantities, then per (c, μ)
+    // the series and Whitney's wedging angle and the exact one where it
+    // exists (not at c = 0.01, μ = 0.1).
+    assert_eq!(rows.len(), 2 * 2 * 5 * 7 + 4 * 2 + 3);
+    for row in &rows {
+        let (c, mu) = (num(&row[1]), num(&row[2]));
+        let p = PegHole::try_new(0.0125, c, mu).unwrap();
+        let got: Vec<f64> = row[5..].iter().map(|v| num(v)).collect();
+        let (value, g) = if row[3] == "wedging" {
+            assert_eq!(row[0], "");
+            let s = sensitivities(&p, 0.01).unwrap().wedging;
+            match row[4].as_str() {
+                "theta_exact_rad" => (wedging::wedging_angle(&p).unwrap(), s.exact.unwrap()),
+                "theta_series_rad" => (wedging::wedging_angle_series(&p), s.series),
+                "theta_whitney_rad" => (wedging::wedging_angle_whitney(&p), s.whitney),
+                other => panic!("quantity {other}"),
+            }
+        } else {
+            let l = num(&row[0]);
+            let s = sensitivities(&p, l).unwrap();
+            let (g, d) = match row[3].as_str() {
+                "whitney" => (diagram::whitney_parallelogram(&p, l).unwrap(), s.whitney),
+                "exact" => (
+                    diagram::exact_parallelogram(&p, l).unwrap().unwrap(),
+                    s.exact.unwrap(),
+                ),
+                other => panic!("kind {other}"),
+            };
+            let (slope, intercept) = g.two_point_line();
+            match row[4].as_str() {
+                "p1_fx_over_fz" => (g.corners[2][0], d.edge_corner.force_ratio),
+                "p1_m_over_rfz" => (g.corners[2][1], d.edge_corner.moment_ratio),
+                "q_fx_over_fz" => (g.corners[1][0], d.mirrored_corner.force_ratio),
+                "q_m_over_rfz" => (g.corners[1][1], d.mirrored_corner.moment_ratio),
+                "slope" => (slope, d.slope),
+                "intercept" => (intercept, d.intercept),
+                "tilt_rad" => (g.theta, d.tilt),
+                other => panic!("quantity {other}"),
+            }
+        };
+        assert_eq!(got, [value, g.r, g.c, g.mu, g.l], "{row:?}");
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

@@ -13,4 +13,5 @@ mod generated;
 mod generated_runtime;
 mod geometry;
 mod painleve;
+mod reaction_sensitivity;
 mod stick;

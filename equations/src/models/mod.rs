@@ -9,10 +9,12 @@ use crate::graph::Graph;
 use crate::model::Module;
 
 pub mod cart_pole;
+pub mod chamfer_capture;
 pub mod compliant_peg;
 pub mod compliant_peg_3d;
 pub mod double_pendulum;
 pub mod hertz;
+pub mod jamming_design;
 pub mod pendulum;
 pub mod quasi_static;
 pub mod rigid_peg;
@@ -67,12 +69,20 @@ pub const ALL: &[Builtin] = &[
     Builtin { name: "rigid_peg_planar", declare: rigid_peg::declare::declare_planar },
     Builtin { name: "rigid_peg_planar_frictionless", declare: rigid_peg::declare::declare_planar_frictionless },
     Builtin { name: compliant_peg_3d::NAME, declare: compliant_peg_3d::declare },
+    Builtin { name: jamming_design::NAME, declare: jamming_design::declare },
+    Builtin { name: chamfer_capture::NAME, declare: chamfer_capture::declare },
 ];
 
 /// The built-in models whose parameter Jacobians pegdyn's build generates
 /// ([`crate::Options::parameter_jacobians`]): those whose sensitivities it
-/// integrates. [`Builtin::module`] declares them the same way.
-pub const PARAMETER_JACOBIANS: &[&str] = &["compliant_peg", "rigid_peg"];
+/// integrates or evaluates (the quasi-static design quantities).
+/// [`Builtin::module`] declares them the same way.
+pub const PARAMETER_JACOBIANS: &[&str] = &[
+    "compliant_peg",
+    "rigid_peg",
+    jamming_design::NAME,
+    chamfer_capture::NAME,
+];
 
 /// Declares every built-in model ([`ALL`]) in `generator`, in order.
 ///

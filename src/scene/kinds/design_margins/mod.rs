@@ -32,6 +32,7 @@
 //! `replay.run = "nominal"` (default), `"worst"` or a grid index.
 
 pub mod chamfer;
+pub mod chamfer_sensitivity;
 pub mod depth;
 pub mod design;
 mod figures;

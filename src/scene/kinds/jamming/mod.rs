@@ -15,8 +15,12 @@
 //! every corner of Whitney's small-angle parallelogram and of the exact
 //! finite-angle one; no exact rows where two-point contact is impossible),
 //! `<out>/<name>.wedging.csv` (`c,mu,theta_wedge_rad`; `inf` where wedging is
-//! impossible at any tilt) and `<out>/<name>.svg` (the diagrams, Fig. 6
-//! style). An optional `[sweep]` table adds the dynamic check of one
+//! impossible at any tilt), `<out>/<name>.sensitivities.csv`
+//! (`l_m,c,mu,kind,quantity,value,d_dr,d_dc,d_dmu,d_dl`: the corners P₁ and
+//! Q, the two-point line and the tilt of each parallelogram, and the
+//! wedging angles (`l_m` empty), with their generated derivatives,
+//! `crate::jamming::sensitivities`) and `<out>/<name>.svg` (the diagrams,
+//! Fig. 6 style). An optional `[sweep]` table adds the dynamic check of one
 //! diagram ([`sweep`]).
 
 mod comparison;
@@ -238,6 +242,34 @@ impl Scene for JammingScene {
         for row in &wedging {
             let theta = row.theta.map_or_else(|| "inf".to_string(), format_f64);
             w.row_cells(&[&format_f64(row.c), &format_f64(row.mu), &theta])?;
+        }
+        w.finish()?;
+
+        drop(try_with_capacity::<table::SensitivityRow>(
+            points.saturating_mul(2 * table::QUANTITIES.len()),
+            "grid points",
+            "max_grid_points",
+        )?);
+        let derivatives = table::sensitivity_rows(p.r_m, &p.c, &p.mu, &p.l_m)?;
+        let header = [
+            "l_m", "c", "mu", "kind", "quantity", "value", "d_dr", "d_dc", "d_dmu", "d_dl",
+        ];
+        let mut w = ctx.table(Part::Sub("sensitivities"), &header)?;
+        for row in &derivatives {
+            let g = &row.gradient;
+            let cells = [
+                row.l.map_or_else(String::new, format_f64),
+                format_f64(row.c),
+                format_f64(row.mu),
+                row.kind.to_string(),
+                row.quantity.to_string(),
+                format_f64(row.value),
+                format_f64(g.r),
+                format_f64(g.c),
+                format_f64(g.mu),
+                format_f64(g.l),
+            ];
+            w.row_cells(&cells.each_ref().map(String::as_str))?;
         }
         w.finish()?;
 

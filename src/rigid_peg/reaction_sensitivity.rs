@@ -1,0 +1,149 @@
+//! Derivatives of the rigid three-point peg's accelerations and reactions
+//! with respect to its parameters, the geometry included: the hole
+//! diameter D, the peg diameter d and the height H (which places the
+//! centre of mass, at H/2 on the axis), the mass, gravity and friction.
+//!
+//! The generated model's forward system `A(x, p) u = b(x, p, loads, t)`,
+//! `u = (γ̈, ψ̈, N_K, N_B1, N_B2)`, has the generated parameter Jacobian
+//! `forward_p = ∂(b − A u)/∂p` at the solution (`docs/sensitivities.md`,
+//! "Parameter Jacobians, generated"), so
+//!
+//! ```text
+//! ∂u/∂p = A⁻¹ forward_p                          (one more solve with the same A)
+//! ```
+//!
+//! with p = (D_hole, d_peg, H, m, g, f, γ0). γ0 = arccos(d/D) is a
+//! parameter of its own there; the runtime's [`PegParams`] computes it
+//! from D and d, so a change of D or d also moves γ0:
+//!
+//! ```text
+//! du/dD = ∂u/∂D + ∂u/∂γ0 · d/(D √(D² − d²)),    du/dd = ∂u/∂d − ∂u/∂γ0 / √(D² − d²)
+//! ```
+//!
+//! The state (γ, ψ, γ̇, ψ̇), the loads and the friction directions `t` are
+//! held fixed: a caller whose friction directions follow the contact
+//! velocities (which move with the geometry) adds their own term.
+
+use nalgebra::{SMatrix, Vector2, Vector3};
+
+use crate::generated::rigid_peg;
+use crate::rigid_peg::dynamics::solve;
+use crate::rigid_peg::generated_inputs::{directions, state};
+use crate::rigid_peg::generated_model::checked;
+use crate::rigid_peg::{Loads, PegParams, RigidError};
+
+/// Derivatives of the forward unknowns with respect to one parameter
+/// (each per unit of that parameter).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ForwardDerivative {
+    /// Of the nutation acceleration γ̈ (rad/s² per unit).
+    pub gammaddot: f64,
+    /// Of the precession acceleration ψ̈ (rad/s² per unit).
+    pub psiddot: f64,
+    /// Of the normal force N_K at K (N per unit).
+    pub n_k: f64,
+    /// Of the normal force N_B1 at B1 (N per unit).
+    pub n_b1: f64,
+    /// Of the normal force N_B2 at B2 (N per unit).
+    pub n_b2: f64,
+}
+
+impl ForwardDerivative {
+    fn from_column(m: &SMatrix<f64, 5, 7>, k: usize) -> ForwardDerivative {
+        ForwardDerivative {
+            gammaddot: m[(0, k)],
+            psiddot: m[(1, k)],
+            n_k: m[(2, k)],
+            n_b1: m[(3, k)],
+            n_b2: m[(4, k)],
+        }
+    }
+
+    /// The entries in the order of the unknowns (γ̈, ψ̈, N_K, N_B1, N_B2).
+    pub fn to_array(&self) -> [f64; 5] {
+        [self.gammaddot, self.psiddot, self.n_k, self.n_b1, self.n_b2]
+    }
+}
+
+/// Derivatives of (γ̈, ψ̈, N_K, N_B1, N_B2) with respect to each field of
+/// [`PegParams`], γ0 = arccos(d/D) following D and d.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ForwardSensitivity {
+    /// With respect to the hole diameter D (per m), through γ0 too.
+    pub hole_diameter: ForwardDerivative,
+    /// With respect to the peg diameter d (per m), through γ0 too.
+    pub peg_diameter: ForwardDerivative,
+    /// With respect to the height H (per m): the length and the centre of
+    /// mass at H/2.
+    pub height: ForwardDerivative,
+    /// With respect to the mass m (per kg).
+    pub mass: ForwardDerivative,
+    /// With respect to gravity g (per m/s²).
+    pub gravity: ForwardDerivative,
+    /// With respect to the friction coefficient f.
+    pub friction: ForwardDerivative,
+    /// With respect to γ0 alone (per rad), D and d held fixed: the
+    /// generated model's own parameter, for callers that vary γ0
+    /// independently.
+    pub gamma0: ForwardDerivative,
+}
+
+/// `(∂γ0/∂D, ∂γ0/∂d)` of γ0 = arccos(d/D) (per m), with √(D² − d²)
+/// formed as √((D − d)(D + d)) for a small clearance.
+pub fn gamma0_gradient(p: &PegParams) -> [f64; 2] {
+    let (dh, dp) = (p.hole_diameter, p.peg_diameter);
+    let root = ((dh - dp) * (dh + dp)).sqrt();
+    [dp / (dh * root), -1.0 / root]
+}
+
+/// The derivatives of the forward dynamics' accelerations and normal
+/// forces (the full generated variant, `rigid_peg`) at state (q, q̇) under
+/// `loads` with friction directions `t` (K, B1, B2; rotating components,
+/// force on the peg), held fixed.
+///
+/// # Errors
+/// As [`crate::rigid_peg::generated_model::forward`]: invalid parameters
+/// or a non-finite state, γ outside (γ0, π/2), a singular system.
+pub fn forward_sensitivity(
+    p: &PegParams,
+    loads: &Loads,
+    q: Vector2<f64>,
+    qdot: Vector2<f64>,
+    t: &[Vector3<f64>; 3],
+) -> Result<ForwardSensitivity, RigidError> {
+    let pv = checked(p, q, qdot)?.into();
+    let x = state(q, qdot).into();
+    let l = rigid_peg::Loads::from(loads).into();
+    let tv = directions(t).into();
+    let sys = rigid_peg::forward(&x, &pv, &l, &tv);
+    let u = solve::<5>(&sys.a, &sys.b, q[0])?;
+    let rp = rigid_peg::forward_p(&x, &u, &pv, &l, &tv);
+    let du = match sys.a.lu().solve(&rp) {
+        Some(du) if du.iter().all(|v| v.is_finite()) => du,
+        _ => return Err(RigidError::Singular { gamma: q[0] }),
+    };
+    let col = |k| ForwardDerivative::from_column(&du, k);
+    let g0 = col(6);
+    let [g0_dh, g0_dp] = gamma0_gradient(p);
+    let chain = |k: usize, dg0: f64| {
+        let a = col(k).to_array();
+        let b = g0.to_array();
+        let v: [f64; 5] = std::array::from_fn(|i| a[i] + b[i] * dg0);
+        ForwardDerivative {
+            gammaddot: v[0],
+            psiddot: v[1],
+            n_k: v[2],
+            n_b1: v[3],
+            n_b2: v[4],
+        }
+    };
+    Ok(ForwardSensitivity {
+        hole_diameter: chain(0, g0_dh),
+        peg_diameter: chain(1, g0_dp),
+        height: col(2),
+        mass: col(3),
+        gravity: col(4),
+        friction: col(5),
+        gamma0: g0,
+    })
+}
