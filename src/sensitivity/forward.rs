@@ -175,12 +175,20 @@ where
         (t, z) = (sol.t_final, sol.x_final);
         let (y, s) = var.unpack(&z);
         let StopReason::Event { index, t: te } = sol.stop else {
+            // A budget run out counts the attempts of the whole run.
+            let stop = match sol.stop {
+                StopReason::MaxSteps { t, .. } => StopReason::MaxSteps {
+                    t,
+                    steps: stats.steps + stats.rejected,
+                },
+                other => other,
+            };
             return Ok(SensitivityRun {
                 t,
                 y,
                 s,
                 events: hits,
-                stop: sol.stop,
+                stop,
                 stats,
             });
         };

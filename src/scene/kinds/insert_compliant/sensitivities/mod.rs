@@ -28,6 +28,7 @@ use crate::error::{RunError, SceneError, SceneErrors};
 use crate::integrate::Options;
 use crate::scene::context::RunContext;
 use crate::scene::integrator::IntegratorSpec;
+use crate::scene::limits::WorkItem;
 use crate::scene::summary::Metric;
 use crate::compliant_peg::params::N_PARAMS;
 use crate::compliant_peg::system::N_STATE;
@@ -133,6 +134,31 @@ pub fn run(
         ));
     }
     Ok(notes)
+}
+
+/// Bytes of one step kept by the plain pass: the time, the state, and the
+/// four contacts' force and penetration (136 bytes), twice for the
+/// vectors' growth.
+const PASS_STEP_BYTES: f64 = 2.0 * 8.0 * (1 + N_STATE + 2 * trajectory::N_CONTACTS) as f64;
+
+/// The work of the sensitivities of `chosen` fields, for the scene's
+/// `[limits]`: the plain pass keeps up to `integrator.max_steps` steps
+/// (`max_output_samples`, and their memory), and the sensitivity run takes
+/// up to `integrator.max_steps` steps of `N (1 + P)` components for `P`
+/// integrated fields, counted as `(1 + P) · max_steps` steps of the
+/// model's `N` states (`max_steps`). Both name `sensitivities.parameters`.
+pub fn work(
+    p: &InsertParams,
+    b: &Built,
+    integrator: &IntegratorSpec,
+    chosen: &[usize],
+) -> Vec<WorkItem> {
+    let q = integrated(p, b, chosen).len() as f64;
+    let steps = integrator.max_steps as f64;
+    vec![
+        WorkItem::new(FIELD, "max_output_samples", steps, PASS_STEP_BYTES),
+        WorkItem::new(FIELD, "max_steps", (1.0 + q) * steps, 0.0),
+    ]
 }
 
 /// The fields integrated for `chosen` ones (indices into [`FIELDS`]):
