@@ -285,7 +285,11 @@ fn the_sensitivity_run_counts_against_the_limits() {
     // The shipped scene (default integrator.max_steps = 10^6) passes the
     // default limits: (1 + 8) 10^6 steps of the model's states.
     let shipped = crate::common::scene_text::shipped("insert_compliant_sensitivities");
-    assert!(SHIPPED.iter().all(|f| shipped.contains(&format!("\"{f}\""))));
+    assert!(
+        SHIPPED
+            .iter()
+            .all(|f| shipped.contains(&format!("\"{f}\"")))
+    );
     assert!(scene::parse(&shipped).is_ok());
     assert!(scene::parse(&shipped_with(&SHIPPED, "")).is_ok());
     // Below (1 + 8) 10^6, the sensitivity run is refused naming the field

@@ -23,6 +23,8 @@ use serde::Deserialize;
 
 use super::{Built, InsertParams};
 use crate::compliant_peg::directions::CompliantDirections;
+use crate::compliant_peg::params::N_PARAMS;
+use crate::compliant_peg::system::N_STATE;
 use crate::compliant_peg::{ContactSet, FrictionLaw};
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::integrate::Options;
@@ -30,8 +32,6 @@ use crate::scene::context::RunContext;
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::limits::WorkItem;
 use crate::scene::summary::Metric;
-use crate::compliant_peg::params::N_PARAMS;
-use crate::compliant_peg::system::N_STATE;
 use crate::sensitivity::SensitivityError;
 use fields::{FIELDS, N_FIELDS};
 use nalgebra::{SMatrix, SVector};
