@@ -267,12 +267,12 @@ struct Along<'a> {
     scan: &'a Scan,
 }
 
-/// Calls `$along.run::<Q, { N (1 + Q) }>()` for `Q` the number of columns,
-/// one of the listed sizes.
+/// Calls `$along.run::<Q, { N (1 + Q) }>()` for `Q` the least of the
+/// listed sizes that holds the columns.
 macro_rules! by_size {
     ($along:expr, $($q:literal)*) => {
         match $along.columns.len() {
-            $($q => $along.run::<$q, { N_STATE * (1 + $q) }>(),)*
+            $(n if n <= $q => $along.run::<$q, { N_STATE * (1 + $q) }>(),)*
             n => Err(StopOrError::Error(SensitivityError::Dimension {
                 m: N_STATE * (1 + n),
                 expected: N_STATE * (1 + N_FIELDS),
@@ -282,27 +282,46 @@ macro_rules! by_size {
 }
 
 impl Along<'_> {
-    /// The run with as many directions as columns (up to every field).
+    /// The run with at least as many directions as columns (up to every
+    /// field). Each size is a compiled copy of the integrator (about 4 s of
+    /// a release build's CPU each), so only eight sizes are compiled and
+    /// the columns are padded up to the next one (at most 1.6 times the
+    /// components of an exact fit).
     fn dispatch(&self) -> Result<Derivatives<N_FIELDS>, StopOrError> {
-        by_size!(self, 0 1 2 3 4 5 6 7 8 9 10 11 12 13 14 15 16 17 18 19 20 21)
+        by_size!(self, 0 1 2 4 6 8 12 21)
     }
 
-    /// The run along `Q` directions, `M = N (1 + Q)` components, widened
-    /// to every field (zero along those not integrated).
+    /// The run along `Q ≥ columns` directions, `M = N (1 + Q)` components,
+    /// widened to every field (zero along those not integrated). Directions
+    /// past the columns are padding: zero `∂p/∂q` and `∂y₀/∂q`, so their
+    /// sensitivities stay exactly zero and add nothing to the error
+    /// estimate. The error norm is a root mean square over the components,
+    /// so the tolerances are scaled by `√(N (1 + P) / M)` for `P` columns:
+    /// the padded run takes the steps the run along the columns alone would.
     fn run<const Q: usize, const M: usize>(&self) -> Result<Derivatives<N_FIELDS>, StopOrError> {
         let c = self.columns;
-        let dp = SMatrix::<f64, N_PARAMS, Q>::from_fn(|i, j| self.dp[(i, c[j])]);
-        let dy0 = SMatrix::<f64, N_STATE, Q>::from_fn(|i, j| self.dy0[(i, c[j])]);
-        let values = SVector::<f64, Q>::from_fn(|j, _| self.values[c[j]]);
+        let column = |j: usize| c.get(j).copied();
+        let dp =
+            SMatrix::<f64, N_PARAMS, Q>::from_fn(|i, j| column(j).map_or(0.0, |k| self.dp[(i, k)]));
+        let dy0 =
+            SMatrix::<f64, N_STATE, Q>::from_fn(|i, j| column(j).map_or(0.0, |k| self.dy0[(i, k)]));
+        let values = SVector::<f64, Q>::from_fn(|j, _| column(j).map_or(1.0, |k| self.values[k]));
         let sys = CompliantDirections::new(&self.b.params, &self.b.load, dp, values)?;
         let target_column = c.iter().position(|&k| k == fields::TARGET_DEPTH);
         let (t0, y0) = self.start;
+        #[allow(clippy::cast_precision_loss)] // component counts are small
+        let shrink = ((N_STATE * (1 + c.len())) as f64 / M as f64).sqrt();
+        let options = Options {
+            rtol: self.options.rtol * shrink,
+            atol: self.options.atol * shrink,
+            ..self.options.clone()
+        };
         let d = trajectory::derivatives::<Q, M>(
             &sys,
             (t0, y0, dy0),
             self.t_end,
             (self.target, target_column),
-            self.options,
+            &options,
             self.scan,
         )?;
         Ok(trajectory::widen(d, c))
