@@ -7,7 +7,7 @@
 //! ```toml
 //! [limits]
 //! max_output_samples = 1_000_000   # stored output times of one integration
-//! max_steps = 10_000_000           # integrator.max_steps
+//! max_steps = 10_000_000           # integrator.max_steps (a sensitivity run: (1 + P) times it)
 //! max_grid_points = 1_000_000      # points of a parameter grid (fig9 gamma x psidot)
 //! max_runs = 2_500                 # integrations of a sweep (jamming sweep n^2)
 //! max_memory_mb = 1_024            # estimated memory of the stored results, MiB
@@ -35,7 +35,9 @@ pub use super::reserve::{ReserveError, try_with_capacity};
 pub struct Limits {
     /// Largest number of stored output samples of one integration.
     pub max_output_samples: u64,
-    /// Largest integrator step budget (`integrator.max_steps`).
+    /// Largest integrator step budget (`integrator.max_steps`); a run
+    /// integrating `k` times the model's states per step (forward
+    /// sensitivities) counts `k` steps per step.
     pub max_steps: u64,
     /// Largest number of points of a parameter grid.
     pub max_grid_points: u64,

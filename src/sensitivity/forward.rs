@@ -107,7 +107,8 @@ pub fn event_jump<const N: usize, const P: usize>(
 /// Integrates `ẏ = f(y)` from `(t0, y0)` with its sensitivities from `s0 =
 /// ∂y₀/∂p` to `t_end` (explicit Dormand–Prince 5(4), error control on the
 /// state and the scaled sensitivities with `options`' tolerances; `options`'
-/// output settings are ignored). At each event the run stops, records
+/// output settings are ignored; `options.max_steps` bounds the attempted
+/// steps of the whole run, summed over its restarts). At each event the run stops, records
 /// `∂t_e/∂p`, and restarts there (the right-hand side is continuous across
 /// non-terminal events, so the sensitivities do not jump; a model that
 /// switches at an event ends the run with a terminal event and restarts
@@ -144,7 +145,22 @@ where
     let (mut t, mut z) = (t0, var.pack::<M>(&y0, &s0));
     let mut stats = Stats::default();
     let mut hits = Vec::new();
+    let budget = options.max_steps;
     loop {
+        // The restarts share the step budget.
+        let attempts = stats.steps + stats.rejected;
+        let Some(left) = budget.checked_sub(attempts).filter(|n| *n > 0) else {
+            let (y, s) = var.unpack(&z);
+            return Ok(SensitivityRun {
+                t,
+                y,
+                s,
+                events: hits,
+                stop: StopReason::MaxSteps { t, steps: attempts },
+                stats,
+            });
+        };
+        options.max_steps = left;
         let mut solver = Solver::<M>::new(Method::Dopri5, options.clone());
         for e in &events {
             let g = &e.value;
@@ -159,12 +175,20 @@ where
         (t, z) = (sol.t_final, sol.x_final);
         let (y, s) = var.unpack(&z);
         let StopReason::Event { index, t: te } = sol.stop else {
+            // A budget run out counts the attempts of the whole run.
+            let stop = match sol.stop {
+                StopReason::MaxSteps { t, .. } => StopReason::MaxSteps {
+                    t,
+                    steps: stats.steps + stats.rejected,
+                },
+                other => other,
+            };
             return Ok(SensitivityRun {
                 t,
                 y,
                 s,
                 events: hits,
-                stop: sol.stop,
+                stop,
                 stats,
             });
         };

@@ -11,5 +11,6 @@ mod integrators;
 mod kinematic;
 mod no_alloc;
 mod rosenbrock;
+mod sensitivity_budget;
 mod sensitivity_jump;
 mod stiff;

@@ -360,7 +360,16 @@ impl InsertCompliantScene {
 
 impl Written for Ready {
     fn work(&self) -> Vec<crate::scene::limits::WorkItem> {
-        self.scene.integrator.work("integrator")
+        let mut work = self.scene.integrator.work("integrator");
+        if !self.sensitivities.is_empty() {
+            work.extend(sensitivities::work(
+                &self.scene.insert_compliant,
+                &self.built,
+                &self.integrator,
+                &self.sensitivities,
+            ));
+        }
+        work
     }
 
     fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {

@@ -70,7 +70,7 @@ struct Metric<'a> {
 pub(super) fn rows(
     sys: &CompliantDirections<N_FIELDS>,
     values: &SVector<f64, N_FIELDS>,
-    (scan, d): (&Scan, &Derivatives),
+    (scan, d): (&Scan, &Derivatives<N_FIELDS>),
     y0: &SVector<f64, N_STATE>,
     (t_end, target): (f64, f64),
     chosen: &[usize],

@@ -23,15 +23,19 @@ use serde::Deserialize;
 
 use super::{Built, InsertParams};
 use crate::compliant_peg::directions::CompliantDirections;
+use crate::compliant_peg::params::N_PARAMS;
+use crate::compliant_peg::system::N_STATE;
 use crate::compliant_peg::{ContactSet, FrictionLaw};
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::integrate::Options;
 use crate::scene::context::RunContext;
 use crate::scene::integrator::IntegratorSpec;
+use crate::scene::limits::WorkItem;
 use crate::scene::summary::Metric;
 use crate::sensitivity::SensitivityError;
 use fields::{FIELDS, N_FIELDS};
-use trajectory::StopOrError;
+use nalgebra::{SMatrix, SVector};
+use trajectory::{Derivatives, Scan, StopOrError};
 
 /// The `[sensitivities]` table.
 #[derive(Debug, Clone, Deserialize)]
@@ -118,24 +122,65 @@ pub fn run(
     let (rows, work) = compute(p, b, integrator, chosen)?;
     let mut notes = output::write(ctx, &rows)?;
     if let Some((steps, calls)) = work {
+        let q = integrated(p, b, chosen).len();
         notes.push(Metric::note(
             "sensitivity run",
             format!(
-                "{steps} steps, {calls} evaluations of the variational system ({} fields \
-                 integrated together, {} asked for)",
-                N_FIELDS,
-                chosen.len()
+                "{steps} steps, {calls} evaluations of the variational system ({q} of the {} \
+                 fields named integrated, {} components)",
+                chosen.len(),
+                N_STATE * (1 + q)
             ),
         ));
     }
     Ok(notes)
 }
 
+/// Bytes of one step kept by the plain pass: the time, the state, and the
+/// four contacts' force and penetration (136 bytes), twice for the
+/// vectors' growth.
+const PASS_STEP_BYTES: f64 = 2.0 * 8.0 * (1 + N_STATE + 2 * trajectory::N_CONTACTS) as f64;
+
+/// The work of the sensitivities of `chosen` fields, for the scene's
+/// `[limits]`: the plain pass keeps up to `integrator.max_steps` steps
+/// (`max_output_samples`, and their memory), and the sensitivity run takes
+/// up to `integrator.max_steps` steps of `N (1 + P)` components for `P`
+/// integrated fields, counted as `(1 + P) · max_steps` steps of the
+/// model's `N` states (`max_steps`). Both name `sensitivities.parameters`.
+pub fn work(
+    p: &InsertParams,
+    b: &Built,
+    integrator: &IntegratorSpec,
+    chosen: &[usize],
+) -> Vec<WorkItem> {
+    let q = integrated(p, b, chosen).len() as f64;
+    let steps = integrator.max_steps as f64;
+    vec![
+        WorkItem::new(FIELD, "max_output_samples", steps, PASS_STEP_BYTES),
+        WorkItem::new(FIELD, "max_steps", (1.0 + q) * steps, 0.0),
+    ]
+}
+
+/// The fields integrated for `chosen` ones (indices into [`FIELDS`]):
+/// those that move something the run depends on, in [`FIELDS`] order. A
+/// field that moves nothing is a zero without integrating it.
+pub fn integrated(p: &InsertParams, b: &Built, chosen: &[usize]) -> Vec<usize> {
+    let (dp, dy0) = fields::jacobians(p, b);
+    let mut columns: Vec<usize> = chosen
+        .iter()
+        .copied()
+        .filter(|&k| !fields::unused(k, &dp, &dy0))
+        .collect();
+    columns.sort_unstable();
+    columns
+}
+
 /// The rows of `chosen` fields (indices into [`FIELDS`]) for the scene's
 /// parameters `p` built into `b`, integrated with `integrator`'s
 /// tolerances, span and step budget (always Dormand–Prince 5(4)), and the
 /// sensitivity run's accepted steps and right-hand-side evaluations (None
-/// when it failed and every row is flagged).
+/// when it failed and every row is flagged). Only the chosen fields that
+/// move something are integrated: `N (1 + P)` components for `P` of them.
 ///
 /// # Errors
 /// [`RunError::Sensitivity`] when the model refuses its parameters or
@@ -149,7 +194,10 @@ pub fn compute(
     let (dp, dy0) = fields::jacobians(p, b);
     let values = fields::values(p);
     let unused: [bool; N_FIELDS] = std::array::from_fn(|k| fields::unused(k, &dp, &dy0));
-    let sys = CompliantDirections::new(&b.params, &b.load, dp, values)?;
+    let columns = integrated(p, b, chosen);
+    // Every field's direction: the plain pass and the metrics' gradients
+    // (no integration along them).
+    let all = CompliantDirections::new(&b.params, &b.load, dp, values)?;
     let options = Options {
         max_steps: integrator.max_steps,
         h0: integrator.h,
@@ -157,8 +205,20 @@ pub fn compute(
     };
     let y0 = b.initial.to_vector();
     let (t0, t_end, target) = (integrator.t0, integrator.t_end, p.target_depth);
-    let scan = trajectory::scan(&sys, (t0, y0), t_end, target, &options)?;
-    let d = match trajectory::derivatives(&sys, (t0, y0, dy0), t_end, target, &options, &scan) {
+    let scan = trajectory::scan(&all, (t0, y0), t_end, target, &options)?;
+    let run = Along {
+        b,
+        dp: &dp,
+        dy0: &dy0,
+        values: &values,
+        columns: &columns,
+        start: (t0, y0),
+        t_end,
+        target,
+        options: &options,
+        scan: &scan,
+    };
+    let d = match run.dispatch() {
         Ok(d) => d,
         Err(StopOrError::Error(SensitivityError::TangentialEvent { t, .. })) => {
             return Ok((
@@ -181,7 +241,7 @@ pub fn compute(
         }
     };
     let rows = metrics::rows(
-        &sys,
+        &all,
         &values,
         (&scan, &d),
         &y0,
@@ -190,4 +250,80 @@ pub fn compute(
         &unused,
     );
     Ok((rows, Some(d.work)))
+}
+
+/// The sensitivity run along the fields `columns` (indices into
+/// [`FIELDS`]) of the full `∂p/∂q`, `∂y₀/∂q`.
+struct Along<'a> {
+    b: &'a Built,
+    dp: &'a SMatrix<f64, N_PARAMS, N_FIELDS>,
+    dy0: &'a SMatrix<f64, N_STATE, N_FIELDS>,
+    values: &'a SVector<f64, N_FIELDS>,
+    columns: &'a [usize],
+    start: (f64, SVector<f64, N_STATE>),
+    t_end: f64,
+    target: f64,
+    options: &'a Options,
+    scan: &'a Scan,
+}
+
+/// Calls `$along.run::<Q, { N (1 + Q) }>()` for `Q` the least of the
+/// listed sizes that holds the columns.
+macro_rules! by_size {
+    ($along:expr, $($q:literal)*) => {
+        match $along.columns.len() {
+            $(n if n <= $q => $along.run::<$q, { N_STATE * (1 + $q) }>(),)*
+            n => Err(StopOrError::Error(SensitivityError::Dimension {
+                m: N_STATE * (1 + n),
+                expected: N_STATE * (1 + N_FIELDS),
+            })),
+        }
+    };
+}
+
+impl Along<'_> {
+    /// The run with at least as many directions as columns (up to every
+    /// field). Each size is a compiled copy of the integrator (about 4 s of
+    /// a release build's CPU each), so only eight sizes are compiled and
+    /// the columns are padded up to the next one (at most 1.6 times the
+    /// components of an exact fit).
+    fn dispatch(&self) -> Result<Derivatives<N_FIELDS>, StopOrError> {
+        by_size!(self, 0 1 2 4 6 8 12 21)
+    }
+
+    /// The run along `Q ≥ columns` directions, `M = N (1 + Q)` components,
+    /// widened to every field (zero along those not integrated). Directions
+    /// past the columns are padding: zero `∂p/∂q` and `∂y₀/∂q`, so their
+    /// sensitivities stay exactly zero and add nothing to the error
+    /// estimate. The error norm is a root mean square over the components,
+    /// so the tolerances are scaled by `√(N (1 + P) / M)` for `P` columns:
+    /// the padded run takes the steps the run along the columns alone would.
+    fn run<const Q: usize, const M: usize>(&self) -> Result<Derivatives<N_FIELDS>, StopOrError> {
+        let c = self.columns;
+        let column = |j: usize| c.get(j).copied();
+        let dp =
+            SMatrix::<f64, N_PARAMS, Q>::from_fn(|i, j| column(j).map_or(0.0, |k| self.dp[(i, k)]));
+        let dy0 =
+            SMatrix::<f64, N_STATE, Q>::from_fn(|i, j| column(j).map_or(0.0, |k| self.dy0[(i, k)]));
+        let values = SVector::<f64, Q>::from_fn(|j, _| column(j).map_or(1.0, |k| self.values[k]));
+        let sys = CompliantDirections::new(&self.b.params, &self.b.load, dp, values)?;
+        let target_column = c.iter().position(|&k| k == fields::TARGET_DEPTH);
+        let (t0, y0) = self.start;
+        #[allow(clippy::cast_precision_loss)] // component counts are small
+        let shrink = ((N_STATE * (1 + c.len())) as f64 / M as f64).sqrt();
+        let options = Options {
+            rtol: self.options.rtol * shrink,
+            atol: self.options.atol * shrink,
+            ..self.options.clone()
+        };
+        let d = trajectory::derivatives::<Q, M>(
+            &sys,
+            (t0, y0, dy0),
+            self.t_end,
+            (self.target, target_column),
+            &options,
+            self.scan,
+        )?;
+        Ok(trajectory::widen(d, c))
+    }
 }

@@ -1,22 +1,22 @@
 //! The run behind a `[sensitivities]` table: a plain pass (every step
 //! kept) that finds the peak contact force and the contacts that graze,
 //! then the forward-sensitivity run ([`crate::sensitivity::integrate`])
-//! along every scene field, stopped at the peak (the event `dF_c/dt = 0`
-//! falling, armed between the plain pass's steps around it) to read the
-//! peak's derivative there, and at every contact event and the seating.
+//! along the `Q` scene fields integrated (`N (1 + Q)` components), stopped
+//! at the peak (the event `dF_c/dt = 0` falling, armed between the plain
+//! pass's steps around it) to read the peak's derivative there, and at
+//! every contact event and the seating. [`widen`] places the `Q` columns
+//! among all the fields (zeros for the others).
+//!
+//! The run's legs (before, around and after the peak) and its restarts at
+//! the events share one step budget, `integrator.max_steps`.
 
 use nalgebra::{SMatrix, SVector};
 
-use super::fields::{N_FIELDS, TARGET_DEPTH};
+use super::fields::N_FIELDS;
 use crate::compliant_peg::directions::CompliantDirections;
 use crate::compliant_peg::system::N_STATE;
 use crate::integrate::{Direction, Event, Method, Options, OutputMode, Solver, StopReason};
 use crate::sensitivity::{EventSensitivity, SensitivityError, integrate};
-
-/// Number of directions integrated: every scene field.
-const Q: usize = N_FIELDS;
-/// The variational system's dimension.
-const M: usize = N_STATE * (1 + Q);
 
 /// The number of contacts (`compliant_peg::sensitivity::CONTACTS`).
 pub(super) const N_CONTACTS: usize = 4;
@@ -46,9 +46,9 @@ pub(super) struct Scan {
     pub first_closed: [bool; N_CONTACTS],
 }
 
-/// The derivatives the metrics are made of.
+/// The derivatives the metrics are made of, along `Q` fields.
 #[derive(Clone, Debug)]
-pub(super) struct Derivatives {
+pub(super) struct Derivatives<const Q: usize> {
     /// The final time and state.
     pub t: f64,
     /// The final state.
@@ -69,7 +69,7 @@ pub(super) struct Derivatives {
 
 /// The plain pass: every step of a Dormand–Prince run with `options`,
 /// ending at `t_end` or seated.
-pub(super) fn scan(
+pub(super) fn scan<const Q: usize>(
     sys: &CompliantDirections<Q>,
     (t0, y0): (f64, SVector<f64, N_STATE>),
     t_end: f64,
@@ -134,22 +134,24 @@ pub(super) fn scan(
 }
 
 /// The sensitivity run from `(t0, y0, ∂y₀/∂q)` to `t_end`, stopped at the
-/// peak found by `scan`.
+/// peak found by `scan`; `M = N (1 + Q)`. `target` is the depth of the
+/// seating and `target_column` the direction that is the target depth
+/// itself, if one is.
 ///
 /// # Errors
 /// [`SensitivityError::TangentialEvent`] for an event crossed tangentially;
 /// [`SensitivityError::Integrate`] for a run the integrator refused.
-pub(super) fn derivatives(
+pub(super) fn derivatives<const Q: usize, const M: usize>(
     sys: &CompliantDirections<Q>,
     start: (f64, SVector<f64, N_STATE>, SMatrix<f64, N_STATE, Q>),
     t_end: f64,
-    target: f64,
+    (target, target_column): (f64, Option<usize>),
     options: &Options,
     scan: &Scan,
-) -> Result<Derivatives, StopOrError> {
+) -> Result<Derivatives<Q>, StopOrError> {
     let events = |peak: Option<usize>| {
         let mut e: Vec<_> = (0..N_CONTACTS).map(|c| sys.contact_event(c)).collect();
-        e.push(sys.depth_event(target, Some(TARGET_DEPTH)));
+        e.push(sys.depth_event(target, target_column));
         if let Some(c) = peak {
             e.push(sys.peak_event(c));
         }
@@ -184,13 +186,26 @@ pub(super) fn derivatives(
     }
     legs.push((t_end, None));
     let mut cur = start;
+    let mut attempts = 0;
     for (to, peak) in legs {
         if to <= cur.0 {
             continue;
         }
-        let run = integrate::<_, N_STATE, Q, M>(sys, cur, to, options, events(peak))?;
+        // The legs share the step budget.
+        let Some(left) = options.max_steps.checked_sub(attempts).filter(|n| *n > 0) else {
+            return Err(StopOrError::Stopped(StopReason::MaxSteps {
+                t: cur.0,
+                steps: attempts,
+            }));
+        };
+        let leg = Options {
+            max_steps: left,
+            ..options.clone()
+        };
+        let run = integrate::<_, N_STATE, Q, M>(sys, cur, to, &leg, events(peak))?;
         out.work.0 += run.stats.steps;
         out.work.1 += run.stats.rhs_calls;
+        attempts += run.stats.steps + run.stats.rejected;
         for e in run.events {
             match e.index {
                 c if c < N_CONTACTS => out.contacts.push((c, e)),
@@ -226,6 +241,63 @@ pub(super) fn derivatives(
         out.peak = Some((c, out.t, sys.force(c, &out.y), d));
     }
     Ok(out)
+}
+
+/// `v` along the `Q` fields `columns` (indices into the fields) placed
+/// among all the fields, zero elsewhere.
+fn spread<const Q: usize>(v: &SVector<f64, Q>, columns: &[usize]) -> SVector<f64, N_FIELDS> {
+    let mut out = SVector::zeros();
+    for (j, &k) in columns.iter().enumerate() {
+        out[k] = v[j];
+    }
+    out
+}
+
+/// The columns of `s` (along the fields `columns`) placed among all the
+/// fields, zero elsewhere.
+fn spread_columns<const Q: usize>(
+    s: &SMatrix<f64, N_STATE, Q>,
+    columns: &[usize],
+) -> SMatrix<f64, N_STATE, N_FIELDS> {
+    let mut out = SMatrix::<f64, N_STATE, N_FIELDS>::zeros();
+    for (j, &k) in columns.iter().enumerate() {
+        out.set_column(k, &s.column(j));
+    }
+    out
+}
+
+fn spread_event<const Q: usize>(
+    e: EventSensitivity<N_STATE, Q>,
+    columns: &[usize],
+) -> EventSensitivity<N_STATE, N_FIELDS> {
+    EventSensitivity {
+        index: e.index,
+        t: e.t,
+        y: e.y,
+        f: e.f,
+        s: spread_columns(&e.s, columns),
+        dt_dp: spread(&e.dt_dp, columns),
+    }
+}
+
+/// The derivatives along the `Q` fields `columns` (indices into
+/// [`super::fields::FIELDS`], one per direction) as derivatives along
+/// every field: zero along the fields not integrated (those not named,
+/// and those that move nothing).
+pub(super) fn widen<const Q: usize>(d: Derivatives<Q>, columns: &[usize]) -> Derivatives<N_FIELDS> {
+    Derivatives {
+        t: d.t,
+        y: d.y,
+        dy: spread_columns(&d.dy, columns),
+        seated: d.seated.map(|e| spread_event(e, columns)),
+        contacts: d
+            .contacts
+            .into_iter()
+            .map(|(c, e)| (c, spread_event(e, columns)))
+            .collect(),
+        peak: d.peak.map(|(c, t, f, df)| (c, t, f, spread(&df, columns))),
+        work: d.work,
+    }
 }
 
 /// Why the sensitivity run ended without derivatives.
