@@ -284,11 +284,12 @@ macro_rules! by_size {
 impl Along<'_> {
     /// The run with at least as many directions as columns (up to every
     /// field). Each size is a compiled copy of the integrator (about 4 s of
-    /// a release build's CPU each), so only eight sizes are compiled and
-    /// the columns are padded up to the next one (at most 1.6 times the
-    /// components of an exact fit).
+    /// a release build's CPU each), so only three sizes are compiled and
+    /// the columns are padded up to the next one: a run's cost is mostly
+    /// the part that does not grow with the columns (docs/sensitivities.md,
+    /// "Accuracy and cost"), so padding costs little.
     fn dispatch(&self) -> Result<Derivatives<N_FIELDS>, StopOrError> {
-        by_size!(self, 0 1 2 4 6 8 12 21)
+        by_size!(self, 4 8 21)
     }
 
     /// The run along `Q ≥ columns` directions, `M = N (1 + Q)` components,
