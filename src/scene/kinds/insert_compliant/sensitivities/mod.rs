@@ -218,7 +218,7 @@ pub fn compute(
         options: &options,
         scan: &scan,
     };
-    let d = match run.dispatch() {
+    let d = match run.run() {
         Ok(d) => d,
         Err(StopOrError::Error(SensitivityError::TangentialEvent { t, .. })) => {
             return Ok((
@@ -267,50 +267,34 @@ struct Along<'a> {
     scan: &'a Scan,
 }
 
-/// Calls `$along.run::<Q, { N (1 + Q) }>()` for `Q` the least of the
-/// listed sizes that holds the columns.
-macro_rules! by_size {
-    ($along:expr, $($q:literal)*) => {
-        match $along.columns.len() {
-            $(n if n <= $q => $along.run::<$q, { N_STATE * (1 + $q) }>(),)*
-            n => Err(StopOrError::Error(SensitivityError::Dimension {
-                m: N_STATE * (1 + n),
-                expected: N_STATE * (1 + N_FIELDS),
-            })),
-        }
-    };
-}
+/// Components of the sensitivity run: the state and one column per field.
+const M: usize = N_STATE * (1 + N_FIELDS);
 
 impl Along<'_> {
-    /// The run with at least as many directions as columns (up to every
-    /// field). Each size is a compiled copy of the integrator and the
-    /// sensitivity driver (the sizes 4, 8 and 21 together took a release
-    /// build of the library from 92 s to 158 s of CPU), so one size is
-    /// compiled and the columns are padded up to every field:
-    /// the run costs what every field costs (docs/sensitivities.md,
-    /// "Accuracy and cost"), while its steps are those of the named ones.
-    fn dispatch(&self) -> Result<Derivatives<N_FIELDS>, StopOrError> {
-        by_size!(self, 21)
-    }
-
-    /// The run along `Q ≥ columns` directions, `M = N (1 + Q)` components,
-    /// widened to every field (zero along those not integrated). Directions
-    /// past the columns are padding: zero `∂p/∂q` and `∂y₀/∂q`, so their
+    /// The run along the fields `columns`, each in its own column among
+    /// every field's. The system's size is a compile-time constant and each
+    /// size a compiled copy of the integrator and the sensitivity driver
+    /// (the sizes 4, 8 and 21 together took a release build of the library
+    /// from 92 s to 158 s of CPU), so there is one size: the columns of the
+    /// fields not integrated have zero `∂p/∂q` and `∂y₀/∂q`, their
     /// sensitivities stay exactly zero and add nothing to the error
-    /// estimate. The error norm is a root mean square over the components,
-    /// so the tolerances are scaled by `√(N (1 + P) / M)` for `P` columns:
-    /// the padded run takes the steps the run along the columns alone would.
-    fn run<const Q: usize, const M: usize>(&self) -> Result<Derivatives<N_FIELDS>, StopOrError> {
+    /// estimate. The error norm is a root mean square over the `M`
+    /// components, so the tolerances are scaled by `√(N (1 + P) / M)` for
+    /// `P` columns: the run takes the steps the run along the columns alone
+    /// would, at the cost of every field (docs/sensitivities.md, "Accuracy
+    /// and cost").
+    fn run(&self) -> Result<Derivatives<N_FIELDS>, StopOrError> {
         let c = self.columns;
-        let column = |j: usize| c.get(j).copied();
-        let dp =
-            SMatrix::<f64, N_PARAMS, Q>::from_fn(|i, j| column(j).map_or(0.0, |k| self.dp[(i, k)]));
-        let dy0 =
-            SMatrix::<f64, N_STATE, Q>::from_fn(|i, j| column(j).map_or(0.0, |k| self.dy0[(i, k)]));
-        let values = SVector::<f64, Q>::from_fn(|j, _| column(j).map_or(1.0, |k| self.values[k]));
-        let sys = CompliantDirections::new(&self.b.params, &self.b.load, dp, values)?;
-        let target_column = c.iter().position(|&k| k == fields::TARGET_DEPTH);
-        let (t0, y0) = self.start;
+        let mut dp = SMatrix::<f64, N_PARAMS, N_FIELDS>::zeros();
+        let mut dy0 = SMatrix::<f64, N_STATE, N_FIELDS>::zeros();
+        for &k in c {
+            dp.set_column(k, &self.dp.column(k));
+            dy0.set_column(k, &self.dy0.column(k));
+        }
+        let sys = CompliantDirections::new(&self.b.params, &self.b.load, dp, *self.values)?;
+        let target_column = c
+            .contains(&fields::TARGET_DEPTH)
+            .then_some(fields::TARGET_DEPTH);
         #[allow(clippy::cast_precision_loss)] // component counts are small
         let shrink = ((N_STATE * (1 + c.len())) as f64 / M as f64).sqrt();
         let options = Options {
@@ -318,14 +302,14 @@ impl Along<'_> {
             atol: self.options.atol * shrink,
             ..self.options.clone()
         };
-        let d = trajectory::derivatives::<Q, M>(
+        let (t0, y0) = self.start;
+        trajectory::derivatives::<N_FIELDS, M>(
             &sys,
             (t0, y0, dy0),
             self.t_end,
             (self.target, target_column),
             &options,
             self.scan,
-        )?;
-        Ok(trajectory::widen(d, c))
+        )
     }
 }

@@ -12,7 +12,6 @@
 
 use nalgebra::{SMatrix, SVector};
 
-use super::fields::N_FIELDS;
 use crate::compliant_peg::directions::CompliantDirections;
 use crate::compliant_peg::system::N_STATE;
 use crate::integrate::{Direction, Event, Method, Options, OutputMode, Solver, StopReason};
@@ -241,63 +240,6 @@ pub(super) fn derivatives<const Q: usize, const M: usize>(
         out.peak = Some((c, out.t, sys.force(c, &out.y), d));
     }
     Ok(out)
-}
-
-/// `v` along the `Q` fields `columns` (indices into the fields) placed
-/// among all the fields, zero elsewhere.
-fn spread<const Q: usize>(v: &SVector<f64, Q>, columns: &[usize]) -> SVector<f64, N_FIELDS> {
-    let mut out = SVector::zeros();
-    for (j, &k) in columns.iter().enumerate() {
-        out[k] = v[j];
-    }
-    out
-}
-
-/// The columns of `s` (along the fields `columns`) placed among all the
-/// fields, zero elsewhere.
-fn spread_columns<const Q: usize>(
-    s: &SMatrix<f64, N_STATE, Q>,
-    columns: &[usize],
-) -> SMatrix<f64, N_STATE, N_FIELDS> {
-    let mut out = SMatrix::<f64, N_STATE, N_FIELDS>::zeros();
-    for (j, &k) in columns.iter().enumerate() {
-        out.set_column(k, &s.column(j));
-    }
-    out
-}
-
-fn spread_event<const Q: usize>(
-    e: EventSensitivity<N_STATE, Q>,
-    columns: &[usize],
-) -> EventSensitivity<N_STATE, N_FIELDS> {
-    EventSensitivity {
-        index: e.index,
-        t: e.t,
-        y: e.y,
-        f: e.f,
-        s: spread_columns(&e.s, columns),
-        dt_dp: spread(&e.dt_dp, columns),
-    }
-}
-
-/// The derivatives along the `Q` fields `columns` (indices into
-/// [`super::fields::FIELDS`], one per direction) as derivatives along
-/// every field: zero along the fields not integrated (those not named,
-/// and those that move nothing).
-pub(super) fn widen<const Q: usize>(d: Derivatives<Q>, columns: &[usize]) -> Derivatives<N_FIELDS> {
-    Derivatives {
-        t: d.t,
-        y: d.y,
-        dy: spread_columns(&d.dy, columns),
-        seated: d.seated.map(|e| spread_event(e, columns)),
-        contacts: d
-            .contacts
-            .into_iter()
-            .map(|(c, e)| (c, spread_event(e, columns)))
-            .collect(),
-        peak: d.peak.map(|(c, t, f, df)| (c, t, f, spread(&df, columns))),
-        work: d.work,
-    }
 }
 
 /// Why the sensitivity run ended without derivatives.
