@@ -54,11 +54,15 @@ pub struct Gradient {
 }
 
 impl Gradient {
-    /// From a row of a generated Jacobian, columns in
-    /// `jamming_design::P_NAMES` order (r, c, mu, l).
-    fn from_row(row: [f64; 4]) -> Gradient {
-        let [r, c, mu, l] = row;
-        Gradient { r, c, mu, l }
+    /// From a row of a generated Jacobian, its columns taken by name
+    /// through the generated model's parameters.
+    fn from_params(g: generated::Params<f64>) -> Gradient {
+        Gradient {
+            r: g.r,
+            c: g.c,
+            mu: g.mu,
+            l: g.l,
+        }
     }
 
     /// The entries in the order `(r, c, mu, l)` of [`Gradient::NAMES`].
@@ -81,10 +85,10 @@ pub struct RatioGradient {
 
 impl RatioGradient {
     fn from_matrix(m: &SMatrix<f64, 2, 4>) -> RatioGradient {
-        let row = |i: usize| [m[(i, 0)], m[(i, 1)], m[(i, 2)], m[(i, 3)]];
+        let row = |i: usize| gradient(&m.row(i).transpose());
         RatioGradient {
-            force_ratio: Gradient::from_row(row(0)),
-            moment_ratio: Gradient::from_row(row(1)),
+            force_ratio: row(0),
+            moment_ratio: row(1),
         }
     }
 }
@@ -138,7 +142,7 @@ pub struct DesignSensitivities {
 }
 
 fn gradient(v: &SVector<f64, 4>) -> Gradient {
-    Gradient::from_row([v[0], v[1], v[2], v[3]])
+    Gradient::from_params(generated::Params::from(v))
 }
 
 /// The derivatives of the design quantities of `p` at depth `l` (m).

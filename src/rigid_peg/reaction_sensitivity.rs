@@ -24,7 +24,7 @@
 //! held fixed: a caller whose friction directions follow the contact
 //! velocities (which move with the geometry) adds their own term.
 
-use nalgebra::{SMatrix, Vector2, Vector3};
+use nalgebra::{Vector2, Vector3};
 
 use crate::generated::rigid_peg;
 use crate::rigid_peg::dynamics::solve;
@@ -49,13 +49,16 @@ pub struct ForwardDerivative {
 }
 
 impl ForwardDerivative {
-    fn from_column(m: &SMatrix<f64, 5, 7>, k: usize) -> ForwardDerivative {
+    /// From the five unknowns' derivatives, in the order of the generated
+    /// model's unknowns `u` (`rigid_peg::U_NAMES`: γ̈, ψ̈, N_K, N_B1, N_B2).
+    fn from_unknowns(v: [f64; 5]) -> ForwardDerivative {
+        let [gammaddot, psiddot, n_k, n_b1, n_b2] = v;
         ForwardDerivative {
-            gammaddot: m[(0, k)],
-            psiddot: m[(1, k)],
-            n_k: m[(2, k)],
-            n_b1: m[(3, k)],
-            n_b2: m[(4, k)],
+            gammaddot,
+            psiddot,
+            n_k,
+            n_b1,
+            n_b2,
         }
     }
 
@@ -122,28 +125,27 @@ pub fn forward_sensitivity(
         Some(du) if du.iter().all(|v| v.is_finite()) => du,
         _ => return Err(RigidError::Singular { gamma: q[0] }),
     };
-    let col = |k| ForwardDerivative::from_column(&du, k);
-    let g0 = col(6);
+    // Row i of ∂u/∂p with its columns named by the generated parameters,
+    // so each derivative below is taken by parameter name.
+    let rows: [rigid_peg::Params<f64>; 5] =
+        std::array::from_fn(|i| rigid_peg::Params::from(du.row(i).transpose()));
+    let along = |field: fn(&rigid_peg::Params<f64>) -> f64| {
+        ForwardDerivative::from_unknowns(std::array::from_fn(|i| field(&rows[i])))
+    };
+    let g0 = along(|r| r.gamma0);
     let [g0_dh, g0_dp] = gamma0_gradient(p);
-    let chain = |k: usize, dg0: f64| {
-        let a = col(k).to_array();
-        let b = g0.to_array();
-        let v: [f64; 5] = std::array::from_fn(|i| a[i] + b[i] * dg0);
-        ForwardDerivative {
-            gammaddot: v[0],
-            psiddot: v[1],
-            n_k: v[2],
-            n_b1: v[3],
-            n_b2: v[4],
-        }
+    // D and d also move γ0 = arccos(d/D): ∂u/∂D + ∂u/∂γ0 ∂γ0/∂D.
+    let chain = |direct: ForwardDerivative, dg0: f64| {
+        let (a, b) = (direct.to_array(), g0.to_array());
+        ForwardDerivative::from_unknowns(std::array::from_fn(|i| a[i] + b[i] * dg0))
     };
     Ok(ForwardSensitivity {
-        hole_diameter: chain(0, g0_dh),
-        peg_diameter: chain(1, g0_dp),
-        height: col(2),
-        mass: col(3),
-        gravity: col(4),
-        friction: col(5),
+        hole_diameter: chain(along(|r| r.D_hole), g0_dh),
+        peg_diameter: chain(along(|r| r.d_peg), g0_dp),
+        height: along(|r| r.H),
+        mass: along(|r| r.m),
+        gravity: along(|r| r.g),
+        friction: along(|r| r.f),
         gamma0: g0,
     })
 }

@@ -34,15 +34,16 @@ pub struct CaptureGradient {
 }
 
 impl CaptureGradient {
-    /// From a generated row, columns in `chamfer_capture::P_NAMES` order
-    /// (r_peg, r_bore, rho_p, rho_h, mu).
+    /// From a generated row, its columns taken by name through the
+    /// generated model's parameters.
     fn from_vector(v: &SVector<f64, 5>) -> CaptureGradient {
+        let g = generated::Params::from(v);
         CaptureGradient {
-            peg_radius: v[0],
-            bore_radius: v[1],
-            rim_fillet: v[2],
-            mouth_fillet: v[3],
-            friction: v[4],
+            peg_radius: g.r_peg,
+            bore_radius: g.r_bore,
+            rim_fillet: g.rho_p,
+            mouth_fillet: g.rho_h,
+            friction: g.mu,
         }
     }
 }
