@@ -23,7 +23,12 @@ class SweepResult:
     scene does not validate; ``"failed"`` when its run failed), ``error``
     (the message, or None), ``stop``, ``t_end``, ``steps``, ``rhs_calls``
     (None without a time integration) and every scalar result of the run
-    summary, named ``"name [unit]"``.
+    summary, named ``"name [unit]"``. When the scene has a
+    ``[sensitivities]`` table, each row also has, per metric and field of
+    its ``<name>.sensitivities.csv``, ``"d(metric)/d(field)"`` and
+    ``"elasticity(metric, field)"`` (NaN where flagged) and, where flagged,
+    ``"flag(metric, field)"`` with the reason: the derivatives at every
+    point of the sweep.
 
     ``len(r)``, iteration over rows, ``r[i]`` (a row) and ``r["key"]`` (a
     column as a list) work; :meth:`to_pandas` gives a DataFrame.

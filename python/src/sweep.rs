@@ -8,7 +8,7 @@ use pyo3::types::PyDict;
 use rayon::prelude::*;
 
 use pegdyn::integrate::Interrupt;
-use pegdyn::output::memory::Keep;
+use pegdyn::output::memory::{Column, Keep, Table};
 use pegdyn::scene::limits::{LimitOverrides, WorkItem};
 use pegdyn::scene::{self, RunSummary};
 
@@ -21,6 +21,63 @@ struct Row {
     index: usize,
     /// `Err(message)`: the point's scene did not validate or its run failed.
     result: Result<RunSummary, (String, String)>,
+    /// The derivatives its `[sensitivities]` table asked for (empty
+    /// without one).
+    derivatives: Vec<Derivative>,
+}
+
+/// One row of a run's `<scene>.sensitivities` table: the derivative of
+/// `metric` with respect to the scene field `parameter`, its elasticity,
+/// and the flag that replaces them where the metric is not differentiable
+/// (NaN then, as for a metric without a value).
+struct Derivative {
+    metric: String,
+    parameter: String,
+    derivative: f64,
+    elasticity: f64,
+    flag: String,
+}
+
+/// The cells of column `name` of `t` as text (numbers as the file prints
+/// them, an empty cell empty).
+fn text_column(t: &Table, name: &str) -> Vec<String> {
+    let Some(k) = t.header.iter().position(|h| h == name) else {
+        return Vec::new();
+    };
+    match &t.columns[k] {
+        Column::Numbers(v) => v.iter().map(f64::to_string).collect(),
+        Column::Text(v) => v.clone(),
+    }
+}
+
+/// The cells of column `name` of `t` as numbers, NaN for an empty cell.
+fn number_column(t: &Table, name: &str) -> Vec<f64> {
+    let Some(k) = t.header.iter().position(|h| h == name) else {
+        return Vec::new();
+    };
+    match &t.columns[k] {
+        Column::Numbers(v) => v.clone(),
+        Column::Text(v) => v.iter().map(|c| c.parse().unwrap_or(f64::NAN)).collect(),
+    }
+}
+
+/// The derivatives in a run's sensitivities table (`metric, parameter,
+/// value, derivative, elasticity, flag`, docs/sensitivities.md).
+fn derivatives(t: &Table) -> Vec<Derivative> {
+    let metric = text_column(t, "metric");
+    let parameter = text_column(t, "parameter");
+    let derivative = number_column(t, "derivative");
+    let elasticity = number_column(t, "elasticity");
+    let flag = text_column(t, "flag");
+    (0..metric.len())
+        .map(|i| Derivative {
+            metric: metric[i].clone(),
+            parameter: parameter.get(i).cloned().unwrap_or_default(),
+            derivative: derivative.get(i).copied().unwrap_or(f64::NAN),
+            elasticity: elasticity.get(i).copied().unwrap_or(f64::NAN),
+            flag: flag.get(i).cloned().unwrap_or_default(),
+        })
+        .collect()
 }
 
 /// Sets dotted `key` (`table.field`, tables created as needed) in `doc`.
@@ -63,6 +120,7 @@ fn run_point(sw: &Sweep<'_>, point: &[toml::Value], index: usize) -> Row {
             return Row {
                 index,
                 result: Err(("invalid".into(), e)),
+                derivatives: Vec::new(),
             };
         }
     }
@@ -72,6 +130,7 @@ fn run_point(sw: &Sweep<'_>, point: &[toml::Value], index: usize) -> Row {
             return Row {
                 index,
                 result: Err(("invalid".into(), e.to_string())),
+                derivatives: Vec::new(),
             };
         }
     };
@@ -80,24 +139,64 @@ fn run_point(sw: &Sweep<'_>, point: &[toml::Value], index: usize) -> Row {
         return Row {
             index,
             result: Err(("failed".into(), "interrupted".into())),
+            derivatives: Vec::new(),
         };
     }
-    let result = match run_text(&text, name, Output::Memory(Keep::Nothing), limits, stop) {
-        Outcome::Done(s, ..) => Ok(s),
+    // Only the summary is kept, and the derivatives where the scene asks
+    // for them: the run writes no file, and its other tables are dropped.
+    let wants_derivatives = doc.contains_key("sensitivities");
+    let keep = if wants_derivatives {
+        Keep::Tables
+    } else {
+        Keep::Nothing
+    };
+    let mut derivatives_found = Vec::new();
+    let result = match run_text(&text, name, Output::Memory(keep), limits, stop) {
+        Outcome::Done(s, tables, _) => {
+            if let Some(t) = tables.iter().find(|t| t.stem().ends_with(".sensitivities")) {
+                derivatives_found = derivatives(t);
+            }
+            Ok(s)
+        }
         Outcome::Invalid(e) => Err(("invalid".into(), e.to_string())),
         Outcome::Failed(m) => Err(("failed".into(), m)),
     };
-    Row { index, result }
+    Row {
+        index,
+        result,
+        derivatives: derivatives_found,
+    }
 }
 
 /// Bytes a sweep keeps per row: a dict of the inputs, the fixed fields and
 /// the run's metrics (a few dozen entries of about 100 bytes each).
 const ROW_BYTES: f64 = 4096.0;
 
+/// Bytes of one row's entry (a key and a float in the row's dict).
+const ENTRY_BYTES: f64 = 100.0;
+
+/// Entries a row gains per metric and field named in `[sensitivities]`
+/// (the derivative, the elasticity, and a flag where there is one), for at
+/// most this many metrics per field.
+const SENSITIVITY_ENTRIES: f64 = 3.0 * 8.0;
+
+/// The bytes a row of `doc` keeps beyond [`ROW_BYTES`]: its derivatives,
+/// when the scene names fields in a `[sensitivities]` table.
+fn derivative_bytes(doc: &toml::Table) -> f64 {
+    let fields = doc
+        .get("sensitivities")
+        .and_then(|t| t.get("parameters"))
+        .and_then(toml::Value::as_array)
+        .map_or(0, Vec::len);
+    #[allow(clippy::cast_precision_loss)] // a count of scene fields
+    let fields = fields as f64;
+    fields * SENSITIVITY_ENTRIES * ENTRY_BYTES
+}
+
 /// The work of a sweep of `points` runs of `loaded`: `points` times the
 /// runs of one point (its grid's, or one), bounded by `max_runs`, each
-/// keeping a row.
-fn sweep_work(loaded: &scene::LoadedScene, points: usize) -> Vec<WorkItem> {
+/// keeping a row of `row_bytes` beyond [`ROW_BYTES`].
+fn sweep_work(loaded: &scene::LoadedScene, points: usize, row_bytes: f64) -> Vec<WorkItem> {
     let runs_each: f64 = loaded
         .work
         .iter()
@@ -109,7 +208,7 @@ fn sweep_work(loaded: &scene::LoadedScene, points: usize) -> Vec<WorkItem> {
             "sweep",
             "max_runs",
             points as f64 * runs_each.max(1.0),
-            ROW_BYTES,
+            ROW_BYTES + row_bytes,
         )
         .with_value(points as f64),
     ]
@@ -138,8 +237,9 @@ pub fn check_sweep(
             .and_then(|d| d.limits())
             .map_err(|e| scene_error(py, &e, None))?,
     );
+    let row_bytes = toml::from_str::<toml::Table>(text).map_or(0.0, |d| derivative_bytes(&d));
     bounds
-        .check(&sweep_work(&loaded, points))
+        .check(&sweep_work(&loaded, points, row_bytes))
         .map_err(|e| scene_error(py, &e, None))
 }
 
@@ -154,8 +254,12 @@ pub fn check_sweep(
 /// unplanned integration stop, `"invalid"`, `"failed"`), `error` (message
 /// or None), `stop`, `t_end`, `steps`, `rhs_calls` (None without time
 /// integration) and every metric of the run summary, named
-/// `"name [unit]"` (or `name` when dimensionless). Input values are added
-/// by the caller.
+/// `"name [unit]"` (or `name` when dimensionless; a note, a result in
+/// words, as its text). A scene with a
+/// `[sensitivities]` table adds, per metric and field of its CSV,
+/// `"d(metric)/d(field)"` and `"elasticity(metric, field)"` (NaN where
+/// flagged) and, where flagged, `"flag(metric, field)"` with the reason.
+/// Input values are added by the caller.
 #[pyfunction]
 #[pyo3(signature = (text, name, keys, points, first_index=0, threads=None, limits=None))]
 #[allow(clippy::too_many_arguments)]
@@ -244,7 +348,20 @@ fn row_dict<'py>(py: Python<'py>, r: &Row) -> PyResult<Bound<'py, PyDict>> {
                 } else {
                     format!("{} [{}]", m.name, m.unit)
                 };
-                d.set_item(key, m.value)?;
+                // A note (a result in words, e.g. a ranking) is its text,
+                // not a NaN.
+                match &m.text {
+                    Some(text) if m.value.is_nan() => d.set_item(key, text)?,
+                    _ => d.set_item(key, m.value)?,
+                }
+            }
+            for x in &r.derivatives {
+                let of = format!("{}, {}", x.metric, x.parameter);
+                d.set_item(format!("d({})/d({})", x.metric, x.parameter), x.derivative)?;
+                d.set_item(format!("elasticity({of})"), x.elasticity)?;
+                if !x.flag.is_empty() {
+                    d.set_item(format!("flag({of})"), &x.flag)?;
+                }
             }
         }
         Err((outcome, msg)) => {

@@ -53,3 +53,47 @@ def test_the_seat_time_derivative_agrees_with_differences_of_two_runs():
 def test_a_scene_without_the_table_has_none():
     scene = pegdyn.load(PLAIN)
     assert scene.with_values({"integrator.t_end": 0.01}).run().sensitivities is None
+
+
+def test_a_sweep_carries_each_points_derivatives():
+    # Two fields named, three points along the axial force: each row holds
+    # the derivatives of its own point (the run's table, as Result gives
+    # them), and the seat time's derivative at the middle point agrees with
+    # the sweep's own differences of the seat time.
+    text = SCENE.read_text()
+    start = text.index("parameters = [")
+    end = text.index("]", start) + 1
+    text = (
+        text[:start]
+        + 'parameters = ["insert_compliant.axial_force", "insert_compliant.tangential_damping"]'
+        + text[end:]
+    )
+    scene = pegdyn.loads(text, name="sweep_sens")
+    h = 0.005
+    forces = [5.0 - h, 5.0, 5.0 + h]
+    rows = pegdyn.sweep(scene, grid={"insert_compliant.axial_force": forces}, threads=2)
+    assert all("inserted" in r["stop"] for r in rows)
+    assert [r["outcome"] for r in rows] == ["ok"] * 3
+    key = "d(seat_time_s)/d(insert_compliant.axial_force)"
+    single = scene.with_values({"insert_compliant.axial_force": 5.0}).run().sensitivities
+    pick = (single["metric"] == "seat_time_s") & (
+        single["parameter"] == "insert_compliant.axial_force"
+    )
+    assert rows[1][key] == single["derivative"][pick][0]
+    # The runs stop at the seat: t_end is the seat time.
+    seat = rows["t_end"]
+    fd = (seat[2] - seat[0]) / (2 * h)
+    assert abs(rows[1][key] - fd) < 1e-4 * abs(fd), (rows[1][key], fd)
+    # Elasticity = q/m dm/dq at each point (m from the sensitivity pass,
+    # t_end from the scene's own run: equal to the scene's rtol, 1e-8).
+    for f, r, t in zip(forces, rows, seat):
+        e = r["elasticity(seat_time_s, insert_compliant.axial_force)"]
+        assert abs(e - f / t * r[key]) < 1e-7 * abs(e), (e, f / t * r[key])
+    # The ranking note comes as its text, not NaN.
+    assert rows[1]["elasticities of seat_time_s"].startswith("axial_force -0.49")
+    # The unused field: a zero derivative and its flag.
+    assert rows[0]["d(seat_time_s)/d(insert_compliant.tangential_damping)"] == 0.0
+    assert (
+        rows[0]["flag(seat_time_s, insert_compliant.tangential_damping)"]
+        == "not used by this model"
+    )
