@@ -20,17 +20,29 @@
 //! du/dD = ∂u/∂D + ∂u/∂γ0 · d/(D √(D² − d²)),    du/dd = ∂u/∂d − ∂u/∂γ0 / √(D² − d²)
 //! ```
 //!
-//! The state (γ, ψ, γ̇, ψ̇), the loads and the friction directions `t` are
-//! held fixed: a caller whose friction directions follow the contact
-//! velocities (which move with the geometry) adds their own term.
+//! [`forward_sensitivity`] holds the state (γ, ψ, γ̇, ψ̇), the loads and
+//! the friction directions `t` fixed. Where friction opposes sliding,
+//! `t_i = −v_i/|v_i|` and the contact velocities `v_i` move with the
+//! geometry (D, d, H and γ0 place the contacts), so
+//! [`sliding_forward_sensitivity`] adds their term:
+//!
+//! ```text
+//! du/dp = A⁻¹ (∂(b − A u)/∂p + ∂(b − A u)/∂t · dt/dp),
+//! dt_i/dp = −(I − t_i t_iᵀ)/|v_i| · ∂v_i/∂p
+//! ```
+//!
+//! evaluated in one pass of the generated `contact_velocities` and
+//! `forward` at dual numbers seeded on the seven parameters (the same
+//! generated code, at [`Dual`] instead of `f64`).
 
-use nalgebra::{Vector2, Vector3};
+use nalgebra::{SMatrix, SVector, Vector2, Vector3};
 
 use crate::generated::rigid_peg;
-use crate::rigid_peg::dynamics::solve;
+use crate::rigid_peg::dynamics::{CONTACTS, solve};
 use crate::rigid_peg::generated_inputs::{directions, state};
 use crate::rigid_peg::generated_model::checked;
 use crate::rigid_peg::{Loads, PegParams, RigidError};
+use crate::scalar::{Dual, Real};
 
 /// Derivatives of the forward unknowns with respect to one parameter
 /// (each per unit of that parameter).
@@ -125,6 +137,12 @@ pub fn forward_sensitivity(
         Some(du) if du.iter().all(|v| v.is_finite()) => du,
         _ => return Err(RigidError::Singular { gamma: q[0] }),
     };
+    Ok(named(&du, p))
+}
+
+/// `∂u/∂p` (rows the unknowns, columns the generated parameters) as
+/// derivatives per runtime parameter, D and d through γ0 too.
+fn named(du: &SMatrix<f64, 5, 7>, p: &PegParams) -> ForwardSensitivity {
     // Row i of ∂u/∂p with its columns named by the generated parameters,
     // so each derivative below is taken by parameter name.
     let rows: [rigid_peg::Params<f64>; 5] =
@@ -139,7 +157,7 @@ pub fn forward_sensitivity(
         let (a, b) = (direct.to_array(), g0.to_array());
         ForwardDerivative::from_unknowns(std::array::from_fn(|i| a[i] + b[i] * dg0))
     };
-    Ok(ForwardSensitivity {
+    ForwardSensitivity {
         hole_diameter: chain(along(|r| r.D_hole), g0_dh),
         peg_diameter: chain(along(|r| r.d_peg), g0_dp),
         height: along(|r| r.H),
@@ -147,5 +165,71 @@ pub fn forward_sensitivity(
         gravity: along(|r| r.g),
         friction: along(|r| r.f),
         gamma0: g0,
-    })
+    }
+}
+
+/// Dual numbers seeded on the generated model's seven parameters
+/// (D, d, H, m, g, f, γ0).
+type D7 = Dual<7>;
+
+/// As [`forward_sensitivity`], with the friction directions opposing the
+/// sliding velocities at (q, q̇), `t_i = −v_i/|v_i|`, and so moving with
+/// the geometry: the derivatives of the runtime's forward dynamics where
+/// each contact slides (the Coulomb law of [`crate::rigid_peg::forward`]).
+///
+/// # Errors
+/// As [`forward_sensitivity`], and [`RigidError::NoSliding`] naming a
+/// contact whose sliding speed is zero (its direction, and so the
+/// derivative, is not defined there).
+pub fn sliding_forward_sensitivity(
+    p: &PegParams,
+    loads: &Loads,
+    q: Vector2<f64>,
+    qdot: Vector2<f64>,
+) -> Result<ForwardSensitivity, RigidError> {
+    let pv: SVector<f64, 7> = checked(p, q, qdot)?.into();
+    let x: SVector<f64, 4> = state(q, qdot).into();
+    let l: SVector<f64, 5> = rigid_peg::Loads::from(loads).into();
+    let pd: SVector<D7, 7> = SVector::from_fn(|k, _| D7::variable(pv[k], k));
+    let xd = x.map(D7::constant);
+    let ld = l.map(D7::constant);
+    let v = rigid_peg::contact_velocities(&xd, &pd);
+    let mut t = [[D7::constant(0.0); 3]; 3];
+    for (i, ti) in t.iter_mut().enumerate() {
+        let vi = [v[(i, 0)], v[(i, 1)], v[(i, 2)]];
+        let speed = (vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]).sqrt();
+        if speed.v == 0.0 || !speed.v.is_finite() {
+            return Err(RigidError::NoSliding {
+                contact: CONTACTS[i],
+            });
+        }
+        *ti = vi.map(|c| -c / speed);
+    }
+    let [k, b1, b2] = t;
+    let td: SVector<D7, 9> = rigid_peg::FrictionDirections {
+        t_K_eta: k[0],
+        t_K_n: k[1],
+        t_K_z: k[2],
+        t_B1_eta: b1[0],
+        t_B1_n: b1[1],
+        t_B1_z: b1[2],
+        t_B2_eta: b2[0],
+        t_B2_n: b2[1],
+        t_B2_z: b2[2],
+    }
+    .into();
+    let sys = rigid_peg::forward(&xd, &pd, &ld, &td);
+    let a = sys.a.map(|e| e.v);
+    let u = solve::<5>(&a, &sys.b.map(|e| e.v), q[0])?;
+    // d(b − A u)/dp_k at the solution, u held: the right-hand side of
+    // A du/dp_k = d(b − A u)/dp_k.
+    let rhs = SMatrix::<f64, 5, 7>::from_fn(|i, k| {
+        let au: f64 = (0..5).map(|j| sys.a[(i, j)].d[k] * u[j]).sum();
+        sys.b[i].d[k] - au
+    });
+    let du = match a.lu().solve(&rhs) {
+        Some(du) if du.iter().all(|v| v.is_finite()) => du,
+        _ => return Err(RigidError::Singular { gamma: q[0] }),
+    };
+    Ok(named(&du, p))
 }

@@ -5,7 +5,9 @@
 //! central differences of the runtime's own forward dynamics
 //! (`generated_model::forward`) with the field of `PegParams` changed, at
 //! states from 1.05 γ0 to 1.5 γ0, with and without precession, to 1e-5
-//! relative.
+//! relative: with the friction directions held (`forward_sensitivity`)
+//! and with them opposing the sliding velocities of the changed design
+//! (`sliding_forward_sensitivity`).
 
 use nalgebra::{Vector2, Vector3};
 use pegdyn::rigid_peg::PegParams;
@@ -13,7 +15,8 @@ use pegdyn::rigid_peg::generated_model::{
     Variant, contact_velocities, forward, friction_directions,
 };
 use pegdyn::rigid_peg::reaction_sensitivity::{
-    ForwardDerivative, forward_sensitivity, gamma0_gradient,
+    ForwardDerivative, ForwardSensitivity, forward_sensitivity, gamma0_gradient,
+    sliding_forward_sensitivity,
 };
 
 use crate::common::Rng;
@@ -54,8 +57,25 @@ const FIELDS: [Field; 6] = [
 
 const UNKNOWNS: [&str; 5] = ["γ̈", "ψ̈", "N_K", "N_B1", "N_B2"];
 
+/// The friction directions opposing the sliding velocities of design `p`.
+fn sliding(p: &PegParams, q: Vector2<f64>, qdot: Vector2<f64>) -> [Vector3<f64>; 3] {
+    friction_directions(&contact_velocities(Variant::Full, p, q, qdot).unwrap()).unwrap()
+}
+
 #[test]
 fn reaction_derivatives_match_richardson_differences_of_the_runtime() {
+    reaction_derivatives_match(false);
+}
+
+#[test]
+fn with_sliding_directions_they_match_differences_that_recompute_the_directions() {
+    reaction_derivatives_match(true);
+}
+
+/// Exact against differences at 16 random states; `follow`: the friction
+/// directions are those of each changed design's sliding velocities (else
+/// the base design's, held).
+fn reaction_derivatives_match(follow: bool) {
     let base = PegParams::fig9();
     let l = loads();
     let mut rng = Rng(31);
@@ -69,11 +89,13 @@ fn reaction_derivatives_match_richardson_differences_of_the_runtime() {
             if spin { rng.uniform(-2.0, 2.0) } else { 0.0 },
         );
         // Friction directions of the base design's contact velocities,
-        // held fixed under the change (as the derivative holds them).
-        let t: [Vector3<f64>; 3] =
-            friction_directions(&contact_velocities(Variant::Full, &base, q, qdot).unwrap())
-                .unwrap();
-        let s = forward_sensitivity(&base, &l, q, qdot, &t).unwrap();
+        // held fixed under the change, or recomputed for each design.
+        let t = sliding(&base, q, qdot);
+        let s: ForwardSensitivity = if follow {
+            sliding_forward_sensitivity(&base, &l, q, qdot).unwrap()
+        } else {
+            forward_sensitivity(&base, &l, q, qdot, &t).unwrap()
+        };
         for (name, field, pick) in FIELDS {
             let mut p = base;
             let x = *field(&mut p);
@@ -89,6 +111,7 @@ fn reaction_derivatives_match_richardson_differences_of_the_runtime() {
                 |dx| {
                     let mut p = base;
                     *field(&mut p) = x + dx;
+                    let t = if follow { sliding(&p, q, qdot) } else { t };
                     let a = forward(Variant::Full, &p, &l, q, qdot, &t).unwrap();
                     [a.qdd[0], a.qdd[1], a.normal[0], a.normal[1], a.normal[2]]
                 },
@@ -125,9 +148,53 @@ fn reaction_derivatives_match_richardson_differences_of_the_runtime() {
         }
     }
     eprintln!(
-        "worst relative error {:e} ({}); near-zero entries {:e}",
-        worst.0, worst.1, worst.2
+        "directions {}: worst relative error {:e} ({}); near-zero entries {:e}",
+        if follow { "following" } else { "held" },
+        worst.0,
+        worst.1,
+        worst.2
     );
+}
+
+/// The directions' term is not negligible: on the Fig. 9 peg with
+/// precession, following the sliding velocities changes a geometric
+/// derivative by more than a hundred times the agreement tolerance, and
+/// leaves the mass, gravity and friction columns (which do not move the
+/// velocities) equal to rounding.
+#[test]
+fn the_sliding_directions_term_matters_for_the_geometry_only() {
+    let p = PegParams::fig9();
+    let l = loads();
+    let q = Vector2::new(1.2 * p.gamma0(), 0.3);
+    let qdot = Vector2::new(0.4, 1.5);
+    let held = forward_sensitivity(&p, &l, q, qdot, &sliding(&p, q, qdot)).unwrap();
+    let follow = sliding_forward_sensitivity(&p, &l, q, qdot).unwrap();
+    let rel = |a: ForwardDerivative, b: ForwardDerivative| {
+        let (a, b) = (a.to_array(), b.to_array());
+        let scale = a[2..].iter().map(|v| v.abs()).fold(0.0, f64::max);
+        (2..5)
+            .map(|i| (a[i] - b[i]).abs() / scale)
+            .fold(0.0, f64::max)
+    };
+    let geometry = [
+        rel(held.hole_diameter, follow.hole_diameter),
+        rel(held.peg_diameter, follow.peg_diameter),
+        rel(held.height, follow.height),
+    ];
+    eprintln!(
+        "the directions' term, relative to the largest force derivative (D, d, H): {geometry:?}"
+    );
+    assert!(
+        geometry.iter().any(|&r| r > 1e-3),
+        "the directions' term changes the geometric derivatives of the forces by {geometry:?}"
+    );
+    for (name, a, b) in [
+        ("mass", held.mass, follow.mass),
+        ("gravity", held.gravity, follow.gravity),
+        ("friction", held.friction, follow.friction),
+    ] {
+        assert!(rel(a, b) < 1e-12, "{name}: {}", rel(a, b));
+    }
 }
 
 /// The γ0 term is what makes D and d agree: without it (the generated
