@@ -132,8 +132,8 @@ pub(crate) fn locate<const N: usize>(
     if g1 == 0.0 {
         return (t1, *x1, 0);
     }
-    let tol = (4.0 * f64::EPSILON * t0.abs().max(t1.abs()).max(f64::MIN_POSITIVE))
-        .max(event.tolerance);
+    let tol =
+        (4.0 * f64::EPSILON * t0.abs().max(t1.abs()).max(f64::MIN_POSITIVE)).max(event.tolerance);
     let (mut a, mut ga) = (t0, g0);
     let (mut b, mut gb) = (t1, g1);
     let mut xb = *x1;

@@ -303,7 +303,9 @@ fn main() -> ExitCode {
         let settings: Result<Vec<_>, String> =
             args.settings.iter().map(|s| parse_setting(s)).collect();
         match settings {
-            Ok(settings) => three.iter_mut().for_each(|c| c.settings.clone_from(&settings)),
+            Ok(settings) => three
+                .iter_mut()
+                .for_each(|c| c.settings.clone_from(&settings)),
             Err(e) => {
                 eprintln!("error: {e}");
                 return ExitCode::FAILURE;
@@ -371,7 +373,12 @@ fn three_d_cases(only: &[String]) -> Vec<three_d::Case> {
              every contact transition an event, the terminal events",
             include_str!("../../../scenes/insert_rcc.toml"),
         );
-        c.check = (Dopri5, 1e-10);
+        // At rtol 1e-10 and below RODAS4 (and at 1e-11 DOPRI5) stop at
+        // the landing on the chamfer with a step size too small: DOPRI5 at
+        // 1e-10 is the tightest run that seats, checked against RODAS4 at
+        // 1e-9.
+        c.reference = (Dopri5, 1e-10);
+        c.check = (Rodas4, 1e-9);
         c.settings = [
             grid(Rk4, &[5e-5, 2e-5]),
             grid(Dopri5, &[1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9]),
