@@ -53,7 +53,7 @@ pub struct Peg3d {
     /// The warm starts of each pair's search: a cache (any call may
     /// search from scratch), not state of the model.
     searches: RefCell<[Search; Pair::ALL.len()]>,
-    /// The contacts the last right-hand side found ([`Found`]).
+    /// The contacts and setups of the last pose searched ([`Found`]).
     found: RefCell<Found>,
 }
 
@@ -130,7 +130,7 @@ impl Peg3d {
 
     /// `f` of the contacts of state `y` ([`Peg3d::contacts`]): those of the
     /// last search when it was at the same pose with the same parameters
-    /// ([`Found`]), else those of a new search, which replace them.
+    /// (kept with the system), else those of a new search, which replace them.
     pub fn with_contacts<R>(
         &self,
         y: &SVector<f64, 15>,
@@ -153,7 +153,7 @@ impl Peg3d {
     }
 
     /// Every contact point of state `y` into `out` (cleared first): the
-    /// search of each pair, uncached ([`Found`]); each pair's search keeps
+    /// search of each pair, not kept; each pair's search keeps
     /// its own certified clearance.
     pub fn search(&self, y: &SVector<f64, 15>, out: &mut Contacts) {
         let x = Self::pose(y);
@@ -203,7 +203,7 @@ impl Peg3d {
     /// Every contact of state `y` ([`Peg3d::contacts`]) with its Hertz
     /// setup ([`forces::setups`]): the point contacts, then the rings;
     /// those of the last call when it was at the same pose with the same
-    /// parameters ([`Found`]).
+    /// parameters.
     ///
     /// # Errors
     /// A contact whose Hertz setup fails (relative curvature not positive).
@@ -242,7 +242,7 @@ impl Peg3d {
     }
 
     /// `f` of the setups of state `y`: those found at the last call at the
-    /// same pose with the same parameters ([`Found`]), else those of a new
+    /// same pose with the same parameters, else those of a new
     /// search, which replace them.
     ///
     /// # Errors

@@ -873,3 +873,52 @@ fn a_contact_hertz_cannot_set_up_is_an_error_value_through_the_integrator() {
         sol.model_error
     );
 }
+
+#[test]
+fn contacts_and_forces_asked_again_at_a_pose_equal_those_of_a_fresh_search() {
+    // The system keeps the contacts and Hertz setups of the last pose it
+    // searched; asked again at that pose (any velocity), after another
+    // pose, or at a pose one ulp away, it must give what a system that
+    // never searched before finds there.
+    let prm = fig9();
+    let peg = Peg3d::new(prm);
+    let mut states = Vec::new();
+    for (gamma, psi) in [(0.06, 0.0), (0.1, 1.0), (0.2, 2.5), (0.3, 4.0)] {
+        let (c, q) = pegdyn::compliant_peg_3d::insertion::lean_pose(&prm, gamma, psi).unwrap();
+        // Pressed 2 µm further in: every lean contact penetrates.
+        let y = pose_state(
+            c - Vector3::z() * 2e-6,
+            q,
+            Vector3::new(1e-3, -2e-3, -5e-3),
+            Vector3::new(0.5, -0.2, 3.0),
+        );
+        states.push(y);
+    }
+    let fresh = |y: &SVector<f64, 15>| {
+        let p = Peg3d::new(prm);
+        (p.contacts(y), p.forces(y).unwrap())
+    };
+    for (k, y) in states.iter().enumerate() {
+        let (contacts, forces) = fresh(y);
+        assert!(contacts.len() >= 2, "{k}: {contacts:?}");
+        assert_eq!(peg.contacts(y), contacts, "{k}");
+        assert_eq!(peg.forces(y).unwrap(), forces, "{k}");
+        assert_eq!(peg.contacts(y), contacts, "{k}: again");
+        // Same pose, other velocities: the same contacts, the law anew.
+        let mut moving = *y;
+        moving[7] += 0.01;
+        moving[12] -= 2.0;
+        let (_, moving_forces) = fresh(&moving);
+        assert_ne!(moving_forces, forces);
+        assert_eq!(peg.forces(&moving).unwrap(), moving_forces, "{k}: moving");
+        // One ulp away in height: searched again.
+        let mut near = *y;
+        near[2] = f64::from_bits(near[2].to_bits() + 1);
+        assert_eq!(peg.forces(&near).unwrap(), fresh(&near).1, "{k}: near");
+        // After the next pose, back to this one.
+        let other = &states[(k + 1) % states.len()];
+        assert_eq!(peg.contacts(other), fresh(other).0, "{k}: other");
+        assert_eq!(peg.contacts(y), contacts, "{k}: back");
+        assert_eq!(peg.forces(y).unwrap(), forces, "{k}: back");
+    }
+}
