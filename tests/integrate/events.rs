@@ -227,14 +227,23 @@ fn a_time_tolerance_bounds_the_location_of_a_step_event_and_saves_halvings() {
     // the located time is the right end of a bracket no wider than the
     // tolerance (or a few ulps of t without one).
     let (t_ulps, calls_ulps) = step_event_location(0.0);
-    assert!(t_ulps >= FRAC_PI_2 - 1e-10 && t_ulps - FRAC_PI_2 < 1e-10, "{t_ulps}");
+    assert!(
+        t_ulps >= FRAC_PI_2 - 1e-10 && t_ulps - FRAC_PI_2 < 1e-10,
+        "{t_ulps}"
+    );
     for tol in [1e-9, 1e-6, 1e-3] {
         let (t, calls) = step_event_location(tol);
         // The interpolant's own zero is within 1e-10 of π/2.
-        assert!(t >= FRAC_PI_2 - 1e-10 && t - FRAC_PI_2 <= tol + 1e-10, "{tol}: {t}");
+        assert!(
+            t >= FRAC_PI_2 - 1e-10 && t - FRAC_PI_2 <= tol + 1e-10,
+            "{tol}: {t}"
+        );
         // Each factor of two of the bracket not taken is one call saved.
         let saved = (tol / (4.0 * f64::EPSILON * 2.0)).log2().floor() as usize;
-        assert!(calls + saved <= calls_ulps + 2, "{tol}: {calls} vs {calls_ulps}");
+        assert!(
+            calls + saved <= calls_ulps + 2,
+            "{tol}: {calls} vs {calls_ulps}"
+        );
     }
     // A negative or NaN tolerance is none.
     assert_eq!(step_event_location(-1.0), (t_ulps, calls_ulps));
