@@ -241,6 +241,12 @@ impl<'a> CountCache<'a> {
     }
 }
 
+/// The time (s) to which a contact transition is located: the counts are
+/// piecewise constant, so each halving of the bracket costs a contact
+/// search; `10⁻⁹ s` is ten thousand times below the transitions' accuracy
+/// target (`10⁻⁵ s`) and saves about half of the searches of the location.
+pub const TRANSITION_TOLERANCE: f64 = 1e-9;
+
 /// One contact-state event: `(pair index, k)`: the pair's point count
 /// crosses from `k − 1` to `k` (rising) or back (falling).
 pub type Transition = (usize, usize);
@@ -258,7 +264,8 @@ pub fn transition_events<'a>(
                 Event::new(move |t, y: &SVector<f64, N_STATE>| {
                     cache.counts(t, y)[i] as f64 - k as f64 + 0.5
                 })
-                .direction(Direction::Both),
+                .direction(Direction::Both)
+                .tolerance(TRANSITION_TOLERANCE),
             );
             what.push((i, k));
         }

@@ -53,21 +53,35 @@ pub struct Peg3d {
     /// The warm starts of each pair's search: a cache (any call may
     /// search from scratch), not state of the model.
     searches: RefCell<[Search; Pair::ALL.len()]>,
-    /// The contacts the last right-hand side found ([`Found`]).
-    found: RefCell<Option<Found>>,
+    /// The contacts and setups of the last pose searched ([`Found`]).
+    found: RefCell<Found>,
 }
 
-/// The contacts and Hertz setups that the last right-hand side
-/// ([`Peg3d::contact_wrench`]) found, with what they were found at: the
-/// bits of the pose part `(p, q)` of the state (the search and the setups
-/// read nothing else of it) and the parameters. The Jacobian at the same
-/// state, which a Rosenbrock step asks for right after `f(y)`, takes
-/// these instead of searching again ([`Peg3d::with_setups`]); at any other
-/// state, or after the parameters changed, it searches.
+/// The contacts (and, once asked for, their Hertz setups) of the last
+/// state searched, with what they were found at: the bits of the pose
+/// part `(p, q)` of the state (the search and the setups read nothing
+/// else of it) and the parameters. A later call at the same pose with the
+/// same parameters takes these instead of searching again: the Jacobian
+/// that a Rosenbrock step asks for right after `f(y)`, and the event
+/// functions, output samples and force checks at the step's end, where
+/// the last right-hand side was evaluated. A second search there would
+/// return the same contacts (the search is a function of the pose; a pair
+/// certified apart at that pose stays apart there), so the memo changes
+/// no result. At any other state, or after the parameters changed, it
+/// searches.
 struct Found {
-    pose_bits: [u64; 7],
+    /// `None` before the first search.
+    pose_bits: Option<[u64; 7]>,
     params: Peg3dParams,
-    setups: Setups,
+    contacts: Contacts,
+    setups: Option<Setups>,
+}
+
+impl Found {
+    /// Whether these were found at the pose of `y` with `params`.
+    fn at(&self, y: &SVector<f64, 15>, params: &Peg3dParams) -> bool {
+        self.pose_bits == Some(pose_bits(y)) && self.params == *params
+    }
 }
 
 /// The bits of the pose part `(p, q)` of a state.
@@ -82,7 +96,12 @@ impl Peg3d {
             p: params.vector(),
             params,
             searches: RefCell::new(Default::default()),
-            found: RefCell::new(None),
+            found: RefCell::new(Found {
+                pose_bits: None,
+                params,
+                contacts: Contacts::new(),
+                setups: None,
+            }),
         }
     }
 
@@ -101,20 +120,50 @@ impl Peg3d {
     /// bottom at small tilt, the distributed ring of [`super::face`] (the
     /// point search is skipped where the ring carries the flat alone).
     pub fn contacts(&self, y: &SVector<f64, 15>) -> Vec<ContactPoint> {
-        self.contacts_fixed(y).to_vec()
+        self.with_contacts(y, <[ContactPoint]>::to_vec)
     }
 
-    /// [`Peg3d::contacts`] in a fixed-capacity array (what the right-hand
-    /// side uses: no allocation).
+    /// [`Peg3d::contacts`] in a fixed-capacity array (no allocation).
     pub fn contacts_fixed(&self, y: &SVector<f64, 15>) -> Contacts {
+        self.with_contacts(y, |c| c.iter().copied().collect())
+    }
+
+    /// `f` of the contacts of state `y` ([`Peg3d::contacts`]): those of the
+    /// last search when it was at the same pose with the same parameters
+    /// (kept with the system), else those of a new search, which replace them.
+    pub fn with_contacts<R>(
+        &self,
+        y: &SVector<f64, 15>,
+        f: impl FnOnce(&[ContactPoint]) -> R,
+    ) -> R {
+        f(&self.found_at(y).contacts)
+    }
+
+    /// The memo of [`Found`] at state `y`: a new search unless it is at the
+    /// pose of `y` with the current parameters.
+    fn found_at(&self, y: &SVector<f64, 15>) -> std::cell::RefMut<'_, Found> {
+        let mut found = self.found.borrow_mut();
+        if !found.at(y, &self.params) {
+            found.pose_bits = Some(pose_bits(y));
+            found.params = self.params;
+            found.setups = None;
+            self.search(y, &mut found.contacts);
+        }
+        found
+    }
+
+    /// Every contact point of state `y` into `out` (cleared first): the
+    /// search of each pair, not kept; each pair's search keeps
+    /// its own certified clearance.
+    pub fn search(&self, y: &SVector<f64, 15>, out: &mut Contacts) {
         let x = Self::pose(y);
-        let mut out = Contacts::new();
+        out.clear();
         let mut s = self.searches.borrow_mut();
         for (k, pair) in Pair::ALL.iter().enumerate() {
             let ring = prune::ring_applies(*pair, &self.params, &x);
             let weight = if ring { self.point_weight(&x) } else { 1.0 };
             if weight > 0.0 && prune::can_touch(*pair, &self.params, &x) {
-                s[k].find(*pair, &self.params, &x, &self.p, &mut out);
+                s[k].find(*pair, &self.params, &x, &self.p, out);
             } else {
                 s[k] = Search::default();
             }
@@ -125,7 +174,6 @@ impl Peg3d {
                 }
             }
         }
-        out
     }
 
     /// The hand-over weight `s` of the plane pairs' point contacts at pose
@@ -153,17 +201,14 @@ impl Peg3d {
     }
 
     /// Every contact of state `y` ([`Peg3d::contacts`]) with its Hertz
-    /// setup ([`forces::setups`]): the point contacts, then the rings.
+    /// setup ([`forces::setups`]): the point contacts, then the rings;
+    /// those of the last call when it was at the same pose with the same
+    /// parameters.
     ///
     /// # Errors
     /// A contact whose Hertz setup fails (relative curvature not positive).
     pub fn setups(&self, y: &SVector<f64, 15>) -> Result<Setups, HertzError> {
-        forces::setups(
-            &self.params,
-            &self.p,
-            &Self::pose(y),
-            &self.contacts_fixed(y),
-        )
+        self.with_setups(y, |s| s.iter().copied().collect())
     }
 
     /// Every contact with its forces at state `y`: the point contacts,
@@ -183,44 +228,42 @@ impl Peg3d {
     /// # Errors
     /// A contact whose Hertz setup fails (relative curvature not positive).
     pub fn contact_wrench(&self, y: &SVector<f64, 15>) -> Result<SVector<f64, 7>, HertzError> {
-        let setups = self.setups(y)?;
         let m = frame::Motion::of_state(y.as_slice());
         let law = LawParams::of(&self.params);
-        let w = SVector::from(forces::contact_wrench(
-            &self.params,
-            &law,
-            &m,
-            &setups,
-            |_, _, at| *at,
-        ));
-        *self.found.borrow_mut() = Some(Found {
-            pose_bits: pose_bits(y),
-            params: self.params,
-            setups,
-        });
-        Ok(w)
+        self.with_setups(y, |setups| {
+            SVector::from(forces::contact_wrench(
+                &self.params,
+                &law,
+                &m,
+                setups,
+                |_, _, at| *at,
+            ))
+        })
     }
 
-    /// `f` of the setups of state `y`: those the last right-hand side found
-    /// when it was evaluated at the same pose with the same parameters,
-    /// else those of a new search ([`Peg3d::setups`]).
+    /// `f` of the setups of state `y`: those found at the last call at the
+    /// same pose with the same parameters, else those of a new
+    /// search, which replace them.
     ///
     /// # Errors
-    /// As [`Peg3d::setups`] when it has to search.
+    /// A contact whose Hertz setup fails (relative curvature not positive).
     pub fn with_setups<R>(
         &self,
         y: &SVector<f64, 15>,
         f: impl FnOnce(&[forces::Setup]) -> R,
     ) -> Result<R, HertzError> {
-        if let Some(found) = self
-            .found
-            .borrow()
-            .as_ref()
-            .filter(|c| c.pose_bits == pose_bits(y) && c.params == self.params)
-        {
-            return Ok(f(&found.setups));
-        }
-        Ok(f(&self.setups(y)?))
+        let mut found = self.found_at(y);
+        let found = &mut *found;
+        let setups = match &mut found.setups {
+            Some(s) => s,
+            slot => slot.insert(forces::setups(
+                &self.params,
+                &self.p,
+                &Self::pose(y),
+                &found.contacts,
+            )?),
+        };
+        Ok(f(setups))
     }
 
     /// The contact wrench at state `y` in dual numbers of the state

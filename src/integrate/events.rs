@@ -3,7 +3,8 @@
 //!
 //! A sign change of `g` between the ends of a step is located by the
 //! Illinois variant of regula falsi on `θ ↦ g(t(θ), x(θ))`, where `x(θ)` is
-//! the step's interpolant, until the bracket is a few ulps of `t` wide. Two
+//! the step's interpolant, until the bracket is a few ulps of `t` wide (or
+//! the event's own time tolerance, [`Event::tolerance`]). Two
 //! sign changes inside one step cancel and are not seen: keep `h_max`
 //! below the shortest time between zeros you need to resolve.
 
@@ -40,6 +41,7 @@ pub struct Event<'a, const N: usize> {
     function: Box<EventFn<'a, N>>,
     direction: Direction,
     terminal: bool,
+    tolerance: f64,
 }
 
 impl<'a, const N: usize> Event<'a, N> {
@@ -49,7 +51,18 @@ impl<'a, const N: usize> Event<'a, N> {
             function: Box::new(function),
             direction: Direction::Both,
             terminal: false,
+            tolerance: 0.0,
         }
+    }
+
+    /// Locates the event's time to within `tolerance` (s) rather than a
+    /// few ulps of `t`: for an event function that is piecewise constant
+    /// (a count), whose location halves the bracket at each call, so that
+    /// each factor of two of precision costs one evaluation. Negative or
+    /// NaN values count as 0.
+    pub fn tolerance(mut self, tolerance: f64) -> Self {
+        self.tolerance = if tolerance > 0.0 { tolerance } else { 0.0 };
+        self
     }
 
     /// Sets the direction filter.
@@ -99,6 +112,7 @@ impl<const N: usize> std::fmt::Debug for Event<'_, N> {
         f.debug_struct("Event")
             .field("direction", &self.direction)
             .field("terminal", &self.terminal)
+            .field("tolerance", &self.tolerance)
             .finish_non_exhaustive()
     }
 }
@@ -118,7 +132,8 @@ pub(crate) fn locate<const N: usize>(
     if g1 == 0.0 {
         return (t1, *x1, 0);
     }
-    let tol = 4.0 * f64::EPSILON * t0.abs().max(t1.abs()).max(f64::MIN_POSITIVE);
+    let tol =
+        (4.0 * f64::EPSILON * t0.abs().max(t1.abs()).max(f64::MIN_POSITIVE)).max(event.tolerance);
     let (mut a, mut ga) = (t0, g0);
     let (mut b, mut gb) = (t1, g1);
     let mut xb = *x1;

@@ -873,3 +873,62 @@ fn a_contact_hertz_cannot_set_up_is_an_error_value_through_the_integrator() {
         sol.model_error
     );
 }
+
+#[test]
+fn contacts_and_forces_asked_again_at_a_pose_equal_those_of_a_fresh_search() {
+    // The system keeps the contacts and Hertz setups of the last pose it
+    // searched; asked again at that pose (any velocity), after another
+    // pose, or at a pose one ulp away, it must give what a system that
+    // never searched before finds there.
+    let prm = fig9();
+    let peg = Peg3d::new(prm);
+    let mut states = Vec::new();
+    for (gamma, psi) in [(0.06, 0.0), (0.1, 1.0), (0.2, 2.5), (0.3, 4.0)] {
+        let (c, q) = pegdyn::compliant_peg_3d::insertion::lean_pose(&prm, gamma, psi).unwrap();
+        // Pressed 30 µm further in.
+        let y = pose_state(
+            c - Vector3::z() * 3e-5,
+            q,
+            Vector3::new(1e-3, -2e-3, -5e-3),
+            Vector3::new(0.5, -0.2, 3.0),
+        );
+        states.push(y);
+    }
+    // The rim on the mouth fillet, pressed 20 µm in.
+    for gamma in [0.02, 0.05] {
+        let mut y = rim_on_mouth(&prm, gamma, 2e-5);
+        y[7] = 1e-3;
+        y[12] = 3.0;
+        states.push(y);
+    }
+    let fresh = |y: &SVector<f64, 15>| {
+        let p = Peg3d::new(prm);
+        (p.contacts(y), p.forces(y))
+    };
+    let mut most = 0;
+    for (k, y) in states.iter().enumerate() {
+        let (contacts, forces) = fresh(y);
+        assert!(!contacts.is_empty(), "{k}");
+        most = most.max(contacts.len());
+        assert_eq!(peg.contacts(y), contacts, "{k}");
+        assert_eq!(peg.forces(y), forces, "{k}");
+        assert_eq!(peg.contacts(y), contacts, "{k}: again");
+        // Same pose, other velocities: the same contacts, the law anew.
+        let mut moving = *y;
+        moving[7] += 0.01;
+        moving[12] -= 2.0;
+        let (_, moving_forces) = fresh(&moving);
+        assert_eq!(peg.forces(&moving), moving_forces, "{k}: moving");
+        // One ulp away in height: searched again.
+        let mut near = *y;
+        near[2] = f64::from_bits(near[2].to_bits() + 1);
+        assert_eq!(peg.forces(&near), fresh(&near).1, "{k}: near");
+        // After the next pose, back to this one.
+        let other = &states[(k + 1) % states.len()];
+        assert_eq!(peg.contacts(other), fresh(other).0, "{k}: other");
+        assert_eq!(peg.contacts(y), contacts, "{k}: back");
+        assert_eq!(peg.forces(y), forces, "{k}: back");
+    }
+    // Some pose has more than one contact.
+    assert!(most >= 2, "{most}");
+}

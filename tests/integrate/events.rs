@@ -204,3 +204,48 @@ fn falling_body_reaches_ground_at_sqrt_2h_over_g() {
     assert!((t - (2.0 / g).sqrt()).abs() < 1e-13, "t={t}");
     assert!((sol.x_final[1] + (2.0 * g).sqrt()).abs() < 1e-12);
 }
+
+/// The number of evaluations a piecewise-constant event (the sign of
+/// `cos t`, a count's kind of function) takes to be located, and the time
+/// located, with the given time tolerance.
+fn step_event_location(tolerance: f64) -> (f64, usize) {
+    let osc = HarmonicOscillator { omega: 1.0 };
+    let sol = Solver::new(Method::Dopri5, tight())
+        .with_event(
+            Event::new(|_t, x: &Vector2<f64>| if x[0] > 0.0 { 1.0 } else { -1.0 })
+                .tolerance(tolerance),
+        )
+        .solve(&osc, 0.0, Vector2::new(1.0, 0.0), 2.0)
+        .unwrap();
+    assert_eq!(sol.events.len(), 1);
+    (sol.events[0].t, sol.stats.event_calls)
+}
+
+#[test]
+fn a_time_tolerance_bounds_the_location_of_a_step_event_and_saves_halvings() {
+    // cos t changes sign at π/2; a step function is located by halving, so
+    // the located time is the right end of a bracket no wider than the
+    // tolerance (or a few ulps of t without one).
+    let (t_ulps, calls_ulps) = step_event_location(0.0);
+    assert!(
+        t_ulps >= FRAC_PI_2 - 1e-10 && t_ulps - FRAC_PI_2 < 1e-10,
+        "{t_ulps}"
+    );
+    for tol in [1e-9, 1e-6, 1e-3] {
+        let (t, calls) = step_event_location(tol);
+        // The interpolant's own zero is within 1e-10 of π/2.
+        assert!(
+            t >= FRAC_PI_2 - 1e-10 && t - FRAC_PI_2 <= tol + 1e-10,
+            "{tol}: {t}"
+        );
+        // Each factor of two of the bracket not taken is one call saved.
+        let saved = (tol / (4.0 * f64::EPSILON * 2.0)).log2().floor() as usize;
+        assert!(
+            calls + saved <= calls_ulps + 2,
+            "{tol}: {calls} vs {calls_ulps}"
+        );
+    }
+    // A negative or NaN tolerance is none.
+    assert_eq!(step_event_location(-1.0), (t_ulps, calls_ulps));
+    assert_eq!(step_event_location(f64::NAN), (t_ulps, calls_ulps));
+}

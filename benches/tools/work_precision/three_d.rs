@@ -209,8 +209,7 @@ pub fn run(case: &Case, kind: MethodKind, setting: f64) -> Measured {
         Setup::Drop(drop) => {
             let (params, start, aligning) = &**drop;
             let sys = Insertion::new(*params, None, *aligning);
-            let counter = Insertion::new(*params, None, 0.0);
-            let cache = CountCache::new(&counter);
+            let cache = CountCache::new(&sys);
             let (events, _) = transition_events(&cache);
             let method = kind.with_step(spec.h).expect("a step for RK4");
             let mut opts = Options::with_tolerances(spec.rtol, spec.atol);
@@ -385,6 +384,30 @@ pub struct Study {
     pub points: Vec<Point>,
     /// What the reference judges.
     pub judged: Judged,
+}
+
+/// Prints the cost of each of `case`'s settings (least CPU time over
+/// `repeats` runs), without a reference.
+pub fn cost(case: &Case, repeats: usize) {
+    for &(method, setting) in &case.settings {
+        let m = (0..repeats.max(1))
+            .map(|_| run(case, method, setting))
+            .min_by(|a, b| a.cpu_s.total_cmp(&b.cpu_s))
+            .expect("at least one run");
+        eprintln!(
+            "{} {} {:e}: {} steps, {} rhs, {} jac, {:.4} s CPU ({:.4} s per simulated s), peak {:.6e} N, {}",
+            case.name,
+            method.name(),
+            setting,
+            m.stats.steps,
+            m.stats.rhs_calls,
+            m.stats.jacobian_calls,
+            m.cpu_s,
+            m.cpu_s / m.t_final,
+            m.peak,
+            m.stop
+        );
+    }
 }
 
 /// Runs every setting of `case` against its reference; each setting

@@ -253,8 +253,9 @@ impl Scene for Ready {
 
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
         let sys = Insertion::new(self.params, None, self.scene.drop.aligning_moment);
-        let counter = Insertion::new(self.params, None, 0.0);
-        let cache = CountCache::new(&counter);
+        // The counts share the run's search: at a step's end they take
+        // the contacts its last right-hand side found there.
+        let cache = CountCache::new(&sys);
         let (events, what) = transition_events(&cache);
         let sol = integrate(
             &sys,

@@ -275,10 +275,11 @@ pub fn run_one(
     progress: &mut Progress,
 ) -> Result<Run, RunError> {
     let sys = Insertion::new(b.params, Some(b.held), 0.0);
-    let counter = Insertion::new(b.params, None, 0.0);
     let y0 = b.start_state(&sys);
     let (solution, what) = {
-        let cache = CountCache::new(&counter);
+        // The counts share the run's search: at a step's end they take
+        // the contacts its last right-hand side found there.
+        let cache = CountCache::new(&sys);
         let mut events = terminal_events(&sys, b.criteria);
         let mut what = Vec::new();
         if track {
