@@ -11,8 +11,16 @@ import pegdyn
 from conftest import SCENES
 
 # The jamming scene's dynamic check is 169 compliant insertions; a 3 x 3
-# grid exercises the same code at a tenth of the cost.
-SMALLER = {"jamming": {"sweep.n": 3}}
+# grid exercises the same code at a tenth of the cost. The 1,008-run
+# rotation grid: 2 x 2 x 2 x 1 of its axes, the same kind and settings.
+SMALLER = {
+    "jamming": {"sweep.n": 3},
+    "rotation_assist_grid": {
+        "grid.lateral_errors": [0.0, 3e-4],
+        "grid.precession_rates": [0.0, 10.0],
+        "grid.spin_rates": [0.0],
+    },
+}
 
 
 def scene_for(path):
