@@ -215,61 +215,68 @@ impl<const N: usize> ElasticPeg3d<N> {
         let mut seen = [0usize; Pair::ALL.len()];
         let weight = forces::point_weight(&m.pose);
         let ring_radius = prm.peg_radius() - prm.rim_fillet;
-        forces::evaluate(prm, &lp, &m, setups, |_, _, at| *at, |st, at, load, col| {
-            let cp = &st.contact;
-            let index = if cp.ring {
-                0
-            } else {
-                let i = seen[cp.pair.index()];
-                seen[cp.pair.index()] += 1;
-                i
-            };
-            let Some(k) = self.slot_of(cp.pair, cp.ring, index) else {
-                law::add_to_wrench(&mut w, &m, at, load, col);
-                return;
-            };
-            let s = if st.weighted { weight } else { 1.0 };
-            let (normal_stiffness, exponent) = if cp.ring {
-                (
-                    (1.0 - weight) * 2.0 * std::f64::consts::PI * ring_radius * st.stiffness,
-                    0.0,
-                )
-            } else {
-                (1.5 * s * st.stiffness * at.penetration.sqrt(), 0.5)
-            };
-            let touch = Touch {
-                normal: at.normal,
-                velocity: m.point_velocity(&at.point),
-                elastic: load.elastic,
-                normal_stiffness,
-                exponent,
-                penetration: at.penetration,
-            };
-            let spring = mindlin::spring(&self.law, &touch, &Self::displacement(y, k));
-            let replaced = Load {
-                friction: spring.force,
-                ..*load
-            };
-            law::add_to_wrench(&mut w, &m, at, &replaced, col);
-            // The spring's own dissipation instead of −F_t·v_t.
-            let vc = touch.velocity;
-            let vt = sub(&vc, &scale(&at.normal, dot(&at.normal, &vc)));
-            w[6] += spring.dissipation + dot(&spring.force, &vt);
-            // The stored energy's normal force P n at the contact point.
-            let pn = scale(&at.normal, spring.normal);
-            let t = cross(&sub(&at.point, &m.centre), &pn);
-            for j in 0..3 {
-                w[j] += pn[j];
-                w[3 + j] += t[j];
-            }
-            out[k] = SlotForce {
-                key: self.slots[k],
-                touching: true,
-                normal_force: load.normal_force,
-                elastic: load.elastic,
-                spring,
-            };
-        });
+        forces::evaluate(
+            prm,
+            &lp,
+            &m,
+            setups,
+            |_, _, at| *at,
+            |st, at, load, col| {
+                let cp = &st.contact;
+                let index = if cp.ring {
+                    0
+                } else {
+                    let i = seen[cp.pair.index()];
+                    seen[cp.pair.index()] += 1;
+                    i
+                };
+                let Some(k) = self.slot_of(cp.pair, cp.ring, index) else {
+                    law::add_to_wrench(&mut w, &m, at, load, col);
+                    return;
+                };
+                let s = if st.weighted { weight } else { 1.0 };
+                let (normal_stiffness, exponent) = if cp.ring {
+                    (
+                        (1.0 - weight) * 2.0 * std::f64::consts::PI * ring_radius * st.stiffness,
+                        0.0,
+                    )
+                } else {
+                    (1.5 * s * st.stiffness * at.penetration.sqrt(), 0.5)
+                };
+                let touch = Touch {
+                    normal: at.normal,
+                    velocity: m.point_velocity(&at.point),
+                    elastic: load.elastic,
+                    normal_stiffness,
+                    exponent,
+                    penetration: at.penetration,
+                };
+                let spring = mindlin::spring(&self.law, &touch, &Self::displacement(y, k));
+                let replaced = Load {
+                    friction: spring.force,
+                    ..*load
+                };
+                law::add_to_wrench(&mut w, &m, at, &replaced, col);
+                // The spring's own dissipation instead of −F_t·v_t.
+                let vc = touch.velocity;
+                let vt = sub(&vc, &scale(&at.normal, dot(&at.normal, &vc)));
+                w[6] += spring.dissipation + dot(&spring.force, &vt);
+                // The stored energy's normal force P n at the contact point.
+                let pn = scale(&at.normal, spring.normal);
+                let t = cross(&sub(&at.point, &m.centre), &pn);
+                for j in 0..3 {
+                    w[j] += pn[j];
+                    w[3 + j] += t[j];
+                }
+                out[k] = SlotForce {
+                    key: self.slots[k],
+                    touching: true,
+                    normal_force: load.normal_force,
+                    elastic: load.elastic,
+                    spring,
+                };
+            },
+        );
         (w, out)
     }
 

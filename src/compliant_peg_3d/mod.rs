@@ -51,8 +51,8 @@
 //! See `docs/compliant-peg-3d.md`.
 
 pub mod contact;
-pub mod elastic;
 pub mod curvature;
+pub mod elastic;
 pub mod face;
 pub mod forces;
 pub mod frame;
@@ -69,8 +69,8 @@ pub mod stiffness;
 pub mod system;
 
 pub use contact::{ContactPoint, Contacts, MAX_CONTACTS, Pair, Saddle, axis_of};
-pub use forces::ContactForce;
 pub use elastic::{ElasticError, ElasticPeg3d, SlotForce, SlotKey};
+pub use forces::ContactForce;
 pub use params::{FrictionLaw, HertzMode, Peg3dParams};
 pub use search::Search;
 pub use system::{Peg3d, pose_state};

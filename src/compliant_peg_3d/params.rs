@@ -83,7 +83,7 @@ pub enum FrictionLaw {
 
 /// Default damping time `τ_t` (s) of the elastic law's tangential springs
 /// (as the compliant planar peg's).
-pub const TANGENTIAL_DAMPING: f64 = 1e-4;
+pub const TANGENTIAL_DAMPING: f64 = 0.0;
 
 impl Peg3dParams {
     /// A solid steel cylinder of diameter `d` and length `l` in a steel
