@@ -234,3 +234,31 @@ fn regularized_law_approaches_the_elastic_one_as_v_s_shrinks() {
     }
     assert!(diffs[3].abs() < 1e-9, "{diffs:?}");
 }
+
+#[test]
+fn elastic_system_refuses_what_it_cannot_integrate() {
+    use pegdyn::compliant_peg_3d::ElasticError;
+    let ring = [SlotKey::ring(Pair::RimTop)];
+    let reg = params(FrictionLaw::Regularized, 0.0, 0.0);
+    assert!(matches!(
+        ElasticPeg3d::<N>::try_new(reg, &ring),
+        Err(ElasticError::FrictionLaw)
+    ));
+    let mut no_friction = params(FrictionLaw::Elastic, 0.0, 0.0);
+    no_friction.friction = 0.0;
+    assert!(matches!(
+        ElasticPeg3d::<N>::try_new(no_friction, &ring),
+        Err(ElasticError::Friction(_))
+    ));
+    let err = ElasticPeg3d::<21>::try_new(params(FrictionLaw::Elastic, 0.0, 0.0), &ring)
+        .err()
+        .unwrap();
+    assert_eq!(
+        err,
+        ElasticError::Slots {
+            slots: 1,
+            state: 21
+        }
+    );
+    assert!(err.to_string().contains("18"), "{err}");
+}
