@@ -210,8 +210,8 @@ mod tests {
         let s = spring(&law, &touch, &xi);
         assert_eq!(s.rate, [0.0; 3]);
         let kt = law.ratio * touch.normal_stiffness;
-        for k in 0..3 {
-            assert!((s.force[k] + kt * xi[k]).abs() <= 1e-15 * kt * 1e-9);
+        for (f, x) in s.force.iter().zip(&xi) {
+            assert!((f + kt * x).abs() <= 1e-15 * kt * 1e-9);
         }
         // P = ∂E_t/∂δ at fixed ξ, k_t ∝ δ^{1/2}: a central difference.
         let e = |d: f64| 0.5 * kt * (d / 1e-7).sqrt() * (xi[0] * xi[0] + xi[1] * xi[1]);
