@@ -10,9 +10,9 @@
 //! its contacts and normal law unchanged, replaces the regularized friction
 //! of the tracked contacts by the spring's, and appends the displacements'
 //! rates. Its state length `N = 15 + 3 S` is a type parameter (`S` slots),
-//! its Jacobian the finite-difference default (the spring's rate is not in
-//! the exact Jacobian), and it declares no kinematic split (the
-//! displacements' columns are not zero).
+//! its Jacobian a forward difference with steps scaled to the contact
+//! ([`jacobian_scale`]; the spring is not in the exact Jacobian), and it
+//! declares no kinematic split (the displacements' columns are not zero).
 //!
 //! **Slots.** A slot is keyed by a contact's pair, whether it is the pair's
 //! ring, and its index among the pair's point contacts in the order the
