@@ -12,7 +12,7 @@ use pegdyn::compliant_peg_3d::{
     ElasticPeg3d, FrictionLaw, Pair, Peg3d, Peg3dParams, SlotKey, pose_state,
 };
 use pegdyn::hertz::contact_modulus;
-use pegdyn::integrate::{Method, Options, Solution, solve};
+use pegdyn::integrate::{Method, Options, OutputMode, Solution, solve};
 use pegdyn::system::OdeSystem;
 
 /// State length of the one-slot elastic system.
@@ -261,4 +261,25 @@ fn elastic_system_refuses_what_it_cannot_integrate() {
         }
     );
     assert!(err.to_string().contains("18"), "{err}");
+}
+
+/// As [`elastic_law_holds_a_load_inside_the_cone_without_creep`] over 1 s
+/// (4.2 million steps: run with `--ignored`).
+#[test]
+#[ignore = "4.2 million RODAS4 steps"]
+fn elastic_law_holds_a_load_for_one_second() {
+    let push = 0.5 * MU * load(&params(FrictionLaw::Elastic, 0.0, 0.0));
+    let prm = params(FrictionLaw::Elastic, push, push);
+    let sys = elastic(prm);
+    let y0 = with_displacement(&start(&prm, Vector3::zeros()), push / ring_stiffness(&prm));
+    let options = Options {
+        max_steps: 20_000_000,
+        output: OutputMode::AtTimes(vec![0.0, 0.001, 1.0]),
+        ..Options::with_tolerances(1e-8, 1e-13)
+    };
+    let sol = solve(&sys, Method::Rodas4, (0.0, y0), 1.0, &options).unwrap();
+    assert!(sol.stop.is_success(), "{:?}", sol.stop);
+    let slip = drift(&sol, 0.001);
+    eprintln!("slip {slip:e} m in 1 s; {} steps", sol.stats.steps);
+    assert!(slip <= 1e-9, "elastic law slipped {slip:e} m in 1 s");
 }
