@@ -38,6 +38,10 @@
 //!   and the law at dual numbers of the state, at the given setups.
 //! - [`system`]: the ODE system [`Peg3d`]: search, setups, law, generated
 //!   Newton–Euler right-hand side; Hertz errors as values.
+//! - [`mindlin`], [`elastic`]: the elastic friction law (Mindlin's
+//!   tangential stiffness capped by Coulomb) and the system
+//!   [`ElasticPeg3d`] that carries a tangential displacement per tracked
+//!   contact in its state.
 //! - [`prescribed`], [`wrist`], [`robot`], [`insertion`], [`outcome`]: the
 //!   peg driven along a prescribed orientation, held by a compliant wrist
 //!   that a robot moves, and how an insertion ends; [`held`]: the wrist's
@@ -48,6 +52,7 @@
 
 pub mod contact;
 pub mod curvature;
+pub mod elastic;
 pub mod face;
 pub mod forces;
 pub mod frame;
@@ -55,6 +60,7 @@ pub mod held;
 pub mod jacobian;
 pub mod law;
 pub mod merge;
+pub mod mindlin;
 pub mod params;
 pub mod prescribed;
 pub mod prune;
@@ -63,8 +69,9 @@ pub mod stiffness;
 pub mod system;
 
 pub use contact::{ContactPoint, Contacts, MAX_CONTACTS, Pair, Saddle, axis_of};
+pub use elastic::{ElasticError, ElasticPeg3d, SlotForce, SlotKey};
 pub use forces::ContactForce;
-pub use params::{HertzMode, Peg3dParams};
+pub use params::{FrictionLaw, HertzMode, Peg3dParams};
 pub use search::Search;
 pub use system::{Peg3d, pose_state};
 pub mod insertion;

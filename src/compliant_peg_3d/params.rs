@@ -56,13 +56,44 @@ pub struct Peg3dParams {
     pub damping: f64,
     /// How the Hertz stiffness is obtained.
     pub hertz: HertzMode,
+    /// The tangential friction law at the contacts. [`super::Peg3d`] (15
+    /// states) applies the regularized law whatever this says; the elastic
+    /// law needs the tangential displacements of
+    /// [`super::elastic::ElasticPeg3d`], which requires
+    /// [`FrictionLaw::Elastic`].
+    pub friction_law: FrictionLaw,
+    /// Damping time `τ_t ≥ 0` (s) of the elastic law's tangential springs:
+    /// a damper `τ_t k_t` on their stick motion ([`super::mindlin`]).
+    pub tangential_damping: f64,
 }
+
+/// The tangential friction law at the compliant 3-D peg's contacts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum FrictionLaw {
+    /// Regularized Coulomb `F_t = −μ Q v_t/√(|v_t|² + v_s²)`: no extra
+    /// state; a stuck contact creeps at a speed of the order of `v_s`.
+    #[default]
+    Regularized,
+    /// Mindlin's tangential compliance capped by Coulomb
+    /// ([`super::mindlin`]): a tangential displacement per tracked contact
+    /// in the state ([`super::elastic`]); a stuck contact holds without
+    /// creep and a sliding one carries `μ Q`.
+    Elastic,
+}
+
+/// Default damping time `τ_t` (s) of the elastic law's tangential springs:
+/// none. A 3-D contact's tangential spring is stiff (`8 G* ϱ ≈ 8.5e8 N/m`
+/// for a 10 mm steel peg seated on its ring, critical damping at
+/// `τ_t ≈ 8 µs`); the planar peg's 1e-4 s would be an overdamped viscous
+/// grip beyond the Coulomb force.
+pub const TANGENTIAL_DAMPING: f64 = 0.0;
 
 impl Peg3dParams {
     /// A solid steel cylinder of diameter `d` and length `l` in a steel
     /// block with bore `big_d`, fillets `rho_p`, `rho_h`, bore depth `depth`,
     /// density 7850 kg/m³, gravity 9.81 m/s², no applied loads, no friction,
-    /// no damping, curvature-based Hertz stiffness.
+    /// no damping, curvature-based Hertz stiffness, the regularized friction
+    /// law.
     pub fn steel(d: f64, l: f64, big_d: f64, rho_p: f64, rho_h: f64, depth: f64) -> Peg3dParams {
         let r = 0.5 * d;
         let mass = 7850.0 * std::f64::consts::PI * r * r * l;
@@ -85,6 +116,8 @@ impl Peg3dParams {
             slip_scale: 1e-4,
             damping: 0.0,
             hertz: HertzMode::Curvature,
+            friction_law: FrictionLaw::Regularized,
+            tangential_damping: TANGENTIAL_DAMPING,
         }
     }
 

@@ -7,6 +7,7 @@ mod common;
 
 mod contact;
 mod curvature_stiffness;
+mod elastic_friction;
 mod jacobian;
 mod limits_energy;
 mod limits_planar;
