@@ -386,14 +386,21 @@ pub struct Study {
     pub judged: Judged,
 }
 
+/// The run of `case` with `method` at `setting` of least CPU time over
+/// `repeats` runs (at least one; the runs are deterministic, only the
+/// time differs).
+fn least_cpu(case: &Case, method: MethodKind, setting: f64, repeats: usize) -> Measured {
+    (0..repeats.max(1))
+        .map(|_| run(case, method, setting))
+        .min_by(|a, b| a.cpu_s.total_cmp(&b.cpu_s))
+        .expect("at least one run")
+}
+
 /// Prints the cost of each of `case`'s settings (least CPU time over
 /// `repeats` runs), without a reference.
 pub fn cost(case: &Case, repeats: usize) {
     for &(method, setting) in &case.settings {
-        let m = (0..repeats.max(1))
-            .map(|_| run(case, method, setting))
-            .min_by(|a, b| a.cpu_s.total_cmp(&b.cpu_s))
-            .expect("at least one run");
+        let m = least_cpu(case, method, setting, repeats);
         eprintln!(
             "{} {} {:e}: {} steps, {} rhs, {} jac, {:.4} s CPU ({:.4} s per simulated s), peak {:.6e} N, {}",
             case.name,
@@ -432,10 +439,7 @@ pub fn study(case: &Case, repeats: usize) -> Study {
     );
     let mut points = Vec::new();
     for &(method, setting) in &case.settings {
-        let m = (0..repeats.max(1))
-            .map(|_| run(case, method, setting))
-            .min_by(|a, b| a.cpu_s.total_cmp(&b.cpu_s))
-            .expect("at least one run");
+        let m = least_cpu(case, method, setting, repeats);
         let e = errors(&m, &reference, Some(&judged));
         eprintln!(
             "  {} {:e}: {} steps, {} rhs, {} jac, {:.3} s CPU ({:.3} s per simulated s), errors {}, {}",
