@@ -11,10 +11,15 @@ import pegdyn
 from conftest import SCENES
 
 # The jamming scene's dynamic check is 169 compliant insertions; a 3 x 3
-# grid exercises the same code at a tenth of the cost. The 1,008-run
-# rotation grid: 2 x 2 x 2 x 1 of its axes, the same kind and settings.
+# grid exercises the same code at a tenth of the cost. The full-size
+# grids (1,008 rotation runs, 1,023 design-margin runs): a few points of
+# their axes, the same kind and settings.
 SMALLER = {
     "jamming": {"sweep.n": 3},
+    "design_margins_grid": {
+        "grid.centre_lateral_errors": [-6e-4, 0.0, 6e-4],
+        "grid.angular_errors_deg": [0.0],
+    },
     "rotation_assist_grid": {
         "grid.lateral_errors": [0.0, 3e-4],
         "grid.precession_rates": [0.0, 10.0],
