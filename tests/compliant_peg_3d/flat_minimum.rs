@@ -56,7 +56,10 @@ fn the_search_finds_a_penetrating_minimum_in_a_flat_stretch() {
         .unwrap();
     assert!(g_min < -4e-7, "the pose penetrates: {g_min} at {a_min}");
     let found = rim_edge(&mut Search::default(), &prm, &x);
-    assert!(!found.is_empty(), "no rim-on-mouth contact; sampled gap {g_min}");
+    assert!(
+        !found.is_empty(),
+        "no rim-on-mouth contact; sampled gap {g_min}"
+    );
     for &(a, depth) in &found {
         // The minima are within the flat stretch about 0 and as deep as
         // the sampled least gap (to 10⁻¹⁵ m: the stretch is flat).

@@ -112,7 +112,7 @@ pub fn write_outputs<const N: usize>(
         "",
     ));
     out.metrics
-        .extend(crate::scene::summary::energy_drift_warning(drift));
+        .extend(crate::scene::energy_drift_warning(drift));
     out.metrics
         .push(Metric::new("peak contact force", f_max, "N"));
     out.metrics

@@ -333,7 +333,7 @@ pub fn forces_panel(s: &Samples) -> Panel {
 }
 
 /// The run's common metrics, with a warning after the energy balance's
-/// drift when it exceeds [`crate::scene::summary::ENERGY_DRIFT_WARNING`].
+/// drift when it exceeds [`crate::scene::ENERGY_DRIFT_WARNING`].
 pub fn metrics(peaks: &Peaks) -> Vec<Metric> {
     let drift = peaks.drift / peaks.scale.max(1e-300);
     let mut m = vec![
@@ -342,6 +342,6 @@ pub fn metrics(peaks: &Peaks) -> Vec<Metric> {
         Metric::new("peak wrist lateral moment", peaks.wrist_moment, "N m"),
         Metric::new("max |E - E0| / max(|W|, |W_r|, T)", drift, ""),
     ];
-    m.extend(crate::scene::summary::energy_drift_warning(drift));
+    m.extend(crate::scene::energy_drift_warning(drift));
     m
 }
