@@ -60,5 +60,8 @@ pub use kinds::KINDS;
 pub use loader::{LoadedScene, load, load_with, parse, parse_named, parse_named_with};
 pub use numbers::significant;
 pub use progress::{Progress, par_map_counted};
-pub use summary::{EventRecord, IntegrationSummary, Metric, RunSummary, StepFailure};
+pub use summary::{
+    ENERGY_DRIFT_WARNING, EventRecord, IntegrationSummary, Metric, RunSummary, StepFailure,
+    energy_drift_warning,
+};
 pub use timescales::{TimeScale, TimeScales};

@@ -53,6 +53,30 @@ impl Metric {
     }
 }
 
+/// The relative energy-balance drift above which a run's summary warns
+/// that the run is not to be trusted: a conservative balance drifts by
+/// about the integrator's tolerance, so a drift of this size is a force
+/// the model did not derive from its energy (a contact lost or counted
+/// twice), not integration error.
+pub const ENERGY_DRIFT_WARNING: f64 = 1e-3;
+
+/// A warning note when the relative energy-balance drift `drift` (the
+/// value of the run's `max |E - E0| / ...` metric) exceeds
+/// [`ENERGY_DRIFT_WARNING`] or is not a number; `None` otherwise.
+pub fn energy_drift_warning(drift: f64) -> Option<Metric> {
+    (drift.is_nan() || drift > ENERGY_DRIFT_WARNING).then(|| {
+        Metric::note(
+            "WARNING",
+            format!(
+                "the energy balance drifted by {} (relative), above {}: the forces did not \
+                 conserve the model's energy, so the run is not physical; do not use its results",
+                significant(drift),
+                significant(ENERGY_DRIFT_WARNING)
+            ),
+        )
+    })
+}
+
 /// How an integration ended and what it cost.
 #[derive(Debug, Clone, PartialEq)]
 pub struct IntegrationSummary {

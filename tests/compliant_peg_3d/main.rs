@@ -8,6 +8,7 @@ mod common;
 mod contact;
 mod curvature_stiffness;
 mod elastic_friction;
+mod flat_minimum;
 mod jacobian;
 mod limits_energy;
 mod limits_planar;

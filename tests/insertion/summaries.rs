@@ -193,3 +193,38 @@ fn drop_3d_says_when_its_list_of_transitions_is_cut() {
         assert_eq!(rows.last().map(|r| r[0]), t_end);
     }
 }
+
+#[test]
+fn an_energy_balance_drift_above_its_limit_is_a_warning_in_the_summary() {
+    use pegdyn::scene::shared::compliant_peg_3d::output::{Peaks, metrics};
+    use pegdyn::scene::{ENERGY_DRIFT_WARNING, RunSummary};
+    let summary = |drift: f64, scale: f64| {
+        RunSummary {
+            metrics: metrics(&Peaks {
+                contact_force: 5.0,
+                wrist_force: 1.0,
+                wrist_moment: 0.01,
+                drift,
+                scale,
+            }),
+            ..RunSummary::default()
+        }
+        .to_string()
+    };
+    // A drift of 182 (relative) and one just above the limit warn; a
+    // conservative run's 4e-12 and one at the limit do not.
+    for (drift, scale, warns) in [
+        (364.0, 2.0, true),
+        (2.0 * ENERGY_DRIFT_WARNING * 1.001, 2.0, true),
+        (8e-12, 2.0, false),
+        (2.0 * ENERGY_DRIFT_WARNING, 2.0, false),
+    ] {
+        let text = summary(drift, scale);
+        assert_eq!(
+            text.contains("  WARNING: the energy balance drifted by"),
+            warns,
+            "{text}"
+        );
+    }
+    assert!(summary(364.0, 2.0).contains("drifted by 182 (relative)"));
+}

@@ -19,13 +19,21 @@
 //! leaf, an arc too short to halve ([`DEPTH`] halvings, about `10⁻¹³`
 //! rad) or one on which `h′` is within its rounding allowance of zero
 //! (halving it would not narrow the slope's enclosure: a flat stretch,
-//! such as two minima and their col about to merge). In a leaf a minimum
-//! is found when `h′` changes sign from its start to its end; minima and
+//! such as two minima and their col about to merge). In a leaf, as in a
+//! convex arc, a minimum is found when `h′(lo) ≤ 0 ≤ h′(hi)`: a slope that
+//! rounds to exactly zero at the end shared by two leaves (a minimum of a
+//! flat stretch that falls on the end) is found by both, as one point,
+//! where a strict test would let each leave it to the other. Minima and
 //! maxima that alternate within one leaf, whose slopes are below the
 //! rounding of `h′`, are below the resolution of `f64` and may be found
-//! as one. Neighbouring arcs
-//! share their end points and evaluate `h′` there identically, so a sign
-//! change at a shared end is seen by one of them.
+//! as one. Neighbouring arcs share their end points and evaluate `h′`
+//! there identically, so a sign change at a shared end is seen by one of
+//! them.
+//!
+//! A search that ends in a leaf says so ([`Work::leaves`]): where `h′` is
+//! below its rounding the minima it reports are as good as `f64` resolves
+//! them, but not certified, so such a search certifies no clearance
+//! ([`super::Search::find`]).
 
 use super::profile::Profile;
 use std::f64::consts::TAU;
@@ -64,6 +72,9 @@ pub struct Work {
     /// No search: the pair was certified apart at an earlier pose that
     /// this one is too close to for a contact.
     pub cached: bool,
+    /// Arcs ended as leaves (too short to halve, or `h′` within its
+    /// rounding of zero): 0 when every arc was decided by its enclosures.
+    pub leaves: usize,
 }
 
 /// The enclosure's half-width for the arc `[lo, hi]` about `m`: the arc
@@ -162,11 +173,10 @@ pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
             // The circle's end is its start: one evaluation for both.
             let (s_hi, _) = prof.slope(if hi >= TAU { 0.0 } else { hi });
             work.points += 2;
-            let found = if leaf {
-                s_lo < 0.0 && s_hi > 0.0
-            } else {
-                s_lo <= 0.0 && s_hi >= 0.0
-            };
+            if leaf {
+                work.leaves += 1;
+            }
+            let found = s_lo <= 0.0 && s_hi >= 0.0;
             if found && !push(out, newton(prof, lo, hi, s_lo, s_hi, &mut work)) {
                 work.unresolved += 1;
             }

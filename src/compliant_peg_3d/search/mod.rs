@@ -142,8 +142,9 @@ impl Search {
     /// [`merge::assign`].
     ///
     /// The search also finds the minima below [`CLEARANCE`]: when none
-    /// penetrates, their least gap (or `CLEARANCE`) bounds the gap of
-    /// every point of the circle from below, and later calls at poses
+    /// penetrates and every arc was decided by its enclosures (no leaf:
+    /// [`Work::leaves`]), their least gap (or `CLEARANCE`) bounds the gap
+    /// of every point of the circle from below, and later calls at poses
     /// that moved less than that return at once with no
     /// contact (a body point moves by at most `|Δp| + 2|Δq| |b_B|`).
     pub fn find(
@@ -190,7 +191,10 @@ impl Search {
             }
         }
         // Apart (every minimum found, none below zero): certified clear.
-        let certain = self.work.unresolved == 0 && !self.work.flat;
+        // A search that ended in a leaf (a flat stretch, its slope below
+        // rounding) found its minima to the resolution of `f64` only: it
+        // certifies nothing, and the next pose is searched again.
+        let certain = self.work.unresolved == 0 && !self.work.flat && self.work.leaves == 0;
         self.clear = (certain && lowest > 0.0).then_some(Clear {
             pose: *x,
             margin: lowest * (1.0 - 1e-9),

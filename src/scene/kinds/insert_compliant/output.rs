@@ -105,11 +105,14 @@ pub fn write_outputs<const N: usize>(
             .with(series(15, "T + P − W + S")),
     );
     ctx.figure(Part::Main, &fig)?;
+    let drift = drift / work_scale.max(1e-300);
     out.metrics.push(Metric::new(
         "max |T + P - W + S - E0| / max(|W|, T)",
-        drift / work_scale.max(1e-300),
+        drift,
         "",
     ));
+    out.metrics
+        .extend(crate::scene::energy_drift_warning(drift));
     out.metrics
         .push(Metric::new("peak contact force", f_max, "N"));
     out.metrics

@@ -332,16 +332,16 @@ pub fn forces_panel(s: &Samples) -> Panel {
     p
 }
 
-/// The run's common metrics.
+/// The run's common metrics, with a warning after the energy balance's
+/// drift when it exceeds [`crate::scene::ENERGY_DRIFT_WARNING`].
 pub fn metrics(peaks: &Peaks) -> Vec<Metric> {
-    vec![
+    let drift = peaks.drift / peaks.scale.max(1e-300);
+    let mut m = vec![
         Metric::new("peak contact normal force", peaks.contact_force, "N"),
         Metric::new("peak wrist force", peaks.wrist_force, "N"),
         Metric::new("peak wrist lateral moment", peaks.wrist_moment, "N m"),
-        Metric::new(
-            "max |E - E0| / max(|W|, |W_r|, T)",
-            peaks.drift / peaks.scale.max(1e-300),
-            "",
-        ),
-    ]
+        Metric::new("max |E - E0| / max(|W|, |W_r|, T)", drift, ""),
+    ];
+    m.extend(crate::scene::energy_drift_warning(drift));
+    m
 }
