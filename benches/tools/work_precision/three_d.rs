@@ -396,21 +396,30 @@ fn least_cpu(case: &Case, method: MethodKind, setting: f64, repeats: usize) -> M
         .expect("at least one run")
 }
 
+/// A run's work: steps, right-hand sides, Jacobians and CPU time, in
+/// total and per simulated second.
+fn work_text(m: &Measured) -> String {
+    format!(
+        "{} steps, {} rhs, {} jac, {:.4} s CPU ({:.4} s per simulated s)",
+        m.stats.steps,
+        m.stats.rhs_calls,
+        m.stats.jacobian_calls,
+        m.cpu_s,
+        m.cpu_s / m.t_final
+    )
+}
+
 /// Prints the cost of each of `case`'s settings (least CPU time over
 /// `repeats` runs), without a reference.
 pub fn cost(case: &Case, repeats: usize) {
     for &(method, setting) in &case.settings {
         let m = least_cpu(case, method, setting, repeats);
         eprintln!(
-            "{} {} {:e}: {} steps, {} rhs, {} jac, {:.4} s CPU ({:.4} s per simulated s), peak {:.6e} N, {}",
+            "{} {} {:e}: {}, peak {:.6e} N, {}",
             case.name,
             method.name(),
             setting,
-            m.stats.steps,
-            m.stats.rhs_calls,
-            m.stats.jacobian_calls,
-            m.cpu_s,
-            m.cpu_s / m.t_final,
+            work_text(&m),
             m.peak,
             m.stop
         );
@@ -442,14 +451,10 @@ pub fn study(case: &Case, repeats: usize) -> Study {
         let m = least_cpu(case, method, setting, repeats);
         let e = errors(&m, &reference, Some(&judged));
         eprintln!(
-            "  {} {:e}: {} steps, {} rhs, {} jac, {:.3} s CPU ({:.3} s per simulated s), errors {}, {}",
+            "  {} {:e}: {}, errors {}, {}",
             method.name(),
             setting,
-            m.stats.steps,
-            m.stats.rhs_calls,
-            m.stats.jacobian_calls,
-            m.cpu_s,
-            m.cpu_s / m.t_final,
+            work_text(&m),
             Fmt(e),
             m.stop
         );
