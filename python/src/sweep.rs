@@ -41,23 +41,19 @@ struct Derivative {
 /// The cells of column `name` of `t` as text (numbers as the file prints
 /// them, an empty cell empty).
 fn text_column(t: &Table, name: &str) -> Vec<String> {
-    let Some(k) = t.header.iter().position(|h| h == name) else {
-        return Vec::new();
-    };
-    match &t.columns[k] {
-        Column::Numbers(v) => v.iter().map(f64::to_string).collect(),
-        Column::Text(v) => v.clone(),
+    match t.column(name) {
+        Some(Column::Numbers(v)) => v.iter().map(f64::to_string).collect(),
+        Some(Column::Text(v)) => v.clone(),
+        None => Vec::new(),
     }
 }
 
 /// The cells of column `name` of `t` as numbers, NaN for an empty cell.
 fn number_column(t: &Table, name: &str) -> Vec<f64> {
-    let Some(k) = t.header.iter().position(|h| h == name) else {
-        return Vec::new();
-    };
-    match &t.columns[k] {
-        Column::Numbers(v) => v.clone(),
-        Column::Text(v) => v.iter().map(|c| c.parse().unwrap_or(f64::NAN)).collect(),
+    match t.column(name) {
+        Some(Column::Numbers(v)) => v.clone(),
+        Some(Column::Text(v)) => v.iter().map(|c| c.parse().unwrap_or(f64::NAN)).collect(),
+        None => Vec::new(),
     }
 }
 

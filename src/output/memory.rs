@@ -53,6 +53,12 @@ pub struct Table {
 }
 
 impl Table {
+    /// The column headed `name`, if the table has one.
+    pub fn column(&self, name: &str) -> Option<&Column> {
+        let k = self.header.iter().position(|h| h == name)?;
+        self.columns.get(k)
+    }
+
     /// The file stem, e.g. `pendulum` for `pendulum.csv`.
     pub fn stem(&self) -> String {
         std::path::Path::new(&self.file)

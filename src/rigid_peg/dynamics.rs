@@ -210,17 +210,18 @@ pub fn prescribed_system(
 }
 
 /// Solves an N×N rigid-peg system (the hand-derived 5×5, the generated
-/// 5×5 or 3×3 planar one) with LU; `gamma` (rad) names the state in the
-/// error.
+/// 5×5 or 3×3 planar one) with LU for `C` right-hand sides at once (one
+/// for the unknowns, a column per parameter for their derivatives);
+/// `gamma` (rad) names the state in the error.
 ///
 /// # Errors
 /// [`RigidError::Singular`] when the matrix is singular or the solution is
 /// not finite.
-pub fn solve<const N: usize>(
+pub fn solve<const N: usize, const C: usize>(
     a: &SMatrix<f64, N, N>,
-    rhs: &SVector<f64, N>,
+    rhs: &SMatrix<f64, N, C>,
     gamma: f64,
-) -> Result<SVector<f64, N>, RigidError>
+) -> Result<SMatrix<f64, N, C>, RigidError>
 where
     Const<N>: DimMin<Const<N>, Output = Const<N>>,
 {

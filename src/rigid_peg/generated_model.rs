@@ -189,7 +189,7 @@ struct Unknowns {
 
 /// Solves a 2-DOF variant's system A u = b at γ.
 fn solve5(s: rigid_peg::LinearSystem<f64>, gamma: f64) -> Result<Unknowns, RigidError> {
-    let x = solve::<5>(&s.a, &s.b, gamma)?;
+    let x = solve::<5, 1>(&s.a, &s.b, gamma)?;
     Ok(Unknowns {
         head: Vector2::new(x[0], x[1]),
         normal: [x[2], x[3], x[4]],
@@ -199,7 +199,7 @@ fn solve5(s: rigid_peg::LinearSystem<f64>, gamma: f64) -> Result<Unknowns, Rigid
 /// Solves a planar variant's system A u = b at γ: the ψ part is 0 and
 /// N_B1 = N_B2 = N_B.
 fn solve3(s: rigid_peg_planar::LinearSystem<f64>, gamma: f64) -> Result<Unknowns, RigidError> {
-    let x = solve::<3>(&s.a, &s.b, gamma)?;
+    let x = solve::<3, 1>(&s.a, &s.b, gamma)?;
     Ok(Unknowns {
         head: Vector2::new(x[0], 0.0),
         normal: [x[1], x[2], x[2]],

@@ -131,12 +131,9 @@ pub fn forward_sensitivity(
     let l = rigid_peg::Loads::from(loads).into();
     let tv = directions(t).into();
     let sys = rigid_peg::forward(&x, &pv, &l, &tv);
-    let u = solve::<5>(&sys.a, &sys.b, q[0])?;
+    let u = solve::<5, 1>(&sys.a, &sys.b, q[0])?;
     let rp = rigid_peg::forward_p(&x, &u, &pv, &l, &tv);
-    let du = match sys.a.lu().solve(&rp) {
-        Some(du) if du.iter().all(|v| v.is_finite()) => du,
-        _ => return Err(RigidError::Singular { gamma: q[0] }),
-    };
+    let du = solve(&sys.a, &rp, q[0])?;
     Ok(named(&du, p))
 }
 
@@ -220,16 +217,13 @@ pub fn sliding_forward_sensitivity(
     .into();
     let sys = rigid_peg::forward(&xd, &pd, &ld, &td);
     let a = sys.a.map(|e| e.v);
-    let u = solve::<5>(&a, &sys.b.map(|e| e.v), q[0])?;
+    let u = solve::<5, 1>(&a, &sys.b.map(|e| e.v), q[0])?;
     // d(b − A u)/dp_k at the solution, u held: the right-hand side of
     // A du/dp_k = d(b − A u)/dp_k.
     let rhs = SMatrix::<f64, 5, 7>::from_fn(|i, k| {
         let au: f64 = (0..5).map(|j| sys.a[(i, j)].d[k] * u[j]).sum();
         sys.b[i].d[k] - au
     });
-    let du = match a.lu().solve(&rhs) {
-        Some(du) if du.iter().all(|v| v.is_finite()) => du,
-        _ => return Err(RigidError::Singular { gamma: q[0] }),
-    };
+    let du = solve(&a, &rhs, q[0])?;
     Ok(named(&du, p))
 }
