@@ -84,6 +84,25 @@ impl Trig2 {
         [self.a0 + h1 + h2, k1 + 2.0 * k2, -h1 - 4.0 * h2]
     }
 
+    /// `(f, f′, f″, f‴, f⁗)` at the angle whose cosine and sine are
+    /// `(c, s)`: `f‴ = −k₁ − 8k₂`, `f⁗ = h₁ + 16h₂` with the harmonics
+    /// `hⱼ` and their quadratures `kⱼ` of [`Trig2::at`].
+    #[inline]
+    pub fn jet(&self, c: f64, s: f64) -> [f64; 5] {
+        let (c2, s2) = (c * c - s * s, 2.0 * c * s);
+        let h1 = self.a1 * c + self.b1 * s;
+        let h2 = self.a2 * c2 + self.b2 * s2;
+        let k1 = self.b1 * c - self.a1 * s;
+        let k2 = self.b2 * c2 - self.a2 * s2;
+        [
+            self.a0 + h1 + h2,
+            k1 + 2.0 * k2,
+            -h1 - 4.0 * h2,
+            -k1 - 8.0 * k2,
+            h1 + 16.0 * h2,
+        ]
+    }
+
     /// `(n₁, n₂)`: the amplitudes of the two harmonics.
     pub fn amplitudes(&self) -> (f64, f64) {
         (self.a1.hypot(self.b1), self.a2.hypot(self.b2))
@@ -94,15 +113,18 @@ impl Trig2 {
         self.a1 == 0.0 && self.b1 == 0.0 && self.a2 == 0.0 && self.b2 == 0.0
     }
 
-    /// The rounding allowances `(e₀, e₁, e₂)` of `f`, `f′`, `f″` computed
-    /// by [`Trig2::at`].
-    fn rounding(&self) -> [f64; 3] {
+    /// The rounding allowances `(e₀, …, e₄)` of `f`, …, `f⁗` computed by
+    /// [`Trig2::at`] and [`Trig2::jet`] (`eⱼ = 64 u (S₁ + 2ʲ S₂)`, `a₀`
+    /// in `e₀` only).
+    fn rounding(&self) -> [f64; 5] {
         let s1 = self.a1.abs() + self.b1.abs();
         let s2 = self.a2.abs() + self.b2.abs();
         [
             ROUND * (self.a0.abs() + s1 + s2),
             ROUND * (s1 + 2.0 * s2),
             ROUND * (s1 + 4.0 * s2),
+            ROUND * (s1 + 8.0 * s2),
+            ROUND * (s1 + 16.0 * s2),
         ]
     }
 
@@ -112,6 +134,8 @@ impl Trig2 {
         Bounded {
             f: self,
             m3: up(n1 + 8.0 * n2),
+            m4: up(n1 + 16.0 * n2),
+            m5: up(n1 + 32.0 * n2),
             e: self.rounding(),
         }
     }
@@ -124,7 +148,10 @@ pub struct Bounded {
     /// The polynomial.
     pub f: Trig2,
     m3: f64,
-    e: [f64; 3],
+    /// `M₄ ≥ |f⁗|` and `M₅ ≥ |f⁽⁵⁾|` (`n₁ + 16 n₂`, `n₁ + 32 n₂`).
+    m4: f64,
+    m5: f64,
+    e: [f64; 5],
 }
 
 impl Bounded {
@@ -137,7 +164,7 @@ impl Bounded {
     /// cosine and sine of `m` (see the module's inequalities).
     pub fn enclose(&self, c: f64, s: f64, w: f64) -> Enclosure {
         let [f0, f1, f2] = self.f.at(c, s);
-        let [e0, e1, e2] = self.e;
+        let [e0, e1, e2, _, _] = self.e;
         let m3 = self.m3;
         let rem0 = up(m3 * w * w * w / 6.0);
         // {f₁ δ + f₂ δ²/2 : |δ| ≤ w}: the ends and, inside, the vertex.
@@ -163,6 +190,32 @@ impl Bounded {
             d2: Iv::around(f2, r2),
             refinable: shrinks > e1,
         }
+    }
+}
+
+impl Bounded {
+    /// Enclosures of `f, f′, …, f⁗` at the angle whose cosine and sine are
+    /// `(c, s)` (each within an ulp of the angle's): the computed jet
+    /// widened by its rounding allowances.
+    pub fn point(&self, c: f64, s: f64) -> [Iv; 5] {
+        let v = self.f.jet(c, s);
+        std::array::from_fn(|j| Iv::around(v[j], self.e[j]))
+    }
+
+    /// Enclosures of `f, f′, …, f⁗` over `|θ − m| ≤ w`, `(c, s)` the
+    /// cosine and sine of `m`: the first three from [`Bounded::enclose`],
+    /// the others by the mean value theorem, `f⁽ʲ⁾(θ) ∈ f⁽ʲ⁾(m) ±
+    /// M_{j+1} w` (`j = 3, 4`).
+    pub fn arc(&self, c: f64, s: f64, w: f64) -> [Iv; 5] {
+        let e = self.enclose(c, s, w);
+        let v = self.f.jet(c, s);
+        [
+            e.value,
+            e.d1,
+            e.d2,
+            Iv::around(v[3], up(self.m4 * w + self.e[3])),
+            Iv::around(v[4], up(self.m5 * w + self.e[4])),
+        ]
     }
 }
 
