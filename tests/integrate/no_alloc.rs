@@ -400,8 +400,16 @@ fn elastic_3d_rhs_allocates_nothing() {
     let mut y = ElasticPeg3d::<18>::state(&y15);
     y[15] = 1e-7;
     let slots = sys.slot_forces(&y).expect("a ring contact");
-    assert!(slots[0].touching && slots[0].normal_force > 0.0, "{slots:?}");
-    assert!(sys.try_rhs(0.0, &y).expect("valid").iter().all(|v| v.is_finite()));
+    assert!(
+        slots[0].touching && slots[0].normal_force > 0.0,
+        "{slots:?}"
+    );
+    assert!(
+        sys.try_rhs(0.0, &y)
+            .expect("valid")
+            .iter()
+            .all(|v| v.is_finite())
+    );
     assert_eq!(allocs_of(|| sys.try_rhs(0.0, black_box(&y))), 0);
     assert_eq!(allocs_of(|| sys.rhs(0.0, black_box(&y))), 0);
 }

@@ -105,7 +105,14 @@ fn half_width(lo: f64, hi: f64, m: f64) -> f64 {
 /// nearer the zero (by the slopes' sizes), with bisection whenever a step
 /// leaves the bracket or `h″ ≤ 0`. A zero at an end (a pose symmetric
 /// about that angle) is found in one step.
-pub(super) fn newton(prof: &Profile, mut lo: f64, mut hi: f64, s_lo: f64, s_hi: f64, work: &mut Work) -> f64 {
+pub(super) fn newton(
+    prof: &Profile,
+    mut lo: f64,
+    mut hi: f64,
+    s_lo: f64,
+    s_hi: f64,
+    work: &mut Work,
+) -> f64 {
     if s_lo == 0.0 {
         return lo;
     }

@@ -91,10 +91,7 @@ impl Decider<'_> {
                 self.work.points += 2;
                 if s_lo <= 0.0
                     && s_hi >= 0.0
-                    && !push(
-                        self.out,
-                        newton(self.prof, a.t, b.t, s_lo, s_hi, self.work),
-                    )
+                    && !push(self.out, newton(self.prof, a.t, b.t, s_lo, s_hi, self.work))
                 {
                     self.work.unresolved += 1;
                 }
