@@ -131,12 +131,11 @@ impl Trig2 {
     /// The polynomial with the constants of its enclosures.
     pub fn bounded(self) -> Bounded {
         let (n1, n2) = self.amplitudes();
+        let [e0, e1, e2, _, _] = self.rounding();
         Bounded {
             f: self,
             m3: up(n1 + 8.0 * n2),
-            m4: up(n1 + 16.0 * n2),
-            m5: up(n1 + 32.0 * n2),
-            e: self.rounding(),
+            e: [e0, e1, e2],
         }
     }
 }
@@ -148,10 +147,7 @@ pub struct Bounded {
     /// The polynomial.
     pub f: Trig2,
     m3: f64,
-    /// `M₄ ≥ |f⁗|` and `M₅ ≥ |f⁽⁵⁾|` (`n₁ + 16 n₂`, `n₁ + 32 n₂`).
-    m4: f64,
-    m5: f64,
-    e: [f64; 5],
+    e: [f64; 3],
 }
 
 impl Bounded {
@@ -164,7 +160,7 @@ impl Bounded {
     /// cosine and sine of `m` (see the module's inequalities).
     pub fn enclose(&self, c: f64, s: f64, w: f64) -> Enclosure {
         let [f0, f1, f2] = self.f.at(c, s);
-        let [e0, e1, e2, _, _] = self.e;
+        let [e0, e1, e2] = self.e;
         let m3 = self.m3;
         let rem0 = up(m3 * w * w * w / 6.0);
         // {f₁ δ + f₂ δ²/2 : |δ| ≤ w}: the ends and, inside, the vertex.
@@ -199,22 +195,26 @@ impl Bounded {
     /// widened by its rounding allowances.
     pub fn point(&self, c: f64, s: f64) -> [Iv; 5] {
         let v = self.f.jet(c, s);
-        std::array::from_fn(|j| Iv::around(v[j], self.e[j]))
+        let e = self.f.rounding();
+        std::array::from_fn(|j| Iv::around(v[j], e[j]))
     }
 
     /// Enclosures of `f, f′, …, f⁗` over `|θ − m| ≤ w`, `(c, s)` the
     /// cosine and sine of `m`: the first three from [`Bounded::enclose`],
     /// the others by the mean value theorem, `f⁽ʲ⁾(θ) ∈ f⁽ʲ⁾(m) ±
-    /// M_{j+1} w` (`j = 3, 4`).
+    /// M_{j+1} w` (`j = 3, 4`; `M₄ = n₁ + 16 n₂`, `M₅ = n₁ + 32 n₂`).
     pub fn arc(&self, c: f64, s: f64, w: f64) -> [Iv; 5] {
         let e = self.enclose(c, s, w);
         let v = self.f.jet(c, s);
+        let r = self.f.rounding();
+        let (n1, n2) = self.f.amplitudes();
+        let (m4, m5) = (up(n1 + 16.0 * n2), up(n1 + 32.0 * n2));
         [
             e.value,
             e.d1,
             e.d2,
-            Iv::around(v[3], up(self.m4 * w + self.e[3])),
-            Iv::around(v[4], up(self.m5 * w + self.e[4])),
+            Iv::around(v[3], up(m4 * w + r[3])),
+            Iv::around(v[4], up(m5 * w + r[4])),
         ]
     }
 }
