@@ -13,7 +13,7 @@
 //!   has one sign on all of `[a, b]` when its enclosure at the end where
 //!   it is least in size says so, and otherwise changes sign once, at a
 //!   root bracketed by two points where its enclosures have opposite signs
-//!   ([`Decider::narrow`], Newton's method safeguarded by bisection);
+//!   (Newton's method safeguarded by bisection);
 //! - so `h⁗` of one sign on the arc splits it into pieces where `h‴` has a
 //!   proven sign and a short arc about the root, each piece into pieces
 //!   where `h″` has a proven sign and short arcs (with `h‴` of one sign on
