@@ -98,6 +98,9 @@ pub enum ElasticError {
     /// The tangential damping time is negative or not finite.
     #[error("tangential_damping: must be finite and >= 0, got {0}")]
     TangentialDamping(f64),
+    /// More slots than [`MAX_SLOTS`].
+    #[error("slots: at most {MAX_SLOTS} tracked contacts, not {0}")]
+    TooManySlots(usize),
     /// The state length is not 15 + 3 per slot.
     #[error("slots: {slots} slots need a state of {} components, not {state}", 15 + 3 * slots)]
     Slots {
@@ -107,6 +110,14 @@ pub enum ElasticError {
         state: usize,
     },
 }
+
+/// The most tracked contacts of an [`ElasticPeg3d`]: every point contact
+/// the search can return ([`super::MAX_CONTACTS`]).
+pub const MAX_SLOTS: usize = super::contact::MAX_CONTACTS;
+
+/// Every slot's [`SlotForce`], in a fixed-capacity array (the right-hand
+/// side allocates nothing).
+pub type SlotForces = arrayvec::ArrayVec<SlotForce, MAX_SLOTS>;
 
 /// One tracked contact's tangential law at a state.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -136,8 +147,8 @@ impl<const N: usize> ElasticPeg3d<N> {
     ///
     /// # Errors
     /// `params.friction_law` not [`FrictionLaw::Elastic`], a friction
-    /// coefficient not `> 0`, a negative tangential damping time, or
-    /// `N ≠ 15 + 3 slots.len()`.
+    /// coefficient not `> 0`, a negative tangential damping time, more
+    /// than [`MAX_SLOTS`] slots, or `N ≠ 15 + 3 slots.len()`.
     pub fn try_new(params: Peg3dParams, slots: &[SlotKey]) -> Result<Self, ElasticError> {
         if params.friction_law != FrictionLaw::Elastic {
             return Err(ElasticError::FrictionLaw);
@@ -148,6 +159,9 @@ impl<const N: usize> ElasticPeg3d<N> {
         let tau = params.tangential_damping;
         if !(tau >= 0.0 && tau.is_finite()) {
             return Err(ElasticError::TangentialDamping(tau));
+        }
+        if slots.len() > MAX_SLOTS {
+            return Err(ElasticError::TooManySlots(slots.len()));
         }
         if N != 15 + 3 * slots.len() {
             return Err(ElasticError::Slots {
@@ -198,12 +212,13 @@ impl<const N: usize> ElasticPeg3d<N> {
     /// `(F, T about the centre of mass, Ṡ)` with each tracked contact's
     /// spring in place of its regularized friction, and every slot's
     /// [`SlotForce`] (not touching: dropped).
-    fn evaluate(&self, y: &SVector<f64, N>, setups: &Setups) -> ([f64; 7], Vec<SlotForce>) {
+    fn evaluate(&self, y: &SVector<f64, N>, setups: &Setups) -> ([f64; 7], SlotForces) {
         let prm = &self.peg.params;
         let m = Motion::of_state(y.as_slice());
         let lp = LawParams::of(prm);
         let mut w = [0.0; 7];
-        let mut out: Vec<SlotForce> = (0..self.slots.len())
+        // At most MAX_SLOTS slots (`try_new`): the array holds them all.
+        let mut out: SlotForces = (0..self.slots.len())
             .map(|k| SlotForce {
                 key: self.slots[k],
                 touching: false,
@@ -286,7 +301,7 @@ impl<const N: usize> ElasticPeg3d<N> {
     /// A contact whose Hertz setup fails (relative curvature not positive).
     pub fn slot_forces(&self, y: &SVector<f64, N>) -> Result<Vec<SlotForce>, HertzError> {
         let setups = self.peg.setups(&Self::peg_state(y))?;
-        Ok(self.evaluate(y, &setups).1)
+        Ok(self.evaluate(y, &setups).1.to_vec())
     }
 
     /// `T + m g z + Σ V + Σ E_t − W + S` at state `y` (J): constant along

@@ -69,7 +69,7 @@ pub mod stiffness;
 pub mod system;
 
 pub use contact::{ContactPoint, Contacts, MAX_CONTACTS, Pair, Saddle, axis_of};
-pub use elastic::{ElasticError, ElasticPeg3d, SlotForce, SlotKey};
+pub use elastic::{ElasticError, ElasticPeg3d, MAX_SLOTS, SlotForce, SlotForces, SlotKey};
 pub use forces::ContactForce;
 pub use params::{FrictionLaw, HertzMode, Peg3dParams};
 pub use search::Search;

@@ -17,3 +17,4 @@ mod limits_statics;
 mod search_property;
 mod seated;
 mod side_wall;
+mod split_minimum;

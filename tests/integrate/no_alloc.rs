@@ -379,6 +379,42 @@ fn compliant_3d_rhs_and_jacobian_allocate_nothing() {
 }
 
 #[test]
+fn elastic_3d_rhs_allocates_nothing() {
+    // The 3-D peg with a tracked tangential displacement: a 10 mm peg
+    // standing on the block's top face beside the bore, its rim's ring
+    // 1 µm into the face (one slot, touching), sliding along x.
+    use nalgebra::UnitQuaternion;
+    use pegdyn::compliant_peg_3d::{
+        ElasticPeg3d, FrictionLaw, Pair, Peg3dParams, SlotKey, pose_state,
+    };
+    let mut prm = Peg3dParams::steel(0.010, 0.020, 0.0101, 5e-4, 5e-4, 0.02);
+    prm.friction = 0.3;
+    prm.friction_law = FrictionLaw::Elastic;
+    let sys = ElasticPeg3d::<18>::try_new(prm, &[SlotKey::ring(Pair::RimTop)]).expect("valid");
+    let y15 = pose_state(
+        Vector3::new(0.02, 0.0, 0.5 * prm.length - 1e-6),
+        UnitQuaternion::identity(),
+        Vector3::new(1e-3, 0.0, 0.0),
+        Vector3::zeros(),
+    );
+    let mut y = ElasticPeg3d::<18>::state(&y15);
+    y[15] = 1e-7;
+    let slots = sys.slot_forces(&y).expect("a ring contact");
+    assert!(
+        slots[0].touching && slots[0].normal_force > 0.0,
+        "{slots:?}"
+    );
+    assert!(
+        sys.try_rhs(0.0, &y)
+            .expect("valid")
+            .iter()
+            .all(|v| v.is_finite())
+    );
+    assert_eq!(allocs_of(|| sys.try_rhs(0.0, black_box(&y))), 0);
+    assert_eq!(allocs_of(|| sys.rhs(0.0, black_box(&y))), 0);
+}
+
+#[test]
 fn wrist_and_prescribed_3d_adapters_allocate_nothing() {
     // The wrist-held insertion of the shipped scene and the peg driven
     // along a prescribed orientation: right-hand side, the

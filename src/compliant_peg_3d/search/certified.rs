@@ -30,19 +30,33 @@
 //! there identically, so a sign change at a shared end is seen by one of
 //! them.
 //!
+//! An arc that is neither dropped nor convex, from [`ORDER_DEPTH`] on, is
+//! first tried by the sign of `h‴` or `h⁗` over it ([`order`]): when one
+//! of them keeps its sign, the arc is cut into pieces where `h″` has a
+//! proven sign and short arcs about the roots, which go back on the stack
+//! (and are not tried again that way); otherwise it is halved.
+//!
 //! A search that ends in a leaf says so ([`Work::leaves`]): where `h′` is
 //! below its rounding the minima it reports are as good as `f64` resolves
 //! them, but not certified, so such a search certifies no clearance
 //! ([`super::Search::find`]).
 
+use super::order;
 use super::profile::Profile;
 use std::f64::consts::TAU;
+
+/// The room for arcs still to visit.
+const STACK: usize = 128;
 
 /// The number of arcs the circle starts as.
 pub const START: usize = 8;
 
 /// The most halvings of a start arc (`2π/8 · 2⁻⁴⁰ ≈ 7·10⁻¹³` rad).
 pub const DEPTH: u32 = 40;
+
+/// The least depth at which an undecided arc is first tried by the sign of
+/// a higher derivative ([`order`]) before it is halved.
+pub const ORDER_DEPTH: u32 = 2;
 
 /// The most arcs visited in one search: none of the pairs comes near it
 /// (the work is about twice the depth per minimum); reaching it stops the
@@ -75,6 +89,8 @@ pub struct Work {
     /// Arcs ended as leaves (too short to halve, or `h′` within its
     /// rounding of zero): 0 when every arc was decided by its enclosures.
     pub leaves: usize,
+    /// Arcs decided by the sign of `h‴` or `h⁗` ([`order`]).
+    pub ordered: usize,
 }
 
 /// The enclosure's half-width for the arc `[lo, hi]` about `m`: the arc
@@ -89,7 +105,14 @@ fn half_width(lo: f64, hi: f64, m: f64) -> f64 {
 /// nearer the zero (by the slopes' sizes), with bisection whenever a step
 /// leaves the bracket or `h″ ≤ 0`. A zero at an end (a pose symmetric
 /// about that angle) is found in one step.
-fn newton(prof: &Profile, mut lo: f64, mut hi: f64, s_lo: f64, s_hi: f64, work: &mut Work) -> f64 {
+pub(super) fn newton(
+    prof: &Profile,
+    mut lo: f64,
+    mut hi: f64,
+    s_lo: f64,
+    s_hi: f64,
+    work: &mut Work,
+) -> f64 {
     if s_lo == 0.0 {
         return lo;
     }
@@ -144,7 +167,9 @@ pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
         work.flat = true;
         return work;
     }
-    let mut stack = arrayvec::ArrayVec::<(f64, f64, u32), { START + DEPTH as usize + 2 }>::new();
+    // An entry: the arc, its depth, and whether it may be decided by a
+    // higher derivative (not the short arcs such a decision leaves).
+    let mut stack = arrayvec::ArrayVec::<(f64, f64, u32, bool), STACK>::new();
     let step = TAU / START as f64;
     for k in (0..START).rev() {
         let lo = k as f64 * step;
@@ -153,9 +178,9 @@ pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
         } else {
             (k + 1) as f64 * step
         };
-        let _ = stack.try_push((lo, hi, 0));
+        let _ = stack.try_push((lo, hi, 0, true));
     }
-    while let Some((lo, hi, depth)) = stack.pop() {
+    while let Some((lo, hi, depth, higher)) = stack.pop() {
         if work.arcs >= BUDGET {
             work.unresolved += 1 + stack.len();
             break;
@@ -163,7 +188,8 @@ pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
         work.arcs += 1;
         let m = 0.5 * (lo + hi);
         let (s, c) = m.sin_cos();
-        let e = prof.enclose(c, s, half_width(lo, hi, m), level);
+        let w = half_width(lo, hi, m);
+        let e = prof.enclose(c, s, w, level);
         if e.value.lo >= level || e.d1.excludes_zero() || e.d2.hi < 0.0 {
             continue;
         }
@@ -182,9 +208,22 @@ pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
             }
             continue;
         }
-        // The stack holds at most START + DEPTH arcs (each level adds one).
-        if stack.try_push((m, hi, depth + 1)).is_err()
-            || stack.try_push((lo, m, depth + 1)).is_err()
+        if higher && depth >= ORDER_DEPTH {
+            let mut rest = order::Rest::new();
+            if order::decide(prof, lo, hi, c, s, w, out, &mut work, &mut rest) {
+                work.ordered += 1;
+                for (a, b) in rest {
+                    if stack.try_push((a, b, depth + 1, false)).is_err() {
+                        work.unresolved += 1;
+                    }
+                }
+                continue;
+            }
+        }
+        // Halving adds one arc per level; each decided arc at most
+        // `order::Rest`'s capacity.
+        if stack.try_push((m, hi, depth + 1, higher)).is_err()
+            || stack.try_push((lo, m, depth + 1, higher)).is_err()
         {
             work.unresolved += 1;
         }

@@ -53,6 +53,11 @@ impl Iv {
         Iv::new(self.lo.max(o.lo), self.hi.min(o.hi))
     }
 
+    /// The midpoint: a float value of the enclosed quantity.
+    pub fn mid(self) -> f64 {
+        0.5 * self.lo + 0.5 * self.hi
+    }
+
     /// Whether the interval contains no zero.
     pub fn excludes_zero(self) -> bool {
         self.lo > 0.0 || self.hi < 0.0
@@ -98,6 +103,15 @@ impl std::ops::Add for Iv {
     /// `self + o`.
     fn add(self, o: Iv) -> Iv {
         Iv::new(down(self.lo + o.lo), up(self.hi + o.hi))
+    }
+}
+
+impl std::ops::Sub for Iv {
+    type Output = Iv;
+
+    /// `self − o`.
+    fn sub(self, o: Iv) -> Iv {
+        Iv::new(down(self.lo - o.hi), up(self.hi - o.lo))
     }
 }
 

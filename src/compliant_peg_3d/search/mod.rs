@@ -12,7 +12,11 @@
 //! over arcs ([`certified`]): an arc is dropped only when an enclosure of
 //! `h`, `h′` or `h″` over it ([`trig`], [`interval`]) proves that it holds
 //! no minimum below the level, and the minimum of a convex arc is found by
-//! safeguarded Newton. A minimum is never missed by sampling between
+//! safeguarded Newton. An arc on which `h‴` or `h⁗` keeps one sign (about
+//! a minimum that splits into two, where the enclosures would halve down
+//! to the distance between the stationary points) is cut instead into
+//! pieces where `h″` has a proven sign ([`order`]). A minimum is never
+//! missed by sampling between
 //! points; the search needs no warm start, so it is the same at a start,
 //! after an impact, along a sweep and along a smooth run.
 //!
@@ -22,6 +26,7 @@
 
 pub mod certified;
 pub mod interval;
+pub mod order;
 pub mod profile;
 pub mod tori;
 pub mod trig;

@@ -37,6 +37,7 @@
 //! In each case `g` is an increasing function of `h` wherever `g` is
 //! smooth, so the local minima of `g` are those of `h`, at the same angles.
 
+use super::interval::Iv;
 use super::tori;
 use super::trig::{Bounded, Enclosure, Trig2};
 use crate::compliant_peg_3d::contact::Pair;
@@ -211,6 +212,27 @@ impl Profile {
                 (d1, d2)
             }
             Profile::Tori { f, z, rm } => tori::slope(f, z, *rm, c, s),
+        }
+    }
+
+    /// Enclosures of `h, h′, …, h⁗` at the angle `t` (rad), or `None`
+    /// where they cannot be bounded (the rim's circle through the hole's
+    /// axis).
+    pub fn point(&self, t: f64) -> Option<[Iv; 5]> {
+        let (s, c) = t.sin_cos();
+        match self {
+            Profile::Trig(f) => Some(f.point(c, s)),
+            Profile::Tori { f, z, rm } => tori::jet(&f.point(c, s), &z.point(c, s), *rm),
+        }
+    }
+
+    /// Enclosures of `h, h′, …, h⁗` over `|θ − m| ≤ w`, `(c, s)` the
+    /// cosine and sine of `m` (natural extensions), or `None` where they
+    /// cannot be bounded.
+    pub fn arc(&self, c: f64, s: f64, w: f64) -> Option<[Iv; 5]> {
+        match self {
+            Profile::Trig(f) => Some(f.arc(c, s, w)),
+            Profile::Tori { f, z, rm } => tori::jet(&f.arc(c, s, w), &z.arc(c, s, w), *rm),
         }
     }
 

@@ -26,6 +26,17 @@
 //! w²/2` (Taylor with the Lagrange remainder), each intersected with the
 //! natural extension. The values at the centre `m` are enclosed by the same
 //! formulas on the point enclosures of `F` and `Z` (width: rounding).
+//!
+//! [`jet`] encloses `h` and its first four derivatives from those of `F`
+//! and `Z` (at a point or over an arc), by differentiating `ρ² = F` and
+//! `h = (ρ − R_m)² + Z²`:
+//!
+//! ```text
+//! 2ρ ρ′ = F′,  2ρ ρ″ = F″ − 2ρ′²,  2ρ ρ‴ = F‴ − 6ρ′ρ″,
+//! 2ρ ρ⁗ = F⁗ − 6ρ″² − 8ρ′ρ‴,
+//! h‴ = 6ρ′ρ″ + 2(ρ − R_m)ρ‴ + 6Z′Z″ + 2ZZ‴,
+//! h⁗ = 6ρ″² + 8ρ′ρ‴ + 2(ρ − R_m)ρ⁗ + 6Z″² + 8Z′Z‴ + 2ZZ⁗.
+//! ```
 
 use super::interval::{Iv, up};
 use super::trig::{Bounded, Enclosure};
@@ -45,6 +56,35 @@ fn natural(fe: &Enclosure, ze: &Enclosure, rm: f64) -> (Iv, Option<(Iv, Iv, Iv)>
     let d2 =
         fe.d2 * k + fe.d1.square() * q + ze.d1.square().scale(2.0) + (ze.value * ze.d2).scale(2.0);
     (value, Some((d1, d2, rho)))
+}
+
+/// Enclosures of `h, h′, …, h⁗` from enclosures `f` of `F, …, F⁗` and
+/// `z` of `Z, …, Z⁗` (the module's formulas in interval arithmetic);
+/// `None` where `F` may vanish.
+pub fn jet(f: &[Iv; 5], z: &[Iv; 5], rm: f64) -> Option<[Iv; 5]> {
+    if f[0].lo <= 0.0 {
+        return None;
+    }
+    let rho = f[0].sqrt();
+    if rho.lo <= 0.0 {
+        return None;
+    }
+    let inv = rho.recip_times(0.5);
+    let r1 = f[1] * inv;
+    let r2 = (f[2] - r1.square().scale(2.0)) * inv;
+    let r3 = (f[3] - (r1 * r2).scale(6.0)) * inv;
+    let r4 = (f[4] - r2.square().scale(6.0) - (r1 * r3).scale(8.0)) * inv;
+    let u = rho.plus(-rm);
+    let [z0, z1, z2, z3, z4] = *z;
+    Some([
+        u.square() + z0.square(),
+        (u * r1 + z0 * z1).scale(2.0),
+        (r1.square() + u * r2 + z1.square() + z0 * z2).scale(2.0),
+        (r1 * r2 + z1 * z2).scale(6.0) + (u * r3 + z0 * z3).scale(2.0),
+        (r2.square() + z2.square()).scale(6.0)
+            + (r1 * r3 + z1 * z3).scale(8.0)
+            + (u * r4 + z0 * z4).scale(2.0),
+    ])
 }
 
 /// `(h′, h″)` at the angle of cosine `c` and sine `s`.

@@ -84,6 +84,25 @@ impl Trig2 {
         [self.a0 + h1 + h2, k1 + 2.0 * k2, -h1 - 4.0 * h2]
     }
 
+    /// `(f, f′, f″, f‴, f⁗)` at the angle whose cosine and sine are
+    /// `(c, s)`: `f‴ = −k₁ − 8k₂`, `f⁗ = h₁ + 16h₂` with the harmonics
+    /// `hⱼ` and their quadratures `kⱼ` of [`Trig2::at`].
+    #[inline]
+    pub fn jet(&self, c: f64, s: f64) -> [f64; 5] {
+        let (c2, s2) = (c * c - s * s, 2.0 * c * s);
+        let h1 = self.a1 * c + self.b1 * s;
+        let h2 = self.a2 * c2 + self.b2 * s2;
+        let k1 = self.b1 * c - self.a1 * s;
+        let k2 = self.b2 * c2 - self.a2 * s2;
+        [
+            self.a0 + h1 + h2,
+            k1 + 2.0 * k2,
+            -h1 - 4.0 * h2,
+            -k1 - 8.0 * k2,
+            h1 + 16.0 * h2,
+        ]
+    }
+
     /// `(n₁, n₂)`: the amplitudes of the two harmonics.
     pub fn amplitudes(&self) -> (f64, f64) {
         (self.a1.hypot(self.b1), self.a2.hypot(self.b2))
@@ -94,25 +113,29 @@ impl Trig2 {
         self.a1 == 0.0 && self.b1 == 0.0 && self.a2 == 0.0 && self.b2 == 0.0
     }
 
-    /// The rounding allowances `(e₀, e₁, e₂)` of `f`, `f′`, `f″` computed
-    /// by [`Trig2::at`].
-    fn rounding(&self) -> [f64; 3] {
+    /// The rounding allowances `(e₀, …, e₄)` of `f`, …, `f⁗` computed by
+    /// [`Trig2::at`] and [`Trig2::jet`] (`eⱼ = 64 u (S₁ + 2ʲ S₂)`, `a₀`
+    /// in `e₀` only).
+    fn rounding(&self) -> [f64; 5] {
         let s1 = self.a1.abs() + self.b1.abs();
         let s2 = self.a2.abs() + self.b2.abs();
         [
             ROUND * (self.a0.abs() + s1 + s2),
             ROUND * (s1 + 2.0 * s2),
             ROUND * (s1 + 4.0 * s2),
+            ROUND * (s1 + 8.0 * s2),
+            ROUND * (s1 + 16.0 * s2),
         ]
     }
 
     /// The polynomial with the constants of its enclosures.
     pub fn bounded(self) -> Bounded {
         let (n1, n2) = self.amplitudes();
+        let [e0, e1, e2, _, _] = self.rounding();
         Bounded {
             f: self,
             m3: up(n1 + 8.0 * n2),
-            e: self.rounding(),
+            e: [e0, e1, e2],
         }
     }
 }
@@ -163,6 +186,36 @@ impl Bounded {
             d2: Iv::around(f2, r2),
             refinable: shrinks > e1,
         }
+    }
+}
+
+impl Bounded {
+    /// Enclosures of `f, f′, …, f⁗` at the angle whose cosine and sine are
+    /// `(c, s)` (each within an ulp of the angle's): the computed jet
+    /// widened by its rounding allowances.
+    pub fn point(&self, c: f64, s: f64) -> [Iv; 5] {
+        let v = self.f.jet(c, s);
+        let e = self.f.rounding();
+        std::array::from_fn(|j| Iv::around(v[j], e[j]))
+    }
+
+    /// Enclosures of `f, f′, …, f⁗` over `|θ − m| ≤ w`, `(c, s)` the
+    /// cosine and sine of `m`: the first three from [`Bounded::enclose`],
+    /// the others by the mean value theorem, `f⁽ʲ⁾(θ) ∈ f⁽ʲ⁾(m) ±
+    /// M_{j+1} w` (`j = 3, 4`; `M₄ = n₁ + 16 n₂`, `M₅ = n₁ + 32 n₂`).
+    pub fn arc(&self, c: f64, s: f64, w: f64) -> [Iv; 5] {
+        let e = self.enclose(c, s, w);
+        let v = self.f.jet(c, s);
+        let r = self.f.rounding();
+        let (n1, n2) = self.f.amplitudes();
+        let (m4, m5) = (up(n1 + 16.0 * n2), up(n1 + 32.0 * n2));
+        [
+            e.value,
+            e.d1,
+            e.d2,
+            Iv::around(v[3], up(m4 * w + r[3])),
+            Iv::around(v[4], up(m5 * w + r[4])),
+        ]
     }
 }
 

@@ -1,0 +1,236 @@
+//! Arcs decided by the sign of a higher derivative of the profile.
+//!
+//! Where a minimum of `h` is about to split into two about a col (or two
+//! minima and their col are about to merge), `h′` and `h″` nearly vanish
+//! at one angle, and the enclosures of [`super::certified`] decide the arcs
+//! about it only once they are shorter than the distance between the
+//! stationary points: the search halves to a depth set by how near the
+//! split is. Over the same arc `h‴` or `h⁗` usually keeps one sign, and
+//! then the arc's stationary points are few and located by evaluations at
+//! points:
+//!
+//! - with `h⁽ʲ⁺¹⁾` of one sign on `[a, b]`, `h⁽ʲ⁾` is monotone there: it
+//!   has one sign on all of `[a, b]` when its enclosure at the end where
+//!   it is least in size says so, and otherwise changes sign once, at a
+//!   root bracketed by two points where its enclosures have opposite signs
+//!   (Newton's method safeguarded by bisection);
+//! - so `h⁗` of one sign on the arc splits it into pieces where `h‴` has a
+//!   proven sign and a short arc about the root, each piece into pieces
+//!   where `h″` has a proven sign and short arcs (with `h‴` of one sign on
+//!   the arc, the second split alone);
+//! - a piece with `h″ > 0` (convex) holds a minimum exactly when `h′`
+//!   changes sign from its start to its end, found as on a convex arc
+//!   (safeguarded Newton); a piece with `h″ < 0` holds none; the short
+//!   arcs go back to the branch and bound, which decides them by their
+//!   enclosures or ends them as leaves.
+//!
+//! Every sign used is proven by an enclosure at a point
+//! ([`Profile::point`]) and monotonicity, and the pieces and short arcs
+//! cover the arc, so a minimum is missed no more than by the branch and
+//! bound. An arc this cannot split (no derivative of one sign, a root
+//! that cannot be bracketed) is halved as before.
+
+use super::certified::{Angles, Work, newton, push};
+use super::interval::Iv;
+use super::profile::Profile;
+use std::f64::consts::TAU;
+
+/// The short arcs about roots, left to the branch and bound.
+pub type Rest = arrayvec::ArrayVec<(f64, f64), 8>;
+
+/// The bracket of a root is narrowed to about this width (rad).
+const NARROW: f64 = 1e-12;
+
+/// An angle and the enclosures of `h, …, h⁗` there.
+#[derive(Clone, Copy, Debug)]
+struct Pt {
+    t: f64,
+    j: [Iv; 5],
+}
+
+/// The sign of `±v` (`+` when `inc`) if its enclosure proves one, else 0.
+fn sign(v: Iv, inc: bool) -> i8 {
+    let v = if inc { v } else { Iv::new(-v.hi, -v.lo) };
+    if v.lo > 0.0 {
+        1
+    } else if v.hi < 0.0 {
+        -1
+    } else {
+        0
+    }
+}
+
+/// One arc's decision: the profile, the minima found, the work and the
+/// short arcs left.
+struct Decider<'a> {
+    prof: &'a Profile,
+    out: &'a mut Angles,
+    work: &'a mut Work,
+    rest: &'a mut Rest,
+}
+
+impl Decider<'_> {
+    /// The point `t` with its enclosures.
+    fn at(&mut self, t: f64) -> Option<Pt> {
+        self.work.points += 1;
+        self.prof.point(t).map(|j| Pt { t, j })
+    }
+
+    /// `[a, b]` on which `h⁽ʲ⁾` has the sign `s` (proven).
+    fn piece(&mut self, j: usize, a: Pt, b: Pt, s: i8) -> Option<()> {
+        if b.t <= a.t {
+            return Some(());
+        }
+        match (j, s > 0) {
+            (2, true) => {
+                // Convex: one minimum exactly when h′ changes sign, the
+                // end of the circle evaluated at its start (as the branch
+                // and bound does).
+                let (s_lo, _) = self.prof.slope(a.t);
+                let (s_hi, _) = self.prof.slope(if b.t >= TAU { 0.0 } else { b.t });
+                self.work.points += 2;
+                if s_lo <= 0.0
+                    && s_hi >= 0.0
+                    && !push(self.out, newton(self.prof, a.t, b.t, s_lo, s_hi, self.work))
+                {
+                    self.work.unresolved += 1;
+                }
+                Some(())
+            }
+            (2, false) => Some(()),
+            _ => self.split(j - 1, a, b, s > 0),
+        }
+    }
+
+    /// `[a, b]` on which `h⁽ʲ⁾` is increasing (`inc`) or decreasing:
+    /// its pieces of one sign and the short arc about its root.
+    fn split(&mut self, j: usize, a: Pt, b: Pt, inc: bool) -> Option<()> {
+        let s = if inc { 1 } else { -1 };
+        let (ga, gb) = (sign(a.j[j], inc), sign(b.j[j], inc));
+        if ga > 0 {
+            return self.piece(j, a, b, s);
+        }
+        if gb < 0 {
+            return self.piece(j, a, b, -s);
+        }
+        if ga == 0 && gb == 0 {
+            // Near zero over the whole piece: the arc is halved instead.
+            return None;
+        }
+        let (l, r) = self.narrow(j, a, b, inc)?;
+        self.piece(j, a, l, -s)?;
+        if r.t > l.t {
+            self.rest.try_push((l.t, r.t)).ok()?;
+        }
+        self.piece(j, r, b, s)
+    }
+
+    /// A bracket `[l, r] ⊆ [a, b]` of the root of `g = ±h⁽ʲ⁾` (increasing):
+    /// `g(l) < 0` proven (or `l = a`), `g(r) > 0` proven (or `r = b`), about
+    /// [`NARROW`] wide where the enclosures allow.
+    fn narrow(&mut self, j: usize, a: Pt, b: Pt, inc: bool) -> Option<(Pt, Pt)> {
+        let g = |p: &Pt| if inc { p.j[j].mid() } else { -p.j[j].mid() };
+        let dg = |p: &Pt| {
+            if inc {
+                p.j[j + 1].mid()
+            } else {
+                -p.j[j + 1].mid()
+            }
+        };
+        let (mut l, mut r) = (a, b);
+        let mut x = if g(&a).abs() < g(&b).abs() { a } else { b };
+        // A root within rounding of an end: tightened about that end.
+        let mut centre = match (sign(a.j[j], inc), sign(b.j[j], inc)) {
+            (0, _) => Some(a.t),
+            (_, 0) => Some(b.t),
+            _ => None,
+        };
+        for _ in 0..if centre.is_some() { 0 } else { 48 } {
+            let d = dg(&x);
+            let mut t = x.t - g(&x) / d;
+            if !(d > 0.0 && t > l.t && t < r.t) {
+                t = 0.5 * (l.t + r.t);
+            }
+            if !(t > l.t && t < r.t) {
+                break;
+            }
+            let p = self.at(t)?;
+            let close = (t - x.t).abs() <= 0.25 * NARROW;
+            match sign(p.j[j], inc) {
+                1 => r = p,
+                -1 => l = p,
+                _ => {
+                    centre = Some(t);
+                    break;
+                }
+            }
+            if close || r.t - l.t <= NARROW {
+                centre = Some(t);
+                break;
+            }
+            x = p;
+        }
+        // Tighten about the last point: a proven sign within NARROW/2,
+        // 4 NARROW, ... of it on either side.
+        if let Some(c) = centre {
+            let mut d = 0.5 * NARROW;
+            while c - d > l.t && c - l.t > NARROW {
+                let p = self.at(c - d)?;
+                if sign(p.j[j], inc) < 0 {
+                    l = p;
+                    break;
+                }
+                d *= 8.0;
+            }
+            let mut d = 0.5 * NARROW;
+            while c + d < r.t && r.t - c > NARROW {
+                let p = self.at(c + d)?;
+                if sign(p.j[j], inc) > 0 {
+                    r = p;
+                    break;
+                }
+                d *= 8.0;
+            }
+        }
+        Some((l, r))
+    }
+}
+
+/// Decides the arc `[lo, hi]` (about `m`, `(c, s)` its cosine and sine,
+/// `w` the enclosures' half-width) when `h‴` or `h⁗` has one sign on it:
+/// its minima into `out`, the short arcs left to the branch and bound into
+/// `rest`. False (and `rest` to be discarded) when the arc is to be
+/// halved; the minima already added are minima.
+#[allow(clippy::too_many_arguments)]
+pub fn decide(
+    prof: &Profile,
+    lo: f64,
+    hi: f64,
+    c: f64,
+    s: f64,
+    w: f64,
+    out: &mut Angles,
+    work: &mut Work,
+    rest: &mut Rest,
+) -> bool {
+    let Some(e) = prof.arc(c, s, w) else {
+        return false;
+    };
+    let (j, inc) = if e[3].excludes_zero() {
+        (2, e[3].lo > 0.0)
+    } else if e[4].excludes_zero() {
+        (3, e[4].lo > 0.0)
+    } else {
+        return false;
+    };
+    let mut d = Decider {
+        prof,
+        out,
+        work,
+        rest,
+    };
+    let (Some(a), Some(b)) = (d.at(lo), d.at(hi)) else {
+        return false;
+    };
+    d.split(j, a, b, inc).is_some()
+}
