@@ -4,6 +4,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod design;
 mod design_margins;
 mod industreal;
 mod jacobian;

@@ -45,7 +45,12 @@
 //! wrist's lateral force and moment against depth; contact forces and the
 //! contact-state timeline against time), `<name>.views.svg` and the replay
 //! page `<name>.html` (`docs/replay.md`; `[replay] page = false` or
-//! `pegdyn run --no-replay` turns it off).
+//! `pegdyn run --no-replay` turns it off). An optional `[sensitivities]`
+//! table adds the derivatives of the insertion's metrics in design fields
+//! ([`sensitivities`]): `<name>.sensitivities.csv`, a tornado plot and a
+//! ranking in the summary.
+
+pub mod sensitivities;
 
 use crate::compliant_peg_3d::outcome::TERMINAL_NAMES;
 use crate::error::{RunError, SceneErrors};
@@ -79,23 +84,36 @@ struct Ready {
     built: Built,
     integrator: IntegratorSpec,
     method_reason: &'static str,
+    /// The fields of the `[sensitivities]` table (slots of
+    /// [`crate::scene::shared::compliant_peg_3d::design::FIELDS`]), empty
+    /// without one.
+    sensitivities: Vec<usize>,
 }
 
 fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: RccScene = doc.body()?;
     let built = s.build()?;
+    let sensitivities = match &s.sensitivities {
+        Some(t) => sensitivities::check(t, &built)?,
+        None => Vec::new(),
+    };
     let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::STIFF_CONTACT);
     Ok(Box::new(Ready {
         scene: s,
         built,
         integrator,
         method_reason,
+        sensitivities,
     }))
 }
 
 impl Written for Ready {
     fn work(&self) -> Vec<WorkItem> {
-        self.scene.integrator.work("integrator")
+        let mut work = self.scene.integrator.work("integrator");
+        if !self.sensitivities.is_empty() {
+            work.extend(sensitivities::work(&self.integrator));
+        }
+        work
     }
 
     fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
@@ -238,6 +256,16 @@ impl Scene for Ready {
             ));
         }
         out.metrics.extend(margin_metrics);
+        if !self.sensitivities.is_empty() {
+            let notes = sensitivities::run(
+                ctx,
+                &self.scene,
+                &self.built,
+                &self.integrator,
+                &self.sensitivities,
+            )?;
+            out.metrics.extend(notes);
+        }
         if self.scene.replay.wanted(ctx) {
             let what = "compliant 3-D peg held by a compliant wrist";
             replay::write(ctx, &insertion(ctx.name(), what, &run)?)?;

@@ -1,0 +1,129 @@
+//! What the `[sensitivities]` tables of the scene kinds share
+//! (`insert_compliant`, `insert_rcc`; `docs/sensitivities.md`): a run's
+//! metrics with their derivatives along every field and the flags that
+//! withhold a derivative ([`Measured`]), turned into one row per metric
+//! and chosen field ([`rows`]), and the files and ranking of those rows
+//! ([`output`]).
+
+pub mod output;
+
+use serde::Deserialize;
+
+/// The `[sensitivities]` table: the scene fields to differentiate by.
+#[derive(Debug, Clone, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SensitivitiesTable {
+    /// The scene fields, by their names (each kind lists its own).
+    pub parameters: Vec<String>,
+}
+
+/// The relative change of a field within which a derivative must hold for
+/// it to be reported.
+pub const PERTURBATION: f64 = 1e-3;
+
+/// One metric's derivative along one field.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    /// The metric, with its unit (`seat_time_s`).
+    pub metric: &'static str,
+    /// The field (its name in the scene).
+    pub parameter: &'static str,
+    /// The metric's value (None when the run has none, e.g. not seated).
+    pub value: Option<f64>,
+    /// `∂m/∂q` (None when flagged).
+    pub derivative: Option<f64>,
+    /// `q/m ∂m/∂q` (None when flagged or `m = 0`).
+    pub elasticity: Option<f64>,
+    /// Why there is no derivative, or that the field is not used; empty
+    /// otherwise.
+    pub flag: String,
+}
+
+/// A metric of a run: value, derivatives along every field (indexed like
+/// the kind's field list), and a flag for every field (`None` where the
+/// derivative holds).
+pub struct Measured<'a> {
+    /// The metric, with its unit.
+    pub name: &'static str,
+    /// Its value (None when the run has none).
+    pub value: Option<f64>,
+    /// `∂m/∂q` along every field.
+    pub derivative: Vec<f64>,
+    /// Why the derivative along field `k` is withheld, if it is.
+    pub flag: Box<dyn Fn(usize) -> Option<String> + 'a>,
+}
+
+/// The rows of `metrics` for the `chosen` fields (indices into `fields`,
+/// the kind's field names, with their `values`), `unused[k]` marking the
+/// fields that move nothing the run depends on (a zero derivative,
+/// flagged as not used). A flagged derivative is withheld; a derivative
+/// that is not finite is flagged, never written as a number.
+pub fn rows(
+    metrics: &[Measured],
+    chosen: &[usize],
+    unused: &[bool],
+    values: &[f64],
+    fields: &[&'static str],
+) -> Vec<Row> {
+    let mut out = Vec::new();
+    for m in metrics {
+        for &k in chosen {
+            let flag = if unused[k] {
+                Some("not used by this model".to_owned())
+            } else {
+                (m.flag)(k)
+            };
+            let (derivative, elasticity) = match (&flag, unused[k]) {
+                (_, true) => (Some(0.0), Some(0.0)),
+                (Some(_), false) => (None, None),
+                (None, false) => {
+                    let der = m.derivative[k];
+                    let el = m.value.filter(|v| *v != 0.0).map(|v| values[k] / v * der);
+                    (Some(der), el)
+                }
+            };
+            // A derivative that overflowed (a degenerate contact geometry,
+            // say) is flagged, never written as a number.
+            let (flag, derivative, elasticity) = match derivative {
+                Some(v) if !v.is_finite() || elasticity.is_some_and(|e| !e.is_finite()) => (
+                    Some("the derivative is not finite at this point".to_owned()),
+                    None,
+                    None,
+                ),
+                _ => (flag, derivative, elasticity),
+            };
+            out.push(Row {
+                metric: m.name,
+                parameter: fields[k],
+                value: m.value,
+                derivative,
+                elasticity,
+                flag: flag.unwrap_or_default(),
+            });
+        }
+    }
+    out
+}
+
+/// The rows of a run whose sensitivities failed: every metric of
+/// `metrics` along the chosen fields flagged with `reason`.
+pub fn failed(
+    metrics: &[&'static str],
+    chosen: &[usize],
+    fields: &[&'static str],
+    reason: &str,
+) -> Vec<Row> {
+    metrics
+        .iter()
+        .flat_map(|m| {
+            chosen.iter().map(move |&k| Row {
+                metric: m,
+                parameter: fields[k],
+                value: None,
+                derivative: None,
+                elasticity: None,
+                flag: reason.to_owned(),
+            })
+        })
+        .collect()
+}
