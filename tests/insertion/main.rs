@@ -6,6 +6,7 @@ mod common;
 
 mod design;
 mod design_margins;
+mod design_sensitivities;
 mod industreal;
 mod jacobian;
 mod outcomes;
