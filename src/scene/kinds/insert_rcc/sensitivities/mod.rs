@@ -177,17 +177,16 @@ pub fn compute(
     let unused = unused(scene, b);
     let seeded: [bool; N_DESIGN] = std::array::from_fn(|k| chosen.contains(&k) && !unused[k]);
     let (d, y0q) = design(scene, b, &seeded);
-    let sys = Insertion::new(b.params, Some(b.held), 0.0);
-    let y0 = b.start_state(&sys);
     let dy0 = SMatrix::<f64, N_STATE, N_DESIGN>::from_fn(|i, k| y0q[i].d[k]);
-    let values = values(scene);
-    let options = Options {
-        max_steps: integrator.max_steps,
-        h0: integrator.h,
-        ..Options::with_tolerances(integrator.rtol, integrator.atol)
-    };
+    let Plain {
+        sys,
+        y0,
+        options,
+        scan,
+        end,
+    } = plain(b, integrator)?;
     let (t0, t_end, seat) = (integrator.t0, integrator.t_end, b.criteria.seat_depth);
-    let scan = trajectory::scan(&sys, (t0, y0), t_end, b.criteria, &options)?;
+    let values = values(scene);
     let p = seeded.iter().filter(|s| **s).count();
     #[allow(clippy::cast_precision_loss)] // component counts are small
     let shrink = ((N_STATE * (1 + p)) as f64 / trajectory::M as f64).sqrt();
@@ -200,11 +199,6 @@ pub fn compute(
         system: &sys,
         design: d,
         values,
-    };
-    let end = if scan.seated {
-        t_end
-    } else {
-        scan.times.last().copied().unwrap_or(t_end)
     };
     let result = trajectory::derivatives(&dir, (t0, y0, dy0), end, seat, &run_options, &scan);
     let der = match result {
@@ -239,4 +233,77 @@ pub fn compute(
     };
     let rows = metrics::rows(&inputs, chosen, &unused);
     Ok((rows, Some(der.work)))
+}
+
+/// The plain pass of a scene: the system, its start, the options of the
+/// sensitivity run (before their scaling) and the pass, with the end of
+/// the sensitivity run (`t_end`, or where the pass stopped unseated).
+struct Plain {
+    sys: Insertion,
+    y0: nalgebra::SVector<f64, N_STATE>,
+    options: Options,
+    scan: trajectory::Scan,
+    end: f64,
+}
+
+/// [`Plain`] of `b` with `integrator`'s tolerances, span and step budget.
+fn plain(b: &Built, integrator: &IntegratorSpec) -> Result<Plain, RunError> {
+    let sys = Insertion::new(b.params, Some(b.held), 0.0);
+    let y0 = b.start_state(&sys);
+    let options = Options {
+        max_steps: integrator.max_steps,
+        h0: integrator.h,
+        ..Options::with_tolerances(integrator.rtol, integrator.atol)
+    };
+    let t_end = integrator.t_end;
+    let scan = trajectory::scan(&sys, (integrator.t0, y0), t_end, b.criteria, &options)?;
+    let end = if scan.seated {
+        t_end
+    } else {
+        scan.times.last().copied().unwrap_or(t_end)
+    };
+    Ok(Plain {
+        sys,
+        y0,
+        options,
+        scan,
+        end,
+    })
+}
+
+/// The metrics' values of scene `scene` built into `b` by plain runs (no
+/// sensitivities) with the events of the sensitivity run: each metric of
+/// [`metrics::METRICS`] the run has, with its value (the reference of the
+/// derivatives' differences); `None` when the run stops short.
+///
+/// # Errors
+/// [`RunError::Sensitivity`] when the integrator refuses its input.
+pub fn metric_values(
+    scene: &RccScene,
+    b: &Built,
+    integrator: &IntegratorSpec,
+) -> Result<Option<Vec<(&'static str, f64)>>, RunError> {
+    let (d, _) = design(scene, b, &[false; N_DESIGN]);
+    let Plain {
+        sys,
+        y0,
+        options,
+        scan,
+        end,
+    } = plain(b, integrator)?;
+    let dir = Directions {
+        system: &sys,
+        design: d,
+        values: values(scene),
+    };
+    let seat = b.criteria.seat_depth;
+    match trajectory::values(&dir, (integrator.t0, y0), end, seat, &options, &scan) {
+        Ok(v) => Ok(Some(
+            v.into_iter()
+                .map(|(k, v)| (metrics::METRICS[k], v))
+                .collect(),
+        )),
+        Err(StopOrError::Error(e)) => Err(e.into()),
+        Err(StopOrError::Stopped(_)) => Ok(None),
+    }
 }

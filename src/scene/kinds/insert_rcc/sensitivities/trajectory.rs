@@ -21,7 +21,7 @@ use crate::compliant_peg_3d::Pair;
 use crate::compliant_peg_3d::design::{Design, Directions, N_DESIGN};
 use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, depth_tilt, peg_state};
 use crate::compliant_peg_3d::outcome::{Criteria, counts, terminal_events, two_point_counts};
-use crate::integrate::{Direction, Method, Options, OutputMode, Solver, StopReason};
+use crate::integrate::{Direction, Event, Method, Options, OutputMode, Solver, StopReason};
 use crate::sensitivity::{EventSensitivity, SensitivityError, SensitivityEvent, integrate};
 use crate::system::OdeSystem;
 
@@ -260,11 +260,6 @@ pub(super) fn derivatives(
         .terminal()
     };
     let windows = windows(scan);
-    // The legs: between consecutive window ends, then to the end.
-    let mut cuts: Vec<f64> = windows.iter().flat_map(|w| [w.1, w.2]).collect();
-    cuts.push(t_end);
-    cuts.sort_by(f64::total_cmp);
-    cuts.dedup();
     let mut out = Derivatives {
         t: start.0,
         y: start.1,
@@ -278,13 +273,9 @@ pub(super) fn derivatives(
     let mut done: Vec<Watch> = Vec::new();
     let mut cur = start;
     let mut attempts = 0;
-    'legs: for to in cuts {
+    'legs: for to in cuts(&windows, t_end) {
         while cur.0 < to {
-            let armed: Vec<Watch> = windows
-                .iter()
-                .filter(|w| w.1 <= cur.0 && to <= w.2 && !done.contains(&w.0))
-                .map(|w| w.0)
-                .collect();
+            let armed = armed(&windows, cur.0, to, &done);
             let mut events = vec![seated()];
             events.extend(armed.iter().map(|w| watch_event(dir, *w)));
             let Some(left) = options.max_steps.checked_sub(attempts).filter(|n| *n > 0) else {
@@ -384,55 +375,167 @@ fn wrist_peak(
     Some((t, f, s.transpose() * g_y + g_q))
 }
 
-/// The event of a windowed watch: a peak's `dF/dt` falling through zero
-/// (gradient in the state by central differences, none in the
-/// parameters: the peak's derivative does not use its time's), or the
-/// closing pair's gap falling through zero.
-fn watch_event<'a>(dir: &'a Directions<'a>, w: Watch) -> SensitivityEvent<'a, N_STATE, N_DESIGN> {
+/// The value of a windowed watch's event function: a peak's `dF/dt`
+/// (`F_y f + F_t`), or the closing pair's gap at its stationary angle.
+fn watch_value<'a>(
+    dir: &'a Directions<'a>,
+    w: Watch,
+) -> impl Fn(f64, &SVector<f64, N_STATE>) -> f64 + Copy + 'a {
     let sys = dir.system;
     let d = &dir.design;
-    let rate = move |t: f64, y: &SVector<f64, N_STATE>| -> f64 {
-        let f = sys.rhs(t, y);
+    move |t: f64, y: &SVector<f64, N_STATE>| -> f64 {
         match w {
             Watch::ContactPeak => sys
                 .peak_contact(y)
                 .ok()
                 .flatten()
                 .and_then(|(i, _)| sys.normal_force_gradient(y, i, d).ok().flatten())
-                .map_or(0.0, |(_, g_y, _)| g_y.dot(&f)),
-            _ => sys
+                .map_or(0.0, |(_, g_y, _)| g_y.dot(&sys.rhs(t, y))),
+            Watch::WristPeak => sys
                 .wrist_force_gradient(t, y, d)
-                .map_or(0.0, |(_, g_y, _, f_t)| g_y.dot(&f) + f_t),
+                .map_or(0.0, |(_, g_y, _, f_t)| g_y.dot(&sys.rhs(t, y)) + f_t),
+            Watch::TwoPoint(pair, bits) => sys
+                .stationary_gap(y, pair, f64::from_bits(bits))
+                .map_or(1.0, |(g, _)| g),
         }
-    };
-    match w {
-        Watch::TwoPoint(pair, bits) => {
-            let angle = f64::from_bits(bits);
-            SensitivityEvent::new(
-                move |_, y: &SVector<f64, N_STATE>| {
-                    sys.stationary_gap(y, pair, angle).map_or(1.0, |(g, _)| g)
-                },
-                move |_, y| {
-                    sys.gap_gradient(y, pair, angle, d)
-                        .map_or((SVector::zeros(), SVector::zeros()), |(_, g_y, g_q)| {
-                            (g_y, g_q)
-                        })
-                },
-            )
-            .direction(Direction::Falling)
-            .terminal()
-        }
-        _ => SensitivityEvent::new(rate, move |t, y| {
+    }
+}
+
+/// The event of a windowed watch ([`watch_value`] falling through zero):
+/// for a peak with the gradient in the state by central differences and
+/// none in the parameters (the peak's derivative does not use its time's);
+/// for the two-point onset with the gap's exact gradients.
+fn watch_event<'a>(dir: &'a Directions<'a>, w: Watch) -> SensitivityEvent<'a, N_STATE, N_DESIGN> {
+    let (sys, d) = (dir.system, &dir.design);
+    let value = watch_value(dir, w);
+    let event = match w {
+        Watch::TwoPoint(pair, bits) => SensitivityEvent::new(value, move |_, y| {
+            sys.gap_gradient(y, pair, f64::from_bits(bits), d)
+                .map_or((SVector::zeros(), SVector::zeros()), |(_, g_y, g_q)| {
+                    (g_y, g_q)
+                })
+        }),
+        _ => SensitivityEvent::new(value, move |t, y| {
             let g_y = SVector::from_fn(|i, _| {
                 let h = 1e-7 * y[i].abs().max(1e-6);
                 let (mut up, mut down) = (*y, *y);
                 up[i] += h;
                 down[i] -= h;
-                (rate(t, &up) - rate(t, &down)) / (2.0 * h)
+                (value(t, &up) - value(t, &down)) / (2.0 * h)
             });
             (g_y, SVector::zeros())
-        })
-        .direction(Direction::Falling)
-        .terminal(),
+        }),
+    };
+    event.direction(Direction::Falling).terminal()
+}
+
+/// The metrics' values of a plain run (no sensitivities) with the events
+/// of [`derivatives`]: the seat time, the final depth, the peaks, the
+/// two-point onset's time and depth, each with its index in
+/// [`super::metrics::METRICS`].
+///
+/// # Errors
+/// [`StopOrError`] when the integrator stops short or refuses.
+pub(super) fn values(
+    dir: &Directions<'_>,
+    start: (f64, SVector<f64, N_STATE>),
+    t_end: f64,
+    seat: f64,
+    options: &Options,
+    scan: &Scan,
+) -> Result<Vec<(usize, f64)>, StopOrError> {
+    let sys = dir.system;
+    let d = &dir.design;
+    let prm = sys.peg.params;
+    let windows = windows(scan);
+    let mut out = Vec::new();
+    let mut done: Vec<Watch> = Vec::new();
+    let mut cur = start;
+    'legs: for to in cuts(&windows, t_end) {
+        while cur.0 < to {
+            let armed: Vec<Watch> = armed(&windows, cur.0, to, &done);
+            let mut solver = Solver::<N_STATE>::new(Method::Dopri5, options.clone()).with_event(
+                Event::new(move |_, y: &SVector<f64, N_STATE>| {
+                    depth_tilt(&prm, &peg_state(y)).0 - seat
+                })
+                .direction(Direction::Rising)
+                .terminal(),
+            );
+            for w in &armed {
+                solver = solver.with_event(
+                    Event::new(watch_value(dir, *w))
+                        .direction(Direction::Falling)
+                        .terminal(),
+                );
+            }
+            let sol = solver
+                .solve(sys, cur.0, cur.1, to)
+                .map_err(|e| StopOrError::Error(e.into()))?;
+            cur = (sol.t_final, sol.x_final);
+            match sol.stop {
+                StopReason::ReachedEnd => {}
+                StopReason::Event { index: 0, t } => {
+                    out.push((0, t));
+                    break 'legs;
+                }
+                StopReason::Event { index, t } => {
+                    let w = armed[index - 1];
+                    done.push(w);
+                    let y = &sol.x_final;
+                    match w {
+                        Watch::ContactPeak => {
+                            if let Ok(Some((_, f))) = sys.peak_contact(y) {
+                                out.push((2, f));
+                            }
+                        }
+                        Watch::WristPeak => {
+                            if let Some((f, ..)) = sys.wrist_force_gradient(t, y, d) {
+                                out.push((3, f));
+                            }
+                        }
+                        Watch::TwoPoint(..) => {
+                            out.push((4, t));
+                            out.push((5, depth_tilt(&prm, &peg_state(y)).0));
+                        }
+                    }
+                }
+                other => return Err(StopOrError::Stopped(other)),
+            }
+        }
     }
+    out.push((1, depth_tilt(&prm, &peg_state(&cur.1)).0));
+    let last = scan.times.len().saturating_sub(1);
+    for (k, p) in [(2, scan.contact), (3, scan.wrist)] {
+        if let Some(p) = p
+            && (p.step == 0 || p.step == last)
+        {
+            let (t, y) = if p.step == 0 { start } else { cur };
+            let f = if k == 2 {
+                sys.peak_contact(&y).ok().flatten().map(|(_, f)| f)
+            } else {
+                sys.wrist_force_gradient(t, &y, d).map(|(f, ..)| f)
+            };
+            out.extend(f.map(|f| (k, f)));
+        }
+    }
+    Ok(out)
+}
+
+/// The legs' ends: the windows' ends, then `t_end`, in order.
+fn cuts(windows: &[(Watch, f64, f64)], t_end: f64) -> Vec<f64> {
+    let mut cuts: Vec<f64> = windows.iter().flat_map(|w| [w.1, w.2]).collect();
+    cuts.push(t_end);
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    cuts
+}
+
+/// The watches armed on a leg from `from` to `to`: those whose window
+/// covers it and that have not fired.
+fn armed(windows: &[(Watch, f64, f64)], from: f64, to: f64, done: &[Watch]) -> Vec<Watch> {
+    windows
+        .iter()
+        .filter(|w| w.1 <= from && to <= w.2 && !done.contains(&w.0))
+        .map(|w| w.0)
+        .collect()
 }
