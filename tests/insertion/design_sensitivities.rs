@@ -109,3 +109,100 @@ fn the_seat_time_s_derivative_matches_differences_of_runs_along_every_field() {
     }
     assert!(checked.len() >= 8, "only {checked:?} resolved");
 }
+
+/// The short insertion's text with a `[sensitivities]` table naming
+/// `fields`, and `extra` lines after `speed`.
+fn scene_text(fields: &[&str], extra: &str) -> String {
+    let mut text = include_str!("../../scenes/insert_rcc.toml").to_string();
+    for (k, v) in [
+        ("start_height", "-1e-3"),
+        ("seat_depth", "0.002"),
+        ("t_end", "0.3"),
+    ] {
+        let line = text
+            .lines()
+            .find(|l| l.starts_with(&format!("{k} ")))
+            .expect("a shipped line")
+            .to_string();
+        text = text.replacen(&line, &format!("{k} = {v}"), 1);
+    }
+    let text = text.replacen("speed = 0.01 ", &format!("{extra}\nspeed = 0.01 "), 1);
+    let names: Vec<String> = fields.iter().map(|f| format!("\"{f}\"")).collect();
+    format!("{text}\n[sensitivities]\nparameters = [{}]\n", names.join(", "))
+}
+
+/// Runs `text` in memory: the summary's notes, the CSV's rows (metric,
+/// parameter, flag, derivative cell) and the names of the other files.
+fn run_scene(text: &str) -> (Vec<String>, Vec<(String, String, String, String)>, Vec<String>) {
+    use pegdyn::output::memory::{Column, Keep};
+    use pegdyn::output::sink::Sink;
+    use pegdyn::scene::{self, Progress, RunContext};
+    let loaded = scene::parse_named(text, "rcc").unwrap_or_else(|e| panic!("{e}"));
+    let mut ctx = RunContext::new(Sink::memory("rcc", Keep::Tables), Progress::silent());
+    let summary = loaded.run(&mut ctx).unwrap_or_else(|e| panic!("{e}"));
+    let notes = summary
+        .metrics
+        .iter()
+        .map(|m| format!("{m:?}"))
+        .collect::<Vec<_>>();
+    let sink = ctx.into_sink();
+    let files = sink.take_files().into_iter().map(|f| f.file).collect();
+    let tables = sink.into_tables();
+    let t = tables
+        .iter()
+        .find(|t| t.file == "rcc.sensitivities.csv")
+        .expect("the sensitivities table");
+    let cells = |k: usize| -> Vec<String> {
+        match &t.columns[k] {
+            Column::Text(v) => v.clone(),
+            Column::Numbers(v) => v.iter().map(|x| x.to_string()).collect(),
+        }
+    };
+    let (m, p, d, f) = (cells(0), cells(1), cells(3), cells(5));
+    let rows = (0..m.len())
+        .map(|i| (m[i].clone(), p[i].clone(), f[i].clone(), d[i].clone()))
+        .collect();
+    (notes, rows, files)
+}
+
+#[test]
+fn the_table_writes_its_csv_tornado_and_ranking_and_refuses_unknown_fields() {
+    let fields = ["peg.friction", "robot.lateral_error", "robot.speed"];
+    let (notes, rows, files) = run_scene(&scene_text(&fields, ""));
+    // Every metric of the run along every field, unflagged here.
+    for metric in ["seat_time_s", "final_depth_m", "peak_contact_force_N"] {
+        for f in fields {
+            let r = rows
+                .iter()
+                .find(|r| r.0 == metric && r.1 == f)
+                .unwrap_or_else(|| panic!("{metric} / {f}: {rows:?}"));
+            assert!(r.2.is_empty(), "{r:?}");
+            assert!(r.3.parse::<f64>().is_ok(), "{r:?}");
+        }
+    }
+    assert!(files.iter().any(|f| f == "rcc.sensitivities.svg"), "{files:?}");
+    assert!(
+        notes.iter().any(|n| n.contains("elasticities of seat_time_s")
+            && n.contains("speed")),
+        "{notes:?}"
+    );
+    // Under a force-controlled descent the speed moves nothing: a zero,
+    // flagged.
+    let (_, rows, _) = run_scene(&scene_text(&fields, "axial_force = 15.0"));
+    let speed: Vec<_> = rows.iter().filter(|r| r.1 == "robot.speed").collect();
+    assert!(!speed.is_empty());
+    for r in speed {
+        assert_eq!(r.2, "not used by this model", "{r:?}");
+        assert_eq!(r.3.parse::<f64>().ok(), Some(0.0), "{r:?}");
+    }
+    // An unknown name is refused on the table's field, listing the valid
+    // ones.
+    let err = pegdyn::scene::parse_named(&scene_text(&["peg.length"], ""), "rcc")
+        .err()
+        .expect("refused")
+        .to_string();
+    assert!(
+        err.contains("sensitivities.parameters") && err.contains("wrist.lateral_stiffness"),
+        "{err}"
+    );
+}
