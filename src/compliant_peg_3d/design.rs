@@ -130,11 +130,7 @@ impl Insertion {
         let yq15 = SVector::<Q, 15>::from_fn(|i, _| Q::constant(ys[i]));
         let rate = generated::rhs(&yq15, &SVector::from(w), &d.p);
         Ok(SMatrix::from_fn(|r, k| {
-            if r < 15 {
-                rate[r].d[k]
-            } else {
-                power.d[k]
-            }
+            if r < 15 { rate[r].d[k] } else { power.d[k] }
         }))
     }
 
@@ -202,7 +198,10 @@ impl Insertion {
     ///
     /// # Errors
     /// As [`super::Peg3d::forces`].
-    pub fn peak_contact(&self, y: &SVector<f64, N_STATE>) -> Result<Option<(usize, f64)>, HertzError> {
+    pub fn peak_contact(
+        &self,
+        y: &SVector<f64, N_STATE>,
+    ) -> Result<Option<(usize, f64)>, HertzError> {
         let f = self.peg.forces(&peg_state(y))?;
         Ok(f.iter()
             .enumerate()

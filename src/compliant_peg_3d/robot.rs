@@ -212,7 +212,8 @@ impl RobotMotion {
                 one - two * (i * i + j * j),
             ],
         ];
-        let transposed: [V3<T>; 3] = std::array::from_fn(|r| std::array::from_fn(|s| rotation[s][r]));
+        let transposed: [V3<T>; 3] =
+            std::array::from_fn(|r| std::array::from_fn(|s| rotation[s][r]));
         let times = |m: &[V3<T>; 3], v: &V3<T>| -> V3<T> { std::array::from_fn(|r| dot(&m[r], v)) };
         let velocity = [c(f.velocity.x), c(f.velocity.y), vz];
         FrameTerms {

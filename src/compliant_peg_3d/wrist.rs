@@ -284,12 +284,7 @@ impl WristParams {
     /// The wrist's load at any scalar ([`Real`]) with the wrist and the
     /// robot frame `r` constants: [`load_with`] of their constants.
     pub fn load_of<T: Real>(&self, length: f64, m: &Kinematics<T>, r: &RobotFrame) -> LoadOf<T> {
-        load_with(
-            &self.of(),
-            T::from_f64(length),
-            m,
-            &FrameTerms::of(r),
-        )
+        load_with(&self.of(), T::from_f64(length), m, &FrameTerms::of(r))
     }
     /// The natural frequencies (rad/s) of a free peg of mass `mass` and
     /// transverse inertia `j_t` about its centre of mass held by the

@@ -87,7 +87,10 @@ fn states(
     let hits: Vec<usize> = (0..x.len())
         .filter(|&i| counts(&sys.contacts(&x[i])) == want)
         .collect();
-    assert!(!hits.is_empty(), "the shipped run has no state with {pairs:?}");
+    assert!(
+        !hits.is_empty(),
+        "the shipped run has no state with {pairs:?}"
+    );
     let mid = hits[hits.len() / 2];
     vec![(t[mid], x[mid])]
 }

@@ -111,7 +111,7 @@ impl Written for Ready {
     fn work(&self) -> Vec<WorkItem> {
         let mut work = self.scene.integrator.work("integrator");
         if !self.sensitivities.is_empty() {
-            work.extend(sensitivities::work(&self.integrator));
+            work.extend(sensitivities::work(&self.integrator, &self.sensitivities));
         }
         work
     }

@@ -92,13 +92,14 @@ const PASS_STEP_BYTES: f64 = 2.0 * 8.0 * (1 + N_STATE) as f64;
 /// The work of the sensitivities, for the scene's `[limits]`: the plain
 /// pass keeps up to `integrator.max_steps` steps, and the sensitivity run
 /// takes up to `integrator.max_steps` steps of `N (1 + P)` components,
-/// counted as `(1 + P) · max_steps` steps of the model's `N` states, `P`
-/// the fields integrated (every field's column is carried: [`N_DESIGN`]).
-pub fn work(integrator: &IntegratorSpec) -> Vec<WorkItem> {
+/// counted as `(1 + P) · max_steps` steps of the model's `N` states for
+/// `P` chosen fields (as `insert_compliant` counts them).
+pub fn work(integrator: &IntegratorSpec, chosen: &[usize]) -> Vec<WorkItem> {
     let steps = integrator.max_steps as f64;
+    let p = chosen.len() as f64;
     vec![
         WorkItem::new(FIELD, "max_output_samples", steps, PASS_STEP_BYTES),
-        WorkItem::new(FIELD, "max_steps", (1.0 + N_DESIGN as f64) * steps, 0.0),
+        WorkItem::new(FIELD, "max_steps", (1.0 + p) * steps, 0.0),
     ]
 }
 

@@ -158,10 +158,7 @@ pub(super) fn scan(
         let ys = peg_state(y);
         let forces = sys.peg.forces(&ys).unwrap_or_default();
         contact.push(forces.iter().map(|f| f.normal_force).fold(0.0, f64::max));
-        wrist.push(
-            sys.wrist_load(*t, &ys)
-                .map_or(0.0, |(_, l)| l.force.norm()),
-        );
+        wrist.push(sys.wrist_load(*t, &ys).map_or(0.0, |(_, l)| l.force.norm()));
         if ring.is_none() && forces.iter().any(|f| f.contact.ring) {
             ring = Some(*t);
         }
@@ -341,9 +338,7 @@ pub(super) fn derivatives(
                 let f_t = sys
                     .wrist_force_gradient(t, &y, d)
                     .map_or(0.0, |(.., rate)| rate);
-                out.wrist = wrist_peak(sys, d, t, &y, &s).map(|(t, v, der)| {
-                    (t, v, der + dt * f_t)
-                });
+                out.wrist = wrist_peak(sys, d, t, &y, &s).map(|(t, v, der)| (t, v, der + dt * f_t));
             }
         }
     }
