@@ -167,7 +167,9 @@ impl Insertion {
         let prm = &self.peg.params;
         let pv = self.peg.param_vector();
         self.peg.with_setups(&ys, |setups| {
-            let setup = setups.get(index)?;
+            if index >= setups.len() {
+                return None;
+            }
             let state = jacobian::normal_forces_dual(prm, pv, &jacobian::seeded(&ys), setups);
             let yq: [Q; 13] = constant_state(y);
             let m = Motion::of_state(&yq);
@@ -187,7 +189,6 @@ impl Insertion {
                     k += 1;
                 },
             );
-            let _ = setup;
             let (s, p) = (state.get(index)?, param?);
             Some((s.v, state_gradient(s), slots(&p)))
         })
