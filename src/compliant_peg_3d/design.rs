@@ -90,6 +90,9 @@ impl Design {
     }
 }
 
+/// A value with its gradients in the state and in the design parameters.
+pub type Gradients = (f64, SVector<f64, N_STATE>, SVector<f64, N_DESIGN>);
+
 /// The derivatives of a dual number in the design slots.
 pub fn slots(x: &Q) -> SVector<f64, N_DESIGN> {
     SVector::from_fn(|k, _| x.d[k])
@@ -162,7 +165,7 @@ impl Insertion {
         y: &SVector<f64, N_STATE>,
         index: usize,
         d: &Design,
-    ) -> Result<Option<(f64, SVector<f64, N_STATE>, SVector<f64, N_DESIGN>)>, HertzError> {
+    ) -> Result<Option<Gradients>, HertzError> {
         let ys = peg_state(y);
         let prm = &self.peg.params;
         let pv = self.peg.param_vector();
@@ -256,7 +259,7 @@ impl Insertion {
         let mut a = angle;
         for _ in 0..30 {
             let o = pair.eval(&x, a, pv);
-            if !(o.d2 > 0.0) {
+            if o.d2.is_nan() || o.d2 <= 0.0 {
                 return None;
             }
             let step = o.d1 / o.d2;

@@ -140,10 +140,13 @@ fn scene_text(fields: &[&str], extra: &str) -> String {
     )
 }
 
+/// One row of the CSV: metric, parameter, flag, derivative cell.
+type CsvRow = (String, String, String, String);
+
 /// Runs `text` into a fresh directory: the summary's notes, the CSV's
 /// rows (metric, parameter, flag, derivative cell) and whether the tornado
 /// plot was written.
-fn run_scene(text: &str) -> (Vec<String>, Vec<(String, String, String, String)>, bool) {
+fn run_scene(text: &str) -> (Vec<String>, Vec<CsvRow>, bool) {
     use pegdyn::output::sink::Sink;
     use pegdyn::scene::{self, Progress, RunContext};
     let dir = std::env::temp_dir().join(format!(
@@ -209,10 +212,10 @@ fn the_table_writes_its_csv_tornado_and_ranking_and_refuses_unknown_fields() {
     }
     // An unknown name is refused on the table's field, listing the valid
     // ones.
-    let err = pegdyn::scene::parse_named(&scene_text(&["peg.length"], ""), "rcc")
-        .err()
-        .expect("refused")
-        .to_string();
+    let err = match pegdyn::scene::parse_named(&scene_text(&["peg.length"], ""), "rcc") {
+        Ok(_) => panic!("an unknown field is accepted"),
+        Err(e) => e.to_string(),
+    };
     assert!(
         err.contains("sensitivities.parameters") && err.contains("wrist.lateral_stiffness"),
         "{err}"

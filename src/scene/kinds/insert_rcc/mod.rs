@@ -93,17 +93,17 @@ struct Ready {
 fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: RccScene = doc.body()?;
     let built = s.build()?;
-    let sensitivities = match &s.sensitivities {
-        Some(t) => sensitivities::check(t, &built)?,
-        None => Vec::new(),
-    };
     let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::STIFF_CONTACT);
+    let chosen = s
+        .sensitivities
+        .as_ref()
+        .map(|t| sensitivities::check(t, &built));
     Ok(Box::new(Ready {
+        sensitivities: chosen.transpose()?.unwrap_or_default(),
         scene: s,
         built,
         integrator,
         method_reason,
-        sensitivities,
     }))
 }
 

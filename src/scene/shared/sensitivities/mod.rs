@@ -9,6 +9,10 @@ pub mod output;
 
 use serde::Deserialize;
 
+use crate::error::RunError;
+use crate::integrate::StopReason;
+use crate::sensitivity::SensitivityError;
+
 /// The `[sensitivities]` table: the scene fields to differentiate by.
 #[derive(Debug, Clone, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -126,4 +130,71 @@ pub fn failed(
             })
         })
         .collect()
+}
+
+/// Why a sensitivity run ended without derivatives.
+#[derive(Debug)]
+pub enum StopOrError {
+    /// The integrator stopped short (step size, budget, non-finite state).
+    Stopped(StopReason),
+    /// The sensitivity integrator refused (a tangential event, bad input).
+    Error(SensitivityError),
+}
+
+impl From<SensitivityError> for StopOrError {
+    fn from(e: SensitivityError) -> Self {
+        StopOrError::Error(e)
+    }
+}
+
+impl StopOrError {
+    /// The flag of every row of a run that ended so (a tangential event,
+    /// a stop short of the end), or the error that ends the scene's run
+    /// (the integrator's refusal of its input).
+    ///
+    /// # Errors
+    /// [`RunError::Sensitivity`] for a refusal other than a tangential
+    /// event.
+    pub fn flag(self) -> Result<String, RunError> {
+        match self {
+            StopOrError::Error(SensitivityError::TangentialEvent { t, .. }) => {
+                Ok(format!("an event is crossed tangentially at t = {t:.6e} s"))
+            }
+            StopOrError::Error(e) => Err(e.into()),
+            StopOrError::Stopped(stop) => {
+                Ok(format!("the sensitivity run stopped short: {stop:?}"))
+            }
+        }
+    }
+}
+
+/// The seat time `seat_time_s`: the seating event's time `t` and
+/// `∂t_e/∂q` (`derivative`, one per field), flagged where a change of the
+/// field by [`PERTURBATION`] of its `values` (to first order) moves it past
+/// `t_end`; without a seating, every field flagged with `unseated`.
+pub fn seat_time<'a>(
+    seated: Option<(f64, Vec<f64>)>,
+    t_end: f64,
+    values: Vec<f64>,
+    unseated: String,
+) -> Measured<'a> {
+    match seated {
+        Some((t, dt)) => Measured {
+            name: "seat_time_s",
+            value: Some(t),
+            derivative: dt.clone(),
+            flag: Box::new(move |k| {
+                (t_end - t < PERTURBATION * values[k].abs() * dt[k].abs()).then(|| {
+                    "seated near t_end: a 0.1% change of the field leaves the peg unseated"
+                        .to_owned()
+                })
+            }),
+        },
+        None => Measured {
+            name: "seat_time_s",
+            value: None,
+            derivative: vec![0.0; values.len()],
+            flag: Box::new(move |_| Some(unseated.clone())),
+        },
+    }
 }

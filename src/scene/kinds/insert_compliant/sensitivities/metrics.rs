@@ -52,28 +52,14 @@ pub(super) fn rows(
     let shift = |k: usize, der: f64| PERTURBATION * values[k].abs() * der.abs();
     let mut metrics: Vec<Measured> = Vec::new();
     // Seat time.
-    match &d.seated {
-        Some(e) => {
-            let (t, dt) = (e.t, e.dt_dp);
-            metrics.push(Measured {
-                name: METRICS[0],
-                value: Some(t),
-                derivative: dt.as_slice().to_vec(),
-                flag: Box::new(move |k| {
-                    (t_end - t < shift(k, dt[k])).then(|| {
-                        "seated near t_end: a 0.1% change of the field leaves the peg unseated"
-                            .to_owned()
-                    })
-                }),
-            });
-        }
-        None => metrics.push(Measured {
-            name: METRICS[0],
-            value: None,
-            derivative: vec![0.0; N_FIELDS],
-            flag: Box::new(|_| Some("not seated within t_end".to_owned())),
-        }),
-    }
+    metrics.push(sensitivities::seat_time(
+        d.seated
+            .as_ref()
+            .map(|e| (e.t, e.dt_dp.as_slice().to_vec())),
+        t_end,
+        values.as_slice().to_vec(),
+        "not seated within t_end".to_owned(),
+    ));
     // Final depth.
     let (l_y, l_q) = sys.depth_gradient(&d.y);
     let depth = sys.depth(&d.y);

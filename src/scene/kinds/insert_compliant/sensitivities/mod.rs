@@ -28,12 +28,12 @@ use crate::integrate::Options;
 use crate::scene::context::RunContext;
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::limits::WorkItem;
+use crate::scene::shared::sensitivities::StopOrError;
 use crate::scene::shared::sensitivities::output;
 use crate::scene::summary::Metric;
-use crate::sensitivity::SensitivityError;
 use fields::{FIELDS, N_FIELDS};
 use nalgebra::{SMatrix, SVector};
-use trajectory::{Derivatives, Scan, StopOrError};
+use trajectory::{Derivatives, Scan};
 
 pub use crate::scene::shared::sensitivities::SensitivitiesTable;
 
@@ -211,25 +211,7 @@ pub fn compute(
     };
     let d = match run.run() {
         Ok(d) => d,
-        Err(StopOrError::Error(SensitivityError::TangentialEvent { t, .. })) => {
-            return Ok((
-                metrics::failed(
-                    chosen,
-                    &format!("an event is crossed tangentially at t = {t:.6e} s"),
-                ),
-                None,
-            ));
-        }
-        Err(StopOrError::Error(e)) => return Err(e.into()),
-        Err(StopOrError::Stopped(stop)) => {
-            return Ok((
-                metrics::failed(
-                    chosen,
-                    &format!("the sensitivity run stopped short: {stop:?}"),
-                ),
-                None,
-            ));
-        }
+        Err(e) => return Ok((metrics::failed(chosen, &e.flag()?), None)),
     };
     let rows = metrics::rows(
         &all,

@@ -15,6 +15,7 @@ use nalgebra::{SMatrix, SVector};
 use crate::compliant_peg::directions::CompliantDirections;
 use crate::compliant_peg::system::N_STATE;
 use crate::integrate::{Direction, Event, Method, Options, OutputMode, Solver, StopReason};
+use crate::scene::shared::sensitivities::StopOrError;
 use crate::sensitivity::{EventSensitivity, SensitivityError, integrate};
 
 /// The number of contacts (`compliant_peg::sensitivity::CONTACTS`).
@@ -240,19 +241,4 @@ pub(super) fn derivatives<const Q: usize, const M: usize>(
         out.peak = Some((c, out.t, sys.force(c, &out.y), d));
     }
     Ok(out)
-}
-
-/// Why the sensitivity run ended without derivatives.
-#[derive(Debug)]
-pub(super) enum StopOrError {
-    /// The integrator stopped short (step size, budget, non-finite state).
-    Stopped(StopReason),
-    /// The sensitivity integrator refused (a tangential event, bad input).
-    Error(SensitivityError),
-}
-
-impl From<SensitivityError> for StopOrError {
-    fn from(e: SensitivityError) -> Self {
-        StopOrError::Error(e)
-    }
 }

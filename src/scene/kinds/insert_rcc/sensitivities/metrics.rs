@@ -86,28 +86,14 @@ pub(super) fn rows(x: &Inputs, chosen: &[usize], unused: &[bool; N_DESIGN]) -> V
     let mut metrics: Vec<Measured> = Vec::new();
     let zero = vec![0.0; N_DESIGN];
     let stop = format!("{:?}", scan.stop);
-    match &d.seated {
-        Some(e) => {
-            let (t, dt) = (e.t, e.dt_dp);
-            metrics.push(Measured {
-                name: METRICS[0],
-                value: Some(t),
-                derivative: dt.as_slice().to_vec(),
-                flag: Box::new(move |k| {
-                    (t_end - t < shift(k, dt[k])).then(|| {
-                        "seated near t_end: a 0.1% change of the field leaves the peg unseated"
-                            .to_owned()
-                    })
-                }),
-            });
-        }
-        None => metrics.push(Measured {
-            name: METRICS[0],
-            value: None,
-            derivative: zero.clone(),
-            flag: Box::new(move |_| Some(format!("not seated (the run ended: {stop})"))),
-        }),
-    }
+    metrics.push(sensitivities::seat_time(
+        d.seated
+            .as_ref()
+            .map(|e| (e.t, e.dt_dp.as_slice().to_vec())),
+        t_end,
+        values.as_slice().to_vec(),
+        format!("not seated (the run ended: {stop})"),
+    ));
     let (depth, l_y, l_q) = x.sys.depth_gradient(&d.y, x.design);
     let dl = d.dy.transpose() * l_y + l_q;
     let seated = d.seated.is_some();

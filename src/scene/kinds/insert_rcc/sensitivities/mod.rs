@@ -29,11 +29,10 @@ use crate::scene::integrator::IntegratorSpec;
 use crate::scene::limits::WorkItem;
 use crate::scene::shared::compliant_peg_3d::design::{FIELDS, design, fixed_stiffness, values};
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene};
+use crate::scene::shared::sensitivities::StopOrError;
 use crate::scene::shared::sensitivities::{Row, output};
 use crate::scene::summary::Metric;
-use crate::sensitivity::SensitivityError;
 use nalgebra::SMatrix;
-use trajectory::StopOrError;
 
 pub use crate::scene::shared::sensitivities::SensitivitiesTable;
 
@@ -179,56 +178,33 @@ pub fn compute(
     let seeded: [bool; N_DESIGN] = std::array::from_fn(|k| chosen.contains(&k) && !unused[k]);
     let (d, y0q) = design(scene, b, &seeded);
     let dy0 = SMatrix::<f64, N_STATE, N_DESIGN>::from_fn(|i, k| y0q[i].d[k]);
-    let Plain {
-        sys,
-        y0,
-        options,
-        scan,
-        end,
-    } = plain(b, integrator)?;
+    let pass = plain(b, integrator)?;
+    let (sys, y0, scan) = (&pass.sys, pass.y0, &pass.scan);
     let (t0, t_end, seat) = (integrator.t0, integrator.t_end, b.criteria.seat_depth);
     let values = values(scene);
     let p = seeded.iter().filter(|s| **s).count();
     #[allow(clippy::cast_precision_loss)] // component counts are small
     let shrink = ((N_STATE * (1 + p)) as f64 / trajectory::M as f64).sqrt();
     let run_options = Options {
-        rtol: options.rtol * shrink,
-        atol: options.atol * shrink,
-        ..options.clone()
+        rtol: pass.options.rtol * shrink,
+        atol: pass.options.atol * shrink,
+        ..pass.options.clone()
     };
     let dir = Directions {
-        system: &sys,
+        system: sys,
         design: d,
         values,
     };
-    let result = trajectory::derivatives(&dir, (t0, y0, dy0), end, seat, &run_options, &scan);
+    let result = trajectory::derivatives(&dir, (t0, y0, dy0), pass.end, seat, &run_options, scan);
     let der = match result {
         Ok(der) => der,
-        Err(StopOrError::Error(SensitivityError::TangentialEvent { t, .. })) => {
-            return Ok((
-                metrics::failed(
-                    chosen,
-                    &format!("an event is crossed tangentially at t = {t:.6e} s"),
-                ),
-                None,
-            ));
-        }
-        Err(StopOrError::Error(e)) => return Err(e.into()),
-        Err(StopOrError::Stopped(stop)) => {
-            return Ok((
-                metrics::failed(
-                    chosen,
-                    &format!("the sensitivity run stopped short: {stop:?}"),
-                ),
-                None,
-            ));
-        }
+        Err(e) => return Ok((metrics::failed(chosen, &e.flag()?), None)),
     };
     let inputs = metrics::Inputs {
-        sys: &sys,
+        sys,
         design: &d,
         values: &values,
-        scan: &scan,
+        scan,
         d: &der,
         ends: (t_end, seat),
     };

@@ -22,6 +22,7 @@ use crate::compliant_peg_3d::design::{Design, Directions, N_DESIGN};
 use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, depth_tilt, peg_state};
 use crate::compliant_peg_3d::outcome::{Criteria, counts, terminal_events, two_point_counts};
 use crate::integrate::{Direction, Event, Method, Options, OutputMode, Solver, StopReason};
+use crate::scene::shared::sensitivities::StopOrError;
 use crate::sensitivity::{EventSensitivity, SensitivityError, SensitivityEvent, integrate};
 use crate::system::OdeSystem;
 
@@ -94,21 +95,6 @@ pub(super) struct Derivatives {
     pub wrist: Option<(f64, f64, SVector<f64, N_DESIGN>)>,
     /// Accepted steps and evaluations of the variational right-hand side.
     pub work: (usize, usize),
-}
-
-/// Why the sensitivity run ended without derivatives.
-#[derive(Debug)]
-pub(super) enum StopOrError {
-    /// The integrator stopped short (step size, budget, non-finite state).
-    Stopped(StopReason),
-    /// The sensitivity integrator refused (a tangential event, bad input).
-    Error(SensitivityError),
-}
-
-impl From<SensitivityError> for StopOrError {
-    fn from(e: SensitivityError) -> Self {
-        StopOrError::Error(e)
-    }
 }
 
 /// The largest value of `v` over the steps and the largest other local
@@ -300,9 +286,9 @@ pub(super) fn derivatives(
                 match w {
                     Watch::TwoPoint(..) => out.two_point = Some(e),
                     Watch::ContactPeak => {
-                        out.contact = contact_peak(sys, d, e.t, &e.y, &e.s);
+                        out.contact = peak_at(sys, d, w, (e.t, &e.y, &e.s));
                     }
-                    Watch::WristPeak => out.wrist = wrist_peak(sys, d, e.t, &e.y, &e.s),
+                    Watch::WristPeak => out.wrist = peak_at(sys, d, w, (e.t, &e.y, &e.s)),
                 }
             }
             match run.stop {
@@ -333,40 +319,38 @@ pub(super) fn derivatives(
             continue;
         };
         match watch {
-            Watch::ContactPeak => out.contact = contact_peak(sys, d, t, &y, &s),
+            Watch::ContactPeak => out.contact = peak_at(sys, d, watch, (t, &y, &s)),
             _ => {
                 let f_t = sys
                     .wrist_force_gradient(t, &y, d)
                     .map_or(0.0, |(.., rate)| rate);
-                out.wrist = wrist_peak(sys, d, t, &y, &s).map(|(t, v, der)| (t, v, der + dt * f_t));
+                out.wrist =
+                    peak_at(sys, d, watch, (t, &y, &s)).map(|(t, v, der)| (t, v, der + dt * f_t));
             }
         }
     }
     Ok(out)
 }
 
-/// The largest contact force at `(t, y)` with its derivative `F_y s + F_q`.
-fn contact_peak(
+/// The peak of `watch` at `(t, y)` (the largest contact force, or the
+/// wrist's force) with its derivative `F_y s + F_q`.
+fn peak_at(
     sys: &Insertion,
     d: &Design,
-    t: f64,
-    y: &SVector<f64, N_STATE>,
-    s: &SMatrix<f64, N_STATE, N_DESIGN>,
+    watch: Watch,
+    (t, y, s): (
+        f64,
+        &SVector<f64, N_STATE>,
+        &SMatrix<f64, N_STATE, N_DESIGN>,
+    ),
 ) -> Option<(f64, f64, SVector<f64, N_DESIGN>)> {
-    let (i, _) = sys.peak_contact(y).ok()??;
-    let (f, g_y, g_q) = sys.normal_force_gradient(y, i, d).ok()??;
-    Some((t, f, s.transpose() * g_y + g_q))
-}
-
-/// The wrist force at `(t, y)` with its derivative `F_y s + F_q`.
-fn wrist_peak(
-    sys: &Insertion,
-    d: &Design,
-    t: f64,
-    y: &SVector<f64, N_STATE>,
-    s: &SMatrix<f64, N_STATE, N_DESIGN>,
-) -> Option<(f64, f64, SVector<f64, N_DESIGN>)> {
-    let (f, g_y, g_q, _) = sys.wrist_force_gradient(t, y, d)?;
+    let (f, g_y, g_q) = if watch == Watch::ContactPeak {
+        let (i, _) = sys.peak_contact(y).ok()??;
+        sys.normal_force_gradient(y, i, d).ok()??
+    } else {
+        let (f, g_y, g_q, _) = sys.wrist_force_gradient(t, y, d)?;
+        (f, g_y, g_q)
+    };
     Some((t, f, s.transpose() * g_y + g_q))
 }
 
