@@ -257,14 +257,15 @@ impl Scene for Ready {
         }
         out.metrics.extend(margin_metrics);
         if !self.sensitivities.is_empty() {
-            let notes = sensitivities::run(
+            let (scene, built) = (&self.scene, &self.built);
+            let chosen = &self.sensitivities;
+            out.metrics.extend(sensitivities::run(
                 ctx,
-                &self.scene,
-                &self.built,
+                scene,
+                built,
                 &self.integrator,
-                &self.sensitivities,
-            )?;
-            out.metrics.extend(notes);
+                chosen,
+            )?);
         }
         if self.scene.replay.wanted(ctx) {
             let what = "compliant 3-D peg held by a compliant wrist";

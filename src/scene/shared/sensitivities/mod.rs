@@ -10,7 +10,7 @@ pub mod output;
 use serde::Deserialize;
 
 use crate::error::RunError;
-use crate::integrate::StopReason;
+use crate::integrate::{Options, StopReason};
 use crate::sensitivity::SensitivityError;
 
 /// The `[sensitivities]` table: the scene fields to differentiate by.
@@ -197,4 +197,47 @@ pub fn seat_time<'a>(
             flag: Box::new(move |_| Some(unseated.clone())),
         },
     }
+}
+
+/// The final depth `final_depth_m`: its value and derivative along every
+/// field, flagged where the run ended unseated and a change of the field
+/// by [`PERTURBATION`] of its `values` (to first order) reaches `target`.
+pub fn final_depth<'a>(
+    (depth, derivative): (f64, Vec<f64>),
+    seated: bool,
+    target: f64,
+    values: Vec<f64>,
+) -> Measured<'a> {
+    Measured {
+        name: "final_depth_m",
+        value: Some(depth),
+        derivative: derivative.clone(),
+        flag: Box::new(move |k| {
+            (!seated && target - depth < PERTURBATION * values[k].abs() * derivative[k].abs()).then(
+                || {
+                    "ends near the target depth: a 0.1% change of the field seats the peg"
+                        .to_owned()
+                },
+            )
+        }),
+    }
+}
+
+/// The options of one leg of a sensitivity run whose legs share
+/// `options.max_steps`, `attempts` of them taken when the leg starts at
+/// `t`.
+///
+/// # Errors
+/// [`StopOrError::Stopped`] when the budget is spent.
+pub fn leg(options: &Options, attempts: usize, t: f64) -> Result<Options, StopOrError> {
+    let Some(left) = options.max_steps.checked_sub(attempts).filter(|n| *n > 0) else {
+        return Err(StopOrError::Stopped(StopReason::MaxSteps {
+            t,
+            steps: attempts,
+        }));
+    };
+    Ok(Options {
+        max_steps: left,
+        ..options.clone()
+    })
 }

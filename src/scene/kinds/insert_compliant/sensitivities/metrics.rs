@@ -64,17 +64,12 @@ pub(super) fn rows(
     let (l_y, l_q) = sys.depth_gradient(&d.y);
     let depth = sys.depth(&d.y);
     let dl = d.dy.transpose() * l_y + l_q;
-    let seated = d.seated.is_some();
-    metrics.push(Measured {
-        name: METRICS[1],
-        value: Some(depth),
-        derivative: dl.as_slice().to_vec(),
-        flag: Box::new(move |k| {
-            (!seated && target - depth < shift(k, dl[k])).then(|| {
-                "ends near the target depth: a 0.1% change of the field seats the peg".to_owned()
-            })
-        }),
-    });
+    metrics.push(sensitivities::final_depth(
+        (depth, dl.as_slice().to_vec()),
+        d.seated.is_some(),
+        target,
+        values.as_slice().to_vec(),
+    ));
     // Peak contact force.
     if let Some((c, _, f, df)) = d.peak {
         let gap = f - scan.runner_up;

@@ -82,31 +82,28 @@ pub(super) fn rows(x: &Inputs, chosen: &[usize], unused: &[bool; N_DESIGN]) -> V
     let (t_end, seat) = x.ends;
     let values = *x.values;
     let (scan, d) = (x.scan, x.d);
-    let shift = move |k: usize, der: f64| PERTURBATION * values[k].abs() * der.abs();
     let mut metrics: Vec<Measured> = Vec::new();
     let zero = vec![0.0; N_DESIGN];
     let stop = format!("{:?}", scan.stop);
+    let at_seat = d
+        .seated
+        .as_ref()
+        .map(|e| (e.t, e.dt_dp.as_slice().to_vec()));
+    let unseated = format!("not seated (the run ended: {stop})");
     metrics.push(sensitivities::seat_time(
-        d.seated
-            .as_ref()
-            .map(|e| (e.t, e.dt_dp.as_slice().to_vec())),
+        at_seat,
         t_end,
         values.as_slice().to_vec(),
-        format!("not seated (the run ended: {stop})"),
+        unseated,
     ));
     let (depth, l_y, l_q) = x.sys.depth_gradient(&d.y, x.design);
     let dl = d.dy.transpose() * l_y + l_q;
-    let seated = d.seated.is_some();
-    metrics.push(Measured {
-        name: METRICS[1],
-        value: Some(depth),
-        derivative: dl.as_slice().to_vec(),
-        flag: Box::new(move |k| {
-            (!seated && seat - depth < shift(k, dl[k])).then(|| {
-                "ends near the seat depth: a 0.1% change of the field seats the peg".to_owned()
-            })
-        }),
-    });
+    metrics.push(sensitivities::final_depth(
+        (depth, dl.as_slice().to_vec()),
+        d.seated.is_some(),
+        seat,
+        values.as_slice().to_vec(),
+    ));
     for (name, what, found, peak) in [
         (METRICS[2], "contact force", d.contact, scan.contact),
         (METRICS[3], "wrist force", d.wrist, scan.wrist),

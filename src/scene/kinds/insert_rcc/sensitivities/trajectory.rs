@@ -22,7 +22,7 @@ use crate::compliant_peg_3d::design::{Design, Directions, N_DESIGN};
 use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, depth_tilt, peg_state};
 use crate::compliant_peg_3d::outcome::{Criteria, counts, terminal_events, two_point_counts};
 use crate::integrate::{Direction, Event, Method, Options, OutputMode, Solver, StopReason};
-use crate::scene::shared::sensitivities::StopOrError;
+use crate::scene::shared::sensitivities::{self, StopOrError};
 use crate::sensitivity::{EventSensitivity, SensitivityError, SensitivityEvent, integrate};
 use crate::system::OdeSystem;
 
@@ -261,16 +261,7 @@ pub(super) fn derivatives(
             let armed = armed(&windows, cur.0, to, &done);
             let mut events = vec![seated()];
             events.extend(armed.iter().map(|w| watch_event(dir, *w)));
-            let Some(left) = options.max_steps.checked_sub(attempts).filter(|n| *n > 0) else {
-                return Err(StopOrError::Stopped(StopReason::MaxSteps {
-                    t: cur.0,
-                    steps: attempts,
-                }));
-            };
-            let leg = Options {
-                max_steps: left,
-                ..options.clone()
-            };
+            let leg = sensitivities::leg(options, attempts, cur.0)?;
             let run = integrate::<_, N_STATE, N_DESIGN, M>(dir, cur, to, &leg, events)?;
             out.work.0 += run.stats.steps;
             out.work.1 += run.stats.rhs_calls;
