@@ -25,7 +25,7 @@ use super::insertion::{Insertion, N_STATE, peg_state};
 use super::jacobian;
 #[cfg(doc)]
 use super::system::Peg3d;
-use super::wrist::Kinematics;
+use super::wrist::{FrameTerms, Kinematics, WristOf, load_with};
 use crate::generated::compliant_peg_3d as generated;
 use crate::hertz::HertzError;
 use crate::scalar::Real;
@@ -53,12 +53,28 @@ impl Insertion {
     /// moment (if any) to the wrench `w = (F, T about the centre of mass,
     /// Ṡ)` of the peg in motion `m`; returns the power `Ẇ_r` they deliver.
     pub fn add_held<T: Real>(&self, t: f64, m: &Kinematics<T>, w: &mut [T; 7]) -> T {
+        let held = self
+            .held
+            .map(|h| (h.wrist.of(), FrameTerms::of(&h.robot.frame(t))));
+        let length = T::from_f64(self.peg.params.length);
+        self.add_held_with(m, held.as_ref().map(|(wr, f)| (wr, f)), length, w)
+    }
+
+    /// [`Insertion::add_held`] with the wrist `held.0` at the robot frame's
+    /// terms `held.1` on a peg of length `length`, all at scalar `T` (dual
+    /// numbers of design parameters carry their derivative,
+    /// [`super::design`]).
+    pub fn add_held_with<T: Real>(
+        &self,
+        m: &Kinematics<T>,
+        held: Option<(&WristOf<T>, &FrameTerms<T>)>,
+        length: T,
+        w: &mut [T; 7],
+    ) -> T {
         let c = T::from_f64;
         let mut power = c(0.0);
-        if let Some(h) = &self.held {
-            let load = h
-                .wrist
-                .load_of(self.peg.params.length, m, &h.robot.frame(t));
+        if let Some((wrist, frame)) = held {
+            let load = load_with(wrist, length, m, frame);
             for k in 0..3 {
                 w[k] = w[k] + load.force[k];
                 w[3 + k] = w[3 + k] + load.moment[k];

@@ -140,3 +140,38 @@ pub fn of(
     let (w, dw) = wrench(prm, p, y, setups);
     chain(p, y, &w, &dw)
 }
+
+/// The normal force `Q` of every contact of `setups` (found at `y`), in
+/// their order, in dual numbers of the state `yd` ([`seeded`]): the law
+/// of [`wrench_dual`] read contact by contact.
+pub fn normal_forces_dual(
+    prm: &Peg3dParams,
+    p: &SVector<f64, 16>,
+    yd: &[D; 13],
+    setups: &[Setup],
+) -> Vec<D> {
+    let m = Motion::of_state(yd);
+    let x = SVector::<G, 7>::from_fn(|i, _| G::variable(m.pose[i].v, i));
+    let pg = p.map(G::constant);
+    let mut out = Vec::with_capacity(setups.len());
+    super::forces::evaluate(
+        prm,
+        &LawParams::of(prm),
+        &m,
+        setups,
+        |pair, angle, _| lift(&pair.at_stationary(&x, angle, &pg), &m.pose),
+        |_, _, load, _| out.push(load.normal_force),
+    );
+    out
+}
+
+/// The gap `g` of `pair` at its stationary angle `angle` (rad) in dual
+/// numbers of the state `yd` ([`seeded`]): `−δ` of
+/// [`Pair::at_stationary`](super::contact::Pair::at_stationary) carried to
+/// the state.
+pub fn gap_dual(p: &SVector<f64, 16>, yd: &[D; 13], pair: super::contact::Pair, angle: f64) -> D {
+    let m = Motion::of_state(yd);
+    let x = SVector::<G, 7>::from_fn(|i, _| G::variable(m.pose[i].v, i));
+    let pg = p.map(G::constant);
+    -lift(&pair.at_stationary(&x, angle, &pg), &m.pose).penetration
+}

@@ -46,12 +46,15 @@
 //!   peg driven along a prescribed orientation, held by a compliant wrist
 //!   that a robot moves, and how an insertion ends; [`held`]: the wrist's
 //!   and the follower moment's wrench at any scalar, and the held peg's
-//!   exact Jacobian.
+//!   exact Jacobian; [`design`]: the insertion's derivatives in design
+//!   parameters (wrist, robot, fillets, clearance, contact law) in dual
+//!   numbers, for forward sensitivities.
 //!
 //! See `docs/compliant-peg-3d.md`.
 
 pub mod contact;
 pub mod curvature;
+pub mod design;
 pub mod elastic;
 pub mod face;
 pub mod forces;

@@ -15,7 +15,9 @@
 //! force-controlled descent the robot's height stays `z₀` and the wrist
 //! pushes with a constant axial force instead of its axial spring.
 
-use super::wrist::RobotFrame;
+use super::frame::{V3, add, dot, rotate, scale, sub};
+use super::wrist::{FrameTerms, RobotFrame};
+use crate::scalar::Real;
 use nalgebra::{UnitQuaternion, Vector3};
 use std::f64::consts::TAU;
 
@@ -104,6 +106,124 @@ impl RobotMotion {
             orientation,
             velocity: Vector3::new(vx, vy, vz),
             angular_velocity,
+            axial_force,
+        }
+    }
+}
+
+/// The robot motion's quantities that design parameters move, at any
+/// scalar: the start position `c_R(0)` (m), the angular error `θ₀` (rad),
+/// and the descent's speed `v` (m/s) and lowest height `z_end` (m) (both 0
+/// under a force).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct MotionOf<T> {
+    /// `c_R(0)` (m).
+    pub start: V3<T>,
+    /// `θ₀` (rad).
+    pub tilt: T,
+    /// `v` (m/s).
+    pub speed: T,
+    /// `z_end` (m).
+    pub end: T,
+}
+
+/// `a ⊗ b` of quaternions `(w, i, j, k)`.
+fn product<T: Real>(a: &[T; 4], b: &[T; 4]) -> [T; 4] {
+    [
+        a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3],
+        a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2],
+        a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1],
+        a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0],
+    ]
+}
+
+impl RobotMotion {
+    /// The quantities of [`MotionOf`] as constants of `T`.
+    pub fn of<T: Real>(&self) -> MotionOf<T> {
+        let c = T::from_f64;
+        let (speed, end) = match self.descent {
+            Descent::Speed { speed, end } => (speed, end),
+            Descent::Force { .. } => (0.0, 0.0),
+        };
+        MotionOf {
+            start: [c(self.start.x), c(self.start.y), c(self.start.z)],
+            tilt: c(self.tilt),
+            speed: c(speed),
+            end: c(end),
+        }
+    }
+
+    /// The frame's terms at time `t` (s) as the wrist reads them
+    /// ([`FrameTerms`]), at any scalar: the formulas of the module
+    /// documentation with `p`'s quantities in place of this motion's (the
+    /// azimuth, the rates and the spiral are this motion's constants).
+    /// [`RobotMotion::frame`] is the same frame at `f64` in nalgebra's
+    /// types, which the right-hand side reads; this form carries the
+    /// frame's derivative in design parameters ([`super::design`]).
+    pub fn terms_of<T: Real>(&self, t: f64, p: &MotionOf<T>) -> FrameTerms<T> {
+        let c = T::from_f64;
+        let (z, vz, axial_force) = match self.descent {
+            Descent::Speed { .. } => {
+                let z = p.start[2] - p.speed * c(t);
+                if z.to_f64() > p.end.to_f64() {
+                    (z, -p.speed, None)
+                } else {
+                    (p.end, c(0.0), None)
+                }
+            }
+            Descent::Force { force } => (p.start[2], c(0.0), Some(c(force))),
+        };
+        let f = self.frame(t);
+        // The spiral's offset: the frame's lateral position less the start's.
+        let (sx, sy) = (f.position.x - self.start.x, f.position.y - self.start.y);
+        let psi = self.tilt_azimuth + self.precession_rate * t;
+        let half = |angle: f64| (0.5 * angle).sin_cos();
+        let (sp, cp) = half(psi);
+        let (st, ct) = (c(0.5) * p.tilt).sin_cos();
+        let (ss, cs) = half(self.spin_rate * t);
+        let rz = [c(cp), c(0.0), c(0.0), c(sp)];
+        let rz_inv = [c(cp), c(0.0), c(0.0), c(-sp)];
+        let ry = [ct, c(0.0), st, c(0.0)];
+        let spin = [c(cs), c(0.0), c(0.0), c(ss)];
+        let q = product(&product(&product(&rz, &ry), &rz_inv), &spin);
+        let ez = [c(0.0), c(0.0), c(1.0)];
+        let a = rotate(&q, &ez);
+        let omega = add(
+            &scale(&sub(&ez, &a), c(self.precession_rate)),
+            &scale(&a, c(self.spin_rate)),
+        );
+        let (w, i, j, k) = (q[0], q[1], q[2], q[3]);
+        let one = c(1.0);
+        let two = c(2.0);
+        let rotation = [
+            [
+                one - two * (j * j + k * k),
+                two * (i * j - w * k),
+                two * (i * k + w * j),
+            ],
+            [
+                two * (i * j + w * k),
+                one - two * (i * i + k * k),
+                two * (j * k - w * i),
+            ],
+            [
+                two * (i * k - w * j),
+                two * (j * k + w * i),
+                one - two * (i * i + j * j),
+            ],
+        ];
+        let transposed: [V3<T>; 3] =
+            std::array::from_fn(|r| std::array::from_fn(|s| rotation[s][r]));
+        let times = |m: &[V3<T>; 3], v: &V3<T>| -> V3<T> { std::array::from_fn(|r| dot(&m[r], v)) };
+        let velocity = [c(f.velocity.x), c(f.velocity.y), vz];
+        FrameTerms {
+            position: [p.start[0] + c(sx), p.start[1] + c(sy), z],
+            rotation,
+            transposed,
+            omega_robot: times(&transposed, &omega),
+            robot_velocity: times(&transposed, &velocity).map(|v| -v),
+            angular_velocity: omega,
+            inverse: [-i, -j, -k, w],
             axial_force,
         }
     }

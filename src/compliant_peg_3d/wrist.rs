@@ -162,25 +162,97 @@ pub struct LoadOf<T> {
     pub robot_power: T,
 }
 
-/// The rows of a 3 × 3 matrix.
-fn rows(m: &Matrix3<f64>) -> [V3<f64>; 3] {
-    std::array::from_fn(|i| [m[(i, 0)], m[(i, 1)], m[(i, 2)]])
+/// The rows of a 3 × 3 matrix, as constants of `T`.
+fn rows<T: Real>(m: &Matrix3<f64>) -> [V3<T>; 3] {
+    std::array::from_fn(|i| [m[(i, 0)], m[(i, 1)], m[(i, 2)]].map(T::from_f64))
 }
 
-/// `M v` for a constant matrix `M` (rows), in nalgebra's order:
-/// `(m_{i0} v₀ + m_{i1} v₁) + m_{i2} v₂`.
-fn mat_vec<T: Real>(m: &[V3<f64>; 3], v: &V3<T>) -> V3<T> {
-    let c = T::from_f64;
-    std::array::from_fn(|i| c(m[i][0]) * v[0] + c(m[i][1]) * v[1] + c(m[i][2]) * v[2])
+/// `M v` in nalgebra's order: `(m_{i0} v₀ + m_{i1} v₁) + m_{i2} v₂`.
+fn mat_vec<T: Real>(m: &[V3<T>; 3], v: &V3<T>) -> V3<T> {
+    std::array::from_fn(|i| m[i][0] * v[0] + m[i][1] * v[1] + m[i][2] * v[2])
+}
+
+/// The wrist's stiffnesses, damping and compliance-centre height at any
+/// scalar: constants for the state's derivatives, dual numbers of design
+/// parameters for the parameters' ([`super::design`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct WristOf<T> {
+    /// `L_c` (m).
+    pub centre_height: T,
+    /// `K_x`, `K_y` (N/m).
+    pub lateral: [T; 2],
+    /// `K_z` (N/m).
+    pub axial: T,
+    /// `K_θ` (N·m/rad).
+    pub angular: T,
+    /// `K_φ` (N·m/rad).
+    pub torsional: T,
+    /// `C_x = C_y` (N·s/m).
+    pub lateral_damping: T,
+    /// `C_z` (N·s/m).
+    pub axial_damping: T,
+    /// `C_θ = C_φ` (N·m·s/rad).
+    pub angular_damping: T,
+}
+
+/// The robot frame's quantities the wrist reads, at any scalar: the
+/// rotation `R_R` (rows) and its transpose, `R_Rᵀ Ω_R`, `−R_Rᵀ ċ_R`, the
+/// inverse orientation `q_R*`, the position and `Ω_R`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FrameTerms<T> {
+    /// `c_R` (m).
+    pub position: V3<T>,
+    /// Rows of `R_R`.
+    pub rotation: [V3<T>; 3],
+    /// Rows of `R_Rᵀ`.
+    pub transposed: [V3<T>; 3],
+    /// `R_Rᵀ Ω_R` (rad/s).
+    pub omega_robot: V3<T>,
+    /// `−R_Rᵀ ċ_R` (m/s).
+    pub robot_velocity: V3<T>,
+    /// `Ω_R`, hole frame (rad/s).
+    pub angular_velocity: V3<T>,
+    /// `q_R*` in the storage order `(i, j, k, w)`.
+    pub inverse: [T; 4],
+    /// The axial force of a force-controlled descent (N).
+    pub axial_force: Option<T>,
+}
+
+impl<T: Real> FrameTerms<T> {
+    /// The terms of the frame `r` as constants, formed at `f64` as
+    /// nalgebra forms them.
+    pub fn of(r: &RobotFrame) -> FrameTerms<T> {
+        let c = T::from_f64;
+        let rot = r.orientation.to_rotation_matrix();
+        let lift = |v: &Vector3<f64>| [c(v.x), c(v.y), c(v.z)];
+        let a = r.orientation.inverse().into_inner().coords;
+        FrameTerms {
+            position: lift(&r.position),
+            rotation: rows(rot.matrix()),
+            transposed: rows(rot.transpose().matrix()),
+            omega_robot: lift(&(rot.transpose() * r.angular_velocity)),
+            robot_velocity: lift(&-(rot.transpose() * r.velocity)),
+            angular_velocity: lift(&r.angular_velocity),
+            inverse: [c(a[0]), c(a[1]), c(a[2]), c(a[3])],
+            axial_force: r.axial_force.map(c),
+        }
+    }
 }
 
 impl WristParams {
-    /// `(K_x, K_y, K_z)` as the rows of a diagonal matrix; `K_z = 0` under
-    /// a force.
-    fn translational(&self, force_mode: bool) -> [V3<f64>; 3] {
-        let kz = if force_mode { 0.0 } else { self.axial };
-        let [kx, ky] = self.lateral;
-        [[kx, 0.0, 0.0], [0.0, ky, 0.0], [0.0, 0.0, kz]]
+    /// The wrist's constants at scalar `T`.
+    pub fn of<T: Real>(&self) -> WristOf<T> {
+        let c = T::from_f64;
+        WristOf {
+            centre_height: c(self.centre_height),
+            lateral: self.lateral.map(c),
+            axial: c(self.axial),
+            angular: c(self.angular),
+            torsional: c(self.torsional),
+            lateral_damping: c(self.lateral_damping),
+            axial_damping: c(self.axial_damping),
+            angular_damping: c(self.angular_damping),
+        }
     }
 
     /// The wrist's load on a peg of length `length` in motion `m` held by
@@ -209,88 +281,11 @@ impl WristParams {
         }
     }
 
-    /// The wrist's load at any scalar ([`Real`]): the formulas of the
-    /// module documentation on a peg of length `length` in motion `m` held
-    /// by the robot frame `r` (constants). At `f64` every operation keeps
-    /// the order in which nalgebra evaluates the same formula (a product
-    /// `M v` of a constant 3 × 3 matrix as `(m₀₀v₀ + m₀₁v₁) + m₀₂v₂`, the
-    /// quaternion product component by component), so [`WristParams::load`]
-    /// is the nalgebra form to the last bit; at dual numbers it carries the
-    /// load's derivative in the peg's state (the exact Jacobian of
-    /// [`super::insertion::Insertion`]).
+    /// The wrist's load at any scalar ([`Real`]) with the wrist and the
+    /// robot frame `r` constants: [`load_with`] of their constants.
     pub fn load_of<T: Real>(&self, length: f64, m: &Kinematics<T>, r: &RobotFrame) -> LoadOf<T> {
-        let c = T::from_f64;
-        // The robot frame's quantities are constants, formed at f64 as
-        // nalgebra forms them.
-        let rot = r.orientation.to_rotation_matrix();
-        let (rr, rt) = (rows(rot.matrix()), rows(rot.transpose().matrix()));
-        let omega_rb = rot.transpose() * r.angular_velocity;
-        let robot_velocity = -(rot.transpose() * r.velocity);
-        let lift = |v: &Vector3<f64>| [c(v.x), c(v.y), c(v.z)];
-        let q = &m.orientation;
-        let axis = rotate(q, &[c(0.0), c(0.0), c(1.0)]);
-        let arm = scale(&axis, c(self.centre_height - 0.5 * length));
-        let cp = add(&m.centre, &arm);
-        let d = mat_vec(&rt, &sub(&cp, &lift(&r.position)));
-        let mut g = mat_vec(&self.translational(r.axial_force.is_some()), &d);
-        let mut potential = c(0.5) * dot(&d, &g);
-        if let Some(f) = r.axial_force {
-            g[2] = c(f);
-            potential = potential + c(f) * d[2];
-        }
-        let v_cp = add(&m.velocity, &cross(&m.angular_velocity, &arm));
-        let d_robot = sub(&lift(&robot_velocity), &cross(&lift(&omega_rb), &d));
-        let d_dot = add(&mat_vec(&rt, &v_cp), &d_robot);
-        let ct = [
-            self.lateral_damping,
-            self.lateral_damping,
-            self.axial_damping,
-        ];
-        let damp_t: V3<T> = std::array::from_fn(|k| c(ct[k]) * d_dot[k]);
-        let pushed = add(&g, &damp_t);
-        let force_robot = pushed.map(|v| -v);
-
-        // q_rel = q_R* ⊗ q, nalgebra's product (storage order i, j, k, w).
-        let a = r.orientation.inverse().into_inner().coords;
-        let (a0, a1, a2, a3) = (c(a[0]), c(a[1]), c(a[2]), c(a[3]));
-        let (b0, b1, b2, b3) = (q[1], q[2], q[3], q[0]);
-        let w = a3 * b3 - a0 * b0 - a1 * b1 - a2 * b2;
-        let u = [
-            a3 * b0 + a0 * b3 + a1 * b2 - a2 * b1,
-            a3 * b1 - a0 * b2 + a1 * b3 + a2 * b0,
-            a3 * b2 + a0 * b1 - a1 * b0 + a2 * b3,
-        ];
-        let kr = [self.angular, self.angular, self.torsional];
-        let ku: V3<T> = std::array::from_fn(|k| c(kr[k]) * u[k]);
-        let h = scale(&add(&scale(&ku, w), &cross(&ku, &u)), c(2.0));
-        let omega_rel = mat_vec(&rt, &sub(&m.angular_velocity, &lift(&r.angular_velocity)));
-        let damp_r = scale(&omega_rel, c(self.angular_damping));
-        // `h` is in the peg's body axes (the gradient in a body rotation),
-        // the damping moment in the robot's.
-        let spring_moment = rotate(q, &h.map(|v| -v));
-        let pure = sub(&spring_moment, &mat_vec(&rr, &damp_r));
-        let moment_robot = mat_vec(&rt, &pure);
-        let potential = potential + c(2.0) * dot(&u, &ku);
-        let force = mat_vec(&rr, &force_robot);
-        let moment = add(&pure, &cross(&arm, &force));
-        let dissipation_rate = dot(&d_dot, &damp_t) + dot(&omega_rel, &damp_r);
-        let omega_rb = lift(&omega_rb);
-        let robot_power = dot(&pushed, &d_robot)
-            - c(2.0) * dot(&omega_rb, &add(&scale(&ku, w), &cross(&u, &ku)))
-            - dot(&damp_r, &omega_rb);
-        LoadOf {
-            force,
-            moment,
-            force_robot,
-            moment_robot,
-            deflection: d,
-            relative: [w, u[0], u[1], u[2]],
-            potential,
-            dissipation_rate,
-            robot_power,
-        }
+        load_with(&self.of(), T::from_f64(length), m, &FrameTerms::of(r))
     }
-
     /// The natural frequencies (rad/s) of a free peg of mass `mass` and
     /// transverse inertia `j_t` about its centre of mass held by the
     /// undamped wrist, linearized about the undeflected aligned pose: the
@@ -312,6 +307,91 @@ impl WristParams {
             out.push(((-b + disc) / (2.0 * a)).sqrt());
         }
         out
+    }
+}
+
+/// The wrist's load at any scalar ([`Real`]): the formulas of the module
+/// documentation for the wrist `wr` on a peg of length `length` in motion
+/// `m` held by the robot frame `f`. At `f64` every operation keeps the
+/// order in which nalgebra evaluates the same formula (a product `M v` of
+/// a 3 × 3 matrix as `(m₀₀v₀ + m₀₁v₁) + m₀₂v₂`, the quaternion product
+/// component by component), so [`WristParams::load`] is the nalgebra form
+/// to the last bit; at dual numbers it carries the load's derivative in
+/// the peg's state (the exact Jacobian of
+/// [`super::insertion::Insertion`]) or in design parameters that move the
+/// wrist and the frame ([`super::design`]).
+pub fn load_with<T: Real>(
+    wr: &WristOf<T>,
+    length: T,
+    m: &Kinematics<T>,
+    f: &FrameTerms<T>,
+) -> LoadOf<T> {
+    let c = T::from_f64;
+    let (rr, rt) = (&f.rotation, &f.transposed);
+    let q = &m.orientation;
+    let axis = rotate(q, &[c(0.0), c(0.0), c(1.0)]);
+    let arm = scale(&axis, wr.centre_height - c(0.5) * length);
+    let cp = add(&m.centre, &arm);
+    let d = mat_vec(rt, &sub(&cp, &f.position));
+    let kz = if f.axial_force.is_some() {
+        c(0.0)
+    } else {
+        wr.axial
+    };
+    let [kx, ky] = wr.lateral;
+    let zero = c(0.0);
+    let translational = [[kx, zero, zero], [zero, ky, zero], [zero, zero, kz]];
+    let mut g = mat_vec(&translational, &d);
+    let mut potential = c(0.5) * dot(&d, &g);
+    if let Some(fz) = f.axial_force {
+        g[2] = fz;
+        potential = potential + fz * d[2];
+    }
+    let v_cp = add(&m.velocity, &cross(&m.angular_velocity, &arm));
+    let d_robot = sub(&f.robot_velocity, &cross(&f.omega_robot, &d));
+    let d_dot = add(&mat_vec(rt, &v_cp), &d_robot);
+    let ct = [wr.lateral_damping, wr.lateral_damping, wr.axial_damping];
+    let damp_t: V3<T> = std::array::from_fn(|k| ct[k] * d_dot[k]);
+    let pushed = add(&g, &damp_t);
+    let force_robot = pushed.map(|v| -v);
+
+    // q_rel = q_R* ⊗ q, nalgebra's product (storage order i, j, k, w).
+    let [a0, a1, a2, a3] = f.inverse;
+    let (b0, b1, b2, b3) = (q[1], q[2], q[3], q[0]);
+    let w = a3 * b3 - a0 * b0 - a1 * b1 - a2 * b2;
+    let u = [
+        a3 * b0 + a0 * b3 + a1 * b2 - a2 * b1,
+        a3 * b1 - a0 * b2 + a1 * b3 + a2 * b0,
+        a3 * b2 + a0 * b1 - a1 * b0 + a2 * b3,
+    ];
+    let kr = [wr.angular, wr.angular, wr.torsional];
+    let ku: V3<T> = std::array::from_fn(|k| kr[k] * u[k]);
+    let h = scale(&add(&scale(&ku, w), &cross(&ku, &u)), c(2.0));
+    let omega_rel = mat_vec(rt, &sub(&m.angular_velocity, &f.angular_velocity));
+    let damp_r = scale(&omega_rel, wr.angular_damping);
+    // `h` is in the peg's body axes (the gradient in a body rotation),
+    // the damping moment in the robot's.
+    let spring_moment = rotate(q, &h.map(|v| -v));
+    let pure = sub(&spring_moment, &mat_vec(rr, &damp_r));
+    let moment_robot = mat_vec(rt, &pure);
+    let potential = potential + c(2.0) * dot(&u, &ku);
+    let force = mat_vec(rr, &force_robot);
+    let moment = add(&pure, &cross(&arm, &force));
+    let dissipation_rate = dot(&d_dot, &damp_t) + dot(&omega_rel, &damp_r);
+    let omega_rb = &f.omega_robot;
+    let robot_power = dot(&pushed, &d_robot)
+        - c(2.0) * dot(omega_rb, &add(&scale(&ku, w), &cross(&u, &ku)))
+        - dot(&damp_r, omega_rb);
+    LoadOf {
+        force,
+        moment,
+        force_robot,
+        moment_robot,
+        deflection: d,
+        relative: [w, u[0], u[1], u[2]],
+        potential,
+        dissipation_rate,
+        robot_power,
     }
 }
 

@@ -4,7 +4,9 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod design;
 mod design_margins;
+mod design_sensitivities;
 mod industreal;
 mod jacobian;
 mod outcomes;

@@ -10,10 +10,13 @@
 //!   `insert_rcc`, `rotation_assist`, `design_margins`), their ranges, one
 //!   held-peg insertion run, its outputs, margins and replay page;
 //! - [`replay`]: the `[replay]` table of the kinds that write a replay
-//!   page, and the page's file.
+//!   page, and the page's file;
+//! - [`sensitivities`]: the rows, files and ranking of a `[sensitivities]`
+//!   table (`insert_compliant`, `insert_rcc`).
 
 pub mod compliant_peg_3d;
 pub mod material;
 pub mod pendulum;
 pub mod replay;
 pub mod rigid_peg;
+pub mod sensitivities;

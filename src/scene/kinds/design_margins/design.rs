@@ -147,6 +147,7 @@ impl DesignScene {
             criteria,
             integrator: self.integrator.clone(),
             replay: Default::default(),
+            sensitivities: None,
         }
     }
 
@@ -159,6 +160,7 @@ impl DesignScene {
             criteria: self.criteria.clone(),
             integrator: self.integrator.clone(),
             replay: Default::default(),
+            sensitivities: None,
         }
     }
 

@@ -131,6 +131,7 @@ impl SweepScene {
             criteria: self.criteria.clone(),
             integrator: self.integrator.clone(),
             replay: Default::default(),
+            sensitivities: None,
         }
     }
 }

@@ -24,6 +24,7 @@ use crate::scene::integrator::IntegratorSpec;
 use crate::scene::numbers::significant;
 use crate::scene::progress::Progress;
 use crate::scene::shared::replay::ReplayTable;
+use crate::scene::shared::sensitivities::SensitivitiesTable;
 use crate::scene::simulate::{describe_stop, integrate};
 use crate::scene::validate::Checker;
 use crate::system::ModelError;
@@ -45,6 +46,10 @@ pub struct RccScene {
     /// `[replay]` (optional).
     #[serde(default)]
     pub replay: ReplayTable,
+    /// `[sensitivities]` (optional, `insert_rcc` alone): derivatives of
+    /// the run's metrics in design fields.
+    #[serde(default)]
+    pub sensitivities: Option<SensitivitiesTable>,
 }
 
 /// A validated held peg, ready to run.

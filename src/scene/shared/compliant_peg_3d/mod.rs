@@ -7,6 +7,7 @@
 //! pose ([`start`]), its time scales ([`timescales`]) and its replay page
 //! ([`replay`]).
 
+pub mod design;
 pub mod insertion;
 pub mod margins;
 pub mod output;

@@ -19,33 +19,15 @@
 
 use nalgebra::SVector;
 
+use crate::scene::shared::sensitivities::{self, Measured};
+
 use super::fields::{FIELDS, N_FIELDS};
 use super::trajectory::{Derivatives, N_CONTACTS, Scan};
 use crate::compliant_peg::directions::CompliantDirections;
 use crate::compliant_peg::sensitivity::CONTACTS;
 use crate::compliant_peg::system::N_STATE;
 
-/// The relative change of a field within which a derivative must hold for
-/// it to be reported.
-pub const PERTURBATION: f64 = 1e-3;
-
-/// One metric's derivative along one field.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Row {
-    /// The metric, with its unit (`seat_time_s`).
-    pub metric: &'static str,
-    /// The field (its name in the scene).
-    pub parameter: &'static str,
-    /// The metric's value (None when the run has none, e.g. not seated).
-    pub value: Option<f64>,
-    /// `∂m/∂q` (None when flagged).
-    pub derivative: Option<f64>,
-    /// `q/m ∂m/∂q` (None when flagged or `m = 0`).
-    pub elasticity: Option<f64>,
-    /// Why there is no derivative, or that the field is not used; empty
-    /// otherwise.
-    pub flag: String,
-}
+pub use crate::scene::shared::sensitivities::{PERTURBATION, Row};
 
 /// The metric names, in output order.
 pub const METRICS: [&str; 5] = [
@@ -55,15 +37,6 @@ pub const METRICS: [&str; 5] = [
     "two_point_start_s",
     "two_point_end_s",
 ];
-
-/// A metric of the run: value, derivatives along every field, and a flag
-/// for every field (empty where the derivative holds).
-struct Metric<'a> {
-    name: &'static str,
-    value: Option<f64>,
-    derivative: SVector<f64, N_FIELDS>,
-    flag: Box<dyn Fn(usize) -> Option<String> + 'a>,
-}
 
 /// The rows of `chosen` fields (indices into [`FIELDS`]), `unused[k]`
 /// marking the fields that move nothing.
@@ -77,52 +50,33 @@ pub(super) fn rows(
     unused: &[bool; N_FIELDS],
 ) -> Vec<Row> {
     let shift = |k: usize, der: f64| PERTURBATION * values[k].abs() * der.abs();
-    let mut metrics: Vec<Metric> = Vec::new();
+    let mut metrics: Vec<Measured> = Vec::new();
     // Seat time.
-    match &d.seated {
-        Some(e) => {
-            let (t, dt) = (e.t, e.dt_dp);
-            metrics.push(Metric {
-                name: METRICS[0],
-                value: Some(t),
-                derivative: dt,
-                flag: Box::new(move |k| {
-                    (t_end - t < shift(k, dt[k])).then(|| {
-                        "seated near t_end: a 0.1% change of the field leaves the peg unseated"
-                            .to_owned()
-                    })
-                }),
-            });
-        }
-        None => metrics.push(Metric {
-            name: METRICS[0],
-            value: None,
-            derivative: SVector::zeros(),
-            flag: Box::new(|_| Some("not seated within t_end".to_owned())),
-        }),
-    }
+    metrics.push(sensitivities::seat_time(
+        d.seated
+            .as_ref()
+            .map(|e| (e.t, e.dt_dp.as_slice().to_vec())),
+        t_end,
+        values.as_slice().to_vec(),
+        "not seated within t_end".to_owned(),
+    ));
     // Final depth.
     let (l_y, l_q) = sys.depth_gradient(&d.y);
     let depth = sys.depth(&d.y);
     let dl = d.dy.transpose() * l_y + l_q;
-    let seated = d.seated.is_some();
-    metrics.push(Metric {
-        name: METRICS[1],
-        value: Some(depth),
-        derivative: dl,
-        flag: Box::new(move |k| {
-            (!seated && target - depth < shift(k, dl[k])).then(|| {
-                "ends near the target depth: a 0.1% change of the field seats the peg".to_owned()
-            })
-        }),
-    });
+    metrics.push(sensitivities::final_depth(
+        (depth, dl.as_slice().to_vec()),
+        d.seated.is_some(),
+        target,
+        values.as_slice().to_vec(),
+    ));
     // Peak contact force.
     if let Some((c, _, f, df)) = d.peak {
         let gap = f - scan.runner_up;
-        metrics.push(Metric {
+        metrics.push(Measured {
             name: METRICS[2],
             value: Some(f),
-            derivative: df,
+            derivative: df.as_slice().to_vec(),
             flag: Box::new(move |k| {
                 (gap < 2.0 * shift(k, df[k]) || gap <= 1e-9 * f).then(|| {
                     format!(
@@ -139,10 +93,10 @@ pub(super) fn rows(
     {
         // The plain pass saw the peak; the sensitivity run did not locate
         // it between that pass's steps around it.
-        metrics.push(Metric {
+        metrics.push(Measured {
             name: METRICS[2],
             value: Some(f),
-            derivative: SVector::zeros(),
+            derivative: vec![0.0; N_FIELDS],
             flag: Box::new(move |_| {
                 Some(format!(
                     "the peak on {} was not located by the sensitivity run",
@@ -187,10 +141,10 @@ pub(super) fn rows(
     let grazing = scan.grazing;
     for (name, hit) in [(METRICS[3], began), (METRICS[4], ended)] {
         if let Some((t, dt)) = hit {
-            metrics.push(Metric {
+            metrics.push(Measured {
                 name,
                 value: Some(t),
-                derivative: dt,
+                derivative: dt.as_slice().to_vec(),
                 flag: Box::new(move |_| {
                     grazing.map(|(c, tg)| {
                         format!(
@@ -203,60 +157,11 @@ pub(super) fn rows(
             });
         }
     }
-    let mut out = Vec::new();
-    for m in &metrics {
-        for &k in chosen {
-            let flag = if unused[k] {
-                Some("not used by this model".to_owned())
-            } else {
-                (m.flag)(k)
-            };
-            let (derivative, elasticity) = match (&flag, unused[k]) {
-                (_, true) => (Some(0.0), Some(0.0)),
-                (Some(_), false) => (None, None),
-                (None, false) => {
-                    let der = m.derivative[k];
-                    let el = m.value.filter(|v| *v != 0.0).map(|v| values[k] / v * der);
-                    (Some(der), el)
-                }
-            };
-            // A derivative that overflowed (a degenerate contact geometry,
-            // say) is flagged, never written as a number.
-            let (flag, derivative, elasticity) = match derivative {
-                Some(v) if !v.is_finite() || elasticity.is_some_and(|e| !e.is_finite()) => (
-                    Some("the derivative is not finite at this point".to_owned()),
-                    None,
-                    None,
-                ),
-                _ => (flag, derivative, elasticity),
-            };
-            out.push(Row {
-                metric: m.name,
-                parameter: FIELDS[k],
-                value: m.value,
-                derivative,
-                elasticity,
-                flag: flag.unwrap_or_default(),
-            });
-        }
-    }
-    out
+    sensitivities::rows(&metrics, chosen, unused, values.as_slice(), &FIELDS)
 }
 
 /// The rows of a run whose sensitivities failed: every metric of the
 /// chosen fields flagged with `reason`.
 pub(super) fn failed(chosen: &[usize], reason: &str) -> Vec<Row> {
-    METRICS
-        .iter()
-        .flat_map(|m| {
-            chosen.iter().map(move |&k| Row {
-                metric: m,
-                parameter: FIELDS[k],
-                value: None,
-                derivative: None,
-                elasticity: None,
-                flag: reason.to_owned(),
-            })
-        })
-        .collect()
+    sensitivities::failed(&METRICS, chosen, &FIELDS, reason)
 }

@@ -11,15 +11,12 @@
 //!
 //! Each field moves the model parameters and the start through the chain
 //! rule of [`fields`]; the metrics and their flags are in [`metrics`], the
-//! files in [`output`]. See `docs/sensitivities.md`, "In scenes".
+//! files in [`crate::scene::shared::sensitivities::output`]. See `docs/sensitivities.md`, "In scenes".
 
 pub mod fields;
 mod hertz_tangent;
 pub mod metrics;
-pub mod output;
 mod trajectory;
-
-use serde::Deserialize;
 
 use super::{Built, InsertParams};
 use crate::compliant_peg::directions::CompliantDirections;
@@ -31,20 +28,14 @@ use crate::integrate::Options;
 use crate::scene::context::RunContext;
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::limits::WorkItem;
+use crate::scene::shared::sensitivities::StopOrError;
+use crate::scene::shared::sensitivities::output;
 use crate::scene::summary::Metric;
-use crate::sensitivity::SensitivityError;
 use fields::{FIELDS, N_FIELDS};
 use nalgebra::{SMatrix, SVector};
-use trajectory::{Derivatives, Scan, StopOrError};
+use trajectory::{Derivatives, Scan};
 
-/// The `[sensitivities]` table.
-#[derive(Debug, Clone, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SensitivitiesTable {
-    /// The scene fields to differentiate by, e.g.
-    /// `"insert_compliant.friction"` (one of [`FIELDS`]).
-    pub parameters: Vec<String>,
-}
+pub use crate::scene::shared::sensitivities::SensitivitiesTable;
 
 const FIELD: &str = "sensitivities.parameters";
 
@@ -120,7 +111,7 @@ pub fn run(
     chosen: &[usize],
 ) -> Result<Vec<Metric>, RunError> {
     let (rows, work) = compute(p, b, integrator, chosen)?;
-    let mut notes = output::write(ctx, &rows)?;
+    let mut notes = output::write(ctx, &rows, &metrics::METRICS, "insert_compliant.")?;
     if let Some((steps, calls)) = work {
         let q = integrated(p, b, chosen).len();
         notes.push(Metric::note(
@@ -220,25 +211,7 @@ pub fn compute(
     };
     let d = match run.run() {
         Ok(d) => d,
-        Err(StopOrError::Error(SensitivityError::TangentialEvent { t, .. })) => {
-            return Ok((
-                metrics::failed(
-                    chosen,
-                    &format!("an event is crossed tangentially at t = {t:.6e} s"),
-                ),
-                None,
-            ));
-        }
-        Err(StopOrError::Error(e)) => return Err(e.into()),
-        Err(StopOrError::Stopped(stop)) => {
-            return Ok((
-                metrics::failed(
-                    chosen,
-                    &format!("the sensitivity run stopped short: {stop:?}"),
-                ),
-                None,
-            ));
-        }
+        Err(e) => return Ok((metrics::failed(chosen, &e.flag()?), None)),
     };
     let rows = metrics::rows(
         &all,

@@ -15,6 +15,7 @@ use nalgebra::{SMatrix, SVector};
 use crate::compliant_peg::directions::CompliantDirections;
 use crate::compliant_peg::system::N_STATE;
 use crate::integrate::{Direction, Event, Method, Options, OutputMode, Solver, StopReason};
+use crate::scene::shared::sensitivities::{self, StopOrError};
 use crate::sensitivity::{EventSensitivity, SensitivityError, integrate};
 
 /// The number of contacts (`compliant_peg::sensitivity::CONTACTS`).
@@ -191,16 +192,7 @@ pub(super) fn derivatives<const Q: usize, const M: usize>(
             continue;
         }
         // The legs share the step budget.
-        let Some(left) = options.max_steps.checked_sub(attempts).filter(|n| *n > 0) else {
-            return Err(StopOrError::Stopped(StopReason::MaxSteps {
-                t: cur.0,
-                steps: attempts,
-            }));
-        };
-        let leg = Options {
-            max_steps: left,
-            ..options.clone()
-        };
+        let leg = sensitivities::leg(options, attempts, cur.0)?;
         let run = integrate::<_, N_STATE, Q, M>(sys, cur, to, &leg, events(peak))?;
         out.work.0 += run.stats.steps;
         out.work.1 += run.stats.rhs_calls;
@@ -240,19 +232,4 @@ pub(super) fn derivatives<const Q: usize, const M: usize>(
         out.peak = Some((c, out.t, sys.force(c, &out.y), d));
     }
     Ok(out)
-}
-
-/// Why the sensitivity run ended without derivatives.
-#[derive(Debug)]
-pub(super) enum StopOrError {
-    /// The integrator stopped short (step size, budget, non-finite state).
-    Stopped(StopReason),
-    /// The sensitivity integrator refused (a tangential event, bad input).
-    Error(SensitivityError),
-}
-
-impl From<SensitivityError> for StopOrError {
-    fn from(e: SensitivityError) -> Self {
-        StopOrError::Error(e)
-    }
 }

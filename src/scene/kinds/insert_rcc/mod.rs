@@ -45,7 +45,12 @@
 //! wrist's lateral force and moment against depth; contact forces and the
 //! contact-state timeline against time), `<name>.views.svg` and the replay
 //! page `<name>.html` (`docs/replay.md`; `[replay] page = false` or
-//! `pegdyn run --no-replay` turns it off).
+//! `pegdyn run --no-replay` turns it off). An optional `[sensitivities]`
+//! table adds the derivatives of the insertion's metrics in design fields
+//! ([`sensitivities`]): `<name>.sensitivities.csv`, a tornado plot and a
+//! ranking in the summary.
+
+pub mod sensitivities;
 
 use crate::compliant_peg_3d::outcome::TERMINAL_NAMES;
 use crate::error::{RunError, SceneErrors};
@@ -79,13 +84,22 @@ struct Ready {
     built: Built,
     integrator: IntegratorSpec,
     method_reason: &'static str,
+    /// The fields of the `[sensitivities]` table (slots of
+    /// [`crate::scene::shared::compliant_peg_3d::design::FIELDS`]), empty
+    /// without one.
+    sensitivities: Vec<usize>,
 }
 
 fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
     let s: RccScene = doc.body()?;
     let built = s.build()?;
     let (integrator, method_reason) = s.integrator.resolved(DefaultMethod::STIFF_CONTACT);
+    let chosen = s
+        .sensitivities
+        .as_ref()
+        .map(|t| sensitivities::check(t, &built));
     Ok(Box::new(Ready {
+        sensitivities: chosen.transpose()?.unwrap_or_default(),
         scene: s,
         built,
         integrator,
@@ -95,7 +109,11 @@ fn parse(doc: &Document<'_>) -> Result<Box<dyn Written>, SceneErrors> {
 
 impl Written for Ready {
     fn work(&self) -> Vec<WorkItem> {
-        self.scene.integrator.work("integrator")
+        let mut work = self.scene.integrator.work("integrator");
+        if !self.sensitivities.is_empty() {
+            work.extend(sensitivities::work(&self.integrator, &self.sensitivities));
+        }
+        work
     }
 
     fn build(self: Box<Self>) -> Result<Box<dyn Scene>, SceneErrors> {
@@ -238,6 +256,17 @@ impl Scene for Ready {
             ));
         }
         out.metrics.extend(margin_metrics);
+        if !self.sensitivities.is_empty() {
+            let (scene, built) = (&self.scene, &self.built);
+            let chosen = &self.sensitivities;
+            out.metrics.extend(sensitivities::run(
+                ctx,
+                scene,
+                built,
+                &self.integrator,
+                chosen,
+            )?);
+        }
         if self.scene.replay.wanted(ctx) {
             let what = "compliant 3-D peg held by a compliant wrist";
             replay::write(ctx, &insertion(ctx.name(), what, &run)?)?;

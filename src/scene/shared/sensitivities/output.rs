@@ -6,7 +6,7 @@
 //! out) and the ranking `pegdyn run` prints (the fields by |elasticity|
 //! for each metric).
 
-use super::metrics::{METRICS, Row};
+use super::Row;
 use crate::error::RunError;
 use crate::output::csv::format_f64;
 use crate::output::names::Part;
@@ -35,18 +35,19 @@ const NEGLIGIBLE: f64 = 1e-9;
 /// Half the height of a tornado bar (the bars sit on integer rows).
 const BAR: f64 = 0.35;
 
-/// The field's name without the table prefix (`friction`).
-fn short(parameter: &str) -> &str {
-    parameter
-        .strip_prefix("insert_compliant.")
-        .unwrap_or(parameter)
-}
-
-/// Writes the CSV and the tornado plot, and returns the ranking as notes.
+/// Writes the CSV and the tornado plot of `rows` (metrics in the order of
+/// `metrics`), and returns the ranking as notes; the plot and the ranking
+/// name each field without `prefix` (`"insert_compliant."`: `friction`).
 ///
 /// # Errors
 /// The files cannot be written.
-pub(super) fn write(ctx: &RunContext, rows: &[Row]) -> Result<Vec<Metric>, RunError> {
+pub fn write(
+    ctx: &RunContext,
+    rows: &[Row],
+    metrics: &[&str],
+    prefix: &str,
+) -> Result<Vec<Metric>, RunError> {
+    let short = |parameter: &'static str| parameter.strip_prefix(prefix).unwrap_or(parameter);
     let part = Part::Sub("sensitivities");
     let mut csv = ctx.table(part, &HEADER)?;
     let cell = |v: Option<f64>| v.map(format_f64).unwrap_or_default();
@@ -63,7 +64,7 @@ pub(super) fn write(ctx: &RunContext, rows: &[Row]) -> Result<Vec<Metric>, RunEr
     csv.finish()?;
     let mut fig = Figure::new();
     let mut notes = Vec::new();
-    for metric in METRICS {
+    for &metric in metrics {
         let mut ranked: Vec<(&str, f64)> = rows
             .iter()
             .filter(|r| r.metric == metric && r.flag.is_empty())

@@ -1,0 +1,286 @@
+//! The `[sensitivities]` table of an `insert_rcc` scene: derivatives of
+//! the insertion's metrics with respect to design fields of the scene, by
+//! forward sensitivities of the held compliant 3-D peg along them
+//! ([`crate::compliant_peg_3d::design`], integrated by
+//! [`crate::sensitivity::integrate`]).
+//!
+//! ```toml
+//! [sensitivities]
+//! parameters = ["wrist.lateral_stiffness", "peg.friction", "robot.lateral_error"]
+//! ```
+//!
+//! The fields are those of
+//! [`crate::scene::shared::compliant_peg_3d::design::FIELDS`]; each moves
+//! the model and the start through the scene's translation in dual
+//! numbers. The metrics and their flags are in [`metrics`]; the files
+//! (`<scene>.sensitivities.csv`, the tornado plot) and the printed ranking
+//! in [`crate::scene::shared::sensitivities::output`]. See
+//! `docs/sensitivities.md`, "In scenes".
+
+pub mod metrics;
+mod trajectory;
+
+use crate::compliant_peg_3d::design::{Directions, N_DESIGN};
+use crate::compliant_peg_3d::insertion::{Insertion, N_STATE};
+use crate::error::{RunError, SceneError, SceneErrors};
+use crate::integrate::Options;
+use crate::scene::context::RunContext;
+use crate::scene::integrator::IntegratorSpec;
+use crate::scene::limits::WorkItem;
+use crate::scene::shared::compliant_peg_3d::design::{FIELDS, design, fixed_stiffness, values};
+use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene};
+use crate::scene::shared::sensitivities::StopOrError;
+use crate::scene::shared::sensitivities::{Row, output};
+use crate::scene::summary::Metric;
+use nalgebra::SMatrix;
+
+pub use crate::scene::shared::sensitivities::SensitivitiesTable;
+
+const FIELD: &str = "sensitivities.parameters";
+
+/// The chosen fields' slots in [`FIELDS`], or the errors naming
+/// `sensitivities.parameters`: an unknown name (with the valid ones), a
+/// name given twice, an empty list, or contacts whose stiffness comes from
+/// the curvatures (its variation with the geometry is not carried).
+///
+/// # Errors
+/// Every problem with the table, named.
+pub fn check(table: &SensitivitiesTable, b: &Built) -> Result<Vec<usize>, SceneErrors> {
+    let mut errors = Vec::new();
+    let mut chosen = Vec::new();
+    let valid = FIELDS.join(", ");
+    if table.parameters.is_empty() {
+        errors.push(SceneError::invalid(
+            FIELD,
+            &table.parameters,
+            format!("name at least one field; the fields are: {valid}"),
+        ));
+    }
+    for name in &table.parameters {
+        match FIELDS.iter().position(|f| f == name) {
+            None => errors.push(SceneError::invalid(
+                FIELD,
+                name,
+                format!("unknown field; the fields are: {valid}"),
+            )),
+            Some(k) if chosen.contains(&k) => {
+                errors.push(SceneError::invalid(FIELD, name, "named twice"));
+            }
+            Some(k) => chosen.push(k),
+        }
+    }
+    if !fixed_stiffness(&b.params) {
+        errors.push(SceneError::invalid(
+            FIELD,
+            &table.parameters,
+            "sensitivities need a fixed Hertz stiffness, peg.contact_stiffness (the curvature \
+             stiffness's variation with the geometry is not carried)",
+        ));
+    }
+    if errors.is_empty() {
+        Ok(chosen)
+    } else {
+        Err(SceneErrors::new(errors))
+    }
+}
+
+/// Bytes of one step kept by the plain pass: the time and the state, twice
+/// for the vectors' growth.
+const PASS_STEP_BYTES: f64 = 2.0 * 8.0 * (1 + N_STATE) as f64;
+
+/// The work of the sensitivities, for the scene's `[limits]`: the plain
+/// pass keeps up to `integrator.max_steps` steps, and the sensitivity run
+/// takes up to `integrator.max_steps` steps of `N (1 + P)` components,
+/// counted as `(1 + P) · max_steps` steps of the model's `N` states for
+/// `P` chosen fields (as `insert_compliant` counts them).
+pub fn work(integrator: &IntegratorSpec, chosen: &[usize]) -> Vec<WorkItem> {
+    let steps = integrator.max_steps as f64;
+    let p = chosen.len() as f64;
+    vec![
+        WorkItem::new(FIELD, "max_output_samples", steps, PASS_STEP_BYTES),
+        WorkItem::new(FIELD, "max_steps", (1.0 + p) * steps, 0.0),
+    ]
+}
+
+/// Runs the sensitivities of the `chosen` fields and writes their files;
+/// returns the ranking notes for the run's summary.
+///
+/// # Errors
+/// The files cannot be written, or the integrator refuses its input.
+pub fn run(
+    ctx: &RunContext,
+    scene: &RccScene,
+    b: &Built,
+    integrator: &IntegratorSpec,
+    chosen: &[usize],
+) -> Result<Vec<Metric>, RunError> {
+    let (rows, work) = compute(scene, b, integrator, chosen)?;
+    let mut notes = output::write(ctx, &rows, &metrics::METRICS, "")?;
+    if let Some((steps, calls)) = work {
+        notes.push(Metric::note(
+            "sensitivity run",
+            format!(
+                "{steps} steps, {calls} evaluations of the variational system ({} fields, {} \
+                 components)",
+                chosen.len(),
+                trajectory::M
+            ),
+        ));
+    }
+    Ok(notes)
+}
+
+/// Whether field `k` moves nothing the run depends on: every derivative
+/// of the model's quantities and of the start in slot `k` is zero.
+fn unused(scene: &RccScene, b: &Built) -> [bool; N_DESIGN] {
+    let (d, y0) = design(scene, b, &[true; N_DESIGN]);
+    let mut moved = [false; N_DESIGN];
+    let mut mark = |x: &crate::compliant_peg_3d::design::Q| {
+        for (m, v) in moved.iter_mut().zip(&x.d[..N_DESIGN]) {
+            *m |= *v != 0.0;
+        }
+    };
+    d.p.iter().chain(&y0).for_each(&mut mark);
+    let w = &d.wrist;
+    let r = &d.robot;
+    [d.law.friction, d.law.damping, d.law.slip_scale]
+        .iter()
+        .chain(&[w.centre_height, w.axial, w.angular, w.torsional])
+        .chain(&w.lateral)
+        .chain(&r.start)
+        .chain(&[r.tilt, r.speed, r.end])
+        .for_each(&mut mark);
+    moved.map(|m| !m)
+}
+
+/// What [`compute`] gives: the rows, and the sensitivity run's accepted
+/// steps and right-hand-side evaluations (None when every row is flagged
+/// because the run failed).
+pub type Computed = (Vec<Row>, Option<(usize, usize)>);
+
+/// The rows of the `chosen` fields (slots of [`FIELDS`]) of scene `scene`
+/// built into `b`, integrated with `integrator`'s tolerances, span and
+/// step budget (always Dormand–Prince 5(4)), and the sensitivity run's
+/// work. The chosen fields that move something are seeded; the others
+/// are constants (their columns stay zero and add nothing to the error
+/// estimate, whose tolerances are scaled by `√(N (1 + P)/M)` for `P`
+/// seeded fields of the `M` components, as in `insert_compliant`).
+///
+/// # Errors
+/// [`RunError::Sensitivity`] when the integrator refuses its input.
+pub fn compute(
+    scene: &RccScene,
+    b: &Built,
+    integrator: &IntegratorSpec,
+    chosen: &[usize],
+) -> Result<Computed, RunError> {
+    let unused = unused(scene, b);
+    let seeded: [bool; N_DESIGN] = std::array::from_fn(|k| chosen.contains(&k) && !unused[k]);
+    let (d, y0q) = design(scene, b, &seeded);
+    let dy0 = SMatrix::<f64, N_STATE, N_DESIGN>::from_fn(|i, k| y0q[i].d[k]);
+    let pass = plain(b, integrator)?;
+    let (sys, y0, scan) = (&pass.sys, pass.y0, &pass.scan);
+    let (t0, t_end, seat) = (integrator.t0, integrator.t_end, b.criteria.seat_depth);
+    let values = values(scene);
+    let p = seeded.iter().filter(|s| **s).count();
+    #[allow(clippy::cast_precision_loss)] // component counts are small
+    let shrink = ((N_STATE * (1 + p)) as f64 / trajectory::M as f64).sqrt();
+    let run_options = Options {
+        rtol: pass.options.rtol * shrink,
+        atol: pass.options.atol * shrink,
+        ..pass.options.clone()
+    };
+    let dir = Directions {
+        system: sys,
+        design: d,
+        values,
+    };
+    let result = trajectory::derivatives(&dir, (t0, y0, dy0), pass.end, seat, &run_options, scan);
+    let der = match result {
+        Ok(der) => der,
+        Err(e) => return Ok((metrics::failed(chosen, &e.flag()?), None)),
+    };
+    let inputs = metrics::Inputs {
+        sys,
+        design: &d,
+        values: &values,
+        scan,
+        d: &der,
+        ends: (t_end, seat),
+    };
+    let rows = metrics::rows(&inputs, chosen, &unused);
+    Ok((rows, Some(der.work)))
+}
+
+/// The plain pass of a scene: the system, its start, the options of the
+/// sensitivity run (before their scaling) and the pass, with the end of
+/// the sensitivity run (`t_end`, or where the pass stopped unseated).
+struct Plain {
+    sys: Insertion,
+    y0: nalgebra::SVector<f64, N_STATE>,
+    options: Options,
+    scan: trajectory::Scan,
+    end: f64,
+}
+
+/// [`Plain`] of `b` with `integrator`'s tolerances, span and step budget.
+fn plain(b: &Built, integrator: &IntegratorSpec) -> Result<Plain, RunError> {
+    let sys = Insertion::new(b.params, Some(b.held), 0.0);
+    let y0 = b.start_state(&sys);
+    let options = Options {
+        max_steps: integrator.max_steps,
+        h0: integrator.h,
+        ..Options::with_tolerances(integrator.rtol, integrator.atol)
+    };
+    let t_end = integrator.t_end;
+    let scan = trajectory::scan(&sys, (integrator.t0, y0), t_end, b.criteria, &options)?;
+    let end = if scan.seated {
+        t_end
+    } else {
+        scan.times.last().copied().unwrap_or(t_end)
+    };
+    Ok(Plain {
+        sys,
+        y0,
+        options,
+        scan,
+        end,
+    })
+}
+
+/// The metrics' values of scene `scene` built into `b` by plain runs (no
+/// sensitivities) with the events of the sensitivity run: each metric of
+/// [`metrics::METRICS`] the run has, with its value (the reference of the
+/// derivatives' differences); `None` when the run stops short.
+///
+/// # Errors
+/// [`RunError::Sensitivity`] when the integrator refuses its input.
+pub fn metric_values(
+    scene: &RccScene,
+    b: &Built,
+    integrator: &IntegratorSpec,
+) -> Result<Option<Vec<(&'static str, f64)>>, RunError> {
+    let (d, _) = design(scene, b, &[false; N_DESIGN]);
+    let Plain {
+        sys,
+        y0,
+        options,
+        scan,
+        end,
+    } = plain(b, integrator)?;
+    let dir = Directions {
+        system: &sys,
+        design: d,
+        values: values(scene),
+    };
+    let seat = b.criteria.seat_depth;
+    match trajectory::values(&dir, (integrator.t0, y0), end, seat, &options, &scan) {
+        Ok(v) => Ok(Some(
+            v.into_iter()
+                .map(|(k, v)| (metrics::METRICS[k], v))
+                .collect(),
+        )),
+        Err(StopOrError::Error(e)) => Err(e.into()),
+        Err(StopOrError::Stopped(_)) => Ok(None),
+    }
+}

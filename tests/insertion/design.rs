@@ -1,0 +1,176 @@
+//! The insertion's derivatives in design parameters (the scene fields of
+//! `[sensitivities]`): `∂f/∂q` of the right-hand side, in dual numbers
+//! through the contact law, the pair functions at their stationary angle,
+//! the wrist and the robot frame, against Richardson-extrapolated central
+//! differences of the `f64` right-hand side of the scene rebuilt with the
+//! field moved, at states of the shipped `insert_rcc` run with the rim on
+//! the mouth, the rim on the wall and two-point contact; the start state's
+//! derivative against differences of the rebuilt start; `∂f/∂y` at the
+//! same states against differences.
+
+use crate::common::rcc;
+use nalgebra::{SMatrix, SVector};
+use pegdyn::compliant_peg_3d::Pair;
+use pegdyn::compliant_peg_3d::design::{N_DESIGN, slots};
+use pegdyn::compliant_peg_3d::insertion::{Insertion, N_STATE};
+use pegdyn::compliant_peg_3d::outcome::counts;
+use pegdyn::scene::shared::compliant_peg_3d::design::{FIELDS, design, slot, values};
+use pegdyn::scene::shared::compliant_peg_3d::insertion::RccScene;
+use pegdyn::system::OdeSystem;
+
+/// The shipped scene (DOPRI5, as written).
+fn shipped() -> String {
+    include_str!("../../scenes/insert_rcc.toml").to_string()
+}
+
+/// The system of `scene` with field `k` set to `v`.
+fn system_with(scene: &RccScene, k: usize, v: f64) -> (Insertion, SVector<f64, N_STATE>) {
+    let mut s = scene.clone();
+    *slot(&mut s, k) = v;
+    let b = s.build().expect("the moved scene is valid");
+    let sys = Insertion::new(b.params, Some(b.held), 0.0);
+    let y0 = b.start_state(&sys);
+    (sys, y0)
+}
+
+/// Richardson-extrapolated central difference `(4 D(h/2) − D(h))/3` of
+/// `f` at `q` with the step `h`.
+fn difference<const R: usize>(
+    q: f64,
+    h: f64,
+    f: impl Fn(f64) -> SVector<f64, R>,
+) -> SVector<f64, R> {
+    let central = |h: f64| (f(q + h) - f(q - h)) / (2.0 * h);
+    (4.0 * central(0.5 * h) - central(h)) / 3.0
+}
+
+/// The largest mismatch of two columns, relative to the largest entry of
+/// the difference or to `floor`, whichever is larger.
+fn mismatch<const R: usize>(exact: &SVector<f64, R>, fd: &SVector<f64, R>, floor: f64) -> f64 {
+    (exact - fd).amax() / fd.amax().max(floor).max(1e-300)
+}
+
+/// The rounding floor of a difference quotient of `f` with step `h`
+/// (relative error 10⁻¹³ of `f`'s largest entry, over `h`).
+fn noise<const R: usize>(f: &SVector<f64, R>, h: f64) -> f64 {
+    1e-13 * f.amax() / h
+}
+
+/// The step of [`difference`] along field `k` at `q`: `10⁻⁵ |q|` for the
+/// fields that move the contacts' geometry (the clearance and the fillets:
+/// a penetration of a micrometre moves by `10⁻⁸` m of its size), `10⁻¹ |q|`
+/// for the friction and the contact damping (the right-hand side is linear
+/// in them, and their columns are small beside the rounding of the
+/// elastic forces), `10⁻³ |q|` for the others; `10⁻⁸` at `q = 0` (the
+/// compliance centre at the tip, m).
+fn step(k: usize, q: f64) -> f64 {
+    let relative = match k {
+        4..=6 => 1e-5,
+        7 | 8 => 1e-1,
+        _ => 1e-3,
+    };
+    if q == 0.0 { 1e-8 } else { relative * q.abs() }
+}
+
+/// States of the shipped run with the contacts `pairs` (exactly those
+/// pairs, one point each), from the middle of each stretch.
+fn states(
+    sys: &Insertion,
+    t: &[f64],
+    x: &[SVector<f64, N_STATE>],
+    pairs: &[Pair],
+) -> Vec<(f64, SVector<f64, N_STATE>)> {
+    let want: Vec<usize> = Pair::ALL
+        .iter()
+        .map(|p| usize::from(pairs.contains(p)))
+        .collect();
+    let hits: Vec<usize> = (0..x.len())
+        .filter(|&i| counts(&sys.contacts(&x[i])) == want)
+        .collect();
+    assert!(
+        !hits.is_empty(),
+        "the shipped run has no state with {pairs:?}"
+    );
+    let mid = hits[hits.len() / 2];
+    vec![(t[mid], x[mid])]
+}
+
+#[test]
+fn the_parameter_jacobian_matches_differences_of_the_right_hand_side() {
+    let (scene, built, run) = rcc::run(&shipped());
+    let sys = &run.system;
+    let sol = &run.solution;
+    let (d, _) = design(&scene, &built, &[true; N_DESIGN]);
+    let q = values(&scene);
+    let mut poses = Vec::new();
+    for (name, pairs) in [
+        ("rim on the mouth", &[Pair::RimEdge][..]),
+        ("rim on the wall", &[Pair::RimWall][..]),
+        ("two-point contact", &[Pair::EdgeSide, Pair::RimWall][..]),
+    ] {
+        for s in states(sys, &sol.t, &sol.x, pairs) {
+            poses.push((name, s));
+        }
+    }
+    let mut worst = 0.0_f64;
+    for (name, (t, y)) in &poses {
+        let exact: SMatrix<f64, N_STATE, N_DESIGN> = sys
+            .parameter_rate(*t, y, &d)
+            .expect("the state's contacts set up");
+        for k in 0..N_DESIGN {
+            let fd = difference(q[k], step(k, q[k]), |v| {
+                let (s, _) = system_with(&scene, k, v);
+                s.rate(*t, y).expect("the moved system sets up")
+            });
+            let floor = noise(&sys.rhs(*t, y), step(k, q[k]));
+            let e = mismatch(&exact.column(k).into_owned(), &fd, floor);
+            worst = worst.max(e);
+            eprintln!("{name}, {}: {e:.2e}", FIELDS[k]);
+            assert!(
+                e < 1e-6,
+                "{name}, d f/d {}: relative mismatch {e:.2e}\nexact {:?}\ndifference {:?}",
+                FIELDS[k],
+                exact.column(k).as_slice(),
+                fd.as_slice()
+            );
+        }
+        // ∂f/∂y at the same state.
+        let j = sys.jacobian(*t, y);
+        for i in 0..13 {
+            let h = 1e-7 * y[i].abs().max(1e-3);
+            let (mut up, mut down) = (*y, *y);
+            up[i] += h;
+            down[i] -= h;
+            let fd = (sys.rhs(*t, &up) - sys.rhs(*t, &down)) / (2.0 * h);
+            let e = mismatch(&j.column(i).into_owned(), &fd, noise(&sys.rhs(*t, y), h));
+            assert!(e < 1e-4, "{name}, d f/d y{i}: relative mismatch {e:.2e}");
+        }
+    }
+    eprintln!("worst relative mismatch of d f/d q: {worst:.2e}");
+}
+
+#[test]
+fn the_start_states_derivative_matches_differences_of_the_rebuilt_start() {
+    let text = shipped();
+    let (scene, built, _) = rcc::run(&text.replace("t_end = 1.2 ", "t_end = 1e-3 "));
+    let (_, y0) = design(&scene, &built, &[true; N_DESIGN]);
+    let q = values(&scene);
+    for k in 0..N_DESIGN {
+        let exact = SVector::<f64, N_STATE>::from_fn(|i, _| slots(&y0[i])[k]);
+        let fd = difference(q[k], step(k, q[k]), |v| system_with(&scene, k, v).1);
+        let e = (exact - fd).amax();
+        assert!(
+            e <= 1e-7 * fd.amax() + 1e-8,
+            "d y0/d {}: exact {:?}, difference {:?}",
+            FIELDS[k],
+            exact.as_slice(),
+            fd.as_slice()
+        );
+    }
+    // The values are the start's.
+    let sys = Insertion::new(built.params, Some(built.held), 0.0);
+    let start = built.start_state(&sys);
+    for i in 0..N_STATE {
+        assert!((y0[i].v - start[i]).abs() <= 1e-15 * (1.0 + start[i].abs()));
+    }
+}
