@@ -7,6 +7,7 @@ mod common;
 mod design_margins;
 mod industreal;
 mod jacobian;
+mod modules;
 mod outcomes;
 mod quasi_static;
 mod start_poses;
