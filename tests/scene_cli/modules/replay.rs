@@ -281,7 +281,7 @@ fn the_replay_uses_the_models_not_the_scenes_or_the_output_writers() {
         let text = std::fs::read_to_string(&f).unwrap();
         for line in text.lines().map(|l| l.split("//").next().unwrap_or("")) {
             for upper in ["scene", "output", "cli"] {
-                for root in ["pegdyn::", "pegdyn::", "pegdyn::replay::pegdyn::replay::"] {
+                for root in ["crate::", "pegdyn::", "super::super::"] {
                     let path = format!("{root}{upper}");
                     let hit = line.match_indices(&path).any(|(i, _)| {
                         !line[i + path.len()..]
