@@ -16,7 +16,7 @@
 /// The implicit integrators' linear algebra: the dense LU with partial
 /// pivoting and the reduced solves of the Newton matrix `cI − J`.
 pub mod integrate {
-    pub use crate::integrate::iteration::{IterationLu, Reduced, second_order_split};
+    pub use crate::integrate::iteration::{IterationLu, second_order_split};
     pub use crate::integrate::kinematic::{Kinematic, Refused};
     pub use crate::integrate::lu::Lu;
 }
@@ -24,7 +24,7 @@ pub mod integrate {
 /// The plots' axes and legend placement.
 #[cfg(feature = "scenes")]
 pub mod output {
-    pub use crate::output::axes::{bounds, drawable, drawable_range, tick};
+    pub use crate::output::axes::{bounds, tick};
     pub use crate::output::legend::{
         Mapping, Place, Plan, covers, crosses, legend_size, place, plan,
     };
@@ -36,8 +36,8 @@ pub mod output {
 pub mod scene {
     pub use crate::scene::progress::{SLOW_AFTER, SLOW_STEPS, eta, slow_notice};
     pub use crate::scene::simulate::{
-        describe_stop, describe_stop_at, event_records, integrate, integrate_streaming,
-        integration_summary, solver_config, with_final_sample,
+        describe_stop, describe_stop_at, event_records, integrate, integration_summary,
+        solver_config,
     };
     pub use crate::scene::summary::format_metric;
     pub use crate::scene::translate::{
@@ -45,14 +45,10 @@ pub mod scene {
     };
 }
 
-/// The `insert_compliant` scene kind's start pose, model errors and Hertz
-/// tangent.
+/// The `insert_compliant` scene kind's start pose and model errors.
 #[cfg(feature = "scenes")]
 pub mod insert_compliant {
     pub use crate::scene::kinds::insert_compliant::model_errors::to_scene_error;
-    pub use crate::scene::kinds::insert_compliant::sensitivities::hertz_tangent::{
-        HertzTangent, contact_tangent,
-    };
     pub use crate::scene::kinds::insert_compliant::start::{overlap, time_scales};
 }
 

@@ -5,7 +5,7 @@
 use crate::output::plot::{Panel, Scale};
 
 /// Whether point coordinate `v` can be drawn on an axis of scale `s`.
-pub fn drawable(v: f64, s: Scale) -> bool {
+pub(crate) fn drawable(v: f64, s: Scale) -> bool {
     v.is_finite() && (s == Scale::Linear || v > 0.0)
 }
 
@@ -45,7 +45,7 @@ pub fn bounds(panel: &Panel, s: Scale, pick: impl Fn(&(f64, f64)) -> f64) -> Opt
 /// that its ends are within `±AXIS_LIMIT` (log: `[1/LOG_AXIS_LIMIT,
 /// LOG_AXIS_LIMIT]`) and its width is at least `MIN_RELATIVE_WIDTH` of its
 /// largest magnitude (log: a ratio of at least 4).
-pub fn drawable_range(lo: f64, hi: f64, s: Scale) -> (f64, f64) {
+pub(crate) fn drawable_range(lo: f64, hi: f64, s: Scale) -> (f64, f64) {
     match s {
         Scale::Linear => {
             let (lo, hi) = (

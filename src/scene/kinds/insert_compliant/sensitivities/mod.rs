@@ -14,7 +14,7 @@
 //! files in [`output`]. See `docs/sensitivities.md`, "In scenes".
 
 pub mod fields;
-pub(crate) mod hertz_tangent;
+mod hertz_tangent;
 pub mod metrics;
 pub mod output;
 mod trajectory;
