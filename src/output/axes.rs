@@ -26,7 +26,7 @@ const MIN_RELATIVE_WIDTH: f64 = 1e-9;
 
 /// Axis range over the drawable points of the panel, padded by 5 % on a
 /// linear axis and to whole decades' fractions on a log axis, then made
-/// safe to draw ([`drawable_range`]).
+/// safe to draw (`drawable_range`).
 pub fn bounds(panel: &Panel, s: Scale, pick: impl Fn(&(f64, f64)) -> f64) -> Option<(f64, f64)> {
     let (xs, ys) = (panel.x_scale, panel.y_scale);
     let vals = panel

@@ -165,7 +165,7 @@ pub fn crosses(a: (f64, f64), b: (f64, f64), r: (f64, f64, f64, f64)) -> bool {
 }
 
 /// Whether any drawn point or line of `panel` passes through box `r`
-/// (grown by [`CLEARANCE`]).
+/// (grown by `CLEARANCE`).
 pub fn covers(panel: &Panel, m: &Mapping, r: (f64, f64, f64, f64)) -> bool {
     let r = (
         r.0 - CLEARANCE,
@@ -200,7 +200,7 @@ pub fn covers(panel: &Panel, m: &Mapping, r: (f64, f64, f64, f64)) -> bool {
 }
 
 /// Where the legend of `panel` goes in a plotting area of `area` pixels
-/// whose axes span `x` and `y`: the first place of [`PLACES`] free of
+/// whose axes span `x` and `y`: the first place of `PLACES` free of
 /// data, else the upper right with the vertical axis extended so that the
 /// data stay below the legend. Panels without a legend keep their axes.
 pub fn plan(panel: &Panel, area: (f64, f64), x: (f64, f64), y: (f64, f64)) -> Plan {
