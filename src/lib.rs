@@ -13,6 +13,8 @@ pub mod error;
 pub mod generated;
 pub mod hertz;
 pub mod integrate;
+#[doc(hidden)]
+pub mod internals;
 pub mod jamming;
 #[cfg(feature = "scenes")]
 pub mod output;

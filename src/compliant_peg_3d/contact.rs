@@ -234,15 +234,3 @@ impl Saddle {
         }
     }
 }
-
-#[cfg(test)]
-mod tests {
-    use super::Pair;
-
-    #[test]
-    fn a_pairs_index_is_its_place_in_all() {
-        for (k, p) in Pair::ALL.iter().enumerate() {
-            assert_eq!(p.index(), k);
-        }
-    }
-}

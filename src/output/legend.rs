@@ -20,14 +20,22 @@ const CLEARANCE: f64 = 5.0;
 /// A place of the legend in the plotting area (plotters'
 /// [`SeriesLabelPosition`] without its coordinates variant).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Place {
+pub enum Place {
+    /// The upper left corner.
     UpperLeft,
+    /// The middle of the upper edge.
     UpperMiddle,
+    /// The upper right corner.
     UpperRight,
+    /// The middle of the left edge.
     MiddleLeft,
+    /// The middle of the right edge.
     MiddleRight,
+    /// The lower left corner.
     LowerLeft,
+    /// The middle of the lower edge.
     LowerMiddle,
+    /// The lower right corner.
     LowerRight,
 }
 
@@ -49,7 +57,7 @@ impl Place {
 
 /// Where a panel's legend is drawn and the vertical axis it needs.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub(crate) struct Plan {
+pub struct Plan {
     /// The legend's place in the plotting area.
     pub position: Place,
     /// The vertical axis range (the data's, or extended upwards).
@@ -71,10 +79,13 @@ const PLACES: [Place; 8] = [
 ];
 
 /// A point of a panel in pixels of its plotting area, `(0, 0)` top left.
-struct Mapping {
-    size: (f64, f64),
-    x: (f64, f64, Scale),
-    y: (f64, f64, Scale),
+pub struct Mapping {
+    /// The plotting area in pixels, width and height.
+    pub size: (f64, f64),
+    /// The horizontal axis: its range and scale.
+    pub x: (f64, f64, Scale),
+    /// The vertical axis: its range and scale.
+    pub y: (f64, f64, Scale),
 }
 
 impl Mapping {
@@ -96,7 +107,7 @@ impl Mapping {
 
 /// The legend box's size in pixels for the labels `names`, as plotters
 /// computes it.
-pub(crate) fn legend_size(names: &[&str]) -> (f64, f64) {
+pub fn legend_size(names: &[&str]) -> (f64, f64) {
     let font: TextStyle = ("sans-serif", 12).into_font().into();
     let mut text = MultiLineText::<_, &str>::new((0, 0), &font);
     for n in names {
@@ -108,7 +119,7 @@ pub(crate) fn legend_size(names: &[&str]) -> (f64, f64) {
 
 /// The box of place `p` for a legend of `size` in an area of `area`
 /// pixels: `(x0, y0, x1, y1)`, as plotters lays it out.
-fn place(p: Place, size: (f64, f64), area: (f64, f64)) -> (f64, f64, f64, f64) {
+pub fn place(p: Place, size: (f64, f64), area: (f64, f64)) -> (f64, f64, f64, f64) {
     use Place::*;
     let (w, h) = size;
     let x = match p {
@@ -125,7 +136,7 @@ fn place(p: Place, size: (f64, f64), area: (f64, f64)) -> (f64, f64, f64, f64) {
 }
 
 /// Whether segment `a`–`b` meets the box `r` (Liang–Barsky clipping).
-fn crosses(a: (f64, f64), b: (f64, f64), r: (f64, f64, f64, f64)) -> bool {
+pub fn crosses(a: (f64, f64), b: (f64, f64), r: (f64, f64, f64, f64)) -> bool {
     let (dx, dy) = (b.0 - a.0, b.1 - a.1);
     let (mut t0, mut t1) = (0.0_f64, 1.0_f64);
     for (p, q) in [
@@ -154,8 +165,8 @@ fn crosses(a: (f64, f64), b: (f64, f64), r: (f64, f64, f64, f64)) -> bool {
 }
 
 /// Whether any drawn point or line of `panel` passes through box `r`
-/// (grown by [`CLEARANCE`]).
-fn covers(panel: &Panel, m: &Mapping, r: (f64, f64, f64, f64)) -> bool {
+/// (grown by `CLEARANCE`).
+pub fn covers(panel: &Panel, m: &Mapping, r: (f64, f64, f64, f64)) -> bool {
     let r = (
         r.0 - CLEARANCE,
         r.1 - CLEARANCE,
@@ -189,10 +200,10 @@ fn covers(panel: &Panel, m: &Mapping, r: (f64, f64, f64, f64)) -> bool {
 }
 
 /// Where the legend of `panel` goes in a plotting area of `area` pixels
-/// whose axes span `x` and `y`: the first place of [`PLACES`] free of
+/// whose axes span `x` and `y`: the first place of `PLACES` free of
 /// data, else the upper right with the vertical axis extended so that the
 /// data stay below the legend. Panels without a legend keep their axes.
-pub(crate) fn plan(panel: &Panel, area: (f64, f64), x: (f64, f64), y: (f64, f64)) -> Plan {
+pub fn plan(panel: &Panel, area: (f64, f64), x: (f64, f64), y: (f64, f64)) -> Plan {
     // The series plotters labels: named, with a drawable point.
     let drawable = |v: f64, s: Scale| v.is_finite() && (s == Scale::Linear || v > 0.0);
     let names: Vec<&str> = panel
@@ -239,74 +250,5 @@ pub(crate) fn plan(panel: &Panel, area: (f64, f64), x: (f64, f64), y: (f64, f64)
     Plan {
         position: Place::UpperRight,
         y: (y.0, top),
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::output::plot::Series;
-
-    const AREA: (f64, f64) = (700.0, 280.0);
-
-    fn dots(points: &[(f64, f64)]) -> Panel {
-        Panel::new("t", "x", "y")
-            .with(Series::line("a long legend entry", points.to_vec()).styled(Style::Markers))
-    }
-
-    #[test]
-    fn a_free_upper_right_is_kept() {
-        let p = dots(&[(0.0, 0.0), (1.0, 0.1)]);
-        let plan = plan(&p, AREA, (0.0, 1.0), (0.0, 1.0));
-        assert_eq!(plan.position, Place::UpperRight);
-        assert_eq!(plan.y, (0.0, 1.0));
-    }
-
-    #[test]
-    fn a_point_under_the_upper_right_moves_the_legend_to_a_free_corner() {
-        let p = dots(&[(0.98, 0.97), (0.0, 0.0), (1.0, 0.0)]);
-        let plan = plan(&p, AREA, (0.0, 1.0), (0.0, 1.0));
-        assert_eq!(plan.position, Place::UpperLeft);
-        // The chosen box holds no point.
-        let m = Mapping {
-            size: AREA,
-            x: (0.0, 1.0, Scale::Linear),
-            y: (0.0, 1.0, Scale::Linear),
-        };
-        let size = legend_size(&["a long legend entry"]);
-        assert!(!covers(&p, &m, place(plan.position, size, AREA)));
-        assert!(covers(&p, &m, place(Place::UpperRight, size, AREA)));
-    }
-
-    #[test]
-    fn a_line_through_every_place_gets_a_band_above_the_data() {
-        // A dense grid of markers fills every place.
-        let grid: Vec<(f64, f64)> = (0..=20)
-            .flat_map(|i| (0..=20).map(move |j| (i as f64 / 20.0, j as f64 / 20.0)))
-            .collect();
-        let p = dots(&grid);
-        let plan = plan(&p, AREA, (0.0, 1.0), (0.0, 1.0));
-        assert_eq!(plan.position, Place::UpperRight);
-        assert!(plan.y.1 > 1.0 && plan.y.0 == 0.0, "{:?}", plan.y);
-        let m = Mapping {
-            size: AREA,
-            x: (0.0, 1.0, Scale::Linear),
-            y: (plan.y.0, plan.y.1, Scale::Linear),
-        };
-        let size = legend_size(&["a long legend entry"]);
-        assert!(!covers(&p, &m, place(plan.position, size, AREA)));
-        // A diagonal line crosses the upper right and the lower left corners.
-        let p = Panel::new("t", "x", "y").with(Series::line("line", vec![(0.0, 0.0), (1.0, 1.0)]));
-        let plan = super::plan(&p, AREA, (0.0, 1.0), (0.0, 1.0));
-        assert_eq!(plan.position, Place::UpperLeft);
-    }
-
-    #[test]
-    fn segments_and_boxes() {
-        let r = (10.0, 10.0, 20.0, 20.0);
-        assert!(crosses((0.0, 15.0), (30.0, 15.0), r));
-        assert!(!crosses((0.0, 0.0), (30.0, 5.0), r));
-        assert!(crosses((15.0, 15.0), (15.0, 15.0), r));
-        assert!(!crosses((25.0, 15.0), (25.0, 15.0), r));
     }
 }

@@ -7,10 +7,10 @@
 //! [`record`].
 
 pub mod atomic;
-mod axes;
+pub(crate) mod axes;
 pub mod csv;
 pub mod decimate;
-mod legend;
+pub(crate) mod legend;
 pub mod manifest;
 pub mod memory;
 pub mod names;

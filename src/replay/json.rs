@@ -27,7 +27,8 @@ use std::fmt::Write;
 
 /// How a number is written.
 #[derive(Clone, Copy)]
-enum Digits {
+#[doc(hidden)]
+pub enum Digits {
     /// A fixed number of decimals (an absolute resolution).
     Fixed(usize),
     /// A number of significant digits (a relative resolution).
@@ -35,19 +36,25 @@ enum Digits {
 }
 
 /// Decimals of lengths (m): a nanometre.
-const LENGTH: Digits = Digits::Fixed(9);
+#[doc(hidden)]
+pub const LENGTH: Digits = Digits::Fixed(9);
 /// Decimals of quaternion components: 1e-9 rad.
-const ROTATION: Digits = Digits::Fixed(9);
+#[doc(hidden)]
+pub const ROTATION: Digits = Digits::Fixed(9);
 /// Decimals of unit directions.
-const DIRECTION: Digits = Digits::Fixed(4);
+#[doc(hidden)]
+pub const DIRECTION: Digits = Digits::Fixed(4);
 /// Significant digits of forces and plotted values.
-const VALUE: Digits = Digits::Significant(5);
+#[doc(hidden)]
+pub const VALUE: Digits = Digits::Significant(5);
 /// Significant digits of times: events a few ulps apart stay in order.
-const TIME: Digits = Digits::Significant(12);
+#[doc(hidden)]
+pub const TIME: Digits = Digits::Significant(12);
 
 /// `x` written with `digits`, trailing zeros dropped (`0` for a negative
 /// zero).
-fn number(x: f64, digits: Digits) -> String {
+#[doc(hidden)]
+pub fn number(x: f64, digits: Digits) -> String {
     let s = match digits {
         Digits::Fixed(d) => {
             let s = format!("{x:.d$}");
@@ -84,7 +91,8 @@ fn number(x: f64, digits: Digits) -> String {
 }
 
 /// A JSON string literal of `s`, with `<` escaped.
-fn string(s: &str) -> String {
+#[doc(hidden)]
+pub fn string(s: &str) -> String {
     let mut out = String::with_capacity(s.len() + 2);
     out.push('"');
     for c in s.chars() {
@@ -336,34 +344,4 @@ fn series(out: &mut String, r: &Replay) -> Result<(), ReplayError> {
     }
     out.push(']');
     Ok(())
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn numbers_are_short_and_exact_to_their_resolution() {
-        assert_eq!(number(0.012_500_123_4, LENGTH), "0.012500123");
-        assert_eq!(number(-0.0000000001, LENGTH), "0");
-        assert_eq!(number(1.0, ROTATION), "1");
-        assert_eq!(number(1234.5678, VALUE), "1234.6");
-        assert_eq!(number(-0.000_012_3, VALUE), "-1.23e-5");
-        assert_eq!(number(0.0, VALUE), "0");
-        assert_eq!(number(0.201_584_271_115_138_8, TIME), "0.201584271115");
-        assert_eq!(number(2.5e-7, TIME), "2.5e-7");
-        assert_eq!(number(123_456.0, VALUE), "1.2346e5");
-        for x in [3.0e-7, -2.5, 1e10, 0.1] {
-            let back: f64 = number(x, VALUE).parse().unwrap();
-            assert!((back - x).abs() <= 1e-5 * x.abs(), "{x}");
-        }
-    }
-
-    #[test]
-    fn strings_cannot_close_the_script_element() {
-        assert_eq!(
-            string("a</script>\"\\\n"),
-            "\"a\\u003c/script>\\\"\\\\\\u000a\""
-        );
-    }
 }

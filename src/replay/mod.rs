@@ -45,6 +45,3 @@ pub fn html(replay: &Replay) -> Result<String, ReplayError> {
     let data = json::replay(replay)?;
     Ok(page::document(&replay.title, &data))
 }
-
-#[cfg(test)]
-mod tests;

@@ -42,14 +42,14 @@ pub mod kinds;
 pub mod limits;
 pub mod loader;
 mod numbers;
-mod progress;
+pub(crate) mod progress;
 pub mod ranges;
 pub mod reserve;
 pub mod shared;
 pub(crate) mod simulate;
-mod summary;
+pub(crate) mod summary;
 pub mod timescales;
-mod translate;
+pub(crate) mod translate;
 pub mod validate;
 
 pub use context::RunContext;

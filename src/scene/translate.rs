@@ -12,10 +12,7 @@ use crate::error::SceneError;
 /// The path comes from the error's key trail, which `toml` prints as a
 /// trailing ``in `a.b` `` line when the error carries no input text (ours
 /// never does: the deserializer is built from a tree).
-pub(crate) fn translate(
-    e: toml::de::Error,
-    found_at: impl Fn(&str) -> Option<String>,
-) -> SceneError {
+pub fn translate(e: toml::de::Error, found_at: impl Fn(&str) -> Option<String>) -> SceneError {
     let message = e.message().to_string();
     let shown = e.to_string();
     let trail = shown
@@ -85,7 +82,7 @@ pub(crate) fn translate(
 
 /// A type as serde names it (`u64`, `f64`, `map`, `struct Peg`), in the
 /// words of a TOML file.
-fn plain_type(t: &str) -> String {
+pub fn plain_type(t: &str) -> String {
     match t.trim() {
         "u8" | "u16" | "u32" | "u64" | "u128" | "usize" => "a non-negative integer".into(),
         "i8" | "i16" | "i32" | "i64" | "i128" | "isize" => "an integer".into(),
@@ -102,7 +99,7 @@ fn plain_type(t: &str) -> String {
 
 /// A value as serde's `invalid value` describes it (``integer `-3` ``,
 /// ``floating point `1.5` ``, ``integer `…` as i128``), as written.
-fn plain_value(v: &str) -> String {
+pub fn plain_value(v: &str) -> String {
     let v = v.trim();
     let inner = v
         .split_once('`')
@@ -116,7 +113,7 @@ fn plain_value(v: &str) -> String {
 
 /// What serde's `invalid type` found, in TOML's words, when the value
 /// itself cannot be looked up.
-fn plain_found(f: &str) -> String {
+pub fn plain_found(f: &str) -> String {
     let f = f.trim();
     let (kind, rest) = f.split_once(' ').unwrap_or((f, ""));
     let written = plain_value(rest);
@@ -139,7 +136,7 @@ fn plain_found(f: &str) -> String {
 }
 
 /// `text` with serde's Rust type words replaced by TOML's.
-fn plain_text(text: &str) -> String {
+pub fn plain_text(text: &str) -> String {
     let mut out = text.replace(" as i128", "").replace(" as u128", "");
     for (rust, toml) in [
         ("usize", "non-negative integer"),
@@ -153,30 +150,4 @@ fn plain_text(text: &str) -> String {
         out = out.replace(rust, toml);
     }
     out
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn rust_types_read_as_toml_words() {
-        assert_eq!(plain_type("u64"), "a non-negative integer");
-        assert_eq!(plain_type("usize"), "a non-negative integer");
-        assert_eq!(plain_type("f64"), "a number");
-        assert_eq!(plain_type("struct PegTable"), "a table");
-        assert_eq!(plain_value("integer `-3`"), "-3");
-        assert_eq!(plain_value("floating point `1.5`"), "1.5");
-        assert_eq!(
-            plain_found("integer `99999999999999999999` as i128"),
-            "an integer 99999999999999999999"
-        );
-        assert_eq!(plain_found("map"), "a table");
-        assert_eq!(plain_found("sequence"), "an array");
-        assert_eq!(plain_found("floating point `1.5`"), "a float 1.5");
-        assert_eq!(
-            plain_text("expected u64 as i128"),
-            "expected non-negative integer"
-        );
-    }
 }

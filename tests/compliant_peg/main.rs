@@ -12,6 +12,7 @@ mod hertz;
 mod hertz_hostile;
 mod insertion;
 mod model;
+mod modules;
 mod runtime;
 mod scene;
 mod scene_sensitivities;

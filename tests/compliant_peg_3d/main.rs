@@ -14,6 +14,7 @@ mod limits_energy;
 mod limits_planar;
 mod limits_rigid;
 mod limits_statics;
+mod modules;
 mod search_property;
 mod seated;
 mod side_wall;

@@ -8,3 +8,4 @@ mod docs_paths;
 mod import_cycles;
 mod import_graph;
 mod layers;
+mod no_unit_tests;

@@ -15,6 +15,7 @@ mod hard_cases_compliant;
 mod hard_cases_rewrites;
 mod hard_cases_rigid;
 mod lagrange_textbook;
+mod modules;
 mod parameter_jacobians;
 mod scalar_dd;
 mod snapshot;

@@ -9,6 +9,7 @@ mod design_margins;
 mod design_sensitivities;
 mod industreal;
 mod jacobian;
+mod modules;
 mod outcomes;
 mod quasi_static;
 mod start_poses;

@@ -9,6 +9,7 @@ mod events;
 mod hostile;
 mod integrators;
 mod kinematic;
+mod modules;
 mod no_alloc;
 mod rosenbrock;
 mod sensitivity_budget;

@@ -7,6 +7,7 @@ mod common;
 mod diagram;
 mod dynamic;
 mod input;
+mod modules;
 mod quasi_static;
 mod scene;
 mod sensitivities;

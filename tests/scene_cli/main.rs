@@ -9,6 +9,7 @@ mod cli;
 mod errors;
 mod fuzz;
 mod hostile_scenes;
+mod modules;
 mod replay;
 mod run_record;
 mod step_causes;

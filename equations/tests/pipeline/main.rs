@@ -8,6 +8,7 @@ mod common;
 mod builder;
 mod codegen;
 mod diff_vs_finite_difference;
+mod display;
 mod interpreter;
 mod lagrange;
 mod lower_preserves_value;

@@ -38,12 +38,12 @@
 
 use serde::Deserialize;
 
-mod model_errors;
+pub(crate) mod model_errors;
 pub mod output;
 pub mod ranges;
 pub mod replay;
 pub mod sensitivities;
-mod start;
+pub(crate) mod start;
 
 use model_errors::{tilt_error, to_scene_error};
 use output::write_outputs;

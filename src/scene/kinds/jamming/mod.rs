@@ -23,7 +23,7 @@
 //! Fig. 6 style). An optional `[sweep]` table adds the dynamic check of one
 //! diagram ([`sweep`]).
 
-mod comparison;
+pub(crate) mod comparison;
 pub(crate) mod figure;
 pub mod ranges;
 pub mod sweep;

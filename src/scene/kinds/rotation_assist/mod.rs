@@ -23,7 +23,7 @@
 //! time of seated runs, else empty) and `<name>.svg`: per rotation pair,
 //! the outcome and the peak contact force over the error grid.
 
-mod figure;
+pub(crate) mod figure;
 pub mod grid;
 
 use serde::Deserialize;
@@ -100,11 +100,16 @@ pub struct SweepScene {
 
 /// One grid point.
 #[derive(Debug, Clone, Copy)]
-struct Point {
-    lateral: f64,
-    angular_deg: f64,
-    precession: f64,
-    spin: f64,
+#[doc(hidden)]
+pub struct Point {
+    /// The robot's lateral error, m.
+    pub lateral: f64,
+    /// The robot's angular error, degrees.
+    pub angular_deg: f64,
+    /// The precession rate `ψ̇`, rad/s.
+    pub precession: f64,
+    /// The spin rate `φ̇`, rad/s.
+    pub spin: f64,
 }
 
 #[derive(Debug)]
@@ -305,16 +310,26 @@ fn grid_point_errors(e: SceneErrors, p: &Point, at: [usize; 4], c: &mut Checker)
 
 /// One run's row.
 #[derive(Debug, Clone)]
-struct Row {
-    point: Point,
-    outcome: String,
-    code: f64,
-    end: f64,
-    seated: bool,
-    peak_contact: f64,
-    peak_pressure: f64,
-    peak_moment: f64,
-    peak_wrist: f64,
+#[doc(hidden)]
+pub struct Row {
+    /// The grid point run.
+    pub point: Point,
+    /// The outcome's name.
+    pub outcome: String,
+    /// The outcome's code (`outcome_code` of the table).
+    pub code: f64,
+    /// The run's end time, s.
+    pub end: f64,
+    /// Whether the peg seated.
+    pub seated: bool,
+    /// The peak contact force, N.
+    pub peak_contact: f64,
+    /// The peak contact pressure, Pa.
+    pub peak_pressure: f64,
+    /// The peak wrist moment, N m.
+    pub peak_moment: f64,
+    /// The peak wrist force, N.
+    pub peak_wrist: f64,
 }
 
 fn one(p: Point, b: &Built, spec: &IntegratorSpec) -> Result<Row, RunError> {
@@ -459,7 +474,8 @@ impl Scene for Ready {
     }
 }
 
-fn rate_pairs(rows: &[Row]) -> Vec<(f64, f64)> {
+#[doc(hidden)]
+pub fn rate_pairs(rows: &[Row]) -> Vec<(f64, f64)> {
     let mut pairs: Vec<(f64, f64)> = Vec::new();
     for r in rows {
         let k = (r.point.precession, r.point.spin);

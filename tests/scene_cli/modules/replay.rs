@@ -2,13 +2,13 @@
 //! contacts drawn where the model puts them, every event kept, enormous
 //! runs bounded, bad runs refused.
 
-use super::peg3d::{Meaning, Run3d};
-use super::*;
-use crate::compliant_peg_3d::Peg3dParams;
-use crate::compliant_peg_3d::insertion::{Insertion, N_STATE};
-use crate::compliant_peg_3d::pose_state;
-use crate::integrate::{EventHit, Solution, Stats, StopReason};
 use nalgebra::{SVector, UnitQuaternion, Vector3};
+use pegdyn::compliant_peg_3d::Peg3dParams;
+use pegdyn::compliant_peg_3d::insertion::{Insertion, N_STATE};
+use pegdyn::compliant_peg_3d::pose_state;
+use pegdyn::integrate::{EventHit, Solution, Stats, StopReason};
+use pegdyn::replay::peg3d::{Meaning, Run3d};
+use pegdyn::replay::*;
 
 /// A 25 mm peg in a bore with a 37.5 µm radial clearance.
 fn params() -> Peg3dParams {
@@ -207,7 +207,7 @@ fn the_page_embeds_its_data_and_renderer_and_fetches_nothing() {
 
 #[test]
 fn the_planar_peg_in_two_point_contact_touches_the_left_edge_and_the_right_wall() {
-    use crate::compliant_peg::{CompliantParams, CompliantSpec, CompliantSystem, Load, PegState};
+    use pegdyn::compliant_peg::{CompliantParams, CompliantSpec, CompliantSystem, Load, PegState};
     let spec = CompliantSpec::steel_cylinder(0.05, 0.002, 0.1, 0.1);
     let params = CompliantParams::try_new(spec).unwrap();
     let load = Load {
