@@ -394,4 +394,3 @@ pub fn load_with<T: Real>(
         robot_power,
     }
 }
-

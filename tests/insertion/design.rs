@@ -56,6 +56,29 @@ fn noise<const R: usize>(f: &SVector<f64, R>, h: f64) -> f64 {
     1e-13 * f.amax() / h
 }
 
+/// The size of the terms that the right-hand side sums at `(t, y)`: the
+/// largest of `f` itself and the accelerations that the contact forces
+/// alone would give (`F/m` and `F L/I`). Near a quasi-static balance `f`
+/// is a small difference of the contact and wrist forces, and its rounding
+/// is set by those forces, not by `f`.
+fn term_scale(sys: &Insertion, t: f64, y: &SVector<f64, N_STATE>) -> f64 {
+    let f = sys.rhs(t, y).amax();
+    let force = sys
+        .sample(t, y)
+        .expect("the state's contacts set up")
+        .total_normal();
+    let p = &sys.peg.params;
+    f.max(force / p.mass + force * p.length / p.inertia_transverse)
+}
+
+/// The column size below which a difference quotient with step `h` cannot
+/// show a relative error of `10⁻⁶`: its rounding, about `10⁻¹⁵` of the
+/// terms' size `scale` over `h`, is then above `10⁻⁶` of the column. A
+/// smaller column is compared in absolute terms, to `10⁻⁶` of this floor.
+fn rounding_floor(scale: f64, h: f64) -> f64 {
+    1e-15 * scale / h / 1e-6
+}
+
 /// The step of [`difference`] along field `k` at `q`: `10⁻⁵ |q|` for the
 /// fields that move the contacts' geometry (the clearance and the fillets:
 /// a penetration of a micrometre moves by `10⁻⁸` m of its size), `10⁻¹ |q|`
@@ -122,7 +145,7 @@ fn the_parameter_jacobian_matches_differences_of_the_right_hand_side() {
                 let (s, _) = system_with(&scene, k, v);
                 s.rate(*t, y).expect("the moved system sets up")
             });
-            let floor = noise(&sys.rhs(*t, y), step(k, q[k]));
+            let floor = rounding_floor(term_scale(sys, *t, y), step(k, q[k]));
             let e = mismatch(&exact.column(k).into_owned(), &fd, floor);
             worst = worst.max(e);
             eprintln!("{name}, {}: {e:.2e}", FIELDS[k]);

@@ -26,6 +26,7 @@
 
 pub mod certified;
 pub mod interval;
+pub mod minimum;
 pub mod order;
 pub mod profile;
 pub mod tori;
@@ -36,7 +37,7 @@ use super::merge;
 use super::params::Peg3dParams;
 use nalgebra::SVector;
 
-pub use certified::{Angles, MAX_MINIMA, Work};
+pub use minimum::{Angles, MAX_MINIMA, Work};
 use profile::Problem;
 
 /// The minimum at `a` (from the profile) as a root of the generated
@@ -133,7 +134,7 @@ impl Search {
             Problem::Nothing => {}
             Problem::Closed(None) => self.work.flat = true,
             Problem::Closed(Some(a)) => {
-                certified::push(&mut out, a);
+                minimum::push(&mut out, a);
             }
             Problem::Search { h, level } => {
                 self.work = certified::minima(&h, level, &mut out);

@@ -30,8 +30,8 @@
 //! bound. An arc this cannot split (no derivative of one sign, a root
 //! that cannot be bracketed) is halved as before.
 
-use super::certified::{Angles, Work, newton, push};
 use super::interval::Iv;
+use super::minimum::{Angles, Work, newton, push};
 use super::profile::Profile;
 use std::f64::consts::TAU;
 
