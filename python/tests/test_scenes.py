@@ -185,6 +185,23 @@ def test_every_event_is_reported_and_a_terminal_one_last():
     assert sum(e.terminal for e in ins.events) == (1 if "event" in stop else 0)
 
 
+def test_the_robot_insertions_events_are_named_by_what_they_are():
+    # Contact transitions are named by their pair and point count, the
+    # seating by its name, and only the seating is terminal: the same
+    # list as the events table.
+    r = pegdyn.load(next(p for p in SCENES if p.stem == "insert_rcc")).run()
+    assert "seated" in r.outcome.stop
+    *transitions, last = r.events
+    assert last.name == "seated" and last.terminal and last.t == r.outcome.t_end
+    table = next(t for k, t in r.tables.items() if k.endswith(".events"))
+    assert len(transitions) == len(table["t_s"]) > 0
+    np.testing.assert_array_equal([e.t for e in transitions], table["t_s"])
+    for e, row in zip(transitions, table["transition"]):
+        # "rim_wall 0 -> 1" in the table is the event "rim_wall 1".
+        pair, before, _, after = row.split(" ")
+        assert not e.terminal and e.name == f"{pair} {max(int(before), int(after))}", (e.name, row)
+
+
 def test_to_pandas_when_installed():
     pd = pytest.importorskip("pandas")
     r = pegdyn.load(next(p for p in SCENES if p.stem == "fig9")).run()

@@ -152,16 +152,24 @@ impl Scene for Ready {
         let run = run_one(&self.built, &self.integrator, true, &mut ctx.progress)?;
         let sys = &run.system;
         let sol = &run.solution;
-        let mut names: Vec<String> = TERMINAL_NAMES.iter().map(|s| s.to_string()).collect();
-        names.extend(
-            run.transitions
-                .iter()
-                .map(|(i, k)| format!("{} {k}", crate::compliant_peg_3d::Pair::ALL[*i].name())),
-        );
-        let name_refs: Vec<&str> = names.iter().map(String::as_str).collect();
-        let mut integ = integration_summary(&self.integrator, sol, &name_refs);
+        let mut integ = integration_summary(&self.integrator, sol, &TERMINAL_NAMES);
         if let StopReason::Event { index, t } = sol.stop {
             integ.stop = describe_stop(&StopReason::Event { index, t }, &TERMINAL_NAMES);
+        }
+        // `run_one` numbers the transition events from 0 and the terminal
+        // ones below 0 (wrapping), in the order of `TERMINAL_NAMES`: each
+        // record is named, and the stop marked, by that numbering.
+        for (record, hit) in integ.events.iter_mut().zip(&sol.events) {
+            let terminal = hit.index.wrapping_add(TERMINAL_NAMES.len());
+            if let Some(name) = TERMINAL_NAMES.get(terminal) {
+                record.name = (*name).to_string();
+                record.terminal = matches!(
+                    sol.stop,
+                    StopReason::Event { index, t } if index == terminal && t == hit.t
+                );
+            } else if let Some((i, k)) = run.transitions.get(hit.index) {
+                record.name = format!("{} {k}", crate::compliant_peg_3d::Pair::ALL[*i].name());
+            }
         }
         let mut out = RunSummary {
             integration: Some(integ),

@@ -1,0 +1,96 @@
+//! What a search returns and how it places one minimum: the angles found
+//! ([`Angles`]), the work done ([`Work`]), the safeguarded Newton iteration
+//! on `h′` inside a bracket where `h′` changes sign ([`newton`]), and the
+//! set insertion that keeps minima apart ([`push`]). Shared by the branch
+//! and bound ([`super::certified`]) and the higher-derivative cut
+//! ([`super::order`]).
+
+use super::profile::Profile;
+use std::f64::consts::TAU;
+
+/// The most minima one search returns (a trigonometric polynomial of
+/// degree two has at most two; the two tori's `h` at most six).
+pub const MAX_MINIMA: usize = 8;
+
+/// The angles (rad) of the minima a search found.
+pub type Angles = arrayvec::ArrayVec<f64, MAX_MINIMA>;
+
+/// What a search did: arcs visited and whether it ran out of budget or
+/// room.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Work {
+    /// Arcs whose enclosures were evaluated.
+    pub arcs: usize,
+    /// Profile evaluations at a point (end-point slopes and Newton).
+    pub points: usize,
+    /// Arcs left unresolved by the budget (0 in a complete search).
+    pub unresolved: usize,
+    /// The profile is constant: no isolated minimum (an aligned peg's rim
+    /// over a plane).
+    pub flat: bool,
+    /// No search: the pair was certified apart at an earlier pose that
+    /// this one is too close to for a contact.
+    pub cached: bool,
+    /// Arcs ended as leaves (too short to halve, or `h′` within its
+    /// rounding of zero): 0 when every arc was decided by its enclosures.
+    pub leaves: usize,
+    /// Arcs decided by the sign of `h‴` or `h⁗` ([`super::order`]).
+    pub ordered: usize,
+}
+
+/// The zero of `h′` in `[lo, hi]`, `h′` increasing there, from the slopes
+/// `s_lo = h′(lo) ≤ 0 ≤ s_hi = h′(hi)`: Newton on `h′` from the end
+/// nearer the zero (by the slopes' sizes), with bisection whenever a step
+/// leaves the bracket or `h″ ≤ 0`. A zero at an end (a pose symmetric
+/// about that angle) is found in one step.
+pub(super) fn newton(
+    prof: &Profile,
+    mut lo: f64,
+    mut hi: f64,
+    s_lo: f64,
+    s_hi: f64,
+    work: &mut Work,
+) -> f64 {
+    if s_lo == 0.0 {
+        return lo;
+    }
+    if s_hi == 0.0 {
+        return hi;
+    }
+    let mut a = if -s_lo < s_hi { lo } else { hi };
+    for _ in 0..100 {
+        let (d1, d2) = prof.slope(a);
+        work.points += 1;
+        if d1 == 0.0 {
+            return a;
+        }
+        if d1 > 0.0 {
+            hi = a;
+        } else {
+            lo = a;
+        }
+        let newton = a - d1 / d2;
+        let next = if d2 > 0.0 && newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
+        if (next - a).abs() <= 2.0 * f64::EPSILON * a.abs().max(1.0) || next <= lo || next >= hi {
+            return next.clamp(lo, hi);
+        }
+        a = next;
+    }
+    a
+}
+
+/// Adds the angle `a` (wrapped into `[0, 2π)`) unless a minimum within
+/// `10⁻⁹` rad is there already; false when `out` is full.
+pub fn push(out: &mut Angles, a: f64) -> bool {
+    let a = a.rem_euclid(TAU);
+    let a = if a >= TAU { 0.0 } else { a };
+    let near = |m: f64| {
+        let d = (m - a).rem_euclid(TAU);
+        d.min(TAU - d) <= 1e-9
+    };
+    out.iter().any(|&m| near(m)) || out.try_push(a).is_ok()
+}
