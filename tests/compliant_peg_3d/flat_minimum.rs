@@ -7,29 +7,10 @@
 //! of the generated gap shows, and a search that has walked to a pose in
 //! tiny steps returns the same contacts there as a fresh one.
 
+use crate::insertion_split::{insertion_peg, split_pose};
 use nalgebra::SVector;
 use pegdyn::compliant_peg_3d::{Contacts, Pair, Peg3dParams, Search};
 use std::f64::consts::TAU;
-
-/// The insertion scene's peg (`scenes/insert_rcc.toml`).
-fn insertion_peg() -> Peg3dParams {
-    let big_d = 0.025;
-    Peg3dParams::steel(big_d * (1.0 - 0.003), 0.05, big_d, 3e-4, 5e-4, 0.03)
-}
-
-/// The pose `(p, q)` (unit quaternion) met by the run, bit for bit.
-fn pose() -> SVector<f64, 7> {
-    let bits: [u64; 7] = [
-        0xbf37b09fa5d0cf49,
-        0x3be679acf269cbbe,
-        0x3f98e23cbe72e960,
-        0x3fefff9de5adef82,
-        0xbc32ca770b5e651f,
-        0xbf83cf23e2fb33f4,
-        0xbbd132d1f73bb452,
-    ];
-    SVector::from(bits.map(f64::from_bits))
-}
 
 /// The rim-on-mouth contacts of a search at `x`.
 fn rim_edge(search: &mut Search, prm: &Peg3dParams, x: &SVector<f64, 7>) -> Vec<(f64, f64)> {
@@ -42,7 +23,7 @@ fn rim_edge(search: &mut Search, prm: &Peg3dParams, x: &SVector<f64, 7>) -> Vec<
 fn the_search_finds_a_penetrating_minimum_in_a_flat_stretch() {
     let prm = insertion_peg();
     let p = prm.vector();
-    let x = pose();
+    let x = split_pose();
     // The least gap over the circle by dense sampling of the generated
     // function: 10⁻⁴ rad over the circle, 10⁻⁸ rad within 10⁻³ rad of 0
     // (where the least values lie).
@@ -76,7 +57,7 @@ fn a_search_walked_in_tiny_steps_returns_the_contacts_of_a_fresh_search() {
     let prm = insertion_peg();
     let mut walked = Search::default();
     for k in 0..200 {
-        let mut x = pose();
+        let mut x = split_pose();
         x[2] -= k as f64 * 1e-12;
         let fresh = rim_edge(&mut Search::default(), &prm, &x);
         let step = rim_edge(&mut walked, &prm, &x);

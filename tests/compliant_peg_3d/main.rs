@@ -9,6 +9,7 @@ mod contact;
 mod curvature_stiffness;
 mod elastic_friction;
 mod flat_minimum;
+mod insertion_split;
 mod jacobian;
 mod limits_energy;
 mod limits_planar;

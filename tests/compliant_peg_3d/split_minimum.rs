@@ -8,29 +8,9 @@
 //! longer halves its way down to the split.
 
 use crate::common::search_reference::{Pose, Tally, compare};
+use crate::insertion_split::{insertion_peg, split_pose};
 use nalgebra::SVector;
-use pegdyn::compliant_peg_3d::{Pair, Peg3dParams, Search};
-
-/// The insertion scene's peg (`scenes/insert_rcc.toml`).
-fn insertion_peg() -> Peg3dParams {
-    let big_d = 0.025;
-    Peg3dParams::steel(big_d * (1.0 - 0.003), 0.05, big_d, 3e-4, 5e-4, 0.03)
-}
-
-/// The pose at the split met by the insertion run (as in
-/// `flat_minimum.rs`), bit for bit.
-fn split_pose() -> SVector<f64, 7> {
-    let bits: [u64; 7] = [
-        0xbf37b09fa5d0cf49,
-        0x3be679acf269cbbe,
-        0x3f98e23cbe72e960,
-        0x3fefff9de5adef82,
-        0xbc32ca770b5e651f,
-        0xbf83cf23e2fb33f4,
-        0xbbd132d1f73bb452,
-    ];
-    SVector::from(bits.map(f64::from_bits))
-}
+use pegdyn::compliant_peg_3d::{Pair, Search};
 
 /// The split pose lowered by `dz` and moved sideways by `dy` (m).
 fn moved(dz: f64, dy: f64) -> SVector<f64, 7> {

@@ -27,7 +27,8 @@ const PHYSICS: &[&str] = &[
 /// Top-level modules the physics layer must not reach.
 const UPPER: &[&str] = &["scene", "output", "cli", "accuracy"];
 
-fn rust_files(path: &Path, out: &mut Vec<PathBuf>) {
+/// Every `.rs` file under `path`, in sorted order.
+pub fn rust_files(path: &Path, out: &mut Vec<PathBuf>) {
     if path.is_dir() {
         let mut entries: Vec<PathBuf> = std::fs::read_dir(path)
             .unwrap_or_else(|e| panic!("read {}: {e}", path.display()))

@@ -4,22 +4,8 @@
 //! `src/` would never run. Tests of one module go to
 //! `tests/<area>/modules/` (pegdyn) or `equations/tests/pipeline/`.
 
-use std::path::{Path, PathBuf};
-
-fn rust_files(path: &Path, out: &mut Vec<PathBuf>) {
-    if path.is_dir() {
-        let mut entries: Vec<PathBuf> = std::fs::read_dir(path)
-            .unwrap_or_else(|e| panic!("read {}: {e}", path.display()))
-            .map(|e| e.expect("directory entry").path())
-            .collect();
-        entries.sort();
-        for entry in entries {
-            rust_files(&entry, out);
-        }
-    } else if path.extension().is_some_and(|e| e == "rs") {
-        out.push(path.to_path_buf());
-    }
-}
+use crate::layers::rust_files;
+use std::path::Path;
 
 /// Every line of `text` that turns code on only for a test build, as
 /// "file:line: text".
