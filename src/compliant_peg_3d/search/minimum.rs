@@ -1,6 +1,6 @@
 //! What a search returns and how it places one minimum: the angles found
 //! ([`Angles`]), the work done ([`Work`]), the safeguarded Newton iteration
-//! on `h′` inside a bracket where `h′` changes sign ([`newton`]), and the
+//! on `h′` inside a bracket where `h′` changes sign (`newton`), and the
 //! set insertion that keeps minima apart ([`push`]). Shared by the branch
 //! and bound ([`super::certified`]) and the higher-derivative cut
 //! ([`super::order`]).
