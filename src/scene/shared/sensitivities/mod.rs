@@ -109,6 +109,31 @@ pub fn rows(
     out
 }
 
+/// The flag of a peak whose next local maximum is within the first-order
+/// change of a 0.1 % ([`PERTURBATION`]) change of a field: the peak may
+/// switch to that maximum, where its derivative does not hold. `value` and
+/// `runner_up` in N, `derivative` and `values` per field; `subject` names
+/// the peak in the message (`" contact force"`, or empty) and `place`
+/// where it is (`"on the tip "`, or empty).
+pub fn peak_switch_flag(
+    subject: String,
+    place: String,
+    (value, runner_up): (f64, f64),
+    derivative: Vec<f64>,
+    values: Vec<f64>,
+) -> Box<dyn Fn(usize) -> Option<String>> {
+    Box::new(move |k| {
+        let shift = PERTURBATION * values[k].abs() * derivative[k].abs();
+        let gap = value - runner_up;
+        (gap < 2.0 * shift || gap <= 1e-9 * value).then(|| {
+            format!(
+                "the peak{subject} switches to another force maximum within a 0.1% change \
+                 (peak {place}{value:.6e} N; next maximum {runner_up:.6e} N)"
+            )
+        })
+    })
+}
+
 /// The rows of a run whose sensitivities failed: every metric of
 /// `metrics` along the chosen fields flagged with `reason`.
 pub fn failed(

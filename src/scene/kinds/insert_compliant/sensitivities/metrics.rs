@@ -49,7 +49,6 @@ pub(super) fn rows(
     chosen: &[usize],
     unused: &[bool; N_FIELDS],
 ) -> Vec<Row> {
-    let shift = |k: usize, der: f64| PERTURBATION * values[k].abs() * der.abs();
     let mut metrics: Vec<Measured> = Vec::new();
     // Seat time.
     metrics.push(sensitivities::seat_time(
@@ -72,20 +71,17 @@ pub(super) fn rows(
     ));
     // Peak contact force.
     if let Some((c, _, f, df)) = d.peak {
-        let gap = f - scan.runner_up;
         metrics.push(Measured {
             name: METRICS[2],
             value: Some(f),
             derivative: df.as_slice().to_vec(),
-            flag: Box::new(move |k| {
-                (gap < 2.0 * shift(k, df[k]) || gap <= 1e-9 * f).then(|| {
-                    format!(
-                        "the peak switches to another force maximum within a 0.1% change \
-                         (peak on {} {f:.6e} N; next maximum {:.6e} N)",
-                        CONTACTS[c], scan.runner_up
-                    )
-                })
-            }),
+            flag: sensitivities::peak_switch_flag(
+                String::new(),
+                format!("on {} ", CONTACTS[c]),
+                (f, scan.runner_up),
+                df.as_slice().to_vec(),
+                values.as_slice().to_vec(),
+            ),
         });
     }
     if d.peak.is_none()

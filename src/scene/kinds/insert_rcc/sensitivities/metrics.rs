@@ -22,11 +22,11 @@
 
 use nalgebra::SVector;
 
-use super::trajectory::{Derivatives, Peak, Scan};
+use super::trajectory::{Derivatives, Scan};
 use crate::compliant_peg_3d::design::{Design, N_DESIGN};
 use crate::compliant_peg_3d::insertion::Insertion;
 use crate::scene::shared::compliant_peg_3d::design::FIELDS;
-use crate::scene::shared::sensitivities::{self, Measured, PERTURBATION, Row};
+use crate::scene::shared::sensitivities::{self, Measured, Row};
 
 /// The metric names, in output order.
 pub const METRICS: [&str; 6] = [
@@ -53,27 +53,6 @@ pub(super) struct Inputs<'a> {
     pub d: &'a Derivatives,
     /// `t_end` (s) and the seat depth (m).
     pub ends: (f64, f64),
-}
-
-/// The flag of a peak whose runner-up is within the first-order change.
-fn peak_flag(
-    what: &'static str,
-    p: Option<Peak>,
-    der: SVector<f64, N_DESIGN>,
-    values: SVector<f64, N_DESIGN>,
-) -> Box<dyn Fn(usize) -> Option<String>> {
-    Box::new(move |k| {
-        let p = p?;
-        let shift = PERTURBATION * values[k].abs() * der[k].abs();
-        let gap = p.value - p.runner_up;
-        (gap < 2.0 * shift || gap <= 1e-9 * p.value).then(|| {
-            format!(
-                "the peak {what} switches to another force maximum within a 0.1% change \
-                 (peak {:.6e} N; next maximum {:.6e} N)",
-                p.value, p.runner_up
-            )
-        })
-    })
 }
 
 /// The rows of `chosen` fields, `unused[k]` marking the fields that move
@@ -113,7 +92,16 @@ pub(super) fn rows(x: &Inputs, chosen: &[usize], unused: &[bool; N_DESIGN]) -> V
                 name,
                 value: Some(f),
                 derivative: der.as_slice().to_vec(),
-                flag: peak_flag(what, peak, der, values),
+                flag: match peak {
+                    Some(p) => sensitivities::peak_switch_flag(
+                        format!(" {what}"),
+                        String::new(),
+                        (p.value, p.runner_up),
+                        der.as_slice().to_vec(),
+                        values.as_slice().to_vec(),
+                    ),
+                    None => Box::new(|_| None),
+                },
             }),
             (None, Some(p)) => metrics.push(Measured {
                 name,
