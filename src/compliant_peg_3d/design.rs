@@ -77,6 +77,11 @@ pub struct Design {
 }
 
 impl Design {
+    /// The generated functions' parameters by name (`L`, `m`, `g`, …).
+    pub fn params(&self) -> generated::Params<Q> {
+        generated::Params::from(&self.p)
+    }
+
     /// The quantities of `system` as constants (every derivative zero).
     /// `None` for a peg that is not held.
     pub fn constant(system: &Insertion) -> Option<Design> {
@@ -129,7 +134,12 @@ impl Insertion {
         })?;
         let kin = Kinematics::of_state(&yq);
         let frame = self.held.map(|h| h.robot.terms_of(t, &d.robot));
-        let power = self.add_held_with(&kin, frame.as_ref().map(|f| (&d.wrist, f)), d.p[1], &mut w);
+        let power = self.add_held_with(
+            &kin,
+            frame.as_ref().map(|f| (&d.wrist, f)),
+            d.params().L,
+            &mut w,
+        );
         let yq15 = SVector::<Q, 15>::from_fn(|i, _| Q::constant(ys[i]));
         let rate = generated::rhs(&yq15, &SVector::from(w), &d.p);
         Ok(SMatrix::from_fn(|r, k| {
@@ -150,7 +160,7 @@ impl Insertion {
         let x = Motion::of_state(&jacobian::seeded(&ys)).pose;
         let dy = depth(x, half);
         let xq = Motion::of_state(&constant_state::<Q>(y)).pose;
-        let dq = -(xq[2] - Q::from_f64(0.5) * d.p[1] * axis(&xq)[2]);
+        let dq = -(xq[2] - Q::from_f64(0.5) * d.params().L * axis(&xq)[2]);
         (dy.v, state_gradient(&dy), slots(&dq))
     }
 
@@ -232,7 +242,7 @@ impl Insertion {
         let kin = Kinematics::of_state(&jacobian::seeded(&ys));
         let fy = norm(h.wrist.load_of(length, &kin, &h.robot.frame(t)).force);
         let kq = Kinematics::of_state(&constant_state::<Q>(y));
-        let fq = load_with(&d.wrist, d.p[1], &kq, &h.robot.terms_of(t, &d.robot)).force;
+        let fq = load_with(&d.wrist, d.params().L, &kq, &h.robot.terms_of(t, &d.robot)).force;
         let fq = (fq[0] * fq[0] + fq[1] * fq[1] + fq[2] * fq[2]).sqrt();
         let at = |t: f64| {
             let k = Kinematics::of_state(ys.as_slice());

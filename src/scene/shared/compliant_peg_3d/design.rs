@@ -30,6 +30,7 @@ use crate::compliant_peg_3d::law::LawParams;
 use crate::compliant_peg_3d::robot::{MotionOf, RobotMotion};
 use crate::compliant_peg_3d::wrist::WristOf;
 use crate::compliant_peg_3d::{HertzMode, Peg3dParams};
+use crate::generated::compliant_peg_3d as generated;
 use crate::scalar::Real;
 
 /// The fields a `[sensitivities]` table of an `insert_rcc` scene may name,
@@ -87,48 +88,65 @@ pub fn design(s: &RccScene, built: &Built, seeded: &[bool; N_DESIGN]) -> (Design
             Q::constant(written[k])
         }
     });
+    // The slots by name, in the order of `FIELDS`.
+    let [
+        kx,
+        angular,
+        lc,
+        axial,
+        clearance,
+        mouth_fillet,
+        rim_fillet,
+        friction,
+        damping,
+        speed,
+        lateral_error,
+        angular_error_deg,
+    ] = q;
     let c = Q::from_f64;
     let peg = &s.peg;
     let (d, len) = (c(peg.hole_diameter), c(peg.length));
-    let r = c(0.5) * d * (c(1.0) - q[4]);
+    let r = c(0.5) * d * (c(1.0) - clearance);
     let mass = c(peg.density * std::f64::consts::PI) * r * r * len;
-    let mut p = params.vector().map(Q::constant);
-    p[0] = r;
-    p[2] = q[6];
-    p[4] = q[5];
-    p[6] = mass;
-    p[7] = mass * (c(3.0) * r * r + len * len) / c(12.0);
-    p[8] = c(0.5) * mass * r * r;
+    let mut p = generated::Params::from(params.vector().map(Q::constant));
+    p.r = r;
+    p.rho_p = rim_fillet;
+    p.rho_h = mouth_fillet;
+    p.m = mass;
+    p.J_t = mass * (c(3.0) * r * r + len * len) / c(12.0);
+    p.J_a = c(0.5) * mass * r * r;
     let law = LawParams {
-        friction: q[7],
+        friction,
         slip_scale: c(params.slip_scale),
-        damping: q[8],
+        damping,
     };
     let w = &s.wrist;
-    let lc = q[2];
-    let kx = q[0];
     let wrist = WristOf {
         centre_height: lc,
         lateral: [kx, w.lateral_stiffness_y.map_or(kx, c)],
-        axial: q[3],
-        angular: q[1],
+        axial,
+        angular,
         torsional: c(w.torsional_stiffness),
         lateral_damping: c(w.lateral_damping),
         axial_damping: c(w.axial_damping),
         angular_damping: c(w.angular_damping),
     };
     let rb = &s.robot;
-    let tilt = q[11] * c(std::f64::consts::PI / 180.0);
+    let tilt = angular_error_deg * c(std::f64::consts::PI / 180.0);
     let (sa, ca) = tilt.sin_cos();
     let (sz, cz) = rb.tilt_direction_deg.to_radians().sin_cos();
     let (sb, cb) = rb.lateral_error_direction_deg.to_radians().sin_cos();
     let a0 = [sa * c(cz), sa * c(sz), ca];
-    let tip = [q[10] * c(cb), q[10] * c(sb), c(rb.start_height)];
+    let tip = [
+        lateral_error * c(cb),
+        lateral_error * c(sb),
+        c(rb.start_height),
+    ];
     let forced = rb.axial_force.is_some();
     let robot = MotionOf {
         start: add(&tip, &scale(&a0, lc)),
         tilt,
-        speed: if forced { c(0.0) } else { q[9] },
+        speed: if forced { c(0.0) } else { speed },
         end: if forced {
             c(0.0)
         } else {
@@ -136,7 +154,7 @@ pub fn design(s: &RccScene, built: &Built, seeded: &[bool; N_DESIGN]) -> (Design
         },
     };
     let design = Design {
-        p,
+        p: p.into(),
         law,
         wrist,
         robot,
@@ -155,7 +173,7 @@ fn start(s: &RccScene, motion: &RobotMotion, d: &Design) -> [Q; N_STATE] {
         std::array::from_fn(|r| m[r][0] * v[0] + m[r][1] * v[1] + m[r][2] * v[2])
     };
     let velocity = times(&f.rotation, &f.robot_velocity).map(|v| -v);
-    let half = c(0.5) * d.p[1];
+    let half = c(0.5) * d.params().L;
     if s.robot.start_height < 0.0 {
         y[2] = half + c(s.robot.start_height);
         y[3] = c(1.0);
@@ -167,7 +185,7 @@ fn start(s: &RccScene, motion: &RobotMotion, d: &Design) -> [Q; N_STATE] {
     let sag = if s.robot.axial_force.is_some() {
         c(0.0)
     } else {
-        d.p[6] * d.p[9] / d.wrist.axial
+        d.params().m * d.params().g / d.wrist.axial
     };
     let mut centre = sub(&f.position, &arm);
     centre[2] = centre[2] - sag;

@@ -14,7 +14,7 @@
 //!   and `l_y (s + f ∂t_e/∂q) + l_q`.
 //!
 //! A derivative is flagged instead of given when a change of the field by
-//! [`PERTURBATION`] of its value (predicted to first order) changes the
+//! [`PERTURBATION`](crate::scene::shared::sensitivities::PERTURBATION) of its value (predicted to first order) changes the
 //! outcome (seated or not), the peak moves to another force maximum, two
 //! point contact is lost again after it starts (the onset grazes), or the
 //! peg's bottom lies on a flat (the distributed ring's derivatives in the
