@@ -23,7 +23,9 @@ class SweepResult:
     scene does not validate; ``"failed"`` when its run failed), ``error``
     (the message, or None), ``stop``, ``t_end``, ``steps``, ``rhs_calls``
     (None without a time integration) and every scalar result of the run
-    summary, named ``"name [unit]"``. When the scene has a
+    summary, named ``"name [unit]"`` (``"name (summary)"`` where the name
+    is one of those fields: the 3-D kinds' ``"outcome (summary)"`` is
+    their outcome code, 0 for seated). When the scene has a
     ``[sensitivities]`` table, each row also has, per metric and field of
     its ``<name>.sensitivities.csv``, ``"d(metric)/d(field)"`` and
     ``"elasticity(metric, field)"`` (NaN where flagged) and, where flagged,

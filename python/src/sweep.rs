@@ -251,7 +251,8 @@ pub fn check_sweep(
 /// or None), `stop`, `t_end`, `steps`, `rhs_calls` (None without time
 /// integration) and every metric of the run summary, named
 /// `"name [unit]"` (or `name` when dimensionless; a note, a result in
-/// words, as its text). A scene with a
+/// words, as its text; `"name (summary)"` where the name is one of those
+/// fields, e.g. the 3-D kinds' `outcome` code). A scene with a
 /// `[sensitivities]` table adds, per metric and field of its CSV,
 /// `"d(metric)/d(field)"` and `"elasticity(metric, field)"` (NaN where
 /// flagged) and, where flagged, `"flag(metric, field)"` with the reason.
@@ -317,6 +318,17 @@ pub fn run_points<'py>(
     rows.iter().map(|r| row_dict(py, r)).collect()
 }
 
+/// The fields every row has, besides the inputs and the metrics.
+const FIXED: [&str; 7] = [
+    "index",
+    "outcome",
+    "error",
+    "stop",
+    "t_end",
+    "steps",
+    "rhs_calls",
+];
+
 fn row_dict<'py>(py: Python<'py>, r: &Row) -> PyResult<Bound<'py, PyDict>> {
     let d = PyDict::new(py);
     d.set_item("index", r.index)?;
@@ -339,11 +351,16 @@ fn row_dict<'py>(py: Python<'py>, r: &Row) -> PyResult<Bound<'py, PyDict>> {
                 }
             }
             for m in &s.metrics {
-                let key = if m.unit.is_empty() {
+                let mut key = if m.unit.is_empty() {
                     m.name.clone()
                 } else {
                     format!("{} [{}]", m.name, m.unit)
                 };
+                // A metric named like a row field (the 3-D kinds'
+                // `outcome`, a code) must not overwrite it.
+                if FIXED.contains(&key.as_str()) {
+                    key.push_str(" (summary)");
+                }
                 // A note (a result in words, e.g. a ranking) is its text,
                 // not a NaN.
                 match &m.text {

@@ -100,3 +100,15 @@ def test_pandas_frame():
     df = pegdyn.sweep(pendulum(0.5), {"pendulum.mass": [1.0, 2.0]}).to_pandas()
     assert list(df["pendulum.mass"]) == [1.0, 2.0]
     assert list(df.columns[:2]) == ["index", "pendulum.mass"]
+
+
+def test_a_metric_named_like_a_row_field_does_not_overwrite_it():
+    # The 3-D kinds report an `outcome` code among their metrics; the row's
+    # own `outcome` ("ok", "stopped", ...) stays, the code comes beside it.
+    s = pegdyn.load(next(p for p in SCENES if p.stem == "insert_rcc"))
+    (row,) = pegdyn.sweep(s, points=[{"integrator.t_end": 0.02}])
+    assert row["outcome"] == "ok", row
+    assert row["error"] is None
+    # Ended at t_end before the rim reached the mouth: stopped (code 5).
+    assert row["outcome (summary)"] == 5.0, row
+    assert row["end time [s]"] == 0.02

@@ -33,7 +33,8 @@ pub const MAX_STEP_BUDGET: usize = 1_000_000_000;
 /// Tolerances and limits of an integration.
 ///
 /// The local error estimate `e` of a step is accepted when
-/// `√(mean((eᵢ / (atol + rtol·max(|xᵢ|, |x̃ᵢ|)))²)) ≤ 1`.
+/// `√(mean((eᵢ / (atol + rtol·max(|xᵢ|, |x̃ᵢ|)))²)) ≤ 1`, the mean over
+/// every component or the first [`Options::error_components`].
 #[derive(Debug, Clone, PartialEq)]
 pub struct Options {
     /// Relative tolerance (`>= MIN_RTOL`, finite; a huge value turns the
@@ -54,6 +55,14 @@ pub struct Options {
     /// Keep the reported points in [`super::Solution::t`] /
     /// [`super::Solution::x`]; turn off when an observer streams them.
     pub store: bool,
+    /// The error norm over the first `n` components only (`None`: all;
+    /// an `n` beyond the state's size means all; the starting step is
+    /// estimated over every component). For a state extended
+    /// with quantities that follow it, such as forward sensitivities, the
+    /// step sequence is then the state's own and the extension is the
+    /// exact derivative of the computed solution along it. A step whose
+    /// error estimate is not finite in any component is still rejected.
+    pub error_components: Option<usize>,
 }
 
 impl Default for Options {
@@ -66,6 +75,7 @@ impl Default for Options {
             max_steps: 1_000_000,
             output: OutputMode::EveryStep,
             store: true,
+            error_components: None,
         }
     }
 }
@@ -127,6 +137,13 @@ impl Options {
         }
         if let Some(h_max) = self.h_max {
             positive("h_max", h_max)?;
+        }
+        if self.error_components == Some(0) {
+            return Err(IntegrateError::InvalidOption {
+                name: "error_components",
+                value: 0.0,
+                reason: "must be at least 1 (None controls every component)",
+            });
         }
         if self.max_steps == 0 {
             return Err(IntegrateError::InvalidOption {

@@ -259,7 +259,9 @@ impl<'r, 'e, 'h, const N: usize> State<'r, 'e, 'h, N> {
     ) -> bool {
         let c = &mut self.control;
         if let (Some(controller), Some(err)) = (c.controller.as_mut(), err) {
-            let norm = error_norm(err, &self.x, x1, self.options.rtol, self.options.atol);
+            let o = &self.options;
+            let n = o.error_components.unwrap_or(N);
+            let norm = error_norm(err, (&self.x, x1), o.rtol, o.atol, n);
             if !norm.is_finite() {
                 self.stats.rejected += 1;
                 (c.last_rejected, c.last_nonfinite) = (true, true);

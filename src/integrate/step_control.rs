@@ -11,24 +11,30 @@ use crate::system::OdeSystem;
 
 use super::solution::Stats;
 
-/// Weighted RMS norm of the error estimate `err` of the step `x0 → x1`:
-/// `√(mean((errᵢ / (atol + rtol·max(|x0ᵢ|, |x1ᵢ|)))²))`.
+/// Weighted RMS norm of the error estimate `err` of the step `x0 → x1`
+/// over its first `n` components (all when `n ≥ N`):
+/// `√(mean((errᵢ / (atol + rtol·max(|x0ᵢ|, |x1ᵢ|)))²))`; not finite when
+/// any component of `err` is not, counted or not.
 pub(crate) fn error_norm<const N: usize>(
     err: &SVector<f64, N>,
-    x0: &SVector<f64, N>,
-    x1: &SVector<f64, N>,
+    (x0, x1): (&SVector<f64, N>, &SVector<f64, N>),
     rtol: f64,
     atol: f64,
+    n: usize,
 ) -> f64 {
-    if N == 0 {
+    let n = n.min(N);
+    if n == 0 {
         return 0.0;
     }
+    if err.iter().skip(n).any(|e| !e.is_finite()) {
+        return f64::NAN;
+    }
     let mut sum = 0.0;
-    for i in 0..N {
+    for i in 0..n {
         let scale = atol + rtol * x0[i].abs().max(x1[i].abs());
         sum += (err[i] / scale).powi(2);
     }
-    (sum / N as f64).sqrt()
+    (sum / n as f64).sqrt()
 }
 
 /// The PI step-size controller.

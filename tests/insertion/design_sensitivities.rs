@@ -221,3 +221,123 @@ fn the_table_writes_its_csv_tornado_and_ranking_and_refuses_unknown_fields() {
         "{err}"
     );
 }
+
+/// The fields and metrics of the run through the chamfer.
+const CHAMFER_FIELDS: [&str; 4] = [
+    "wrist.angular_stiffness",
+    "wrist.centre_height",
+    "peg.mouth_fillet",
+    "robot.lateral_error",
+];
+const CHAMFER_METRICS: [&str; 5] = [
+    "seat_time_s",
+    "peak_contact_force_N",
+    "peak_wrist_force_N",
+    "two_point_start_s",
+    "two_point_depth_m",
+];
+
+#[test]
+fn through_the_chamfer_every_metric_matches_differences_along_four_fields() {
+    // The shipped run from 1 mm above the mouth: the rim lands on the
+    // rounded chamfer and slides down it on two points of the mouth's
+    // torus (one contact splitting into two about a col, where a point
+    // moves like the square root of the pose), rides the wall, meets the
+    // mouth edge with its side at 4.93 mm; seated at 5.5 mm, just past.
+    let s = scene(&[
+        ("seat_depth", "0.0055"),
+        ("rtol", "1e-9"),
+        ("atol", "1e-13"),
+        ("t_end", "0.8"),
+    ]);
+    let chosen: Vec<usize> = CHAMFER_FIELDS
+        .iter()
+        .map(|f| FIELDS.iter().position(|g| g == f).expect("a field"))
+        .collect();
+    let base = rows(&s, &chosen);
+    let q = values(&s);
+    let metrics = |k: usize, v: f64| {
+        let mut moved = s.clone();
+        *slot(&mut moved, k) = v;
+        plain(&moved)
+    };
+    let value = |m: &[(&'static str, f64)], name: &str| {
+        m.iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, v)| *v)
+            .unwrap_or_else(|| panic!("{name} in {m:?}"))
+    };
+    let mut worst: f64 = 0.0;
+    for &k in &chosen {
+        let h = if q[k] == 0.0 { 1e-5 } else { 1e-3 * q[k].abs() };
+        let runs: Vec<_> = [-h, -0.5 * h, 0.5 * h, h]
+            .iter()
+            .map(|d| metrics(k, q[k] + d))
+            .collect();
+        for name in CHAMFER_METRICS {
+            let r = base
+                .iter()
+                .find(|r| r.metric == name && r.parameter == FIELDS[k])
+                .expect("a row");
+            assert!(r.flag.is_empty(), "{name} along {}: {}", FIELDS[k], r.flag);
+            let der = r.derivative.expect("unflagged");
+            let d1 = (value(&runs[3], name) - value(&runs[0], name)) / (2.0 * h);
+            let d2 = (value(&runs[2], name) - value(&runs[1], name)) / h;
+            let fd = (4.0 * d2 - d1) / 3.0;
+            let e = (der - fd).abs() / fd.abs();
+            eprintln!(
+                "{name} along {}: sensitivity {der:.10e}, difference {fd:.10e}, {e:.1e}",
+                FIELDS[k]
+            );
+            // The two-point onset along the lateral error: the side meets
+            // the mouth edge slowly, so `∂t_e/∂q = −(g_y s + g_q)/(g_y f)`
+            // amplifies the error of the lateral sensitivities, which the
+            // state's step control leaves uncontrolled (measured 9e-9 here,
+            // 2.8e-5 in the whole run at 1e-9 and 2.8e-4 with another
+            // starting step: docs/sensitivities.md).
+            let bound = if name.starts_with("two_point") && FIELDS[k] == "robot.lateral_error" {
+                1e-3
+            } else {
+                1e-5
+            };
+            assert!(
+                e <= bound,
+                "{name} along {}: sensitivity {der:e}, difference {fd:e}",
+                FIELDS[k]
+            );
+            worst = worst.max(e);
+        }
+    }
+    eprintln!("worst {worst:.1e}");
+}
+
+#[test]
+fn controlling_the_sensitivities_error_too_stops_at_the_chamfers_two_points() {
+    // With `error_control = "all"` the step control follows the
+    // sensitivities, whose rate is unbounded where the rim's contact on
+    // the rounded chamfer splits in two: the run stops there and every
+    // derivative is flagged with the reason, never a number.
+    let text = format!(
+        "{}\n[sensitivities]\nerror_control = \"all\"\nparameters = [\"peg.friction\"]\n",
+        include_str!("../../scenes/insert_rcc.toml")
+            .replacen("method = \"rodas4\"", "method = \"dopri5\"", 1)
+            .replacen("rtol = 1e-4 ", "rtol = 1e-6 ", 1)
+            .replacen("atol = 1e-8", "atol = 1e-10", 1)
+    );
+    let (_, rows, _) = run_scene(&text);
+    assert!(!rows.is_empty());
+    for r in &rows {
+        assert!(r.2.contains("stopped short"), "{r:?}");
+        assert!(r.3.is_empty(), "{r:?}");
+    }
+    // An unknown choice is refused on its field, naming the valid ones.
+    let bad = text.replacen("error_control = \"all\"", "error_control = \"some\"", 1);
+    let err = match pegdyn::scene::parse_named(&bad, "rcc") {
+        Ok(_) => panic!("an unknown error control is accepted"),
+        Err(e) => e.to_string(),
+    };
+    assert!(
+        err.contains("error_control") && err.contains("state") && err.contains("all"),
+        "{err}"
+    );
+}

@@ -5,6 +5,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod error_components;
 mod events;
 mod hostile;
 mod integrators;

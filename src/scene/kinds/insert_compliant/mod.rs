@@ -444,6 +444,15 @@ impl Scene for Ready {
 }
 
 impl Ready {
+    /// The `[sensitivities]` table's error control (its default without
+    /// the table).
+    fn error_control(&self) -> sensitivities::ErrorControl {
+        self.scene
+            .sensitivities
+            .as_ref()
+            .map_or_else(Default::default, |t| t.error_control)
+    }
+
     /// Integrates `sys` from `y0` until `inserted` fires or the end time,
     /// and writes the outputs of `sample` at every output time.
     fn run_system<const N: usize>(
@@ -466,7 +475,7 @@ impl Ready {
                 &self.scene.insert_compliant,
                 &self.built,
                 &self.integrator,
-                &self.sensitivities,
+                (&self.sensitivities, self.error_control()),
             )?;
             out.metrics.extend(notes);
         }

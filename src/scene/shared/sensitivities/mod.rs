@@ -19,6 +19,57 @@ use crate::sensitivity::SensitivityError;
 pub struct SensitivitiesTable {
     /// The scene fields, by their names (each kind lists its own).
     pub parameters: Vec<String>,
+    /// What the sensitivity run's step control measures
+    /// (`error_control = "state"`, the default, or `"all"`).
+    #[serde(default)]
+    pub error_control: ErrorControl,
+}
+
+/// What the step control of a sensitivity run measures.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ErrorControl {
+    /// The state only: the run takes the plain run's steps, and the
+    /// sensitivities are the exact derivatives of the computed solution
+    /// along them (internal differentiation, Bock). They converge with
+    /// the tolerances as the state does, and a contact whose force has a
+    /// derivative that is unbounded but integrable (two points of one
+    /// pair meeting, where a point moves like the square root of the pose)
+    /// does not stop the run.
+    #[default]
+    State,
+    /// The state and the sensitivities (each column scaled by its field's
+    /// value): the sensitivities' own error is controlled, at the cost of
+    /// more steps, and a run stops (flagged) where their derivative is
+    /// unbounded.
+    All,
+}
+
+impl ErrorControl {
+    /// The options of a sensitivity run of `m` components (`n` states,
+    /// `p` of the columns moving) from the plain run's `options`: for
+    /// [`ErrorControl::State`] the norm over the `n` states; for
+    /// [`ErrorControl::All`] over all `m`, the tolerances scaled by
+    /// `√(n (1 + p)/m)` so that the padded columns, which stay zero, do
+    /// not loosen them.
+    #[must_use]
+    pub fn options(self, options: &Options, n: usize, p: usize, m: usize) -> Options {
+        match self {
+            ErrorControl::State => Options {
+                error_components: Some(n),
+                ..options.clone()
+            },
+            ErrorControl::All => {
+                #[allow(clippy::cast_precision_loss)] // component counts are small
+                let shrink = ((n * (1 + p)) as f64 / m as f64).sqrt();
+                Options {
+                    rtol: options.rtol * shrink,
+                    atol: options.atol * shrink,
+                    ..options.clone()
+                }
+            }
+        }
+    }
 }
 
 /// The relative change of a field within which a derivative must hold for

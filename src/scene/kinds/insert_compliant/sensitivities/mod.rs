@@ -35,7 +35,7 @@ use fields::{FIELDS, N_FIELDS};
 use nalgebra::{SMatrix, SVector};
 use trajectory::{Derivatives, Scan};
 
-pub use crate::scene::shared::sensitivities::SensitivitiesTable;
+pub use crate::scene::shared::sensitivities::{ErrorControl, SensitivitiesTable};
 
 const FIELD: &str = "sensitivities.parameters";
 
@@ -108,9 +108,9 @@ pub fn run(
     p: &InsertParams,
     b: &Built,
     integrator: &IntegratorSpec,
-    chosen: &[usize],
+    (chosen, control): (&[usize], ErrorControl),
 ) -> Result<Vec<Metric>, RunError> {
-    let (rows, work) = compute(p, b, integrator, chosen)?;
+    let (rows, work) = compute(p, b, integrator, (chosen, control))?;
     let mut notes = output::write(ctx, &rows, &metrics::METRICS, "insert_compliant.")?;
     if let Some((steps, calls)) = work {
         let q = integrated(p, b, chosen).len();
@@ -180,7 +180,7 @@ pub fn compute(
     p: &InsertParams,
     b: &Built,
     integrator: &IntegratorSpec,
-    chosen: &[usize],
+    (chosen, control): (&[usize], ErrorControl),
 ) -> Result<Computed, RunError> {
     let (dp, dy0) = fields::jacobians(p, b);
     let values = fields::values(p);
@@ -207,6 +207,7 @@ pub fn compute(
         t_end,
         target,
         options: &options,
+        control,
         scan: &scan,
     };
     let d = match run.run() {
@@ -237,6 +238,7 @@ struct Along<'a> {
     t_end: f64,
     target: f64,
     options: &'a Options,
+    control: ErrorControl,
     scan: &'a Scan,
 }
 
@@ -249,13 +251,12 @@ impl Along<'_> {
     /// size a compiled copy of the integrator and the sensitivity driver
     /// (the sizes 4, 8 and 21 together took a release build of the library
     /// from 92 s to 158 s of CPU), so there is one size: the columns of the
-    /// fields not integrated have zero `∂p/∂q` and `∂y₀/∂q`, their
-    /// sensitivities stay exactly zero and add nothing to the error
-    /// estimate. The error norm is a root mean square over the `M`
-    /// components, so the tolerances are scaled by `√(N (1 + P) / M)` for
-    /// `P` columns: the run takes the steps the run along the columns alone
-    /// would, at the cost of every field (docs/sensitivities.md, "Accuracy
-    /// and cost").
+    /// fields not integrated have zero `∂p/∂q` and `∂y₀/∂q` and their
+    /// sensitivities stay exactly zero. The step control measures what
+    /// [`ErrorControl`] says: with the sensitivities in it, the tolerances
+    /// are scaled so that the run takes the steps the run along the
+    /// columns alone would, at the cost of every field
+    /// (docs/sensitivities.md, "Accuracy and cost").
     fn run(&self) -> Result<Derivatives<N_FIELDS>, StopOrError> {
         let c = self.columns;
         let mut dp = SMatrix::<f64, N_PARAMS, N_FIELDS>::zeros();
@@ -268,13 +269,7 @@ impl Along<'_> {
         let target_column = c
             .contains(&fields::TARGET_DEPTH)
             .then_some(fields::TARGET_DEPTH);
-        #[allow(clippy::cast_precision_loss)] // component counts are small
-        let shrink = ((N_STATE * (1 + c.len())) as f64 / M as f64).sqrt();
-        let options = Options {
-            rtol: self.options.rtol * shrink,
-            atol: self.options.atol * shrink,
-            ..self.options.clone()
-        };
+        let options = self.control.options(self.options, N_STATE, c.len(), M);
         let (t0, y0) = self.start;
         trajectory::derivatives::<N_FIELDS, M>(
             &sys,

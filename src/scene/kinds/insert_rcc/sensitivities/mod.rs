@@ -29,7 +29,7 @@ use crate::scene::integrator::IntegratorSpec;
 use crate::scene::limits::WorkItem;
 use crate::scene::shared::compliant_peg_3d::design::{FIELDS, design, fixed_stiffness, values};
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene};
-use crate::scene::shared::sensitivities::StopOrError;
+use crate::scene::shared::sensitivities::{ErrorControl, StopOrError};
 use crate::scene::shared::sensitivities::{Row, output};
 use crate::scene::summary::Metric;
 use nalgebra::SMatrix;
@@ -162,9 +162,8 @@ pub type Computed = (Vec<Row>, Option<(usize, usize)>);
 /// built into `b`, integrated with `integrator`'s tolerances, span and
 /// step budget (always Dormand–Prince 5(4)), and the sensitivity run's
 /// work. The chosen fields that move something are seeded; the others
-/// are constants (their columns stay zero and add nothing to the error
-/// estimate, whose tolerances are scaled by `√(N (1 + P)/M)` for `P`
-/// seeded fields of the `M` components, as in `insert_compliant`).
+/// are constants (their columns stay zero); the step control measures
+/// what the table's [`ErrorControl`] says.
 ///
 /// # Errors
 /// [`RunError::Sensitivity`] when the integrator refuses its input.
@@ -183,13 +182,11 @@ pub fn compute(
     let (t0, t_end, seat) = (integrator.t0, integrator.t_end, b.criteria.seat_depth);
     let values = values(scene);
     let p = seeded.iter().filter(|s| **s).count();
-    #[allow(clippy::cast_precision_loss)] // component counts are small
-    let shrink = ((N_STATE * (1 + p)) as f64 / trajectory::M as f64).sqrt();
-    let run_options = Options {
-        rtol: pass.options.rtol * shrink,
-        atol: pass.options.atol * shrink,
-        ..pass.options.clone()
-    };
+    let control = scene
+        .sensitivities
+        .as_ref()
+        .map_or_else(ErrorControl::default, |t| t.error_control);
+    let run_options = control.options(&pass.options, N_STATE, p, trajectory::M);
     let dir = Directions {
         system: sys,
         design: d,
