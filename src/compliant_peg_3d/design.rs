@@ -122,8 +122,50 @@ impl Insertion {
         y: &SVector<f64, N_STATE>,
         d: &Design,
     ) -> Result<SMatrix<f64, N_STATE, N_DESIGN>, HertzError> {
+        self.rate_along(t, y, d, None)
+    }
+
+    /// `J s + ∂ẏ/∂q` (16 × [`N_DESIGN`], column `k`: `J s_k + ∂ẏ/∂q_k`)
+    /// at `(t, y)` in one pass: the right-hand side at the state seeded
+    /// with the sensitivities' columns and the quantities `d`, so that
+    /// slot `k` of every dual number carries the directional derivative
+    /// along `(s_k, e_k)`: the variational equations' right-hand side
+    /// without forming `J` (one evaluation of the law in dual numbers
+    /// where `J` and `∂ẏ/∂q` take two). Same contacts and errors as
+    /// [`Self::parameter_rate`].
+    ///
+    /// # Errors
+    /// As [`super::Peg3d::setups`] when the contacts have to be searched.
+    pub fn sensitivity_rate(
+        &self,
+        t: f64,
+        y: &SVector<f64, N_STATE>,
+        s: &SMatrix<f64, N_STATE, N_DESIGN>,
+        d: &Design,
+    ) -> Result<SMatrix<f64, N_STATE, N_DESIGN>, HertzError> {
+        self.rate_along(t, y, d, Some(s))
+    }
+
+    /// `ẏ`'s derivatives in the design slots at the state `y`, constant
+    /// (`s = None`) or moving along the columns of `s`.
+    fn rate_along(
+        &self,
+        t: f64,
+        y: &SVector<f64, N_STATE>,
+        d: &Design,
+        s: Option<&SMatrix<f64, N_STATE, N_DESIGN>>,
+    ) -> Result<SMatrix<f64, N_STATE, N_DESIGN>, HertzError> {
         let ys = peg_state(y);
-        let yq: [Q; 13] = constant_state(y);
+        let along = |i: usize| {
+            let mut v = Q::constant(y[i]);
+            if let Some(s) = s {
+                for k in 0..N_DESIGN {
+                    v.d[k] = s[(i, k)];
+                }
+            }
+            v
+        };
+        let yq: [Q; 13] = std::array::from_fn(along);
         let m = Motion::of_state(&yq);
         let x = SVector::<Q, 7>::from(m.pose);
         let prm = &self.peg.params;
@@ -140,7 +182,7 @@ impl Insertion {
             d.params().L,
             &mut w,
         );
-        let yq15 = SVector::<Q, 15>::from_fn(|i, _| Q::constant(ys[i]));
+        let yq15 = SVector::<Q, 15>::from_fn(|i, _| along(i));
         let rate = generated::rhs(&yq15, &SVector::from(w), &d.p);
         Ok(SMatrix::from_fn(|r, k| {
             if r < 15 { rate[r].d[k] } else { power.d[k] }
@@ -378,5 +420,19 @@ impl ParameterJacobian<N_STATE, N_DESIGN> for Directions<'_> {
         y: &SVector<f64, N_STATE>,
     ) -> Result<SMatrix<f64, N_STATE, N_DESIGN>, ModelError> {
         Ok(self.system.parameter_rate(t, y, &self.design)?)
+    }
+
+    /// [`Insertion::sensitivity_rate`]: `J s + ∂f/∂q` in one pass.
+    fn try_sensitivity_rate(
+        &self,
+        t: f64,
+        y: &SVector<f64, N_STATE>,
+        s: &SMatrix<f64, N_STATE, N_DESIGN>,
+    ) -> Option<Result<SMatrix<f64, N_STATE, N_DESIGN>, ModelError>> {
+        Some(
+            self.system
+                .sensitivity_rate(t, y, s, &self.design)
+                .map_err(ModelError::from),
+        )
     }
 }

@@ -91,6 +91,22 @@ pub trait ParameterJacobian<const N: usize, const P: usize>: OdeSystem<N> {
     ) -> Result<SMatrix<f64, N, P>, ModelError> {
         Ok(self.parameter_jacobian(t, y))
     }
+
+    /// `J s + ∂f/∂p` (column `k`: `J s_k + ∂f/∂p_k`, the sensitivities'
+    /// rate) in one pass, for a model that pushes the columns of `s`
+    /// through its right-hand side as directional derivatives (dual
+    /// numbers seeded with `s_k` in the state and `e_k` in the
+    /// parameters). `None`, the default, makes the integrator form `J`
+    /// and `∂f/∂p` and multiply. Called after `try_rhs` at the same
+    /// `(t, y)`.
+    fn try_sensitivity_rate(
+        &self,
+        _t: f64,
+        _y: &SVector<f64, N>,
+        _s: &SMatrix<f64, N, P>,
+    ) -> Option<Result<SMatrix<f64, N, P>, ModelError>> {
+        None
+    }
 }
 
 /// Why sensitivities could not be computed.

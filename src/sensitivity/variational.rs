@@ -52,14 +52,26 @@ impl<S: ParameterJacobian<N, P>, const N: usize, const P: usize, const M: usize>
             .unwrap_or_else(|_| SVector::repeat(f64::NAN))
     }
 
-    /// `ż = (f, c_k (J s_k + ∂f/∂p_k))` with `c_k s_k` read from `z`.
+    /// `ż = (f, c_k (J s_k + ∂f/∂p_k))` with `c_k s_k` read from `z`:
+    /// from the model's one-pass rate where it has one
+    /// ([`ParameterJacobian::try_sensitivity_rate`]), else from `J` and
+    /// `∂f/∂p`.
     fn try_rhs(&self, t: f64, z: &SVector<f64, M>) -> Result<SVector<f64, M>, ModelError> {
         let y: SVector<f64, N> = SVector::from_fn(|i, _| z[i]);
         let f = self.system.try_rhs(t, &y)?;
-        let j = self.system.try_jacobian(t, &y)?;
-        let fp = self.system.try_parameter_jacobian(t, &y)?;
         let mut out = SVector::<f64, M>::zeros();
         out.fixed_rows_mut::<N>(0).copy_from(&f);
+        let s = SMatrix::<f64, N, P>::from_fn(|r, k| z[N + k * N + r] / self.scale[k]);
+        if let Some(rate) = self.system.try_sensitivity_rate(t, &y, &s) {
+            let rate = rate?;
+            for k in 0..P {
+                let dk = rate.column(k) * self.scale[k];
+                out.fixed_rows_mut::<N>(N + k * N).copy_from(&dk);
+            }
+            return Ok(out);
+        }
+        let j = self.system.try_jacobian(t, &y)?;
+        let fp = self.system.try_parameter_jacobian(t, &y)?;
         for k in 0..P {
             let sk: SVector<f64, N> = SVector::from_fn(|i, _| z[N + k * N + i]);
             let dk = j * sk + fp.column(k) * self.scale[k];

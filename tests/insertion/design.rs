@@ -168,6 +168,20 @@ fn the_parameter_jacobian_matches_differences_of_the_right_hand_side() {
             let e = mismatch(&j.column(i).into_owned(), &fd, noise(&sys.rhs(*t, y), h));
             assert!(e < 1e-4, "{name}, d f/d y{i}: relative mismatch {e:.2e}");
         }
+        // The sensitivities' rate in one pass (the state seeded with the
+        // columns of s): the numbers of J s + ∂f/∂q formed apart.
+        #[allow(clippy::cast_precision_loss)] // small integers
+        let s = SMatrix::<f64, N_STATE, N_DESIGN>::from_fn(|i, k| {
+            ((i * 7 + k * 3) % 11) as f64 / 11.0 - 0.4
+        });
+        let _ = sys.rhs(*t, y);
+        let one_pass = sys
+            .sensitivity_rate(*t, y, &s, &d)
+            .expect("the state's contacts set up");
+        let apart = j * s + exact;
+        let e = (one_pass - apart).amax() / apart.amax();
+        eprintln!("{name}, one-pass rate against J s + f_q: {e:.1e}");
+        assert!(e < 1e-12, "{name}: one-pass rate off by {e:.1e}");
     }
     eprintln!("worst relative mismatch of d f/d q: {worst:.2e}");
 }
