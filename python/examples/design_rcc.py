@@ -72,8 +72,7 @@ class Evaluations:
         return self.runs[key]
 
     def peak(self, x):
-        value, grad = self.at(x)[PEAK]
-        return value, grad
+        return self.at(x)[PEAK]
 
     def seat_margin(self, limit):
         return (
@@ -149,7 +148,8 @@ def main():
     ev = Evaluations(scene)
     x0 = np.array([0.0, math.log(20.0)])
     start = time.perf_counter()
-    show("the shipped design", x0, ev, 1, 0.0 if ev.at(x0) is None else time.perf_counter() - start)
+    ev.at(x0)
+    show("the shipped design", x0, ev, 1, time.perf_counter() - start)
     seat_margin, seat_margin_grad = ev.seat_margin(args.max_seat_time)
     start = time.perf_counter()
     opt = minimize(

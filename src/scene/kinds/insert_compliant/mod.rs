@@ -444,15 +444,6 @@ impl Scene for Ready {
 }
 
 impl Ready {
-    /// The `[sensitivities]` table's error control (its default without
-    /// the table).
-    fn error_control(&self) -> sensitivities::ErrorControl {
-        self.scene
-            .sensitivities
-            .as_ref()
-            .map_or_else(Default::default, |t| t.error_control)
-    }
-
     /// Integrates `sys` from `y0` until `inserted` fires or the end time,
     /// and writes the outputs of `sample` at every output time.
     fn run_system<const N: usize>(
@@ -475,7 +466,10 @@ impl Ready {
                 &self.scene.insert_compliant,
                 &self.built,
                 &self.integrator,
-                (&self.sensitivities, self.error_control()),
+                (
+                    &self.sensitivities,
+                    sensitivities::ErrorControl::of(self.scene.sensitivities.as_ref()),
+                ),
             )?;
             out.metrics.extend(notes);
         }

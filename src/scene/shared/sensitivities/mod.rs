@@ -46,6 +46,13 @@ pub enum ErrorControl {
 }
 
 impl ErrorControl {
+    /// The error control of a scene's `[sensitivities]` table, the
+    /// default without one.
+    #[must_use]
+    pub fn of(table: Option<&SensitivitiesTable>) -> Self {
+        table.map_or_else(Self::default, |t| t.error_control)
+    }
+
     /// The options of a sensitivity run of `m` components (`n` states,
     /// `p` of the columns moving) from the plain run's `options`: for
     /// [`ErrorControl::State`] the norm over the `n` states; for

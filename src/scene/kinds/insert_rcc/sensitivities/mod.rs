@@ -182,10 +182,7 @@ pub fn compute(
     let (t0, t_end, seat) = (integrator.t0, integrator.t_end, b.criteria.seat_depth);
     let values = values(scene);
     let p = seeded.iter().filter(|s| **s).count();
-    let control = scene
-        .sensitivities
-        .as_ref()
-        .map_or_else(ErrorControl::default, |t| t.error_control);
+    let control = ErrorControl::of(scene.sensitivities.as_ref());
     let run_options = control.options(&pass.options, N_STATE, p, trajectory::M);
     let dir = Directions {
         system: sys,
