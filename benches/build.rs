@@ -15,8 +15,15 @@ fn main() {
         eprintln!("error: OUT_DIR is not set (build.rs must run under cargo)");
         exit(1);
     };
+    // The options of pegdyn's own build.rs that decide which functions
+    // exist: the list and the parameter Jacobians of the models whose
+    // sensitivities pegdyn integrates.
     let options = pegdyn_equations::Options {
         function_list: true,
+        parameter_jacobians: pegdyn_equations::models::PARAMETER_JACOBIANS
+            .iter()
+            .map(|m| (*m).to_owned())
+            .collect(),
         ..pegdyn_equations::Options::from_env()
     };
     let mut generator = pegdyn_equations::Generator::new(options);

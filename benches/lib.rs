@@ -17,6 +17,7 @@ mod functions;
 mod hand;
 mod ops;
 mod runs;
+mod sensitivities;
 
 criterion_group! {
     name = benches;
@@ -24,6 +25,6 @@ criterion_group! {
         .sample_size(10)
         .warm_up_time(Duration::from_millis(300))
         .measurement_time(Duration::from_secs(1));
-    targets = functions::bench, ops::bench, runs::bench
+    targets = functions::bench, ops::bench, runs::bench, sensitivities::bench
 }
 criterion_main!(benches);

@@ -273,28 +273,37 @@ pub fn transition_events<'a>(
     (events, what)
 }
 
+/// The condition of a terminal event: stop where it rises through zero.
+pub type TerminalCondition<'a> = Box<dyn Fn(f64, &SVector<f64, N_STATE>) -> f64 + 'a>;
+
 /// The terminal events of [`TERMINAL_NAMES`] for a held peg.
 pub fn terminal_events<'a>(system: &'a Insertion, c: Criteria) -> Vec<Event<'a, N_STATE>> {
+    terminal_conditions(system, c)
+        .into_iter()
+        .map(|g| Event::new(g).direction(Direction::Rising).terminal())
+        .collect()
+}
+
+/// The functions of [`terminal_events`], in the order of
+/// [`TERMINAL_NAMES`], each stopping the run where it rises through zero:
+/// the tip's depth past the seat depth, the wrist's force and the largest
+/// contact normal force past their limits, and the rim on the hole's top
+/// face with the tip outside the bore (`+½` then, `−½` otherwise).
+pub fn terminal_conditions<'a>(system: &'a Insertion, c: Criteria) -> Vec<TerminalCondition<'a>> {
     let prm = system.peg.params;
-    let seated = Event::new(move |_t, y: &SVector<f64, N_STATE>| {
+    let seated = move |_t, y: &SVector<f64, N_STATE>| {
         super::insertion::depth_tilt(&prm, &peg_state(y)).0 - c.seat_depth
-    })
-    .direction(Direction::Rising)
-    .terminal();
-    let wrist = Event::new(move |t, y: &SVector<f64, N_STATE>| {
+    };
+    let wrist = move |t, y: &SVector<f64, N_STATE>| {
         system
             .wrist_load(t, &peg_state(y))
             .map_or(-1.0, |(_, l)| l.force.norm() - c.wrist_force_limit)
-    })
-    .direction(Direction::Rising)
-    .terminal();
-    let contact = Event::new(move |_t, y: &SVector<f64, N_STATE>| {
+    };
+    let contact = move |_t, y: &SVector<f64, N_STATE>| {
         let f = system.peg.forces(&peg_state(y)).unwrap_or_default();
         f.iter().map(|f| f.normal_force).fold(0.0, f64::max) - c.contact_force_limit
-    })
-    .direction(Direction::Rising)
-    .terminal();
-    let missed = Event::new(move |_t, y: &SVector<f64, N_STATE>| {
+    };
+    let missed = move |_t, y: &SVector<f64, N_STATE>| {
         let ys = peg_state(y);
         let m = super::insertion::motion(&ys);
         let a = m.orientation * nalgebra::Vector3::z();
@@ -309,10 +318,13 @@ pub fn terminal_events<'a>(system: &'a Insertion, c: Criteria) -> Vec<Event<'a, 
         } else {
             -0.5
         }
-    })
-    .direction(Direction::Rising)
-    .terminal();
-    vec![seated, wrist, contact, missed]
+    };
+    vec![
+        Box::new(seated),
+        Box::new(wrist),
+        Box::new(contact),
+        Box::new(missed),
+    ]
 }
 
 /// What the release test found.

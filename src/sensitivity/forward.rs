@@ -12,12 +12,18 @@ use crate::integrate::{Direction, Event, EventFn, Method, Options, Solver, Stats
 pub type EventGradient<'a, const N: usize, const P: usize> =
     dyn Fn(f64, &SVector<f64, N>) -> (SVector<f64, N>, SVector<f64, P>) + 'a;
 
+/// An observer of a sensitivity run: `(t, y, ∂y/∂p)` at each reported
+/// point ([`integrate_observed`]).
+pub type SensitivityObserver<'a, const N: usize, const P: usize> =
+    dyn FnMut(f64, &SVector<f64, N>, &SMatrix<f64, N, P>) + 'a;
+
 /// An event `g(y, p) = 0` with its gradient in the state and in the `P`
 /// chosen parameters (an event function of the state and parameters only,
 /// not of the time).
 pub struct SensitivityEvent<'a, const N: usize, const P: usize> {
     value: Box<EventFn<'a, N>>,
-    gradient: Box<EventGradient<'a, N, P>>,
+    /// `None` for a stop rule ([`SensitivityEvent::stop`]).
+    gradient: Option<Box<EventGradient<'a, N, P>>>,
     direction: Direction,
     terminal: bool,
 }
@@ -31,9 +37,22 @@ impl<'a, const N: usize, const P: usize> SensitivityEvent<'a, N, P> {
     ) -> Self {
         SensitivityEvent {
             value: Box::new(value),
-            gradient: Box::new(gradient),
+            gradient: Some(Box::new(gradient)),
             direction: Direction::Both,
             terminal: false,
+        }
+    }
+
+    /// A terminal event `g = 0` crossed in either direction that only ends
+    /// the run (a stop rule such as a force limit): its time's derivatives
+    /// are not formed and it is not listed among the run's events, so `g`
+    /// may be any function of the state, a step function included.
+    pub fn stop(value: impl Fn(f64, &SVector<f64, N>) -> f64 + 'a) -> Self {
+        SensitivityEvent {
+            value: Box::new(value),
+            gradient: None,
+            direction: Direction::Both,
+            terminal: true,
         }
     }
 
@@ -86,8 +105,8 @@ pub struct SensitivityRun<const N: usize, const P: usize> {
     pub s: SMatrix<f64, N, P>,
     /// Every located event, in time order.
     pub events: Vec<EventSensitivity<N, P>>,
-    /// Why the integration stopped (a terminal event is also the last
-    /// entry of `events`).
+    /// Why the integration stopped (a terminal event other than a stop
+    /// rule is also the last entry of `events`).
     pub stop: StopReason,
     /// The integrator's work summed over the restarts.
     pub stats: Stats,
@@ -121,10 +140,30 @@ pub fn event_jump<const N: usize, const P: usize>(
 /// `g_y f = 0`.
 pub fn integrate<S, const N: usize, const P: usize, const M: usize>(
     system: &S,
+    start: (f64, SVector<f64, N>, SMatrix<f64, N, P>),
+    t_end: f64,
+    options: &Options,
+    events: Vec<SensitivityEvent<'_, N, P>>,
+) -> Result<SensitivityRun<N, P>, SensitivityError>
+where
+    S: ParameterJacobian<N, P>,
+{
+    integrate_observed::<S, N, P, M>(system, start, t_end, options, events, &mut |_, _, _| {})
+}
+
+/// [`integrate`], calling `observer` with `(t, y, ∂y/∂p)` at the start and
+/// at the end of every accepted step (a terminal event's point replaces
+/// the end of its step; a restart at an event reports that point again).
+///
+/// # Errors
+/// As [`integrate`].
+pub fn integrate_observed<S, const N: usize, const P: usize, const M: usize>(
+    system: &S,
     (t0, y0, s0): (f64, SVector<f64, N>, SMatrix<f64, N, P>),
     t_end: f64,
     options: &Options,
     events: Vec<SensitivityEvent<'_, N, P>>,
+    observer: &mut SensitivityObserver<'_, N, P>,
 ) -> Result<SensitivityRun<N, P>, SensitivityError>
 where
     S: ParameterJacobian<N, P>,
@@ -161,7 +200,14 @@ where
             });
         };
         options.max_steps = left;
-        let mut solver = Solver::<M>::new(Method::Dopri5, options.clone());
+        let var_ref = &var;
+        let observe = &mut *observer;
+        let mut solver = Solver::<M>::new(Method::Dopri5, options.clone()).with_observer(
+            move |t, z: &SVector<f64, M>| {
+                let (y, s) = var_ref.unpack(z);
+                observe(t, &y, &s);
+            },
+        );
         for e in &events {
             let g = &e.value;
             solver = solver.with_event(
@@ -171,6 +217,7 @@ where
             );
         }
         let sol = solver.solve(&var, t, z, t_end)?;
+        drop(solver);
         stats += &sol.stats;
         (t, z) = (sol.t_final, sol.x_final);
         let (y, s) = var.unpack(&z);
@@ -193,8 +240,18 @@ where
             });
         };
         let e = &events[index];
+        let Some(gradient) = &e.gradient else {
+            return Ok(SensitivityRun {
+                t,
+                y,
+                s,
+                events: hits,
+                stop: sol.stop,
+                stats,
+            });
+        };
         let f = system.rhs(te, &y);
-        let (g_y, g_p) = (e.gradient)(te, &y);
+        let (g_y, g_p) = gradient(te, &y);
         let rate = g_y.dot(&f);
         if !(rate != 0.0 && rate.is_finite()) {
             return Err(SensitivityError::TangentialEvent { index, t: te, rate });

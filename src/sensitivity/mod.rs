@@ -65,7 +65,10 @@ use nalgebra::{SMatrix, SVector};
 use crate::integrate::IntegrateError;
 use crate::system::{ModelError, OdeSystem};
 
-pub use forward::{EventSensitivity, SensitivityEvent, SensitivityRun, event_jump, integrate};
+pub use forward::{
+    EventSensitivity, SensitivityEvent, SensitivityObserver, SensitivityRun, event_jump, integrate,
+    integrate_observed,
+};
 
 /// A system whose right-hand side's derivatives with respect to `P` chosen
 /// parameters are known (for generated models: the `rhs_p` the generator

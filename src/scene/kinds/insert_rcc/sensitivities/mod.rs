@@ -84,12 +84,13 @@ pub fn check(table: &SensitivitiesTable, b: &Built) -> Result<Vec<usize>, SceneE
     }
 }
 
-/// Bytes of one step kept by the plain pass: the time and the state, twice
-/// for the vectors' growth.
-const PASS_STEP_BYTES: f64 = 2.0 * 8.0 * (1 + N_STATE) as f64;
+/// Bytes of one step kept by the sensitivity run: its time, largest
+/// contact force and wrist force, twice for the vectors' growth.
+const PASS_STEP_BYTES: f64 = 2.0 * 8.0 * 3.0;
 
-/// The work of the sensitivities, for the scene's `[limits]`: the plain
-/// pass keeps up to `integrator.max_steps` steps, and the sensitivity run
+/// The work of the sensitivities, for the scene's `[limits]`: the
+/// sensitivity run keeps three numbers of each of up to
+/// `integrator.max_steps` steps, and it
 /// takes up to `integrator.max_steps` steps of `N (1 + P)` components,
 /// counted as `(1 + P) · max_steps` steps of the model's `N` states for
 /// `P` chosen fields (as `insert_compliant` counts them).
@@ -177,28 +178,27 @@ pub fn compute(
     let seeded: [bool; N_DESIGN] = std::array::from_fn(|k| chosen.contains(&k) && !unused[k]);
     let (d, y0q) = design(scene, b, &seeded);
     let dy0 = SMatrix::<f64, N_STATE, N_DESIGN>::from_fn(|i, k| y0q[i].d[k]);
-    let pass = plain(b, integrator)?;
-    let (sys, y0, scan) = (&pass.sys, pass.y0, &pass.scan);
+    let (sys, y0, options) = plain(b, integrator);
     let (t0, t_end, seat) = (integrator.t0, integrator.t_end, b.criteria.seat_depth);
     let values = values(scene);
     let p = seeded.iter().filter(|s| **s).count();
     let control = ErrorControl::of(scene.sensitivities.as_ref());
-    let run_options = control.options(&pass.options, N_STATE, p, trajectory::M);
+    let run_options = control.options(&options, N_STATE, p, trajectory::M);
     let dir = Directions {
-        system: sys,
+        system: &sys,
         design: d,
         values,
     };
-    let result = trajectory::derivatives(&dir, (t0, y0, dy0), pass.end, seat, &run_options, scan);
-    let der = match result {
-        Ok(der) => der,
+    let result = trajectory::derivatives(&dir, (t0, y0, dy0), t_end, b.criteria, &run_options);
+    let (scan, der) = match result {
+        Ok(found) => found,
         Err(e) => return Ok((metrics::failed(chosen, &e.flag()?), None)),
     };
     let inputs = metrics::Inputs {
-        sys,
+        sys: &sys,
         design: &d,
         values: &values,
-        scan,
+        scan: &scan,
         d: &der,
         ends: (t_end, seat),
     };
@@ -206,19 +206,12 @@ pub fn compute(
     Ok((rows, Some(der.work)))
 }
 
-/// The plain pass of a scene: the system, its start, the options of the
-/// sensitivity run (before their scaling) and the pass, with the end of
-/// the sensitivity run (`t_end`, or where the pass stopped unseated).
-struct Plain {
-    sys: Insertion,
-    y0: nalgebra::SVector<f64, N_STATE>,
-    options: Options,
-    scan: trajectory::Scan,
-    end: f64,
-}
-
-/// [`Plain`] of `b` with `integrator`'s tolerances, span and step budget.
-fn plain(b: &Built, integrator: &IntegratorSpec) -> Result<Plain, RunError> {
+/// The system of `b`, its start, and the options of `integrator` (the
+/// sensitivity run's before their scaling).
+fn plain(
+    b: &Built,
+    integrator: &IntegratorSpec,
+) -> (Insertion, nalgebra::SVector<f64, N_STATE>, Options) {
     let sys = Insertion::new(b.params, Some(b.held), 0.0);
     let y0 = b.start_state(&sys);
     let options = Options {
@@ -226,20 +219,7 @@ fn plain(b: &Built, integrator: &IntegratorSpec) -> Result<Plain, RunError> {
         h0: integrator.h,
         ..Options::with_tolerances(integrator.rtol, integrator.atol)
     };
-    let t_end = integrator.t_end;
-    let scan = trajectory::scan(&sys, (integrator.t0, y0), t_end, b.criteria, &options)?;
-    let end = if scan.seated {
-        t_end
-    } else {
-        scan.times.last().copied().unwrap_or(t_end)
-    };
-    Ok(Plain {
-        sys,
-        y0,
-        options,
-        scan,
-        end,
-    })
+    (sys, y0, options)
 }
 
 /// The metrics' values of scene `scene` built into `b` by plain runs (no
@@ -255,20 +235,14 @@ pub fn metric_values(
     integrator: &IntegratorSpec,
 ) -> Result<Option<Vec<(&'static str, f64)>>, RunError> {
     let (d, _) = design(scene, b, &[false; N_DESIGN]);
-    let Plain {
-        sys,
-        y0,
-        options,
-        scan,
-        end,
-    } = plain(b, integrator)?;
+    let (sys, y0, options) = plain(b, integrator);
     let dir = Directions {
         system: &sys,
         design: d,
         values: values(scene),
     };
-    let seat = b.criteria.seat_depth;
-    match trajectory::values(&dir, (integrator.t0, y0), end, seat, &options, &scan) {
+    let start = (integrator.t0, y0);
+    match trajectory::values(&dir, start, integrator.t_end, b.criteria, &options) {
         Ok(v) => Ok(Some(
             v.into_iter()
                 .map(|(k, v)| (metrics::METRICS[k], v))

@@ -1,36 +1,43 @@
-//! The run behind an `insert_rcc` `[sensitivities]` table: a plain pass
-//! (Dormand–Prince, every step kept, the scene's terminal events) that
-//! finds the largest contact and wrist forces, the onset of two-point
-//! contact and whether the peg's bottom met a flat, then the
-//! forward-sensitivity run ([`crate::sensitivity::integrate`]) of the
-//! insertion along the design parameters ([`Directions`]), which locates,
-//! each in a window of the plain pass's steps around it:
+//! The run behind an `insert_rcc` `[sensitivities]` table: one
+//! forward-sensitivity run ([`crate::sensitivity::integrate_observed`]) of
+//! the insertion along the design parameters ([`Directions`]) with the
+//! scene's terminal events (the seating with `∂t_e/∂q`, the others as
+//! stop rules), which records at every step the largest contact and wrist
+//! forces, the onset of two-point contact and whether the peg's bottom met
+//! a flat ([`Scan`]), keeping the points where the windows around them
+//! start. Each windowed event is then located by integrating its window
+//! again from its kept start, with the run's step there:
 //!
-//! - the seating, `depth(y) = seat_depth` (terminal): `∂t_e/∂q`;
 //! - the onset of two-point contact, the gap of the pair that closes it
 //!   at its stationary angle crossing zero: `∂t_e/∂q`;
 //! - each peak, `dF/dt = F_y f + F_t = 0` falling: its derivative
 //!   `F_y s + F_q` there (the peak time's own change drops out).
 //!
-//! The run's restarts at the events share one step budget,
-//! `integrator.max_steps`.
+//! The plain run of [`values`] does the same without sensitivities, so
+//! that differences of its metrics check the derivatives. With the error
+//! controlled on the state only, both runs take the same steps.
 
 use nalgebra::{SMatrix, SVector};
 
 use crate::compliant_peg_3d::Pair;
 use crate::compliant_peg_3d::design::{Design, Directions, N_DESIGN};
 use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, depth_tilt, peg_state};
-use crate::compliant_peg_3d::outcome::{Criteria, counts, terminal_events, two_point_counts};
+use crate::compliant_peg_3d::outcome::{Criteria, counts, terminal_conditions, two_point_counts};
 use crate::integrate::{Direction, Event, Method, Options, OutputMode, Solver, StopReason};
-use crate::scene::shared::sensitivities::{self, StopOrError};
-use crate::sensitivity::{EventSensitivity, SensitivityError, SensitivityEvent, integrate};
+use crate::scene::shared::sensitivities::StopOrError;
+use crate::sensitivity::{
+    EventSensitivity, SensitivityError, SensitivityEvent, integrate, integrate_observed,
+};
 use crate::system::OdeSystem;
 
 /// Components of the sensitivity run: the state and one column per design
 /// parameter.
 pub(super) const M: usize = N_STATE * (1 + N_DESIGN);
 
-/// The windowed events, in the order of [`Scan::windows`].
+/// The sensitivities of a point of the run.
+type Columns = SMatrix<f64, N_STATE, N_DESIGN>;
+
+/// The windowed events.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(super) enum Watch {
     /// The largest contact normal force.
@@ -42,7 +49,7 @@ pub(super) enum Watch {
     TwoPoint(Pair, u64),
 }
 
-/// A peak over the plain pass's steps.
+/// A peak over the run's steps.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) struct Peak {
     /// The step.
@@ -53,10 +60,10 @@ pub(super) struct Peak {
     pub runner_up: f64,
 }
 
-/// What the plain pass found.
+/// What the run found at its steps.
 #[derive(Clone, Debug, PartialEq)]
 pub(super) struct Scan {
-    /// The pass's step times.
+    /// The run's step times.
     pub times: Vec<f64>,
     /// The largest contact normal force.
     pub contact: Option<Peak>,
@@ -70,9 +77,9 @@ pub(super) struct Scan {
     pub two_point_lost: Option<f64>,
     /// The first time the peg's bottom lay on a flat as a ring (s).
     pub ring: Option<f64>,
-    /// Whether the pass ended seated.
+    /// Whether the run ended seated.
     pub seated: bool,
-    /// How the pass ended.
+    /// How the run ended.
     pub stop: StopReason,
 }
 
@@ -84,7 +91,7 @@ pub(super) struct Derivatives {
     /// The final state.
     pub y: SVector<f64, N_STATE>,
     /// `d y(T)/dq` (along the seating's moving time when seated).
-    pub dy: SMatrix<f64, N_STATE, N_DESIGN>,
+    pub dy: Columns,
     /// The seating.
     pub seated: Option<EventSensitivity<N_STATE, N_DESIGN>>,
     /// The onset of two-point contact.
@@ -93,7 +100,8 @@ pub(super) struct Derivatives {
     pub contact: Option<(f64, f64, SVector<f64, N_DESIGN>)>,
     /// The largest wrist force: time, value (N), derivative.
     pub wrist: Option<(f64, f64, SVector<f64, N_DESIGN>)>,
-    /// Accepted steps and evaluations of the variational right-hand side.
+    /// Accepted steps and evaluations of the variational right-hand side
+    /// (the run and its windows).
     pub work: (usize, usize),
 }
 
@@ -117,41 +125,92 @@ fn peak(v: &[f64]) -> Option<Peak> {
     })
 }
 
-/// The plain pass from `(t0, y0)` to `t_end` with `options` and the
-/// scene's terminal events of `criteria`.
-///
-/// # Errors
-/// The integrator's refusal.
-pub(super) fn scan(
-    sys: &Insertion,
-    (t0, y0): (f64, SVector<f64, N_STATE>),
-    t_end: f64,
-    criteria: Criteria,
-    options: &Options,
-) -> Result<Scan, SensitivityError> {
-    let mut options = options.clone();
-    options.output = OutputMode::EveryStep;
-    options.store = true;
-    let mut solver = Solver::<N_STATE>::new(Method::Dopri5, options);
-    for e in terminal_events(sys, criteria) {
-        solver = solver.with_event(e);
+/// A reported point of a run: its step, time, state and what else the run
+/// carries there (the sensitivities, or nothing).
+#[derive(Clone, Debug)]
+struct Point<X> {
+    step: usize,
+    t: f64,
+    y: SVector<f64, N_STATE>,
+    x: X,
+}
+
+/// Watches a run's reported points: the forces and contacts of
+/// [`Scan`], and the points where the windows of its events start (the
+/// step before the largest force so far; two steps before the first in
+/// two-point contact).
+struct Tracker<'a, X> {
+    sys: &'a Insertion,
+    times: Vec<f64>,
+    contact: Vec<f64>,
+    wrist: Vec<f64>,
+    /// The last two points, newest first.
+    recent: Vec<Point<X>>,
+    contact_from: Option<Point<X>>,
+    wrist_from: Option<Point<X>>,
+    two_point: Option<(usize, Pair, f64)>,
+    two_point_from: Option<Point<X>>,
+    lost: Option<f64>,
+    ring: Option<f64>,
+    was: bool,
+}
+
+/// Where the windows start: the kept points of [`Tracker`].
+struct Starts<X> {
+    contact: Option<Point<X>>,
+    wrist: Option<Point<X>>,
+    two_point: Option<Point<X>>,
+}
+
+impl<'a, X: Clone> Tracker<'a, X> {
+    fn new(sys: &'a Insertion) -> Self {
+        Tracker {
+            sys,
+            times: Vec::new(),
+            contact: Vec::new(),
+            wrist: Vec::new(),
+            recent: Vec::with_capacity(3),
+            contact_from: None,
+            wrist_from: None,
+            two_point: None,
+            two_point_from: None,
+            lost: None,
+            ring: None,
+            was: false,
+        }
     }
-    let sol = solver.solve(sys, t0, y0, t_end)?;
-    let (mut contact, mut wrist) = (Vec::new(), Vec::new());
-    let (mut two_point, mut lost, mut ring) = (None, None, None);
-    let mut was = false;
-    for (k, (t, y)) in sol.t.iter().zip(&sol.x).enumerate() {
+
+    /// Takes the point `(t, y)` carrying `x`; a point not after the last
+    /// (a restart's repeat) is skipped.
+    fn observe(&mut self, t: f64, y: &SVector<f64, N_STATE>, x: &X) {
+        if self.times.last().is_some_and(|last| t <= *last) {
+            return;
+        }
+        let sys = self.sys;
+        let k = self.times.len();
         let ys = peg_state(y);
         let forces = sys.peg.forces(&ys).unwrap_or_default();
-        contact.push(forces.iter().map(|f| f.normal_force).fold(0.0, f64::max));
-        wrist.push(sys.wrist_load(*t, &ys).map_or(0.0, |(_, l)| l.force.norm()));
-        if ring.is_none() && forces.iter().any(|f| f.contact.ring) {
-            ring = Some(*t);
+        let contact = forces.iter().map(|f| f.normal_force).fold(0.0, f64::max);
+        let wrist = sys.wrist_load(t, &ys).map_or(0.0, |(_, l)| l.force.norm());
+        // The largest so far, the later of equals (as `peak` chooses).
+        let best = |v: &[f64], now: f64| now > 0.0 && v.iter().all(|b| now >= *b);
+        if best(&self.contact, contact) {
+            self.contact_from = self.recent.first().cloned();
+        }
+        if best(&self.wrist, wrist) {
+            self.wrist_from = self.recent.first().cloned();
+        }
+        if self.ring.is_none() && forces.iter().any(|f| f.contact.ring) {
+            self.ring = Some(t);
         }
         let found = counts(&forces.iter().map(|f| f.contact).collect::<Vec<_>>());
         let now = two_point_counts(&found);
-        if now && !was && two_point.is_none() && k > 0 {
-            let before = counts(&sys.contacts(&sol.x[k - 1]));
+        if now
+            && !self.was
+            && self.two_point.is_none()
+            && let Some(previous) = self.recent.first()
+        {
+            let before = counts(&sys.contacts(&previous.y));
             // The pair that closed it: absent a step before (the shallower
             // of the two when both closed within one step).
             let new = [Pair::EdgeSide, Pair::RimWall]
@@ -166,134 +225,172 @@ pub(super) fn scan(
                 })
                 .min_by(|a, b| a.2.total_cmp(&b.2));
             if let Some((p, angle, _)) = new {
-                two_point = Some((k, p, angle));
+                self.two_point = Some((k, p, angle));
+                self.two_point_from = self.recent.last().cloned();
             }
         }
-        if was && !now && two_point.is_some() && lost.is_none() {
-            lost = Some(*t);
+        if self.was && !now && self.two_point.is_some() && self.lost.is_none() {
+            self.lost = Some(t);
         }
-        was = now;
+        self.was = now;
+        self.times.push(t);
+        self.contact.push(contact);
+        self.wrist.push(wrist);
+        self.recent.insert(
+            0,
+            Point {
+                step: k,
+                t,
+                y: *y,
+                x: x.clone(),
+            },
+        );
+        self.recent.truncate(2);
     }
-    let seated = matches!(sol.stop, StopReason::Event { index: 0, .. });
-    Ok(Scan {
-        contact: peak(&contact),
-        wrist: peak(&wrist),
-        two_point,
-        two_point_lost: lost,
-        ring,
-        seated,
-        stop: sol.stop,
-        times: sol.t,
-    })
+
+    /// The scan of the run that ended with `stop`, and the windows'
+    /// starts (a start that is not the step its window needs is dropped).
+    fn finish(self, stop: StopReason) -> (Scan, Starts<X>) {
+        let scan = Scan {
+            contact: peak(&self.contact),
+            wrist: peak(&self.wrist),
+            two_point: self.two_point,
+            two_point_lost: self.lost,
+            ring: self.ring,
+            seated: matches!(stop, StopReason::Event { index: 0, .. }),
+            stop,
+            times: self.times,
+        };
+        let at = |p: Option<Point<X>>, step: Option<usize>| {
+            p.filter(|p| step.is_some_and(|s| s > 0 && p.step == s - 1))
+        };
+        let starts = Starts {
+            contact: at(self.contact_from, scan.contact.map(|p| p.step)),
+            wrist: at(self.wrist_from, scan.wrist.map(|p| p.step)),
+            two_point: self.two_point_from.filter(|p| {
+                scan.two_point
+                    .is_some_and(|(k, ..)| p.step == k.saturating_sub(2))
+            }),
+        };
+        (scan, starts)
+    }
 }
 
-/// The windowed events of `scan`: each with the span of the plain pass's
-/// steps in which it is armed; a peak on the start or the end is read
-/// there instead.
-fn windows(scan: &Scan) -> Vec<(Watch, f64, f64)> {
+/// The windows of `scan` with their kept starts: each watch, the point
+/// its window starts from, the step the run took there and the window's
+/// end (one step past a peak; the first step in two-point contact). A
+/// peak on the start or the end has none: it is read there.
+fn windows<X>(scan: &Scan, starts: Starts<X>) -> Vec<(Watch, Point<X>, f64, f64)> {
     let t = &scan.times;
     let last = t.len().saturating_sub(1);
     let mut out = Vec::new();
-    for (watch, p) in [
-        (Watch::ContactPeak, scan.contact),
-        (Watch::WristPeak, scan.wrist),
+    let step = |p: &Point<X>| t.get(p.step + 1).map_or(0.0, |next| next - p.t);
+    for (watch, peak, start) in [
+        (Watch::ContactPeak, scan.contact, starts.contact),
+        (Watch::WristPeak, scan.wrist, starts.wrist),
     ] {
-        if let Some(p) = p
-            && p.step > 0
+        if let (Some(p), Some(start)) = (peak, start)
             && p.step < last
         {
-            out.push((watch, t[p.step - 1], t[p.step + 1]));
+            let h = step(&start);
+            out.push((watch, start, h, t[p.step + 1]));
         }
     }
-    if let Some((k, pair, angle)) = scan.two_point {
-        out.push((
-            Watch::TwoPoint(pair, angle.to_bits()),
-            t[k.saturating_sub(2)],
-            t[k],
-        ));
+    if let (Some((k, pair, angle)), Some(start)) = (scan.two_point, starts.two_point) {
+        let h = step(&start);
+        out.push((Watch::TwoPoint(pair, angle.to_bits()), start, h, t[k]));
     }
     out
 }
 
-/// The sensitivity run of `dir` from `(t0, y0, ∂y₀/∂q)` to `t_end`, the
-/// seating at `seat` (m), with the windows of `scan`; `M = N (1 + P)`.
+/// The options of a window's run: `options` starting with the step `h`
+/// the run took there.
+fn window_options(options: &Options, h: f64) -> Options {
+    Options {
+        h0: (h > 0.0).then_some(h),
+        ..options.clone()
+    }
+}
+
+/// The sensitivity run of `dir` from `(t0, y0, ∂y₀/∂q)` to `t_end` with
+/// the terminal events of `criteria` (the seating with its derivatives),
+/// then its windows: the scan and the derivatives.
 ///
 /// # Errors
 /// [`StopOrError`] when the integrator stops short or refuses.
 pub(super) fn derivatives(
     dir: &Directions<'_>,
-    start: (f64, SVector<f64, N_STATE>, SMatrix<f64, N_STATE, N_DESIGN>),
+    start: (f64, SVector<f64, N_STATE>, Columns),
     t_end: f64,
-    seat: f64,
+    criteria: Criteria,
     options: &Options,
-    scan: &Scan,
-) -> Result<Derivatives, StopOrError> {
+) -> Result<(Scan, Derivatives), StopOrError> {
     let sys = dir.system;
     let d = &dir.design;
-    let prm = sys.peg.params;
-    let seated = || {
-        SensitivityEvent::new(
-            move |_, y: &SVector<f64, N_STATE>| depth_tilt(&prm, &peg_state(y)).0 - seat,
-            move |_, y| {
+    let mut events = Vec::new();
+    for (k, g) in terminal_conditions(sys, criteria).into_iter().enumerate() {
+        let event = if k == 0 {
+            SensitivityEvent::new(g, move |_, y| {
                 let (_, g_y, g_q) = sys.depth_gradient(y, d);
                 (g_y, g_q)
-            },
-        )
-        .direction(Direction::Rising)
-        .terminal()
-    };
-    let windows = windows(scan);
+            })
+            .terminal()
+        } else {
+            SensitivityEvent::stop(g)
+        };
+        events.push(event.direction(Direction::Rising));
+    }
+    let mut tracker = Tracker::<Columns>::new(sys);
+    let run = integrate_observed::<_, N_STATE, N_DESIGN, M>(
+        dir,
+        start,
+        t_end,
+        options,
+        events,
+        &mut |t, y, s| tracker.observe(t, y, s),
+    )?;
+    match run.stop {
+        StopReason::ReachedEnd | StopReason::Event { .. } => {}
+        other => return Err(StopOrError::Stopped(other)),
+    }
+    let (scan, starts) = tracker.finish(run.stop);
+    let seated = run.events.into_iter().find(|e| e.index == 0);
     let mut out = Derivatives {
-        t: start.0,
-        y: start.1,
-        dy: start.2,
-        seated: None,
+        t: run.t,
+        y: run.y,
+        dy: seated.as_ref().map_or(run.s, |e| e.state_at_event()),
+        seated,
         two_point: None,
         contact: None,
         wrist: None,
-        work: (0, 0),
+        work: (run.stats.steps, run.stats.rhs_calls),
     };
-    let mut done: Vec<Watch> = Vec::new();
-    let mut cur = start;
-    let mut attempts = 0;
-    'legs: for to in cuts(&windows, t_end) {
-        while cur.0 < to {
-            let armed = armed(&windows, cur.0, to, &done);
-            let mut events = vec![seated()];
-            events.extend(armed.iter().map(|w| watch_event(dir, *w)));
-            let leg = sensitivities::leg(options, attempts, cur.0)?;
-            let run = integrate::<_, N_STATE, N_DESIGN, M>(dir, cur, to, &leg, events)?;
-            out.work.0 += run.stats.steps;
-            out.work.1 += run.stats.rhs_calls;
-            attempts += run.stats.steps + run.stats.rejected;
-            cur = (run.t, run.y, run.s);
-            for e in run.events {
-                if e.index == 0 {
-                    out.seated = Some(e);
-                    break 'legs;
+    for (watch, from, h, to) in windows(&scan, starts) {
+        let leg = window_options(options, h);
+        let w = integrate::<_, N_STATE, N_DESIGN, M>(
+            dir,
+            (from.t, from.y, from.x),
+            to,
+            &leg,
+            vec![watch_event(dir, watch)],
+        )?;
+        out.work.0 += w.stats.steps;
+        out.work.1 += w.stats.rhs_calls;
+        let Some(e) = w.events.into_iter().next() else {
+            continue;
+        };
+        match watch {
+            Watch::TwoPoint(..) => out.two_point = Some(e),
+            Watch::ContactPeak | Watch::WristPeak => {
+                let found = peak_at(sys, d, watch, (e.t, &e.y, &e.s));
+                if watch == Watch::ContactPeak {
+                    out.contact = found;
+                } else {
+                    out.wrist = found;
                 }
-                let w = armed[e.index - 1];
-                done.push(w);
-                match w {
-                    Watch::TwoPoint(..) => out.two_point = Some(e),
-                    Watch::ContactPeak => {
-                        out.contact = peak_at(sys, d, w, (e.t, &e.y, &e.s));
-                    }
-                    Watch::WristPeak => out.wrist = peak_at(sys, d, w, (e.t, &e.y, &e.s)),
-                }
-            }
-            match run.stop {
-                StopReason::ReachedEnd | StopReason::Event { .. } => {}
-                other => return Err(StopOrError::Stopped(other)),
             }
         }
     }
-    out.t = cur.0;
-    out.y = cur.1;
-    out.dy = match &out.seated {
-        Some(e) => e.state_at_event(),
-        None => cur.2,
-    };
     let last = scan.times.len().saturating_sub(1);
     let dt_end = out.seated.as_ref().map_or(SVector::zeros(), |e| e.dt_dp);
     // A peak on the start or the end: read there.
@@ -320,7 +417,7 @@ pub(super) fn derivatives(
             }
         }
     }
-    Ok(out)
+    Ok((scan, out))
 }
 
 /// The peak of `watch` at `(t, y)` (the largest contact force, or the
@@ -399,10 +496,10 @@ fn watch_event<'a>(dir: &'a Directions<'a>, w: Watch) -> SensitivityEvent<'a, N_
     event.direction(Direction::Falling).terminal()
 }
 
-/// The metrics' values of a plain run (no sensitivities) with the events
-/// of [`derivatives`]: the seat time, the final depth, the peaks, the
-/// two-point onset's time and depth, each with its index in
-/// [`super::metrics::METRICS`].
+/// The metrics' values of the plain run of [`derivatives`] (no
+/// sensitivities: the same terminal events, the same windows): the seat
+/// time, the final depth, the peaks, the two-point onset's time and
+/// depth, each with its index in [`super::metrics::METRICS`].
 ///
 /// # Errors
 /// [`StopOrError`] when the integrator stops short or refuses.
@@ -410,76 +507,81 @@ pub(super) fn values(
     dir: &Directions<'_>,
     start: (f64, SVector<f64, N_STATE>),
     t_end: f64,
-    seat: f64,
+    criteria: Criteria,
     options: &Options,
-    scan: &Scan,
 ) -> Result<Vec<(usize, f64)>, StopOrError> {
     let sys = dir.system;
     let d = &dir.design;
     let prm = sys.peg.params;
-    let windows = windows(scan);
+    let plain = |options: Options| {
+        Solver::<N_STATE>::new(
+            Method::Dopri5,
+            Options {
+                output: OutputMode::EveryStep,
+                store: false,
+                ..options
+            },
+        )
+    };
+    let mut tracker = Tracker::<()>::new(sys);
+    let sol = {
+        let mut solver = plain(options.clone()).with_observer(|t, y: &SVector<f64, N_STATE>| {
+            tracker.observe(t, y, &());
+        });
+        for g in terminal_conditions(sys, criteria) {
+            solver = solver.with_event(Event::new(g).direction(Direction::Rising).terminal());
+        }
+        solver
+            .solve(sys, start.0, start.1, t_end)
+            .map_err(|e| StopOrError::Error(SensitivityError::from(e)))?
+    };
+    match sol.stop {
+        StopReason::ReachedEnd | StopReason::Event { .. } => {}
+        other => return Err(StopOrError::Stopped(other)),
+    }
+    let (scan, starts) = tracker.finish(sol.stop);
+    let end = (sol.t_final, sol.x_final);
     let mut out = Vec::new();
-    let mut done: Vec<Watch> = Vec::new();
-    let mut cur = start;
-    'legs: for to in cuts(&windows, t_end) {
-        while cur.0 < to {
-            let armed: Vec<Watch> = armed(&windows, cur.0, to, &done);
-            let mut solver = Solver::<N_STATE>::new(Method::Dopri5, options.clone()).with_event(
-                Event::new(move |_, y: &SVector<f64, N_STATE>| {
-                    depth_tilt(&prm, &peg_state(y)).0 - seat
-                })
-                .direction(Direction::Rising)
+    if scan.seated {
+        out.push((0, end.0));
+    }
+    out.push((1, depth_tilt(&prm, &peg_state(&end.1)).0));
+    for (watch, from, h, to) in windows(&scan, starts) {
+        let mut solver = plain(window_options(options, h)).with_event(
+            Event::new(watch_value(dir, watch))
+                .direction(Direction::Falling)
                 .terminal(),
-            );
-            for w in &armed {
-                solver = solver.with_event(
-                    Event::new(watch_value(dir, *w))
-                        .direction(Direction::Falling)
-                        .terminal(),
-                );
+        );
+        let w = solver
+            .solve(sys, from.t, from.y, to)
+            .map_err(|e| StopOrError::Error(SensitivityError::from(e)))?;
+        let StopReason::Event { t, .. } = w.stop else {
+            continue;
+        };
+        let y = &w.x_final;
+        match watch {
+            Watch::ContactPeak => {
+                if let Ok(Some((_, f))) = sys.peak_contact(y) {
+                    out.push((2, f));
+                }
             }
-            let sol = solver
-                .solve(sys, cur.0, cur.1, to)
-                .map_err(|e| StopOrError::Error(e.into()))?;
-            cur = (sol.t_final, sol.x_final);
-            match sol.stop {
-                StopReason::ReachedEnd => {}
-                StopReason::Event { index: 0, t } => {
-                    out.push((0, t));
-                    break 'legs;
+            Watch::WristPeak => {
+                if let Some((f, ..)) = sys.wrist_force_gradient(t, y, d) {
+                    out.push((3, f));
                 }
-                StopReason::Event { index, t } => {
-                    let w = armed[index - 1];
-                    done.push(w);
-                    let y = &sol.x_final;
-                    match w {
-                        Watch::ContactPeak => {
-                            if let Ok(Some((_, f))) = sys.peak_contact(y) {
-                                out.push((2, f));
-                            }
-                        }
-                        Watch::WristPeak => {
-                            if let Some((f, ..)) = sys.wrist_force_gradient(t, y, d) {
-                                out.push((3, f));
-                            }
-                        }
-                        Watch::TwoPoint(..) => {
-                            out.push((4, t));
-                            out.push((5, depth_tilt(&prm, &peg_state(y)).0));
-                        }
-                    }
-                }
-                other => return Err(StopOrError::Stopped(other)),
+            }
+            Watch::TwoPoint(..) => {
+                out.push((4, t));
+                out.push((5, depth_tilt(&prm, &peg_state(y)).0));
             }
         }
     }
-    out.push((1, depth_tilt(&prm, &peg_state(&cur.1)).0));
     let last = scan.times.len().saturating_sub(1);
     for (k, p) in [(2, scan.contact), (3, scan.wrist)] {
         if let Some(p) = p
             && (p.step == 0 || p.step == last)
         {
-            let (t, y) = if p.step == 0 { start } else { cur };
+            let (t, y) = if p.step == 0 { start } else { end };
             let f = if k == 2 {
                 sys.peak_contact(&y).ok().flatten().map(|(_, f)| f)
             } else {
@@ -488,24 +590,6 @@ pub(super) fn values(
             out.extend(f.map(|f| (k, f)));
         }
     }
+    out.sort_by_key(|(k, _)| *k);
     Ok(out)
-}
-
-/// The legs' ends: the windows' ends, then `t_end`, in order.
-fn cuts(windows: &[(Watch, f64, f64)], t_end: f64) -> Vec<f64> {
-    let mut cuts: Vec<f64> = windows.iter().flat_map(|w| [w.1, w.2]).collect();
-    cuts.push(t_end);
-    cuts.sort_by(f64::total_cmp);
-    cuts.dedup();
-    cuts
-}
-
-/// The watches armed on a leg from `from` to `to`: those whose window
-/// covers it and that have not fired.
-fn armed(windows: &[(Watch, f64, f64)], from: f64, to: f64, done: &[Watch]) -> Vec<Watch> {
-    windows
-        .iter()
-        .filter(|w| w.1 <= from && to <= w.2 && !done.contains(&w.0))
-        .map(|w| w.0)
-        .collect()
 }
