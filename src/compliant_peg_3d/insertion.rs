@@ -263,6 +263,40 @@ impl Insertion {
         (p0, skipped)
     }
 
+    /// The largest Hertz pressure `p₀` (Pa) of `sample`'s contacts whose
+    /// pressure may exceed `floor`: each contact is screened with the
+    /// Hamrock–Brewe fits and evaluated exactly (as in
+    /// [`Insertion::peak_pressure`]) only where the fitted pressure is at
+    /// least half of `floor`, so that a run can take its peak at every
+    /// step for little more than its forces; 0 when none may.
+    pub fn peak_pressure_above(
+        &self,
+        y: &SVector<f64, N_STATE>,
+        sample: &Sample,
+        floor: f64,
+    ) -> f64 {
+        let prm = &self.peg.params;
+        let m = motion(&peg_state(y));
+        let axis = m.orientation * Vector3::z();
+        let mut p0 = 0.0_f64;
+        for f in &sample.forces {
+            let c = &f.contact;
+            let curv = curvature::at(prm, c, &m.centre, &axis);
+            let (m1, m2) = match c.pair {
+                Pair::EdgeSide => (&prm.hole_material, &prm.peg_material),
+                _ => (&prm.peg_material, &prm.hole_material),
+            };
+            let fitted = HertzContact::try_new(&curv, m1, m2, EllipticityMethod::HamrockBrewe)
+                .map_or(f64::INFINITY, |h| h.max_pressure(f.normal_force));
+            if fitted >= 0.5 * floor
+                && let Ok(h) = HertzContact::try_new(&curv, m1, m2, EllipticityMethod::Exact)
+            {
+                p0 = p0.max(h.max_pressure(f.normal_force));
+            }
+        }
+        p0
+    }
+
     /// The start state of a held peg already in the bore: aligned with the
     /// hole's axis and centred, its tip `depth` (m) below the top face,
     /// moving down with the robot frame's axial velocity; the wrist

@@ -73,6 +73,7 @@ pub struct Solver<'a, const N: usize> {
     events: Vec<Event<'a, N>>,
     progress: Option<Box<ProgressFn<'a>>>,
     observer: Option<Box<ObserverFn<'a, N>>>,
+    step: Option<Box<ObserverFn<'a, N>>>,
     interrupt: Option<Interrupt>,
 }
 
@@ -85,6 +86,7 @@ impl<'a, const N: usize> Solver<'a, N> {
             events: Vec::new(),
             progress: None,
             observer: None,
+            step: None,
             interrupt: None,
         }
     }
@@ -105,6 +107,14 @@ impl<'a, const N: usize> Solver<'a, N> {
     /// Sets the observer (every reported point, e.g. to stream CSV rows).
     pub fn with_observer(mut self, observer: impl FnMut(f64, &SVector<f64, N>) + 'a) -> Self {
         self.observer = Some(Box::new(observer));
+        self
+    }
+
+    /// Sets the step observer: the end of every accepted step (for a step
+    /// a terminal event ends, the event's point), whatever the output
+    /// mode, e.g. to take a peak that falls between two output times.
+    pub fn with_step_observer(mut self, step: impl FnMut(f64, &SVector<f64, N>) + 'a) -> Self {
+        self.step = Some(Box::new(step));
         self
     }
 
@@ -143,6 +153,10 @@ impl<'a, const N: usize> Solver<'a, N> {
                 .map(|p| p as &mut dyn FnMut(f64)),
             observer: self
                 .observer
+                .as_deref_mut()
+                .map(|o| o as &mut dyn FnMut(f64, &SVector<f64, N>)),
+            step: self
+                .step
                 .as_deref_mut()
                 .map(|o| o as &mut dyn FnMut(f64, &SVector<f64, N>)),
             interrupt: self.interrupt.as_ref(),

@@ -14,10 +14,11 @@ use super::solution::{EventHit, Stats, StopReason};
 use super::step_control::{PiController, error_norm};
 
 /// Callbacks: progress after every accepted step, observer for every
-/// reported point.
+/// reported point, step observer at the end of every accepted step.
 pub(crate) struct Hooks<'h, const N: usize> {
     pub(crate) progress: Option<&'h mut dyn FnMut(f64)>,
     pub(crate) observer: Option<&'h mut super::ObserverFn<'h, N>>,
+    pub(crate) step: Option<&'h mut super::ObserverFn<'h, N>>,
     /// A stop request looked at before every attempted step.
     pub(crate) interrupt: Option<&'h super::Interrupt>,
 }
@@ -324,6 +325,9 @@ impl<'r, 'e, 'h, const N: usize> State<'r, 'e, 'h, N> {
             let hit = self.found[p].clone();
             self.recorder.advance(hit.t, &hit.x, dense, self.hooks);
             self.solution_events.append(&mut self.found);
+            if let Some(step) = self.hooks.step.as_mut() {
+                step(hit.t, &hit.x);
+            }
             if let Some(progress) = self.hooks.progress.as_mut() {
                 progress(hit.t);
             }
@@ -337,6 +341,9 @@ impl<'r, 'e, 'h, const N: usize> State<'r, 'e, 'h, N> {
         self.solution_events.append(&mut self.found);
 
         self.recorder.advance(t1, &x1, dense, self.hooks);
+        if let Some(step) = self.hooks.step.as_mut() {
+            step(t1, &x1);
+        }
         if let Some(progress) = self.hooks.progress.as_mut() {
             progress(t1);
         }

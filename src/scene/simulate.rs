@@ -52,8 +52,26 @@ pub fn integrate<'a, const N: usize, S: OdeSystem<N>>(
     events: Vec<Event<'a, N>>,
     progress: &'a mut Progress,
 ) -> Result<Solution<N>, RunError> {
-    let mut solver =
-        configured(spec, events, true, progress)?.with_progress(|t| progress.update(t));
+    integrate_watching(system, x0, spec, events, progress, |_, _| {})
+}
+
+/// As [`integrate`], calling `on_step` with the end of every accepted step
+/// (a terminal event's point for the step it ends), e.g. to take peaks
+/// that fall between two output times.
+///
+/// # Errors
+/// [`RunError::Integrate`] when the integrator rejects its input.
+pub fn integrate_watching<'a, const N: usize, S: OdeSystem<N>>(
+    system: &S,
+    x0: SVector<f64, N>,
+    spec: &IntegratorSpec,
+    events: Vec<Event<'a, N>>,
+    progress: &'a mut Progress,
+    on_step: impl FnMut(f64, &SVector<f64, N>) + 'a,
+) -> Result<Solution<N>, RunError> {
+    let mut solver = configured(spec, events, true, progress)?
+        .with_progress(|t| progress.update(t))
+        .with_step_observer(on_step);
     let mut sol = interrupted(solver.solve(system, spec.t0, x0, spec.t_end)?)?;
     with_final_sample(&mut sol);
     Ok(sol)

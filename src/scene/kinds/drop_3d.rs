@@ -52,10 +52,11 @@ use crate::scene::integrator::DefaultMethod;
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::kind::{Kind, Scene, Written};
 use crate::scene::ranges::FieldRange;
+use crate::scene::shared::compliant_peg_3d::insertion::RunPeaks;
 use crate::scene::shared::compliant_peg_3d::tables::PegTable;
 use crate::scene::shared::compliant_peg_3d::{output, ranges};
 use crate::scene::shared::replay::{self as shared_replay, ReplayTable};
-use crate::scene::simulate::{integrate, integration_summary};
+use crate::scene::simulate::{integrate_watching, integration_summary};
 use crate::scene::summary::{Metric, RunSummary};
 use crate::scene::validate::Checker;
 use crate::system::ModelError;
@@ -257,12 +258,14 @@ impl Scene for Ready {
         // the contacts its last right-hand side found there.
         let cache = CountCache::new(&sys);
         let (events, what) = transition_events(&cache);
-        let sol = integrate(
+        let mut steps = RunPeaks::default();
+        let sol = integrate_watching(
             &sys,
             self.start,
             &self.integrator,
             events,
             &mut ctx.progress,
+            |t, y: &SVector<f64, N_STATE>| steps.include(&sys, t, y),
         )?;
         if let Some(ModelError::Hertz(e)) = sol.model_error.clone() {
             return Err(
@@ -283,7 +286,7 @@ impl Scene for Ready {
             ..RunSummary::default()
         };
         let samples = output::samples(&sys, &sol)?;
-        let peaks = output::write_series(ctx, &sys, &samples, &sol.events)?;
+        let peaks = output::write_series(ctx, &sys, &samples, &sol.events, &steps)?;
         let rows = output::transitions(&sys, &sol, &what);
         output::write_events(ctx, &sys, &rows)?;
         let mut fig = Figure::new();

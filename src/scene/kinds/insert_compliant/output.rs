@@ -39,16 +39,19 @@ const HEADER: [&str; 16] = [
 /// Writes `<name>.csv` and `<name>.svg` and adds the run's metrics
 /// (energy-balance drift, peak forces and pressures) to `out`.
 /// `sample` gives the contact and energy quantities of a state (of either
-/// friction law's system).
+/// friction law's system); `(f_max, p_max)` are the largest contact force
+/// (N) and Hertz pressure (Pa) over the ends of the run's accepted steps,
+/// which the peaks over the samples extend.
 pub fn write_outputs<const N: usize>(
     ctx: &RunContext,
     sample: impl Fn(&SVector<f64, N>) -> Sample,
     sol: &Solution<N>,
+    (f_max, p_max): (f64, f64),
     out: &mut RunSummary,
 ) -> Result<(), RunError> {
     let mut csv = ctx.table(Part::Main, &HEADER)?;
     let mut cols: Vec<Vec<(f64, f64)>> = vec![Vec::new(); HEADER.len()];
-    let (mut drift, mut work_scale, mut f_max, mut p_max) = (0.0_f64, 0.0_f64, 0.0_f64, 0.0_f64);
+    let (mut drift, mut work_scale, mut f_max, mut p_max) = (0.0_f64, 0.0_f64, f_max, p_max);
     let h0 = sol.x.first().map(|y| sample(y).balance()).unwrap_or(0.0);
     for (&t, y) in sol.t.iter().zip(&sol.x) {
         let s = sample(y);

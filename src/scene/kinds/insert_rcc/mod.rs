@@ -176,7 +176,7 @@ impl Scene for Ready {
             ..RunSummary::default()
         };
         let samples = output::samples(sys, sol)?;
-        let peaks = output::write_series(ctx, sys, &samples, &sol.events)?;
+        let peaks = output::write_series(ctx, sys, &samples, &sol.events, &run.steps)?;
         let rows = output::transitions(sys, sol, &run.transitions);
         output::write_events(ctx, sys, &rows)?;
         let mm = 1e3;

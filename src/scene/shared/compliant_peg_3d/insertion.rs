@@ -25,7 +25,7 @@ use crate::scene::numbers::significant;
 use crate::scene::progress::Progress;
 use crate::scene::shared::replay::ReplayTable;
 use crate::scene::shared::sensitivities::SensitivitiesTable;
-use crate::scene::simulate::{describe_stop, integrate};
+use crate::scene::simulate::{describe_stop, integrate_watching};
 use crate::scene::validate::Checker;
 use crate::system::ModelError;
 
@@ -266,6 +266,8 @@ pub struct Run {
     pub outcome: Outcome,
     /// The transition events' meaning.
     pub transitions: Vec<crate::compliant_peg_3d::outcome::Transition>,
+    /// The peaks over the ends of every accepted step.
+    pub steps: RunPeaks,
 }
 
 /// Integrates one insertion with its terminal and (if `track`) contact
@@ -281,6 +283,7 @@ pub fn run_one(
 ) -> Result<Run, RunError> {
     let sys = Insertion::new(b.params, Some(b.held), 0.0);
     let y0 = b.start_state(&sys);
+    let mut steps = RunPeaks::default();
     let (solution, what) = {
         // The counts share the run's search: at a step's end they take
         // the contacts its last right-hand side found there.
@@ -292,7 +295,11 @@ pub fn run_one(
             events.extend(ev);
             what = w;
         }
-        (integrate(&sys, y0, spec, events, progress)?, what)
+        let on_step = |t, y: &SVector<f64, N_STATE>| steps.include(&sys, t, y);
+        (
+            integrate_watching(&sys, y0, spec, events, progress, on_step)?,
+            what,
+        )
     };
     if let Some(ModelError::Hertz(e)) = solution.model_error.clone() {
         return Err(start::hertz_refusal(&b.params, solution.t_final, e));
@@ -346,11 +353,13 @@ pub fn run_one(
         solution,
         outcome,
         transitions: what,
+        steps,
     })
 }
 
-/// The largest values along one insertion, over its stored samples (which
-/// end with the final state) and its located events.
+/// The largest values along one insertion: over the ends of its accepted
+/// steps, its stored samples (which end with the final state) and its
+/// located events.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct RunPeaks {
     /// Largest contact normal force (N).
@@ -363,26 +372,53 @@ pub struct RunPeaks {
     pub wrist_force: f64,
 }
 
+impl RunPeaks {
+    /// Takes the state `y` at `t` of `sys` into the peaks (a state whose
+    /// contacts cannot be set up adds nothing: the run reports that error
+    /// itself).
+    pub fn include(&mut self, sys: &Insertion, t: f64, y: &SVector<f64, N_STATE>) {
+        let Ok(s) = sys.sample(t, y) else { return };
+        self.contact = self.contact.max(s.peak_normal());
+        self.pressure = self
+            .pressure
+            .max(sys.peak_pressure_above(y, &s, self.pressure));
+        if let Some(w) = &s.wrist {
+            self.wrist_moment = self.wrist_moment.max(w.moment_robot.xy().norm());
+            self.wrist_force = self.wrist_force.max(w.force.norm());
+        }
+    }
+
+    /// Takes the forces of sample `s` at state `y` into the peaks.
+    fn include_sample(
+        &mut self,
+        sys: &Insertion,
+        y: &SVector<f64, N_STATE>,
+        s: &crate::compliant_peg_3d::insertion::Sample,
+    ) {
+        self.contact = self.contact.max(s.peak_normal());
+        self.pressure = self.pressure.max(sys.peak_pressure(y, s).0);
+        if let Some(w) = &s.wrist {
+            self.wrist_moment = self.wrist_moment.max(w.moment_robot.xy().norm());
+            self.wrist_force = self.wrist_force.max(w.force.norm());
+        }
+    }
+}
+
 impl Run {
-    /// The peaks of the run over every stored sample and every event state
-    /// (a terminal force limit is located between two samples: its state
-    /// holds the peak the limit stopped).
+    /// The peaks of the run over the end of every accepted step, every
+    /// stored sample and every event state (a peak between two output
+    /// times, an impact, is at a step's end or an event, not at a sample).
     ///
     /// # Errors
-    /// A Hertz setup error at one of those states.
+    /// A Hertz setup error at a sample or an event state.
     pub fn peaks(&self) -> Result<RunPeaks, RunError> {
         let sol = &self.solution;
         let samples = sol.t.iter().copied().zip(sol.x.iter());
         let events = sol.events.iter().map(|e| (e.t, &e.x));
-        let mut p = RunPeaks::default();
+        let mut p = self.steps;
         for (t, y) in samples.chain(events) {
             let s = self.system.sample(t, y)?;
-            p.contact = p.contact.max(s.peak_normal());
-            p.pressure = p.pressure.max(self.system.peak_pressure(y, &s).0);
-            if let Some(w) = &s.wrist {
-                p.wrist_moment = p.wrist_moment.max(w.moment_robot.xy().norm());
-                p.wrist_force = p.wrist_force.max(w.force.norm());
-            }
+            p.include_sample(&self.system, y, &s);
         }
         Ok(p)
     }

@@ -26,6 +26,8 @@ use crate::output::plot::{Panel, Series, Style};
 use crate::scene::context::RunContext;
 use crate::scene::summary::Metric;
 
+use super::insertion::RunPeaks;
+
 /// Slots per pair in the CSV.
 const SLOTS: usize = 2;
 
@@ -168,10 +170,11 @@ impl Peaks {
 }
 
 /// Writes `<name>.csv` (the samples, which end with the run's final state)
-/// and returns the peak forces and moments over the samples and the states
+/// and returns the peak forces and moments over the samples, the states
 /// of `events` (the located events of the run, contact transitions and the
-/// terminal one), so that a peak is never missed because it fell between
-/// two samples at an event; the energy drift over the samples.
+/// terminal one) and `steps` (the peaks over the ends of the run's accepted
+/// steps), so that a peak is never missed because it fell between two
+/// samples; the energy drift over the samples.
 ///
 /// # Errors
 /// Output errors; a Hertz setup error at an event state.
@@ -180,6 +183,7 @@ pub fn write_series(
     sys: &Insertion,
     s: &Samples,
     events: &[EventHit<N_STATE>],
+    steps: &RunPeaks,
 ) -> Result<Peaks, RunError> {
     let h = header();
     let hr: Vec<&str> = h.iter().map(String::as_str).collect();
@@ -195,6 +199,9 @@ pub fn write_series(
     for e in events {
         peaks.include(&sys.sample(e.t, &e.x)?);
     }
+    peaks.contact_force = peaks.contact_force.max(steps.contact);
+    peaks.wrist_force = peaks.wrist_force.max(steps.wrist_force);
+    peaks.wrist_moment = peaks.wrist_moment.max(steps.wrist_moment);
     Ok(peaks)
 }
 
