@@ -244,23 +244,7 @@ impl Insertion {
     /// stiffness). Contacts whose curvatures give no point contact are
     /// skipped and counted.
     pub fn peak_pressure(&self, y: &SVector<f64, N_STATE>, sample: &Sample) -> (f64, usize) {
-        let prm = &self.peg.params;
-        let m = motion(&peg_state(y));
-        let axis = m.orientation * Vector3::z();
-        let (mut p0, mut skipped) = (0.0_f64, 0);
-        for f in &sample.forces {
-            let c = &f.contact;
-            let curv = curvature::at(prm, c, &m.centre, &axis);
-            let (m1, m2) = match c.pair {
-                Pair::EdgeSide => (&prm.hole_material, &prm.peg_material),
-                _ => (&prm.peg_material, &prm.hole_material),
-            };
-            match HertzContact::try_new(&curv, m1, m2, EllipticityMethod::Exact) {
-                Ok(h) => p0 = p0.max(h.max_pressure(f.normal_force)),
-                Err(_) => skipped += 1,
-            }
-        }
-        (p0, skipped)
+        self.pressures(y, sample, None)
     }
 
     /// The largest Hertz pressure `p₀` (Pa) of `sample`'s contacts whose
@@ -275,10 +259,21 @@ impl Insertion {
         sample: &Sample,
         floor: f64,
     ) -> f64 {
+        self.pressures(y, sample, Some(floor)).0
+    }
+
+    /// [`Insertion::peak_pressure`], over the contacts that pass the
+    /// screen of [`Insertion::peak_pressure_above`] when `floor` is given.
+    fn pressures(
+        &self,
+        y: &SVector<f64, N_STATE>,
+        sample: &Sample,
+        floor: Option<f64>,
+    ) -> (f64, usize) {
         let prm = &self.peg.params;
         let m = motion(&peg_state(y));
         let axis = m.orientation * Vector3::z();
-        let mut p0 = 0.0_f64;
+        let (mut p0, mut skipped) = (0.0_f64, 0);
         for f in &sample.forces {
             let c = &f.contact;
             let curv = curvature::at(prm, c, &m.centre, &axis);
@@ -286,15 +281,19 @@ impl Insertion {
                 Pair::EdgeSide => (&prm.hole_material, &prm.peg_material),
                 _ => (&prm.peg_material, &prm.hole_material),
             };
-            let fitted = HertzContact::try_new(&curv, m1, m2, EllipticityMethod::HamrockBrewe)
-                .map_or(f64::INFINITY, |h| h.max_pressure(f.normal_force));
-            if fitted >= 0.5 * floor
-                && let Ok(h) = HertzContact::try_new(&curv, m1, m2, EllipticityMethod::Exact)
-            {
-                p0 = p0.max(h.max_pressure(f.normal_force));
+            let screened_out = floor.is_some_and(|floor| {
+                HertzContact::try_new(&curv, m1, m2, EllipticityMethod::HamrockBrewe)
+                    .is_ok_and(|h| h.max_pressure(f.normal_force) < 0.5 * floor)
+            });
+            if screened_out {
+                continue;
+            }
+            match HertzContact::try_new(&curv, m1, m2, EllipticityMethod::Exact) {
+                Ok(h) => p0 = p0.max(h.max_pressure(f.normal_force)),
+                Err(_) => skipped += 1,
             }
         }
-        p0
+        (p0, skipped)
     }
 
     /// The start state of a held peg already in the bore: aligned with the

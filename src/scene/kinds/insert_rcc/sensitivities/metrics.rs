@@ -39,7 +39,7 @@ pub const METRICS: [&str; 6] = [
 ];
 
 /// What the rows are made of: the system and its design quantities, the
-/// fields' values, the plain pass and the derivatives.
+/// fields' values, what the run found at its steps and the derivatives.
 pub(super) struct Inputs<'a> {
     /// The system.
     pub sys: &'a Insertion,
@@ -47,7 +47,7 @@ pub(super) struct Inputs<'a> {
     pub design: &'a Design,
     /// The fields' values.
     pub values: &'a SVector<f64, N_DESIGN>,
-    /// The plain pass.
+    /// What the run found at its steps.
     pub scan: &'a Scan,
     /// The sensitivity run's derivatives.
     pub d: &'a Derivatives,

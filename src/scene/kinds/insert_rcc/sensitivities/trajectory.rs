@@ -146,6 +146,8 @@ struct Tracker<'a, X> {
     wrist: Vec<f64>,
     /// The last two points, newest first.
     recent: Vec<Point<X>>,
+    /// The largest contact and wrist forces so far (N).
+    largest: (f64, f64),
     contact_from: Option<Point<X>>,
     wrist_from: Option<Point<X>>,
     two_point: Option<(usize, Pair, f64)>,
@@ -170,6 +172,7 @@ impl<'a, X: Clone> Tracker<'a, X> {
             contact: Vec::new(),
             wrist: Vec::new(),
             recent: Vec::with_capacity(3),
+            largest: (0.0, 0.0),
             contact_from: None,
             wrist_from: None,
             two_point: None,
@@ -193,11 +196,12 @@ impl<'a, X: Clone> Tracker<'a, X> {
         let contact = forces.iter().map(|f| f.normal_force).fold(0.0, f64::max);
         let wrist = sys.wrist_load(t, &ys).map_or(0.0, |(_, l)| l.force.norm());
         // The largest so far, the later of equals (as `peak` chooses).
-        let best = |v: &[f64], now: f64| now > 0.0 && v.iter().all(|b| now >= *b);
-        if best(&self.contact, contact) {
+        if contact > 0.0 && contact >= self.largest.0 {
+            self.largest.0 = contact;
             self.contact_from = self.recent.first().cloned();
         }
-        if best(&self.wrist, wrist) {
+        if wrist > 0.0 && wrist >= self.largest.1 {
+            self.largest.1 = wrist;
             self.wrist_from = self.recent.first().cloned();
         }
         if self.ring.is_none() && forces.iter().any(|f| f.contact.ring) {
