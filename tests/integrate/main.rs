@@ -15,4 +15,5 @@ mod no_alloc;
 mod rosenbrock;
 mod sensitivity_budget;
 mod sensitivity_jump;
+mod step_observer;
 mod stiff;

@@ -67,3 +67,43 @@ fn the_restarts_share_the_step_budget() {
     assert!(steps <= half && steps + 2 > half, "{steps} of {half}");
     assert!(t < 10.0 && short.t < 10.0 && short.events.len() < 6, "{t}");
 }
+
+#[test]
+fn a_stop_rule_ends_the_run_without_an_event_and_an_observer_sees_every_step() {
+    // x = cos 2t with a step function for a stop rule (x below 0.5: the
+    // rule's value jumps, which a gradient could not serve): the run ends
+    // at 2t = π/3 with nothing in `events`, and ∂x/∂k there is the exact
+    // −t sin(√k t)/(2√k) = −(t/4) sin 2t (x = cos(√k t), k = 4).
+    let rule = SensitivityEvent::stop(|_, y: &SVector<f64, 2>| if y[0] < 0.5 { 1.0 } else { -1.0 })
+        .direction(pegdyn::integrate::Direction::Rising);
+    let options = Options::with_tolerances(1e-10, 1e-12);
+    let mut seen = Vec::new();
+    let run = pegdyn::sensitivity::integrate_observed::<_, 2, 1, 4>(
+        &Oscillator(4.0),
+        (0.0, Vector2::new(1.0, 0.0), SMatrix::zeros()),
+        10.0,
+        &options,
+        vec![rule],
+        &mut |t, y, s| seen.push((t, y[0], s[(0, 0)])),
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    let StopReason::Event { index: 0, t } = run.stop else {
+        panic!("the rule ends the run: {:?}", run.stop);
+    };
+    assert!(run.events.is_empty());
+    let want = std::f64::consts::PI / 6.0;
+    assert!((t - want).abs() < 1e-9, "{t} vs {want}");
+    let exact = -(t / 4.0) * (2.0 * t).sin();
+    assert!(
+        (run.s[(0, 0)] - exact).abs() < 1e-8,
+        "{} vs {exact}",
+        run.s[(0, 0)]
+    );
+    // The start and every accepted step's end, the last at the stop.
+    assert_eq!(seen.len(), run.stats.steps + 1);
+    assert_eq!(seen.last().map(|p| p.0), Some(t));
+    for (t, x, s) in &seen {
+        assert!((x - (2.0 * t).cos()).abs() < 1e-8);
+        assert!((s + (t / 4.0) * (2.0 * t).sin()).abs() < 1e-8);
+    }
+}
