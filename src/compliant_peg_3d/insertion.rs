@@ -244,22 +244,22 @@ impl Insertion {
     /// stiffness). Contacts whose curvatures give no point contact are
     /// skipped and counted.
     pub fn peak_pressure(&self, y: &SVector<f64, N_STATE>, sample: &Sample) -> (f64, usize) {
-        self.pressures(y, sample, None)
+        self.pressures(y, &sample.forces, None)
     }
 
-    /// The largest Hertz pressure `p₀` (Pa) of `sample`'s contacts whose
-    /// pressure may exceed `floor`: each contact is screened with the
-    /// Hamrock–Brewe fits and evaluated exactly (as in
+    /// The largest Hertz pressure `p₀` (Pa) of the contact `forces` at
+    /// state `y` whose pressure may exceed `floor`: each contact is
+    /// screened with the Hamrock–Brewe fits and evaluated exactly (as in
     /// [`Insertion::peak_pressure`]) only where the fitted pressure is at
     /// least half of `floor`, so that a run can take its peak at every
     /// step for little more than its forces; 0 when none may.
     pub fn peak_pressure_above(
         &self,
         y: &SVector<f64, N_STATE>,
-        sample: &Sample,
+        forces: &[ContactForce],
         floor: f64,
     ) -> f64 {
-        self.pressures(y, sample, Some(floor)).0
+        self.pressures(y, forces, Some(floor)).0
     }
 
     /// [`Insertion::peak_pressure`], over the contacts that pass the
@@ -267,14 +267,14 @@ impl Insertion {
     fn pressures(
         &self,
         y: &SVector<f64, N_STATE>,
-        sample: &Sample,
+        forces: &[ContactForce],
         floor: Option<f64>,
     ) -> (f64, usize) {
         let prm = &self.peg.params;
         let m = motion(&peg_state(y));
         let axis = m.orientation * Vector3::z();
         let (mut p0, mut skipped) = (0.0_f64, 0);
-        for f in &sample.forces {
+        for f in forces {
             let c = &f.contact;
             let curv = curvature::at(prm, c, &m.centre, &axis);
             let (m1, m2) = match c.pair {

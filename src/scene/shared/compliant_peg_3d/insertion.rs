@@ -12,12 +12,14 @@ use nalgebra::SVector;
 use super::start;
 use super::tables::{CriteriaTable, PegTable, RobotTable, WristTable, held};
 use crate::compliant_peg_3d::Peg3dParams;
-use crate::compliant_peg_3d::insertion::{Held, Insertion, N_STATE};
+use crate::compliant_peg_3d::forces::ContactForce;
+use crate::compliant_peg_3d::insertion::{Held, Insertion, N_STATE, Sample, peg_state};
 use crate::compliant_peg_3d::outcome::{
     CountCache, Criteria, LimitStop, Outcome, TERMINAL_NAMES, classify, terminal_events,
     transition_events,
 };
 use crate::compliant_peg_3d::robot::Descent;
+use crate::compliant_peg_3d::wrist::WristLoad;
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::integrate::{Solution, StopReason};
 use crate::scene::integrator::IntegratorSpec;
@@ -373,31 +375,32 @@ pub struct RunPeaks {
 }
 
 impl RunPeaks {
-    /// Takes the state `y` at `t` of `sys` into the peaks (a state whose
-    /// contacts cannot be set up adds nothing: the run reports that error
-    /// itself).
+    /// Takes the state `y` at `t` of `sys` into the peaks: its contact
+    /// forces and the wrist's load only (not a whole sample), the pressure
+    /// screened against the peak so far; a state whose contacts cannot be
+    /// set up adds nothing (the run reports that error itself).
     pub fn include(&mut self, sys: &Insertion, t: f64, y: &SVector<f64, N_STATE>) {
-        let Ok(s) = sys.sample(t, y) else { return };
-        self.contact = self.contact.max(s.peak_normal());
-        self.pressure = self
-            .pressure
-            .max(sys.peak_pressure_above(y, &s, self.pressure));
-        if let Some(w) = &s.wrist {
-            self.wrist_moment = self.wrist_moment.max(w.moment_robot.xy().norm());
-            self.wrist_force = self.wrist_force.max(w.force.norm());
-        }
+        let ys = peg_state(y);
+        let Ok(forces) = sys.peg.forces(&ys) else {
+            return;
+        };
+        let pressure = sys.peak_pressure_above(y, &forces, self.pressure);
+        let wrist = sys.wrist_load(t, &ys).map(|(_, l)| l);
+        self.take(&forces, pressure, wrist.as_ref());
     }
 
     /// Takes the forces of sample `s` at state `y` into the peaks.
-    fn include_sample(
-        &mut self,
-        sys: &Insertion,
-        y: &SVector<f64, N_STATE>,
-        s: &crate::compliant_peg_3d::insertion::Sample,
-    ) {
-        self.contact = self.contact.max(s.peak_normal());
-        self.pressure = self.pressure.max(sys.peak_pressure(y, s).0);
-        if let Some(w) = &s.wrist {
+    fn include_sample(&mut self, sys: &Insertion, y: &SVector<f64, N_STATE>, s: &Sample) {
+        self.take(&s.forces, sys.peak_pressure(y, s).0, s.wrist.as_ref());
+    }
+
+    /// Takes contact `forces`, their largest Hertz `pressure` (Pa) and the
+    /// wrist's load into the peaks.
+    fn take(&mut self, forces: &[ContactForce], pressure: f64, wrist: Option<&WristLoad>) {
+        let normal = forces.iter().map(|f| f.normal_force).fold(0.0, f64::max);
+        self.contact = self.contact.max(normal);
+        self.pressure = self.pressure.max(pressure);
+        if let Some(w) = wrist {
             self.wrist_moment = self.wrist_moment.max(w.moment_robot.xy().norm());
             self.wrist_force = self.wrist_force.max(w.force.norm());
         }
