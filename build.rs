@@ -14,10 +14,11 @@
 //! It declares the built-in models through the public builder
 //! (`pegdyn_equations::models::declare_all` calls `Generator::model` for
 //! each), the same API a downstream crate's build script uses
-//! (docs/own-model.md), and turns on the extras only pegdyn needs
-//! (`Options::registry`, `function_list`, `test_harness`, and the parameter
-//! Jacobians of the models whose sensitivities it integrates,
-//! `Options::parameter_jacobians`).
+//! (docs/own-model.md), with the options of
+//! `pegdyn_equations::models::build_options`: the extras only pegdyn needs
+//! (the registry, the function list, the test harness and the parameter
+//! Jacobians of the models whose sensitivities it integrates). The benches'
+//! build script takes the same options.
 //!
 //! Environment: `PEGDYN_NAIVE_FORMS=1` generates without the stable
 //! numerical rewrites of the simplifier (`Options::from_env`) (for `pegdyn accuracy`'s "before"
@@ -29,7 +30,7 @@
 use std::path::PathBuf;
 use std::process::exit;
 
-use pegdyn_equations::{Generator, Options, models};
+use pegdyn_equations::{Generator, models};
 
 fn main() {
     println!("cargo:rerun-if-changed=build.rs");
@@ -40,19 +41,7 @@ fn main() {
         eprintln!("error: OUT_DIR is not set (build.rs must run under cargo)");
         exit(1);
     };
-    let options = Options {
-        registry: true,
-        function_list: true,
-        test_harness: true,
-        // The parameter Jacobians `∂f/∂p` only of the models whose
-        // sensitivities pegdyn integrates (src/sensitivity).
-        parameter_jacobians: models::PARAMETER_JACOBIANS
-            .iter()
-            .map(|m| (*m).to_owned())
-            .collect(),
-        ..Options::from_env()
-    };
-    let mut generator = Generator::new(options);
+    let mut generator = Generator::new(models::build_options());
     let written = models::declare_all(&mut generator).and_then(|()| generator.write(&out_dir));
     if let Err(e) = written {
         eprintln!("error: code generation failed: {e}");

@@ -11,22 +11,13 @@ fn main() {
     println!("cargo:rerun-if-changed=build.rs");
     println!("cargo:rerun-if-changed=../equations/src");
     println!("cargo:rerun-if-changed=../equations/Cargo.toml");
+    println!("cargo:rerun-if-env-changed=PEGDYN_NAIVE_FORMS");
     let Some(out_dir) = std::env::var_os("OUT_DIR").map(PathBuf::from) else {
         eprintln!("error: OUT_DIR is not set (build.rs must run under cargo)");
         exit(1);
     };
-    // The options of pegdyn's own build.rs that decide which functions
-    // exist: the list and the parameter Jacobians of the models whose
-    // sensitivities pegdyn integrates.
-    let options = pegdyn_equations::Options {
-        function_list: true,
-        parameter_jacobians: pegdyn_equations::models::PARAMETER_JACOBIANS
-            .iter()
-            .map(|m| (*m).to_owned())
-            .collect(),
-        ..pegdyn_equations::Options::from_env()
-    };
-    let mut generator = pegdyn_equations::Generator::new(options);
+    // pegdyn's own build options: the same functions exist here as there.
+    let mut generator = pegdyn_equations::Generator::new(pegdyn_equations::models::build_options());
     let written = pegdyn_equations::models::declare_all(&mut generator)
         .and_then(|()| generator.render())
         .and_then(|out| {

@@ -196,14 +196,18 @@ fn drop_3d_says_when_its_list_of_transitions_is_cut() {
 
 #[test]
 fn an_energy_balance_drift_above_its_limit_is_a_warning_in_the_summary() {
+    use pegdyn::scene::shared::compliant_peg_3d::insertion::RunPeaks;
     use pegdyn::scene::shared::compliant_peg_3d::output::{Peaks, metrics};
     use pegdyn::scene::{ENERGY_DRIFT_WARNING, RunSummary};
     let summary = |drift: f64, scale: f64| {
         RunSummary {
             metrics: metrics(&Peaks {
-                contact_force: 5.0,
-                wrist_force: 1.0,
-                wrist_moment: 0.01,
+                forces: RunPeaks {
+                    contact: 5.0,
+                    pressure: 1e8,
+                    wrist_force: 1.0,
+                    wrist_moment: 0.01,
+                },
                 drift,
                 scale,
             }),

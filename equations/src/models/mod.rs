@@ -3,10 +3,10 @@
 //! crate declares its own. Register a model in [`ALL`] (one line) to have
 //! its code generated into `pegdyn::generated::<name>`.
 
-use crate::GenError;
 use crate::builder::{Generator, ModelBuilder};
 use crate::graph::Graph;
 use crate::model::Module;
+use crate::{GenError, Options};
 
 pub mod cart_pole;
 pub mod chamfer_capture;
@@ -83,6 +83,25 @@ pub const PARAMETER_JACOBIANS: &[&str] = &[
     jamming_design::NAME,
     chamfer_capture::NAME,
 ];
+
+/// The options of pegdyn's own build script, which decide which functions
+/// exist: the stable forms as [`Options::from_env`] says, the registry of
+/// every function, the function list (`generated_list.rs`, which the benches
+/// include), the emitter-coverage test harness, and the parameter Jacobians
+/// of [`PARAMETER_JACOBIANS`]. The benches' build script takes the same
+/// options, so the functions it lists are the ones pegdyn generates.
+pub fn build_options() -> Options {
+    Options {
+        registry: true,
+        function_list: true,
+        test_harness: true,
+        parameter_jacobians: PARAMETER_JACOBIANS
+            .iter()
+            .map(|m| (*m).to_owned())
+            .collect(),
+        ..Options::from_env()
+    }
+}
 
 /// Declares every built-in model ([`ALL`]) in `generator`, in order.
 ///

@@ -390,7 +390,7 @@ impl RunPeaks {
     }
 
     /// Takes the forces of sample `s` at state `y` into the peaks.
-    fn include_sample(&mut self, sys: &Insertion, y: &SVector<f64, N_STATE>, s: &Sample) {
+    pub fn include_sample(&mut self, sys: &Insertion, y: &SVector<f64, N_STATE>, s: &Sample) {
         self.take(&s.forces, sys.peak_pressure(y, s).0, s.wrist.as_ref());
     }
 

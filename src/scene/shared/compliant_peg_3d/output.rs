@@ -110,15 +110,12 @@ fn row(t: f64, y: &SVector<f64, N_STATE>, s: &Sample) -> Vec<f64> {
     r
 }
 
-/// What the writer found along the run.
+/// What the writer found along the run: the peaks of its forces and
+/// moments, and the energy balance's drift over the samples.
 #[derive(Debug, Default)]
 pub struct Peaks {
-    /// Largest contact normal force (N).
-    pub contact_force: f64,
-    /// Largest wrist force (N).
-    pub wrist_force: f64,
-    /// Largest wrist lateral moment about the compliance centre (N·m).
-    pub wrist_moment: f64,
+    /// The largest contact force, pressure and wrist load.
+    pub forces: RunPeaks,
     /// Largest `|E − E₀|` (J).
     pub drift: f64,
     /// Largest of `|W|`, `|W_r|`, `T`, for the drift's scale (J).
@@ -145,15 +142,6 @@ pub fn samples(sys: &Insertion, sol: &Solution<N_STATE>) -> Result<Samples, RunE
 }
 
 impl Peaks {
-    /// Takes the forces and moments of sample `smp` into the peaks.
-    fn include(&mut self, smp: &Sample) {
-        self.contact_force = self.contact_force.max(smp.peak_normal());
-        if let Some(w) = &smp.wrist {
-            self.wrist_force = self.wrist_force.max(w.force.norm());
-            self.wrist_moment = self.wrist_moment.max(w.moment_robot.xy().norm());
-        }
-    }
-
     /// Takes the energy balance of output sample `smp` at state `y` into
     /// the drift; `e0` is the balance at the start. (Event states are left
     /// out: at a located contact transition the contact potential is
@@ -188,20 +176,22 @@ pub fn write_series(
     let h = header();
     let hr: Vec<&str> = h.iter().map(String::as_str).collect();
     let mut csv = ctx.table(Part::Main, &hr)?;
-    let mut peaks = Peaks::default();
+    let mut peaks = Peaks {
+        forces: *steps,
+        ..Peaks::default()
+    };
     let e0 = s.rows.first().map_or(0.0, |r| r.2.balance);
     for (t, y, smp) in &s.rows {
         csv.row(&row(*t, y, smp))?;
-        peaks.include(smp);
+        peaks.forces.include_sample(sys, y, smp);
         peaks.include_energy(y, smp, e0);
     }
     csv.finish()?;
     for e in events {
-        peaks.include(&sys.sample(e.t, &e.x)?);
+        peaks
+            .forces
+            .include_sample(sys, &e.x, &sys.sample(e.t, &e.x)?);
     }
-    peaks.contact_force = peaks.contact_force.max(steps.contact);
-    peaks.wrist_force = peaks.wrist_force.max(steps.wrist_force);
-    peaks.wrist_moment = peaks.wrist_moment.max(steps.wrist_moment);
     Ok(peaks)
 }
 
@@ -344,9 +334,13 @@ pub fn forces_panel(s: &Samples) -> Panel {
 pub fn metrics(peaks: &Peaks) -> Vec<Metric> {
     let drift = peaks.drift / peaks.scale.max(1e-300);
     let mut m = vec![
-        Metric::new("peak contact normal force", peaks.contact_force, "N"),
-        Metric::new("peak wrist force", peaks.wrist_force, "N"),
-        Metric::new("peak wrist lateral moment", peaks.wrist_moment, "N m"),
+        Metric::new("peak contact normal force", peaks.forces.contact, "N"),
+        Metric::new("peak wrist force", peaks.forces.wrist_force, "N"),
+        Metric::new(
+            "peak wrist lateral moment",
+            peaks.forces.wrist_moment,
+            "N m",
+        ),
         Metric::new("max |E - E0| / max(|W|, |W_r|, T)", drift, ""),
     ];
     m.extend(crate::scene::energy_drift_warning(drift));
