@@ -129,6 +129,26 @@ pub trait OdeSystem<const N: usize> {
         None
     }
 
+    /// `Some(n)` for a state of `N / n` blocks of `n` components whose
+    /// Jacobian is block lower-triangular with every diagonal block equal
+    /// to the first and no off-diagonal block outside the first block
+    /// column, the form of a state with its forward sensitivities
+    /// (`z = (y, s₁, …, s_P)`, `ż = (f, J s₁ + ∂f/∂p₁, …)`):
+    ///
+    /// ```text
+    ///       y    s₁   s₂
+    /// J = [ J    0    0 ]
+    ///     [ B₁   J    0 ]     Bₖ = ∂(J sₖ + ∂f/∂pₖ)/∂y
+    ///     [ B₂   0    J ]
+    /// ```
+    ///
+    /// The Rosenbrock methods then factorize `cI − J` at the block's size
+    /// once per step and solve the blocks in turn: `(cI − J) u₀ = r₀`,
+    /// `(cI − J) uₖ = rₖ + Bₖ u₀`. `None` (the default): no such form.
+    fn variational_blocks(&self) -> Option<usize> {
+        None
+    }
+
     /// Names of the state components in order (e.g. the generated
     /// model's `X_NAMES`), used to name a component that turns non-finite;
     /// empty (the default) when the system has none.

@@ -60,6 +60,10 @@ impl<const N: usize, S: OdeSystem<N>> OdeSystem<N> for Checked<'_, S> {
         self.system.kinematic_split()
     }
 
+    fn variational_blocks(&self) -> Option<usize> {
+        self.system.variational_blocks()
+    }
+
     fn state_names(&self) -> &'static [&'static str] {
         self.system.state_names()
     }

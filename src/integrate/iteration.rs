@@ -31,6 +31,17 @@
 //! A system whose positions have a kinematic map `ẋ = K(x) u` (a rigid
 //! body's quaternion) declares its [`KinematicSplit`]; its iteration
 //! matrix is reduced to the velocities by `super::kinematic`.
+//!
+//! A state with its forward sensitivities declares its blocks
+//! ([`crate::system::OdeSystem::variational_blocks`]): `J` is block
+//! lower-triangular with equal diagonal blocks `J₀` and off-diagonal blocks
+//! `Bₖ` in the first block column only, so `cI − J₀` is factorized at the
+//! block's size and the blocks are solved in turn (block forward
+//! substitution):
+//!
+//! ```text
+//! (cI − J₀) u₀ = r₀,    (cI − J₀) uₖ = rₖ + Bₖ u₀
+//! ```
 
 use nalgebra::{SMatrix, SVector};
 
@@ -47,6 +58,22 @@ pub enum IterationLu<'j, const N: usize> {
     SecondOrder(Reduced<'j, N>),
     /// The velocity block of a state with a kinematic split.
     Kinematic(Kinematic<'j, N>),
+    /// The diagonal block of a state with its sensitivities.
+    Blocks(Blocks<'j, N>),
+}
+
+/// `cI − J₀` factorized at the block size `n`, `J`'s first block column
+/// kept for the solves.
+#[derive(Debug, Clone)]
+pub struct Blocks<'j, const N: usize> {
+    /// The block size.
+    n: usize,
+    /// The Jacobian: its first block column `(J₀, B₁, …)` is read by the
+    /// solves.
+    jac: &'j SMatrix<f64, N, N>,
+    /// Factors of `cI − J₀` (`n × n`, allocated once per step: the
+    /// block's size is not a constant of the stepper).
+    lu: nalgebra::linalg::LU<f64, nalgebra::Dyn, nalgebra::Dyn>,
 }
 
 /// The reduced system `(cI − B − A/c) u_v = r_v + A r_q / c`.
@@ -66,7 +93,19 @@ impl<'j, const N: usize> IterationLu<'j, N> {
     /// Factorizes `cI − jac`, reduced when `jac` has the second-order
     /// block form or fits the system's kinematic `split`; `None` if a
     /// pivot is zero or not finite.
-    pub fn new(jac: &'j SMatrix<f64, N, N>, c: f64, split: Option<KinematicSplit>) -> Option<Self> {
+    ///
+    /// With `blocks = Some(n)` ([`crate::system::OdeSystem::variational_blocks`])
+    /// and `jac` of that block form (checked), the block `cI − J₀` alone is
+    /// factorized.
+    pub fn new(
+        jac: &'j SMatrix<f64, N, N>,
+        c: f64,
+        split: Option<KinematicSplit>,
+        blocks: Option<usize>,
+    ) -> Option<Self> {
+        if let Some(n) = blocks.filter(|&n| has_variational_blocks(jac, n)) {
+            return Blocks::new(jac, c, n).map(IterationLu::Blocks);
+        }
         let second_order = second_order_split(jac);
         if let (None, Some(split)) = (second_order, split) {
             match Kinematic::new(jac, c, split) {
@@ -102,6 +141,7 @@ impl<'j, const N: usize> IterationLu<'j, N> {
             IterationLu::Dense(lu) => lu.solve(r),
             IterationLu::SecondOrder(reduced) => reduced.solve(r),
             IterationLu::Kinematic(k) => k.solve(r),
+            IterationLu::Blocks(b) => b.solve(r),
         }
     }
 
@@ -153,6 +193,75 @@ impl<const N: usize> Reduced<'_, N> {
         }
         u
     }
+}
+
+impl<'j, const N: usize> Blocks<'j, N> {
+    /// Factorizes `cI − J₀`, `J₀` the leading `n × n` block of `jac`;
+    /// `None` if it is singular or not finite.
+    fn new(jac: &'j SMatrix<f64, N, N>, c: f64, n: usize) -> Option<Self> {
+        let block = nalgebra::DMatrix::from_fn(n, n, |i, j| {
+            if i == j {
+                c - jac[(i, j)]
+            } else {
+                -jac[(i, j)]
+            }
+        });
+        if !block.iter().all(|v| v.is_finite()) {
+            return None;
+        }
+        let lu = block.lu();
+        let u = lu.u();
+        if (0..n).any(|i| u[(i, i)] == 0.0 || !u[(i, i)].is_finite()) {
+            return None;
+        }
+        Some(Blocks { n, jac, lu })
+    }
+
+    /// Solves `(cI − J) u = r` block by block.
+    fn solve(&self, r: &SVector<f64, N>) -> SVector<f64, N> {
+        let n = self.n;
+        let mut u = SVector::<f64, N>::zeros();
+        let mut block = nalgebra::DVector::from_column_slice(&r.as_slice()[..n]);
+        self.lu.solve_mut(&mut block);
+        u.rows_mut(0, n).copy_from(&block);
+        for k in 1..N / n {
+            for i in 0..n {
+                let row = k * n + i;
+                let mut v = r[row];
+                for j in 0..n {
+                    v += self.jac[(row, j)] * u[j];
+                }
+                block[i] = v;
+            }
+            self.lu.solve_mut(&mut block);
+            u.rows_mut(k * n, n).copy_from(&block);
+        }
+        u
+    }
+}
+
+/// Whether `jac` has the block form of a state with its sensitivities in
+/// blocks of `n` ([`crate::system::OdeSystem::variational_blocks`]): every
+/// diagonal block equal to the first, zero blocks off the diagonal but in
+/// the first block column.
+fn has_variational_blocks<const N: usize>(jac: &SMatrix<f64, N, N>, n: usize) -> bool {
+    if n == 0 || N % n != 0 || N / n < 2 {
+        return false;
+    }
+    for row in n..N {
+        let diagonal = row / n * n;
+        for col in n..N {
+            let expected = if (diagonal..diagonal + n).contains(&col) {
+                jac[(row % n, col - diagonal)]
+            } else {
+                0.0
+            };
+            if jac[(row, col)] != expected {
+                return false;
+            }
+        }
+    }
+    (0..n).all(|row| (n..N).all(|col| jac[(row, col)] == 0.0))
 }
 
 /// `Some(n)` when `jac` has the block form of the module docs: rows

@@ -158,8 +158,12 @@ impl<const N: usize, const S: usize> Stepper<N> for Rosenbrock<N, S> {
         let dfdt = &lin.dfdt;
         let k = &self.coef;
         stats.lu_factorizations += 1;
-        let Some(lu) = IterationLu::new(&lin.jac, 1.0 / (h * k.gamma), system.kinematic_split())
-        else {
+        let Some(lu) = IterationLu::new(
+            &lin.jac,
+            1.0 / (h * k.gamma),
+            system.kinematic_split(),
+            system.variational_blocks(),
+        ) else {
             return Attempt::Singular;
         };
         for i in 0..S {

@@ -1,6 +1,8 @@
-//! The explicit path: [`integrate`] runs the variational system with
-//! Dormand–Prince 5(4), stops at every located [`SensitivityEvent`] to
-//! record `∂t_e/∂p`, and restarts there (or ends at a terminal one).
+//! [`integrate`] runs the variational system with the chosen method
+//! (Dormand–Prince 5(4) explicitly; RODAS3/4 with one factorization of the
+//! state's `cI − J` per step serving every sensitivity column), stops at
+//! every located [`SensitivityEvent`] to record `∂t_e/∂p`, and restarts
+//! there (or ends at a terminal one).
 
 use nalgebra::{SMatrix, SVector};
 
@@ -11,6 +13,13 @@ use crate::integrate::{Direction, Event, EventFn, Method, Options, Solver, Stats
 /// The gradient of an event function: `(∂g/∂y, ∂g/∂p)` at `(t, y)`.
 pub type EventGradient<'a, const N: usize, const P: usize> =
     dyn Fn(f64, &SVector<f64, N>) -> (SVector<f64, N>, SVector<f64, P>) + 'a;
+
+/// Stack a run needs per entry of an `M × M` matrix (bytes): the
+/// Rosenbrock methods keep the Jacobian, the iteration matrix and their
+/// temporaries in their frames (between 4 and 8 MiB at `M = 208` in the
+/// tests' build); below this much left, the run continues on a stack of
+/// twice that, allocated on the heap.
+const STACK_PER_ENTRY: usize = 8 * 32;
 
 /// An observer of a sensitivity run: `(t, y, ∂y/∂p)` at each reported
 /// point ([`integrate_observed`]).
@@ -124,8 +133,13 @@ pub fn event_jump<const N: usize, const P: usize>(
 }
 
 /// Integrates `ẏ = f(y)` from `(t0, y0)` with its sensitivities from `s0 =
-/// ∂y₀/∂p` to `t_end` (explicit Dormand–Prince 5(4), error control on the
-/// state and the scaled sensitivities with `options`' tolerances; `options`'
+/// ∂y₀/∂p` to `t_end` by `method` (the state and the scaled sensitivities
+/// as one system, error control on them with `options`' tolerances and
+/// error components. A Rosenbrock method factorizes the state's `cI − J`
+/// once per step for every column (the system's
+/// [`OdeSystem::variational_blocks`](crate::system::OdeSystem::variational_blocks));
+/// its Jacobian's coupling blocks `∂(J s + ∂f/∂p)/∂y` are forward
+/// differences of the sensitivities' rate, `N + 1` rates per step. `options`'
 /// output settings are ignored; `options.max_steps` bounds the attempted
 /// steps of the whole run, summed over its restarts). At each event the run stops, records
 /// `∂t_e/∂p`, and restarts there (the right-hand side is continuous across
@@ -142,13 +156,22 @@ pub fn integrate<S, const N: usize, const P: usize, const M: usize>(
     system: &S,
     start: (f64, SVector<f64, N>, SMatrix<f64, N, P>),
     t_end: f64,
+    method: Method,
     options: &Options,
     events: Vec<SensitivityEvent<'_, N, P>>,
 ) -> Result<SensitivityRun<N, P>, SensitivityError>
 where
     S: ParameterJacobian<N, P>,
 {
-    integrate_observed::<S, N, P, M>(system, start, t_end, options, events, &mut |_, _, _| {})
+    integrate_observed::<S, N, P, M>(
+        system,
+        start,
+        t_end,
+        method,
+        options,
+        events,
+        &mut |_, _, _| {},
+    )
 }
 
 /// [`integrate`], calling `observer` with `(t, y, ∂y/∂p)` at the start and
@@ -161,6 +184,7 @@ pub fn integrate_observed<S, const N: usize, const P: usize, const M: usize>(
     system: &S,
     (t0, y0, s0): (f64, SVector<f64, N>, SMatrix<f64, N, P>),
     t_end: f64,
+    method: Method,
     options: &Options,
     events: Vec<SensitivityEvent<'_, N, P>>,
     observer: &mut SensitivityObserver<'_, N, P>,
@@ -202,7 +226,7 @@ where
         options.max_steps = left;
         let var_ref = &var;
         let observe = &mut *observer;
-        let mut solver = Solver::<M>::new(Method::Dopri5, options.clone()).with_observer(
+        let mut solver = Solver::<M>::new(method, options.clone()).with_observer(
             move |t, z: &SVector<f64, M>| {
                 let (y, s) = var_ref.unpack(z);
                 observe(t, &y, &s);
@@ -216,7 +240,10 @@ where
                     .terminal(),
             );
         }
-        let sol = solver.solve(&var, t, z, t_end)?;
+        let sol =
+            stacker::maybe_grow(STACK_PER_ENTRY * M * M, 2 * STACK_PER_ENTRY * M * M, || {
+                solver.solve(&var, t, z, t_end)
+            })?;
         drop(solver);
         stats += &sol.stats;
         (t, z) = (sol.t_final, sol.x_final);

@@ -7,8 +7,10 @@
 //!
 //! `J = ∂f/∂y` and `∂f/∂p` being the model's exact generated Jacobians
 //! ([`ParameterJacobian`]). The state and the `P` sensitivity columns are
-//! integrated as one system by the explicit Dormand–Prince 5(4) method with
-//! its error control on all of them ([`integrate`], in [`forward`]); each
+//! integrated as one system, by the explicit Dormand–Prince 5(4) method or
+//! a Rosenbrock method whose one factorization of the state's `cI − J` per
+//! step serves every column, with the error control on all of them
+//! ([`integrate`], in [`forward`]); each
 //! column is integrated scaled by its parameter (`p_k s_k`, the change of
 //! the state per relative change of `p_k`) so that one absolute tolerance
 //! suits parameters of any unit.
@@ -26,7 +28,7 @@
 //!
 //! ```
 //! use nalgebra::{SMatrix, SVector, Vector1};
-//! use pegdyn::integrate::Options;
+//! use pegdyn::integrate::{Method, Options};
 //! use pegdyn::sensitivity::{ParameterJacobian, integrate};
 //! use pegdyn::system::OdeSystem;
 //!
@@ -49,6 +51,7 @@
 //!     &Decay(3.0),
 //!     (0.0, Vector1::new(2.0), SMatrix::zeros()),
 //!     0.5,
+//!     Method::Dopri5,
 //!     &Options::with_tolerances(1e-10, 1e-12),
 //!     Vec::new(),
 //! )
@@ -100,8 +103,10 @@ pub trait ParameterJacobian<const N: usize, const P: usize>: OdeSystem<N> {
     /// through its right-hand side as directional derivatives (dual
     /// numbers seeded with `s_k` in the state and `e_k` in the
     /// parameters). `None`, the default, makes the integrator form `J`
-    /// and `∂f/∂p` and multiply. Called after `try_rhs` at the same
-    /// `(t, y)`.
+    /// and `∂f/∂p` and multiply. Called at any `(t, y)`: after `try_rhs`
+    /// at the same point along the run, alone at the moved states of the
+    /// Rosenbrock methods' Jacobian (whatever the rate needs of the right-
+    /// hand side's work, it does itself).
     fn try_sensitivity_rate(
         &self,
         _t: f64,

@@ -44,12 +44,64 @@ impl<S, const N: usize, const P: usize> Variational<'_, S, N, P> {
     }
 }
 
+impl<S: ParameterJacobian<N, P>, const N: usize, const P: usize> Variational<'_, S, N, P> {
+    /// The sensitivities' rate `J s + ∂f/∂p` (unscaled) at `(t, y)`: the
+    /// model's one-pass rate where it has one, else `J` and `∂f/∂p`.
+    fn rate(
+        &self,
+        t: f64,
+        y: &SVector<f64, N>,
+        s: &SMatrix<f64, N, P>,
+    ) -> Result<SMatrix<f64, N, P>, ModelError> {
+        if let Some(rate) = self.system.try_sensitivity_rate(t, y, s) {
+            return rate;
+        }
+        let j = self.system.try_jacobian(t, y)?;
+        Ok(j * s + self.system.try_parameter_jacobian(t, y)?)
+    }
+}
+
 impl<S: ParameterJacobian<N, P>, const N: usize, const P: usize, const M: usize> OdeSystem<M>
     for Variational<'_, S, N, P>
 {
     fn rhs(&self, t: f64, z: &SVector<f64, M>) -> SVector<f64, M> {
         self.try_rhs(t, z)
             .unwrap_or_else(|_| SVector::repeat(f64::NAN))
+    }
+
+    /// The blocks `(y, c₁ s₁, …)` of `N` ([`OdeSystem::variational_blocks`]).
+    fn variational_blocks(&self) -> Option<usize> {
+        Some(N)
+    }
+
+    /// The Jacobian of `ż` in block form: the model's `J` on the diagonal
+    /// blocks and, in the first block column, `Bₖ = c_k ∂(J s_k +
+    /// ∂f/∂p_k)/∂y` at the fixed `s_k` (second derivatives of `f`), by
+    /// forward differences of the sensitivities' rate in each state
+    /// component (step `√ε · max(|y_j|, 1)`, as
+    /// [`crate::system::finite_difference_jacobian`]): `N + 1` evaluations
+    /// of the rate.
+    fn try_jacobian(&self, t: f64, z: &SVector<f64, M>) -> Result<SMatrix<f64, M, M>, ModelError> {
+        let (y, s) = self.unpack(z);
+        let j = self.system.try_jacobian(t, &y)?;
+        let base = self.rate(t, &y, &s)?;
+        let mut out = SMatrix::<f64, M, M>::zeros();
+        for b in 0..=P {
+            out.fixed_view_mut::<N, N>(b * N, b * N).copy_from(&j);
+        }
+        for col in 0..N {
+            let mut moved = y;
+            moved[col] += f64::EPSILON.sqrt() * y[col].abs().max(1.0);
+            let delta = moved[col] - y[col];
+            let rate = self.rate(t, &moved, &s)?;
+            for k in 0..P {
+                for r in 0..N {
+                    out[(N + k * N + r, col)] =
+                        self.scale[k] * (rate[(r, k)] - base[(r, k)]) / delta;
+                }
+            }
+        }
+        Ok(out)
     }
 
     /// `ż = (f, c_k (J s_k + ∂f/∂p_k))` with `c_k s_k` read from `z`:

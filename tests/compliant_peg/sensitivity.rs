@@ -80,6 +80,7 @@ fn final_state_and_contact_time_sensitivities_match_differences() {
         &sys,
         (0.0, y0, SMatrix::zeros()),
         T_END,
+        Method::Dopri5,
         &Options::with_tolerances(1e-12, 1e-17),
         events,
     )

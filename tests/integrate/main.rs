@@ -15,5 +15,6 @@ mod no_alloc;
 mod rosenbrock;
 mod sensitivity_budget;
 mod sensitivity_jump;
+mod sensitivity_rosenbrock;
 mod step_observer;
 mod stiff;

@@ -6,7 +6,7 @@
 //! pieces between crossings needs far fewer.
 
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
-use pegdyn::integrate::{Options, StopReason};
+use pegdyn::integrate::{Method, Options, StopReason};
 use pegdyn::sensitivity::{ParameterJacobian, SensitivityEvent, integrate};
 use pegdyn::system::OdeSystem;
 
@@ -43,6 +43,7 @@ fn run(max_steps: usize) -> pegdyn::sensitivity::SensitivityRun<2, 1> {
         &Oscillator(4.0),
         (0.0, Vector2::new(1.0, 0.0), SMatrix::zeros()),
         10.0,
+        Method::Dopri5,
         &options,
         vec![crossing],
     )
@@ -82,6 +83,7 @@ fn a_stop_rule_ends_the_run_without_an_event_and_an_observer_sees_every_step() {
         &Oscillator(4.0),
         (0.0, Vector2::new(1.0, 0.0), SMatrix::zeros()),
         10.0,
+        Method::Dopri5,
         &options,
         vec![rule],
         &mut |t, y, s| seen.push((t, y[0], s[(0, 0)])),

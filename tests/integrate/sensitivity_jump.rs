@@ -5,7 +5,7 @@
 //! `Δs = (f⁻ − f⁺) ∂t_e/∂p` is what makes `∂y/∂a` right.
 
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
-use pegdyn::integrate::{Direction, Options, StopReason};
+use pegdyn::integrate::{Direction, Method, Options, StopReason};
 use pegdyn::sensitivity::{ParameterJacobian, SensitivityEvent, event_jump, integrate};
 use pegdyn::system::OdeSystem;
 
@@ -61,6 +61,7 @@ fn the_event_jump_gives_the_closed_form_sensitivities() {
         &first,
         (0.0, Vector1::new(y0), SMatrix::zeros()),
         t_end,
+        Method::Dopri5,
         &tight,
         vec![hit],
     )
@@ -73,8 +74,15 @@ fn the_event_jump_gives_the_closed_form_sensitivities() {
     assert!((te - t_e).abs() < 1e-12);
     assert!((e.dt_dp[0] + t_e / a).abs() < 1e-10 && e.dt_dp[1] == 0.0);
     let s_plus = event_jump(&e.s, &e.f, &second.rhs(te, &e.y), &e.dt_dp);
-    let two =
-        integrate::<_, 1, 2, 3>(&second, (te, e.y, s_plus), t_end, &tight, Vec::new()).unwrap();
+    let two = integrate::<_, 1, 2, 3>(
+        &second,
+        (te, e.y, s_plus),
+        t_end,
+        Method::Dopri5,
+        &tight,
+        Vec::new(),
+    )
+    .unwrap();
     let y = (-b * (t_end - t_e)).exp();
     let want = [-b * y * (1.0 - y0) / (a * a), -(t_end - t_e) * y];
     for (k, w) in want.iter().enumerate() {
@@ -100,6 +108,7 @@ fn a_wrong_augmented_dimension_is_refused() {
         &p,
         (0.0, Vector1::new(0.0), SMatrix::zeros()),
         1.0,
+        Method::Dopri5,
         &Options::default(),
         Vec::new(),
     );

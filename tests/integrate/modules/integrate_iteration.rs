@@ -42,7 +42,7 @@ fn the_reduced_solve_agrees_with_the_full_factorization() {
     let r = SVector::<f64, 8>::from_fn(|i, _| (1.0 + i as f64).sin() * 10f64.powi(i as i32 - 4));
     // c = 1/(hγ) from huge steps to tiny ones
     for c in [1e-3, 1.0, 4e2, 1e5, 1e9] {
-        let reduced = IterationLu::new(&j, c, None).expect("regular");
+        let reduced = IterationLu::new(&j, c, None, None).expect("regular");
         assert!(reduced.is_reduced());
         let full = Lu::new(SMatrix::<f64, 8, 8>::identity() * c - j).expect("regular");
         let (u, v) = (reduced.solve(&r), full.solve(&r));
@@ -73,7 +73,7 @@ fn the_generated_planar_peg_jacobian_takes_the_reduced_solve() {
     let j = sys.jacobian(0.0, &setup.start.to_vector());
     assert_eq!(second_order_split(&j), Some(3));
     assert!(
-        IterationLu::new(&j, 1e3, None)
+        IterationLu::new(&j, 1e3, None, None)
             .expect("regular")
             .is_reduced()
     );
@@ -84,7 +84,7 @@ fn a_singular_reduced_matrix_is_reported() {
     // v' = q + v at c = ... : cI - B - A/c = c - 1 - 1/c = 0 at c = golden ratio
     let j = nalgebra::Matrix2::new(0.0, 1.0, 1.0, 1.0);
     let golden = 0.5 * (1.0 + 5f64.sqrt());
-    let w = IterationLu::new(&j, golden, None);
+    let w = IterationLu::new(&j, golden, None, None);
     // the pivot is a rounding residue or exactly zero: either refused
     // or tiny enough to be; the full matrix is singular there too
     if let Some(w) = w {
@@ -93,5 +93,56 @@ fn a_singular_reduced_matrix_is_reported() {
     }
     let mut nan = j;
     nan[(1, 1)] = f64::NAN;
-    assert!(IterationLu::new(&nan, 1.0, None).is_none());
+    assert!(IterationLu::new(&nan, 1.0, None, None).is_none());
+}
+
+/// A state of 3 components with 2 sensitivity columns: `J₀` on the
+/// diagonal blocks, coupling blocks `B₁`, `B₂` in the first block column.
+fn variational_like() -> SMatrix<f64, 9, 9> {
+    let j0 = |i: usize, j: usize| (((i * 5 + j * 3) % 7) as f64 - 3.0) * 10f64.powi(i as i32 - 1);
+    SMatrix::<f64, 9, 9>::from_fn(|i, j| {
+        let (bi, bj) = (i / 3, j / 3);
+        if bi == bj {
+            j0(i % 3, j % 3)
+        } else if bj == 0 {
+            ((i * 11 + j * 7) % 13) as f64 - 6.0
+        } else {
+            0.0
+        }
+    })
+}
+
+#[test]
+fn the_variational_block_solve_agrees_with_the_full_factorization() {
+    let j = variational_like();
+    let r =
+        SVector::<f64, 9>::from_fn(|i, _| (2.0 + i as f64).cos() * 10f64.powi(i as i32 % 4 - 2));
+    for c in [1e-3, 1.0, 4e2, 1e5, 1e9] {
+        let blocks = IterationLu::new(&j, c, None, Some(3)).expect("regular");
+        assert!(blocks.is_reduced(), "c = {c}: the block form is used");
+        let full = Lu::new(SMatrix::<f64, 9, 9>::identity() * c - j).expect("regular");
+        let (u, v) = (blocks.solve(&r), full.solve(&r));
+        assert!((u - v).amax() <= 1e-11 * v.amax(), "c = {c}: {u} vs {v}");
+    }
+}
+
+#[test]
+fn a_jacobian_not_of_the_declared_block_form_is_factorized_whole() {
+    let j = variational_like();
+    // a coupling outside the first block column, a diagonal block that
+    // differs from the first, a block size that does not divide N, and
+    // the state's block alone: the full factorization, the same solution
+    let mut upper = j;
+    upper[(1, 4)] = 0.25;
+    let mut coupled = j;
+    coupled[(7, 4)] = 0.5;
+    let mut diagonal = j;
+    diagonal[(4, 4)] += 1e-9;
+    let r = SVector::<f64, 9>::from_fn(|i, _| 1.0 + i as f64);
+    for (m, blocks) in [(upper, 3), (coupled, 3), (diagonal, 3), (j, 2), (j, 9)] {
+        let w = IterationLu::new(&m, 10.0, None, Some(blocks)).expect("regular");
+        assert!(!w.is_reduced(), "block size {blocks}: factorized whole");
+        let full = Lu::new(SMatrix::<f64, 9, 9>::identity() * 10.0 - m).expect("regular");
+        assert_eq!(w.solve(&r), full.solve(&r));
+    }
 }

@@ -193,7 +193,7 @@ pub(super) fn derivatives<const Q: usize, const M: usize>(
         }
         // The legs share the step budget.
         let leg = sensitivities::leg(options, attempts, cur.0)?;
-        let run = integrate::<_, N_STATE, Q, M>(sys, cur, to, &leg, events(peak))?;
+        let run = integrate::<_, N_STATE, Q, M>(sys, cur, to, Method::Dopri5, &leg, events(peak))?;
         out.work.0 += run.stats.steps;
         out.work.1 += run.stats.rhs_calls;
         attempts += run.stats.steps + run.stats.rejected;

@@ -23,7 +23,7 @@ mod trajectory;
 use crate::compliant_peg_3d::design::{Directions, N_DESIGN};
 use crate::compliant_peg_3d::insertion::{Insertion, N_STATE};
 use crate::error::{RunError, SceneError, SceneErrors};
-use crate::integrate::Options;
+use crate::integrate::{Method, Options};
 use crate::scene::context::RunContext;
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::limits::WorkItem;
@@ -31,6 +31,7 @@ use crate::scene::shared::compliant_peg_3d::design::{FIELDS, design, fixed_stiff
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene};
 use crate::scene::shared::sensitivities::{ErrorControl, StopOrError};
 use crate::scene::shared::sensitivities::{Row, output};
+use crate::scene::simulate::solver_config;
 use crate::scene::summary::Metric;
 use nalgebra::SMatrix;
 
@@ -160,9 +161,8 @@ fn unused(scene: &RccScene, b: &Built) -> [bool; N_DESIGN] {
 pub type Computed = (Vec<Row>, Option<(usize, usize)>);
 
 /// The rows of the `chosen` fields (slots of [`FIELDS`]) of scene `scene`
-/// built into `b`, integrated with `integrator`'s tolerances, span and
-/// step budget (always Dormand–Prince 5(4)), and the sensitivity run's
-/// work. The chosen fields that move something are seeded; the others
+/// built into `b`, integrated with `integrator`'s method, tolerances,
+/// span and step budget, and the sensitivity run's work. The chosen fields that move something are seeded; the others
 /// are constants (their columns stay zero); the step control measures
 /// what the table's [`ErrorControl`] says.
 ///
@@ -178,7 +178,7 @@ pub fn compute(
     let seeded: [bool; N_DESIGN] = std::array::from_fn(|k| chosen.contains(&k) && !unused[k]);
     let (d, y0q) = design(scene, b, &seeded);
     let dy0 = SMatrix::<f64, N_STATE, N_DESIGN>::from_fn(|i, k| y0q[i].d[k]);
-    let (sys, y0, options) = plain(b, integrator);
+    let (sys, y0, (method, options)) = plain(b, integrator)?;
     let (t0, t_end, seat) = (integrator.t0, integrator.t_end, b.criteria.seat_depth);
     let values = values(scene);
     let p = seeded.iter().filter(|s| **s).count();
@@ -189,7 +189,13 @@ pub fn compute(
         design: d,
         values,
     };
-    let result = trajectory::derivatives(&dir, (t0, y0, dy0), t_end, b.criteria, &run_options);
+    let result = trajectory::derivatives(
+        &dir,
+        (t0, y0, dy0),
+        t_end,
+        b.criteria,
+        (method, &run_options),
+    );
     let (scan, der) = match result {
         Ok(found) => found,
         Err(e) => return Ok((metrics::failed(chosen, &e.flag()?), None)),
@@ -206,20 +212,28 @@ pub fn compute(
     Ok((rows, Some(der.work)))
 }
 
-/// The system of `b`, its start, and the options of `integrator` (the
-/// sensitivity run's before their scaling).
-fn plain(
-    b: &Built,
-    integrator: &IntegratorSpec,
-) -> (Insertion, nalgebra::SVector<f64, N_STATE>, Options) {
+/// The plain run of a scene: its system, start state, and the method and
+/// options of its integrator (the sensitivity run's before their scaling).
+type PlainRun = (
+    Insertion,
+    nalgebra::SVector<f64, N_STATE>,
+    (Method, Options),
+);
+
+/// The plain run of `b` with `integrator`.
+///
+/// # Errors
+/// [`RunError::Integrate`] for `rk4` without a step.
+fn plain(b: &Built, integrator: &IntegratorSpec) -> Result<PlainRun, RunError> {
     let sys = Insertion::new(b.params, Some(b.held), 0.0);
     let y0 = b.start_state(&sys);
+    let (method, _) = solver_config(integrator)?;
     let options = Options {
         max_steps: integrator.max_steps,
         h0: integrator.h,
         ..Options::with_tolerances(integrator.rtol, integrator.atol)
     };
-    (sys, y0, options)
+    Ok((sys, y0, (method, options)))
 }
 
 /// The metrics' values of scene `scene` built into `b` by plain runs (no
@@ -235,14 +249,20 @@ pub fn metric_values(
     integrator: &IntegratorSpec,
 ) -> Result<Option<Vec<(&'static str, f64)>>, RunError> {
     let (d, _) = design(scene, b, &[false; N_DESIGN]);
-    let (sys, y0, options) = plain(b, integrator);
+    let (sys, y0, (method, options)) = plain(b, integrator)?;
     let dir = Directions {
         system: &sys,
         design: d,
         values: values(scene),
     };
     let start = (integrator.t0, y0);
-    match trajectory::values(&dir, start, integrator.t_end, b.criteria, &options) {
+    match trajectory::values(
+        &dir,
+        start,
+        integrator.t_end,
+        b.criteria,
+        (method, &options),
+    ) {
         Ok(v) => Ok(Some(
             v.into_iter()
                 .map(|(k, v)| (metrics::METRICS[k], v))

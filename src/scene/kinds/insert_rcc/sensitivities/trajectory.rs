@@ -327,7 +327,7 @@ pub(super) fn derivatives(
     start: (f64, SVector<f64, N_STATE>, Columns),
     t_end: f64,
     criteria: Criteria,
-    options: &Options,
+    (method, options): (Method, &Options),
 ) -> Result<(Scan, Derivatives), StopOrError> {
     let sys = dir.system;
     let d = &dir.design;
@@ -349,6 +349,7 @@ pub(super) fn derivatives(
         dir,
         start,
         t_end,
+        method,
         options,
         events,
         &mut |t, y, s| tracker.observe(t, y, s),
@@ -375,6 +376,7 @@ pub(super) fn derivatives(
             dir,
             (from.t, from.y, from.x),
             to,
+            method,
             &leg,
             vec![watch_event(dir, watch)],
         )?;
@@ -512,14 +514,14 @@ pub(super) fn values(
     start: (f64, SVector<f64, N_STATE>),
     t_end: f64,
     criteria: Criteria,
-    options: &Options,
+    (method, options): (Method, &Options),
 ) -> Result<Vec<(usize, f64)>, StopOrError> {
     let sys = dir.system;
     let d = &dir.design;
     let prm = sys.peg.params;
     let plain = |options: Options| {
         Solver::<N_STATE>::new(
-            Method::Dopri5,
+            method,
             Options {
                 output: OutputMode::EveryStep,
                 store: false,
