@@ -217,24 +217,20 @@ impl<'j, const N: usize> Blocks<'j, N> {
         Some(Blocks { n, jac, lu })
     }
 
-    /// Solves `(cI − J) u = r` block by block.
+    /// Solves `(cI − J) u = r` block by block, in place in `u` (no
+    /// allocation).
     fn solve(&self, r: &SVector<f64, N>) -> SVector<f64, N> {
         let n = self.n;
-        let mut u = SVector::<f64, N>::zeros();
-        let mut block = nalgebra::DVector::from_column_slice(&r.as_slice()[..n]);
-        self.lu.solve_mut(&mut block);
-        u.rows_mut(0, n).copy_from(&block);
+        let mut u = *r;
+        self.lu.solve_mut(&mut u.rows_mut(0, n));
         for k in 1..N / n {
             for i in 0..n {
                 let row = k * n + i;
-                let mut v = r[row];
                 for j in 0..n {
-                    v += self.jac[(row, j)] * u[j];
+                    u[row] += self.jac[(row, j)] * u[j];
                 }
-                block[i] = v;
             }
-            self.lu.solve_mut(&mut block);
-            u.rows_mut(k * n, n).copy_from(&block);
+            self.lu.solve_mut(&mut u.rows_mut(k * n, n));
         }
         u
     }

@@ -14,11 +14,12 @@ use crate::integrate::{Direction, Event, EventFn, Method, Options, Solver, Stats
 pub type EventGradient<'a, const N: usize, const P: usize> =
     dyn Fn(f64, &SVector<f64, N>) -> (SVector<f64, N>, SVector<f64, P>) + 'a;
 
-/// Stack a run needs per entry of an `M × M` matrix (bytes): the
-/// Rosenbrock methods keep the Jacobian, the iteration matrix and their
+/// Stack a Rosenbrock run needs per entry of an `M × M` matrix (bytes):
+/// the methods keep the Jacobian, the iteration matrix and their
 /// temporaries in their frames (between 4 and 8 MiB at `M = 208` in the
 /// tests' build); below this much left, the run continues on a stack of
-/// twice that, allocated on the heap.
+/// twice that, allocated on the heap. The explicit method holds no such
+/// matrix.
 const STACK_PER_ENTRY: usize = 8 * 32;
 
 /// An observer of a sensitivity run: `(t, y, ∂y/∂p)` at each reported
@@ -240,10 +241,11 @@ where
                     .terminal(),
             );
         }
-        let sol =
-            stacker::maybe_grow(STACK_PER_ENTRY * M * M, 2 * STACK_PER_ENTRY * M * M, || {
-                solver.solve(&var, t, z, t_end)
-            })?;
+        let need = match method {
+            Method::Rodas3 | Method::Rodas4 => STACK_PER_ENTRY * M * M,
+            Method::Rk4 { .. } | Method::Dopri5 => 0,
+        };
+        let sol = stacker::maybe_grow(need, 2 * need, || solver.solve(&var, t, z, t_end))?;
         drop(solver);
         stats += &sol.stats;
         (t, z) = (sol.t_final, sol.x_final);

@@ -38,26 +38,42 @@ impl<S, const N: usize, const P: usize> Variational<'_, S, N, P> {
         &self,
         z: &SVector<f64, M>,
     ) -> (SVector<f64, N>, SMatrix<f64, N, P>) {
+        let (y, cs) = Self::split(z);
+        (y, SMatrix::from_fn(|r, k| cs[(r, k)] / self.scale[k]))
+    }
+
+    /// `y` and the scaled columns `c_k s_k` of `z`.
+    fn split<const M: usize>(z: &SVector<f64, M>) -> (SVector<f64, N>, SMatrix<f64, N, P>) {
         let y = SVector::from_fn(|i, _| z[i]);
-        let s = SMatrix::from_fn(|r, k| z[N + k * N + r] / self.scale[k]);
-        (y, s)
+        let cs = SMatrix::from_fn(|r, k| z[N + k * N + r]);
+        (y, cs)
     }
 }
 
 impl<S: ParameterJacobian<N, P>, const N: usize, const P: usize> Variational<'_, S, N, P> {
-    /// The sensitivities' rate `J s + ∂f/∂p` (unscaled) at `(t, y)`: the
-    /// model's one-pass rate where it has one, else `J` and `∂f/∂p`.
-    fn rate(
+    /// The scaled columns' rate `c_k (J s_k + ∂f/∂p_k)` at `(t, y)` for the
+    /// scaled columns `cs` (column `k` is `c_k s_k`): from the model's
+    /// one-pass rate where it has one
+    /// ([`ParameterJacobian::try_sensitivity_rate`]), else from `J` and
+    /// `∂f/∂p`.
+    fn scaled_rate(
         &self,
         t: f64,
         y: &SVector<f64, N>,
-        s: &SMatrix<f64, N, P>,
+        cs: &SMatrix<f64, N, P>,
     ) -> Result<SMatrix<f64, N, P>, ModelError> {
-        if let Some(rate) = self.system.try_sensitivity_rate(t, y, s) {
-            return rate;
+        let s = SMatrix::<f64, N, P>::from_fn(|r, k| cs[(r, k)] / self.scale[k]);
+        if let Some(rate) = self.system.try_sensitivity_rate(t, y, &s) {
+            let rate = rate?;
+            return Ok(SMatrix::from_fn(|r, k| rate[(r, k)] * self.scale[k]));
         }
         let j = self.system.try_jacobian(t, y)?;
-        Ok(j * s + self.system.try_parameter_jacobian(t, y)?)
+        let fp = self.system.try_parameter_jacobian(t, y)?;
+        let mut out = SMatrix::<f64, N, P>::zeros();
+        for k in 0..P {
+            out.set_column(k, &(j * cs.column(k) + fp.column(k) * self.scale[k]));
+        }
+        Ok(out)
     }
 }
 
@@ -82,9 +98,9 @@ impl<S: ParameterJacobian<N, P>, const N: usize, const P: usize, const M: usize>
     /// [`crate::system::finite_difference_jacobian`]): `N + 1` evaluations
     /// of the rate.
     fn try_jacobian(&self, t: f64, z: &SVector<f64, M>) -> Result<SMatrix<f64, M, M>, ModelError> {
-        let (y, s) = self.unpack(z);
+        let (y, cs) = Self::split(z);
         let j = self.system.try_jacobian(t, &y)?;
-        let base = self.rate(t, &y, &s)?;
+        let base = self.scaled_rate(t, &y, &cs)?;
         let mut out = SMatrix::<f64, M, M>::zeros();
         for b in 0..=P {
             out.fixed_view_mut::<N, N>(b * N, b * N).copy_from(&j);
@@ -93,41 +109,27 @@ impl<S: ParameterJacobian<N, P>, const N: usize, const P: usize, const M: usize>
             let mut moved = y;
             moved[col] += f64::EPSILON.sqrt() * y[col].abs().max(1.0);
             let delta = moved[col] - y[col];
-            let rate = self.rate(t, &moved, &s)?;
+            let rate = self.scaled_rate(t, &moved, &cs)?;
             for k in 0..P {
                 for r in 0..N {
-                    out[(N + k * N + r, col)] =
-                        self.scale[k] * (rate[(r, k)] - base[(r, k)]) / delta;
+                    out[(N + k * N + r, col)] = (rate[(r, k)] - base[(r, k)]) / delta;
                 }
             }
         }
         Ok(out)
     }
 
-    /// `ż = (f, c_k (J s_k + ∂f/∂p_k))` with `c_k s_k` read from `z`:
-    /// from the model's one-pass rate where it has one
-    /// ([`ParameterJacobian::try_sensitivity_rate`]), else from `J` and
-    /// `∂f/∂p`.
+    /// `ż = (f, c_k (J s_k + ∂f/∂p_k))` with `c_k s_k` read from `z`
+    /// (`Variational::scaled_rate`).
     fn try_rhs(&self, t: f64, z: &SVector<f64, M>) -> Result<SVector<f64, M>, ModelError> {
-        let y: SVector<f64, N> = SVector::from_fn(|i, _| z[i]);
+        let (y, cs) = Self::split(z);
         let f = self.system.try_rhs(t, &y)?;
+        let rate = self.scaled_rate(t, &y, &cs)?;
         let mut out = SVector::<f64, M>::zeros();
         out.fixed_rows_mut::<N>(0).copy_from(&f);
-        let s = SMatrix::<f64, N, P>::from_fn(|r, k| z[N + k * N + r] / self.scale[k]);
-        if let Some(rate) = self.system.try_sensitivity_rate(t, &y, &s) {
-            let rate = rate?;
-            for k in 0..P {
-                let dk = rate.column(k) * self.scale[k];
-                out.fixed_rows_mut::<N>(N + k * N).copy_from(&dk);
-            }
-            return Ok(out);
-        }
-        let j = self.system.try_jacobian(t, &y)?;
-        let fp = self.system.try_parameter_jacobian(t, &y)?;
         for k in 0..P {
-            let sk: SVector<f64, N> = SVector::from_fn(|i, _| z[N + k * N + i]);
-            let dk = j * sk + fp.column(k) * self.scale[k];
-            out.fixed_rows_mut::<N>(N + k * N).copy_from(&dk);
+            out.fixed_rows_mut::<N>(N + k * N)
+                .copy_from(&rate.column(k));
         }
         Ok(out)
     }
