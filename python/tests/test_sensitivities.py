@@ -97,3 +97,30 @@ def test_a_sweep_carries_each_points_derivatives():
         rows[0]["flag(seat_time_s, insert_compliant.tangential_damping)"]
         == "not used by this model"
     )
+
+
+def test_design_margins_gives_the_capture_widths_derivatives_as_numpy_arrays():
+    # The capture widths' derivatives need no run: a one-point grid and a
+    # short nominal run keep the scene cheap.
+    scene = pegdyn.load(ROOT / "scenes" / "design_margins.toml").with_values(
+        {
+            "grid.centre_lateral_errors": [0.0],
+            "grid.angular_errors_deg": [0.0],
+            "integrator.t_end": 0.02,
+        }
+    )
+    s = scene.run().sensitivities
+    assert s is not None
+    assert set(s["metric"]) == {
+        "capture_width_m",
+        "frictionless_capture_width_m",
+        "aligned_tip_error_m",
+    }
+    row = (s["metric"] == "capture_width_m") & (s["parameter"] == "peg.hole_diameter")
+    # W_mu = D/2 + rho_h - (rho_h + rho_p) mu/sqrt(1 + mu^2)
+    assert s["derivative"][row][0] == 0.5
+    mu = (s["metric"] == "capture_width_m") & (s["parameter"] == "peg.friction")
+    np.testing.assert_allclose(s["derivative"][mu][0], -(8e-4) / 1.04**1.5, rtol=1e-12)
+    unused = s["parameter"] == "wrist.centre_height"
+    assert np.all(s["flag"][unused] == "not used by this model")
+    assert np.all(s["derivative"][unused] == 0.0)

@@ -221,8 +221,152 @@ fn design_margins_runs_end_to_end_and_writes_its_files() {
     // The nominal run reaches two-point contact: some rows carry its ratio.
     let simulated = depth.lines().skip(1).filter(|l| !l.ends_with(',')).count();
     assert!(simulated > 5, "{depth}");
-    for f in ["design.svg", "design.nojam.svg"] {
+    for f in ["design.svg", "design.nojam.svg", "design.sensitivities.svg"] {
         let svg = std::fs::read_to_string(dir.join(f)).unwrap();
         assert!(svg.contains("<svg"), "{f}");
     }
+    // The shipped [sensitivities] table: 3 widths x 6 fields. The capture
+    // width W_mu = R + rho_h - (rho_h + rho_p) mu/sqrt(1 + mu^2) moves one
+    // for one with the bore radius D/2 and not with the compliance centre.
+    let sens = std::fs::read_to_string(dir.join("design.sensitivities.csv")).unwrap();
+    assert_eq!(sens.lines().count(), 1 + 18, "{sens}");
+    let cells = |metric: &str, field: &str| -> Vec<String> {
+        let line = sens
+            .lines()
+            .find(|l| l.starts_with(&format!("{metric},{field},")))
+            .unwrap_or_else(|| panic!("{metric} along {field}: {sens}"));
+        line.split(',').map(str::to_owned).collect()
+    };
+    let row = cells("capture_width_m", "peg.hole_diameter");
+    assert!(
+        (row[3].parse::<f64>().unwrap() - 0.5).abs() < 1e-15,
+        "{row:?}"
+    );
+    let row = cells("frictionless_capture_width_m", "wrist.centre_height");
+    assert_eq!(
+        (row[3].as_str(), row[5].as_str()),
+        ("0", "not used by this model")
+    );
+    let ranking = summary
+        .metrics
+        .iter()
+        .find(|m| m.name == "elasticities of capture_width_m")
+        .and_then(|m| m.text.clone())
+        .unwrap_or_else(|| panic!("the ranking is in the summary: {:?}", summary.metrics));
+    assert!(ranking.starts_with("peg.hole_diameter"), "{ranking}");
+}
+
+/// `(f(x + h) − f(x − h))/2h` at `h` and `h/2`, Richardson-extrapolated.
+fn richardson(f: impl Fn(f64) -> f64, x: f64) -> f64 {
+    let central = |h: f64| (f(x + h) - f(x - h)) / (2.0 * h);
+    let h = 1e-3 * x.abs();
+    (4.0 * central(0.5 * h) - central(h)) / 3.0
+}
+
+#[test]
+fn the_capture_widths_derivatives_match_differences_of_the_scene_along_every_field() {
+    use pegdyn::scene::kinds::design_margins::sensitivities::{self, CaptureFields, FIELDS};
+    // The keys of the fields in the scene's text (each appears once).
+    let keys = [
+        "hole_diameter",
+        "clearance_ratio",
+        "rim_fillet",
+        "mouth_fillet",
+        "friction",
+        "centre_height",
+    ];
+    let grid = [
+        ("centre_lateral_errors", "[0.0]"),
+        ("angular_errors_deg", "[0.0]"),
+    ];
+    // A design away from the shipped one, so that no factor is 1 or 0.
+    let base = [0.031, 0.0041, 4.1e-4, 7.3e-4, 0.37, 0.019];
+    let at = |k: usize, v: Option<f64>| {
+        let texts: Vec<String> = (0..6)
+            .map(|i| {
+                format!(
+                    "{:e}",
+                    if i == k {
+                        v.unwrap_or(base[i])
+                    } else {
+                        base[i]
+                    }
+                )
+            })
+            .collect();
+        let mut changes = grid.to_vec();
+        for (key, text) in keys.iter().zip(&texts) {
+            changes.push((key, text.as_str()));
+        }
+        design(&changes)
+    };
+    let d = at(0, None);
+    let fields = CaptureFields {
+        hole_diameter: d.nominal.params.hole_diameter,
+        clearance_ratio: d.scene.peg.clearance_ratio,
+    };
+    let chosen: Vec<usize> = (0..FIELDS.len()).collect();
+    let rows = sensitivities::rows(&d.capture, fields, &chosen);
+    assert_eq!(rows.len(), 18);
+    let widths: [fn(&pegdyn::scene::kinds::design_margins::chamfer::Capture) -> f64; 3] = [
+        |c| c.width(),
+        |c| c.frictionless_width(),
+        |c| c.aligned_tip_error(),
+    ];
+    for (m, width) in widths.iter().enumerate() {
+        for k in 0..FIELDS.len() {
+            let row = &rows[m * FIELDS.len() + k];
+            assert_eq!(row.parameter, FIELDS[k]);
+            let exact = row.derivative.unwrap();
+            let fd = richardson(|v| width(&at(k, Some(v)).capture), base[k]);
+            // Each width is a few hundredths of a metre in fields of
+            // metres (derivatives of order one) or of one (friction,
+            // clearance): 1e-9 of the largest derivative is far above the
+            // differences' rounding.
+            assert!(
+                (exact - fd).abs() <= 1e-9 * exact.abs().max(1e-3),
+                "{} along {}: {exact} against {fd}",
+                row.metric,
+                row.parameter
+            );
+            if k == 5 {
+                assert_eq!((exact, row.flag.as_str()), (0.0, "not used by this model"));
+            } else {
+                assert!(row.flag.is_empty(), "{row:?}");
+                let el = row.elasticity.unwrap();
+                assert!(
+                    (el - base[k] / row.value.unwrap() * exact).abs() < 1e-15 * el.abs().max(1.0)
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_capture_sensitivities_table_is_refused_on_bad_names_naming_the_valid_ones() {
+    for (list, says) in [
+        (
+            r#"["peg.friction", "robot.speed"]"#,
+            "unknown field; the fields are: peg.hole_diameter",
+        ),
+        (r#"["peg.friction", "peg.friction"]"#, "named twice"),
+        ("[]", "name at least one field"),
+    ] {
+        let text = format!(
+            "{}\n[sensitivities]\nparameters = {list}\n",
+            variant(&[]).split("\n[sensitivities]").next().unwrap()
+        );
+        let err = pegdyn::scene::parse(&text).unwrap_err().to_string();
+        assert!(
+            err.contains("sensitivities.parameters") && err.contains(says),
+            "{list}: {err}"
+        );
+    }
+    // No error_control: nothing is integrated.
+    let text = variant(&[]).replace(
+        "[sensitivities]",
+        "[sensitivities]\nerror_control = \"all\"",
+    );
+    let err = pegdyn::scene::parse(&text).unwrap_err().to_string();
+    assert!(err.contains("error_control"), "{err}");
 }

@@ -5,6 +5,7 @@ use serde::Deserialize;
 
 use super::chamfer::{Capture, InitialError, Verdict};
 use super::ranges;
+use super::sensitivities::CaptureSensitivitiesTable;
 use crate::compliant_peg_3d::outcome::Outcome;
 use crate::error::{RunError, SceneError, SceneErrors};
 use crate::scene::integrator::{DefaultMethod, IntegratorSpec};
@@ -49,6 +50,9 @@ pub struct DesignScene {
     /// `[replay]` (optional; the page shows the nominal run by default).
     #[serde(default)]
     pub replay: GridReplayTable,
+    /// `[sensitivities]` (optional): the capture widths' derivatives.
+    #[serde(default)]
+    pub sensitivities: Option<CaptureSensitivitiesTable>,
 }
 
 /// One grid point: the robot's initial errors.
@@ -75,6 +79,9 @@ pub struct Design {
     pub integrator: IntegratorSpec,
     /// Why that method, for the description.
     pub method_reason: &'static str,
+    /// The slots in [`super::sensitivities::FIELDS`] of the fields the
+    /// `[sensitivities]` table names (None without the table).
+    pub sensitivities: Option<Vec<usize>>,
 }
 
 /// One grid run.
@@ -220,6 +227,9 @@ impl DesignScene {
                 ));
             }
         }
+        if let Some(t) = &self.sensitivities {
+            c.extend(t.chosen().map(|_| ()));
+        }
         if let Some(run) = self.replay.run {
             let points = g.centre_lateral_errors.len() * g.angular_errors_deg.len();
             if let Err(e) = run.check(points) {
@@ -318,6 +328,11 @@ impl Checked {
             centre_height: nominal.held.wrist.centre_height,
         };
         let (integrator, method_reason) = scene.integrator.resolved(DefaultMethod::NON_STIFF);
+        let sensitivities = scene
+            .sensitivities
+            .as_ref()
+            .map(CaptureSensitivitiesTable::chosen)
+            .transpose()?;
         Ok(Design {
             scene,
             nominal,
@@ -325,6 +340,7 @@ impl Checked {
             capture,
             integrator,
             method_reason,
+            sensitivities,
         })
     }
 }

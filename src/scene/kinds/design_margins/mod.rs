@@ -30,6 +30,11 @@
 //! region at several depths with the wrist's load ratio, and the margin
 //! against depth) and the replay page `<name>.html` of one run:
 //! `replay.run = "nominal"` (default), `"worst"` or a grid index.
+//!
+//! With a `[sensitivities]` table it also writes the capture widths'
+//! derivatives with respect to the named fields ([`sensitivities`]):
+//! `<name>.sensitivities.csv`, the tornado plot
+//! `<name>.sensitivities.svg` and the ranking in the summary.
 
 pub mod chamfer;
 pub mod chamfer_sensitivity;
@@ -38,6 +43,7 @@ pub mod design;
 mod figures;
 pub mod ranges;
 pub mod report;
+pub mod sensitivities;
 
 pub use design::{Checked, Design, DesignScene, GridRun, GridTable, Point};
 
@@ -52,6 +58,7 @@ use crate::scene::shared::compliant_peg_3d::insertion::Built;
 use crate::scene::shared::compliant_peg_3d::ranges as peg_3d;
 use crate::scene::shared::compliant_peg_3d::replay;
 use crate::scene::shared::replay::RunChoice;
+use crate::scene::shared::sensitivities::output;
 use crate::scene::summary::RunSummary;
 
 /// Registry entry.
@@ -139,6 +146,14 @@ impl Scene for Design {
         let mut metrics = report::analytic_metrics(self);
         metrics.extend(nominal.metrics(&self.nominal.params, self.scene.peg.clearance_ratio));
         metrics.extend(report::grid_metrics(&rows));
+        if let Some(chosen) = &self.sensitivities {
+            let fields = sensitivities::CaptureFields {
+                hole_diameter: self.nominal.params.hole_diameter,
+                clearance_ratio: self.scene.peg.clearance_ratio,
+            };
+            let rows = sensitivities::rows(&self.capture, fields, chosen);
+            metrics.extend(output::write(ctx, &rows, &sensitivities::METRICS, "")?);
+        }
         if page {
             let outcomes: Vec<(bool, f64)> = rows.iter().map(|r| (r.seated(), r.end)).collect();
             let describe = |p: &Point| {

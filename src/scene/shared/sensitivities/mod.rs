@@ -9,7 +9,7 @@ pub mod output;
 
 use serde::Deserialize;
 
-use crate::error::RunError;
+use crate::error::{RunError, SceneError};
 use crate::integrate::{Options, StopReason};
 use crate::sensitivity::SensitivityError;
 
@@ -77,6 +77,40 @@ impl ErrorControl {
             }
         }
     }
+}
+
+/// The field of a scene that names the parameters.
+pub const PARAMETERS_FIELD: &str = "sensitivities.parameters";
+
+/// The indices into `fields` (a kind's field names) of the `parameters` a
+/// `[sensitivities]` table names, in the order named, and the errors
+/// naming [`PARAMETERS_FIELD`]: an empty list or an unknown name (each
+/// with the valid names), a name given twice.
+pub fn choose(parameters: &[String], fields: &[&str]) -> (Vec<usize>, Vec<SceneError>) {
+    let mut errors = Vec::new();
+    let mut chosen = Vec::new();
+    let valid = fields.join(", ");
+    if parameters.is_empty() {
+        errors.push(SceneError::invalid(
+            PARAMETERS_FIELD,
+            parameters,
+            format!("name at least one field; the fields are: {valid}"),
+        ));
+    }
+    for name in parameters {
+        match fields.iter().position(|f| f == name) {
+            None => errors.push(SceneError::invalid(
+                PARAMETERS_FIELD,
+                name,
+                format!("unknown field; the fields are: {valid}"),
+            )),
+            Some(k) if chosen.contains(&k) => {
+                errors.push(SceneError::invalid(PARAMETERS_FIELD, name, "named twice"));
+            }
+            Some(k) => chosen.push(k),
+        }
+    }
+    (chosen, errors)
 }
 
 /// The relative change of a field within which a derivative must hold for

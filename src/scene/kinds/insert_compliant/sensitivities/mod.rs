@@ -28,8 +28,8 @@ use crate::integrate::Options;
 use crate::scene::context::RunContext;
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::limits::WorkItem;
-use crate::scene::shared::sensitivities::StopOrError;
 use crate::scene::shared::sensitivities::output;
+use crate::scene::shared::sensitivities::{PARAMETERS_FIELD, StopOrError, choose};
 use crate::scene::summary::Metric;
 use fields::{FIELDS, N_FIELDS};
 use nalgebra::{SMatrix, SVector};
@@ -37,7 +37,7 @@ use trajectory::{Derivatives, Scan};
 
 pub use crate::scene::shared::sensitivities::{ErrorControl, SensitivitiesTable};
 
-const FIELD: &str = "sensitivities.parameters";
+const FIELD: &str = PARAMETERS_FIELD;
 
 /// What [`compute`] gives: the rows, and the sensitivity run's accepted
 /// steps and right-hand-side evaluations (None when every row is flagged
@@ -49,31 +49,7 @@ pub type Computed = (Vec<metrics::Row>, Option<(usize, usize)>);
 /// name given twice, an empty list, or a model variant without parameter
 /// Jacobians.
 pub fn check(table: &SensitivitiesTable, b: &Built) -> Result<Vec<usize>, SceneErrors> {
-    let mut errors = Vec::new();
-    let mut chosen = Vec::new();
-    if table.parameters.is_empty() {
-        errors.push(SceneError::invalid(
-            FIELD,
-            &table.parameters,
-            format!(
-                "name at least one field; the fields are: {}",
-                FIELDS.join(", ")
-            ),
-        ));
-    }
-    for name in &table.parameters {
-        match FIELDS.iter().position(|f| f == name) {
-            None => errors.push(SceneError::invalid(
-                FIELD,
-                name,
-                format!("unknown field; the fields are: {}", FIELDS.join(", ")),
-            )),
-            Some(k) if chosen.contains(&k) => {
-                errors.push(SceneError::invalid(FIELD, name, "named twice"));
-            }
-            Some(k) => chosen.push(k),
-        }
-    }
+    let (chosen, mut errors) = choose(&table.parameters, &FIELDS);
     let spec = &b.params.spec;
     if spec.contacts != ContactSet::All {
         errors.push(SceneError::invalid(

@@ -29,7 +29,7 @@ use crate::scene::integrator::IntegratorSpec;
 use crate::scene::limits::WorkItem;
 use crate::scene::shared::compliant_peg_3d::design::{FIELDS, design, fixed_stiffness, values};
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene};
-use crate::scene::shared::sensitivities::{ErrorControl, StopOrError};
+use crate::scene::shared::sensitivities::{ErrorControl, PARAMETERS_FIELD, StopOrError, choose};
 use crate::scene::shared::sensitivities::{Row, output};
 use crate::scene::simulate::solver_config;
 use crate::scene::summary::Metric;
@@ -37,7 +37,7 @@ use nalgebra::SMatrix;
 
 pub use crate::scene::shared::sensitivities::SensitivitiesTable;
 
-const FIELD: &str = "sensitivities.parameters";
+const FIELD: &str = PARAMETERS_FIELD;
 
 /// The chosen fields' slots in [`FIELDS`], or the errors naming
 /// `sensitivities.parameters`: an unknown name (with the valid ones), a
@@ -47,29 +47,7 @@ const FIELD: &str = "sensitivities.parameters";
 /// # Errors
 /// Every problem with the table, named.
 pub fn check(table: &SensitivitiesTable, b: &Built) -> Result<Vec<usize>, SceneErrors> {
-    let mut errors = Vec::new();
-    let mut chosen = Vec::new();
-    let valid = FIELDS.join(", ");
-    if table.parameters.is_empty() {
-        errors.push(SceneError::invalid(
-            FIELD,
-            &table.parameters,
-            format!("name at least one field; the fields are: {valid}"),
-        ));
-    }
-    for name in &table.parameters {
-        match FIELDS.iter().position(|f| f == name) {
-            None => errors.push(SceneError::invalid(
-                FIELD,
-                name,
-                format!("unknown field; the fields are: {valid}"),
-            )),
-            Some(k) if chosen.contains(&k) => {
-                errors.push(SceneError::invalid(FIELD, name, "named twice"));
-            }
-            Some(k) => chosen.push(k),
-        }
-    }
+    let (chosen, mut errors) = choose(&table.parameters, &FIELDS);
     if !fixed_stiffness(&b.params) {
         errors.push(SceneError::invalid(
             FIELD,
