@@ -22,6 +22,7 @@ mod scene_limits;
 mod scene_progress;
 mod scene_ranges;
 mod scene_shared_replay;
+mod scene_shared_sensitivities;
 mod scene_simulate;
 mod scene_summary;
 mod scene_timescales;
