@@ -149,6 +149,7 @@ fn derivatives_match_differences_of_full_scene_runs() {
             "peak_contact_force_N",
             "two_point_start_s",
             "two_point_end_s",
+            "two_point_depth_m",
         ],
     );
     let unseated = worst_difference(&unseated(), &["final_depth_m"]);

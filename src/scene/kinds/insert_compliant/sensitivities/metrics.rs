@@ -9,7 +9,10 @@
 //!   its time `t*` (where `dF/dt = 0`, so `t*`'s own change drops out);
 //! - `two_point_start_s`, `two_point_end_s`: the contact events where the
 //!   peg enters or leaves two-point contact (one edge and the opposite wall
-//!   both closed).
+//!   both closed);
+//! - `two_point_depth_m`: the depth where two-point contact starts,
+//!   `l_y (s + f ∂t_e/∂q) + l_q` at that event (the depth's total change
+//!   with the event's time).
 //!
 //! A derivative is flagged instead of given when a change of the field by
 //! [`PERTURBATION`] of its value (predicted to first order) changes the
@@ -30,12 +33,13 @@ use crate::compliant_peg::system::N_STATE;
 pub use crate::scene::shared::sensitivities::{PERTURBATION, Row};
 
 /// The metric names, in output order.
-pub const METRICS: [&str; 5] = [
+pub const METRICS: [&str; 6] = [
     "seat_time_s",
     "final_depth_m",
     "peak_contact_force_N",
     "two_point_start_s",
     "two_point_end_s",
+    "two_point_depth_m",
 ];
 
 /// The rows of `chosen` fields (indices into [`FIELDS`]), `unused[k]`
@@ -127,31 +131,42 @@ pub(super) fn rows(
         closed[*c] = sys.delta_rate(*c, &e.y) > 0.0;
         let now = two_point(&closed);
         if now && !was && began.is_none() {
-            began = Some((e.t, e.dt_dp));
+            began = Some(e);
         }
         if !now && was && ended.is_none() {
-            ended = Some((e.t, e.dt_dp));
+            ended = Some(e);
         }
         was = now;
     }
     let grazing = scan.grazing;
+    let grazes = move |_: usize| {
+        grazing.map(|(c, tg)| {
+            format!(
+                "contact {} grazes at t = {tg:.6e} s: an event appears or vanishes within a \
+                 small change",
+                CONTACTS[c]
+            )
+        })
+    };
     for (name, hit) in [(METRICS[3], began), (METRICS[4], ended)] {
-        if let Some((t, dt)) = hit {
+        if let Some(e) = hit {
             metrics.push(Measured {
                 name,
-                value: Some(t),
-                derivative: dt.as_slice().to_vec(),
-                flag: Box::new(move |_| {
-                    grazing.map(|(c, tg)| {
-                        format!(
-                            "contact {} grazes at t = {tg:.6e} s: an event appears or vanishes \
-                             within a small change",
-                            CONTACTS[c]
-                        )
-                    })
-                }),
+                value: Some(e.t),
+                derivative: e.dt_dp.as_slice().to_vec(),
+                flag: Box::new(grazes),
             });
         }
+    }
+    if let Some(e) = began {
+        let (l_y, l_q) = sys.depth_gradient(&e.y);
+        let dl = e.state_at_event().transpose() * l_y + l_q;
+        metrics.push(Measured {
+            name: METRICS[5],
+            value: Some(sys.depth(&e.y)),
+            derivative: dl.as_slice().to_vec(),
+            flag: Box::new(grazes),
+        });
     }
     sensitivities::rows(&metrics, chosen, unused, values.as_slice(), &FIELDS)
 }
