@@ -62,6 +62,16 @@ fn rows_give_the_elasticity_withhold_flagged_derivatives_and_flag_unused_and_non
     // Unused wins over the metric's own flag: a zero, flagged.
     assert_eq!((r[2].derivative, r[2].elasticity), (Some(0.0), Some(0.0)));
     assert_eq!(r[2].flag, "not used by this model");
+    // A derivative of −0 (a product with a zero factor) is written as 0.
+    let signed = [Measured {
+        name: "m_s",
+        value: Some(8.0),
+        derivative: vec![-0.0, 0.0, 0.0],
+        flag: Box::new(|_| None),
+    }];
+    let z = rows(&signed, &[0], &[false; 3], &values, &FIELDS);
+    assert_eq!(z[0].derivative.map(f64::to_bits), Some(0.0f64.to_bits()));
+    assert_eq!(z[0].elasticity.map(f64::to_bits), Some(0.0f64.to_bits()));
     // A metric of value zero has derivatives but no elasticity.
     assert_eq!((r[3].derivative, r[3].elasticity), (Some(1.0), None));
     assert_eq!((r[3].metric, r[3].parameter), ("zero_m", "a.x"));

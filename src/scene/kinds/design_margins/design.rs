@@ -227,9 +227,18 @@ impl DesignScene {
                 ));
             }
         }
-        if let Some(t) = &self.sensitivities {
-            c.extend(t.chosen().map(|_| ()));
-        }
+        let sensitivities = match self
+            .sensitivities
+            .as_ref()
+            .map(CaptureSensitivitiesTable::chosen)
+        {
+            Some(Ok(chosen)) => Some(chosen),
+            Some(Err(e)) => {
+                c.extend(Err(e));
+                None
+            }
+            None => None,
+        };
         if let Some(run) = self.replay.run {
             let points = g.centre_lateral_errors.len() * g.angular_errors_deg.len();
             if let Err(e) = run.check(points) {
@@ -240,6 +249,7 @@ impl DesignScene {
         Ok(Checked {
             scene: self.clone(),
             nominal,
+            sensitivities,
         })
     }
 }
@@ -252,6 +262,9 @@ pub struct Checked {
     pub scene: DesignScene,
     /// The nominal insertion.
     pub nominal: Built,
+    /// The slots of the `[sensitivities]` table's fields, as
+    /// [`Design::sensitivities`].
+    pub sensitivities: Option<Vec<usize>>,
 }
 
 impl Checked {
@@ -267,7 +280,11 @@ impl Checked {
     /// A grid point whose tip error leaves the robot's range (naming the
     /// list entry), or the memory for the points cannot be reserved.
     pub fn build(self) -> Result<Design, SceneErrors> {
-        let Checked { scene, nominal } = self;
+        let Checked {
+            scene,
+            nominal,
+            sensitivities,
+        } = self;
         let n = scene.grid.centre_lateral_errors.len() * scene.grid.angular_errors_deg.len();
         let mut points = try_with_capacity(n, "grid points", "max_runs")
             .map_err(|e| SceneErrors::from(SceneError::invalid("grid", n, e.to_string())))?;
@@ -328,11 +345,6 @@ impl Checked {
             centre_height: nominal.held.wrist.centre_height,
         };
         let (integrator, method_reason) = scene.integrator.resolved(DefaultMethod::NON_STIFF);
-        let sensitivities = scene
-            .sensitivities
-            .as_ref()
-            .map(CaptureSensitivitiesTable::chosen)
-            .transpose()?;
         Ok(Design {
             scene,
             nominal,

@@ -92,8 +92,6 @@ impl CaptureGradient {
     #[must_use]
     pub fn along_fields(&self, f: CaptureFields) -> [f64; 6] {
         let (d, c) = (f.hole_diameter, f.clearance_ratio);
-        // `+ 0.0` turns a −0 (a width that holds no peg radius, along c)
-        // into 0, so that no "-0" is written.
         [
             0.5 * self.bore_radius + 0.5 * (1.0 - c) * self.peg_radius,
             -0.5 * d * self.peg_radius,
@@ -102,7 +100,6 @@ impl CaptureGradient {
             self.friction,
             0.0,
         ]
-        .map(|v| v + 0.0)
     }
 }
 

@@ -173,8 +173,13 @@ pub fn rows(
                 (_, true) => (Some(0.0), Some(0.0)),
                 (Some(_), false) => (None, None),
                 (None, false) => {
-                    let der = m.derivative[k];
-                    let el = m.value.filter(|v| *v != 0.0).map(|v| values[k] / v * der);
+                    // `+ 0.0`: a zero derivative is written `0` whatever
+                    // its sign (a −0 would read as a decrease).
+                    let der = m.derivative[k] + 0.0;
+                    let el = m
+                        .value
+                        .filter(|v| *v != 0.0)
+                        .map(|v| values[k] / v * der + 0.0);
                     (Some(der), el)
                 }
             };

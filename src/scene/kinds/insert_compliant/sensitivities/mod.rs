@@ -29,15 +29,13 @@ use crate::scene::context::RunContext;
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::limits::WorkItem;
 use crate::scene::shared::sensitivities::output;
-use crate::scene::shared::sensitivities::{PARAMETERS_FIELD, StopOrError, choose};
+use crate::scene::shared::sensitivities::{PARAMETERS_FIELD as FIELD, StopOrError, choose};
 use crate::scene::summary::Metric;
 use fields::{FIELDS, N_FIELDS};
 use nalgebra::{SMatrix, SVector};
 use trajectory::{Derivatives, Scan};
 
 pub use crate::scene::shared::sensitivities::{ErrorControl, SensitivitiesTable};
-
-const FIELD: &str = PARAMETERS_FIELD;
 
 /// What [`compute`] gives: the rows, and the sensitivity run's accepted
 /// steps and right-hand-side evaluations (None when every row is flagged

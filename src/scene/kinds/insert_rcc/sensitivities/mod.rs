@@ -29,15 +29,15 @@ use crate::scene::integrator::IntegratorSpec;
 use crate::scene::limits::WorkItem;
 use crate::scene::shared::compliant_peg_3d::design::{FIELDS, design, fixed_stiffness, values};
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene};
-use crate::scene::shared::sensitivities::{ErrorControl, PARAMETERS_FIELD, StopOrError, choose};
+use crate::scene::shared::sensitivities::{
+    ErrorControl, PARAMETERS_FIELD as FIELD, StopOrError, choose,
+};
 use crate::scene::shared::sensitivities::{Row, output};
 use crate::scene::simulate::solver_config;
 use crate::scene::summary::Metric;
 use nalgebra::SMatrix;
 
 pub use crate::scene::shared::sensitivities::SensitivitiesTable;
-
-const FIELD: &str = PARAMETERS_FIELD;
 
 /// The chosen fields' slots in [`FIELDS`], or the errors naming
 /// `sensitivities.parameters`: an unknown name (with the valid ones), a
