@@ -11,6 +11,7 @@ use pegdyn::scene::kinds::insert_rcc::sensitivities::{compute, metric_values};
 use pegdyn::scene::shared::compliant_peg_3d::design::{FIELDS, slot, values};
 use pegdyn::scene::shared::compliant_peg_3d::insertion::RccScene;
 use pegdyn::scene::shared::sensitivities::Row;
+use rayon::prelude::*;
 
 /// The shipped scene with `changes`, integrated by Dormand–Prince unless
 /// `changes` name the method.
@@ -261,13 +262,28 @@ fn through_the_chamfer_every_metric_matches_differences_along_eight_fields() {
         .iter()
         .map(|f| FIELDS.iter().position(|g| g == f).expect("a field"))
         .collect();
-    let base = rows(&s, &chosen);
     let q = values(&s);
     let metrics = |k: usize, v: f64| {
         let mut moved = s.clone();
         *slot(&mut moved, k) = v;
         plain(&moved)
     };
+    // The sensitivity run and the 32 moved runs are independent: they run
+    // on every core (rayon), the differences read back in order.
+    let steps = |k: usize| if q[k] == 0.0 { 1e-5 } else { 1e-3 * q[k].abs() };
+    let moved: Vec<(usize, f64)> = chosen
+        .iter()
+        .flat_map(|&k| [-1.0, -0.5, 0.5, 1.0].map(|d| (k, q[k] + d * steps(k))))
+        .collect();
+    let (base, moved_runs) = rayon::join(
+        || rows(&s, &chosen),
+        || {
+            moved
+                .par_iter()
+                .map(|&(k, v)| metrics(k, v))
+                .collect::<Vec<_>>()
+        },
+    );
     let value = |m: &[(&'static str, f64)], name: &str| {
         m.iter()
             .find(|(n, _)| *n == name)
@@ -276,12 +292,9 @@ fn through_the_chamfer_every_metric_matches_differences_along_eight_fields() {
     };
     let mut worst: f64 = 0.0;
     let mut flagged = 0;
-    for &k in &chosen {
-        let h = if q[k] == 0.0 { 1e-5 } else { 1e-3 * q[k].abs() };
-        let runs: Vec<_> = [-h, -0.5 * h, 0.5 * h, h]
-            .iter()
-            .map(|d| metrics(k, q[k] + d))
-            .collect();
+    for (i, &k) in chosen.iter().enumerate() {
+        let h = steps(k);
+        let runs = &moved_runs[4 * i..4 * i + 4];
         for name in CHAMFER_METRICS {
             let r = base
                 .iter()
