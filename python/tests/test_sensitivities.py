@@ -124,3 +124,66 @@ def test_design_margins_gives_the_capture_widths_derivatives_as_numpy_arrays():
     unused = s["parameter"] == "wrist.centre_height"
     assert np.all(s["flag"][unused] == "not used by this model")
     assert np.all(s["derivative"][unused] == 0.0)
+
+
+RCC = ROOT / "scenes" / "insert_rcc_sensitivities.toml"
+
+
+def _short_rcc():
+    """The shipped robot insertion's sensitivity scene, started 1 mm in the
+    bore and seated at 2 mm (a short run for the tests)."""
+    return pegdyn.load(RCC).with_values(
+        {
+            "robot.start_height": -1e-3,
+            "criteria.seat_depth": 0.002,
+            "integrator.t_end": 0.3,
+            "integrator.rtol": 1e-8,
+        }
+    )
+
+
+def test_the_robot_insertion_gives_its_metrics_derivatives_as_numpy_arrays():
+    r = _short_rcc().run()
+    s = r.sensitivities
+    assert s is not None
+    n = len(s["metric"])
+    assert n > 0 and all(len(v) == n for v in s.values())
+    for k in ("value", "derivative", "elasticity"):
+        assert s[k].dtype == np.float64
+    # Every field the scene names, for the seat time.
+    seat = s["metric"] == "seat_time_s"
+    named = set(s["parameter"][seat])
+    assert {"wrist.lateral_stiffness", "robot.speed", "peg.friction"} <= named
+    # Unflagged rows carry finite numbers, elasticity = q/m dm/dq.
+    ok = s["flag"] == ""
+    assert ok.any()
+    assert np.all(np.isfinite(s["derivative"][ok]))
+    # Along the robot's speed v: the seat time of a peg already in the bore
+    # is dominated by the descent, t = (distance)/v, so its elasticity is
+    # near -1.
+    speed = seat & (s["parameter"] == "robot.speed") & ok
+    assert speed.any()
+    el = s["elasticity"][speed][0]
+    np.testing.assert_allclose(
+        el, 0.01 / s["value"][speed][0] * s["derivative"][speed][0], rtol=1e-12
+    )
+    assert -1.1 < el < -0.9, el
+    # The same rows as the table the run kept.
+    table = next(t for k, t in r.tables.items() if k.endswith(".sensitivities"))
+    assert list(s["metric"]) == list(table["metric"])
+
+
+def test_the_robot_insertion_seat_time_derivative_agrees_with_two_runs():
+    scene = _short_rcc()
+    s = scene.run().sensitivities
+    row = (s["metric"] == "seat_time_s") & (s["parameter"] == "peg.friction")
+    assert s["flag"][row][0] == ""
+    d = s["derivative"][row][0]
+
+    def seat(mu):
+        t = scene.with_values({"peg.friction": mu}).run().sensitivities
+        return t["value"][t["metric"] == "seat_time_s"][0]
+
+    h = 2e-4
+    fd = (seat(0.2 + h) - seat(0.2 - h)) / (2 * h)
+    assert abs(d - fd) < 1e-4 * abs(fd), (d, fd)
