@@ -349,7 +349,6 @@ pub mod compliant_peg {
     ///
     /// # Cost
     /// 360 add/sub, 715 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 285 `let`s.
-    #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
         let z = y[1];
@@ -1161,7 +1160,6 @@ pub mod compliant_peg {
     ///
     /// # Cost
     /// 364 add/sub, 728 mul, 10 div, 8 sqrt, 6 transcendental, 24 branches; 280 `let`s.
-    #[inline]
     pub fn rhs_p<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 24> {
         let x = y[0];
         let z = y[1];

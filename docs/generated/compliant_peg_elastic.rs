@@ -198,7 +198,6 @@ pub mod compliant_peg_elastic {
     ///
     /// # Cost
     /// 150 add/sub, 248 mul, 15 div, 8 sqrt, 10 transcendental, 20 branches; 150 `let`s.
-    #[inline]
     pub fn rhs<T: Real>(y: &SVector<T, 12>, p: &SVector<T, 27>) -> SVector<T, 12> {
         let x = y[0];
         let z = y[1];
@@ -458,7 +457,6 @@ pub mod compliant_peg_elastic {
     ///
     /// # Cost
     /// 546 add/sub, 1158 mul, 18 div, 12 sqrt, 10 transcendental, 44 branches; 465 `let`s.
-    #[inline]
     pub fn jacobian<T: Real>(
         y: &SVector<T, 12>,
         p: &SVector<T, 27>,

@@ -168,7 +168,6 @@ pub mod compliant_peg_lean {
     ///
     /// # Cost
     /// 196 add/sub, 439 mul, 6 div, 4 sqrt, 4 transcendental, 12 branches; 165 `let`s.
-    #[inline]
     pub fn jacobian<T: Real>(y: &SVector<T, 8>, p: &SVector<T, 24>) -> SMatrix<T, 8, 8> {
         let x = y[0];
         let z = y[1];

@@ -786,7 +786,6 @@ pub mod rigid_peg {
     ///
     /// # Cost
     /// 219 add/sub, 449 mul, 6 div, 2 sqrt, 7 transcendental, 0 branches; 129 `let`s.
-    #[inline]
     pub fn forward_p<T: Real>(
         x: &SVector<T, 4>,
         u: &SVector<T, 5>,

@@ -196,9 +196,10 @@ pub fn function(
     };
     let docs = doc_lines(&fn_doc(g, spec, out, &row));
     let name = ident(&spec.name);
+    let inline = (row.lets <= INLINE_LETS).then(|| quote!(#[inline]));
     let ts = quote! {
         #(#docs)*
-        #[inline]
+        #inline
         pub fn #name<T: Real>(#(#params),*) -> #ret {
             #(#binds)*
             #(#lets)*
@@ -207,6 +208,18 @@ pub fn function(
     };
     (ts, row)
 }
+
+/// The largest function (in named intermediates) emitted `#[inline]`.
+///
+/// `#[inline]` lets a caller in another crate or codegen unit inline the
+/// function, and makes every crate that calls a generic function compile
+/// its own copy (an inline function is not shared from the crate that
+/// defines it). For the right-hand sides and contact functions of the hot
+/// loops (up to about 90 `let`s) that is worth it; a Jacobian or parameter
+/// Jacobian of hundreds of `let`s gains nothing from being inlined into
+/// its caller, and as an inline function it was compiled again into each
+/// test binary, the command line and the Python module.
+pub const INLINE_LETS: usize = 100;
 
 /// The doc comment: the model's text, the inputs and outputs, the counts.
 fn fn_doc(g: &Graph, spec: &FnSpec, out: &str, row: &ReportRow) -> String {
