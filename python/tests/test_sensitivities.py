@@ -11,14 +11,23 @@ SCENE = ROOT / "scenes" / "insert_compliant_sensitivities.toml"
 PLAIN = ROOT / "scenes" / "insert_compliant.toml"
 
 
-def test_the_table_comes_as_numpy_arrays():
-    r = pegdyn.load(SCENE).run()
-    s = r.sensitivities
+def _table(result):
+    """``result.sensitivities``, checked to be a table of equal-length
+    numpy arrays with float64 numbers and the rows of the run's own
+    ``.sensitivities`` table."""
+    s = result.sensitivities
     assert s is not None
     n = len(s["metric"])
     assert n > 0 and all(len(v) == n for v in s.values())
     for k in ("value", "derivative", "elasticity"):
         assert s[k].dtype == np.float64
+    table = next(t for k, t in result.tables.items() if k.endswith(".sensitivities"))
+    assert list(s["metric"]) == list(table["metric"])
+    return s
+
+
+def test_the_table_comes_as_numpy_arrays():
+    s = _table(pegdyn.load(SCENE).run())
     # The field the model does not use: a zero, flagged.
     unused = s["parameter"] == "insert_compliant.tangential_damping"
     assert unused.any()
@@ -30,9 +39,6 @@ def test_the_table_comes_as_numpy_arrays():
     np.testing.assert_allclose(
         s["elasticity"][mu], 0.1 / s["value"][mu] * s["derivative"][mu], rtol=1e-12
     )
-    # The same numbers as the table the run kept.
-    table = next(t for k, t in r.tables.items() if k.endswith(".sensitivities"))
-    assert list(s["metric"]) == list(table["metric"])
 
 
 def test_the_seat_time_derivative_agrees_with_differences_of_two_runs():
@@ -143,13 +149,7 @@ def _short_rcc():
 
 
 def test_the_robot_insertion_gives_its_metrics_derivatives_as_numpy_arrays():
-    r = _short_rcc().run()
-    s = r.sensitivities
-    assert s is not None
-    n = len(s["metric"])
-    assert n > 0 and all(len(v) == n for v in s.values())
-    for k in ("value", "derivative", "elasticity"):
-        assert s[k].dtype == np.float64
+    s = _table(_short_rcc().run())
     # Every field the scene names, for the seat time.
     seat = s["metric"] == "seat_time_s"
     named = set(s["parameter"][seat])
@@ -168,9 +168,6 @@ def test_the_robot_insertion_gives_its_metrics_derivatives_as_numpy_arrays():
         el, 0.01 / s["value"][speed][0] * s["derivative"][speed][0], rtol=1e-12
     )
     assert -1.1 < el < -0.9, el
-    # The same rows as the table the run kept.
-    table = next(t for k, t in r.tables.items() if k.endswith(".sensitivities"))
-    assert list(s["metric"]) == list(table["metric"])
 
 
 def test_the_robot_insertion_seat_time_derivative_agrees_with_two_runs():
