@@ -20,6 +20,7 @@ use pegdyn_equations::graph::{Binary, Node};
 use pegdyn_equations::{Graph, Id};
 
 pub mod cli;
+pub mod differences;
 pub mod fields;
 pub mod fuzz;
 pub mod peg3d;

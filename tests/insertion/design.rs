@@ -8,6 +8,7 @@
 //! derivative against differences of the rebuilt start; `∂f/∂y` at the
 //! same states against differences.
 
+use crate::common::differences::richardson;
 use crate::common::rcc;
 use nalgebra::{SMatrix, SVector};
 use pegdyn::compliant_peg_3d::Pair;
@@ -31,17 +32,6 @@ fn system_with(scene: &RccScene, k: usize, v: f64) -> (Insertion, SVector<f64, N
     let sys = Insertion::new(b.params, Some(b.held), 0.0);
     let y0 = b.start_state(&sys);
     (sys, y0)
-}
-
-/// Richardson-extrapolated central difference `(4 D(h/2) − D(h))/3` of
-/// `f` at `q` with the step `h`.
-fn difference<const R: usize>(
-    q: f64,
-    h: f64,
-    f: impl Fn(f64) -> SVector<f64, R>,
-) -> SVector<f64, R> {
-    let central = |h: f64| (f(q + h) - f(q - h)) / (2.0 * h);
-    (4.0 * central(0.5 * h) - central(h)) / 3.0
 }
 
 /// The largest mismatch of two columns, relative to the largest entry of
@@ -141,7 +131,7 @@ fn the_parameter_jacobian_matches_differences_of_the_right_hand_side() {
             .parameter_rate(*t, y, &d)
             .expect("the state's contacts set up");
         for k in 0..N_DESIGN {
-            let fd = difference(q[k], step(k, q[k]), |v| {
+            let fd = richardson(q[k], step(k, q[k]), |v| {
                 let (s, _) = system_with(&scene, k, v);
                 s.rate(*t, y).expect("the moved system sets up")
             });
@@ -194,7 +184,7 @@ fn the_start_states_derivative_matches_differences_of_the_rebuilt_start() {
     let q = values(&scene);
     for k in 0..N_DESIGN {
         let exact = SVector::<f64, N_STATE>::from_fn(|i, _| slots(&y0[i])[k]);
-        let fd = difference(q[k], step(k, q[k]), |v| system_with(&scene, k, v).1);
+        let fd = richardson(q[k], step(k, q[k]), |v| system_with(&scene, k, v).1);
         let e = (exact - fd).amax();
         assert!(
             e <= 1e-7 * fd.amax() + 1e-8,

@@ -3,6 +3,7 @@
 //! fields with the field named (`docs/insertion.md`, "Design margins").
 
 use crate::common::cli;
+use crate::common::differences::richardson;
 
 use pegdyn::compliant_peg_3d::outcome::Outcome;
 use pegdyn::scene::Progress;
@@ -256,13 +257,6 @@ fn design_margins_runs_end_to_end_and_writes_its_files() {
     assert!(ranking.starts_with("peg.hole_diameter"), "{ranking}");
 }
 
-/// `(f(x + h) − f(x − h))/2h` at `h` and `h/2`, Richardson-extrapolated.
-fn richardson(f: impl Fn(f64) -> f64, x: f64) -> f64 {
-    let central = |h: f64| (f(x + h) - f(x - h)) / (2.0 * h);
-    let h = 1e-3 * x.abs();
-    (4.0 * central(0.5 * h) - central(h)) / 3.0
-}
-
 #[test]
 fn the_capture_widths_derivatives_match_differences_of_the_scene_along_every_field() {
     use pegdyn::scene::kinds::design_margins::sensitivities::{self, CaptureFields, FIELDS};
@@ -318,7 +312,9 @@ fn the_capture_widths_derivatives_match_differences_of_the_scene_along_every_fie
             let row = &rows[m * FIELDS.len() + k];
             assert_eq!(row.parameter, FIELDS[k]);
             let exact = row.derivative.unwrap();
-            let fd = richardson(|v| width(&at(k, Some(v)).capture), base[k]);
+            let fd = richardson(base[k], 1e-3 * base[k].abs(), |v| {
+                width(&at(k, Some(v)).capture)
+            });
             // Each width is a few hundredths of a metre in fields of
             // metres (derivatives of order one) or of one (friction,
             // clearance): 1e-9 of the largest derivative is far above the
