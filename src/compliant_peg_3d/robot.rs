@@ -113,8 +113,8 @@ impl RobotMotion {
 
 /// The robot motion's quantities that design parameters move, at any
 /// scalar: the start position `c_R(0)` (m), the angular error `θ₀` (rad),
-/// and the descent's speed `v` (m/s) and lowest height `z_end` (m) (both 0
-/// under a force).
+/// the descent's speed `v` (m/s) and lowest height `z_end` (m) (both 0
+/// under a force), and the precession and spin rates `ψ̇`, `φ̇` (rad/s).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct MotionOf<T> {
     /// `c_R(0)` (m).
@@ -125,6 +125,10 @@ pub struct MotionOf<T> {
     pub speed: T,
     /// `z_end` (m).
     pub end: T,
+    /// `ψ̇` (rad/s).
+    pub precession_rate: T,
+    /// `φ̇` (rad/s).
+    pub spin_rate: T,
 }
 
 /// `a ⊗ b` of quaternions `(w, i, j, k)`.
@@ -150,13 +154,15 @@ impl RobotMotion {
             tilt: c(self.tilt),
             speed: c(speed),
             end: c(end),
+            precession_rate: c(self.precession_rate),
+            spin_rate: c(self.spin_rate),
         }
     }
 
     /// The frame's terms at time `t` (s) as the wrist reads them
     /// ([`FrameTerms`]), at any scalar: the formulas of the module
     /// documentation with `p`'s quantities in place of this motion's (the
-    /// azimuth, the rates and the spiral are this motion's constants).
+    /// azimuth and the spiral are this motion's constants).
     /// [`RobotMotion::frame`] is the same frame at `f64` in nalgebra's
     /// types, which the right-hand side reads; this form carries the
     /// frame's derivative in design parameters ([`super::design`]).
@@ -176,21 +182,22 @@ impl RobotMotion {
         let f = self.frame(t);
         // The spiral's offset: the frame's lateral position less the start's.
         let (sx, sy) = (f.position.x - self.start.x, f.position.y - self.start.y);
-        let psi = self.tilt_azimuth + self.precession_rate * t;
-        let half = |angle: f64| (0.5 * angle).sin_cos();
+        let psi = c(self.tilt_azimuth) + p.precession_rate * c(t);
+        let half = |angle: T| (c(0.5) * angle).sin_cos();
         let (sp, cp) = half(psi);
-        let (st, ct) = (c(0.5) * p.tilt).sin_cos();
-        let (ss, cs) = half(self.spin_rate * t);
-        let rz = [c(cp), c(0.0), c(0.0), c(sp)];
-        let rz_inv = [c(cp), c(0.0), c(0.0), c(-sp)];
-        let ry = [ct, c(0.0), st, c(0.0)];
-        let spin = [c(cs), c(0.0), c(0.0), c(ss)];
+        let (st, ct) = half(p.tilt);
+        let (ss, cs) = half(p.spin_rate * c(t));
+        let zero = c(0.0);
+        let rz = [cp, zero, zero, sp];
+        let rz_inv = [cp, zero, zero, -sp];
+        let ry = [ct, zero, st, zero];
+        let spin = [cs, zero, zero, ss];
         let q = product(&product(&product(&rz, &ry), &rz_inv), &spin);
-        let ez = [c(0.0), c(0.0), c(1.0)];
+        let ez = [zero, zero, c(1.0)];
         let a = rotate(&q, &ez);
         let omega = add(
-            &scale(&sub(&ez, &a), c(self.precession_rate)),
-            &scale(&a, c(self.spin_rate)),
+            &scale(&sub(&ez, &a), p.precession_rate),
+            &scale(&a, p.spin_rate),
         );
         let (w, i, j, k) = (q[0], q[1], q[2], q[3]);
         let one = c(1.0);

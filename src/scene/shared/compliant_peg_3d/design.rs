@@ -33,9 +33,13 @@ use crate::compliant_peg_3d::{HertzMode, Peg3dParams};
 use crate::generated::compliant_peg_3d as generated;
 use crate::scalar::Real;
 
+/// How many fields [`FIELDS`] lists.
+pub const N_FIELDS: usize = 14;
+
 /// The fields a `[sensitivities]` table of an `insert_rcc` scene may name,
-/// in slot order.
-pub const FIELDS: [&str; N_DESIGN] = [
+/// in field order. A sensitivity run carries at most [`N_DESIGN`] of them
+/// (its slots); more are run in several passes.
+pub const FIELDS: [&str; N_FIELDS] = [
     "wrist.lateral_stiffness",
     "wrist.angular_stiffness",
     "wrist.centre_height",
@@ -48,9 +52,11 @@ pub const FIELDS: [&str; N_DESIGN] = [
     "robot.speed",
     "robot.lateral_error",
     "robot.angular_error_deg",
+    "robot.precession_rate",
+    "robot.spin_rate",
 ];
 
-/// The field at slot `k` of [`FIELDS`] in `s`: one place that ties the
+/// The field at index `k` of [`FIELDS`] in `s`: one place that ties the
 /// names' order to the scene's fields.
 pub fn slot(s: &mut RccScene, k: usize) -> &mut f64 {
     match k {
@@ -65,30 +71,54 @@ pub fn slot(s: &mut RccScene, k: usize) -> &mut f64 {
         8 => &mut s.peg.contact_damping,
         9 => &mut s.robot.speed,
         10 => &mut s.robot.lateral_error,
-        _ => &mut s.robot.angular_error_deg,
+        11 => &mut s.robot.angular_error_deg,
+        12 => &mut s.robot.precession_rate,
+        _ => &mut s.robot.spin_rate,
     }
 }
 
-/// The fields' values in a scene, in slot order.
-pub fn values(s: &RccScene) -> SVector<f64, N_DESIGN> {
+/// The fields' values in a scene, in field order.
+pub fn values(s: &RccScene) -> SVector<f64, N_FIELDS> {
     let mut written = s.clone();
     SVector::from_fn(|k, _| *slot(&mut written, k))
 }
 
+/// Which field each of a sensitivity run's [`N_DESIGN`] slots carries
+/// (an index into [`FIELDS`]; `None`: the slot is empty).
+pub type Seeds = [Option<usize>; N_DESIGN];
+
+/// The seeds of `fields` (indices into [`FIELDS`], at most [`N_DESIGN`]) in
+/// slot order.
+///
+/// # Panics
+/// More than [`N_DESIGN`] fields (a caller's error: a scene's table is run
+/// in passes of at most that many).
+pub fn seeds(fields: &[usize]) -> Seeds {
+    assert!(
+        fields.len() <= N_DESIGN,
+        "at most {N_DESIGN} fields per pass"
+    );
+    std::array::from_fn(|j| fields.get(j).copied())
+}
+
+/// The values of the seeded fields, slot by slot (0 in an empty slot).
+pub fn slot_values(s: &RccScene, seeds: &Seeds) -> SVector<f64, N_DESIGN> {
+    let all = values(s);
+    SVector::from_fn(|j, _| seeds[j].map_or(0.0, |k| all[k]))
+}
+
 /// The model's quantities of scene `s` (validated into `built`) and its
-/// start state, in dual numbers of the fields whose `seeded[k]` is true
-/// (the others are constants: their derivatives are zero).
-pub fn design(s: &RccScene, built: &Built, seeded: &[bool; N_DESIGN]) -> (Design, [Q; N_STATE]) {
+/// start state, in dual numbers whose slot `j` carries the derivative in
+/// the field `seeds[j]` (the fields no slot carries are constants).
+pub fn design(s: &RccScene, built: &Built, seeds: &Seeds) -> (Design, [Q; N_STATE]) {
     let params = &built.params;
     let written = values(s);
-    let q: [Q; N_DESIGN] = std::array::from_fn(|k| {
-        if seeded[k] {
-            Q::variable(written[k], k)
-        } else {
-            Q::constant(written[k])
-        }
-    });
-    // The slots by name, in the order of `FIELDS`.
+    let q: [Q; N_FIELDS] =
+        std::array::from_fn(|k| match seeds.iter().position(|f| *f == Some(k)) {
+            Some(j) => Q::variable(written[k], j),
+            None => Q::constant(written[k]),
+        });
+    // The fields by name, in the order of `FIELDS`.
     let [
         kx,
         angular,
@@ -102,6 +132,8 @@ pub fn design(s: &RccScene, built: &Built, seeded: &[bool; N_DESIGN]) -> (Design
         speed,
         lateral_error,
         angular_error_deg,
+        precession_rate,
+        spin_rate,
     ] = q;
     let c = Q::from_f64;
     let peg = &s.peg;
@@ -152,6 +184,8 @@ pub fn design(s: &RccScene, built: &Built, seeded: &[bool; N_DESIGN]) -> (Design
         } else {
             -c(s.criteria.seat_depth + rb.overtravel) + lc * ca
         },
+        precession_rate,
+        spin_rate,
     };
     let design = Design {
         p: p.into(),

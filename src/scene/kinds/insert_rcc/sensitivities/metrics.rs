@@ -55,9 +55,9 @@ pub(super) struct Inputs<'a> {
     pub ends: (f64, f64),
 }
 
-/// The rows of `chosen` fields, `unused[k]` marking the fields that move
-/// nothing.
-pub(super) fn rows(x: &Inputs, chosen: &[usize], unused: &[bool; N_DESIGN]) -> Vec<Row> {
+/// The rows of the fields `names` (slot by slot), `unused[j]` marking the
+/// slots whose field moves nothing.
+pub(super) fn rows(x: &Inputs, names: &[&'static str], unused: &[bool; N_DESIGN]) -> Vec<Row> {
     let (t_end, seat) = x.ends;
     let values = *x.values;
     let (scan, d) = (x.scan, x.d);
@@ -162,7 +162,8 @@ pub(super) fn rows(x: &Inputs, chosen: &[usize], unused: &[bool; N_DESIGN]) -> V
             });
         }
     }
-    sensitivities::rows(&metrics, chosen, unused, values.as_slice(), &FIELDS)
+    let slots: Vec<usize> = (0..names.len()).collect();
+    sensitivities::rows(&metrics, &slots, unused, values.as_slice(), names)
 }
 
 /// The rows of a run whose sensitivities failed.

@@ -12,7 +12,9 @@
 //! The fields are those of
 //! [`crate::scene::shared::compliant_peg_3d::design::FIELDS`]; each moves
 //! the model and the start through the scene's translation in dual
-//! numbers. The metrics and their flags are in [`metrics`]; the files
+//! numbers. A sensitivity run carries up to
+//! [`N_DESIGN`] fields; a table naming more is run in passes of that many
+//! (each pass integrates the state again with its fields' columns). The metrics and their flags are in [`metrics`]; the files
 //! (`<scene>.sensitivities.csv`, the tornado plot) and the printed ranking
 //! in [`crate::scene::shared::sensitivities::output`]. See
 //! `docs/sensitivities.md`, "In scenes".
@@ -27,7 +29,9 @@ use crate::integrate::{Method, Options};
 use crate::scene::context::RunContext;
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::limits::WorkItem;
-use crate::scene::shared::compliant_peg_3d::design::{FIELDS, design, fixed_stiffness, values};
+use crate::scene::shared::compliant_peg_3d::design::{
+    FIELDS, Seeds, design, fixed_stiffness, seeds, slot_values,
+};
 use crate::scene::shared::compliant_peg_3d::insertion::{Built, RccScene};
 use crate::scene::shared::sensitivities::{
     ErrorControl, PARAMETERS_FIELD as FIELD, StopOrError, choose,
@@ -67,18 +71,24 @@ pub fn check(table: &SensitivitiesTable, b: &Built) -> Result<Vec<usize>, SceneE
 /// contact force and wrist force, twice for the vectors' growth.
 const PASS_STEP_BYTES: f64 = 2.0 * 8.0 * 3.0;
 
-/// The work of the sensitivities, for the scene's `[limits]`: the
-/// sensitivity run keeps three numbers of each of up to
-/// `integrator.max_steps` steps, and it
-/// takes up to `integrator.max_steps` steps of `N (1 + P)` components,
-/// counted as `(1 + P) · max_steps` steps of the model's `N` states for
-/// `P` chosen fields (as `insert_compliant` counts them).
+/// The sensitivity runs a table of `fields` fields takes: one per
+/// [`N_DESIGN`] fields.
+pub fn passes(fields: usize) -> usize {
+    fields.div_ceil(N_DESIGN)
+}
+
+/// The work of the sensitivities, for the scene's `[limits]`: each of the
+/// [`passes`] keeps three numbers of each of up to `integrator.max_steps`
+/// steps, and takes up to `integrator.max_steps` steps of `N (1 + P)`
+/// components, counted as `(1 + P) · max_steps` steps of the model's `N`
+/// states for its `P` fields (as `insert_compliant` counts them).
 pub fn work(integrator: &IntegratorSpec, chosen: &[usize]) -> Vec<WorkItem> {
     let steps = integrator.max_steps as f64;
+    let runs = passes(chosen.len()) as f64;
     let p = chosen.len() as f64;
     vec![
-        WorkItem::new(FIELD, "max_output_samples", steps, PASS_STEP_BYTES),
-        WorkItem::new(FIELD, "max_steps", (1.0 + p) * steps, 0.0),
+        WorkItem::new(FIELD, "max_output_samples", steps, runs * PASS_STEP_BYTES),
+        WorkItem::new(FIELD, "max_steps", (runs + p) * steps, 0.0),
     ]
 }
 
@@ -97,10 +107,16 @@ pub fn run(
     let (rows, work) = compute(scene, b, integrator, chosen)?;
     let mut notes = output::write(ctx, &rows, &metrics::METRICS, "")?;
     if let Some((steps, calls)) = work {
+        let runs = passes(chosen.len());
+        let how = if runs == 1 {
+            String::new()
+        } else {
+            format!(" in {runs} passes")
+        };
         notes.push(Metric::note(
             "sensitivity run",
             format!(
-                "{steps} steps, {calls} evaluations of the variational system ({} fields, {} \
+                "{steps} steps, {calls} evaluations of the variational system ({} fields{how}, {} \
                  components)",
                 chosen.len(),
                 trajectory::M
@@ -110,10 +126,11 @@ pub fn run(
     Ok(notes)
 }
 
-/// Whether field `k` moves nothing the run depends on: every derivative
-/// of the model's quantities and of the start in slot `k` is zero.
-fn unused(scene: &RccScene, b: &Built) -> [bool; N_DESIGN] {
-    let (d, y0) = design(scene, b, &[true; N_DESIGN]);
+/// Whether the field of slot `j` moves nothing the run depends on: every
+/// derivative of the model's quantities and of the start in the slot is
+/// zero (an empty slot moves nothing).
+fn unused(scene: &RccScene, b: &Built, seeds: &Seeds) -> [bool; N_DESIGN] {
+    let (d, y0) = design(scene, b, seeds);
     let mut moved = [false; N_DESIGN];
     let mut mark = |x: &crate::compliant_peg_3d::design::Q| {
         for (m, v) in moved.iter_mut().zip(&x.d[..N_DESIGN]) {
@@ -128,21 +145,23 @@ fn unused(scene: &RccScene, b: &Built) -> [bool; N_DESIGN] {
         .chain(&[w.centre_height, w.axial, w.angular, w.torsional])
         .chain(&w.lateral)
         .chain(&r.start)
-        .chain(&[r.tilt, r.speed, r.end])
+        .chain(&[r.tilt, r.speed, r.end, r.precession_rate, r.spin_rate])
         .for_each(&mut mark);
     moved.map(|m| !m)
 }
 
-/// What [`compute`] gives: the rows, and the sensitivity run's accepted
+/// What [`compute`] gives: the rows, and the sensitivity runs' accepted
 /// steps and right-hand-side evaluations (None when every row is flagged
-/// because the run failed).
+/// because a run failed).
 pub type Computed = (Vec<Row>, Option<(usize, usize)>);
 
-/// The rows of the `chosen` fields (slots of [`FIELDS`]) of scene `scene`
-/// built into `b`, integrated with `integrator`'s method, tolerances,
-/// span and step budget, and the sensitivity run's work. The chosen fields that move something are seeded; the others
-/// are constants (their columns stay zero); the step control measures
-/// what the table's [`ErrorControl`] says.
+/// The rows of the `chosen` fields (indices into [`FIELDS`]) of scene
+/// `scene` built into `b`, integrated with `integrator`'s method,
+/// tolerances, span and step budget, and the sensitivity runs' work: one
+/// run per [`N_DESIGN`] fields ([`passes`]), the rows metric by metric in
+/// the order of `chosen`. The chosen fields that move something are
+/// seeded; the others are constants (their columns stay zero); the step
+/// control measures what the table's [`ErrorControl`] says.
 ///
 /// # Errors
 /// [`RunError::Sensitivity`] when the integrator refuses its input.
@@ -152,14 +171,60 @@ pub fn compute(
     integrator: &IntegratorSpec,
     chosen: &[usize],
 ) -> Result<Computed, RunError> {
-    let unused = unused(scene, b);
-    let seeded: [bool; N_DESIGN] = std::array::from_fn(|k| chosen.contains(&k) && !unused[k]);
-    let (d, y0q) = design(scene, b, &seeded);
+    if chosen.len() <= N_DESIGN {
+        return compute_pass(scene, b, integrator, chosen);
+    }
+    let mut rows = Vec::new();
+    let mut work = Some((0, 0));
+    for fields in chosen.chunks(N_DESIGN) {
+        let (pass, w) = compute_pass(scene, b, integrator, fields)?;
+        rows.extend(pass);
+        work = work.zip(w).map(|(a, b)| (a.0 + b.0, a.1 + b.1));
+    }
+    Ok((metric_major(rows, chosen), work))
+}
+
+/// `rows` of several passes ordered metric by metric (in the order the
+/// metrics first appear), each metric's fields in the order of `chosen`.
+fn metric_major(rows: Vec<Row>, chosen: &[usize]) -> Vec<Row> {
+    let mut names: Vec<&'static str> = Vec::new();
+    for r in &rows {
+        if !names.contains(&r.metric) {
+            names.push(r.metric);
+        }
+    }
+    let mut rows: Vec<Option<Row>> = rows.into_iter().map(Some).collect();
+    let mut out = Vec::with_capacity(rows.len());
+    for name in names {
+        for &k in chosen {
+            let found = rows.iter_mut().find(|r| {
+                r.as_ref()
+                    .is_some_and(|r| r.metric == name && r.parameter == FIELDS[k])
+            });
+            if let Some(r) = found.and_then(Option::take) {
+                out.push(r);
+            }
+        }
+    }
+    out
+}
+
+/// [`compute`] for at most [`N_DESIGN`] fields: one sensitivity run.
+fn compute_pass(
+    scene: &RccScene,
+    b: &Built,
+    integrator: &IntegratorSpec,
+    fields: &[usize],
+) -> Result<Computed, RunError> {
+    let all = seeds(fields);
+    let unused = unused(scene, b, &all);
+    let active: Seeds = std::array::from_fn(|j| all[j].filter(|_| !unused[j]));
+    let (d, y0q) = design(scene, b, &active);
     let dy0 = SMatrix::<f64, N_STATE, N_DESIGN>::from_fn(|i, k| y0q[i].d[k]);
     let (sys, y0, (method, options)) = plain(b, integrator)?;
     let (t0, t_end, seat) = (integrator.t0, integrator.t_end, b.criteria.seat_depth);
-    let values = values(scene);
-    let p = seeded.iter().filter(|s| **s).count();
+    let values = slot_values(scene, &all);
+    let p = active.iter().flatten().count();
     let control = ErrorControl::of(scene.sensitivities.as_ref());
     let run_options = control.options(&options, N_STATE, p, trajectory::M);
     let dir = Directions {
@@ -176,7 +241,7 @@ pub fn compute(
     );
     let (scan, der) = match result {
         Ok(found) => found,
-        Err(e) => return Ok((metrics::failed(chosen, &e.flag()?), None)),
+        Err(e) => return Ok((metrics::failed(fields, &e.flag()?), None)),
     };
     let inputs = metrics::Inputs {
         sys: &sys,
@@ -186,7 +251,8 @@ pub fn compute(
         d: &der,
         ends: (t_end, seat),
     };
-    let rows = metrics::rows(&inputs, chosen, &unused);
+    let names: Vec<&'static str> = fields.iter().map(|&k| FIELDS[k]).collect();
+    let rows = metrics::rows(&inputs, &names, &unused);
     Ok((rows, Some(der.work)))
 }
 
@@ -226,12 +292,13 @@ pub fn metric_values(
     b: &Built,
     integrator: &IntegratorSpec,
 ) -> Result<Option<Vec<(&'static str, f64)>>, RunError> {
-    let (d, _) = design(scene, b, &[false; N_DESIGN]);
+    let none: Seeds = [None; N_DESIGN];
+    let (d, _) = design(scene, b, &none);
     let (sys, y0, (method, options)) = plain(b, integrator)?;
     let dir = Directions {
         system: &sys,
         design: d,
-        values: values(scene),
+        values: slot_values(scene, &none),
     };
     let start = (integrator.t0, y0);
     match trajectory::values(
