@@ -52,7 +52,7 @@ use crate::sensitivity::ParameterJacobian;
 use crate::system::{KinematicSplit, ModelError, OdeSystem};
 
 /// The most design parameters carried at once.
-pub const N_DESIGN: usize = 12;
+pub const N_DESIGN: usize = 8;
 
 /// The slot of the edge angle in [`Q`] (eliminated by the implicit-function
 /// theorem, zero in every result).
