@@ -621,7 +621,10 @@ fn rodas4_sensitivities_match_dormand_prince_s_along_every_field_but_the_rates()
         // A derivative whose elasticity is below 1e-8 (the seat time along
         // the contact damping, 7e-11) is not a design signal: its two
         // methods' values need only agree in elasticity to 1e-10.
-        let tiny = a.elasticity.zip(b.elasticity).filter(|(e, _)| e.abs() < 1e-8);
+        let tiny = a
+            .elasticity
+            .zip(b.elasticity)
+            .filter(|(e, _)| e.abs() < 1e-8);
         if let Some((ea, eb)) = tiny {
             assert!(
                 (ea - eb).abs() < 1e-10,
