@@ -6,6 +6,7 @@ use nalgebra::SVector;
 use super::params::CompliantParams;
 use super::system::N_STATE;
 use crate::hertz::HertzError;
+use crate::scalar::Real;
 
 /// The peg's coordinates and velocities (m, rad, m/s, rad/s).
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
@@ -88,11 +89,8 @@ impl PegState {
             0.5 * g.hole_diameter,
         );
         let lc = params.spec.com_height;
+        let (x, z) = two_point_pose([r, rp, rh, half_d], lc, theta, penetration);
         let (s, c) = theta.sin_cos();
-        // Wall contact (right): δ_B = x + (l_c−ρ_p) sin θ + (r−ρ_p) cos θ + ρ_p − D/2.
-        let x = half_d - rp - (lc - rp) * s - (r - rp) * c + penetration;
-        // Edge contact (left): δ_A = ρ_h + r + (−(D/2+ρ_h) − x) cos θ − (ρ_h − z) sin θ.
-        let z = rh + (penetration - rh - r + (half_d + rh + x) * c) / s;
         let state = PegState {
             x,
             z,
@@ -111,4 +109,24 @@ impl PegState {
     pub fn depth(&self, params: &CompliantParams) -> f64 {
         self.z + params.spec.com_height * self.theta.cos()
     }
+}
+
+/// The centre of mass `(x, z)` (m) of [`PegState::two_point`] at tilt
+/// `theta` (rad) with both contacts `penetration` deep, at any scalar:
+/// `[r, ρ_p, ρ_h, D/2]` the peg's radius, its fillet, the hole's fillet
+/// and the hole's radius, `lc` the centre of mass's height above the
+/// bottom face (m). From the two contacts' approaches,
+///
+/// ```text
+/// wall (right):  δ_B = x + (l_c − ρ_p) sin θ + (r − ρ_p) cos θ + ρ_p − D/2
+/// edge (left):   δ_A = ρ_h + r + (−(D/2 + ρ_h) − x) cos θ − (ρ_h − z) sin θ
+/// ```
+///
+/// each set to `penetration`.
+pub fn two_point_pose<T: Real>(geometry: [T; 4], lc: T, theta: T, penetration: T) -> (T, T) {
+    let [r, rp, rh, half_d] = geometry;
+    let (s, c) = theta.sin_cos();
+    let x = half_d - rp - (lc - rp) * s - (r - rp) * c + penetration;
+    let z = rh + (penetration - rh - r + (half_d + rh + x) * c) / s;
+    (x, z)
 }

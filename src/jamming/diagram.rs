@@ -32,6 +32,7 @@
 use super::error::ParamError;
 use super::geometry::two_point_tilt;
 use super::params::PegHole;
+use crate::scalar::Real;
 
 /// A point of the diagram: (F_x/F_z, M/(r F_z)), moment about the peg tip.
 pub type Ratio = [f64; 2];
@@ -50,10 +51,8 @@ impl Parallelogram {
     /// From the reference edge-only corner `p1` and the reference two-point
     /// line's slope: the right side is the vertical through `p1`.
     fn from_edge_corner(p1: Ratio, slope: f64, theta: f64) -> Self {
-        // mirrored two-point line through −P₁ with the same slope, at x = P₁ₓ
-        let q = [p1[0], -p1[1] + 2.0 * slope * p1[0]];
         Self {
-            corners: [[-p1[0], -p1[1]], q, p1, [-q[0], -q[1]]],
+            corners: corners_of(p1, slope),
             theta,
         }
     }
@@ -68,13 +67,7 @@ impl Parallelogram {
     /// Signed distance (in ratio units) from `q` to the nearest edge line:
     /// positive strictly inside, zero on the boundary, negative outside.
     pub fn margin(&self, q: Ratio) -> f64 {
-        self.edges()
-            .iter()
-            .map(|(a, b)| {
-                let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
-                (ex * (q[1] - a[1]) - ey * (q[0] - a[0])) / ex.hypot(ey)
-            })
-            .fold(f64::INFINITY, f64::min)
+        margin_of(&self.corners, q).0
     }
 
     /// True when the load ratio `q` is strictly inside: the peg does not jam.
@@ -124,17 +117,70 @@ pub fn exact_parallelogram(p: &PegHole, l: f64) -> Result<Option<Parallelogram>,
 /// Ends of the reference two-point sliding segment at depth `l` (m) and tilt
 /// `theta` (rad): `(P₂, P₁)`, tip-only and edge-only.
 pub fn two_point_segment(p: &PegHole, l: f64, theta: f64) -> (Ratio, Ratio) {
-    let (mu, r) = (p.mu(), p.r());
+    segment_of(p.mu(), p.r(), l, theta)
+}
+
+/// [`two_point_segment`] of friction `mu` and peg radius `r` (m), at any
+/// scalar.
+pub fn segment_of<T: Real>(mu: T, r: T, l: T, theta: T) -> ([T; 2], [T; 2]) {
+    let one = T::from_f64(1.0);
     let (k1, k2, _) = super::forces::k_factors(mu, theta);
-    ([-1.0 / mu, -k2 / mu], [k1 / k2, (l + mu * r) / (r * k2)])
+    (
+        [-(one / mu), -(k2 / mu)],
+        [k1 / k2, (l + mu * r) / (r * k2)],
+    )
 }
 
 /// The finite-angle parallelogram for a given depth `l` (m) and tilt `theta`
 /// (rad), without checking that they are geometrically compatible.
 pub fn exact_parallelogram_at_tilt(p: &PegHole, l: f64, theta: f64) -> Parallelogram {
-    let (p2, p1) = two_point_segment(p, l, theta);
+    Parallelogram {
+        corners: exact_corners(p.mu(), p.r(), l, theta),
+        theta,
+    }
+}
+
+/// The corners of [`exact_parallelogram_at_tilt`] of friction `mu` and peg
+/// radius `r` (m), at any scalar.
+pub fn exact_corners<T: Real>(mu: T, r: T, l: T, theta: T) -> [[T; 2]; 4] {
+    let (p2, p1) = segment_of(mu, r, l, theta);
     let slope = (p1[1] - p2[1]) / (p1[0] - p2[0]);
-    Parallelogram::from_edge_corner(p1, slope, theta)
+    corners_of(p1, slope)
+}
+
+/// The corners `[−P₁, Q, P₁, −Q]` from the reference edge-only corner `p1`
+/// and the reference two-point line's slope: the right side is the
+/// vertical through `p1`, `Q` on the mirrored two-point line through `−P₁`
+/// with the same slope.
+fn corners_of<T: Real>(p1: [T; 2], slope: T) -> [[T; 2]; 4] {
+    let two = T::from_f64(2.0);
+    let q = [p1[0], -p1[1] + two * slope * p1[0]];
+    [[-p1[0], -p1[1]], q, p1, [-q[0], -q[1]]]
+}
+
+/// The signed distances from `q` to the four edge lines of the
+/// parallelogram with `corners` (counter-clockwise), at any scalar: edge
+/// `i` runs from corner `i` to corner `i + 1`; positive inside.
+pub fn edge_distances<T: Real>(corners: &[[T; 2]; 4], q: [T; 2]) -> [T; 4] {
+    std::array::from_fn(|i| {
+        let (a, b) = (corners[i], corners[(i + 1) % 4]);
+        let (ex, ey) = (b[0] - a[0], b[1] - a[1]);
+        (ex * (q[1] - a[1]) - ey * (q[0] - a[0])) / ex.hypot(ey)
+    })
+}
+
+/// The least of [`edge_distances`] (the signed distance to the nearest
+/// edge line, positive strictly inside) and the index of its edge (the
+/// first of equals).
+pub fn margin_of<T: Real>(corners: &[[T; 2]; 4], q: [T; 2]) -> (T, usize) {
+    let e = edge_distances(corners, q);
+    let mut k = 0;
+    for i in 1..4 {
+        if e[i].to_f64() < e[k].to_f64() {
+            k = i;
+        }
+    }
+    (e[k], k)
 }
 
 /// A Whitney-frame load ratio `q` = (F_x/F_z, M_tip/(r F_z)) of the

@@ -27,6 +27,7 @@
 
 use super::error::SlidingIndeterminate;
 use super::params::PegHole;
+use crate::scalar::Real;
 
 /// A planar load applied to the peg, reduced to the tip centre: forces
 /// F_x, F_z (N) and moment M about the tip (N·m), hole frame.
@@ -51,7 +52,7 @@ pub struct ContactForces {
 
 /// The friction-dependent factors (k1, k2, k3 = k2 + μ k1) of the paper's
 /// Eq. 52 at tilt `theta`.
-pub fn k_factors(mu: f64, theta: f64) -> (f64, f64, f64) {
+pub fn k_factors<T: Real>(mu: T, theta: T) -> (T, T, T) {
     let (s, c) = theta.sin_cos();
     let k1 = c - mu * s;
     let k2 = s + mu * c;

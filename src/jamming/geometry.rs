@@ -17,6 +17,7 @@
 
 use super::error::ParamError;
 use super::params::PegHole;
+use crate::scalar::Real;
 
 /// Smallest depth at which two-point contact exists: l_min = √(D² − d²) (m).
 ///
@@ -42,15 +43,21 @@ pub fn min_two_point_depth(p: &PegHole) -> f64 {
 pub fn two_point_tilt(p: &PegHole, l: f64) -> Result<Option<f64>, ParamError> {
     let l = PegHole::check_depth(l)?;
     let (d, big_d) = (p.peg_diameter(), p.hole_diameter());
-    let rho = l.hypot(d);
-    if rho < big_d {
+    if l.hypot(d) < big_d {
         return Ok(None);
     }
-    // l sinθ + d cosθ = ρ cos(θ − ψ), ψ = atan(l/d): θ = ψ − acos(D/ρ).
-    // Written as an atan2 difference to keep accuracy when θ is tiny:
-    // θ = atan2(l, d) − atan2(√(ρ² − D²), D).
+    Ok(Some(tilt_of(d, big_d, l)))
+}
+
+/// The two-point tilt (rad) of a peg of diameter `d` in a hole of diameter
+/// `big_d` at depth `l` (m), at any scalar, unchecked (`√(l² + d²) ≥ D`):
+/// `l sin θ + d cos θ = ρ cos(θ − ψ)`, `ψ = atan(l/d)`, so
+/// `θ = ψ − acos(D/ρ)`, written as an atan2 difference to keep accuracy
+/// when θ is tiny: `θ = atan2(l, d) − atan2(√(ρ² − D²), D)`.
+pub fn tilt_of<T: Real>(d: T, big_d: T, l: T) -> T {
+    let rho = l.hypot(d);
     let s = ((rho - big_d) * (rho + big_d)).sqrt();
-    Ok(Some(l.atan2(d) - s.atan2(big_d)))
+    l.atan2(d) - s.atan2(big_d)
 }
 
 /// Whitney's small-angle tilt θ ≈ cD/l (rad) at depth `l` (m).

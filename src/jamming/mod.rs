@@ -14,6 +14,8 @@
 //! - [`space3d`]: the 3-D no-jamming inequalities (Eqs. 81–82).
 //! - [`dynamic`]: the sweep of compliant-contact insertions (needs `compliant`).
 //! - [`sweep`]: the dynamic sweep driver (rayon) and its comparison with the diagram.
+//! - [`sweep_margin`]: the sweep's margin to its exact parallelogram with its
+//!   derivatives along r, c, μ and the depth.
 //! - `table` (crate-internal): the corner/wedging tables of the jamming scene
 //!   (its Fig. 6-style panels are drawn by `scene::kinds::jamming::figure`).
 //!
@@ -30,6 +32,7 @@ pub mod sensitivities;
 pub mod space3d;
 pub mod statics;
 pub mod sweep;
+pub mod sweep_margin;
 #[cfg(feature = "scenes")]
 pub(crate) mod table;
 pub mod wedging;

@@ -55,9 +55,25 @@ fn sweep_scene_boundary_matches_the_exact_diagram() {
     let mut lines = csv.lines();
     assert_eq!(
         lines.next().unwrap(),
-        "fx_over_fz,m_over_rfz,class,lean_plus,lean_minus,margin_exact,margin_whitney"
+        "fx_over_fz,m_over_rfz,class,lean_plus,lean_minus,margin_exact,margin_whitney,\
+         margin_exact_d_dr,margin_exact_d_dc,margin_exact_d_dmu,margin_exact_d_dl"
     );
-    let classes: Vec<&str> = lines.map(|l| l.split(',').nth(2).unwrap()).collect();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    // The margin's derivatives along r, c, μ and l: numbers at every grid
+    // point but the centre, which the point-symmetric diagram's mirrored
+    // edges hold at equal distances (no derivative there, an empty cell).
+    for row in &rows {
+        assert_eq!(row.len(), 11, "{row:?}");
+        let centre = row[0].parse::<f64>().unwrap() == 0.0 && row[1].parse::<f64>().unwrap() == 0.0;
+        for cell in &row[7..] {
+            if centre {
+                assert!(cell.is_empty(), "{row:?}");
+            } else {
+                assert!(cell.parse::<f64>().is_ok_and(f64::is_finite), "{row:?}");
+            }
+        }
+    }
+    let classes: Vec<&str> = rows.iter().map(|r| r[2]).collect();
     assert_eq!(classes.len(), 81);
     assert!(classes.contains(&"inserted") && classes.contains(&"jammed"));
     assert!(dir.join("jamming.sweep.svg").exists());

@@ -14,5 +14,6 @@ mod sensitivities;
 mod space3d;
 mod sweep;
 mod sweep_early_stop;
+mod sweep_margin;
 mod sweep_method;
 mod wedging;

@@ -33,9 +33,13 @@
 //! time constant however smooth the motion (see docs/BENCHMARKS.md).
 //!
 //! Writes `<out>/<name>.sweep.csv` (`fx_over_fz,m_over_rfz,class,lean_plus,
-//! lean_minus,margin_exact,margin_whitney`) and `<out>/<name>.sweep.svg`
-//! (simulated classes as markers, exact parallelogram solid, Whitney's
-//! dashed).
+//! lean_minus,margin_exact,margin_whitney,margin_exact_d_dr,
+//! margin_exact_d_dc,margin_exact_d_dmu,margin_exact_d_dl`: the margins of
+//! the grid point to both parallelograms, and the derivatives of the margin
+//! to the exact one along the peg radius, the clearance ratio, the friction
+//! and the requested depth, [`crate::jamming::sweep_margin`]; empty where
+//! two edges are equally near) and `<out>/<name>.sweep.svg` (simulated
+//! classes as markers, exact parallelogram solid, Whitney's dashed).
 
 use std::sync::Mutex;
 
@@ -284,10 +288,20 @@ pub fn run(
         "lean_minus",
         "margin_exact",
         "margin_whitney",
+        "margin_exact_d_dr",
+        "margin_exact_d_dc",
+        "margin_exact_d_dmu",
+        "margin_exact_d_dl",
     ];
     let mut w = ctx.table(Part::Sub("sweep"), &header)?;
     for p in &points {
         let q = p.point.ratio;
+        let m = setup.margin_gradient(q);
+        // `+ 0.0`: a zero derivative is written `0` whatever its sign.
+        let d = |k: usize| {
+            m.gradient
+                .map_or_else(String::new, |g| format_f64(g.to_array()[k] + 0.0))
+        };
         let cells = [
             format_f64(q[0]),
             format_f64(q[1]),
@@ -296,6 +310,10 @@ pub fn run(
             p.lean_minus.name().to_string(),
             format_f64(setup.diagram.margin(q)),
             format_f64(whitney.margin(q)),
+            d(0),
+            d(1),
+            d(2),
+            d(3),
         ];
         w.row_cells(&cells.each_ref().map(String::as_str))?;
     }
