@@ -290,7 +290,11 @@ class Result:
         ``elasticity`` (float64; NaN where the file's cell is empty: a
         flagged derivative, a metric without a value) and ``flag`` (str:
         why there is no derivative, or ``"not used by this model"``; empty
-        where the derivative holds). None when the scene has no such table.
+        where the derivative holds). A grid's table (``rotation_assist``)
+        adds each row's grid point, its coordinate columns as float64
+        arrays (``lateral_error_m``, ``angular_error_deg``,
+        ``precession_rate``, ``spin_rate``). None when the scene has no such
+        table.
         """
         table = next((t for k, t in self.tables.items() if k.endswith(".sensitivities")), None)
         if table is None:
@@ -304,7 +308,7 @@ class Result:
         def text(column: Any) -> Any:
             return np.array([str(c) for c in column], dtype=str)
 
-        return {
+        out = {
             "metric": text(table["metric"]),
             "parameter": text(table["parameter"]),
             "value": numbers(table["value"]),
@@ -312,6 +316,10 @@ class Result:
             "elasticity": numbers(table["elasticity"]),
             "flag": text(table["flag"]),
         }
+        for key, column in table.items():
+            if key not in out:
+                out[key] = numbers(column)
+        return out
 
     def to_pandas(self, table: Optional[str] = None):
         """The main table (or ``tables[table]``) as a pandas DataFrame

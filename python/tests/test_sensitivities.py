@@ -184,3 +184,36 @@ def test_the_robot_insertion_seat_time_derivative_agrees_with_two_runs():
     h = 2e-4
     fd = (seat(0.2 + h) - seat(0.2 - h)) / (2 * h)
     assert abs(d - fd) < 1e-4 * abs(fd), (d, fd)
+
+
+def test_a_rotation_grid_gives_each_points_derivatives_with_its_coordinates():
+    # The shipped rotation_assist grid cut to two points, started in the
+    # bore (a short run): the rows carry their grid point, and each point
+    # has every metric along every field named.
+    lines = []
+    for line in (ROOT / "scenes" / "rotation_assist.toml").read_text().splitlines():
+        for key, value in (
+            ("angular_errors_deg", "[1.0]"),
+            ("precession_rates", "[10.0]"),
+            ("spin_rates", "[20.0]"),
+        ):
+            if line.startswith(key + " "):
+                line = f"{key} = {value}"
+        lines.append(line)
+    text = "\n".join(lines) + '\n[sensitivities]\nparameters = ["robot.spin_rate", "peg.friction"]\n'
+    grid = pegdyn.loads(text, "grid").with_values(
+        {
+            "robot.start_height": -1e-3,
+            "criteria.seat_depth": 0.002,
+            "integrator.t_end": 0.3,
+        }
+    )
+    s = _table(grid.run())
+    assert s["lateral_error_m"].dtype == np.float64
+    points = sorted(set(zip(s["lateral_error_m"].tolist(), s["spin_rate"].tolist())))
+    assert points == [(1e-4, 20.0), (3e-4, 20.0)]
+    for lateral, _ in points:
+        at = s["lateral_error_m"] == lateral
+        seat = at & (s["metric"] == "seat_time_s")
+        assert set(s["parameter"][seat]) == {"robot.spin_rate", "peg.friction"}
+        assert np.all(np.isfinite(s["derivative"][seat]))

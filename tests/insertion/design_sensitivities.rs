@@ -645,3 +645,123 @@ fn rodas4_sensitivities_match_dormand_prince_s_along_every_field_but_the_rates()
     }
     assert!(compared >= 30, "{compared} derivatives compared");
 }
+
+/// The files a scene `text` named `name` writes, by file name, from a
+/// fresh directory.
+fn scene_files(text: &str, name: &str) -> std::collections::BTreeMap<String, String> {
+    use pegdyn::output::sink::Sink;
+    use pegdyn::scene::{self, Progress, RunContext};
+    let dir = std::env::temp_dir().join(format!("pegdyn-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("a temporary directory");
+    let loaded = scene::parse_named(text, name).unwrap_or_else(|e| panic!("{e}"));
+    let mut ctx = RunContext::new(Sink::directory(&dir, name), Progress::silent());
+    loaded.run(&mut ctx).unwrap_or_else(|e| panic!("{e}"));
+    let files = std::fs::read_dir(&dir)
+        .expect("the run's files")
+        .filter_map(Result::ok)
+        .filter_map(|e| {
+            let name = e.file_name().to_string_lossy().into_owned();
+            std::fs::read_to_string(e.path()).ok().map(|t| (name, t))
+        })
+        .collect();
+    let _ = std::fs::remove_dir_all(&dir);
+    files
+}
+
+#[test]
+fn a_rotation_grid_gives_every_points_sensitivities_as_its_insert_rcc_run_does() {
+    // The shipped grid cut to two points (two lateral errors, the axis
+    // precessing at 10 rad/s and the peg spinning at 20 rad/s), started in
+    // the bore and seated at 2 mm: each point's rows of
+    // `<name>.sensitivities.csv` are, cell for cell, those of the same
+    // insertion run as an `insert_rcc` scene with the same table.
+    let fields = r#"parameters = ["robot.lateral_error", "robot.spin_rate", "peg.friction"]"#;
+    let mut doc: toml::Table =
+        toml::from_str(include_str!("../../scenes/rotation_assist.toml")).expect("TOML");
+    let set = |doc: &mut toml::Table, table: &str, key: &str, v: toml::Value| {
+        doc.get_mut(table)
+            .and_then(toml::Value::as_table_mut)
+            .expect("a shipped table")
+            .insert(key.to_owned(), v);
+    };
+    let list = |v: &[f64]| toml::Value::Array(v.iter().map(|x| toml::Value::Float(*x)).collect());
+    set(&mut doc, "grid", "lateral_errors", list(&[1e-4, 3e-4]));
+    set(&mut doc, "grid", "angular_errors_deg", list(&[1.0]));
+    set(&mut doc, "grid", "precession_rates", list(&[10.0]));
+    set(&mut doc, "grid", "spin_rates", list(&[20.0]));
+    set(&mut doc, "robot", "start_height", toml::Value::Float(-1e-3));
+    set(
+        &mut doc,
+        "criteria",
+        "seat_depth",
+        toml::Value::Float(0.002),
+    );
+    set(&mut doc, "integrator", "t_end", toml::Value::Float(0.3));
+    let table: toml::Table = toml::from_str(fields).expect("TOML");
+    doc.insert("sensitivities".to_owned(), toml::Value::Table(table));
+    let grid_text = toml::to_string(&doc).expect("TOML");
+    let files = scene_files(&grid_text, "grid");
+    let grid_csv = &files["grid.sensitivities.csv"];
+    let mut lines = grid_csv.lines();
+    assert_eq!(
+        lines.next(),
+        Some(
+            "lateral_error_m,angular_error_deg,precession_rate,spin_rate,metric,parameter,value,\
+             derivative,elasticity,flag"
+        )
+    );
+    let grid_rows: Vec<&str> = lines.collect();
+    let mut compared = 0;
+    for lateral in [1e-4, 3e-4] {
+        let mut one = doc.clone();
+        one.remove("grid");
+        one.insert(
+            "kind".to_owned(),
+            toml::Value::String("insert_rcc".to_owned()),
+        );
+        set(
+            &mut one,
+            "robot",
+            "lateral_error",
+            toml::Value::Float(lateral),
+        );
+        set(
+            &mut one,
+            "robot",
+            "angular_error_deg",
+            toml::Value::Float(1.0),
+        );
+        set(
+            &mut one,
+            "robot",
+            "precession_rate",
+            toml::Value::Float(10.0),
+        );
+        set(&mut one, "robot", "spin_rate", toml::Value::Float(20.0));
+        let files = scene_files(&toml::to_string(&one).expect("TOML"), "one");
+        let own: Vec<&str> = files["one.sensitivities.csv"].lines().skip(1).collect();
+        let prefix = format!("{lateral},1,10,20,");
+        let at_point: Vec<&str> = grid_rows
+            .iter()
+            .filter_map(|r| r.strip_prefix(&prefix))
+            .collect();
+        assert_eq!(at_point, own, "lateral error {lateral}");
+        // The seat time, the final depth and both peaks along every field
+        // (this short run has no two-point contact).
+        assert_eq!(own.len(), 4 * 3, "{own:?}");
+        compared += own.len();
+    }
+    assert_eq!(compared, grid_rows.len());
+    // A field no insertion has is refused on the table's field, listing
+    // the valid ones.
+    let bad = grid_text.replace("peg.friction", "peg.length");
+    let err = match pegdyn::scene::parse_named(&bad, "grid") {
+        Ok(_) => panic!("an unknown field is accepted"),
+        Err(e) => e.to_string(),
+    };
+    assert!(
+        err.contains("sensitivities.parameters") && err.contains("robot.spin_rate"),
+        "{err}"
+    );
+}

@@ -111,7 +111,10 @@ impl Written for Ready {
     fn work(&self) -> Vec<WorkItem> {
         let mut work = self.scene.integrator.work("integrator");
         if !self.sensitivities.is_empty() {
-            work.extend(sensitivities::work(&self.integrator, &self.sensitivities));
+            work.extend(sensitivities::work(
+                &self.integrator,
+                self.sensitivities.len(),
+            ));
         }
         work
     }

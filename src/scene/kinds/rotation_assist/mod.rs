@@ -22,6 +22,16 @@
 //! peak_wrist_moment_Nm, peak_wrist_force_N`; `insertion_time_s` is the end
 //! time of seated runs, else empty) and `<name>.svg`: per rotation pair,
 //! the outcome and the peak contact force over the error grid.
+//!
+//! An optional `[sensitivities]` table (the fields of `insert_rcc`'s,
+//! [`crate::scene::shared::compliant_peg_3d::design::FIELDS`], the grid's
+//! own axes among them: `robot.lateral_error`, `robot.angular_error_deg`,
+//! `robot.precession_rate`, `robot.spin_rate`) adds every grid point's
+//! derivatives of the insertion's metrics
+//! ([`crate::scene::kinds::insert_rcc::sensitivities`]): `<name>.sensitivities.csv`
+//! (`lateral_error_m, angular_error_deg, precession_rate, spin_rate,
+//! metric, parameter, value, derivative, elasticity, flag`, a row per
+//! point, metric and field).
 
 pub(crate) mod figure;
 pub mod grid;
@@ -36,6 +46,7 @@ use crate::scene::document::Document;
 use crate::scene::integrator::DefaultMethod;
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::kind::{Kind, Scene, Written};
+use crate::scene::kinds::insert_rcc::sensitivities;
 use crate::scene::limits::{WorkItem, try_with_capacity};
 use crate::scene::progress::{Progress, par_map_counted};
 use crate::scene::shared::compliant_peg_3d::insertion::{
@@ -43,6 +54,9 @@ use crate::scene::shared::compliant_peg_3d::insertion::{
 };
 use crate::scene::shared::compliant_peg_3d::{ranges, replay, tables};
 use crate::scene::shared::replay::{GridReplayTable, RunChoice};
+use crate::scene::shared::sensitivities::{
+    Row as SensitivityRow, SensitivitiesTable, output as sensitivities_output,
+};
 use crate::scene::summary::{Metric, RunSummary};
 use crate::scene::validate::Checker;
 use grid::{ANGULAR_ERRORS, LATERAL_ERRORS, PRECESSION_RATES, SPIN_RATES, YIELD_PRESSURE};
@@ -96,6 +110,9 @@ pub struct SweepScene {
     /// `[replay]` (optional; the page shows the worst run by default).
     #[serde(default)]
     pub replay: GridReplayTable,
+    /// `[sensitivities]` (optional): derivatives at every grid point.
+    #[serde(default)]
+    pub sensitivities: Option<SensitivitiesTable>,
 }
 
 /// One grid point.
@@ -120,6 +137,10 @@ struct Ready {
     nominal: Option<Built>,
     integrator: IntegratorSpec,
     method_reason: &'static str,
+    /// The fields of the `[sensitivities]` table (indices into
+    /// [`crate::scene::shared::compliant_peg_3d::design::FIELDS`]), empty
+    /// without one.
+    sensitivities: Vec<usize>,
 }
 
 impl SweepScene {
@@ -136,7 +157,8 @@ impl SweepScene {
             criteria: self.criteria.clone(),
             integrator: self.integrator.clone(),
             replay: Default::default(),
-            sensitivities: None,
+            // Its error control is the sensitivity runs'.
+            sensitivities: self.sensitivities.clone(),
         }
     }
 }
@@ -218,6 +240,9 @@ impl SweepScene {
 impl Written for SweepScene {
     fn work(&self) -> Vec<WorkItem> {
         let mut w = self.integrator.work("integrator");
+        if let Some(t) = &self.sensitivities {
+            w.extend(sensitivities::work(&self.integrator, t.parameters.len()));
+        }
         // Every point's insertion is built before the runs start, and
         // every run keeps its row.
         let each = std::mem::size_of::<(Point, Built)>() + std::mem::size_of::<Row>();
@@ -258,6 +283,12 @@ impl Written for SweepScene {
             }
         }
         c.finish()?;
+        // The table's fields, checked against the first point's model (the
+        // grid moves no field that the check reads).
+        let chosen = match (&s.sensitivities, points.first()) {
+            (Some(t), Some((_, b))) => sensitivities::check(t, b)?,
+            _ => Vec::new(),
+        };
         let nominal = match s.replay.run {
             Some(RunChoice::Nominal) => {
                 let r = &s.robot;
@@ -278,6 +309,7 @@ impl Written for SweepScene {
             nominal,
             integrator,
             method_reason,
+            sensitivities: chosen,
         }))
     }
 }
@@ -332,11 +364,23 @@ pub struct Row {
     pub peak_wrist: f64,
 }
 
-fn one(p: Point, b: &Built, spec: &IntegratorSpec) -> Result<Row, RunError> {
+/// One grid point's run, and its sensitivity rows for the fields `chosen`
+/// (none when empty).
+fn one(
+    scene: &SweepScene,
+    (p, b): (Point, &Built),
+    spec: &IntegratorSpec,
+    chosen: &[usize],
+) -> Result<(Row, Vec<SensitivityRow>), RunError> {
     let mut silent = Progress::silent();
     let run = run_one(b, spec, false, &mut silent)?;
     let peaks = run.peaks()?;
-    Ok(Row {
+    let derivatives = if chosen.is_empty() {
+        Vec::new()
+    } else {
+        sensitivities::compute(&scene.as_rcc(&p), b, spec, chosen)?.0
+    };
+    let row = Row {
         point: p,
         outcome: outcome_text(&run.outcome),
         code: run.outcome.code(),
@@ -346,7 +390,8 @@ fn one(p: Point, b: &Built, spec: &IntegratorSpec) -> Result<Row, RunError> {
         peak_pressure: peaks.pressure,
         peak_moment: peaks.wrist_moment,
         peak_wrist: peaks.wrist_force,
-    })
+    };
+    Ok((row, derivatives))
 }
 
 impl Scene for Ready {
@@ -365,10 +410,11 @@ impl Scene for Ready {
     }
 
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
-        let rows = par_map_counted(&self.points, &mut ctx.progress, "insertion", |(p, b)| {
-            one(*p, b, &self.integrator)
+        let runs = par_map_counted(&self.points, &mut ctx.progress, "insertion", |(p, b)| {
+            one(&self.scene, (*p, b), &self.integrator, &self.sensitivities)
         })?;
-        let rows: Vec<Row> = rows.into_iter().collect::<Result<_, _>>()?;
+        let runs: Vec<(Row, Vec<SensitivityRow>)> = runs.into_iter().collect::<Result<_, _>>()?;
+        let (rows, derivatives): (Vec<Row>, Vec<Vec<SensitivityRow>>) = runs.into_iter().unzip();
         let yield_p = self.scene.grid.yield_pressure;
         let mut csv = ctx.table(
             Part::Main,
@@ -412,6 +458,10 @@ impl Scene for Ready {
         csv.finish()?;
         ctx.figure(Part::Main, &figure::heat_maps(&rows))?;
         let mut out = RunSummary::default();
+        if !self.sensitivities.is_empty() {
+            out.metrics
+                .extend(write_sensitivities(ctx, &rows, &derivatives)?);
+        }
         let seated = rows.iter().filter(|r| r.seated).count();
         out.metrics.push(Metric::new("runs", rows.len() as f64, ""));
         out.metrics.push(Metric::new("seated", seated as f64, ""));
@@ -472,6 +522,54 @@ impl Scene for Ready {
         }
         Ok(out)
     }
+}
+
+/// Writes every grid point's sensitivity rows (`<name>.sensitivities.csv`,
+/// the point's coordinates first) and returns the summary's note: rows,
+/// and how many are flagged.
+fn write_sensitivities(
+    ctx: &RunContext,
+    rows: &[Row],
+    derivatives: &[Vec<SensitivityRow>],
+) -> Result<Vec<Metric>, RunError> {
+    let mut header = vec![
+        "lateral_error_m",
+        "angular_error_deg",
+        "precession_rate",
+        "spin_rate",
+    ];
+    header.extend(sensitivities_output::HEADER);
+    let mut csv = ctx.table(Part::Sub("sensitivities"), &header)?;
+    let cell = |v: Option<f64>| v.map(format_f64).unwrap_or_default();
+    let (mut written, mut flagged) = (0_usize, 0_usize);
+    for (r, ds) in rows.iter().zip(derivatives) {
+        let p = &r.point;
+        for d in ds {
+            csv.row_cells(&[
+                &format_f64(p.lateral),
+                &format_f64(p.angular_deg),
+                &format_f64(p.precession),
+                &format_f64(p.spin),
+                d.metric,
+                d.parameter,
+                &cell(d.value),
+                &cell(d.derivative),
+                &cell(d.elasticity),
+                &d.flag,
+            ])?;
+            written += 1;
+            flagged += usize::from(d.derivative.is_none());
+        }
+    }
+    csv.finish()?;
+    Ok(vec![Metric::note(
+        "sensitivities",
+        format!(
+            "{written} rows over {} grid points, {flagged} without a derivative (see the flag \
+             column of the CSV)",
+            rows.len()
+        ),
+    )])
 }
 
 #[doc(hidden)]

@@ -48,8 +48,9 @@ pub struct RccScene {
     /// `[replay]` (optional).
     #[serde(default)]
     pub replay: ReplayTable,
-    /// `[sensitivities]` (optional, `insert_rcc` alone): derivatives of
-    /// the run's metrics in design fields.
+    /// `[sensitivities]` (optional; `insert_rcc`'s, or a `rotation_assist`
+    /// grid's for each of its points): derivatives of the run's metrics in
+    /// design fields.
     #[serde(default)]
     pub sensitivities: Option<SensitivitiesTable>,
 }

@@ -81,11 +81,12 @@ pub fn passes(fields: usize) -> usize {
 /// [`passes`] keeps three numbers of each of up to `integrator.max_steps`
 /// steps, and takes up to `integrator.max_steps` steps of `N (1 + P)`
 /// components, counted as `(1 + P) · max_steps` steps of the model's `N`
-/// states for its `P` fields (as `insert_compliant` counts them).
-pub fn work(integrator: &IntegratorSpec, chosen: &[usize]) -> Vec<WorkItem> {
+/// states for its `P` fields (as `insert_compliant` counts them), for a
+/// table of `fields` fields.
+pub fn work(integrator: &IntegratorSpec, fields: usize) -> Vec<WorkItem> {
     let steps = integrator.max_steps as f64;
-    let runs = passes(chosen.len()) as f64;
-    let p = chosen.len() as f64;
+    let runs = passes(fields) as f64;
+    let p = fields as f64;
     vec![
         WorkItem::new(FIELD, "max_output_samples", steps, runs * PASS_STEP_BYTES),
         WorkItem::new(FIELD, "max_steps", (runs + p) * steps, 0.0),
