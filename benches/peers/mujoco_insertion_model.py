@@ -24,7 +24,7 @@ GRAVITY = 9.81  # m/s^2: pegdyn's default [peg] gravity
 # with 32 segments per ring. "converged": on insert_rcc, the outcome and
 # seat time change by 2e-5 s when the step and the contact time constant
 # are halved and the segments doubled (elliptic cone, impratio 10, the time
-# constant five steps; docs/BENCHMARKS.md, "MuJoCo peer: the 3-D
+# constant five steps; docs/bench/peers-mujoco.md, "The 3-D
 # insertion", has the ladder).
 SETTINGS = {
     "defaults": {"step": 2e-3, "timeconst": None, "segments": 32, "cone": "pyramidal", "impratio": 1.0},

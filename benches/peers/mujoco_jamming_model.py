@@ -20,7 +20,7 @@ THICKNESS = 0.005  # half-thickness of the peg out of the plane, m
 # Solver settings. "defaults" changes only what the problem fixes (no gravity,
 # the friction coefficient): MuJoCo's 2 ms step, pyramidal cone, solref
 # (0.02, 1), solimp (0.9, 0.95, 0.001, 0.5, 2). "tuned" is the cheapest
-# setting found whose classes converge (docs/BENCHMARKS.md, "MuJoCo peer"):
+# setting found whose classes converge (docs/bench/peers-mujoco.md):
 # elliptic friction cone, impratio 100 (friction that holds without creep),
 # contact time constant 0.4 ms, step 80 us (halving it leaves every run's
 # class unchanged); every other option at MuJoCo's default.

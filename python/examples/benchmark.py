@@ -1,5 +1,5 @@
-"""Timings of the Python package (the numbers in docs/BENCHMARKS.md,
-section "Python package").
+"""Timings of the Python package (the numbers in docs/bench/python.md,
+summarized in docs/BENCHMARKS.md, section "Python package").
 
 1. A vectorized generated function called from Python, ns per point at
    N = 1, 1e3, 1e6, against the same Rust loop without Python and, when
