@@ -128,16 +128,11 @@ fn the_seat_time_s_derivative_matches_differences_of_runs_along_every_field() {
     assert!(checked.len() >= 8, "only {checked:?} resolved");
 }
 
-/// The short insertion's text with a `[sensitivities]` table naming
-/// `fields`, and `extra` lines after `speed`.
-fn scene_text(fields: &[&str], extra: &str) -> String {
+/// The text of `scenes/insert_rcc.toml` with the lines of the keys of
+/// `changes` set to their values.
+fn shipped_text(changes: &[(&str, &str)]) -> String {
     let mut text = include_str!("../../scenes/insert_rcc.toml").to_string();
-    for (k, v) in [
-        ("method", "\"dopri5\""),
-        ("start_height", "-1e-3"),
-        ("seat_depth", "0.002"),
-        ("t_end", "0.3"),
-    ] {
+    for (k, v) in changes {
         let line = text
             .lines()
             .find(|l| l.starts_with(&format!("{k} ")))
@@ -145,6 +140,18 @@ fn scene_text(fields: &[&str], extra: &str) -> String {
             .to_string();
         text = text.replacen(&line, &format!("{k} = {v}"), 1);
     }
+    text
+}
+
+/// The short insertion's text with a `[sensitivities]` table naming
+/// `fields`, and `extra` lines after `speed`.
+fn scene_text(fields: &[&str], extra: &str) -> String {
+    let text = shipped_text(&[
+        ("method", "\"dopri5\""),
+        ("start_height", "-1e-3"),
+        ("seat_depth", "0.002"),
+        ("t_end", "0.3"),
+    ]);
     let text = text.replacen("speed = 0.01 ", &format!("{extra}\nspeed = 0.01 "), 1);
     let names: Vec<String> = fields.iter().map(|f| format!("\"{f}\"")).collect();
     format!(
@@ -235,6 +242,53 @@ fn the_table_writes_its_csv_tornado_and_ranking_and_refuses_unknown_fields() {
     );
 }
 
+/// The metrics of a plain run.
+type Metrics = Vec<(&'static str, f64)>;
+
+/// The rows of `s` for the fields `chosen` and, for each field `k` in
+/// turn, the metrics of four plain runs with it moved by `−h, −h/2, h/2,
+/// h` (`h = step(k)`). The sensitivity run and the moved runs are
+/// independent: they run on every core (rayon), read back in order.
+fn with_moved_runs(
+    s: &RccScene,
+    chosen: &[usize],
+    step: impl Fn(usize) -> f64 + Sync,
+) -> (Vec<Row>, Vec<Metrics>) {
+    let q = values(s);
+    let moved: Vec<(usize, f64)> = chosen
+        .iter()
+        .flat_map(|&k| [-1.0, -0.5, 0.5, 1.0].map(|d| (k, q[k] + d * step(k))))
+        .collect();
+    rayon::join(
+        || rows(s, chosen),
+        || {
+            moved
+                .par_iter()
+                .map(|&(k, v)| {
+                    let mut m = s.clone();
+                    *slot(&mut m, k) = v;
+                    plain(&m)
+                })
+                .collect()
+        },
+    )
+}
+
+/// Metric `name`'s central differences over the four moved runs of
+/// [`with_moved_runs`] (steps `h` and `h/2`) and their Richardson
+/// extrapolation.
+fn differences(runs: &[Metrics], name: &str, h: f64) -> (f64, f64, f64) {
+    let value = |m: &Metrics| {
+        m.iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, v)| *v)
+            .unwrap_or_else(|| panic!("{name} in {m:?}"))
+    };
+    let d1 = (value(&runs[3]) - value(&runs[0])) / (2.0 * h);
+    let d2 = (value(&runs[2]) - value(&runs[1])) / h;
+    (d1, d2, (4.0 * d2 - d1) / 3.0)
+}
+
 /// The fields and metrics of the run through the chamfer.
 const CHAMFER_FIELDS: [&str; 8] = [
     "wrist.lateral_stiffness",
@@ -272,33 +326,8 @@ fn through_the_chamfer_every_metric_matches_differences_along_eight_fields() {
         .map(|f| FIELDS.iter().position(|g| g == f).expect("a field"))
         .collect();
     let q = values(&s);
-    let metrics = |k: usize, v: f64| {
-        let mut moved = s.clone();
-        *slot(&mut moved, k) = v;
-        plain(&moved)
-    };
-    // The sensitivity run and the 32 moved runs are independent: they run
-    // on every core (rayon), the differences read back in order.
     let steps = |k: usize| if q[k] == 0.0 { 1e-5 } else { 1e-3 * q[k].abs() };
-    let moved: Vec<(usize, f64)> = chosen
-        .iter()
-        .flat_map(|&k| [-1.0, -0.5, 0.5, 1.0].map(|d| (k, q[k] + d * steps(k))))
-        .collect();
-    let (base, moved_runs) = rayon::join(
-        || rows(&s, &chosen),
-        || {
-            moved
-                .par_iter()
-                .map(|&(k, v)| metrics(k, v))
-                .collect::<Vec<_>>()
-        },
-    );
-    let value = |m: &[(&'static str, f64)], name: &str| {
-        m.iter()
-            .find(|(n, _)| *n == name)
-            .map(|(_, v)| *v)
-            .unwrap_or_else(|| panic!("{name} in {m:?}"))
-    };
+    let (base, moved_runs) = with_moved_runs(&s, &chosen, steps);
     let mut worst: f64 = 0.0;
     let mut flagged = 0;
     for (i, &k) in chosen.iter().enumerate() {
@@ -324,9 +353,7 @@ fn through_the_chamfer_every_metric_matches_differences_along_eight_fields() {
                 continue;
             }
             let der = r.derivative.expect("unflagged");
-            let d1 = (value(&runs[3], name) - value(&runs[0], name)) / (2.0 * h);
-            let d2 = (value(&runs[2], name) - value(&runs[1], name)) / h;
-            let fd = (4.0 * d2 - d1) / 3.0;
+            let (d1, d2, fd) = differences(runs, name, h);
             let e = (der - fd).abs() / fd.abs();
             eprintln!(
                 "{name} along {}: sensitivity {der:.10e}, difference {fd:.10e} ({d1:.10e}, {d2:.10e}), {e:.1e}",
@@ -372,35 +399,11 @@ fn the_precession_and_spin_rates_derivatives_match_differences_of_runs() {
     let rates = [field("robot.precession_rate"), field("robot.spin_rate")];
     let q = values(&s);
     let h = |k: usize| 1e-2 * q[k];
-    let moved: Vec<(usize, f64)> = rates
-        .iter()
-        .flat_map(|&k| [-1.0, -0.5, 0.5, 1.0].map(|d| (k, q[k] + d * h(k))))
-        .collect();
-    let (base, runs) = rayon::join(
-        || rows(&s, &rates),
-        || {
-            moved
-                .par_iter()
-                .map(|&(k, v)| {
-                    let mut m = s.clone();
-                    *slot(&mut m, k) = v;
-                    plain(&m)
-                })
-                .collect::<Vec<_>>()
-        },
-    );
-    let value = |m: &[(&'static str, f64)], name: &str| {
-        m.iter()
-            .find(|(n, _)| *n == name)
-            .map(|(_, v)| *v)
-            .unwrap_or_else(|| panic!("{name} in {m:?}"))
-    };
+    let (base, runs) = with_moved_runs(&s, &rates, h);
     for (i, &k) in rates.iter().enumerate() {
         let runs = &runs[4 * i..4 * i + 4];
         for name in ["seat_time_s", "peak_contact_force_N", "peak_wrist_force_N"] {
-            let d1 = (value(&runs[3], name) - value(&runs[0], name)) / (2.0 * h(k));
-            let d2 = (value(&runs[2], name) - value(&runs[1], name)) / h(k);
-            let fd = (4.0 * d2 - d1) / 3.0;
+            let (d1, d2, fd) = differences(runs, name, h(k));
             // The differences' own resolution: their two steps' spread.
             let bound = 1e-5_f64.max((d1 - d2).abs() / fd.abs());
             let r = base
@@ -432,20 +435,12 @@ fn a_two_point_onset_lost_again_is_flagged_with_its_reason_not_differentiated() 
     // holds. The onset grazes (a small change can make or remove the
     // bounce): its time and depth are flagged, every field, with an empty
     // derivative cell; the seat time keeps its number.
-    let mut text = include_str!("../../scenes/insert_rcc.toml").to_string();
-    for (k, v) in [
+    let mut text = shipped_text(&[
         ("angular_error_deg", "0.4"),
         ("start_height", "-0.009"),
         ("seat_depth", "0.012"),
         ("t_end", "0.5"),
-    ] {
-        let line = text
-            .lines()
-            .find(|l| l.starts_with(&format!("{k} ")))
-            .expect("a shipped line")
-            .to_string();
-        text = text.replacen(&line, &format!("{k} = {v}"), 1);
-    }
+    ]);
     let fields = ["peg.friction", "robot.lateral_error"];
     text.push_str("\n[sensitivities]\nparameters = [\"peg.friction\", \"robot.lateral_error\"]\n");
     let (_, rows, _) = run_scene(&text);

@@ -540,23 +540,14 @@ fn write_sensitivities(
     ];
     header.extend(sensitivities_output::HEADER);
     let mut csv = ctx.table(Part::Sub("sensitivities"), &header)?;
-    let cell = |v: Option<f64>| v.map(format_f64).unwrap_or_default();
     let (mut written, mut flagged) = (0_usize, 0_usize);
     for (r, ds) in rows.iter().zip(derivatives) {
         let p = &r.point;
+        let at = [p.lateral, p.angular_deg, p.precession, p.spin].map(format_f64);
         for d in ds {
-            csv.row_cells(&[
-                &format_f64(p.lateral),
-                &format_f64(p.angular_deg),
-                &format_f64(p.precession),
-                &format_f64(p.spin),
-                d.metric,
-                d.parameter,
-                &cell(d.value),
-                &cell(d.derivative),
-                &cell(d.elasticity),
-                &d.flag,
-            ])?;
+            let cells = sensitivities_output::cells(d);
+            let row: Vec<&str> = at.iter().chain(&cells).map(String::as_str).collect();
+            csv.row_cells(&row)?;
             written += 1;
             flagged += usize::from(d.derivative.is_none());
         }

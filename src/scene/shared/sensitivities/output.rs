@@ -35,6 +35,20 @@ const NEGLIGIBLE: f64 = 1e-9;
 /// Half the height of a tornado bar (the bars sit on integer rows).
 const BAR: f64 = 0.35;
 
+/// The cells of a row in the order of [`HEADER`] (an empty cell for a
+/// missing number).
+pub fn cells(r: &Row) -> [String; 6] {
+    let cell = |v: Option<f64>| v.map(format_f64).unwrap_or_default();
+    [
+        r.metric.to_owned(),
+        r.parameter.to_owned(),
+        cell(r.value),
+        cell(r.derivative),
+        cell(r.elasticity),
+        r.flag.clone(),
+    ]
+}
+
 /// Writes the CSV and the tornado plot of `rows` (metrics in the order of
 /// `metrics`), and returns the ranking as notes; the plot and the ranking
 /// name each field without `prefix` (`"insert_compliant."`: `friction`).
@@ -50,16 +64,8 @@ pub fn write(
     let short = |parameter: &'static str| parameter.strip_prefix(prefix).unwrap_or(parameter);
     let part = Part::Sub("sensitivities");
     let mut csv = ctx.table(part, &HEADER)?;
-    let cell = |v: Option<f64>| v.map(format_f64).unwrap_or_default();
     for r in rows {
-        csv.row_cells(&[
-            r.metric,
-            r.parameter,
-            &cell(r.value),
-            &cell(r.derivative),
-            &cell(r.elasticity),
-            &r.flag,
-        ])?;
+        csv.row_cells(&cells(r).each_ref().map(String::as_str))?;
     }
     csv.finish()?;
     let mut fig = Figure::new();
