@@ -1,7 +1,7 @@
 //! The dynamic sweep's margin to its exact parallelogram, with its
 //! derivatives along the design: the peg radius `r`, the clearance ratio
 //! `c`, the friction coefficient `μ` and the requested depth `l` (as in
-//! [`super::sensitivities`]; the fillets and the peg's length held).
+//! [`mod@super::sensitivities`]; the fillets and the peg's length held).
 //!
 //! The sweep's diagram ([`super::dynamic::SweepSetup`]) is not the exact
 //! parallelogram of the requested depth: it is built at the requested
