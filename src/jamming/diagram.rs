@@ -174,13 +174,13 @@ pub fn edge_distances<T: Real>(corners: &[[T; 2]; 4], q: [T; 2]) -> [T; 4] {
 /// first of equals).
 pub fn margin_of<T: Real>(corners: &[[T; 2]; 4], q: [T; 2]) -> (T, usize) {
     let e = edge_distances(corners, q);
-    let mut k = 0;
-    for i in 1..4 {
-        if e[i].to_f64() < e[k].to_f64() {
-            k = i;
-        }
-    }
+    let k = nearest(&e);
     (e[k], k)
+}
+
+/// The index of the least of four edge distances (the first of equals).
+pub fn nearest<T: Real>(e: &[T; 4]) -> usize {
+    (1..4).fold(0, |k, i| if e[i].to_f64() < e[k].to_f64() { i } else { k })
 }
 
 /// A Whitney-frame load ratio `q` = (F_x/F_z, M_tip/(r F_z)) of the

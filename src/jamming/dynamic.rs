@@ -22,6 +22,7 @@ use crate::compliant_peg::{
 };
 use crate::hertz::HertzError;
 use crate::integrate::{IntegrateError, Method};
+use crate::scalar::Real;
 
 /// What one dynamic sweep simulates (SI units).
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -108,6 +109,15 @@ pub struct SweepSetup {
 /// The model refused the setup.
 pub type SetupError = HertzError;
 
+/// Whitney's depth `l` (m) of a two-point start, at any scalar: from the
+/// tip face to the edge contact along the axis, `l = (z + l_c cos θ +
+/// r sin θ)/cos θ` for the centre of mass at height `z` below the top face
+/// (m), `l_c` above the bottom face, peg radius `r` and tilt `theta`
+/// (differs from the requested depth by the fillets).
+pub fn whitney_depth<T: Real>(z: T, lc: T, r: T, theta: T) -> T {
+    (z + lc * theta.cos() + r * theta.sin()) / theta.cos()
+}
+
 impl SweepSetup {
     /// Builds the model and the start state; errors name the refused field.
     pub fn new(spec: SweepSpec) -> Result<Self, SetupError> {
@@ -127,7 +137,7 @@ impl SweepSetup {
             .map_err(|_| invalid("must be finite and > 0"))?
             .ok_or_else(|| invalid("two-point contact is impossible at this depth"))?;
         let start = PegState::two_point(&params, theta, 0.0)?;
-        let depth = (start.depth(&params) + p.r() * theta.sin()) / theta.cos();
+        let depth = whitney_depth(start.z, params.spec.com_height, p.r(), theta);
         Ok(Self {
             spec,
             params,

@@ -13,7 +13,8 @@
 //! d = 2r,  D = d/(1 − c),  θ = atan2(l, d) − atan2(√(l² + d² − D²), D)
 //! (x, z) = the start state's centre of mass at θ (both contacts touching,
 //!          compliant_peg::initial::two_point_pose)
-//! l_W = (z + l_c cos θ + r sin θ)/cos θ          (Whitney depth of the start)
+//! l_W = (z + l_c cos θ + r sin θ)/cos θ          (Whitney depth of the start,
+//!                                                dynamic::whitney_depth)
 //! corners = [−P₁, Q, P₁, −Q] of (μ, r, l_W, θ)  (jamming::diagram)
 //! m(q) = signed distance from q to the nearest edge
 //! ```
@@ -22,8 +23,8 @@
 //! nearest edges are equally near (a corner's bisector) it has no
 //! derivative, and none is given.
 
-use super::diagram::{Ratio, edge_distances, exact_corners, margin_of};
-use super::dynamic::SweepSetup;
+use super::diagram::{Ratio, edge_distances, exact_corners, nearest};
+use super::dynamic::{SweepSetup, whitney_depth};
 use super::geometry::tilt_of;
 use super::sensitivities::Gradient;
 use crate::compliant_peg::initial::two_point_pose;
@@ -66,11 +67,10 @@ impl SweepSetup {
         let theta = tilt_of(d, big_d, l);
         let geometry = [r, k(g.peg_fillet), k(g.hole_fillet), k(0.5) * big_d];
         let (_, z) = two_point_pose(geometry, lc, theta, k(0.0));
-        let (s, co) = theta.sin_cos();
-        let whitney_depth = (z + lc * co + r * s) / co;
-        let corners = exact_corners(mu, r, whitney_depth, theta);
+        let corners = exact_corners(mu, r, whitney_depth(z, lc, r, theta), theta);
         let distances = edge_distances(&corners, [k(q[0]), k(q[1])]);
-        let (m, edge) = margin_of(&corners, [k(q[0]), k(q[1])]);
+        let edge = nearest(&distances);
+        let m = distances[edge];
         // The next nearest edge: a tie leaves no derivative.
         let next = (0..4)
             .filter(|&i| i != edge)

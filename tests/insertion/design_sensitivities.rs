@@ -681,18 +681,21 @@ fn a_rotation_grid_gives_every_points_sensitivities_as_its_insert_rcc_run_does()
             .insert(key.to_owned(), v);
     };
     let list = |v: &[f64]| toml::Value::Array(v.iter().map(|x| toml::Value::Float(*x)).collect());
-    set(&mut doc, "grid", "lateral_errors", list(&[1e-4, 3e-4]));
-    set(&mut doc, "grid", "angular_errors_deg", list(&[1.0]));
-    set(&mut doc, "grid", "precession_rates", list(&[10.0]));
-    set(&mut doc, "grid", "spin_rates", list(&[20.0]));
-    set(&mut doc, "robot", "start_height", toml::Value::Float(-1e-3));
-    set(
-        &mut doc,
-        "criteria",
-        "seat_depth",
-        toml::Value::Float(0.002),
-    );
-    set(&mut doc, "integrator", "t_end", toml::Value::Float(0.3));
+    for (key, v) in [
+        ("lateral_errors", &[1e-4, 3e-4][..]),
+        ("angular_errors_deg", &[1.0]),
+        ("precession_rates", &[10.0]),
+        ("spin_rates", &[20.0]),
+    ] {
+        set(&mut doc, "grid", key, list(v));
+    }
+    for (table, key, v) in [
+        ("robot", "start_height", -1e-3),
+        ("criteria", "seat_depth", 0.002),
+        ("integrator", "t_end", 0.3),
+    ] {
+        set(&mut doc, table, key, toml::Value::Float(v));
+    }
     let table: toml::Table = toml::from_str(fields).expect("TOML");
     doc.insert("sensitivities".to_owned(), toml::Value::Table(table));
     let grid_text = toml::to_string(&doc).expect("TOML");
@@ -715,25 +718,14 @@ fn a_rotation_grid_gives_every_points_sensitivities_as_its_insert_rcc_run_does()
             "kind".to_owned(),
             toml::Value::String("insert_rcc".to_owned()),
         );
-        set(
-            &mut one,
-            "robot",
-            "lateral_error",
-            toml::Value::Float(lateral),
-        );
-        set(
-            &mut one,
-            "robot",
-            "angular_error_deg",
-            toml::Value::Float(1.0),
-        );
-        set(
-            &mut one,
-            "robot",
-            "precession_rate",
-            toml::Value::Float(10.0),
-        );
-        set(&mut one, "robot", "spin_rate", toml::Value::Float(20.0));
+        for (key, v) in [
+            ("lateral_error", lateral),
+            ("angular_error_deg", 1.0),
+            ("precession_rate", 10.0),
+            ("spin_rate", 20.0),
+        ] {
+            set(&mut one, "robot", key, toml::Value::Float(v));
+        }
         let files = scene_files(&toml::to_string(&one).expect("TOML"), "one");
         let own: Vec<&str> = files["one.sensitivities.csv"].lines().skip(1).collect();
         let prefix = format!("{lateral},1,10,20,");

@@ -187,27 +187,20 @@ pub fn compute(
 
 /// `rows` of several passes ordered metric by metric (in the order the
 /// metrics first appear), each metric's fields in the order of `chosen`.
-fn metric_major(rows: Vec<Row>, chosen: &[usize]) -> Vec<Row> {
+fn metric_major(mut rows: Vec<Row>, chosen: &[usize]) -> Vec<Row> {
     let mut names: Vec<&'static str> = Vec::new();
     for r in &rows {
         if !names.contains(&r.metric) {
             names.push(r.metric);
         }
     }
-    let mut rows: Vec<Option<Row>> = rows.into_iter().map(Some).collect();
-    let mut out = Vec::with_capacity(rows.len());
-    for name in names {
-        for &k in chosen {
-            let found = rows.iter_mut().find(|r| {
-                r.as_ref()
-                    .is_some_and(|r| r.metric == name && r.parameter == FIELDS[k])
-            });
-            if let Some(r) = found.and_then(Option::take) {
-                out.push(r);
-            }
-        }
-    }
-    out
+    let at = |r: &Row| {
+        let metric = names.iter().position(|n| *n == r.metric);
+        let field = chosen.iter().position(|&k| FIELDS[k] == r.parameter);
+        (metric, field)
+    };
+    rows.sort_by_key(at);
+    rows
 }
 
 /// [`compute`] for at most [`N_DESIGN`] fields: one sensitivity run.
