@@ -64,6 +64,7 @@ pub mod jacobian;
 pub mod law;
 pub mod merge;
 pub mod mindlin;
+pub mod no_jam;
 pub mod params;
 pub mod prescribed;
 pub mod prune;

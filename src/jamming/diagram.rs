@@ -48,15 +48,6 @@ pub struct Parallelogram {
 }
 
 impl Parallelogram {
-    /// From the reference edge-only corner `p1` and the reference two-point
-    /// line's slope: the right side is the vertical through `p1`.
-    fn from_edge_corner(p1: Ratio, slope: f64, theta: f64) -> Self {
-        Self {
-            corners: corners_of(p1, slope),
-            theta,
-        }
-    }
-
     /// Edges as (start, end) pairs, counter-clockwise: the mirrored two-point
     /// line, the right side (edge cone limit), the reference two-point line,
     /// the left side.
@@ -99,12 +90,20 @@ impl Parallelogram {
 /// ```
 pub fn whitney_parallelogram(p: &PegHole, l: f64) -> Result<Parallelogram, ParamError> {
     let l = PegHole::check_depth(l)?;
-    let (mu, lam) = (p.mu(), p.lambda(l));
-    Ok(Parallelogram::from_edge_corner(
-        [1.0 / mu, 1.0 + 2.0 * lam],
-        mu * (1.0 + lam),
-        0.0,
-    ))
+    Ok(Parallelogram {
+        corners: whitney_corners(p.mu(), p.r(), l),
+        theta: 0.0,
+    })
+}
+
+/// The corners of [`whitney_parallelogram`] of friction `mu` and peg
+/// radius `r` (m) at depth `l` (m), at any scalar: the edge-only corner
+/// `P₁ = (1/μ, 1 + 2λ)` and the two-point lines' slope `μ (1 + λ)`,
+/// `λ = l/(2rμ)`.
+pub fn whitney_corners<T: Real>(mu: T, r: T, l: T) -> [[T; 2]; 4] {
+    let (one, two) = (T::from_f64(1.0), T::from_f64(2.0));
+    let lam = l / (two * r * mu);
+    corners_of([one / mu, one + two * lam], mu * (one + lam))
 }
 
 /// The exact finite-angle parallelogram at depth `l` (m), tilt from the exact

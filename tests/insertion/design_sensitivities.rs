@@ -752,3 +752,78 @@ fn a_rotation_grid_gives_every_points_sensitivities_as_its_insert_rcc_run_does()
         "{err}"
     );
 }
+
+/// The fields of the least no-jam margin's test: the run through the
+/// chamfer's, with the robot's speed for its angular error.
+const MARGIN_FIELDS: [&str; 8] = [
+    "wrist.lateral_stiffness",
+    "wrist.angular_stiffness",
+    "wrist.centre_height",
+    "peg.mouth_fillet",
+    "peg.rim_fillet",
+    "peg.friction",
+    "robot.speed",
+    "robot.lateral_error",
+];
+
+#[test]
+fn the_least_no_jam_margin_has_the_one_point_slides_derivatives() {
+    // The run through the chamfer, seated at 5 mm, at a tight tolerance:
+    // the least no-jam margin in two-point contact lies at the onset
+    // (4.93 mm), where the
+    // rim still slides down the wall on one point, so the applied load's
+    // ratio sits on the parallelogram's side F_X/F_Z = 1/μ less the
+    // regularized law's slip: m = (1/μ)(1 − √(1 + (v_s/v)²)), v the rim's
+    // sliding speed (the robot's 10 mm/s). Its derivatives: −m/μ along
+    // friction, (1/μ) v_s²/(v³ √(1 + (v_s/v)²)) along the speed, zero
+    // along the geometry and the wrist (central differences of plain runs
+    // resolve them only to their noise, 1e-4 per unit). Here the
+    // elasticities lie within 3.2e-7 of these; over tolerances from 1e-9
+    // to 1e-11 the distance ranges from 4e-9 to 3e-5
+    // (docs/sensitivities.md, "The least no-jam margin").
+    let s = scene(&[
+        ("seat_depth", "0.005"),
+        ("rtol", "1e-10"),
+        ("atol", "1e-15"),
+        ("t_end", "0.8"),
+    ]);
+    let chosen: Vec<usize> = MARGIN_FIELDS
+        .iter()
+        .map(|f| FIELDS.iter().position(|g| g == f).expect("a field"))
+        .collect();
+    let base = rows(&s, &chosen);
+    let (mu, v_s, v) = (s.peg.friction, s.peg.slip_velocity, s.robot.speed);
+    let root = (1.0 + (v_s / v).powi(2)).sqrt();
+    let m = (1.0 - root) / mu;
+    let q = values(&s);
+    for &k in &chosen {
+        let r = base
+            .iter()
+            .find(|r| r.metric == "least_no_jam_margin" && r.parameter == FIELDS[k])
+            .expect("a row");
+        assert!(r.flag.is_empty(), "{}: flagged {}", FIELDS[k], r.flag);
+        let value = r.value.expect("a value");
+        assert!(
+            (value - m).abs() <= 1e-8 * m.abs(),
+            "margin {value:e} against {m:e}"
+        );
+        let der = r.derivative.expect("unflagged");
+        let exact = match FIELDS[k] {
+            "peg.friction" => -m / mu,
+            "robot.speed" => v_s * v_s / (mu * v.powi(3) * root),
+            _ => 0.0,
+        };
+        // Elasticities p/m ∂m/∂p: −1 along friction; along the others
+        // within 1e-5 of the exact (1e-5 relative to friction's).
+        let e = (der - exact).abs() * q[k].abs().max(1e-3) / m.abs();
+        eprintln!(
+            "least margin along {}: sensitivity {der:.10e}, exact {exact:.10e}, {e:.1e}",
+            FIELDS[k]
+        );
+        assert!(
+            e <= 1e-5,
+            "along {}: sensitivity {der:e}, exact {exact:e}",
+            FIELDS[k]
+        );
+    }
+}

@@ -23,6 +23,7 @@ use nalgebra::Vector3;
 use super::output::Samples;
 use crate::compliant_peg_3d::Peg3dParams;
 use crate::compliant_peg_3d::insertion::{motion, peg_state};
+use crate::compliant_peg_3d::no_jam::load_ratio;
 use crate::compliant_peg_3d::outcome::two_point;
 use crate::jamming::PegHole;
 use crate::jamming::diagram::whitney_parallelogram;
@@ -32,7 +33,8 @@ use crate::scene::summary::Metric;
 /// The load ratio of each sample in two-point contact in the bore (the
 /// mouth edge on the side and the rim on the wall,
 /// [`two_point`]), pushed in
-/// (`F_Z > 0`): `(t, (F_X/F_Z, M/(r F_Z)), tip depth)`.
+/// (`F_Z > 0`): `(t, (F_X/F_Z, M/(r F_Z)), tip depth)`
+/// ([`load_ratio`] of the wrist's load plus gravity).
 pub fn ratio(prm: &Peg3dParams, s: &super::output::Samples) -> Vec<(f64, [f64; 2], f64)> {
     let mut out = Vec::new();
     for (t, y, smp) in &s.rows {
@@ -42,26 +44,17 @@ pub fn ratio(prm: &Peg3dParams, s: &super::output::Samples) -> Vec<(f64, [f64; 2
         }
         let m = motion(&peg_state(y));
         let a = m.orientation * Vector3::z();
-        let lean = Vector3::new(a.x, a.y, 0.0);
-        if lean.norm() < 1e-9 {
+        let force = w.force + Vector3::z() * (-prm.mass * prm.gravity);
+        let Some(q) = load_ratio(
+            &a.into(),
+            0.5 * prm.length,
+            &force.into(),
+            &w.moment.into(),
+            prm.peg_radius(),
+        ) else {
             continue;
-        }
-        let x = lean.normalize();
-        let z = -Vector3::z();
-        let tip = m.centre - a * (0.5 * prm.length);
-        let gravity = Vector3::z() * (-prm.mass * prm.gravity);
-        let force = w.force + gravity;
-        let moment = w.moment + (m.centre - tip).cross(&force);
-        let fz = force.dot(&z);
-        if fz <= 0.0 {
-            continue;
-        }
-        let tau = moment.dot(&x.cross(&z));
-        out.push((
-            *t,
-            [force.dot(&x) / fz, tau / (prm.peg_radius() * fz)],
-            smp.depth,
-        ));
+        };
+        out.push((*t, q, smp.depth));
     }
     out
 }

@@ -11,31 +11,44 @@
 //! - `two_point_start_s`, `two_point_depth_m`: the time and the tip's
 //!   depth at which two-point contact (the mouth edge on the peg's side
 //!   and the rim on the wall) starts, `∂t_e/∂q` of the closing pair's gap
-//!   and `l_y (s + f ∂t_e/∂q) + l_q`.
+//!   and `l_y (s + f ∂t_e/∂q) + l_q`;
+//! - `least_no_jam_margin`: the least no-jam margin in two-point contact
+//!   in the bore (the load applied to the peg against Whitney's
+//!   parallelogram, [`crate::compliant_peg_3d::no_jam`]): inside a stretch
+//!   of two-point contact where its rate `m_y f + m_t` rises through zero,
+//!   `m_y s + m_q`; at the seating `m_y (s + f ∂t_e/∂q) + m_t ∂t_e/∂q +
+//!   m_q`; at the onset of two-point contact (where the peg still slides
+//!   on one point and the load sits on the parallelogram's side less the
+//!   friction law's slip) the same along the onset's moving time, of the
+//!   contacts' resultant (which equals the applied load there less the
+//!   peg's inertia, checked to 10⁻⁶).
 //!
 //! A derivative is flagged instead of given when a change of the field by
 //! [`PERTURBATION`](crate::scene::shared::sensitivities::PERTURBATION) of its value (predicted to first order) changes the
-//! outcome (seated or not), the peak moves to another force maximum, two
+//! outcome (seated or not), the peak moves to another force maximum (the
+//! least margin to another minimum, or the nearest edge of the
+//! parallelogram to another), two
 //! point contact is lost again after it starts (the onset grazes), or the
 //! peg's bottom lies on a flat (the distributed ring's derivatives in the
 //! parameters are not carried).
 
 use nalgebra::SVector;
 
-use super::trajectory::{Derivatives, Scan};
+use super::trajectory::{Derivatives, LeastMargin, Scan};
 use crate::compliant_peg_3d::design::{Design, N_DESIGN};
 use crate::compliant_peg_3d::insertion::Insertion;
 use crate::scene::shared::compliant_peg_3d::design::FIELDS;
-use crate::scene::shared::sensitivities::{self, Measured, Row};
+use crate::scene::shared::sensitivities::{self, Measured, PERTURBATION, Row};
 
 /// The metric names, in output order.
-pub const METRICS: [&str; 6] = [
+pub const METRICS: [&str; 7] = [
     "seat_time_s",
     "final_depth_m",
     "peak_contact_force_N",
     "peak_wrist_force_N",
     "two_point_start_s",
     "two_point_depth_m",
+    "least_no_jam_margin",
 ];
 
 /// What the rows are made of: the system and its design quantities, the
@@ -152,6 +165,9 @@ pub(super) fn rows(x: &Inputs, names: &[&'static str], unused: &[bool; N_DESIGN]
             });
         }
     }
+    if let Some(found) = &d.margin {
+        metrics.push(least_margin(found, scan, &values));
+    }
     if let Some(t) = scan.ring {
         for m in &mut metrics {
             m.flag = Box::new(move |_| {
@@ -164,6 +180,56 @@ pub(super) fn rows(x: &Inputs, names: &[&'static str], unused: &[bool; N_DESIGN]
     }
     let slots: Vec<usize> = (0..names.len()).collect();
     sensitivities::rows(&metrics, &slots, unused, values.as_slice(), names)
+}
+
+/// The least no-jam margin's metric: its value and derivative, flagged
+/// where a 0.1 % change of a field (to first order) moves it to another
+/// local minimum or to another edge of the parallelogram, or with the
+/// reason it was not located.
+fn least_margin<'a>(
+    found: &Result<LeastMargin, String>,
+    scan: &Scan,
+    values: &SVector<f64, N_DESIGN>,
+) -> Measured<'a> {
+    let at_steps = scan.margin.map(|m| m.value);
+    match found {
+        Err(reason) => {
+            let reason = reason.clone();
+            Measured {
+                name: METRICS[6],
+                value: at_steps,
+                derivative: vec![0.0; N_DESIGN],
+                flag: Box::new(move |_| Some(reason.clone())),
+            }
+        }
+        Ok(m) => {
+            let (value, gap) = (m.value, m.edge_gap);
+            let runner_up = scan.margin.map_or(f64::INFINITY, |l| l.runner_up);
+            let der = m.derivative;
+            let values = *values;
+            Measured {
+                name: METRICS[6],
+                value: Some(value),
+                derivative: der.as_slice().to_vec(),
+                flag: Box::new(move |k| {
+                    let shift = PERTURBATION * values[k].abs() * der[k].abs();
+                    if runner_up - value < 2.0 * shift {
+                        Some(format!(
+                            "the least no-jam margin switches to another minimum within a 0.1% \
+                             change (least {value:.6e}; next minimum {runner_up:.6e})"
+                        ))
+                    } else if gap < 2.0 * shift || gap <= 1e-12 {
+                        Some(format!(
+                            "the nearest edge of the no-jam parallelogram changes within a 0.1% \
+                             change (the next edge {gap:.3e} farther)"
+                        ))
+                    } else {
+                        None
+                    }
+                }),
+            }
+        }
+    }
 }
 
 /// The rows of a run whose sensitivities failed.

@@ -22,6 +22,7 @@ use nalgebra::{SMatrix, SVector};
 use crate::compliant_peg_3d::Pair;
 use crate::compliant_peg_3d::design::{Design, Directions, N_DESIGN};
 use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, depth_tilt, peg_state};
+use crate::compliant_peg_3d::no_jam::MarginLoad;
 use crate::compliant_peg_3d::outcome::{Criteria, counts, terminal_conditions, two_point_counts};
 use crate::integrate::{Direction, Event, Method, Options, OutputMode, Solver, StopReason};
 use crate::scene::shared::sensitivities::StopOrError;
@@ -47,6 +48,8 @@ pub(super) enum Watch {
     /// The onset of two-point contact: the pair that closes it and its
     /// angle (rad) at the first step in two-point contact.
     TwoPoint(Pair, u64),
+    /// The least no-jam margin inside a stretch of two-point contact.
+    LeastMargin,
 }
 
 /// A peak over the run's steps.
@@ -58,6 +61,21 @@ pub(super) struct Peak {
     pub value: f64,
     /// The largest other local maximum (N).
     pub runner_up: f64,
+}
+
+/// The least no-jam margin over the run's steps in two-point contact in
+/// the bore.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) struct Least {
+    /// The step.
+    pub step: usize,
+    /// The value.
+    pub value: f64,
+    /// The least other local minimum (infinite without one).
+    pub runner_up: f64,
+    /// Whether the step is the first of its stretch of two-point contact
+    /// in the bore (the least value then lies at the stretch's start).
+    pub first: bool,
 }
 
 /// What the run found at its steps.
@@ -77,6 +95,8 @@ pub(super) struct Scan {
     pub two_point_lost: Option<f64>,
     /// The first time the peg's bottom lay on a flat as a ring (s).
     pub ring: Option<f64>,
+    /// The least no-jam margin in two-point contact in the bore.
+    pub margin: Option<Least>,
     /// Whether the run ended seated.
     pub seated: bool,
     /// How the run ended.
@@ -100,9 +120,45 @@ pub(super) struct Derivatives {
     pub contact: Option<(f64, f64, SVector<f64, N_DESIGN>)>,
     /// The largest wrist force: time, value (N), derivative.
     pub wrist: Option<(f64, f64, SVector<f64, N_DESIGN>)>,
+    /// The least no-jam margin: value, derivative and the gap to the
+    /// parallelogram's next edge, or why it was not located.
+    pub margin: Option<Result<LeastMargin, String>>,
     /// Accepted steps and evaluations of the variational right-hand side
     /// (the run and its windows).
     pub work: (usize, usize),
+}
+
+/// The least no-jam margin located: its value, derivative and the gap to
+/// the parallelogram's next edge there.
+#[derive(Clone, Debug)]
+pub(super) struct LeastMargin {
+    /// The value.
+    pub value: f64,
+    /// `dm/dq`.
+    pub derivative: SVector<f64, N_DESIGN>,
+    /// How much farther the next edge is.
+    pub edge_gap: f64,
+}
+
+/// The least value of `v` over the steps where it is a number, the least
+/// other local minimum, and whether its step starts a stretch of numbers.
+fn least(v: &[f64]) -> Option<Least> {
+    let (step, value) = v
+        .iter()
+        .copied()
+        .enumerate()
+        .filter(|(_, m)| !m.is_nan())
+        .min_by(|a, b| a.1.total_cmp(&b.1))?;
+    let runner_up = (1..v.len().saturating_sub(1))
+        .filter(|&k| k != step && v[k] < v[k - 1] && v[k] <= v[k + 1])
+        .map(|k| v[k])
+        .fold(f64::INFINITY, f64::min);
+    Some(Least {
+        step,
+        value,
+        runner_up,
+        first: step == 0 || v[step - 1].is_nan(),
+    })
 }
 
 /// The largest value of `v` over the steps and the largest other local
@@ -144,12 +200,17 @@ struct Tracker<'a, X> {
     times: Vec<f64>,
     contact: Vec<f64>,
     wrist: Vec<f64>,
+    /// The no-jam margin in two-point contact in the bore (NaN elsewhere).
+    margin: Vec<f64>,
     /// The last two points, newest first.
     recent: Vec<Point<X>>,
     /// The largest contact and wrist forces so far (N).
     largest: (f64, f64),
     contact_from: Option<Point<X>>,
     wrist_from: Option<Point<X>>,
+    /// The least margin so far and the point before it.
+    least: f64,
+    margin_from: Option<Point<X>>,
     two_point: Option<(usize, Pair, f64)>,
     two_point_from: Option<Point<X>>,
     lost: Option<f64>,
@@ -162,6 +223,7 @@ struct Starts<X> {
     contact: Option<Point<X>>,
     wrist: Option<Point<X>>,
     two_point: Option<Point<X>>,
+    margin: Option<Point<X>>,
 }
 
 impl<'a, X: Clone> Tracker<'a, X> {
@@ -171,10 +233,13 @@ impl<'a, X: Clone> Tracker<'a, X> {
             times: Vec::new(),
             contact: Vec::new(),
             wrist: Vec::new(),
+            margin: Vec::new(),
             recent: Vec::with_capacity(3),
             largest: (0.0, 0.0),
             contact_from: None,
             wrist_from: None,
+            least: f64::INFINITY,
+            margin_from: None,
             two_point: None,
             two_point_from: None,
             lost: None,
@@ -237,9 +302,19 @@ impl<'a, X: Clone> Tracker<'a, X> {
             self.lost = Some(t);
         }
         self.was = now;
+        // The margin in two-point contact in the bore, as the summary's.
+        let margin = (now && depth_tilt(&sys.peg.params, &ys).0 > sys.peg.params.mouth_fillet)
+            .then(|| sys.no_jam_margin(t, y, MarginLoad::Applied).ok().flatten())
+            .flatten()
+            .map_or(f64::NAN, |m| m.value);
+        if margin <= self.least {
+            self.least = margin;
+            self.margin_from = self.recent.first().cloned();
+        }
         self.times.push(t);
         self.contact.push(contact);
         self.wrist.push(wrist);
+        self.margin.push(margin);
         self.recent.insert(
             0,
             Point {
@@ -261,6 +336,7 @@ impl<'a, X: Clone> Tracker<'a, X> {
             two_point: self.two_point,
             two_point_lost: self.lost,
             ring: self.ring,
+            margin: least(&self.margin),
             seated: matches!(stop, StopReason::Event { index: 0, .. }),
             stop,
             times: self.times,
@@ -275,6 +351,7 @@ impl<'a, X: Clone> Tracker<'a, X> {
                 scan.two_point
                     .is_some_and(|(k, ..)| p.step == k.saturating_sub(2))
             }),
+            margin: at(self.margin_from, scan.margin.map(|m| m.step)),
         };
         (scan, starts)
     }
@@ -304,7 +381,132 @@ fn windows<X>(scan: &Scan, starts: Starts<X>) -> Vec<(Watch, Point<X>, f64, f64)
         let h = step(&start);
         out.push((Watch::TwoPoint(pair, angle.to_bits()), start, h, t[k]));
     }
+    if let (Some(m), Some(start)) = (scan.margin, starts.margin)
+        && !m.first
+        && m.step < last
+    {
+        let h = step(&start);
+        out.push((Watch::LeastMargin, start, h, t[m.step + 1]));
+    }
     out
+}
+
+/// Where the least no-jam margin of `scan` lies.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum LeastAt {
+    /// Inside a stretch of two-point contact: located by its window.
+    Inside,
+    /// At the onset of two-point contact (located with it).
+    Onset,
+    /// At the run's end.
+    End,
+}
+
+/// Where the least margin of `scan` lies, or why it is not located: at
+/// the start of a stretch of two-point contact in the bore that is not
+/// the located onset of two-point contact (the tip passing the mouth
+/// round's depth, or two-point contact made again).
+fn least_at(scan: &Scan) -> Option<Result<LeastAt, String>> {
+    let m = scan.margin?;
+    let last = scan.times.len().saturating_sub(1);
+    Some(if m.step == last {
+        Ok(LeastAt::End)
+    } else if !m.first {
+        Ok(LeastAt::Inside)
+    } else if scan.two_point.is_some_and(|(k, ..)| k == m.step) {
+        Ok(LeastAt::Onset)
+    } else {
+        Err(format!(
+            "the least no-jam margin lies where a stretch of two-point contact in the bore \
+             starts at t = {:.6e} s, not at the onset of two-point contact (the tip passing \
+             the mouth round's depth, or two-point contact made again): not located",
+            scan.times[m.step]
+        ))
+    })
+}
+
+/// The least margin at the located onset `e` of two-point contact: the
+/// applied load's value, and the derivative of the contacts' resultant's
+/// margin along the onset's moving time (`m_y (s + f ∂t_e/∂q) + m_q`,
+/// the module documentation of [`crate::compliant_peg_3d::no_jam`]),
+/// when the two agree (the peg's inertia negligible) and the onset lies
+/// below the least value at the steps (to [`FLAT`]).
+fn margin_at_onset(
+    sys: &Insertion,
+    d: &Design,
+    e: &EventSensitivity<N_STATE, N_DESIGN>,
+    at_steps: f64,
+) -> Result<LeastMargin, String> {
+    let applied = sys
+        .no_jam_margin(e.t, &e.y, MarginLoad::Applied)
+        .ok()
+        .flatten()
+        .ok_or("the no-jam margin has no plane at the onset of two-point contact")?;
+    if applied.value > at_steps + FLAT * at_steps.abs().max(1.0) {
+        return Err(format!(
+            "the no-jam margin falls after the onset of two-point contact ({:.6e} there, \
+             {at_steps:.6e} at a step): its least value inside the first step is not located",
+            applied.value
+        ));
+    }
+    let (contacts, g_y, g_q, _) = sys
+        .no_jam_margin_gradient(e.t, &e.y, d, MarginLoad::Contacts)
+        .ok()
+        .flatten()
+        .ok_or("the contacts' resultant has no plane at the onset of two-point contact")?;
+    let inertia = (contacts - applied.value).abs();
+    if inertia > INERTIA_TOLERANCE * applied.value.abs().max(1.0) {
+        return Err(format!(
+            "the peg's inertia moves the no-jam margin by {inertia:.3e} at the onset of \
+             two-point contact: the contacts' resultant does not stand for the applied load"
+        ));
+    }
+    Ok(LeastMargin {
+        value: applied.value,
+        derivative: e.state_at_event().transpose() * g_y + g_q,
+        edge_gap: applied.edge_gap,
+    })
+}
+
+/// How far (relative to the margin, or absolute below 1) the margin at
+/// the first step in two-point contact may lie below its value at the
+/// onset for the onset to stand as the least: the steady slide's margin is
+/// flat to the runs' error there.
+const FLAT: f64 = 1e-9;
+
+/// The largest difference between the margins of the applied load and of
+/// the contacts' resultant (relative to the margin, or absolute below 1)
+/// at which the second's derivative stands for the first's.
+const INERTIA_TOLERANCE: f64 = 1e-6;
+
+/// The least margin of the applied load at `(t, y)` with the state's
+/// derivative `dy` and the time's `dt` (zero at a fixed time).
+fn margin_reading(
+    sys: &Insertion,
+    d: &Design,
+    (t, y, dy, dt): (
+        f64,
+        &SVector<f64, N_STATE>,
+        &Columns,
+        SVector<f64, N_DESIGN>,
+    ),
+) -> Result<LeastMargin, String> {
+    let none = || "the no-jam margin has no plane at its least value".to_owned();
+    let m = sys
+        .no_jam_margin(t, y, MarginLoad::Applied)
+        .ok()
+        .flatten()
+        .ok_or_else(none)?;
+    let (_, g_y, g_q, rate) = sys
+        .no_jam_margin_gradient(t, y, d, MarginLoad::Applied)
+        .ok()
+        .flatten()
+        .ok_or_else(none)?;
+    Ok(LeastMargin {
+        value: m.value,
+        derivative: dy.transpose() * g_y + g_q + dt * rate,
+        edge_gap: m.edge_gap,
+    })
 }
 
 /// The options of a window's run: `options` starting with the step `h`
@@ -368,6 +570,7 @@ pub(super) fn derivatives(
         two_point: None,
         contact: None,
         wrist: None,
+        margin: None,
         work: (run.stats.steps, run.stats.rhs_calls),
     };
     for (watch, from, h, to) in windows(&scan, starts) {
@@ -387,6 +590,9 @@ pub(super) fn derivatives(
         };
         match watch {
             Watch::TwoPoint(..) => out.two_point = Some(e),
+            Watch::LeastMargin => {
+                out.margin = Some(margin_reading(sys, d, (e.t, &e.y, &e.s, SVector::zeros())));
+            }
             Watch::ContactPeak | Watch::WristPeak => {
                 let found = peak_at(sys, d, watch, (e.t, &e.y, &e.s));
                 if watch == Watch::ContactPeak {
@@ -399,6 +605,18 @@ pub(super) fn derivatives(
     }
     let last = scan.times.len().saturating_sub(1);
     let dt_end = out.seated.as_ref().map_or(SVector::zeros(), |e| e.dt_dp);
+    out.margin = match least_at(&scan) {
+        None => None,
+        Some(Err(reason)) => Some(Err(reason)),
+        Some(Ok(LeastAt::Inside)) => Some(out.margin.take().unwrap_or_else(|| {
+            Err("the least no-jam margin inside two-point contact was not located".to_owned())
+        })),
+        Some(Ok(LeastAt::Onset)) => Some(match (&out.two_point, scan.margin) {
+            (Some(e), Some(m)) => margin_at_onset(sys, d, e, m.value),
+            _ => Err("the onset of two-point contact was not located".to_owned()),
+        }),
+        Some(Ok(LeastAt::End)) => Some(margin_reading(sys, d, (out.t, &out.y, &out.dy, dt_end))),
+    };
     // A peak on the start or the end: read there.
     for (watch, p) in [
         (Watch::ContactPeak, scan.contact),
@@ -449,7 +667,9 @@ fn peak_at(
 }
 
 /// The value of a windowed watch's event function: a peak's `dF/dt`
-/// (`F_y f + F_t`), or the closing pair's gap at its stationary angle.
+/// (`F_y f + F_t`), the closing pair's gap at its stationary angle, or
+/// minus the margin's rate `−(m_y f + m_t)` (falling through zero at the
+/// least margin).
 fn watch_value<'a>(
     dir: &'a Directions<'a>,
     w: Watch,
@@ -470,6 +690,11 @@ fn watch_value<'a>(
             Watch::TwoPoint(pair, bits) => sys
                 .stationary_gap(y, pair, f64::from_bits(bits))
                 .map_or(1.0, |(g, _)| g),
+            Watch::LeastMargin => sys
+                .no_jam_margin_gradient(t, y, d, MarginLoad::Applied)
+                .ok()
+                .flatten()
+                .map_or(0.0, |(_, g_y, _, m_t)| -(g_y.dot(&sys.rhs(t, y)) + m_t)),
         }
     }
 }
@@ -579,8 +804,15 @@ pub(super) fn values(
             Watch::TwoPoint(..) => {
                 out.push((4, t));
                 out.push((5, depth_tilt(&prm, &peg_state(y)).0));
+                if least_at(&scan) == Some(Ok(LeastAt::Onset)) {
+                    out.extend(applied_margin(sys, t, y).map(|m| (6, m)));
+                }
             }
+            Watch::LeastMargin => out.extend(applied_margin(sys, t, y).map(|m| (6, m))),
         }
+    }
+    if least_at(&scan) == Some(Ok(LeastAt::End)) {
+        out.extend(applied_margin(sys, end.0, &end.1).map(|m| (6, m)));
     }
     let last = scan.times.len().saturating_sub(1);
     for (k, p) in [(2, scan.contact), (3, scan.wrist)] {
@@ -598,4 +830,12 @@ pub(super) fn values(
     }
     out.sort_by_key(|(k, _)| *k);
     Ok(out)
+}
+
+/// The applied load's no-jam margin at `(t, y)`.
+fn applied_margin(sys: &Insertion, t: f64, y: &SVector<f64, N_STATE>) -> Option<f64> {
+    sys.no_jam_margin(t, y, MarginLoad::Applied)
+        .ok()
+        .flatten()
+        .map(|m| m.value)
 }
