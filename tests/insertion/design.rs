@@ -14,6 +14,7 @@ use nalgebra::{SMatrix, SVector};
 use pegdyn::compliant_peg_3d::Pair;
 use pegdyn::compliant_peg_3d::design::{N_DESIGN, slots};
 use pegdyn::compliant_peg_3d::insertion::{Insertion, N_STATE};
+use pegdyn::compliant_peg_3d::no_jam::MarginLoad;
 use pegdyn::compliant_peg_3d::outcome::counts;
 use pegdyn::scene::shared::compliant_peg_3d::design::{FIELDS, design, seeds, slot, values};
 use pegdyn::scene::shared::compliant_peg_3d::insertion::RccScene;
@@ -215,4 +216,92 @@ fn the_start_states_derivative_matches_differences_of_the_rebuilt_start() {
     for i in 0..N_STATE {
         assert!((y0[i].v - start[i]).abs() <= 1e-15 * (1.0 + start[i].abs()));
     }
+}
+
+#[test]
+fn the_no_jam_margins_gradients_match_differences() {
+    // The no-jam margin of the applied load and of the contacts' resultant
+    // at states of the shipped run on the wall and in two-point contact:
+    // `∂m/∂y` against central differences in each state component, `∂m/∂q`
+    // along every field against Richardson-extrapolated differences of the
+    // rebuilt system, the applied load's `∂m/∂t` against differences in
+    // time.
+    let (scene, built, run) = rcc::run(&shipped());
+    let sys = &run.system;
+    let sol = &run.solution;
+    let q = values(&scene);
+    let mut checked = 0;
+    for (name, pairs) in [
+        ("rim on the wall", &[Pair::RimWall][..]),
+        ("two-point contact", &[Pair::EdgeSide, Pair::RimWall][..]),
+    ] {
+        for (t, y) in states(sys, &sol.t, &sol.x, pairs) {
+            for load in [MarginLoad::Applied, MarginLoad::Contacts] {
+                let value = |s: &Insertion, t: f64, y: &SVector<f64, N_STATE>| {
+                    s.no_jam_margin(t, y, load)
+                        .expect("sets up")
+                        .expect("a plane")
+                        .value
+                };
+                let m = value(sys, t, &y);
+                let fields: Vec<usize> = (0..FIELDS.len()).collect();
+                for pass in fields.chunks(N_DESIGN) {
+                    let (dp, _) = design(&scene, &built, &seeds(pass));
+                    let (v, g_y, g_q, rate) = sys
+                        .no_jam_margin_gradient(t, &y, &dp, load)
+                        .expect("sets up")
+                        .expect("a plane");
+                    assert!(
+                        (v - m).abs() <= 1e-12 * m.abs(),
+                        "{name}, {load:?}: the value {v:e} against {m:e}"
+                    );
+                    let fd = SVector::<f64, 13>::from_fn(|i, _| {
+                        richardson(y[i], 1e-6 * y[i].abs().max(1e-3), |v| {
+                            let mut moved = y;
+                            moved[i] = v;
+                            value(sys, t, &moved)
+                        })
+                    });
+                    let exact = SVector::<f64, 13>::from_fn(|i, _| g_y[i]);
+                    let e = mismatch(&exact, &fd, 0.0);
+                    assert!(
+                        e < 1e-6,
+                        "{name}, {load:?}, dm/dy: {e:.1e}\n{exact:?}\n{fd:?}"
+                    );
+                    for (j, &k) in pass.iter().enumerate() {
+                        // The margin is far from linear in the fields (the
+                        // corners go as 1/μ; F_X/F_Z on the wall moves by
+                        // 5 % over 10⁻⁴ of the robot's speed): 10⁻⁵ |q|, at q = 0
+                        // 10⁻⁶ (the compliance centre's height, m; the rates, rad/s).
+                        let h = if q[k] == 0.0 { 1e-6 } else { 1e-5 * q[k].abs() };
+                        let fd = richardson(q[k], h, |v| {
+                            let (s, _) = system_with(&scene, k, v);
+                            value(&s, t, &y)
+                        });
+                        // Relative, below an elasticity of 10⁻² or the
+                        // differences' rounding (10⁻¹² of the margin over
+                        // the step) absolute.
+                        let floor =
+                            1e-2 * m.abs() / q[k].abs().max(1e-3) + 1e-6 * m.abs().max(1e-2) / h;
+                        let e = (g_q[j] - fd).abs() / (fd.abs() + floor);
+                        eprintln!(
+                            "{name}, {load:?}, dm/d {}: {:.8e} against {fd:.8e}",
+                            FIELDS[k], g_q[j]
+                        );
+                        assert!(
+                            e < 1e-6,
+                            "{name}, {load:?}, dm/d {}: {} against {fd}",
+                            FIELDS[k],
+                            g_q[j]
+                        );
+                        checked += 1;
+                    }
+                    let fd = richardson(t, 1e-6, |s| value(sys, s, &y));
+                    let e = (rate - fd).abs() / fd.abs().max(1e-2);
+                    assert!(e < 1e-5, "{name}, {load:?}, dm/dt: {rate} against {fd}");
+                }
+            }
+        }
+    }
+    assert_eq!(checked, 4 * FIELDS.len());
 }

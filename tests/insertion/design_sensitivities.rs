@@ -827,3 +827,66 @@ fn the_least_no_jam_margin_has_the_one_point_slides_derivatives() {
         );
     }
 }
+
+#[test]
+fn without_lateral_error_the_least_no_jam_margin_lies_inside_two_point_contact() {
+    // The shipped run without the lateral error: the rim slides down the
+    // chamfer and the wall, two-point contact starts, and the margin then
+    // falls to its least value inside two-point contact (−0.03141, where
+    // its rate rises through zero) before it grows again: `m_y s + m_q`
+    // there, against Richardson-extrapolated central differences of plain
+    // runs (step 1e-3 q) along the eight fields. The differences hold
+    // still as the tolerance tightens (robot.speed: −14.015753 at rtol
+    // 1e-10, −14.015762 at 1e-11); the sensitivities approach them four
+    // to six times closer per decade of rtol, because the margin is a
+    // small distance (0.031) of a load ratio of size 1/μ = 5 to an edge:
+    // the ratio's error, as accurate as the peaks' (1e-6), is 160 times
+    // larger relative to the margin. Bounds: 1e-5 relative to the ratio's
+    // scale (the error times μ |m|), 1e-3 relative to the derivative.
+    let s = scene(&[
+        ("lateral_error", "0.0"),
+        ("rtol", "1e-10"),
+        ("atol", "1e-14"),
+    ]);
+    let chosen: Vec<usize> = MARGIN_FIELDS
+        .iter()
+        .map(|f| FIELDS.iter().position(|g| g == f).expect("a field"))
+        .collect();
+    let q = values(&s);
+    let steps = |k: usize| if q[k] == 0.0 { 1e-5 } else { 1e-3 * q[k].abs() };
+    let (base, moved_runs) = with_moved_runs(&s, &chosen, steps);
+    let mu = s.peg.friction;
+    let mut resolved = 0;
+    for (i, &k) in chosen.iter().enumerate() {
+        let r = base
+            .iter()
+            .find(|r| r.metric == "least_no_jam_margin" && r.parameter == FIELDS[k])
+            .expect("a row");
+        assert!(r.flag.is_empty(), "{}: flagged {}", FIELDS[k], r.flag);
+        let (m, der) = (r.value.expect("a value"), r.derivative.expect("unflagged"));
+        assert!((m + 0.031_414_7).abs() < 1e-7, "least margin {m}");
+        let runs = &moved_runs[4 * i..4 * i + 4];
+        let (d1, d2, fd) = differences(runs, "least_no_jam_margin", steps(k));
+        if (d1 - d2).abs() > 1e-4 * fd.abs() {
+            eprintln!(
+                "along {}: differences unresolved ({d1:e}, {d2:e})",
+                FIELDS[k]
+            );
+            continue;
+        }
+        let e = (der - fd).abs() / fd.abs();
+        eprintln!(
+            "least margin along {}: sensitivity {der:.9e}, difference {fd:.9e}, {e:.1e} \
+             ({:.1e} of the ratio's scale)",
+            FIELDS[k],
+            e * mu * m.abs()
+        );
+        assert!(
+            e <= 1e-3 && e * mu * m.abs() <= 1e-5,
+            "along {}: sensitivity {der:e}, difference {fd:e}",
+            FIELDS[k]
+        );
+        resolved += 1;
+    }
+    assert!(resolved >= 7, "{resolved} resolved");
+}
