@@ -289,6 +289,21 @@ fn differences(runs: &[Metrics], name: &str, h: f64) -> (f64, f64, f64) {
     (d1, d2, (4.0 * d2 - d1) / 3.0)
 }
 
+/// The slots in [`FIELDS`] of the fields `names`.
+fn slots_of(names: &[&str]) -> Vec<usize> {
+    names
+        .iter()
+        .map(|f| FIELDS.iter().position(|g| g == f).expect("a field"))
+        .collect()
+}
+
+/// The differences' step along each field of `s`: `1e-3 q`, `1e-5` at
+/// `q = 0`.
+fn thousandth(s: &RccScene) -> impl Fn(usize) -> f64 + Sync + use<> {
+    let q = values(s);
+    move |k: usize| if q[k] == 0.0 { 1e-5 } else { 1e-3 * q[k].abs() }
+}
+
 /// The fields and metrics of the run through the chamfer.
 const CHAMFER_FIELDS: [&str; 8] = [
     "wrist.lateral_stiffness",
@@ -321,13 +336,9 @@ fn through_the_chamfer_every_metric_matches_differences_along_eight_fields() {
         ("atol", "1e-13"),
         ("t_end", "0.8"),
     ]);
-    let chosen: Vec<usize> = CHAMFER_FIELDS
-        .iter()
-        .map(|f| FIELDS.iter().position(|g| g == f).expect("a field"))
-        .collect();
-    let q = values(&s);
-    let steps = |k: usize| if q[k] == 0.0 { 1e-5 } else { 1e-3 * q[k].abs() };
-    let (base, moved_runs) = with_moved_runs(&s, &chosen, steps);
+    let chosen = slots_of(&CHAMFER_FIELDS);
+    let steps = thousandth(&s);
+    let (base, moved_runs) = with_moved_runs(&s, &chosen, &steps);
     let mut worst: f64 = 0.0;
     let mut flagged = 0;
     for (i, &k) in chosen.iter().enumerate() {
@@ -787,10 +798,7 @@ fn the_least_no_jam_margin_has_the_one_point_slides_derivatives() {
         ("atol", "1e-15"),
         ("t_end", "0.8"),
     ]);
-    let chosen: Vec<usize> = MARGIN_FIELDS
-        .iter()
-        .map(|f| FIELDS.iter().position(|g| g == f).expect("a field"))
-        .collect();
+    let chosen = slots_of(&MARGIN_FIELDS);
     let base = rows(&s, &chosen);
     let (mu, v_s, v) = (s.peg.friction, s.peg.slip_velocity, s.robot.speed);
     let root = (1.0 + (v_s / v).powi(2)).sqrt();
@@ -848,13 +856,9 @@ fn without_lateral_error_the_least_no_jam_margin_lies_inside_two_point_contact()
         ("rtol", "1e-10"),
         ("atol", "1e-14"),
     ]);
-    let chosen: Vec<usize> = MARGIN_FIELDS
-        .iter()
-        .map(|f| FIELDS.iter().position(|g| g == f).expect("a field"))
-        .collect();
-    let q = values(&s);
-    let steps = |k: usize| if q[k] == 0.0 { 1e-5 } else { 1e-3 * q[k].abs() };
-    let (base, moved_runs) = with_moved_runs(&s, &chosen, steps);
+    let chosen = slots_of(&MARGIN_FIELDS);
+    let steps = thousandth(&s);
+    let (base, moved_runs) = with_moved_runs(&s, &chosen, &steps);
     let mu = s.peg.friction;
     let mut resolved = 0;
     for (i, &k) in chosen.iter().enumerate() {
