@@ -24,7 +24,7 @@
 //!   peg's inertia, checked to 10⁻⁶).
 //!
 //! A derivative is flagged instead of given when a change of the field by
-//! [`PERTURBATION`](crate::scene::shared::sensitivities::PERTURBATION) of its value (predicted to first order) changes the
+//! [`PERTURBATION`] of its value (predicted to first order) changes the
 //! outcome (seated or not), the peak moves to another force maximum (the
 //! least margin to another minimum, or the nearest edge of the
 //! parallelogram to another), two
