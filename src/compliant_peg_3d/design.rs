@@ -39,7 +39,7 @@ use nalgebra::{SMatrix, SVector};
 use super::contact::Pair;
 use super::forces::{self, Setup, contact_wrench};
 use super::frame::{Motion, axis};
-use super::held::TIME_STEP;
+use super::held::time_partial;
 use super::insertion::{Insertion, N_STATE, peg_state};
 use super::jacobian::{self, D};
 use super::law::LawParams;
@@ -268,9 +268,8 @@ impl Insertion {
 
     /// The magnitude of the wrist's force `|F|` (N) at `(t, y)` with its
     /// gradients in the state and in the design parameters, and its
-    /// partial rate in time `∂|F|/∂t` (the robot frame's motion; central
-    /// differences with the steps [`TIME_STEP`] and half of it,
-    /// Richardson-extrapolated). `None` for a peg that is not held.
+    /// partial rate in time `∂|F|/∂t` (the robot frame's motion,
+    /// [`time_partial`]). `None` for a peg that is not held.
     pub fn wrist_force_gradient(
         &self,
         t: f64,
@@ -291,17 +290,10 @@ impl Insertion {
             let f = h.wrist.load_of(length, &k, &h.robot.frame(t)).force;
             (f[0] * f[0] + f[1] * f[1] + f[2] * f[2]).sqrt()
         };
-        // Central differences at h and h/2, Richardson-extrapolated: the
-        // norm's third derivative in time is large where the frame moves
-        // across a small force (`~ |F_t|³/|F|²`), and a plain central
-        // difference's `h² F‴/6` then shows in a peak's derivative along
-        // the robot's speed, multiplied by the seat time's.
-        let central = |h: f64| {
-            let (t1, t0) = (t + h, t - h);
-            (at(t1) - at(t0)) / (t1 - t0)
-        };
-        let rate = (4.0 * central(0.5 * TIME_STEP) - central(TIME_STEP)) / 3.0;
-        Some((fy.v, state_gradient(&fy), slots(&fq), rate))
+        // Richardson-extrapolated: a plain central difference's `h² F‴/6`
+        // shows in a peak's derivative along the robot's speed, multiplied
+        // by the seat time's.
+        Some((fy.v, state_gradient(&fy), slots(&fq), time_partial(t, at)))
     }
 
     /// The gap `g` (m, negative when penetrating) of `pair` at its

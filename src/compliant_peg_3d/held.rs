@@ -37,6 +37,19 @@ pub const FOLLOWER_SCALE: f64 = 1e-3;
 /// Step of the central difference in time of the wrist's load (s).
 pub const TIME_STEP: f64 = 1.0 / 1_048_576.0;
 
+/// The partial rate in time `∂g/∂t` of a quantity `g` that the robot
+/// frame's motion moves: central differences at [`TIME_STEP`] and half of
+/// it, Richardson-extrapolated (a plain central difference's `h² g‴/6` is
+/// large where the frame moves across a small load: the norm of a force
+/// has `g‴ ~ |F_t|³/|F|²`).
+pub fn time_partial(t: f64, g: impl Fn(f64) -> f64) -> f64 {
+    let central = |h: f64| {
+        let (t1, t0) = (t + h, t - h);
+        (g(t1) - g(t0)) / (t1 - t0)
+    };
+    (4.0 * central(0.5 * TIME_STEP) - central(TIME_STEP)) / 3.0
+}
+
 /// The follower moment `−M₀ (e_z × a)/√(|e_z × a|² + s²)` at axis `a`
 /// (hole frame, N·m), `m0 = M₀`.
 pub fn follower<T: Real>(m0: f64, a: &V3<T>) -> V3<T> {

@@ -23,7 +23,7 @@
 //! the peg's inertia `(m a, dL/dt)`. An insertion's margin with its
 //! gradients in the state and the design parameters is
 //! [`Insertion::no_jam_margin_gradient`]: the formula above at dual
-//! numbers of the state ([`D`]) and of the design ([`Q`]).
+//! numbers of the state ([`jacobian::D`]) and of the design ([`Q`]).
 //!
 //! Why two: where the peg slides steadily on one contact, the applied
 //! load's ratio is set by that contact's friction, so its derivatives
@@ -38,12 +38,13 @@ use nalgebra::SVector;
 use super::design::{Design, N_DESIGN, Q, slots};
 use super::forces::contact_wrench;
 use super::frame::{Motion, V3, axis, cross, dot, scale};
-use super::held::TIME_STEP;
+use super::held::time_partial;
 use super::insertion::{Insertion, N_STATE, peg_state};
-use super::jacobian::{self, D};
+use super::jacobian;
+use super::params::Peg3dParams;
 use super::wrist::{Kinematics, load_with};
 use crate::hertz::HertzError;
-use crate::jamming::diagram::{edge_distances, nearest, whitney_corners};
+use crate::jamming::diagram::{edge_distances, margin_of, whitney_corners};
 use crate::scalar::Real;
 
 /// Below this lean `|(a_x, a_y)|` the tilt plane is not defined.
@@ -81,26 +82,29 @@ pub fn load_ratio<T: Real>(
 /// of friction `friction`, peg radius `radius` (m) at depth `depth` (m)
 /// (positive inside), and the index of the nearest edge.
 pub fn margin<T: Real>(q: [T; 2], friction: T, radius: T, depth: T) -> (T, usize) {
-    let e = edge_distances(&whitney_corners(friction, radius, depth), q);
-    let k = nearest(&e);
-    (e[k], k)
+    margin_of(&whitney_corners(friction, radius, depth), q)
 }
 
-/// The distance (in ratio units) between the nearest and the next nearest
-/// edge of [`margin`]: where it is zero the margin has a corner.
-pub fn edge_gap(q: [f64; 2], friction: f64, radius: f64, depth: f64) -> f64 {
-    let mut e = edge_distances(&whitney_corners(friction, radius, depth), q);
-    e.sort_by(f64::total_cmp);
-    e[1] - e[0]
-}
-
-/// A margin at `f64` and the gap to its next edge ([`edge_gap`]).
+/// A margin at `f64` and the gap to its next edge.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Margin {
     /// The signed distance to the nearest edge (positive inside).
     pub value: f64,
-    /// How much farther the next nearest edge is.
+    /// How much farther the next nearest edge is (in ratio units): where
+    /// it is zero the margin has a corner.
     pub edge_gap: f64,
+}
+
+impl Margin {
+    /// The margin of the load ratio `q` as [`margin`], with its gap.
+    pub fn of(q: [f64; 2], friction: f64, radius: f64, depth: f64) -> Margin {
+        let mut e = edge_distances(&whitney_corners(friction, radius, depth), q);
+        e.sort_by(f64::total_cmp);
+        Margin {
+            value: e[0],
+            edge_gap: e[1] - e[0],
+        }
+    }
 }
 
 /// The load the no-jam margin reads (module documentation).
@@ -120,9 +124,19 @@ pub enum MarginLoad {
 /// contacts').
 pub type MarginGradients = (f64, SVector<f64, N_STATE>, SVector<f64, N_DESIGN>, f64);
 
-/// The margin of a load at any scalar: the peg state's pose `pose`, half
-/// length, radius, friction, the weight `m g` (added for the applied
-/// load) and the load `(force, moment about the centre)`.
+/// The force of a wrist load with the weight `m g` added (hole frame,
+/// `z` up).
+fn with_weight<T: Real>(f: &V3<T>, weight: T) -> V3<T> {
+    [f[0], f[1], f[2] - weight]
+}
+
+/// The load `(−F_c, −M_c)` of a contact wrench `(F_c, M_c, Ṡ)`.
+fn reversed<T: Real>(w: &[T; 7]) -> (V3<T>, V3<T>) {
+    ([-w[0], -w[1], -w[2]], [-w[3], -w[4], -w[5]])
+}
+
+/// The peg's quantities the margin reads, at any scalar: its pose, half
+/// length, radius, friction and weight `m g`.
 struct Peg<T> {
     pose: [T; 7],
     half: T,
@@ -132,26 +146,35 @@ struct Peg<T> {
 }
 
 impl<T: Real> Peg<T> {
+    /// The pose `pose` with the parameters `prm` as constants.
+    fn constants(pose: [T; 7], prm: &Peg3dParams) -> Peg<T> {
+        let c = T::from_f64;
+        Peg {
+            pose,
+            half: c(0.5 * prm.length),
+            radius: c(prm.peg_radius()),
+            friction: c(prm.friction),
+            weight: c(prm.mass * prm.gravity),
+        }
+    }
+
     /// The ratio and the depth of the load `(force, moment)`.
-    fn ratio(&self, force: V3<T>, moment: V3<T>) -> Option<([T; 2], T)> {
+    fn ratio(&self, force: &V3<T>, moment: &V3<T>) -> Option<([T; 2], T)> {
         let a = axis(&self.pose);
-        let q = load_ratio(&a, self.half, &force, &moment, self.radius)?;
+        let q = load_ratio(&a, self.half, force, moment, self.radius)?;
         Some((q, -(self.pose[2] - self.half * a[2])))
     }
 
-    fn margin(&self, force: V3<T>, moment: V3<T>) -> Option<T> {
-        let (q, depth) = self.ratio(force, moment)?;
+    fn margin(&self, (force, moment): (V3<T>, V3<T>)) -> Option<T> {
+        let (q, depth) = self.ratio(&force, &moment)?;
         Some(margin(q, self.friction, self.radius, depth).0)
     }
 }
 
 impl Peg<f64> {
-    fn margin_f64(&self, force: V3<f64>, moment: V3<f64>) -> Option<Margin> {
-        let (q, depth) = self.ratio(force, moment)?;
-        Some(Margin {
-            value: margin(q, self.friction, self.radius, depth).0,
-            edge_gap: edge_gap(q, self.friction, self.radius, depth),
-        })
+    fn margin_f64(&self, (force, moment): (V3<f64>, V3<f64>)) -> Option<Margin> {
+        let (q, depth) = self.ratio(&force, &moment)?;
+        Some(Margin::of(q, self.friction, self.radius, depth))
     }
 }
 
@@ -168,44 +191,24 @@ impl Insertion {
         y: &SVector<f64, N_STATE>,
         load: MarginLoad,
     ) -> Result<Option<Margin>, HertzError> {
+        let Some(h) = self.held else { return Ok(None) };
         let ys = peg_state(y);
         let prm = &self.peg.params;
-        let peg = Peg {
-            pose: Motion::of_state(ys.as_slice()).pose,
-            half: 0.5 * prm.length,
-            radius: prm.peg_radius(),
-            friction: prm.friction,
-            weight: prm.mass * prm.gravity,
-        };
-        let Some(h) = self.held else { return Ok(None) };
-        Ok(match load {
+        let peg = Peg::constants(Motion::of_state(ys.as_slice()).pose, prm);
+        Ok(peg.margin_f64(match load {
             MarginLoad::Applied => {
                 let kin = Kinematics::of_state(ys.as_slice());
                 let l = h.wrist.load_of(prm.length, &kin, &h.robot.frame(t));
-                let f = [l.force[0], l.force[1], l.force[2] - peg.weight];
-                peg.margin_f64(f, l.moment)
+                (with_weight(&l.force, peg.weight), l.moment)
             }
-            MarginLoad::Contacts => {
-                let w = self.peg.with_setups(&ys, |setups| {
-                    let m = Motion::of_state(ys.as_slice());
-                    contact_wrench(
-                        prm,
-                        &super::law::LawParams::of(prm),
-                        &m,
-                        setups,
-                        |_, _, at| *at,
-                    )
-                })?;
-                peg.margin_f64([-w[0], -w[1], -w[2]], [-w[3], -w[4], -w[5]])
-            }
-        })
+            MarginLoad::Contacts => reversed(&self.peg.contact_wrench(&ys)?.into()),
+        }))
     }
 
     /// [`Insertion::no_jam_margin`] with its gradients in the state and in
     /// the design parameters `d` and its partial rate in time (the applied
-    /// load's: central differences with the steps [`TIME_STEP`] and half
-    /// of it, Richardson-extrapolated), at the contacts the right-hand
-    /// side found at `y`.
+    /// load's, [`time_partial`]), at the contacts the right-hand side
+    /// found at `y`.
     ///
     /// # Errors
     /// As [`super::Peg3d::setups`].
@@ -220,18 +223,10 @@ impl Insertion {
         let ys = peg_state(y);
         let prm = &self.peg.params;
         let yd = jacobian::seeded(&ys);
-        let md = Motion::of_state(&yd);
         let yq: [Q; 13] = std::array::from_fn(|k| Q::constant(y[k]));
         let mq = Motion::of_state(&yq);
         let pq = d.params();
-        let c = D::from_f64;
-        let peg_d = Peg {
-            pose: md.pose,
-            half: c(0.5 * prm.length),
-            radius: c(prm.peg_radius()),
-            friction: c(prm.friction),
-            weight: c(prm.mass * prm.gravity),
-        };
+        let peg_d = Peg::constants(Motion::of_state(&yd).pose, prm);
         let peg_q = Peg {
             pose: mq.pose,
             half: Q::from_f64(0.5) * pq.L,
@@ -241,44 +236,41 @@ impl Insertion {
         };
         let (by_y, by_q, rate) = match load {
             MarginLoad::Applied => {
-                let kd = Kinematics::of_state(&yd);
-                let ld = h.wrist.load_of(prm.length, &kd, &h.robot.frame(t));
+                let ld = h
+                    .wrist
+                    .load_of(prm.length, &Kinematics::of_state(&yd), &h.robot.frame(t));
                 let kq = Kinematics::of_state(&yq);
                 let lq = load_with(&d.wrist, pq.L, &kq, &h.robot.terms_of(t, &d.robot));
                 let at = |t: f64| {
                     self.no_jam_margin(t, y, load)
                         .ok()
                         .flatten()
-                        .map(|m| m.value)
+                        .map_or(f64::NAN, |m| m.value)
                 };
-                let central = |h: f64| match (at(t + h), at(t - h)) {
-                    (Some(up), Some(down)) => Some((up - down) / (2.0 * h)),
-                    _ => None,
-                };
-                let rate = match (central(0.5 * TIME_STEP), central(TIME_STEP)) {
-                    (Some(half), Some(full)) => (4.0 * half - full) / 3.0,
-                    _ => return Ok(None),
-                };
-                let lift = |f: V3<D>, w: D| [f[0], f[1], f[2] - w];
-                let lift_q = |f: V3<Q>, w: Q| [f[0], f[1], f[2] - w];
+                let rate = time_partial(t, at);
+                if !rate.is_finite() {
+                    return Ok(None);
+                }
                 (
-                    peg_d.margin(lift(ld.force, peg_d.weight), ld.moment),
-                    peg_q.margin(lift_q(lq.force, peg_q.weight), lq.moment),
+                    peg_d.margin((with_weight(&ld.force, peg_d.weight), ld.moment)),
+                    peg_q.margin((with_weight(&lq.force, peg_q.weight), lq.moment)),
                     rate,
                 )
             }
-            MarginLoad::Contacts => self.peg.with_setups(&ys, |setups| {
-                let wd = jacobian::wrench_dual(prm, self.peg.param_vector(), &yd, setups);
+            MarginLoad::Contacts => {
+                let wd = self.peg.contact_wrench_dual(&ys)?;
                 let x = SVector::<Q, 7>::from(mq.pose);
-                let wq = contact_wrench(prm, &d.law, &mq, setups, |pair, angle, _| {
-                    pair.at_stationary(&x, angle, &d.p)
-                });
-                let neg = |w: &[D; 7]| ([-w[0], -w[1], -w[2]], [-w[3], -w[4], -w[5]]);
-                let neg_q = |w: &[Q; 7]| ([-w[0], -w[1], -w[2]], [-w[3], -w[4], -w[5]]);
-                let (fd, md_) = neg(&wd);
-                let (fq, mq_) = neg_q(&wq);
-                (peg_d.margin(fd, md_), peg_q.margin(fq, mq_), 0.0)
-            })?,
+                let wq = self.peg.with_setups(&ys, |setups| {
+                    contact_wrench(prm, &d.law, &mq, setups, |pair, angle, _| {
+                        pair.at_stationary(&x, angle, &d.p)
+                    })
+                })?;
+                (
+                    peg_d.margin(reversed(&wd)),
+                    peg_q.margin(reversed(&wq)),
+                    0.0,
+                )
+            }
         };
         let (Some(by_y), Some(by_q)) = (by_y, by_q) else {
             return Ok(None);

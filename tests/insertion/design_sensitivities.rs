@@ -106,18 +106,9 @@ fn the_seat_time_s_derivative_matches_differences_of_runs_along_every_field() {
         }
         // A derivative the differences resolve: their two steps agree to
         // 10⁻⁶ (the others are below the runs' tolerance over the step).
-        if (d1 - d2).abs() > 1e-6 * fd.abs() {
-            eprintln!(
-                "{}: differences unresolved ({d1:e}, {d2:e}), sensitivity {der:e}",
-                r.parameter
-            );
+        let Some(e) = resolved_mismatch(r.parameter, der, (d1, d2, fd), 1e-6) else {
             continue;
-        }
-        let e = (der - fd).abs() / fd.abs();
-        eprintln!(
-            "{}: sensitivity {der:.10e}, difference {fd:.10e}, {e:.1e}",
-            r.parameter
-        );
+        };
         assert!(
             e <= 1e-5,
             "seat time along {}: sensitivity {der:e}, difference {fd:e}",
@@ -287,6 +278,25 @@ fn differences(runs: &[Metrics], name: &str, h: f64) -> (f64, f64, f64) {
     let d1 = (value(&runs[3]) - value(&runs[0])) / (2.0 * h);
     let d2 = (value(&runs[2]) - value(&runs[1])) / h;
     (d1, d2, (4.0 * d2 - d1) / 3.0)
+}
+
+/// The relative mismatch of the sensitivity `der` against the
+/// Richardson-extrapolated differences `(d1, d2, fd)` when their two steps
+/// agree to `agree` relative (both said on stderr under `what`); `None`
+/// when they do not resolve it.
+fn resolved_mismatch(
+    what: &str,
+    der: f64,
+    (d1, d2, fd): (f64, f64, f64),
+    agree: f64,
+) -> Option<f64> {
+    if (d1 - d2).abs() > agree * fd.abs() {
+        eprintln!("{what}: differences unresolved ({d1:e}, {d2:e}), sensitivity {der:e}");
+        return None;
+    }
+    let e = (der - fd).abs() / fd.abs();
+    eprintln!("{what}: sensitivity {der:.10e}, difference {fd:.10e}, {e:.1e}");
+    Some(e)
 }
 
 /// The slots in [`FIELDS`] of the fields `names`.
@@ -551,18 +561,10 @@ fn the_whole_shipped_run_matches_differences_along_every_field() {
             let d1 = (v[3] - v[0]) / (2.0 * h);
             let d2 = (v[2] - v[1]) / h;
             let fd = (4.0 * d2 - d1) / 3.0;
-            if (d1 - d2).abs() > 1e-6 * fd.abs() {
-                eprintln!(
-                    "{name} along {}: differences unresolved ({d1:e}, {d2:e}), sensitivity {der:e}",
-                    FIELDS[k]
-                );
+            let what = format!("{name} along {}", FIELDS[k]);
+            let Some(e) = resolved_mismatch(&what, der, (d1, d2, fd), 1e-6) else {
                 continue;
-            }
-            let e = (der - fd).abs() / fd.abs();
-            eprintln!(
-                "{name} along {}: sensitivity {der:.10e}, difference {fd:.10e}, {e:.1e}",
-                FIELDS[k]
-            );
+            };
             assert!(
                 e <= 1e-5,
                 "{name} along {}: sensitivity {der:e}, difference {fd:e}",
@@ -870,21 +872,13 @@ fn without_lateral_error_the_least_no_jam_margin_lies_inside_two_point_contact()
         let (m, der) = (r.value.expect("a value"), r.derivative.expect("unflagged"));
         assert!((m + 0.031_414_7).abs() < 1e-7, "least margin {m}");
         let runs = &moved_runs[4 * i..4 * i + 4];
-        let (d1, d2, fd) = differences(runs, "least_no_jam_margin", steps(k));
-        if (d1 - d2).abs() > 1e-4 * fd.abs() {
-            eprintln!(
-                "along {}: differences unresolved ({d1:e}, {d2:e})",
-                FIELDS[k]
-            );
+        let what = format!("least margin along {}", FIELDS[k]);
+        let d = differences(runs, "least_no_jam_margin", steps(k));
+        let fd = d.2;
+        let Some(e) = resolved_mismatch(&what, der, d, 1e-4) else {
             continue;
-        }
-        let e = (der - fd).abs() / fd.abs();
-        eprintln!(
-            "least margin along {}: sensitivity {der:.9e}, difference {fd:.9e}, {e:.1e} \
-             ({:.1e} of the ratio's scale)",
-            FIELDS[k],
-            e * mu * m.abs()
-        );
+        };
+        eprintln!("{what}: {:.1e} of the ratio's scale", e * mu * m.abs());
         assert!(
             e <= 1e-3 && e * mu * m.abs() <= 1e-5,
             "along {}: sensitivity {der:e}, difference {fd:e}",

@@ -771,6 +771,7 @@ pub(super) fn values(
         other => return Err(StopOrError::Stopped(other)),
     }
     let (scan, starts) = tracker.finish(sol.stop);
+    let least = least_at(&scan);
     let end = (sol.t_final, sol.x_final);
     let mut out = Vec::new();
     if scan.seated {
@@ -804,14 +805,14 @@ pub(super) fn values(
             Watch::TwoPoint(..) => {
                 out.push((4, t));
                 out.push((5, depth_tilt(&prm, &peg_state(y)).0));
-                if least_at(&scan) == Some(Ok(LeastAt::Onset)) {
+                if least == Some(Ok(LeastAt::Onset)) {
                     out.extend(applied_margin(sys, t, y).map(|m| (6, m)));
                 }
             }
             Watch::LeastMargin => out.extend(applied_margin(sys, t, y).map(|m| (6, m))),
         }
     }
-    if least_at(&scan) == Some(Ok(LeastAt::End)) {
+    if least == Some(Ok(LeastAt::End)) {
         out.extend(applied_margin(sys, end.0, &end.1).map(|m| (6, m)));
     }
     let last = scan.times.len().saturating_sub(1);
