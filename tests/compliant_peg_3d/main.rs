@@ -20,3 +20,4 @@ mod search_property;
 mod seated;
 mod side_wall;
 mod split_minimum;
+mod symmetric_minimum;

@@ -70,6 +70,13 @@ pub(super) fn newton(
             lo = a;
         }
         let newton = a - d1 / d2;
+        // A Newton step below the angle's resolution: `a` is the zero to
+        // rounding (also where the zero lies on the bracket's end, which
+        // a strict bracket test would otherwise bisect towards for ~50
+        // steps: a pose symmetric about `0` or `π`).
+        if d2 > 0.0 && (newton - a).abs() <= 2.0 * f64::EPSILON * a.abs().max(1.0) {
+            return a;
+        }
         let next = if d2 > 0.0 && newton > lo && newton < hi {
             newton
         } else {
