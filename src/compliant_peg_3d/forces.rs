@@ -144,21 +144,23 @@ fn stiffness_and_term(
 }
 
 /// The setups of `contacts` found at pose `x` (unit quaternion), `p` the
-/// generated functions' parameter vector: the point contacts in order,
-/// then the rings.
+/// generated functions' parameter vector, into `out` (cleared first, and
+/// written in place: the array is a few kilobytes): the point contacts in
+/// order, then the rings.
 ///
 /// # Errors
 /// The first contact (or col) whose Hertz setup fails (relative curvature
-/// not positive).
-pub fn setups(
+/// not positive); `out` then holds the setups before it.
+pub fn setups_into(
     prm: &Peg3dParams,
     p: &SVector<f64, 16>,
     x: &SVector<f64, 7>,
     contacts: &Contacts,
-) -> Result<Setups, HertzError> {
+    out: &mut Setups,
+) -> Result<(), HertzError> {
     let weight = point_weight(&(*x).into());
     // One setup per contact: `out` has the capacity of `contacts`.
-    let mut out = Setups::new();
+    out.clear();
     for c in contacts.iter().filter(|c| !c.ring) {
         let weighted = face::plane(c.pair, prm).is_some()
             && prune::ring_applies(c.pair, prm, x)
@@ -197,7 +199,7 @@ pub fn setups(
             weighted: false,
         });
     }
-    Ok(out)
+    Ok(())
 }
 
 /// Evaluates the contact law at every contact of `setups` (found at the

@@ -74,7 +74,10 @@ struct Found {
     pose_bits: Option<[u64; 7]>,
     params: Peg3dParams,
     contacts: Contacts,
-    setups: Option<Setups>,
+    /// The setups of `contacts`, valid when `has_setups` (kept in place:
+    /// the array is a few kilobytes).
+    setups: Setups,
+    has_setups: bool,
 }
 
 impl Found {
@@ -100,7 +103,8 @@ impl Peg3d {
                 pose_bits: None,
                 params,
                 contacts: Contacts::new(),
-                setups: None,
+                setups: Setups::new(),
+                has_setups: false,
             }),
         }
     }
@@ -146,7 +150,7 @@ impl Peg3d {
         if !found.at(y, &self.params) {
             found.pose_bits = Some(pose_bits(y));
             found.params = self.params;
-            found.setups = None;
+            found.has_setups = false;
             self.search(y, &mut found.contacts);
         }
         found
@@ -217,7 +221,7 @@ impl Peg3d {
     /// # Errors
     /// A contact whose Hertz setup fails (relative curvature not positive).
     pub fn forces(&self, y: &SVector<f64, 15>) -> Result<Vec<ContactForce>, HertzError> {
-        Ok(forces::forces(&self.params, y, &self.setups(y)?))
+        self.with_setups(y, |s| forces::forces(&self.params, y, s))
     }
 
     /// The contact wrench `(F, T about the centre of mass, Ṡ)` at state
@@ -254,16 +258,17 @@ impl Peg3d {
     ) -> Result<R, HertzError> {
         let mut found = self.found_at(y);
         let found = &mut *found;
-        let setups = match &mut found.setups {
-            Some(s) => s,
-            slot => slot.insert(forces::setups(
+        if !found.has_setups {
+            forces::setups_into(
                 &self.params,
                 &self.p,
                 &Self::pose(y),
                 &found.contacts,
-            )?),
-        };
-        Ok(f(setups))
+                &mut found.setups,
+            )?;
+            found.has_setups = true;
+        }
+        Ok(f(&found.setups))
     }
 
     /// The contact wrench at state `y` in dual numbers of the state

@@ -44,13 +44,13 @@
 use super::minimum::{Angles, Work, newton, push};
 use super::order;
 use super::profile::Profile;
+use super::start;
 use std::f64::consts::TAU;
 
 /// The room for arcs still to visit.
 const STACK: usize = 128;
 
-/// The number of arcs the circle starts as.
-pub const START: usize = 8;
+pub use super::start::START;
 
 /// The most halvings of a start arc (`2π/8 · 2⁻⁴⁰ ≈ 7·10⁻¹³` rad).
 pub const DEPTH: u32 = 40;
@@ -84,14 +84,8 @@ pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
     // An entry: the arc, its depth, and whether it may be decided by a
     // higher derivative (not the short arcs such a decision leaves).
     let mut stack = arrayvec::ArrayVec::<(f64, f64, u32, bool), STACK>::new();
-    let step = TAU / START as f64;
     for k in (0..START).rev() {
-        let lo = k as f64 * step;
-        let hi = if k + 1 == START {
-            TAU
-        } else {
-            (k + 1) as f64 * step
-        };
+        let (lo, hi) = start::arc(k);
         let _ = stack.try_push((lo, hi, 0, true));
     }
     while let Some((lo, hi, depth, higher)) = stack.pop() {
@@ -101,7 +95,7 @@ pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
         }
         work.arcs += 1;
         let m = 0.5 * (lo + hi);
-        let (s, c) = m.sin_cos();
+        let (s, c) = start::sin_cos(m);
         let w = half_width(lo, hi, m);
         let e = prof.enclose(c, s, w, level);
         if e.value.lo >= level || e.d1.excludes_zero() || e.d2.hi < 0.0 {

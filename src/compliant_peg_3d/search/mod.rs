@@ -29,6 +29,7 @@ pub mod interval;
 pub mod minimum;
 pub mod order;
 pub mod profile;
+pub mod start;
 pub mod tori;
 pub mod trig;
 

@@ -38,6 +38,7 @@
 //! smooth, so the local minima of `g` are those of `h`, at the same angles.
 
 use super::interval::Iv;
+use super::start;
 use super::tori;
 use super::trig::{Bounded, Enclosure, Trig2};
 use crate::compliant_peg_3d::contact::Pair;
@@ -205,7 +206,7 @@ impl Problem {
 impl Profile {
     /// `(h′, h″)` at angle `t` (rad).
     pub fn slope(&self, t: f64) -> (f64, f64) {
-        let (s, c) = t.sin_cos();
+        let (s, c) = start::sin_cos(t);
         match self {
             Profile::Trig(f) => {
                 let [_, d1, d2] = f.f.at(c, s);
@@ -219,7 +220,7 @@ impl Profile {
     /// where they cannot be bounded (the rim's circle through the hole's
     /// axis).
     pub fn point(&self, t: f64) -> Option<[Iv; 5]> {
-        let (s, c) = t.sin_cos();
+        let (s, c) = start::sin_cos(t);
         match self {
             Profile::Trig(f) => Some(f.point(c, s)),
             Profile::Tori { f, z, rm } => tori::jet(&f.point(c, s), &z.point(c, s), *rm),

@@ -21,6 +21,7 @@ use crate::compliant_peg_3d::outcome::{
 use crate::compliant_peg_3d::robot::Descent;
 use crate::compliant_peg_3d::wrist::WristLoad;
 use crate::error::{RunError, SceneError, SceneErrors};
+use crate::hertz::HertzError;
 use crate::integrate::{Solution, StopReason};
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::numbers::significant;
@@ -381,18 +382,30 @@ impl RunPeaks {
     /// screened against the peak so far; a state whose contacts cannot be
     /// set up adds nothing (the run reports that error itself).
     pub fn include(&mut self, sys: &Insertion, t: f64, y: &SVector<f64, N_STATE>) {
+        let _ = self.try_include(sys, t, y);
+    }
+
+    /// [`RunPeaks::include`], with the Hertz setup error of a state whose
+    /// contacts cannot be set up.
+    fn try_include(
+        &mut self,
+        sys: &Insertion,
+        t: f64,
+        y: &SVector<f64, N_STATE>,
+    ) -> Result<(), HertzError> {
         let ys = peg_state(y);
-        let Ok(forces) = sys.peg.forces(&ys) else {
-            return;
-        };
+        let forces = sys.peg.forces(&ys)?;
         let pressure = sys.peak_pressure_above(y, &forces, self.pressure);
         let wrist = sys.wrist_load(t, &ys).map(|(_, l)| l);
         self.take(&forces, pressure, wrist.as_ref());
+        Ok(())
     }
 
-    /// Takes the forces of sample `s` at state `y` into the peaks.
+    /// Takes the forces of sample `s` at state `y` into the peaks, the
+    /// pressure screened against the peak so far.
     pub fn include_sample(&mut self, sys: &Insertion, y: &SVector<f64, N_STATE>, s: &Sample) {
-        self.take(&s.forces, sys.peak_pressure(y, s).0, s.wrist.as_ref());
+        let pressure = sys.peak_pressure_above(y, &s.forces, self.pressure);
+        self.take(&s.forces, pressure, s.wrist.as_ref());
     }
 
     /// Takes contact `forces`, their largest Hertz `pressure` (Pa) and the
@@ -421,8 +434,7 @@ impl Run {
         let events = sol.events.iter().map(|e| (e.t, &e.x));
         let mut p = self.steps;
         for (t, y) in samples.chain(events) {
-            let s = self.system.sample(t, y)?;
-            p.include_sample(&self.system, y, &s);
+            p.try_include(&self.system, t, y)?;
         }
         Ok(p)
     }
