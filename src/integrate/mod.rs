@@ -52,7 +52,9 @@ pub use events::{Direction, Event, EventFn};
 pub use interrupt::Interrupt;
 pub use method::{Method, MethodKind};
 pub use non_finite::{NonFiniteAt, NonFiniteQuantity};
-pub use options::{IntegrateError, MAX_STEP_BUDGET, MIN_ATOL, MIN_RTOL, Options, OutputMode};
+pub use options::{
+    FALLBACK_FLOOR, IntegrateError, MAX_STEP_BUDGET, MIN_ATOL, MIN_RTOL, Options, OutputMode,
+};
 pub use solution::{EventHit, Solution, Stats, StopReason};
 
 use explicit_rk::ExplicitRk;

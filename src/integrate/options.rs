@@ -63,7 +63,25 @@ pub struct Options {
     /// exact derivative of the computed solution along it. A step whose
     /// error estimate is not finite in any component is still rejected.
     pub error_components: Option<usize>,
+    /// Where the norm over every component (or the first
+    /// [`Options::error_components`]) keeps failing, the first `n`
+    /// components judge the step once it is shorter than
+    /// [`FALLBACK_FLOOR`] round-off floors (`16 ε max(|t|, |t_end|)`),
+    /// instead of the run stopping at the floor itself (`None`: no
+    /// fallback). For a state extended with its forward sensitivities,
+    /// their error is then bounded everywhere but across a point where
+    /// their rate is unbounded though integrable (a contact splitting in
+    /// two, whose points move like the square root of the pose): there
+    /// the state's error is still bounded, and the sensitivities' error
+    /// of the step is that of a step of about `10⁻¹¹ |t|`. Such steps are
+    /// counted in [`super::Stats::fallback_steps`].
+    pub fallback_components: Option<usize>,
 }
+
+/// How many round-off floors (`16 ε max(|t|, |t_end|)`, the shortest step
+/// a run takes) long a step may be when [`Options::fallback_components`]
+/// judges it: `10⁴`, a step of about `3.6·10⁻¹¹ |t|`.
+pub const FALLBACK_FLOOR: f64 = 1e4;
 
 impl Default for Options {
     fn default() -> Self {
@@ -76,6 +94,7 @@ impl Default for Options {
             output: OutputMode::EveryStep,
             store: true,
             error_components: None,
+            fallback_components: None,
         }
     }
 }
@@ -143,6 +162,13 @@ impl Options {
                 name: "error_components",
                 value: 0.0,
                 reason: "must be at least 1 (None controls every component)",
+            });
+        }
+        if self.fallback_components == Some(0) {
+            return Err(IntegrateError::InvalidOption {
+                name: "fallback_components",
+                value: 0.0,
+                reason: "must be at least 1 (None: no fallback)",
             });
         }
         if self.max_steps == 0 {

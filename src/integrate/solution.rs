@@ -74,6 +74,9 @@ pub struct Stats {
     pub lu_factorizations: usize,
     /// Evaluations of event functions (including root finding).
     pub event_calls: usize,
+    /// Accepted steps judged by [`super::Options::fallback_components`]
+    /// alone (0 without a fallback).
+    pub fallback_steps: usize,
 }
 
 impl std::ops::AddAssign<&Stats> for Stats {
@@ -87,6 +90,7 @@ impl std::ops::AddAssign<&Stats> for Stats {
         self.time_derivative_calls += s.time_derivative_calls;
         self.lu_factorizations += s.lu_factorizations;
         self.event_calls += s.event_calls;
+        self.fallback_steps += s.fallback_steps;
     }
 }
 

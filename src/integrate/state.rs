@@ -9,7 +9,7 @@ use nalgebra::SVector;
 
 use super::dense::Interpolant;
 use super::events::{Event, locate};
-use super::options::{Options, OutputMode};
+use super::options::{FALLBACK_FLOOR, Options, OutputMode};
 use super::solution::{EventHit, Stats, StopReason};
 use super::step_control::{PiController, error_norm};
 
@@ -213,8 +213,7 @@ impl<'r, 'e, 'h, const N: usize> State<'r, 'e, 'h, N> {
             });
         }
         let c = &self.control;
-        let floor = 16.0 * f64::EPSILON * t.abs().max(t_end.abs()).max(f64::MIN_POSITIVE);
-        if c.h < floor {
+        if c.h < round_off_floor(t, t_end) {
             return Err(if c.last_nonfinite {
                 StopReason::NonFinite { t }
             } else {
@@ -262,7 +261,18 @@ impl<'r, 'e, 'h, const N: usize> State<'r, 'e, 'h, N> {
         if let (Some(controller), Some(err)) = (c.controller.as_mut(), err) {
             let o = &self.options;
             let n = o.error_components.unwrap_or(N);
-            let norm = error_norm(err, (&self.x, x1), o.rtol, o.atol, n);
+            let mut norm = error_norm(err, (&self.x, x1), o.rtol, o.atol, n);
+            if let Some(m) = o.fallback_components
+                && norm > 1.0
+                && norm.is_finite()
+                && h_try <= FALLBACK_FLOOR * round_off_floor(self.t, self.t_end)
+            {
+                let judged = error_norm(err, (&self.x, x1), o.rtol, o.atol, m);
+                if judged <= 1.0 {
+                    self.stats.fallback_steps += 1;
+                    norm = judged;
+                }
+            }
             if !norm.is_finite() {
                 self.stats.rejected += 1;
                 (c.last_rejected, c.last_nonfinite) = (true, true);
@@ -350,4 +360,10 @@ impl<'r, 'e, 'h, const N: usize> State<'r, 'e, 'h, N> {
         (self.t, self.x, self.f) = (t1, x1, f1);
         None
     }
+}
+
+/// The shortest step a run takes from `t` towards `t_end`:
+/// `16 ε max(|t|, |t_end|)`.
+fn round_off_floor(t: f64, t_end: f64) -> f64 {
+    16.0 * f64::EPSILON * t.abs().max(t_end.abs()).max(f64::MIN_POSITIVE)
 }

@@ -89,3 +89,68 @@ fn no_component_is_refused_naming_the_option() {
         other => panic!("{other:?}"),
     }
 }
+
+/// `y′ = 1` beside `z′ = 1/√|t − t_s|`, an integrable singularity at
+/// `t_s = 0.37` (a sensitivity's rate at a contact that splits in two).
+fn singular() -> FnSystem<impl Fn(f64, &Vector2<f64>) -> Vector2<f64>> {
+    FnSystem(|t: f64, _: &Vector2<f64>| Vector2::new(1.0, 1.0 / (t - 0.37).abs().sqrt()))
+}
+
+#[test]
+fn the_fallback_passes_an_integrable_singularity_of_the_extension() {
+    // Every component controlled, z's error estimate stays above the
+    // tolerance however short the step across t_s: the run stops at the
+    // round-off floor there. With the first component judging the steps
+    // shorter than FALLBACK_FLOOR round-off floors, it passes, says how
+    // many steps it so judged (4), and z(1) = 2√t_s + 2√(1 − t_s) is
+    // within 1.1e-6 relative (about √h of a step there, h ≈ 3.6e-11).
+    let options = Options::with_tolerances(1e-10, 1e-12);
+    let stopped = Solver::new(Method::Dopri5, options.clone())
+        .solve(&singular(), 0.0, Vector2::zeros(), 1.0)
+        .expect("solves");
+    match stopped.stop {
+        StopReason::StepSizeTooSmall { t, .. } => assert!((t - 0.37).abs() < 1e-9, "{t}"),
+        other => panic!("{other:?}"),
+    }
+    assert_eq!(stopped.stats.fallback_steps, 0);
+    let fallback = Options {
+        fallback_components: Some(1),
+        ..options
+    };
+    let sol = Solver::new(Method::Dopri5, fallback)
+        .solve(&singular(), 0.0, Vector2::zeros(), 1.0)
+        .expect("solves");
+    assert_eq!(sol.stop, StopReason::ReachedEnd);
+    let n = sol.stats.fallback_steps;
+    assert!(
+        (1..=100).contains(&n),
+        "{n} steps judged by the first component"
+    );
+    let exact = 2.0 * 0.37_f64.sqrt() + 2.0 * 0.63_f64.sqrt();
+    let err = (sol.x_final[1] - exact).abs();
+    eprintln!(
+        "z(1) error {err:e}, {n} fallback steps, {} steps",
+        sol.stats.steps
+    );
+    assert!(
+        err < 1e-5 * exact,
+        "z(1) = {} against {exact}",
+        sol.x_final[1]
+    );
+    assert!((sol.x_final[0] - 1.0).abs() < 1e-12);
+}
+
+#[test]
+fn no_fallback_component_is_refused_naming_the_option() {
+    let options = Options {
+        fallback_components: Some(0),
+        ..Options::default()
+    };
+    let err = Solver::new(Method::Dopri5, options)
+        .solve(&decay(), 0.0, Vector1::new(1.0), 1.0)
+        .expect_err("refused");
+    match err {
+        IntegrateError::InvalidOption { name, .. } => assert_eq!(name, "fallback_components"),
+        other => panic!("{other:?}"),
+    }
+}

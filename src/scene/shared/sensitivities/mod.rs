@@ -72,6 +72,7 @@ impl ErrorControl {
                 Options {
                     rtol: options.rtol * shrink,
                     atol: options.atol * shrink,
+                    fallback_components: Some(n),
                     ..options.clone()
                 }
             }

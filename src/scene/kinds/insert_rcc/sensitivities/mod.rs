@@ -40,6 +40,7 @@ use crate::scene::shared::sensitivities::{Row, output};
 use crate::scene::simulate::solver_config;
 use crate::scene::summary::Metric;
 use nalgebra::SMatrix;
+use trajectory::RunWork;
 
 pub use crate::scene::shared::sensitivities::SensitivitiesTable;
 
@@ -107,18 +108,28 @@ pub fn run(
 ) -> Result<Vec<Metric>, RunError> {
     let (rows, work) = compute(scene, b, integrator, chosen)?;
     let mut notes = output::write(ctx, &rows, &metrics::METRICS, "")?;
-    if let Some((steps, calls)) = work {
+    if let Some(w) = work {
         let runs = passes(chosen.len());
         let how = if runs == 1 {
             String::new()
         } else {
             format!(" in {runs} passes")
         };
+        let fallback = if w.fallback_steps == 0 {
+            String::new()
+        } else {
+            format!(
+                "; {} steps across a contact splitting in two judged by the state's error alone",
+                w.fallback_steps
+            )
+        };
         notes.push(Metric::note(
             "sensitivity run",
             format!(
-                "{steps} steps, {calls} evaluations of the variational system ({} fields{how}, {} \
-                 components)",
+                "{} steps, {} evaluations of the variational system ({} fields{how}, {} \
+                 components){fallback}",
+                w.steps,
+                w.calls,
                 chosen.len(),
                 trajectory::M
             ),
@@ -154,7 +165,7 @@ fn unused(scene: &RccScene, b: &Built, seeds: &Seeds) -> [bool; N_DESIGN] {
 /// What [`compute`] gives: the rows, and the sensitivity runs' accepted
 /// steps and right-hand-side evaluations (None when every row is flagged
 /// because a run failed).
-pub type Computed = (Vec<Row>, Option<(usize, usize)>);
+pub type Computed = (Vec<Row>, Option<RunWork>);
 
 /// The rows of the `chosen` fields (indices into [`FIELDS`]) of scene
 /// `scene` built into `b`, integrated with `integrator`'s method,
@@ -176,11 +187,14 @@ pub fn compute(
         return compute_pass(scene, b, integrator, chosen);
     }
     let mut rows = Vec::new();
-    let mut work = Some((0, 0));
+    let mut work = Some(RunWork::default());
     for fields in chosen.chunks(N_DESIGN) {
         let (pass, w) = compute_pass(scene, b, integrator, fields)?;
         rows.extend(pass);
-        work = work.zip(w).map(|(a, b)| (a.0 + b.0, a.1 + b.1));
+        work = work.zip(w).map(|(mut a, b)| {
+            a += b;
+            a
+        });
     }
     Ok((metric_major(rows, chosen), work))
 }

@@ -24,7 +24,7 @@ use crate::compliant_peg_3d::design::{Design, Directions, N_DESIGN};
 use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, depth_tilt, peg_state};
 use crate::compliant_peg_3d::no_jam::MarginLoad;
 use crate::compliant_peg_3d::outcome::{Criteria, counts, terminal_conditions, two_point_counts};
-use crate::integrate::{Direction, Event, Method, Options, OutputMode, Solver, StopReason};
+use crate::integrate::{Direction, Event, Method, Options, OutputMode, Solver, Stats, StopReason};
 use crate::scene::shared::sensitivities::StopOrError;
 use crate::sensitivity::{
     EventSensitivity, SensitivityError, SensitivityEvent, integrate, integrate_observed,
@@ -123,9 +123,41 @@ pub(super) struct Derivatives {
     /// The least no-jam margin: value, derivative and the gap to the
     /// parallelogram's next edge, or why it was not located.
     pub margin: Option<Result<LeastMargin, String>>,
-    /// Accepted steps and evaluations of the variational right-hand side
-    /// (the run and its windows).
-    pub work: (usize, usize),
+    /// The work of the run and its windows.
+    pub work: RunWork,
+}
+
+/// The work of a sensitivity run (the run and its windows, or several
+/// passes).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RunWork {
+    /// Accepted steps.
+    pub steps: usize,
+    /// Evaluations of the variational right-hand side.
+    pub calls: usize,
+    /// Accepted steps judged by the state's error alone: with
+    /// `error_control = "all"`, the steps across a contact that splits in
+    /// two ([`crate::integrate::Options::fallback_components`]).
+    pub fallback_steps: usize,
+}
+
+impl RunWork {
+    /// The work counted in an integration's `stats`.
+    pub fn of(stats: &Stats) -> RunWork {
+        RunWork {
+            steps: stats.steps,
+            calls: stats.rhs_calls,
+            fallback_steps: stats.fallback_steps,
+        }
+    }
+}
+
+impl std::ops::AddAssign for RunWork {
+    fn add_assign(&mut self, w: RunWork) {
+        self.steps += w.steps;
+        self.calls += w.calls;
+        self.fallback_steps += w.fallback_steps;
+    }
 }
 
 /// The least no-jam margin located: its value, derivative and the gap to
@@ -142,15 +174,32 @@ pub(super) struct LeastMargin {
 
 /// The least value of `v` over the steps where it is a number, the least
 /// other local minimum, and whether its step starts a stretch of numbers.
+/// Values of the least one's stretch within [`FLAT`] of it are one flat
+/// minimum (a margin that stays flat after the stretch starts, to the
+/// run's error, wiggling at rounding): it is taken at the first of them,
+/// whatever steps the run took in between, and none of them is another
+/// minimum.
 fn least(v: &[f64]) -> Option<Least> {
-    let (step, value) = v
+    let (min_step, value) = v
         .iter()
         .copied()
         .enumerate()
         .filter(|(_, m)| !m.is_nan())
         .min_by(|a, b| a.1.total_cmp(&b.1))?;
+    let flat = |k: usize| v[k] - value <= FLAT * value.abs().max(1.0);
+    let start = (0..=min_step)
+        .rev()
+        .take_while(|&k| !v[k].is_nan())
+        .last()
+        .unwrap_or(min_step);
+    let end = (min_step..v.len())
+        .take_while(|&k| !v[k].is_nan())
+        .last()
+        .unwrap_or(min_step);
+    let step = (start..=min_step).find(|&k| flat(k)).unwrap_or(min_step);
+    let same = |k: usize| (start..=end).contains(&k) && flat(k);
     let runner_up = (1..v.len().saturating_sub(1))
-        .filter(|&k| k != step && v[k] < v[k - 1] && v[k] <= v[k + 1])
+        .filter(|&k| !same(k) && v[k] < v[k - 1] && v[k] <= v[k + 1])
         .map(|k| v[k])
         .fold(f64::INFINITY, f64::min);
     Some(Least {
@@ -571,7 +620,7 @@ pub(super) fn derivatives(
         contact: None,
         wrist: None,
         margin: None,
-        work: (run.stats.steps, run.stats.rhs_calls),
+        work: RunWork::of(&run.stats),
     };
     for (watch, from, h, to) in windows(&scan, starts) {
         let leg = window_options(options, h);
@@ -583,8 +632,7 @@ pub(super) fn derivatives(
             &leg,
             vec![watch_event(dir, watch)],
         )?;
-        out.work.0 += w.stats.steps;
-        out.work.1 += w.stats.rhs_calls;
+        out.work += RunWork::of(&w.stats);
         let Some(e) = w.events.into_iter().next() else {
             continue;
         };
