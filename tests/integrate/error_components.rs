@@ -75,21 +75,6 @@ fn a_component_outside_the_norm_that_is_not_finite_still_stops_the_run() {
     assert!(sol.x_final.iter().all(|v| v.is_finite()));
 }
 
-#[test]
-fn no_component_is_refused_naming_the_option() {
-    let options = Options {
-        error_components: Some(0),
-        ..Options::default()
-    };
-    let err = Solver::new(Method::Dopri5, options)
-        .solve(&decay(), 0.0, Vector1::new(1.0), 1.0)
-        .expect_err("refused");
-    match err {
-        IntegrateError::InvalidOption { name, .. } => assert_eq!(name, "error_components"),
-        other => panic!("{other:?}"),
-    }
-}
-
 /// `y′ = 1` beside `z′ = 1/√|t − t_s|`, an integrable singularity at
 /// `t_s = 0.37` (a sensitivity's rate at a contact that splits in two).
 fn singular() -> FnSystem<impl Fn(f64, &Vector2<f64>) -> Vector2<f64>> {
@@ -141,16 +126,25 @@ fn the_fallback_passes_an_integrable_singularity_of_the_extension() {
 }
 
 #[test]
-fn no_fallback_component_is_refused_naming_the_option() {
-    let options = Options {
+fn no_component_is_refused_naming_the_option() {
+    let none_controlled = Options {
+        error_components: Some(0),
+        ..Options::default()
+    };
+    let none_fall_back = Options {
         fallback_components: Some(0),
         ..Options::default()
     };
-    let err = Solver::new(Method::Dopri5, options)
-        .solve(&decay(), 0.0, Vector1::new(1.0), 1.0)
-        .expect_err("refused");
-    match err {
-        IntegrateError::InvalidOption { name, .. } => assert_eq!(name, "fallback_components"),
-        other => panic!("{other:?}"),
+    for (options, option) in [
+        (none_controlled, "error_components"),
+        (none_fall_back, "fallback_components"),
+    ] {
+        let err = Solver::new(Method::Dopri5, options)
+            .solve(&decay(), 0.0, Vector1::new(1.0), 1.0)
+            .expect_err("refused");
+        match err {
+            IntegrateError::InvalidOption { name, .. } => assert_eq!(name, option),
+            other => panic!("{other:?}"),
+        }
     }
 }
