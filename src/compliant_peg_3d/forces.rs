@@ -1,5 +1,5 @@
 //! The contacts of a state with their forces: each contact's Hertz setup
-//! once per state ([`setups`]), then the contact law ([`super::law`])
+//! once per state ([`setups_into`]), then the contact law ([`super::law`])
 //! evaluated over all of them at any scalar ([`evaluate`]): at `f64` for
 //! the forces of the right-hand side ([`forces`], [`wrench`]), at dual
 //! numbers for the exact Jacobian ([`super::jacobian`]), both from the

@@ -205,7 +205,7 @@ impl Peg3d {
     }
 
     /// Every contact of state `y` ([`Peg3d::contacts`]) with its Hertz
-    /// setup ([`forces::setups`]): the point contacts, then the rings;
+    /// setup ([`forces::setups_into`]): the point contacts, then the rings;
     /// those of the last call when it was at the same pose with the same
     /// parameters.
     ///
