@@ -58,7 +58,7 @@ pub fn bench(c: &mut Criterion) {
          system",
         rows.len(),
         work.steps,
-        work.calls
+        work.rhs_calls
     );
     let mut group = c.benchmark_group("insert_rcc_sensitivities");
     group

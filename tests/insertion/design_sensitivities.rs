@@ -788,18 +788,11 @@ fn a_rotation_grid_gives_every_points_sensitivities_as_its_insert_rcc_run_does()
     );
 }
 
-/// The fields of the least no-jam margin's test: the run through the
-/// chamfer's, with the robot's speed for its angular error.
-const MARGIN_FIELDS: [&str; 8] = [
-    "wrist.lateral_stiffness",
-    "wrist.angular_stiffness",
-    "wrist.centre_height",
-    "peg.mouth_fillet",
-    "peg.rim_fillet",
-    "peg.friction",
-    "robot.speed",
-    "robot.lateral_error",
-];
+/// The fields of the run through the chamfer ([`CHAMFER_FIELDS`]) with
+/// the robot's speed for `instead`.
+fn with_speed_for(instead: &str) -> [&'static str; 8] {
+    CHAMFER_FIELDS.map(|f| if f == instead { "robot.speed" } else { f })
+}
 
 #[test]
 fn the_least_no_jam_margin_has_the_one_point_slides_derivatives() {
@@ -822,7 +815,7 @@ fn the_least_no_jam_margin_has_the_one_point_slides_derivatives() {
         ("atol", "1e-15"),
         ("t_end", "0.8"),
     ]);
-    let chosen = slots_of(&MARGIN_FIELDS);
+    let chosen = slots_of(&with_speed_for("robot.angular_error_deg"));
     let base = rows(&s, &chosen);
     let (mu, v_s, v) = (s.peg.friction, s.peg.slip_velocity, s.robot.speed);
     let root = (1.0 + (v_s / v).powi(2)).sqrt();
@@ -885,16 +878,9 @@ fn without_lateral_error_the_least_no_jam_margin_lies_inside_two_point_contact()
         parameters: Vec::new(),
         error_control: ErrorControl::All,
     });
-    // The angular error for the lateral one, which at zero the
-    // differences of plain runs do not resolve.
-    let fields = MARGIN_FIELDS.map(|f| {
-        if f == "robot.lateral_error" {
-            "robot.angular_error_deg"
-        } else {
-            f
-        }
-    });
-    let chosen = slots_of(&fields);
+    // Not the lateral error, which at zero the differences of plain runs
+    // do not resolve.
+    let chosen = slots_of(&with_speed_for("robot.lateral_error"));
     let steps = thousandth(&s);
     // The moved runs are plain runs: the table's control is the
     // sensitivity run's alone.

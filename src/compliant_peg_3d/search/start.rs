@@ -2,7 +2,7 @@
 //! the angles it evaluates most: the start arcs' ends and midpoints.
 //!
 //! Most searches decide every start arc from its enclosures and the slopes
-//! at its ends, so these 17 angles take most of a search's sines and
+//! at its ends, so these 16 angles take most of a search's sines and
 //! cosines. [`sin_cos`] returns them from a table filled by `f64::sin_cos`
 //! itself, so an angle gets the same values whether it is looked up or
 //! computed: the search's ends shared by neighbouring arcs stay evaluated
@@ -27,16 +27,13 @@ pub fn arc(k: usize) -> (f64, f64) {
     (lo, hi)
 }
 
-/// The start arcs' ends (even `j`) and midpoints (odd `j`), `j ≤ 2 START`,
-/// each as the search computes it, with its `(sin, cos)`.
-static TABLE: LazyLock<[(f64, (f64, f64)); 2 * START + 1]> = LazyLock::new(|| {
+/// The start arcs' first ends (even `j`) and midpoints (odd `j`),
+/// `j < 2 START`, each as the search computes it, with its `(sin, cos)`
+/// (the circle's end `2π` is evaluated as its start, `0`).
+static TABLE: LazyLock<[(f64, (f64, f64)); 2 * START]> = LazyLock::new(|| {
     std::array::from_fn(|j| {
-        let (lo, hi) = arc((j / 2).min(START - 1));
-        let t = match j {
-            _ if j == 2 * START => TAU,
-            _ if j % 2 == 0 => lo,
-            _ => 0.5 * (lo + hi),
-        };
+        let (lo, hi) = arc(j / 2);
+        let t = if j % 2 == 0 { lo } else { 0.5 * (lo + hi) };
         (t, t.sin_cos())
     })
 });
@@ -45,7 +42,7 @@ static TABLE: LazyLock<[(f64, (f64, f64)); 2 * START + 1]> = LazyLock::new(|| {
 /// (the same values as `t.sin_cos()`), computed elsewhere.
 pub fn sin_cos(t: f64) -> (f64, f64) {
     let j = (t * (2 * START) as f64 / TAU).round();
-    if (0.0..=(2 * START) as f64).contains(&j) {
+    if (0.0..(2 * START) as f64).contains(&j) {
         let (at, v) = TABLE[j as usize];
         if at.to_bits() == t.to_bits() {
             return v;

@@ -395,22 +395,27 @@ impl RunPeaks {
     ) -> Result<(), HertzError> {
         let ys = peg_state(y);
         let forces = sys.peg.forces(&ys)?;
-        let pressure = sys.peak_pressure_above(y, &forces, self.pressure);
         let wrist = sys.wrist_load(t, &ys).map(|(_, l)| l);
-        self.take(&forces, pressure, wrist.as_ref());
+        self.take(sys, y, &forces, wrist.as_ref());
         Ok(())
     }
 
-    /// Takes the forces of sample `s` at state `y` into the peaks, the
-    /// pressure screened against the peak so far.
+    /// Takes the forces of sample `s` at state `y` into the peaks.
     pub fn include_sample(&mut self, sys: &Insertion, y: &SVector<f64, N_STATE>, s: &Sample) {
-        let pressure = sys.peak_pressure_above(y, &s.forces, self.pressure);
-        self.take(&s.forces, pressure, s.wrist.as_ref());
+        self.take(sys, y, &s.forces, s.wrist.as_ref());
     }
 
-    /// Takes contact `forces`, their largest Hertz `pressure` (Pa) and the
-    /// wrist's load into the peaks.
-    fn take(&mut self, forces: &[ContactForce], pressure: f64, wrist: Option<&WristLoad>) {
+    /// Takes contact `forces` at state `y`, their largest Hertz pressure
+    /// (Pa, screened against the peak so far) and the wrist's load into
+    /// the peaks.
+    fn take(
+        &mut self,
+        sys: &Insertion,
+        y: &SVector<f64, N_STATE>,
+        forces: &[ContactForce],
+        wrist: Option<&WristLoad>,
+    ) {
+        let pressure = sys.peak_pressure_above(y, forces, self.pressure);
         let normal = forces.iter().map(|f| f.normal_force).fold(0.0, f64::max);
         self.contact = self.contact.max(normal);
         self.pressure = self.pressure.max(pressure);

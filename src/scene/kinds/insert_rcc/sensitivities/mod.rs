@@ -25,7 +25,7 @@ mod trajectory;
 use crate::compliant_peg_3d::design::{Directions, N_DESIGN};
 use crate::compliant_peg_3d::insertion::{Insertion, N_STATE};
 use crate::error::{RunError, SceneError, SceneErrors};
-use crate::integrate::{Method, Options};
+use crate::integrate::{Method, Options, Stats};
 use crate::scene::context::RunContext;
 use crate::scene::integrator::IntegratorSpec;
 use crate::scene::limits::WorkItem;
@@ -40,7 +40,6 @@ use crate::scene::shared::sensitivities::{Row, output};
 use crate::scene::simulate::solver_config;
 use crate::scene::summary::Metric;
 use nalgebra::SMatrix;
-use trajectory::RunWork;
 
 pub use crate::scene::shared::sensitivities::SensitivitiesTable;
 
@@ -129,7 +128,7 @@ pub fn run(
                 "{} steps, {} evaluations of the variational system ({} fields{how}, {} \
                  components){fallback}",
                 w.steps,
-                w.calls,
+                w.rhs_calls,
                 chosen.len(),
                 trajectory::M
             ),
@@ -162,10 +161,10 @@ fn unused(scene: &RccScene, b: &Built, seeds: &Seeds) -> [bool; N_DESIGN] {
     moved.map(|m| !m)
 }
 
-/// What [`compute`] gives: the rows, and the sensitivity runs' accepted
-/// steps and right-hand-side evaluations (None when every row is flagged
-/// because a run failed).
-pub type Computed = (Vec<Row>, Option<RunWork>);
+/// What [`compute`] gives: the rows, and the sensitivity runs' work
+/// counters summed (None when every row is flagged because a run
+/// failed).
+pub type Computed = (Vec<Row>, Option<Stats>);
 
 /// The rows of the `chosen` fields (indices into [`FIELDS`]) of scene
 /// `scene` built into `b`, integrated with `integrator`'s method,
@@ -187,12 +186,12 @@ pub fn compute(
         return compute_pass(scene, b, integrator, chosen);
     }
     let mut rows = Vec::new();
-    let mut work = Some(RunWork::default());
+    let mut work = Some(Stats::default());
     for fields in chosen.chunks(N_DESIGN) {
         let (pass, w) = compute_pass(scene, b, integrator, fields)?;
         rows.extend(pass);
         work = work.zip(w).map(|(mut a, b)| {
-            a += b;
+            a += &b;
             a
         });
     }

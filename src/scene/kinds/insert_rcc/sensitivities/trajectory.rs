@@ -123,41 +123,8 @@ pub(super) struct Derivatives {
     /// The least no-jam margin: value, derivative and the gap to the
     /// parallelogram's next edge, or why it was not located.
     pub margin: Option<Result<LeastMargin, String>>,
-    /// The work of the run and its windows.
-    pub work: RunWork,
-}
-
-/// The work of a sensitivity run (the run and its windows, or several
-/// passes).
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct RunWork {
-    /// Accepted steps.
-    pub steps: usize,
-    /// Evaluations of the variational right-hand side.
-    pub calls: usize,
-    /// Accepted steps judged by the state's error alone: with
-    /// `error_control = "all"`, the steps across a contact that splits in
-    /// two ([`crate::integrate::Options::fallback_components`]).
-    pub fallback_steps: usize,
-}
-
-impl RunWork {
-    /// The work counted in an integration's `stats`.
-    pub fn of(stats: &Stats) -> RunWork {
-        RunWork {
-            steps: stats.steps,
-            calls: stats.rhs_calls,
-            fallback_steps: stats.fallback_steps,
-        }
-    }
-}
-
-impl std::ops::AddAssign for RunWork {
-    fn add_assign(&mut self, w: RunWork) {
-        self.steps += w.steps;
-        self.calls += w.calls;
-        self.fallback_steps += w.fallback_steps;
-    }
+    /// The work of the run and its windows (their counters summed).
+    pub work: Stats,
 }
 
 /// The least no-jam margin located: its value, derivative and the gap to
@@ -620,7 +587,7 @@ pub(super) fn derivatives(
         contact: None,
         wrist: None,
         margin: None,
-        work: RunWork::of(&run.stats),
+        work: run.stats,
     };
     for (watch, from, h, to) in windows(&scan, starts) {
         let leg = window_options(options, h);
@@ -632,7 +599,7 @@ pub(super) fn derivatives(
             &leg,
             vec![watch_event(dir, watch)],
         )?;
-        out.work += RunWork::of(&w.stats);
+        out.work += &w.stats;
         let Some(e) = w.events.into_iter().next() else {
             continue;
         };
