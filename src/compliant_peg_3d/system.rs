@@ -65,9 +65,9 @@ pub struct Peg3d {
 /// that a Rosenbrock step asks for right after `f(y)`, and the event
 /// functions, output samples and force checks at the step's end, where
 /// the last right-hand side was evaluated. A second search there would
-/// return the same contacts (the search is a function of the pose; a pair
-/// certified apart at that pose stays apart there), so the memo changes
-/// no result. At any other state, or after the parameters changed, it
+/// return the same contacts to rounding (every search finds every contact
+/// of the pose, [`Search::find`]; a pair certified apart at that pose stays
+/// apart there), so the memo changes no result beyond rounding. At any other state, or after the parameters changed, it
 /// searches.
 struct Found {
     /// `None` before the first search.

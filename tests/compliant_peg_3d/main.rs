@@ -21,3 +21,4 @@ mod seated;
 mod side_wall;
 mod split_minimum;
 mod symmetric_minimum;
+mod tracked_search;

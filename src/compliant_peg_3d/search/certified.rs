@@ -71,24 +71,115 @@ fn half_width(lo: f64, hi: f64, m: f64) -> f64 {
     (hi - m).max(m - lo) * (1.0 + 4.0 * f64::EPSILON) + 1e-15
 }
 
+/// An arc `[lo, hi]` of the circle (rad) as the search holds it: its
+/// depth (halvings from a start arc) and whether it may still be decided
+/// by a higher derivative.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Arc {
+    /// The arc's start (rad).
+    pub lo: f64,
+    /// The arc's end (rad).
+    pub hi: f64,
+    /// Halvings from its start arc.
+    pub depth: u32,
+    /// Whether [`order`] may still decide it.
+    pub higher: bool,
+}
+
+/// The most arcs a [`Kept`] record holds.
+pub const KEPT: usize = 32;
+
+/// The arcs of a search that its level did not drop, each as it was
+/// decided (an arc cut by [`order`] whole, not its pieces): with the
+/// arcs dropped because `h ≥ T` on them they cover the circle. `complete`
+/// is false when they did not fit, or when the search could not decide
+/// every arc (budget, room, a constant profile): such a record cannot
+/// stand for the search.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Kept {
+    /// The arcs, in the order they were decided.
+    pub arcs: arrayvec::ArrayVec<Arc, KEPT>,
+    /// Whether `arcs` and the level-dropped arcs cover the circle.
+    pub complete: bool,
+}
+
 /// Every local minimum of `prof` with `h < level` (and possibly other
 /// local minima), angles in `[0, 2π)`, into `out`.
 pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
+    search(prof, level, &starts(), out, None)
+}
+
+/// The start arcs.
+fn starts() -> [Arc; START] {
+    std::array::from_fn(|k| {
+        let (lo, hi) = start::arc(k);
+        Arc {
+            lo,
+            hi,
+            depth: 0,
+            higher: true,
+        }
+    })
+}
+
+/// [`minima`], with the arcs its level did not drop into `kept`.
+pub fn minima_kept(prof: &Profile, level: f64, out: &mut Angles, kept: &mut Kept) -> Work {
+    search(prof, level, &starts(), out, Some(kept))
+}
+
+/// Every local minimum of `prof` with `h < level` on the arcs `from`
+/// (and possibly other local minima), into `out`: the branch and bound
+/// started from those arcs instead of the start arcs. With the arcs of a
+/// [`Kept`] record taken at another pose, these are the minima below the
+/// level everywhere except on the arcs that record's level dropped.
+pub fn minima_on(prof: &Profile, level: f64, from: &[Arc], out: &mut Angles) -> Work {
+    search(prof, level, from, out, None)
+}
+
+/// The branch and bound from the arcs `from`, recording into `kept` the
+/// arcs its level did not drop.
+fn search(
+    prof: &Profile,
+    level: f64,
+    from: &[Arc],
+    out: &mut Angles,
+    mut kept: Option<&mut Kept>,
+) -> Work {
     let mut work = Work::default();
+    if let Some(k) = kept.as_deref_mut() {
+        k.arcs.clear();
+        k.complete = false;
+    }
     if let Profile::Trig(f) = prof
         && f.f.is_constant()
     {
         work.flat = true;
         return work;
     }
-    // An entry: the arc, its depth, and whether it may be decided by a
-    // higher derivative (not the short arcs such a decision leaves).
-    let mut stack = arrayvec::ArrayVec::<(f64, f64, u32, bool), STACK>::new();
-    for k in (0..START).rev() {
-        let (lo, hi) = start::arc(k);
-        let _ = stack.try_push((lo, hi, 0, true));
+    let mut overflow = false;
+    let mut keep = |arc: Arc, inside: bool| {
+        if let Some(k) = kept.as_deref_mut()
+            && !inside
+            && k.arcs.try_push(arc).is_err()
+        {
+            overflow = true;
+        }
+    };
+    // An entry: the arc, and whether it lies inside an arc already
+    // recorded whole (a piece of an arc cut by a higher derivative).
+    let mut stack = arrayvec::ArrayVec::<(Arc, bool), STACK>::new();
+    for arc in from.iter().rev() {
+        if stack.try_push((*arc, false)).is_err() {
+            work.unresolved += 1;
+        }
     }
-    while let Some((lo, hi, depth, higher)) = stack.pop() {
+    while let Some((arc, inside)) = stack.pop() {
+        let Arc {
+            lo,
+            hi,
+            depth,
+            higher,
+        } = arc;
         if work.arcs >= BUDGET {
             work.unresolved += 1 + stack.len();
             break;
@@ -98,11 +189,16 @@ pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
         let (s, c) = start::sin_cos(m);
         let w = half_width(lo, hi, m);
         let e = prof.enclose(c, s, w, level);
-        if e.value.lo >= level || e.d1.excludes_zero() || e.d2.hi < 0.0 {
+        if e.value.lo >= level {
+            continue;
+        }
+        if e.d1.excludes_zero() || e.d2.hi < 0.0 {
+            keep(arc, inside);
             continue;
         }
         let leaf = depth >= DEPTH || m <= lo || m >= hi || !e.refinable;
         if e.d2.lo > 0.0 || leaf {
+            keep(arc, inside);
             let (s_lo, _) = prof.slope(lo);
             // The circle's end is its start: one evaluation for both.
             let (s_hi, _) = prof.slope(if hi >= TAU { 0.0 } else { hi });
@@ -120,8 +216,15 @@ pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
             let mut rest = order::Rest::new();
             if order::decide(prof, lo, hi, c, s, w, out, &mut work, &mut rest) {
                 work.ordered += 1;
+                keep(arc, inside);
                 for (a, b) in rest {
-                    if stack.try_push((a, b, depth + 1, false)).is_err() {
+                    let piece = Arc {
+                        lo: a,
+                        hi: b,
+                        depth: depth + 1,
+                        higher: false,
+                    };
+                    if stack.try_push((piece, true)).is_err() {
                         work.unresolved += 1;
                     }
                 }
@@ -130,11 +233,20 @@ pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
         }
         // Halving adds one arc per level; each decided arc at most
         // `order::Rest`'s capacity.
-        if stack.try_push((m, hi, depth + 1, higher)).is_err()
-            || stack.try_push((lo, m, depth + 1, higher)).is_err()
+        let half = |lo, hi| Arc {
+            lo,
+            hi,
+            depth: depth + 1,
+            higher,
+        };
+        if stack.try_push((half(m, hi), inside)).is_err()
+            || stack.try_push((half(lo, m), inside)).is_err()
         {
             work.unresolved += 1;
         }
+    }
+    if let Some(k) = kept {
+        k.complete = !overflow && work.unresolved == 0;
     }
     work
 }

@@ -36,6 +36,9 @@ pub struct Work {
     pub leaves: usize,
     /// Arcs decided by the sign of `h‴` or `h⁗` ([`super::order`]).
     pub ordered: usize,
+    /// Searched only on the arcs an earlier full search at a nearby pose
+    /// kept (the rest of the circle was certified clear from there).
+    pub tracked: bool,
 }
 
 /// The zero of `h′` in `[lo, hi]`, `h′` increasing there, from the slopes

@@ -17,8 +17,18 @@
 //! to the distance between the stationary points) is cut instead into
 //! pieces where `h″` has a proven sign ([`order`]). A minimum is never
 //! missed by sampling between
-//! points; the search needs no warm start, so it is the same at a start,
+//! points; the search needs no warm start, so it is as certain at a start,
 //! after an impact, along a sweep and along a smooth run.
+//!
+//! Along a run, [`Search::find`] keeps two records of a pair's last full
+//! search, each with the bound `moved` on how far any point's gap can
+//! have changed since: a pair found apart by `m` is not searched again
+//! while the pose moves less than `m`; otherwise, while the pose stays
+//! within [`TRACK`] of the last full search, only the arcs that search
+//! could not show to be at least [`CLEARANCE`] clear are searched again
+//! (the others keep a gap of at least `CLEARANCE − TRACK`). Either way
+//! every contact is found as by a fresh search; the minima agree with a
+//! fresh search's to rounding (`tests/compliant_peg_3d/tracked_search.rs`).
 //!
 //! Only penetrating minima (`g < 0`) on the part of each surface that
 //! exists (see [`Pair::valid`]) become contacts; minima closer than
@@ -107,13 +117,29 @@ fn moved(pair: Pair, p: &SVector<f64, 16>, a: &SVector<f64, 7>, b: &SVector<f64,
     (dp + 2.0 * dq * reach) * (1.0 + 1e-12)
 }
 
-/// The contact search of one pair: the work its last call did, and the
-/// clearance it certified.
+/// A pair's full search at a pose, kept for the poses near it: the arcs
+/// its level dropped had `g ≥ CLEARANCE` there, so at a pose that moved
+/// by `δ` ([`moved`]) their gap is at least `CLEARANCE − δ`, and only the
+/// other arcs ([`certified::Kept`]) can hold a contact.
+#[derive(Clone, Debug, PartialEq)]
+struct Tracked {
+    pose: SVector<f64, 7>,
+    kept: certified::Kept,
+}
+
+/// How far (m) a pose may move from a pair's last full search before the
+/// pair is searched in full again: the dropped arcs keep a gap of at
+/// least `CLEARANCE − TRACK` (half the clearance).
+pub const TRACK: f64 = 0.5 * CLEARANCE;
+
+/// The contact search of one pair: the work its last call did, the
+/// clearance it certified and the last full search it may search from.
 #[derive(Clone, Debug, Default)]
 pub struct Search {
     /// What the last search did (arcs visited, points evaluated).
     pub work: Work,
     clear: Option<Clear>,
+    tracked: Option<Tracked>,
 }
 
 impl Search {
@@ -144,6 +170,39 @@ impl Search {
         out
     }
 
+    /// The local minima of `pair`'s gap below [`CLEARANCE`] at pose `x`
+    /// (and possibly others), and a lower bound on the gap away from them:
+    /// `CLEARANCE`, or, when searched from a `Tracked` search whose pose
+    /// is less than [`TRACK`] away (by [`moved`]), only on the arcs that
+    /// search kept, `CLEARANCE` less the distance moved. Otherwise a full
+    /// search, kept for the poses after it.
+    fn minima_tracked(
+        &mut self,
+        pair: Pair,
+        x: &SVector<f64, 7>,
+        p: &SVector<f64, 16>,
+    ) -> (Angles, f64) {
+        let mut out = Angles::new();
+        self.work = Work::default();
+        let problem = Problem::of(pair, x, p, CLEARANCE);
+        let Problem::Search { h, level } = problem else {
+            self.tracked = None;
+            return (self.minima(pair, x, p, CLEARANCE), CLEARANCE);
+        };
+        if let Some(t) = &self.tracked {
+            let delta = moved(pair, p, &t.pose, x);
+            if delta < TRACK {
+                self.work = certified::minima_on(&h, level, &t.kept.arcs, &mut out);
+                self.work.tracked = true;
+                return (out, CLEARANCE - delta);
+            }
+        }
+        let mut kept = certified::Kept::default();
+        self.work = certified::minima_kept(&h, level, &mut out, &mut kept);
+        self.tracked = kept.complete.then_some(Tracked { pose: *x, kept });
+        (out, CLEARANCE)
+    }
+
     /// The penetrating, valid local minima of `pair`'s gap at pose `x`
     /// (unit quaternion), appended to `out` with the cols of
     /// [`merge::assign`].
@@ -171,10 +230,9 @@ impl Search {
             };
             return;
         }
-        let minima = self.minima(pair, x, p, CLEARANCE);
+        let (minima, mut lowest) = self.minima_tracked(pair, x, p);
         let axis = axis_of(x);
         let first = out.len();
-        let mut lowest = CLEARANCE;
         for &a in &minima {
             let (a, e) = polish(pair, x, p, a);
             lowest = lowest.min(e.gap);

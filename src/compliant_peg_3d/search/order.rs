@@ -30,7 +30,7 @@
 //! bound. An arc this cannot split (no derivative of one sign, a root
 //! that cannot be bracketed) is halved as before.
 
-use super::interval::Iv;
+use super::interval::{Iv, up};
 use super::minimum::{Angles, Work, newton, push};
 use super::profile::Profile;
 use std::f64::consts::TAU;
@@ -58,6 +58,22 @@ fn sign(v: Iv, inc: bool) -> i8 {
     } else {
         0
     }
+}
+
+/// Whether `h′` keeps one sign on `[l, r]`, where `h″` is monotone (the
+/// bracket of a root of `h″` on an arc where `h‴` has one sign): with
+/// `|h″| ≤ max(|h″(l)|, |h″(r)|)` there, `h′(t) ≥ h′(l) − (t − l)
+/// max|h″|` (and alike from `r`), so `h′` of one proven sign at both ends,
+/// each at least `(r − l) max|h″|` in size, has no zero between: the
+/// bracket holds no stationary point and needs no narrower one.
+fn no_stationary(l: &Pt, r: &Pt) -> bool {
+    let side = sign(l.j[1], true);
+    let least = |v: Iv| v.lo.abs().min(v.hi.abs());
+    let curvature = l.j[2].mag().max(r.j[2].mag());
+    side != 0
+        && side == sign(r.j[1], true)
+        && least(l.j[1]).min(least(r.j[1]))
+            > up((r.t - l.t) * curvature * (1.0 + 4.0 * f64::EPSILON))
 }
 
 /// One arc's decision: the profile, the minima found, the work and the
@@ -119,7 +135,7 @@ impl Decider<'_> {
         }
         let (l, r) = self.narrow(j, a, b, inc)?;
         self.piece(j, a, l, -s)?;
-        if r.t > l.t {
+        if r.t > l.t && !(j == 2 && no_stationary(&l, &r)) {
             self.rest.try_push((l.t, r.t)).ok()?;
         }
         self.piece(j, r, b, s)
@@ -167,6 +183,9 @@ impl Decider<'_> {
             if close || r.t - l.t <= NARROW {
                 centre = Some(t);
                 break;
+            }
+            if j == 2 && no_stationary(&l, &r) {
+                return Some((l, r));
             }
             x = p;
         }
