@@ -26,9 +26,12 @@
 //! while the pose moves less than `m`; otherwise, while the pose stays
 //! within [`TRACK`] of the last full search, only the arcs that search
 //! could not show to be at least [`CLEARANCE`] clear are searched again
-//! (the others keep a gap of at least `CLEARANCE − TRACK`). Either way
-//! every contact is found as by a fresh search; the minima agree with a
-//! fresh search's to rounding (`tests/compliant_peg_3d/tracked_search.rs`).
+//! (the others keep a gap of at least `CLEARANCE − TRACK`), for the minima
+//! below [`TRACKED_BELOW`] only. `moved` counts only the motion the fixed
+//! surface sees: the horizontal part for the bore wall, the vertical part
+//! for the faces, the part across the peg's axis for its side. Either way
+//! every contact is found as by a fresh search, and agrees with a fresh
+//! search's to rounding (`tests/compliant_peg_3d/tracked_search.rs`).
 //!
 //! Only penetrating minima (`g < 0`) on the part of each surface that
 //! exists (see [`Pair::valid`]) become contacts; minima closer than
@@ -95,26 +98,40 @@ struct Clear {
 /// A body point `b_B` (body frame) moves by `|Δp| + |ΔR b_B| ≤ |Δp| +
 /// 2|Δq| |b_B|`: for unit quaternions with `q·q′ ≥ 0` (the sign of `q′`
 /// chosen), `|q − q′| = 2 sin(φ/4)` and `|ΔR b_B| = 2 sin(φ/2) |b_B| ≤
-/// 2|q − q′| |b_B|`, `φ` the rotation between them. A distance to a fixed
-/// set changes by at most its point's displacement, so the rim pairs'
-/// gaps change by at most `|Δp| + 2|Δq| √(ϱ² + (L/2 − ρ_p)²)`. The mouth
-/// edge's distance to the peg's axis line changes by at most the
-/// displacement of the line's point nearest to it, at axial distance at
-/// most `|m − p| ≤ R_m + |p − o|` (`o = −ρ_h e_z` the mouth's centre) from
-/// the centre of mass, in either pose.
+/// 2|q − q′| |b_B|`, `φ` the rotation between them. Only the part of the
+/// displacement that the fixed surface sees counts:
+///
+/// - the rim against the bore wall (a vertical cylinder about the axis):
+///   the distance to it changes by at most the point's horizontal
+///   displacement, `|Δp_xy| + 2|Δq| √(ϱ² + (L/2 − ρ_p)²)`;
+/// - the rim against a horizontal plane: by at most the vertical one,
+///   `|Δp_z| + 2|Δq| √(ϱ² + (L/2 − ρ_p)²)`;
+/// - the rim against the mouth edge: by the whole displacement;
+/// - the mouth edge's point `m` against the peg's axis line `(p, a)`:
+///   `|(m − p′) × a′| − |(m − p) × a|` is at most `|Δp × a′|` (the
+///   displacement across the new axis: sliding along its own axis moves
+///   no gap of the side) plus `|(m − p) × (a′ − a)| ≤ 2|Δq| |m − p|`, with
+///   `|m − p| ≤ R_m + |p − o|` (`o = −ρ_h e_z` the mouth's centre).
+///
+/// The sum is widened by `10⁻¹²` of itself and `8ε |Δp|` for its rounding.
 fn moved(pair: Pair, p: &SVector<f64, 16>, a: &SVector<f64, 7>, b: &SVector<f64, 7>) -> f64 {
-    let dp = (b.fixed_rows::<3>(0) - a.fixed_rows::<3>(0)).norm();
+    let d = b.fixed_rows::<3>(0) - a.fixed_rows::<3>(0);
     let (qa, qb) = (a.fixed_rows::<4>(3), b.fixed_rows::<4>(3));
     let dq = (qb - qa).norm().min((qb + qa).norm());
     let (r, len, rho_p, big_r, rho_h) = (p[0], p[1], p[2], p[3], p[4]);
-    let reach = match pair {
+    let rim = (r - rho_p).hypot(0.5 * len - rho_p);
+    let bound = match pair {
+        Pair::RimWall => d[0].hypot(d[1]) + 2.0 * dq * rim,
+        Pair::RimTop | Pair::RimBottom => d[2].abs() + 2.0 * dq * rim,
+        Pair::RimEdge => d.norm() + 2.0 * dq * rim,
         Pair::EdgeSide => {
+            let axis = axis_of(b);
+            let across = (d - axis * d.dot(&axis)).norm();
             let o = nalgebra::Vector3::new(a[0], a[1], a[2] + rho_h).norm();
-            big_r + rho_h + o + dp
+            across + 2.0 * dq * (big_r + rho_h + o)
         }
-        _ => (r - rho_p).hypot(0.5 * len - rho_p),
     };
-    (dp + 2.0 * dq * reach) * (1.0 + 1e-12)
+    bound * (1.0 + 1e-12) + 8.0 * f64::EPSILON * d.norm()
 }
 
 /// A pair's full search at a pose, kept for the poses near it: the arcs
@@ -131,6 +148,11 @@ struct Tracked {
 /// pair is searched in full again: the dropped arcs keep a gap of at
 /// least `CLEARANCE − TRACK` (half the clearance).
 pub const TRACK: f64 = 0.5 * CLEARANCE;
+
+/// The gap (m) below which a search from a tracked record finds the
+/// minima: every contact, and a clearance of this much for the pair when
+/// none touches.
+pub const TRACKED_BELOW: f64 = 0.1 * CLEARANCE;
 
 /// The contact search of one pair: the work its last call did, the
 /// clearance it certified and the last full search it may search from.
@@ -192,9 +214,15 @@ impl Search {
         if let Some(t) = &self.tracked {
             let delta = moved(pair, p, &t.pose, x);
             if delta < TRACK {
-                self.work = certified::minima_on(&h, level, &t.kept.arcs, &mut out);
+                let bound = TRACKED_BELOW.min(CLEARANCE - delta);
+                self.work = match Problem::of(pair, x, p, bound) {
+                    Problem::Search { h, level } => {
+                        certified::minima_on(&h, level, &t.kept.arcs, &mut out)
+                    }
+                    _ => Work::default(),
+                };
                 self.work.tracked = true;
-                return (out, CLEARANCE - delta);
+                return (out, bound);
             }
         }
         let mut kept = certified::Kept::default();
