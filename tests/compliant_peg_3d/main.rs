@@ -22,3 +22,4 @@ mod side_wall;
 mod split_minimum;
 mod symmetric_minimum;
 mod tracked_search;
+mod wedged_elastic;
