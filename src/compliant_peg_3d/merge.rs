@@ -28,16 +28,32 @@
 //! (elastic only: no damping, no friction) with the point it is attached to
 //! (the minimum before it in angle).
 
-use super::contact::{ContactPoint, MAX_CONTACTS, Pair, Saddle};
+use super::contact::{ContactPoint, MAX_CONTACTS, Pair, PairOut, Saddle};
 use nalgebra::SVector;
 use std::f64::consts::TAU;
 
 /// The maximum of `g` in `(lo, hi)` with `g′(lo) > 0 > g′(hi)`: Newton on
-/// `g′` with bisection on its sign. Returns the angle (unwrapped).
-fn col(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, mut lo: f64, mut hi: f64) -> f64 {
+/// `g′` with bisection on its sign. Returns the angle (unwrapped) and the
+/// pair's outputs there.
+///
+/// Only a col that penetrates matters to the rule (one with `g ≥ 0` is
+/// never subtracted), and every point of `(lo, hi)` has `g` at most the
+/// maximum's: so the first iterate with `g > 0` ends the search, returned
+/// in place of the maximum (a col out of contact, whose exact place is not
+/// needed). Where the col penetrates the iterates are the full search's.
+fn col(
+    pair: Pair,
+    x: &SVector<f64, 7>,
+    p: &SVector<f64, 16>,
+    mut lo: f64,
+    mut hi: f64,
+) -> (f64, Option<PairOut<f64>>) {
     let mut a = 0.5 * (lo + hi);
     for _ in 0..80 {
         let out = pair.eval(x, a, p);
+        if out.gap > 0.0 {
+            return (a, Some(out));
+        }
         let (d1, d2) = (out.d1, out.d2);
         if d1 > 0.0 {
             lo = a;
@@ -51,11 +67,11 @@ fn col(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, mut lo: f64, mut h
             0.5 * (lo + hi)
         };
         if (next - a).abs() <= 1e-14 * (1.0 + a.abs()) || hi - lo <= 1e-14 {
-            return next;
+            return (next, None);
         }
         a = next;
     }
-    a
+    (a, None)
 }
 
 /// Sets the [`ContactPoint::saddle`] of the points in `points` (the
@@ -79,8 +95,12 @@ pub fn assign(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, points: &mu
         if hi <= lo {
             hi += TAU;
         }
-        let a = col(pair, x, p, lo, hi);
-        *c = (a, -pair.eval(x, a, p).gap);
+        let (a, apart) = col(pair, x, p, lo, hi);
+        let gap = match apart {
+            Some(out) => out.gap,
+            None => pair.eval(x, a, p).gap,
+        };
+        *c = (a, -gap);
     }
     let cols = &cols[..n];
     // One ring: keep the least penetrating col.
