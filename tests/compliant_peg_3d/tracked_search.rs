@@ -132,11 +132,11 @@ fn check(w: &Walks, starts: usize) {
 #[test]
 fn a_tracked_search_finds_the_fresh_searchs_contacts_on_the_fig9_peg() {
     let starts = 20_000;
-    check(&walks(&fig9(), 0x7_2AC_0001, starts), starts);
+    check(&walks(&fig9(), 0x72AC_0001, starts), starts);
 }
 
 #[test]
 fn a_tracked_search_finds_the_fresh_searchs_contacts_on_the_insertion_peg() {
     let starts = 20_000;
-    check(&walks(&insertion_peg(), 0x7_2AC_0002, starts), starts);
+    check(&walks(&insertion_peg(), 0x72AC_0002, starts), starts);
 }
