@@ -192,12 +192,13 @@ impl Search {
         out
     }
 
-    /// The local minima of `pair`'s gap below [`CLEARANCE`] at pose `x`
-    /// (and possibly others), and a lower bound on the gap away from them:
-    /// `CLEARANCE`, or, when searched from a `Tracked` search whose pose
-    /// is less than [`TRACK`] away (by [`moved`]), only on the arcs that
-    /// search kept, `CLEARANCE` less the distance moved. Otherwise a full
-    /// search, kept for the poses after it.
+    /// The local minima of `pair`'s gap at pose `x` below a bound (and
+    /// possibly others), and that bound, which the gap away from them is
+    /// at least: from a `Tracked` search whose pose is less than [`TRACK`]
+    /// away (by [`moved`]), the minima below [`TRACKED_BELOW`] on the arcs
+    /// that search kept (the others keep a gap of at least `CLEARANCE −
+    /// TRACK`); otherwise a full search for the minima below
+    /// [`CLEARANCE`], kept for the poses after it.
     fn minima_tracked(
         &mut self,
         pair: Pair,
@@ -206,25 +207,21 @@ impl Search {
     ) -> (Angles, f64) {
         let mut out = Angles::new();
         self.work = Work::default();
-        let problem = Problem::of(pair, x, p, CLEARANCE);
-        let Problem::Search { h, level } = problem else {
-            self.tracked = None;
-            return (self.minima(pair, x, p, CLEARANCE), CLEARANCE);
-        };
         if let Some(t) = &self.tracked {
             let delta = moved(pair, p, &t.pose, x);
             if delta < TRACK {
                 let bound = TRACKED_BELOW.min(CLEARANCE - delta);
-                self.work = match Problem::of(pair, x, p, bound) {
-                    Problem::Search { h, level } => {
-                        certified::minima_on(&h, level, &t.kept.arcs, &mut out)
-                    }
-                    _ => Work::default(),
-                };
+                if let Problem::Search { h, level } = Problem::of(pair, x, p, bound) {
+                    self.work = certified::minima_on(&h, level, &t.kept.arcs, &mut out);
+                }
                 self.work.tracked = true;
                 return (out, bound);
             }
         }
+        let Problem::Search { h, level } = Problem::of(pair, x, p, CLEARANCE) else {
+            self.tracked = None;
+            return (self.minima(pair, x, p, CLEARANCE), CLEARANCE);
+        };
         let mut kept = certified::Kept::default();
         self.work = certified::minima_kept(&h, level, &mut out, &mut kept);
         self.tracked = kept.complete.then_some(Tracked { pose: *x, kept });
