@@ -2,13 +2,14 @@
 //! creeps with the regularized one.
 //!
 //! The insertion scene's peg (d = 24.925 mm in a 25 mm bore, L = 50 mm,
-//! fillets 0.3 and 0.5 mm), tilted in the `xz` plane and pressed into
-//! two-point contact 3 mm below the mouth (the rim on the bore wall, the
-//! mouth edge on the side, each penetrating [`PRELOAD`]), then released at
-//! rest under gravity alone, `μ = 0.3`. The line between the two contacts
-//! is `atan(3/25) ≈ 7°` from the normal at the wall and about 9° from the
-//! normal at the mouth (the tilt is 2°), inside the friction cone
-//! (`atan 0.3 ≈ 17°`): the wedge of Whitney's two-point statics, held by
+//! fillets 0.3 and 0.5 mm), tilted in the `xz` plane with its bottom face
+//! 3 mm below the mouth and pressed into two-point contact (the rim on the
+//! bore wall, the mouth edge on the side, each penetrating [`PRELOAD`]),
+//! then released at rest under gravity alone, `μ = 0.3`. The contacts lie 2.27 mm (wall)
+//! and 0.48 mm (mouth) below the mouth's plane, 25.0 mm apart: the line
+//! between them is 4.1° from the normal at the wall and 6.1° from the
+//! normal at the mouth (tilted by the peg's 2°), inside the friction cone
+//! (`atan 0.3 ≈ 16.7°`): the wedge of Whitney's two-point statics, held by
 //! its own contact forces (about 260 N each). Normal and tangential damping
 //! settle the release's vibration within a few milliseconds; the test then
 //! measures how far the centre of mass moves.
