@@ -150,12 +150,12 @@ pub const TERMINAL_NAMES: [&str; 4] = [
     "missed",
 ];
 
+/// The point count of each pair, in the order of [`Pair::ALL`].
+pub type Counts = [usize; Pair::ALL.len()];
+
 /// The number of contact points of each pair (order of [`Pair::ALL`]).
-pub fn counts(contacts: &[ContactPoint]) -> Vec<usize> {
-    Pair::ALL
-        .iter()
-        .map(|p| contacts.iter().filter(|c| c.pair == *p).count())
-        .collect()
+pub fn counts(contacts: &[ContactPoint]) -> Counts {
+    std::array::from_fn(|k| contacts.iter().filter(|c| c.pair == Pair::ALL[k]).count())
 }
 
 /// Whether the pairs in contact make two-point contact in the jamming
@@ -209,7 +209,7 @@ pub fn label(counts: &[usize]) -> String {
 }
 
 /// A state `(t, y)` and its contact counts.
-type Memo = (f64, SVector<f64, N_STATE>, Vec<usize>);
+type Memo = (f64, SVector<f64, N_STATE>, Counts);
 
 /// A memo of the contact counts of the last state asked for, so that the
 /// per-pair transition events of one state share one contact search.
@@ -228,15 +228,15 @@ impl<'a> CountCache<'a> {
     }
 
     /// The contact counts of `y` at `t`.
-    pub fn counts(&self, t: f64, y: &SVector<f64, N_STATE>) -> Vec<usize> {
+    pub fn counts(&self, t: f64, y: &SVector<f64, N_STATE>) -> Counts {
         if let Some((tl, yl, c)) = &*self.last.borrow()
             && *tl == t
             && yl == y
         {
-            return c.clone();
+            return *c;
         }
-        let c = counts(&self.system.contacts(y));
-        *self.last.borrow_mut() = Some((t, *y, c.clone()));
+        let c = self.system.peg.with_contacts(&peg_state(y), counts);
+        *self.last.borrow_mut() = Some((t, *y, c));
         c
     }
 }

@@ -101,10 +101,8 @@ fn states(
     x: &[SVector<f64, N_STATE>],
     pairs: &[Pair],
 ) -> Vec<(f64, SVector<f64, N_STATE>)> {
-    let want: Vec<usize> = Pair::ALL
-        .iter()
-        .map(|p| usize::from(pairs.contains(p)))
-        .collect();
+    let want: [usize; Pair::ALL.len()] =
+        std::array::from_fn(|k| usize::from(pairs.contains(&Pair::ALL[k])));
     let hits: Vec<usize> = (0..x.len())
         .filter(|&i| counts(&sys.contacts(&x[i])) == want)
         .collect();

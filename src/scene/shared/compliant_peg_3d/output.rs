@@ -220,7 +220,7 @@ pub fn transitions(sys: &Insertion, sol: &Solution<N_STATE>, what: &[Transition]
     let mut cur = sol
         .x
         .first()
-        .map_or_else(|| vec![0; Pair::ALL.len()], |y| counts(&sys.contacts(y)));
+        .map_or([0; Pair::ALL.len()], |y| counts(&sys.contacts(y)));
     sol.events
         .iter()
         .filter(|e| e.index < what.len())

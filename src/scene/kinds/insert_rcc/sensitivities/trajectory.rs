@@ -23,7 +23,9 @@ use crate::compliant_peg_3d::Pair;
 use crate::compliant_peg_3d::design::{Design, Directions, N_DESIGN};
 use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, depth_tilt, peg_state};
 use crate::compliant_peg_3d::no_jam::MarginLoad;
-use crate::compliant_peg_3d::outcome::{Criteria, counts, terminal_conditions, two_point_counts};
+use crate::compliant_peg_3d::outcome::{
+    Counts, Criteria, counts, terminal_conditions, two_point_counts,
+};
 use crate::integrate::{Direction, Event, Method, Options, OutputMode, Solver, Stats, StopReason};
 use crate::scene::shared::sensitivities::StopOrError;
 use crate::sensitivity::{
@@ -288,7 +290,12 @@ impl<'a, X: Clone> Tracker<'a, X> {
         if self.ring.is_none() && forces.iter().any(|f| f.contact.ring) {
             self.ring = Some(t);
         }
-        let found = counts(&forces.iter().map(|f| f.contact).collect::<Vec<_>>());
+        let found: Counts = std::array::from_fn(|k| {
+            forces
+                .iter()
+                .filter(|f| f.contact.pair == Pair::ALL[k])
+                .count()
+        });
         let now = two_point_counts(&found);
         if now
             && !self.was
