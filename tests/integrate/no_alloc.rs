@@ -421,6 +421,7 @@ fn wrist_and_prescribed_3d_adapters_allocate_nothing() {
     // finite-difference Jacobian and time derivative an implicit method
     // calls, leaning on the mouth and at the start above the hole.
     use pegdyn::compliant_peg_3d::insertion::{Insertion, N_STATE};
+    use pegdyn::compliant_peg_3d::outcome::counts;
     use pegdyn::compliant_peg_3d::prescribed::{Motion, PrescribedPeg};
     use pegdyn::scene::shared::compliant_peg_3d::insertion::RccScene;
     let scene = std::fs::read_to_string(concat!(
@@ -450,6 +451,17 @@ fn wrist_and_prescribed_3d_adapters_allocate_nothing() {
         assert_eq!(allocs_of(|| held.jacobian(0.1, black_box(y))), 0);
         assert_eq!(allocs_of(|| held.time_derivative(0.1, black_box(y))), 0);
     }
+    // The contact-transition events' counts: a new state searches, the
+    // same state again reads the memo; neither allocates.
+    let cache = pegdyn::compliant_peg_3d::outcome::CountCache::new(&held);
+    for y in [&start, &leaning, &start] {
+        assert_eq!(allocs_of(|| cache.counts(0.1, black_box(y))), 0);
+        assert_eq!(allocs_of(|| cache.counts(0.1, black_box(y))), 0);
+    }
+    assert_eq!(
+        cache.counts(0.1, &leaning),
+        counts(&held.contacts(&leaning))
+    );
     let mut prm = crate::common::peg3d::fig9();
     prm.hertz = pegdyn::compliant_peg_3d::HertzMode::Fixed(2e10);
     let merging = crate::common::peg3d::rim_on_mouth(&prm, 0.0455, 2e-6);
