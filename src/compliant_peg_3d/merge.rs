@@ -28,13 +28,13 @@
 //! (elastic only: no damping, no friction) with the point it is attached to
 //! (the minimum before it in angle).
 
-use super::contact::{ContactPoint, MAX_CONTACTS, Pair, PairOut, Saddle};
+use super::contact::{ContactPoint, MAX_CONTACTS, Pair, Saddle};
 use nalgebra::SVector;
 use std::f64::consts::TAU;
 
 /// The maximum of `g` in `(lo, hi)` with `g′(lo) > 0 > g′(hi)`: Newton on
 /// `g′` with bisection on its sign. Returns the angle (unwrapped) and the
-/// pair's outputs there.
+/// gap there.
 ///
 /// Only a col that penetrates matters to the rule (one with `g ≥ 0` is
 /// never subtracted), and every point of `(lo, hi)` has `g` at most the
@@ -47,12 +47,12 @@ fn col(
     p: &SVector<f64, 16>,
     mut lo: f64,
     mut hi: f64,
-) -> (f64, Option<PairOut<f64>>) {
+) -> (f64, f64) {
     let mut a = 0.5 * (lo + hi);
     for _ in 0..80 {
         let out = pair.eval(x, a, p);
         if out.gap > 0.0 {
-            return (a, Some(out));
+            return (a, out.gap);
         }
         let (d1, d2) = (out.d1, out.d2);
         if d1 > 0.0 {
@@ -67,11 +67,12 @@ fn col(
             0.5 * (lo + hi)
         };
         if (next - a).abs() <= 1e-14 * (1.0 + a.abs()) || hi - lo <= 1e-14 {
-            return (next, None);
+            a = next;
+            break;
         }
         a = next;
     }
-    (a, None)
+    (a, pair.eval(x, a, p).gap)
 }
 
 /// Sets the [`ContactPoint::saddle`] of the points in `points` (the
@@ -95,11 +96,7 @@ pub fn assign(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, points: &mu
         if hi <= lo {
             hi += TAU;
         }
-        let (a, apart) = col(pair, x, p, lo, hi);
-        let gap = match apart {
-            Some(out) => out.gap,
-            None => pair.eval(x, a, p).gap,
-        };
+        let (a, gap) = col(pair, x, p, lo, hi);
         *c = (a, -gap);
     }
     let cols = &cols[..n];

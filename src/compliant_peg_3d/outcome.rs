@@ -155,7 +155,17 @@ pub type Counts = [usize; Pair::ALL.len()];
 
 /// The number of contact points of each pair (order of [`Pair::ALL`]).
 pub fn counts(contacts: &[ContactPoint]) -> Counts {
-    std::array::from_fn(|k| contacts.iter().filter(|c| c.pair == Pair::ALL[k]).count())
+    counts_of(contacts.iter().map(|c| c.pair))
+}
+
+/// The number of times each pair occurs in `pairs` (order of
+/// [`Pair::ALL`]): [`counts`] of contacts given by their pairs.
+pub fn counts_of(pairs: impl IntoIterator<Item = Pair>) -> Counts {
+    let mut n = [0; Pair::ALL.len()];
+    for p in pairs {
+        n[p.index()] += 1;
+    }
+    n
 }
 
 /// Whether the pairs in contact make two-point contact in the jamming

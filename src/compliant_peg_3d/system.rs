@@ -67,8 +67,8 @@ pub struct Peg3d {
 /// the last right-hand side was evaluated. A second search there would
 /// return the same contacts to rounding (every search finds every contact
 /// of the pose, [`Search::find`]; a pair certified apart at that pose stays
-/// apart there), so the memo changes no result beyond rounding. At any other state, or after the parameters changed, it
-/// searches.
+/// apart there), so the memo changes no result beyond rounding. At any
+/// other state, or after the parameters changed, it searches.
 struct Found {
     /// `None` before the first search.
     pose_bits: Option<[u64; 7]>,

@@ -562,7 +562,8 @@ impl Tally {
     }
 }
 
-fn angle_distance(a: f64, b: f64) -> f64 {
+/// The distance (rad) between two angles on the circle.
+pub fn angle_distance(a: f64, b: f64) -> f64 {
     let d = (a - b).rem_euclid(TAU);
     d.min(TAU - d)
 }

@@ -13,15 +13,10 @@
 use crate::common::peg3d::fig9;
 use crate::common::prescribed_rigid::{params, preloaded_state};
 use crate::common::search_reference::{Pose, SAMPLES, TOL, Tally, campaign, compare};
+use crate::insertion_split::insertion_peg;
+use pegdyn::compliant_peg_3d::Pair;
 use pegdyn::compliant_peg_3d::prescribed::{Motion, PrescribedPeg};
-use pegdyn::compliant_peg_3d::{Pair, Peg3dParams};
 use pegdyn::rigid_peg::PegParams;
-
-/// The insertion scene's peg (`scenes/insert_rcc.toml`).
-fn insertion_peg() -> Peg3dParams {
-    let big_d = 0.025;
-    Peg3dParams::steel(big_d * (1.0 - 0.003), 0.05, big_d, 3e-4, 5e-4, 0.03)
-}
 
 /// Poses per test (four tests: 10⁵ in all).
 const POSES: usize = 25_000;

@@ -9,16 +9,10 @@
 
 use crate::common::peg3d::fig9;
 use crate::common::rng::Rng;
-use crate::common::search_reference::{GRAZING, Geo, Pose, near_contact};
+use crate::common::search_reference::{GRAZING, Geo, Pose, angle_distance, near_contact};
+use crate::insertion_split::insertion_peg;
 use nalgebra::{SVector, Unit, UnitQuaternion, Vector3};
 use pegdyn::compliant_peg_3d::{ContactPoint, Contacts, Pair, Peg3dParams, Search};
-use std::f64::consts::TAU;
-
-/// The insertion scene's peg (`scenes/insert_rcc.toml`).
-fn insertion_peg() -> Peg3dParams {
-    let big_d = 0.025;
-    Peg3dParams::steel(big_d * (1.0 - 0.003), 0.05, big_d, 3e-4, 5e-4, 0.03)
-}
 
 /// `x` moved by `size` (m) in a random direction and turned by
 /// `size / 0.02` rad about a random axis.
@@ -29,11 +23,6 @@ fn moved(x: &SVector<f64, 7>, size: f64, rng: &mut Rng) -> SVector<f64, 7> {
     let q = UnitQuaternion::from_axis_angle(&axis, size / 0.02) * q0;
     let p = Vector3::new(x[0], x[1], x[2]) + dir.normalize() * size;
     SVector::from([p.x, p.y, p.z, q.w, q.i, q.j, q.k])
-}
-
-fn angle_distance(a: f64, b: f64) -> f64 {
-    let d = (a - b).rem_euclid(TAU);
-    d.min(TAU - d)
 }
 
 /// What a walk compared: searches from a tracked record, contacts

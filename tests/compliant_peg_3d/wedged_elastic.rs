@@ -5,15 +5,16 @@
 //! fillets 0.3 and 0.5 mm), tilted in the `xz` plane with its bottom face
 //! 3 mm below the mouth and pressed into two-point contact (the rim on the
 //! bore wall, the mouth edge on the side, each penetrating [`PRELOAD`]),
-//! then released at rest under gravity alone, `μ = 0.3`. The contacts lie 2.27 mm (wall)
-//! and 0.48 mm (mouth) below the mouth's plane, 25.0 mm apart: the line
-//! between them is 4.1° from the normal at the wall and 6.1° from the
-//! normal at the mouth (tilted by the peg's 2°), inside the friction cone
-//! (`atan 0.3 ≈ 16.7°`): the wedge of Whitney's two-point statics, held by
-//! its own contact forces (about 260 N each). Normal and tangential damping
-//! settle the release's vibration within a few milliseconds; the test then
-//! measures how far the centre of mass moves.
+//! then released at rest under gravity alone, `μ = 0.3`. The contacts lie
+//! 2.27 mm (wall) and 0.48 mm (mouth) below the mouth's plane, 25.0 mm
+//! apart: the line between them is 4.1° from the normal at the wall and
+//! 6.1° from the normal at the mouth (tilted by the peg's 2°), inside the
+//! friction cone (`atan 0.3 ≈ 16.7°`): the wedge of Whitney's two-point
+//! statics, held by its own contact forces (about 260 N each). Normal and
+//! tangential damping settle the release's vibration within a few
+//! milliseconds; the test then measures how far the centre of mass moves.
 
+use crate::insertion_split::insertion_peg;
 use nalgebra::{SVector, UnitQuaternion, Vector3};
 use pegdyn::compliant_peg_3d::{
     Contacts, ElasticPeg3d, FrictionLaw, Pair, Peg3d, Peg3dParams, Search, SlotKey, pose_state,
@@ -27,7 +28,7 @@ const N: usize = 21;
 /// Friction coefficient.
 const MU: f64 = 0.3;
 
-/// Depth of the rim below the mouth (m).
+/// Depth of the bottom face below the mouth's plane (m).
 const DEPTH: f64 = 0.003;
 
 /// Penetration of each contact at the start (m).
@@ -36,8 +37,7 @@ const PRELOAD: f64 = 2e-6;
 /// The insertion scene's peg with friction [`MU`], Hunt–Crossley damping
 /// `α = 30 s/m` and tangential damping `τ_t = 10 µs`.
 fn params(law: FrictionLaw) -> Peg3dParams {
-    let big_d = 0.025;
-    let mut prm = Peg3dParams::steel(big_d * (1.0 - 0.003), 0.05, big_d, 3e-4, 5e-4, 0.03);
+    let mut prm = insertion_peg();
     prm.friction = MU;
     prm.friction_law = law;
     prm.damping = 30.0;
@@ -110,7 +110,7 @@ fn run<const M: usize, S: OdeSystem<M>>(
     sol
 }
 
-/// How far (m) the centre of mass moves between the first and last output.
+/// How far (m) the centre of mass moves from output `from` to the last.
 fn moved<const M: usize>(sol: &Solution<M>, from: usize) -> f64 {
     let (a, b) = (sol.x[from], sol.x.last().unwrap());
     ((b[0] - a[0]).powi(2) + (b[1] - a[1]).powi(2) + (b[2] - a[2]).powi(2)).sqrt()

@@ -151,8 +151,10 @@ pub const TRACK: f64 = 0.5 * CLEARANCE;
 
 /// The gap (m) below which a search from a tracked record finds the
 /// minima: every contact, and a clearance of this much for the pair when
-/// none touches.
+/// none touches (at most `CLEARANCE − TRACK`, what the arcs its record
+/// dropped keep).
 pub const TRACKED_BELOW: f64 = 0.1 * CLEARANCE;
+const _: () = assert!(TRACKED_BELOW <= CLEARANCE - TRACK);
 
 /// The contact search of one pair: the work its last call did, the
 /// clearance it certified and the last full search it may search from.
@@ -210,12 +212,11 @@ impl Search {
         if let Some(t) = &self.tracked {
             let delta = moved(pair, p, &t.pose, x);
             if delta < TRACK {
-                let bound = TRACKED_BELOW.min(CLEARANCE - delta);
-                if let Problem::Search { h, level } = Problem::of(pair, x, p, bound) {
+                if let Problem::Search { h, level } = Problem::of(pair, x, p, TRACKED_BELOW) {
                     self.work = certified::minima_on(&h, level, &t.kept.arcs, &mut out);
                 }
                 self.work.tracked = true;
-                return (out, bound);
+                return (out, TRACKED_BELOW);
             }
         }
         let Problem::Search { h, level } = Problem::of(pair, x, p, CLEARANCE) else {

@@ -24,7 +24,7 @@ use crate::compliant_peg_3d::design::{Design, Directions, N_DESIGN};
 use crate::compliant_peg_3d::insertion::{Insertion, N_STATE, depth_tilt, peg_state};
 use crate::compliant_peg_3d::no_jam::MarginLoad;
 use crate::compliant_peg_3d::outcome::{
-    Counts, Criteria, counts, terminal_conditions, two_point_counts,
+    Criteria, counts, counts_of, terminal_conditions, two_point_counts,
 };
 use crate::integrate::{Direction, Event, Method, Options, OutputMode, Solver, Stats, StopReason};
 use crate::scene::shared::sensitivities::StopOrError;
@@ -290,12 +290,7 @@ impl<'a, X: Clone> Tracker<'a, X> {
         if self.ring.is_none() && forces.iter().any(|f| f.contact.ring) {
             self.ring = Some(t);
         }
-        let found: Counts = std::array::from_fn(|k| {
-            forces
-                .iter()
-                .filter(|f| f.contact.pair == Pair::ALL[k])
-                .count()
-        });
+        let found = counts_of(forces.iter().map(|f| f.contact.pair));
         let now = two_point_counts(&found);
         if now
             && !self.was
