@@ -167,6 +167,7 @@ fn search(
     };
     // An entry: the arc, and whether it lies inside an arc already
     // recorded whole (a piece of an arc cut by a higher derivative).
+    let mut memo = order::Memo::default();
     let mut stack = arrayvec::ArrayVec::<(Arc, bool), STACK>::new();
     for arc in from.iter().rev() {
         if stack.try_push((*arc, false)).is_err() {
@@ -214,7 +215,7 @@ fn search(
         }
         if higher && depth >= ORDER_DEPTH {
             let mut rest = order::Rest::new();
-            if order::decide(prof, lo, hi, c, s, w, out, &mut work, &mut rest) {
+            if order::decide(prof, lo, hi, c, s, w, out, &mut work, &mut rest, &mut memo) {
                 work.ordered += 1;
                 keep(arc, inside);
                 for (a, b) in rest {

@@ -22,7 +22,15 @@
 //!   changes sign from its start to its end, found as on a convex arc
 //!   (safeguarded Newton); a piece with `h″ < 0` holds none; the short
 //!   arcs go back to the branch and bound, which decides them by their
-//!   enclosures or ends them as leaves.
+//!   enclosures or ends them as leaves;
+//! - where `h″` is monotone, `h′` is convex or concave, and the sign of
+//!   `h′` at one end can show that no minimum lies on the arc (or on the
+//!   bracket of the root of `h″`) without the root: a minimum is an
+//!   upward zero of `h′`, which a convex `h′` has only below its value at
+//!   the right end and a concave one only above its value at the left end
+//!   ([`no_minimum`]). The arc about an inflection next to a stationary
+//!   point of a symmetric pose (where `h′` vanishes exactly) is decided
+//!   this way instead of being narrowed to `10⁻¹²` rad.
 //!
 //! Every sign used is proven by an enclosure at a point
 //! ([`Profile::point`]) and monotonicity, and the pieces and short arcs
@@ -76,13 +84,38 @@ fn no_stationary(l: &Pt, r: &Pt) -> bool {
             > up((r.t - l.t) * curvature * (1.0 + 4.0 * f64::EPSILON))
 }
 
-/// One arc's decision: the profile, the minima found, the work and the
-/// short arcs left.
+/// Whether `[l, r]`, on which `h′` is convex (`convex`: `h″` increasing)
+/// or concave, holds no local minimum of `h`. A minimum is where `h′`
+/// crosses zero upwards. A convex `h′` falls, then rises: it crosses
+/// upwards only where it rises, and then stays below `h′(r)`, so `h′(r) <
+/// 0` leaves no minimum. A concave `h′` rises, then falls: it crosses
+/// upwards only where it rises, above `h′(l)`, so `h′(l) > 0` leaves none.
+/// The other stationary points are maxima, which the search does not
+/// report.
+fn no_minimum(l: &Pt, r: &Pt, convex: bool) -> bool {
+    if convex {
+        sign(r.j[1], true) < 0
+    } else {
+        sign(l.j[1], true) > 0
+    }
+}
+
+/// The last points one search evaluated, by angle: arcs decided in turn
+/// that share an end evaluate it once.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Memo {
+    points: [Option<(f64, Option<[Iv; 5]>)>; 2],
+    next: usize,
+}
+
+/// One arc's decision: the profile, the minima found, the work, the short
+/// arcs left and the search's last points.
 struct Decider<'a> {
     prof: &'a Profile,
     out: &'a mut Angles,
     work: &'a mut Work,
     rest: &'a mut Rest,
+    memo: &'a mut Memo,
 }
 
 impl Decider<'_> {
@@ -90,6 +123,19 @@ impl Decider<'_> {
     fn at(&mut self, t: f64) -> Option<Pt> {
         self.work.points += 1;
         self.prof.point(t).map(|j| Pt { t, j })
+    }
+
+    /// [`Decider::at`] for an arc's end, which the arc decided before it
+    /// may share.
+    fn end(&mut self, t: f64) -> Option<Pt> {
+        if let Some((_, j)) = self.memo.points.iter().flatten().find(|(u, _)| *u == t) {
+            return j.map(|j| Pt { t, j });
+        }
+        self.work.points += 1;
+        let j = self.prof.point(t);
+        self.memo.points[self.memo.next] = Some((t, j));
+        self.memo.next = 1 - self.memo.next;
+        j.map(|j| Pt { t, j })
     }
 
     /// `[a, b]` on which `h⁽ʲ⁾` has the sign `s` (proven).
@@ -133,12 +179,32 @@ impl Decider<'_> {
             // Near zero over the whole piece: the arc is halved instead.
             return None;
         }
+        if let Some(done) = self.by_chord(j - 1, a, b, inc) {
+            return done;
+        }
         let (l, r) = self.narrow(j, a, b, inc)?;
         self.piece(j, a, l, -s)?;
-        if r.t > l.t && !(j == 2 && no_stationary(&l, &r)) {
+        if r.t > l.t && !(j == 2 && (no_stationary(&l, &r) || no_minimum(&l, &r, inc))) {
             self.rest.try_push((l.t, r.t)).ok()?;
         }
         self.piece(j, r, b, s)
+    }
+
+    /// `[a, b]` on which `h⁽ᵏ⁾` is convex (`convex`: `h⁽ᵏ⁺¹⁾` increasing)
+    /// or concave, decided without the root of `h⁽ᵏ⁺¹⁾` where its end
+    /// values allow: for `k = 1`, no minimum by [`no_minimum`]; for `k >
+    /// 1`, a piece where `h⁽ᵏ⁾` has one sign when both end values have the
+    /// sign that the chord bound carries to the whole arc (a convex
+    /// function lies below its chord, `h⁽ᵏ⁾(t) ≤ (1 − λ) h⁽ᵏ⁾(a) + λ
+    /// h⁽ᵏ⁾(b)` with `λ = (t − a)/(b − a)`; a concave one above it). `None`
+    /// when neither holds (the root is then bracketed).
+    fn by_chord(&mut self, k: usize, a: Pt, b: Pt, convex: bool) -> Option<Option<()>> {
+        if k == 1 {
+            return no_minimum(&a, &b, convex).then_some(Some(()));
+        }
+        let s: i8 = if convex { -1 } else { 1 };
+        let both = sign(a.j[k], !convex) == 1 && sign(b.j[k], !convex) == 1;
+        both.then(|| self.piece(k, a, b, s))
     }
 
     /// A bracket `[l, r] ⊆ [a, b]` of the root of `g = ±h⁽ʲ⁾` (increasing):
@@ -184,7 +250,7 @@ impl Decider<'_> {
                 centre = Some(t);
                 break;
             }
-            if j == 2 && no_stationary(&l, &r) {
+            if j == 2 && (no_stationary(&l, &r) || no_minimum(&l, &r, inc)) {
                 return Some((l, r));
             }
             x = p;
@@ -219,7 +285,8 @@ impl Decider<'_> {
 /// `w` the enclosures' half-width) when `h‴` or `h⁗` has one sign on it:
 /// its minima into `out`, the short arcs left to the branch and bound into
 /// `rest`. False (and `rest` to be discarded) when the arc is to be
-/// halved; the minima already added are minima.
+/// halved; the minima already added are minima. `memo` holds the last
+/// arcs' end points of the same search (the same profile).
 #[allow(clippy::too_many_arguments)]
 pub fn decide(
     prof: &Profile,
@@ -231,6 +298,7 @@ pub fn decide(
     out: &mut Angles,
     work: &mut Work,
     rest: &mut Rest,
+    memo: &mut Memo,
 ) -> bool {
     let Some(e) = prof.arc(c, s, w) else {
         return false;
@@ -247,8 +315,9 @@ pub fn decide(
         out,
         work,
         rest,
+        memo,
     };
-    let (Some(a), Some(b)) = (d.at(lo), d.at(hi)) else {
+    let (Some(a), Some(b)) = (d.end(lo), d.end(hi)) else {
         return false;
     };
     d.split(j, a, b, inc).is_some()

@@ -116,7 +116,7 @@ pub fn enclose(f: &Bounded, z: &Bounded, rm: f64, c: f64, s: f64, w: f64, level:
         };
     }
     let (value, arc) = natural(&fe, &ze, rm);
-    let centre = natural(&f.enclose(c, s, 0.0), &z.enclose(c, s, 0.0), rm);
+    let centre = natural(&f.enclose_point(c, s), &z.enclose_point(c, s), rm);
     let (Some((n1, n2, rho)), (v0, Some((g1, g2, _)))) = (arc, centre) else {
         return Enclosure {
             value,

@@ -135,18 +135,21 @@ impl Trig2 {
         Bounded {
             f: self,
             m3: up(n1 + 8.0 * n2),
+            n: (n1, n2),
             e: [e0, e1, e2],
         }
     }
 }
 
-/// A [`Trig2`] with the bound `M₃ ≥ |f‴|` and the rounding allowances of
-/// its values, computed once.
+/// A [`Trig2`] with its amplitudes `(n₁, n₂)` (the derivatives' bounds
+/// `Mⱼ = n₁ + 2ʲ n₂`), the bound `M₃ ≥ |f‴|` and the rounding allowances
+/// of its values, computed once.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Bounded {
     /// The polynomial.
     pub f: Trig2,
     m3: f64,
+    n: (f64, f64),
     e: [f64; 3],
 }
 
@@ -190,6 +193,21 @@ impl Bounded {
 }
 
 impl Bounded {
+    /// [`Bounded::enclose`] at `w = 0`, the angle alone: the arc's terms
+    /// (the quadratic, its rounding, the slope's part that shrinks with
+    /// the arc) are zero there and left out, which changes no bound.
+    pub fn enclose_point(&self, c: f64, s: f64) -> Enclosure {
+        let [f0, f1, f2] = self.f.at(c, s);
+        let [e0, e1, e2] = self.e;
+        let rem0 = up(0.0);
+        Enclosure {
+            value: Iv::new(down(f0 - rem0 - e0), up(f0 + rem0 + e0)),
+            d1: Iv::around(f1, up(e1)),
+            d2: Iv::around(f2, up(e2)),
+            refinable: false,
+        }
+    }
+
     /// Enclosures of `f, f′, …, f⁗` at the angle whose cosine and sine are
     /// `(c, s)` (each within an ulp of the angle's): the computed jet
     /// widened by its rounding allowances.
@@ -207,7 +225,7 @@ impl Bounded {
         let e = self.enclose(c, s, w);
         let v = self.f.jet(c, s);
         let r = self.f.rounding();
-        let (n1, n2) = self.f.amplitudes();
+        let (n1, n2) = self.n;
         let (m4, m5) = (up(n1 + 16.0 * n2), up(n1 + 32.0 * n2));
         [
             e.value,
