@@ -28,7 +28,7 @@
 //!   bracket of the root of `h″`) without the root: a minimum is an
 //!   upward zero of `h′`, which a convex `h′` has only below its value at
 //!   the right end and a concave one only above its value at the left end
-//!   ([`no_minimum`]). The arc about an inflection next to a stationary
+//!   (`no_minimum`). The arc about an inflection next to a stationary
 //!   point of a symmetric pose (where `h′` vanishes exactly) is decided
 //!   this way instead of being narrowed to `10⁻¹²` rad.
 //!
