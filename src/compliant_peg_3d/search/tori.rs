@@ -41,11 +41,27 @@
 use super::interval::{Iv, up};
 use super::trig::{Bounded, Enclosure};
 
+/// `ρ = √F` and `h = (ρ − R_m)² + Z²` from the enclosures of `F` and `Z`.
+fn value(fe: &Enclosure, ze: &Enclosure, rm: f64) -> (Iv, Iv) {
+    let rho = fe.value.sqrt();
+    (rho, rho.plus(-rm).square() + ze.value.square())
+}
+
 /// `(h, Some((h′, h″, ρ)))` by the natural extension, `(h, None)` where
 /// `F` may vanish.
 fn natural(fe: &Enclosure, ze: &Enclosure, rm: f64) -> (Iv, Option<(Iv, Iv, Iv)>) {
-    let rho = fe.value.sqrt();
-    let value = rho.plus(-rm).square() + ze.value.square();
+    let (rho, value) = value(fe, ze, rm);
+    natural_from(fe, ze, rm, rho, value)
+}
+
+/// [`natural`] with `ρ` and `h` of [`value`] already computed.
+fn natural_from(
+    fe: &Enclosure,
+    ze: &Enclosure,
+    rm: f64,
+    rho: Iv,
+    value: Iv,
+) -> (Iv, Option<(Iv, Iv, Iv)>) {
     if fe.value.lo <= 0.0 {
         return (value, None);
     }
@@ -106,7 +122,7 @@ pub fn enclose(f: &Bounded, z: &Bounded, rm: f64, c: f64, s: f64, w: f64, level:
     let fe = f.enclose(c, s, w);
     let ze = z.enclose(c, s, w);
     // The value alone first: an arc above the level needs no more.
-    let value = fe.value.sqrt().plus(-rm).square() + ze.value.square();
+    let (rho, value) = value(&fe, &ze, rm);
     if value.lo >= level {
         return Enclosure {
             value,
@@ -115,7 +131,7 @@ pub fn enclose(f: &Bounded, z: &Bounded, rm: f64, c: f64, s: f64, w: f64, level:
             refinable: true,
         };
     }
-    let (value, arc) = natural(&fe, &ze, rm);
+    let (value, arc) = natural_from(&fe, &ze, rm, rho, value);
     let centre = natural(&f.enclose_point(c, s), &z.enclose_point(c, s), rm);
     let (Some((n1, n2, rho)), (v0, Some((g1, g2, _)))) = (arc, centre) else {
         return Enclosure {
