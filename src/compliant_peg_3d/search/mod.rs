@@ -69,7 +69,8 @@ fn polish(
     let e = pair.eval(x, a, p);
     if e.d1 != 0.0 && e.d2 > 0.0 {
         let next = a - e.d1 / e.d2;
-        if (next - a).abs() < 1e-9 {
+        // A step below the angle's resolution leaves `a` (and its outputs).
+        if next != a && (next - a).abs() < 1e-9 {
             let en = pair.eval(x, next, p);
             if en.d1.abs() < e.d1.abs() {
                 return (next.rem_euclid(std::f64::consts::TAU), en);
