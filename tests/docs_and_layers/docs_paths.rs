@@ -21,7 +21,7 @@ const ROOTS: [&str; 8] = [
     "python/",
 ];
 
-fn manifest_dir() -> PathBuf {
+pub(crate) fn manifest_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
@@ -66,7 +66,8 @@ fn named_paths(text: &str) -> Vec<String> {
     found
 }
 
-fn doc_files() -> Vec<PathBuf> {
+/// README.md, benches/README.md and every page of docs/.
+pub(crate) fn doc_files() -> Vec<PathBuf> {
     let root = manifest_dir();
     let mut files = vec![root.join("README.md"), root.join("benches/README.md")];
     if let Ok(entries) = fs::read_dir(root.join("docs")) {

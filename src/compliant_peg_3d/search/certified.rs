@@ -165,9 +165,10 @@ fn search(
             overflow = true;
         }
     };
+    // The higher-derivative cut's last end points, shared by its arcs.
+    let mut memo = order::Memo::default();
     // An entry: the arc, and whether it lies inside an arc already
     // recorded whole (a piece of an arc cut by a higher derivative).
-    let mut memo = order::Memo::default();
     let mut stack = arrayvec::ArrayVec::<(Arc, bool), STACK>::new();
     for arc in from.iter().rev() {
         if stack.try_push((*arc, false)).is_err() {

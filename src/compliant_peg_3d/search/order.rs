@@ -131,11 +131,10 @@ impl Decider<'_> {
         if let Some((_, j)) = self.memo.points.iter().flatten().find(|(u, _)| *u == t) {
             return j.map(|j| Pt { t, j });
         }
-        self.work.points += 1;
-        let j = self.prof.point(t);
-        self.memo.points[self.memo.next] = Some((t, j));
+        let p = self.at(t);
+        self.memo.points[self.memo.next] = Some((t, p.map(|p| p.j)));
         self.memo.next = 1 - self.memo.next;
-        j.map(|j| Pt { t, j })
+        p
     }
 
     /// `[a, b]` on which `h⁽ʲ⁾` has the sign `s` (proven).
