@@ -93,7 +93,20 @@ impl<'j, const N: usize> Kinematic<'j, N> {
         c: f64,
         split: KinematicSplit,
     ) -> Result<Self, Refused> {
-        let (nx, nu) = (split.positions, split.velocities);
+        match (split.positions, split.velocities) {
+            // A rigid body with a unit quaternion: loops of constant length.
+            (7, 6) => Self::new_sized(jac, c, 7, 6),
+            (nx, nu) => Self::new_sized(jac, c, nx, nu),
+        }
+    }
+
+    #[inline(always)]
+    fn new_sized(
+        jac: &'j SMatrix<f64, N, N>,
+        c: f64,
+        nx: usize,
+        nu: usize,
+    ) -> Result<Self, Refused> {
         let n = nx + nu;
         if nx == 0 || nu == 0 || n > N {
             return Err(Refused::NotThisForm);
@@ -108,7 +121,7 @@ impl<'j, const N: usize> Kinematic<'j, N> {
             }
             e[(i, i)] += c;
         }
-        let e = Lu::leading(e, nx).ok_or(Refused::PositionsSingular)?;
+        let e = Lu::leading_block(e, nx).ok_or(Refused::PositionsSingular)?;
         // M = E⁻¹ K, column by column.
         let mut m = SMatrix::<f64, N, N>::zeros();
         let mut col = [0.0; N];
@@ -133,7 +146,7 @@ impl<'j, const N: usize> Kinematic<'j, N> {
             }
             s[(i, i)] += c;
         }
-        let s = Lu::leading(s, nu).ok_or(Refused::Singular)?;
+        let s = Lu::leading_block(s, nu).ok_or(Refused::Singular)?;
         Ok(Kinematic {
             nx,
             nu,
@@ -147,7 +160,15 @@ impl<'j, const N: usize> Kinematic<'j, N> {
 
     /// Solves `(cI − J) u = r`.
     pub fn solve(&self, r: &SVector<f64, N>) -> SVector<f64, N> {
-        let (nx, nu, jac) = (self.nx, self.nu, self.jac);
+        match (self.nx, self.nu) {
+            (7, 6) => self.solve_sized(r, 7, 6),
+            (nx, nu) => self.solve_sized(r, nx, nu),
+        }
+    }
+
+    #[inline(always)]
+    fn solve_sized(&self, r: &SVector<f64, N>, nx: usize, nu: usize) -> SVector<f64, N> {
+        let jac = self.jac;
         // t = E⁻¹ r_x
         let mut t = [0.0; N];
         self.e.solve_block(r.as_slice(), &mut t, nx);

@@ -29,7 +29,14 @@ impl<const N: usize> Lu<N> {
 
     /// Factorizes the leading `n × n` block of `a` (`n ≤ N`; the rest of
     /// `a` is ignored); `None` if a pivot is zero or not finite.
-    pub fn leading(mut a: SMatrix<f64, N, N>, n: usize) -> Option<Self> {
+    pub fn leading(a: SMatrix<f64, N, N>, n: usize) -> Option<Self> {
+        Self::leading_block(a, n)
+    }
+
+    /// [`Lu::leading`] inlined into its caller, so that a caller with a
+    /// constant size gets loops of constant length.
+    #[inline(always)]
+    pub fn leading_block(mut a: SMatrix<f64, N, N>, n: usize) -> Option<Self> {
         let n = n.min(N);
         let mut perm = [0; N];
         for (i, p) in perm.iter_mut().enumerate() {
