@@ -310,6 +310,10 @@ pub enum RunError {
     /// A stop was requested (a signal, Ctrl-C) before the run finished.
     #[error("interrupted before the run finished")]
     Interrupted,
+    /// A scene field that could only be checked against the model it
+    /// runs (a state component's name).
+    #[error(transparent)]
+    Field(#[from] SceneError),
     /// Memory for a result whose size the scene sets could not be
     /// reserved (the limits were raised past what the machine has).
     #[error(transparent)]

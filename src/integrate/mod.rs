@@ -145,6 +145,13 @@ impl<'a, const N: usize> Solver<'a, N> {
         t_end: f64,
     ) -> Result<Solution<N>, IntegrateError> {
         self.options.validate(t0, t_end)?;
+        if self.options.component_atol.len() > N {
+            return Err(IntegrateError::InvalidOption {
+                name: "component_atol",
+                value: self.options.component_atol.len() as f64,
+                reason: "has more entries than the state has components",
+            });
+        }
         if let Some((index, &value)) = x0.iter().enumerate().find(|(_, v)| !v.is_finite()) {
             return Err(IntegrateError::NonFiniteInitialState { index, value });
         }

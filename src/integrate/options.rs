@@ -33,8 +33,10 @@ pub const MAX_STEP_BUDGET: usize = 1_000_000_000;
 /// Tolerances and limits of an integration.
 ///
 /// The local error estimate `e` of a step is accepted when
-/// `√(mean((eᵢ / (atol + rtol·max(|xᵢ|, |x̃ᵢ|)))²)) ≤ 1`, the mean over
-/// every component or the first [`Options::error_components`].
+/// `√(mean((eᵢ / (atolᵢ + rtol·max(|xᵢ|, |x̃ᵢ|)))²)) ≤ 1`, the mean over
+/// every component or the first [`Options::error_components`], with
+/// `atolᵢ` from [`Options::component_atol`] for the leading components and
+/// [`Options::atol`] for the others.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Options {
     /// Relative tolerance (`>= MIN_RTOL`, finite; a huge value turns the
@@ -42,6 +44,12 @@ pub struct Options {
     pub rtol: f64,
     /// Absolute tolerance (`>= MIN_ATOL`, finite), in state units.
     pub atol: f64,
+    /// Absolute tolerances of the leading components, one per component
+    /// in order (each `>= MIN_ATOL`, finite; at most the state's size),
+    /// for a state whose components have different units: a rigid body's
+    /// angular velocity (rad/s) beside its position (m). Empty (the
+    /// default): [`Options::atol`] for every component.
+    pub component_atol: Vec<f64>,
     /// Initial step; `None` chooses one from the right-hand side
     /// (Hairer, Nørsett & Wanner I, §II.4, "starting step size").
     pub h0: Option<f64>,
@@ -88,6 +96,7 @@ impl Default for Options {
         Options {
             rtol: 1e-6,
             atol: 1e-9,
+            component_atol: Vec::new(),
             h0: None,
             h_max: None,
             max_steps: 1_000_000,
@@ -144,6 +153,16 @@ impl Options {
                          weight of a component at zero overflows",
             });
         }
+        for &a in &self.component_atol {
+            positive("component_atol", a)?;
+            if a < MIN_ATOL {
+                return Err(IntegrateError::InvalidOption {
+                    name: "component_atol",
+                    value: a,
+                    reason: "must be at least 2.2e-308 (the smallest normal f64)",
+                });
+            }
+        }
         if self.max_steps > MAX_STEP_BUDGET {
             return Err(IntegrateError::InvalidOption {
                 name: "max_steps",
@@ -188,6 +207,11 @@ impl Options {
             }
         }
         Ok(())
+    }
+
+    /// The absolute tolerance of component `i`.
+    pub fn atol_of(&self, i: usize) -> f64 {
+        self.component_atol.get(i).copied().unwrap_or(self.atol)
     }
 }
 

@@ -261,13 +261,13 @@ impl<'r, 'e, 'h, const N: usize> State<'r, 'e, 'h, N> {
         if let (Some(controller), Some(err)) = (c.controller.as_mut(), err) {
             let o = &self.options;
             let n = o.error_components.unwrap_or(N);
-            let mut norm = error_norm(err, (&self.x, x1), o.rtol, o.atol, n);
+            let mut norm = error_norm(err, (&self.x, x1), o, n);
             if let Some(m) = o.fallback_components
                 && norm > 1.0
                 && norm.is_finite()
                 && h_try <= FALLBACK_FLOOR * round_off_floor(self.t, self.t_end)
             {
-                let judged = error_norm(err, (&self.x, x1), o.rtol, o.atol, m);
+                let judged = error_norm(err, (&self.x, x1), o, m);
                 if judged <= 1.0 {
                     self.stats.fallback_steps += 1;
                     norm = judged;

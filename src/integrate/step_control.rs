@@ -9,17 +9,18 @@ use nalgebra::SVector;
 
 use crate::system::OdeSystem;
 
+use super::options::Options;
 use super::solution::Stats;
 
 /// Weighted RMS norm of the error estimate `err` of the step `x0 → x1`
 /// over its first `n` components (all when `n ≥ N`):
-/// `√(mean((errᵢ / (atol + rtol·max(|x0ᵢ|, |x1ᵢ|)))²))`; not finite when
+/// `√(mean((errᵢ / (atolᵢ + rtol·max(|x0ᵢ|, |x1ᵢ|)))²))` with the
+/// tolerances of `o` (`atolᵢ` from [`Options::atol_of`]); not finite when
 /// any component of `err` is not, counted or not.
 pub(crate) fn error_norm<const N: usize>(
     err: &SVector<f64, N>,
     (x0, x1): (&SVector<f64, N>, &SVector<f64, N>),
-    rtol: f64,
-    atol: f64,
+    o: &Options,
     n: usize,
 ) -> f64 {
     let n = n.min(N);
@@ -31,7 +32,7 @@ pub(crate) fn error_norm<const N: usize>(
     }
     let mut sum = 0.0;
     for i in 0..n {
-        let scale = atol + rtol * x0[i].abs().max(x1[i].abs());
+        let scale = o.atol_of(i) + o.rtol * x0[i].abs().max(x1[i].abs());
         sum += (err[i] / scale).powi(2);
     }
     (sum / n as f64).sqrt()
@@ -89,8 +90,7 @@ pub(crate) fn initial_step<const N: usize, S: OdeSystem<N>>(
     x0: &SVector<f64, N>,
     f0: &SVector<f64, N>,
     order: u32,
-    rtol: f64,
-    atol: f64,
+    o: &Options,
     h_max: f64,
     stats: &mut Stats,
 ) -> f64 {
@@ -100,7 +100,7 @@ pub(crate) fn initial_step<const N: usize, S: OdeSystem<N>>(
         }
         let mut sum = 0.0;
         for i in 0..N {
-            sum += (v[i] / (atol + rtol * x0[i].abs())).powi(2);
+            sum += (v[i] / (o.atol_of(i) + o.rtol * x0[i].abs())).powi(2);
         }
         (sum / N as f64).sqrt()
     };

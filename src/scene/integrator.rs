@@ -6,6 +6,7 @@
 //! method = "dopri5"        # "auto" (default) | "dopri5" | "rk4" | "rodas3" (alias "rosenbrock") | "rodas4"
 //! rtol = 1e-9              # relative tolerance (adaptive methods)
 //! atol = 1e-12             # absolute tolerance, > 0 (adaptive methods)
+//! atol_scale = { wx = 50.0 } # named state components' atol is atol times this, > 0
 //! h = 1e-3                 # fixed step, s (rk4 only; required there)
 //! t0 = 0.0                 # start time, s (default 0)
 //! t_end = 10.0             # end time, s
@@ -164,6 +165,14 @@ pub struct IntegratorSpec {
     /// Absolute tolerance, in the state's units (adaptive methods).
     #[serde(default = "default_atol")]
     pub atol: f64,
+    /// Factors on `atol` for state components by name (the kind's state
+    /// names, e.g. `wx` for the 3-D peg's angular velocity, rad/s), for
+    /// components whose units or scale differ from the rest: the absolute
+    /// tolerance of a named component is `atol` times its factor, so that
+    /// it follows `atol` when that is tightened; the others keep `atol`.
+    /// Empty by default.
+    #[serde(default)]
+    pub atol_scale: std::collections::BTreeMap<String, f64>,
     /// Fixed step size, s (required for `rk4`; initial step hint otherwise).
     pub h: Option<f64>,
     /// Start time, s.
@@ -210,6 +219,37 @@ fn default_max_steps() -> usize {
 }
 
 impl IntegratorSpec {
+    /// The absolute tolerance of each leading component of a state whose
+    /// components are called `names`: `atol` times the factor of
+    /// `atol_scale` where it names the component, `atol` before the last
+    /// one it names; empty when it names none.
+    ///
+    /// # Errors
+    /// [`SceneError::Invalid`] naming `<table>.atol_scale.<name>` for a
+    /// name that is not one of `names`, with the names there are.
+    pub fn component_atol(&self, table: &str, names: &[&str]) -> Result<Vec<f64>, SceneError> {
+        let mut atol = Vec::new();
+        for (name, &value) in &self.atol_scale {
+            let Some(i) = names.iter().position(|n| n == name) else {
+                let known = if names.is_empty() {
+                    "this scene kind's state has no named components".to_string()
+                } else {
+                    format!("the state's components are {}", names.join(", "))
+                };
+                return Err(SceneError::invalid(
+                    format!("{table}.atol_scale.{name}"),
+                    value,
+                    format!("names no state component: {known}"),
+                ));
+            };
+            if atol.len() <= i {
+                atol.resize(i + 1, self.atol);
+            }
+            atol[i] = self.atol * value;
+        }
+        Ok(atol)
+    }
+
     /// The spec with [`Method::Auto`] replaced by `default`'s method, and
     /// why that method runs (named by the scene, or `default`'s reason).
     pub fn resolved(&self, default: DefaultMethod) -> (IntegratorSpec, &'static str) {
@@ -231,6 +271,9 @@ impl IntegratorSpec {
         let span = t_end - t0;
         if self.method.is_adaptive() {
             check_tolerances(&mut c, table, self.rtol, self.atol);
+            for (name, &scale) in &self.atol_scale {
+                c.positive(&f(&format!("atol_scale.{name}")), scale);
+            }
         }
         match (self.method, self.h) {
             (Method::Named(MethodKind::Rk4), None) => c.push(SceneError::Missing { field: f("h") }),
@@ -333,7 +376,13 @@ impl IntegratorSpec {
     pub fn describe(&self) -> String {
         let m = match (self.method, self.h) {
             (Method::Named(MethodKind::Rk4), Some(h)) => format!("rk4 h={h:e} s"),
-            (m, _) => format!("{} rtol={:e} atol={:e}", m.name(), self.rtol, self.atol),
+            (m, _) => {
+                let mut d = format!("{} rtol={:e} atol={:e}", m.name(), self.rtol, self.atol);
+                for (name, scale) in &self.atol_scale {
+                    d.push_str(&format!(" atol[{name}]={:e}", self.atol * scale));
+                }
+                d
+            }
         };
         format!(
             "{m}, t in [{}, {}] s",

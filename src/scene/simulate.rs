@@ -16,12 +16,17 @@ use crate::scene::progress::Progress;
 use crate::scene::summary::{EventRecord, IntegrationSummary, StepFailure};
 use crate::system::OdeSystem;
 
-/// The integrator method and options described by `spec`.
+/// The integrator method and options described by `spec`, for a state
+/// whose components are called `names` (`integrator.atol_scale`).
 ///
 /// # Errors
 /// [`RunError::Integrate`] for `rk4` without `h` (never for a spec that
-/// passed [`IntegratorSpec::check`]).
-pub fn solver_config(spec: &IntegratorSpec) -> Result<(integrate::Method, Options), RunError> {
+/// passed [`IntegratorSpec::check`]); [`RunError::Field`] for an
+/// `atol_scale` entry that names no state component.
+pub fn solver_config(
+    spec: &IntegratorSpec,
+    names: &[&str],
+) -> Result<(integrate::Method, Options), RunError> {
     let kind = spec.method.kind().unwrap_or(MethodKind::Dopri5);
     let method = kind.with_step(spec.h).ok_or({
         RunError::Integrate(IntegrateError::InvalidOption {
@@ -31,6 +36,7 @@ pub fn solver_config(spec: &IntegratorSpec) -> Result<(integrate::Method, Option
         })
     })?;
     let mut options = Options::with_tolerances(spec.rtol, spec.atol);
+    options.component_atol = spec.component_atol("integrator", names)?;
     options.max_steps = spec.max_steps;
     options.output = OutputMode::AtTimes(spec.try_output_times()?);
     if spec.method.is_adaptive() {
@@ -69,7 +75,7 @@ pub fn integrate_watching<'a, const N: usize, S: OdeSystem<N>>(
     progress: &'a mut Progress,
     on_step: impl FnMut(f64, &SVector<f64, N>) + 'a,
 ) -> Result<Solution<N>, RunError> {
-    let mut solver = configured(spec, events, true, progress)?
+    let mut solver = configured(spec, system.state_names(), events, true, progress)?
         .with_progress(|t| progress.update(t))
         .with_step_observer(on_step);
     let mut sol = interrupted(solver.solve(system, spec.t0, x0, spec.t_end)?)?;
@@ -100,11 +106,12 @@ pub fn with_final_sample<const N: usize>(sol: &mut Solution<N>) {
 /// `progress`'s span.
 fn configured<'a, const N: usize>(
     spec: &IntegratorSpec,
+    names: &[&str],
     events: Vec<Event<'a, N>>,
     store: bool,
     progress: &mut Progress,
 ) -> Result<Solver<'a, N>, RunError> {
-    let (method, mut options) = solver_config(spec)?;
+    let (method, mut options) = solver_config(spec, names)?;
     options.store = store;
     progress.set_span(spec.t0, spec.t_end);
     Ok(events
@@ -132,7 +139,7 @@ pub fn integrate_streaming<'a, const N: usize, S: OdeSystem<N>>(
     progress: &'a mut Progress,
     mut sink: impl FnMut(f64, &SVector<f64, N>) -> Result<(), RunError> + 'a,
 ) -> Result<Solution<N>, RunError> {
-    let solver = configured(spec, events, false, progress)?;
+    let solver = configured(spec, system.state_names(), events, false, progress)?;
     let mut failed: Option<RunError> = None;
     let mut last: Option<f64> = None;
     let sol = {

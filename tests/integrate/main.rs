@@ -5,6 +5,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
+mod component_atol;
 mod error_components;
 mod events;
 mod hostile;

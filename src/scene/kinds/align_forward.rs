@@ -306,7 +306,8 @@ impl Scene for AlignForwardScene {
     fn run(&self, ctx: &mut RunContext) -> Result<RunSummary, RunError> {
         let model = self.forward_model()?;
         let spec = &self.integrator;
-        let (method, mut options): (_, Options) = solver_config(spec)?;
+        let (method, mut options): (_, Options) =
+            solver_config(spec, &crate::generated::rigid_peg::X_NAMES)?;
         options.output = OutputMode::AtTimes(spec.try_output_times()?);
         let x0 = self.initial_state();
         ctx.progress.set_span(spec.t0, spec.t_end);

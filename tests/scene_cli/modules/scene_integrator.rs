@@ -13,6 +13,7 @@ fn spec(method: Method) -> IntegratorSpec {
         t_end: 1.0,
         output_interval: Some(0.3),
         max_steps: 10,
+        atol_scale: Default::default(),
     }
 }
 
@@ -68,4 +69,19 @@ fn rk4_needs_h_and_bad_tolerances_are_named() {
     let e = s.check("integrator").unwrap_err().to_string();
     assert!(e.contains("integrator.rtol") && e.contains("-1e-6"), "{e}");
     assert!(e.contains("integrator.t_end"), "{e}");
+}
+
+#[test]
+fn atol_scale_values_are_checked_and_described() {
+    let mut s = spec(Method::Named(MethodKind::Rodas4));
+    s.atol_scale.insert("wx".into(), 50.0);
+    assert!(s.check("integrator").is_ok());
+    // The described tolerance is atol (1e-10) times the factor.
+    assert!(s.describe().contains("atol[wx]=5e-9"), "{}", s.describe());
+    s.atol_scale.insert("wy".into(), 0.0);
+    s.atol_scale.insert("wz".into(), f64::NAN);
+    let e = s.check("integrator").unwrap_err().to_string();
+    assert!(e.contains("integrator.atol_scale.wy"), "{e}");
+    assert!(e.contains("integrator.atol_scale.wz"), "{e}");
+    assert!(!e.contains("atol_scale.wx"), "{e}");
 }

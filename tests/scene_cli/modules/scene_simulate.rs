@@ -21,23 +21,46 @@ fn spec(method: Method, h: Option<f64>) -> IntegratorSpec {
         t_end: 2.0,
         output_interval: Some(0.5),
         max_steps: 100_000,
+        atol_scale: Default::default(),
     }
 }
 
 #[test]
 fn config_maps_methods_and_output_times() {
-    let (m, o) = solver_config(&spec(Method::Named(MethodKind::Rk4), Some(0.01))).unwrap();
+    let (m, o) = solver_config(&spec(Method::Named(MethodKind::Rk4), Some(0.01)), &[]).unwrap();
     assert_eq!(m, integrate::Method::Rk4 { h: 0.01 });
     assert_eq!(o.output, OutputMode::AtTimes(vec![0.0, 0.5, 1.0, 1.5, 2.0]));
     assert_eq!(o.h0, None);
-    let (m, o) = solver_config(&spec(Method::Named(MethodKind::Dopri5), Some(1e-3))).unwrap();
+    let (m, o) = solver_config(&spec(Method::Named(MethodKind::Dopri5), Some(1e-3)), &[]).unwrap();
     assert_eq!(
         (m, o.h0, o.rtol, o.atol),
         (integrate::Method::Dopri5, Some(1e-3), 1e-9, 1e-12)
     );
-    assert!(solver_config(&spec(Method::Named(MethodKind::Rk4), None)).is_err());
-    let (m, _) = solver_config(&spec(Method::Named(MethodKind::Rodas3), None)).unwrap();
+    assert!(solver_config(&spec(Method::Named(MethodKind::Rk4), None), &[]).is_err());
+    let (m, _) = solver_config(&spec(Method::Named(MethodKind::Rodas3), None), &[]).unwrap();
     assert_eq!(m, integrate::Method::Rodas3);
+}
+
+#[test]
+fn atol_scale_sets_the_named_components_and_names_a_wrong_one() {
+    let names = ["x", "v", "w", "e"];
+    let mut s = spec(Method::Named(MethodKind::Rodas4), None);
+    let (_, o) = solver_config(&s, &names).unwrap();
+    assert!(o.component_atol.is_empty());
+    s.atol_scale.insert("w".into(), 64.0);
+    s.atol_scale.insert("x".into(), 0.5);
+    let (_, o) = solver_config(&s, &names).unwrap();
+    // atol (1e-12) times the factor up to the last named component; the
+    // others keep atol.
+    assert_eq!(o.component_atol, vec![0.5e-12, 1e-12, 64e-12]);
+    assert_eq!(
+        (o.atol_of(1), o.atol_of(2), o.atol_of(3)),
+        (1e-12, 64e-12, 1e-12)
+    );
+    s.atol_scale.insert("omega".into(), 10.0);
+    let e = solver_config(&s, &names).unwrap_err().to_string();
+    assert!(e.contains("integrator.atol_scale.omega"), "{e}");
+    assert!(e.contains("x, v, w, e"), "{e}");
 }
 
 #[test]

@@ -24,6 +24,7 @@ use crate::compliant_peg::params::N_PARAMS;
 use crate::compliant_peg::system::N_STATE;
 use crate::compliant_peg::{ContactSet, FrictionLaw};
 use crate::error::{RunError, SceneError, SceneErrors};
+use crate::generated::compliant_peg as all;
 use crate::integrate::Options;
 use crate::scene::context::RunContext;
 use crate::scene::integrator::IntegratorSpec;
@@ -166,6 +167,7 @@ pub fn compute(
     let options = Options {
         max_steps: integrator.max_steps,
         h0: integrator.h,
+        component_atol: integrator.component_atol("integrator", &all::Y_NAMES)?,
         ..Options::with_tolerances(integrator.rtol, integrator.atol)
     };
     let y0 = b.initial.to_vector();
