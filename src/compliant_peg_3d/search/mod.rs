@@ -83,7 +83,7 @@ fn polish(
 /// The gap up to which [`Search::find`] also finds the minima of a pair
 /// out of contact (m): their least gap is the clearance by which the pose
 /// may move before the pair can touch.
-pub const CLEARANCE: f64 = 1e-4;
+pub const CLEARANCE: f64 = 3e-5;
 
 /// A pair certified apart at a pose: every point of the pair's circle has
 /// a gap of at least `margin` there.
