@@ -25,14 +25,14 @@ fn a_component_scaled_with_its_tolerance_takes_the_same_steps() {
     // are the same and the solution agrees to 1e-9.
     let s = 2f64.powi(20);
     for method in [Method::Dopri5, Method::Rodas3, Method::Rodas4] {
-        let plain = Solver::new(method.clone(), Options::with_tolerances(1e-6, 1e-6))
+        let plain = Solver::new(method, Options::with_tolerances(1e-6, 1e-6))
             .solve(&oscillator(1.0), 0.0, Vector2::new(1.0, 0.0), 20.0)
             .expect("solves");
         let scaled = Options {
             component_atol: vec![1e-6, 1e-6 / s],
             ..Options::with_tolerances(1e-6, 1e-6)
         };
-        let sol = Solver::new(method.clone(), scaled)
+        let sol = Solver::new(method, scaled)
             .solve(&oscillator(s), 0.0, Vector2::new(1.0, 0.0), 20.0)
             .expect("solves");
         assert_eq!(sol.stats.steps, plain.stats.steps, "{method:?}");
@@ -48,7 +48,7 @@ fn a_component_scaled_with_its_tolerance_takes_the_same_steps() {
         // One tolerance for both: the velocity, about 1e-6 in size, is
         // held to 1e-6 absolute, no digit at all, and the run takes fewer
         // steps than one that controls it.
-        let one = Solver::new(method.clone(), Options::with_tolerances(1e-6, 1e-6))
+        let one = Solver::new(method, Options::with_tolerances(1e-6, 1e-6))
             .solve(&oscillator(s), 0.0, Vector2::new(1.0, 0.0), 20.0)
             .expect("solves");
         assert!(
