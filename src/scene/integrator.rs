@@ -272,7 +272,22 @@ impl IntegratorSpec {
         if self.method.is_adaptive() {
             check_tolerances(&mut c, table, self.rtol, self.atol);
             for (name, &scale) in &self.atol_scale {
-                c.positive(&f(&format!("atol_scale.{name}")), scale);
+                let field = f(&format!("atol_scale.{name}"));
+                let scale = c.positive(&field, scale);
+                let atol = scale * self.atol;
+                if scale > 0.0
+                    && self.atol > 0.0
+                    && !(atol.is_finite() && atol >= f64::MIN_POSITIVE)
+                {
+                    c.push(SceneError::invalid(
+                        field,
+                        scale,
+                        format!(
+                            "atol times it ({atol:e}) must be a finite number of at least 2.2e-308 \
+                             (the smallest normal f64)"
+                        ),
+                    ));
+                }
             }
         }
         match (self.method, self.h) {

@@ -84,4 +84,13 @@ fn atol_scale_values_are_checked_and_described() {
     assert!(e.contains("integrator.atol_scale.wy"), "{e}");
     assert!(e.contains("integrator.atol_scale.wz"), "{e}");
     assert!(!e.contains("atol_scale.wx"), "{e}");
+    // A factor whose tolerance overflows or falls below the smallest
+    // normal f64 is refused by name, before the run.
+    let mut s = spec(Method::Named(MethodKind::Rodas4));
+    s.atol = 1e10;
+    s.atol_scale.insert("wx".into(), 1e300);
+    s.atol_scale.insert("wy".into(), 1e-320);
+    let e = s.check("integrator").unwrap_err().to_string();
+    assert!(e.contains("integrator.atol_scale.wx"), "{e}");
+    assert!(e.contains("integrator.atol_scale.wy"), "{e}");
 }
