@@ -131,6 +131,19 @@ impl Options {
                 })
             }
         };
+        // An absolute tolerance, `atol` or one of `component_atol`.
+        let absolute = |name: &'static str, value: f64| {
+            positive(name, value)?;
+            if value < MIN_ATOL {
+                return Err(IntegrateError::InvalidOption {
+                    name,
+                    value,
+                    reason: "must be at least 2.2e-308 (the smallest normal f64): below, the \
+                             error weight of a component at zero overflows",
+                });
+            }
+            Ok(())
+        };
         if !(t0.is_finite() && t_end.is_finite() && t_end >= t0) {
             return Err(IntegrateError::InvalidSpan { t0, t_end });
         }
@@ -145,23 +158,9 @@ impl Options {
                          without end",
             });
         }
-        if self.atol < MIN_ATOL {
-            return Err(IntegrateError::InvalidOption {
-                name: "atol",
-                value: self.atol,
-                reason: "must be at least 2.2e-308 (the smallest normal f64): below, the error \
-                         weight of a component at zero overflows",
-            });
-        }
+        absolute("atol", self.atol)?;
         for &a in &self.component_atol {
-            positive("component_atol", a)?;
-            if a < MIN_ATOL {
-                return Err(IntegrateError::InvalidOption {
-                    name: "component_atol",
-                    value: a,
-                    reason: "must be at least 2.2e-308 (the smallest normal f64)",
-                });
-            }
+            absolute("component_atol", a)?;
         }
         if self.max_steps > MAX_STEP_BUDGET {
             return Err(IntegrateError::InvalidOption {

@@ -250,6 +250,25 @@ impl IntegratorSpec {
         Ok(atol)
     }
 
+    /// The integrators' [`Options`](crate::integrate::Options) with this
+    /// table's tolerances: `rtol`, `atol` and, for a state whose
+    /// components are called `names`, the components' tolerances of
+    /// [`IntegratorSpec::component_atol`]; every other option at its
+    /// default.
+    ///
+    /// # Errors
+    /// As [`IntegratorSpec::component_atol`].
+    pub fn tolerances(
+        &self,
+        table: &str,
+        names: &[&str],
+    ) -> Result<crate::integrate::Options, SceneError> {
+        Ok(crate::integrate::Options {
+            component_atol: self.component_atol(table, names)?,
+            ..crate::integrate::Options::with_tolerances(self.rtol, self.atol)
+        })
+    }
+
     /// The spec with [`Method::Auto`] replaced by `default`'s method, and
     /// why that method runs (named by the scene, or `default`'s reason).
     pub fn resolved(&self, default: DefaultMethod) -> (IntegratorSpec, &'static str) {
@@ -275,16 +294,14 @@ impl IntegratorSpec {
                 let field = f(&format!("atol_scale.{name}"));
                 let scale = c.positive(&field, scale);
                 let atol = scale * self.atol;
-                if scale > 0.0
-                    && self.atol > 0.0
-                    && !(atol.is_finite() && atol >= f64::MIN_POSITIVE)
-                {
+                let least = crate::integrate::MIN_ATOL;
+                if scale > 0.0 && self.atol > 0.0 && !(atol.is_finite() && atol >= least) {
                     c.push(SceneError::invalid(
                         field,
                         scale,
                         format!(
-                            "atol times it ({atol:e}) must be a finite number of at least 2.2e-308 \
-                             (the smallest normal f64)"
+                            "atol times it ({atol:e}) must be a finite number of at least \
+                             {least:e} (the smallest normal f64)"
                         ),
                     ));
                 }

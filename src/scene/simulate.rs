@@ -35,8 +35,7 @@ pub fn solver_config(
             reason: "is required for rk4",
         })
     })?;
-    let mut options = Options::with_tolerances(spec.rtol, spec.atol);
-    options.component_atol = spec.component_atol("integrator", names)?;
+    let mut options = spec.tolerances("integrator", names)?;
     options.max_steps = spec.max_steps;
     options.output = OutputMode::AtTimes(spec.try_output_times()?);
     if spec.method.is_adaptive() {

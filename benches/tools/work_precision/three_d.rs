@@ -27,7 +27,7 @@ use nalgebra::SVector;
 use pegdyn::compliant_peg_3d::Peg3dParams;
 use pegdyn::compliant_peg_3d::insertion::{Insertion, N_STATE, depth_tilt, peg_state};
 use pegdyn::compliant_peg_3d::outcome::{CountCache, TERMINAL_NAMES, transition_events};
-use pegdyn::integrate::{MethodKind, Options, OutputMode, Solution, Solver, Stats};
+use pegdyn::integrate::{MethodKind, OutputMode, Solution, Solver, Stats};
 use pegdyn::output::csv::{CsvWriter, format_f64};
 use pegdyn::output::plot::{Figure, Panel, Scale, Series, Style};
 use pegdyn::scene::document::Document;
@@ -214,9 +214,8 @@ pub fn run(case: &Case, kind: MethodKind, setting: f64) -> Measured {
             let cache = CountCache::new(&sys);
             let (events, _) = transition_events(&cache);
             let method = kind.with_step(spec.h).expect("a step for RK4");
-            let mut opts = Options::with_tolerances(spec.rtol, spec.atol);
-            opts.component_atol = spec
-                .component_atol(
+            let mut opts = spec
+                .tolerances(
                     "integrator",
                     &pegdyn::compliant_peg_3d::insertion::STATE_NAMES,
                 )

@@ -167,8 +167,7 @@ pub fn compute(
     let options = Options {
         max_steps: integrator.max_steps,
         h0: integrator.h,
-        component_atol: integrator.component_atol("integrator", &all::Y_NAMES)?,
-        ..Options::with_tolerances(integrator.rtol, integrator.atol)
+        ..integrator.tolerances("integrator", &all::Y_NAMES)?
     };
     let y0 = b.initial.to_vector();
     let (t0, t_end, target) = (integrator.t0, integrator.t_end, p.target_depth);

@@ -278,13 +278,12 @@ type PlainRun = (
 fn plain(b: &Built, integrator: &IntegratorSpec) -> Result<PlainRun, RunError> {
     let sys = Insertion::new(b.params, Some(b.held), 0.0);
     let y0 = b.start_state(&sys);
-    let (method, base) =
-        solver_config(integrator, &crate::compliant_peg_3d::insertion::STATE_NAMES)?;
+    let names = &crate::compliant_peg_3d::insertion::STATE_NAMES;
+    let (method, _) = solver_config(integrator, names)?;
     let options = Options {
         max_steps: integrator.max_steps,
         h0: integrator.h,
-        component_atol: base.component_atol,
-        ..Options::with_tolerances(integrator.rtol, integrator.atol)
+        ..integrator.tolerances("integrator", names)?
     };
     Ok((sys, y0, (method, options)))
 }
