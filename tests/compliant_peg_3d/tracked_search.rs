@@ -5,7 +5,10 @@
 //! to 1 mm and the matching rotation, so that contacts appear where the
 //! record had the circle clear), every contact of a fresh search
 //! is found with its angle to 10⁻⁹ rad and its depth and point to
-//! 10⁻¹² m, and nothing else deeper than grazing.
+//! 10⁻¹² m, and nothing else deeper than grazing; the same when each move
+//! also turns the peg about the hole's axis by up to π (the rim's pairs
+//! keep their records through a turn, the peg's side against the mouth
+//! edge does not).
 
 use crate::common::peg3d::fig9;
 use crate::common::rng::Rng;
@@ -13,6 +16,7 @@ use crate::common::search_reference::{GRAZING, Geo, Pose, angle_distance, near_c
 use crate::insertion_split::insertion_peg;
 use nalgebra::{SVector, Unit, UnitQuaternion, Vector3};
 use pegdyn::compliant_peg_3d::{ContactPoint, Contacts, Pair, Peg3dParams, Search};
+use std::f64::consts::PI;
 
 /// `x` moved by `size` (m) in a random direction and turned by
 /// `size / 0.02` rad about a random axis.
@@ -25,11 +29,22 @@ fn moved(x: &SVector<f64, 7>, size: f64, rng: &mut Rng) -> SVector<f64, 7> {
     SVector::from([p.x, p.y, p.z, q.w, q.i, q.j, q.k])
 }
 
-/// What a walk compared: searches from a tracked record, contacts
-/// matched, failures.
+/// `x` turned about the hole's axis `e_z` by `phi` (rad): position and
+/// orientation both, the same pose relative to the hole.
+fn turned(x: &SVector<f64, 7>, phi: f64) -> SVector<f64, 7> {
+    let turn = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), phi);
+    let q0 = UnitQuaternion::new_normalize(nalgebra::Quaternion::new(x[3], x[4], x[5], x[6]));
+    let q = turn * q0;
+    let p = turn * Vector3::new(x[0], x[1], x[2]);
+    SVector::from([p.x, p.y, p.z, q.w, q.i, q.j, q.k])
+}
+
+/// What a walk compared: searches from a tracked record, searches whose
+/// pair's window dropped arcs, contacts matched, failures.
 #[derive(Default)]
 struct Walks {
     tracked: usize,
+    windowed: usize,
     matched: usize,
     failures: Vec<String>,
 }
@@ -79,7 +94,11 @@ fn compare(
     }
 }
 
-fn walks(prm: &Peg3dParams, seed: u64, starts: usize) -> Walks {
+/// Walks of eight moves from poses near contact, each move of 1 nm to
+/// 1 mm, and, with `turns`, turned about the hole's axis by up to π as
+/// well (the same pose relative to the hole for the rim's pairs, the mouth
+/// edge's points moved along its circle for the peg's side).
+fn walks(prm: &Peg3dParams, seed: u64, starts: usize, turns: bool) -> Walks {
     let g = Geo::of(prm);
     let mut rng = Rng(seed);
     let mut w = Walks::default();
@@ -92,8 +111,47 @@ fn walks(prm: &Peg3dParams, seed: u64, starts: usize) -> Walks {
         for _ in 0..8 {
             let size = 10f64.powf(rng.uniform(-9.0, -3.0));
             x = moved(&x, size, &mut rng);
+            if turns {
+                x = turned(&x, rng.uniform(-PI, PI));
+            }
             let kept = find(&mut s, pair, prm, &x);
             w.tracked += usize::from(s.work.tracked);
+            w.windowed += usize::from(s.work.windowed);
+            let fresh = find(&mut Search::default(), pair, prm, &x);
+            compare(pair, &x, &kept, &fresh, &mut w);
+        }
+    }
+    w
+}
+
+/// Walks of the two pairs with a window (the rim against the bore wall,
+/// the mouth edge against the peg's side) from poses near contact, each
+/// move a slide of 1 µm to 0.1 mm along the window's coordinate (down or
+/// up the hole's axis for the wall, along the peg's axis for its side),
+/// which moves no gap and carries a contact into or out of the part of
+/// the surface that exists.
+fn walks_along(prm: &Peg3dParams, seed: u64, starts: usize) -> Walks {
+    let g = Geo::of(prm);
+    let mut rng = Rng(seed);
+    let mut w = Walks::default();
+    for n in 0..starts {
+        let pair = [Pair::RimWall, Pair::EdgeSide][n % 2];
+        let mut x = near_contact(&g, pair, &mut rng).x();
+        let mut s = Search::default();
+        find(&mut s, pair, prm, &x);
+        for _ in 0..8 {
+            let size = 10f64.powf(rng.uniform(-6.0, -4.0));
+            let sign = if rng.next_f64() < 0.5 { -1.0 } else { 1.0 };
+            let along = match pair {
+                Pair::RimWall => Vector3::z(),
+                _ => pegdyn::compliant_peg_3d::axis_of(&x),
+            };
+            for i in 0..3 {
+                x[i] += sign * size * along[i];
+            }
+            let kept = find(&mut s, pair, prm, &x);
+            w.tracked += usize::from(s.work.tracked);
+            w.windowed += usize::from(s.work.windowed);
             let fresh = find(&mut Search::default(), pair, prm, &x);
             compare(pair, &x, &kept, &fresh, &mut w);
         }
@@ -103,8 +161,9 @@ fn walks(prm: &Peg3dParams, seed: u64, starts: usize) -> Walks {
 
 fn check(w: &Walks, starts: usize) {
     eprintln!(
-        "{} tracked searches, {} contacts matched, {} failures",
+        "{} tracked searches ({} windowed), {} contacts matched, {} failures",
         w.tracked,
+        w.windowed,
         w.matched,
         w.failures.len()
     );
@@ -115,17 +174,30 @@ fn check(w: &Walks, starts: usize) {
     );
     // The walks exercise the tracked search and meet contacts.
     assert!(w.tracked > starts, "{} tracked searches", w.tracked);
+    assert!(w.windowed > starts / 10, "{} windowed searches", w.windowed);
     assert!(w.matched > starts, "{} contacts", w.matched);
 }
 
 #[test]
 fn a_tracked_search_finds_the_fresh_searchs_contacts_on_the_fig9_peg() {
     let starts = 20_000;
-    check(&walks(&fig9(), 0x72AC_0001, starts), starts);
+    check(&walks(&fig9(), 0x72AC_0001, starts, false), starts);
+}
+
+#[test]
+fn a_tracked_search_finds_the_fresh_searchs_contacts_as_the_peg_slides_out_of_a_window() {
+    let starts = 20_000;
+    check(&walks_along(&fig9(), 0x72AC_0004, starts), starts);
+}
+
+#[test]
+fn a_tracked_search_finds_the_fresh_searchs_contacts_when_the_peg_turns_about_the_hole() {
+    let starts = 20_000;
+    check(&walks(&fig9(), 0x72AC_0003, starts, true), starts);
 }
 
 #[test]
 fn a_tracked_search_finds_the_fresh_searchs_contacts_on_the_insertion_peg() {
     let starts = 20_000;
-    check(&walks(&insertion_peg(), 0x72AC_0002, starts), starts);
+    check(&walks(&insertion_peg(), 0x72AC_0002, starts, false), starts);
 }

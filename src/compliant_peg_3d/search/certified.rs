@@ -8,7 +8,12 @@
 //! - `h > T` on the arc (the value's lower bound is at least `T`),
 //! - `h′ ≠ 0` on the arc (the slope's enclosure excludes zero: `h` is
 //!   monotone on the closed arc, so it has no stationary point there),
-//! - `h″ < 0` on the arc (concave: a stationary point there is a maximum).
+//! - `h″ < 0` on the arc (concave: a stationary point there is a maximum),
+//! - for the contact path ([`minima_kept`], [`minima_on`]), the pair's
+//!   [`Window`] excludes the arc: the contact's coordinate (the rim's
+//!   height on the bore wall, the axial coordinate on the peg's side)
+//!   keeps out of the part of the surface that exists, so no minimum
+//!   there is a contact.
 //!
 //! An arc with `h″ > 0` on it (convex) has at most one stationary point,
 //! a minimum, which exists exactly when `h′` changes sign from the arc's
@@ -43,7 +48,7 @@
 
 use super::minimum::{Angles, Work, newton, push};
 use super::order;
-use super::profile::Profile;
+use super::profile::{Profile, Window};
 use super::start;
 use std::f64::consts::TAU;
 
@@ -91,7 +96,8 @@ pub const KEPT: usize = 32;
 
 /// The arcs of a search that its level did not drop, each as it was
 /// decided (an arc cut by [`order`] whole, not its pieces): with the
-/// arcs dropped because `h ≥ T` on them they cover the circle. `complete`
+/// arcs dropped because `h ≥ T` on them, or because the pair's window
+/// excluded them, they cover the circle. `complete`
 /// is false when they did not fit, or when the search could not decide
 /// every arc (budget, room, a constant profile): such a record cannot
 /// stand for the search.
@@ -106,7 +112,7 @@ pub struct Kept {
 /// Every local minimum of `prof` with `h < level` (and possibly other
 /// local minima), angles in `[0, 2π)`, into `out`.
 pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
-    search(prof, level, &starts(), out, None)
+    search(prof, level, None, &starts(), out, None)
 }
 
 /// The start arcs.
@@ -122,9 +128,17 @@ fn starts() -> [Arc; START] {
     })
 }
 
-/// [`minima`], with the arcs its level did not drop into `kept`.
-pub fn minima_kept(prof: &Profile, level: f64, out: &mut Angles, kept: &mut Kept) -> Work {
-    search(prof, level, &starts(), out, Some(kept))
+/// [`minima`] on the arcs where `window` admits a valid contact (the
+/// others are dropped: [`Work::windowed`]), with the arcs neither its
+/// level nor the window dropped into `kept`.
+pub fn minima_kept(
+    prof: &Profile,
+    level: f64,
+    window: Option<&Window>,
+    out: &mut Angles,
+    kept: &mut Kept,
+) -> Work {
+    search(prof, level, window, &starts(), out, Some(kept))
 }
 
 /// Every local minimum of `prof` with `h < level` on the arcs `from`
@@ -132,15 +146,23 @@ pub fn minima_kept(prof: &Profile, level: f64, out: &mut Angles, kept: &mut Kept
 /// started from those arcs instead of the start arcs. With the arcs of a
 /// [`Kept`] record taken at another pose, these are the minima below the
 /// level everywhere except on the arcs that record's level dropped.
-pub fn minima_on(prof: &Profile, level: f64, from: &[Arc], out: &mut Angles) -> Work {
-    search(prof, level, from, out, None)
+pub fn minima_on(
+    prof: &Profile,
+    level: f64,
+    window: Option<&Window>,
+    from: &[Arc],
+    out: &mut Angles,
+) -> Work {
+    search(prof, level, window, from, out, None)
 }
 
-/// The branch and bound from the arcs `from`, recording into `kept` the
-/// arcs its level did not drop.
+/// The branch and bound from the arcs `from`, dropping the arcs outside
+/// `window` and recording into `kept` the arcs neither its level nor the
+/// window dropped.
 fn search(
     prof: &Profile,
     level: f64,
+    window: Option<&Window>,
     from: &[Arc],
     out: &mut Angles,
     mut kept: Option<&mut Kept>,
@@ -190,6 +212,12 @@ fn search(
         let m = 0.5 * (lo + hi);
         let (s, c) = start::sin_cos(m);
         let w = half_width(lo, hi, m);
+        if let Some(win) = window
+            && win.excludes(c, s, w)
+        {
+            work.windowed = true;
+            continue;
+        }
         let e = prof.enclose(c, s, w, level);
         if e.value.lo >= level {
             continue;

@@ -39,6 +39,9 @@ pub struct Work {
     /// Searched only on the arcs an earlier full search at a nearby pose
     /// kept (the rest of the circle was certified clear from there).
     pub tracked: bool,
+    /// Arcs were dropped because the pair's [`super::profile::Window`]
+    /// excluded them (no valid contact there, whatever the gap).
+    pub windowed: bool,
 }
 
 /// The zero of `h′` in `[lo, hi]`, `h′` increasing there, from the slopes

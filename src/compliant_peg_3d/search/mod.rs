@@ -21,13 +21,13 @@
 //! after an impact, along a sweep and along a smooth run.
 //!
 //! Along a run, [`Search::find`] keeps two records of a pair's last full
-//! search, each with the bound `moved` on how far any point's gap can
+//! search, each with the bound `moved_within` on how far any point's gap can
 //! have changed since: a pair found apart by `m` is not searched again
 //! while the pose moves less than `m`; otherwise, while the pose stays
 //! within [`TRACK`] of the last full search, only the arcs that search
 //! could not show to be at least [`CLEARANCE`] clear are searched again
 //! (the others keep a gap of at least `CLEARANCE − TRACK`), for the minima
-//! below [`TRACKED_BELOW`] only. `moved` counts only the motion the fixed
+//! below [`TRACKED_BELOW`] only. `moved_within` counts only the motion the fixed
 //! surface sees: the horizontal part for the bore wall, the vertical part
 //! for the faces, the part across the peg's axis for its side. Either way
 //! every contact is found as by a fresh search, and agrees with a fresh
@@ -52,7 +52,7 @@ use super::params::Peg3dParams;
 use nalgebra::SVector;
 
 pub use minimum::{Angles, MAX_MINIMA, Work};
-use profile::Problem;
+use profile::{Problem, Window};
 
 /// The minimum at `a` (from the profile) as a root of the generated
 /// function's own `g′`: one Newton step on the generated derivatives, kept
@@ -91,6 +91,9 @@ pub const CLEARANCE: f64 = 3e-5;
 struct Clear {
     pose: SVector<f64, 7>,
     margin: f64,
+    /// Arcs were dropped by the pair's window: the bound counts the
+    /// whole displacement ([`moved_within`]).
+    windowed: bool,
 }
 
 /// A bound on how much any point's gap of `pair` changes from pose `a` to
@@ -114,20 +117,104 @@ struct Clear {
 ///   no gap of the side) plus `|(m − p) × (a′ − a)| ≤ 2|Δq| |m − p|`, with
 ///   `|m − p| ≤ R_m + |p − o|` (`o = −ρ_h e_z` the mouth's centre).
 ///
+/// A search that dropped arcs by the pair's window ([`profile::Window`],
+/// `windowed`) also needs the window's coordinate to move less than the
+/// bound: for the rim against the bore wall the height of a rim point
+/// moves by at most `|Δp_z| + 2|Δq| √(ϱ² + (L/2 − ρ_p)²)`, for the peg's
+/// side the axial coordinate `(m − p)·a` by at most `|Δp| + 2|Δq| |m −
+/// p|`; such a bound counts the whole `|Δp|` for both.
+///
 /// The sum is widened by `10⁻¹²` of itself and `8ε |Δp|` for its rounding.
-fn moved(pair: Pair, p: &SVector<f64, 16>, a: &SVector<f64, 7>, b: &SVector<f64, 7>) -> f64 {
+///
+/// Every fixed surface (the bore wall, the faces, the mouth edge) is a
+/// surface of revolution about the hole's axis `e_z`, so the gap of each
+/// point of the peg's rim (its angle in the peg's frame) is the same at
+/// `b` and at `b` turned about `e_z` by any angle φ (`p ↦ R_z(φ) p`,
+/// `q ↦ q_z(φ) ⊗ q`): for the rim's pairs the bound is the lesser of the
+/// bound to `b` and to `b` turned by the φ that brings its orientation
+/// nearest `a`'s ([`turned_towards`]), so that a peg precessing about the
+/// hole's axis moves only by what changes its pose relative to the hole.
+/// The mouth edge against the peg's side runs over the mouth's circle,
+/// fixed in the hole's frame: a turn moves its points by φ, and its bound
+/// is the direct one.
+///
+/// Returns whether the bound is below `limit` (the turn is tried only
+/// when the direct bound is not).
+fn moved_within(
+    pair: Pair,
+    p: &SVector<f64, 16>,
+    (a, b): (&SVector<f64, 7>, &SVector<f64, 7>),
+    windowed: bool,
+    limit: f64,
+) -> bool {
+    if moved_to(pair, p, a, b, windowed) < limit {
+        return true;
+    }
+    if pair == Pair::EdgeSide {
+        return false;
+    }
+    turned_towards(a, b).is_some_and(|t| {
+        // The turned pose is rounded: its points lie within a few ulps of
+        // the body's size of the exact turn's.
+        let size = b.fixed_rows::<3>(0).norm() + p[0] + p[1] + p[3] + p[4];
+        moved_to(pair, p, a, &t, windowed) + 16.0 * f64::EPSILON * size < limit
+    })
+}
+
+/// Pose `b` turned about the hole's axis `e_z` by the angle φ that brings
+/// its orientation nearest `a`'s (unit quaternions `(w, i, j, k)`).
+///
+/// `q_z(φ) ⊗ q = c q + s K(q)` with `(c, s) = (cos φ/2, sin φ/2)` and
+/// `K(w, i, j, k) = (−k, −j, i, w)`; `a·(c q + s K q) = c A + s B` (`A =
+/// a·q`, `B = a·K(q)`) is greatest, `√(A² + B²)`, at `(c, s) = (A, B)/√(A²
+/// + B²)`; the position turns by `cos φ = c² − s²`, `sin φ = 2cs`. `None`
+/// when `A = B = 0` (no turn is nearer than another).
+fn turned_towards(a: &SVector<f64, 7>, b: &SVector<f64, 7>) -> Option<SVector<f64, 7>> {
+    let (w, i, j, k) = (b[3], b[4], b[5], b[6]);
+    let big_a = a[3] * w + a[4] * i + a[5] * j + a[6] * k;
+    let big_b = -a[3] * k - a[4] * j + a[5] * i + a[6] * w;
+    let norm = big_a.hypot(big_b);
+    if norm == 0.0 || !norm.is_finite() {
+        return None;
+    }
+    let (c, s) = (big_a / norm, big_b / norm);
+    let (cos, sin) = (c * c - s * s, 2.0 * c * s);
+    Some(SVector::from([
+        cos * b[0] - sin * b[1],
+        sin * b[0] + cos * b[1],
+        b[2],
+        c * w - s * k,
+        c * i - s * j,
+        c * j + s * i,
+        c * k + s * w,
+    ]))
+}
+
+/// [`moved_within`] from `a` to `b` as they stand (no turn about the axis).
+fn moved_to(
+    pair: Pair,
+    p: &SVector<f64, 16>,
+    a: &SVector<f64, 7>,
+    b: &SVector<f64, 7>,
+    windowed: bool,
+) -> f64 {
     let d = b.fixed_rows::<3>(0) - a.fixed_rows::<3>(0);
     let (qa, qb) = (a.fixed_rows::<4>(3), b.fixed_rows::<4>(3));
     let dq = (qb - qa).norm().min((qb + qa).norm());
     let (r, len, rho_p, big_r, rho_h) = (p[0], p[1], p[2], p[3], p[4]);
-    let rim = (r - rho_p).hypot(0.5 * len - rho_p);
+    let rim = ((r - rho_p).powi(2) + (0.5 * len - rho_p).powi(2)).sqrt();
     let bound = match pair {
-        Pair::RimWall => d[0].hypot(d[1]) + 2.0 * dq * rim,
+        Pair::RimWall if windowed => d.norm() + 2.0 * dq * rim,
+        Pair::RimWall => (d[0] * d[0] + d[1] * d[1]).sqrt() + 2.0 * dq * rim,
         Pair::RimTop | Pair::RimBottom => d[2].abs() + 2.0 * dq * rim,
         Pair::RimEdge => d.norm() + 2.0 * dq * rim,
         Pair::EdgeSide => {
             let axis = axis_of(b);
-            let across = (d - axis * d.dot(&axis)).norm();
+            let across = if windowed {
+                d.norm()
+            } else {
+                (d - axis * d.dot(&axis)).norm()
+            };
             let o = nalgebra::Vector3::new(a[0], a[1], a[2] + rho_h).norm();
             across + 2.0 * dq * (big_r + rho_h + o)
         }
@@ -137,12 +224,14 @@ fn moved(pair: Pair, p: &SVector<f64, 16>, a: &SVector<f64, 7>, b: &SVector<f64,
 
 /// A pair's full search at a pose, kept for the poses near it: the arcs
 /// its level dropped had `g ≥ CLEARANCE` there, so at a pose that moved
-/// by `δ` ([`moved`]) their gap is at least `CLEARANCE − δ`, and only the
+/// by `δ` ([`moved_within`]) their gap is at least `CLEARANCE − δ`, and only the
 /// other arcs ([`certified::Kept`]) can hold a contact.
 #[derive(Clone, Debug, PartialEq)]
 struct Tracked {
     pose: SVector<f64, 7>,
     kept: certified::Kept,
+    /// Arcs were dropped by the pair's window ([`Clear::windowed`]).
+    windowed: bool,
 }
 
 /// How far (m) a pose may move from a pair's last full search before the
@@ -198,7 +287,7 @@ impl Search {
     /// The local minima of `pair`'s gap at pose `x` below a bound (and
     /// possibly others), and that bound, which the gap away from them is
     /// at least: from a `Tracked` search whose pose is less than [`TRACK`]
-    /// away (by [`moved`]), the minima below [`TRACKED_BELOW`] on the arcs
+    /// away (by [`moved_within`]), the minima below [`TRACKED_BELOW`] on the arcs
     /// that search kept (the others keep a gap of at least `CLEARANCE −
     /// TRACK`); otherwise a full search for the minima below
     /// [`CLEARANCE`], kept for the poses after it.
@@ -211,22 +300,34 @@ impl Search {
         let mut out = Angles::new();
         self.work = Work::default();
         if let Some(t) = &self.tracked {
-            let delta = moved(pair, p, &t.pose, x);
-            if delta < TRACK {
+            let near = moved_within(pair, p, (&t.pose, x), t.windowed, TRACK);
+            if near {
                 if let Problem::Search { h, level } = Problem::of(pair, x, p, TRACKED_BELOW) {
-                    self.work = certified::minima_on(&h, level, &t.kept.arcs, &mut out);
+                    let window = Window::of(pair, x, p, TRACKED_BELOW);
+                    self.work =
+                        certified::minima_on(&h, level, window.as_ref(), &t.kept.arcs, &mut out);
                 }
                 self.work.tracked = true;
+                // The arcs the record's window dropped are still out of it
+                // (by `CLEARANCE − TRACK`), on the record's bound.
+                self.work.windowed |= t.windowed;
                 return (out, TRACKED_BELOW);
             }
         }
+        if self.tracked.is_none() {}
         let Problem::Search { h, level } = Problem::of(pair, x, p, CLEARANCE) else {
             self.tracked = None;
             return (self.minima(pair, x, p, CLEARANCE), CLEARANCE);
         };
         let mut kept = certified::Kept::default();
-        self.work = certified::minima_kept(&h, level, &mut out, &mut kept);
-        self.tracked = kept.complete.then_some(Tracked { pose: *x, kept });
+        let window = Window::of(pair, x, p, CLEARANCE);
+        self.work = certified::minima_kept(&h, level, window.as_ref(), &mut out, &mut kept);
+        let windowed = self.work.windowed;
+        self.tracked = kept.complete.then_some(Tracked {
+            pose: *x,
+            kept,
+            windowed,
+        });
         (out, CLEARANCE)
     }
 
@@ -249,7 +350,7 @@ impl Search {
         out: &mut Contacts,
     ) {
         if let Some(c) = self.clear
-            && moved(pair, p, &c.pose, x) < c.margin
+            && moved_within(pair, p, (&c.pose, x), c.windowed, c.margin)
         {
             self.work = Work {
                 cached: true,
@@ -290,6 +391,7 @@ impl Search {
         self.clear = (certain && lowest > 0.0).then_some(Clear {
             pose: *x,
             margin: lowest * (1.0 - 1e-9),
+            windowed: self.work.windowed,
         });
         merge::assign(pair, x, p, &mut out[first..]);
     }

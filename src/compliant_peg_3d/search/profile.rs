@@ -60,6 +60,64 @@ pub enum Profile {
     },
 }
 
+/// Where a pair's contacts can be valid, as a coordinate along its circle:
+/// the tube centre's height `c_z(β)` of the rim against the bore wall
+/// (the wall spans `−h_b ≤ z ≤ −ρ_h`), the axial coordinate `(m(α) − p)·a`
+/// of the mouth edge against the peg's side (the side spans `ρ_p − L/2 ≤
+/// t ≤ L/2`). Both are sinusoids of the angle. An arc on which `t` keeps
+/// out of `[lo, hi]` holds no valid contact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Window {
+    /// The coordinate `t(θ)` (m), first harmonic only.
+    pub t: Bounded,
+    /// The least valid `t` (m).
+    pub lo: f64,
+    /// The greatest valid `t` (m).
+    pub hi: f64,
+}
+
+impl Window {
+    /// The window of `pair` at pose `x`, widened by `margin` (m) at each
+    /// end; `None` for the pairs without one.
+    pub fn of(
+        pair: Pair,
+        x: &SVector<f64, 7>,
+        p: &SVector<f64, 16>,
+        margin: f64,
+    ) -> Option<Window> {
+        let (len, rho_p, big_r, rho_h, depth) = (p[1], p[2], p[3], p[4], p[5]);
+        let (t, lo, hi) = match pair {
+            Pair::RimWall => (rim(x, p).1, -depth, -rho_h),
+            Pair::EdgeSide => {
+                let a = columns(x)[2];
+                let rm = big_r + rho_h;
+                let oa = -x[0] * a[0] - x[1] * a[1] - (rho_h + x[2]) * a[2];
+                let t = Trig2 {
+                    a0: oa,
+                    a1: rm * a[0],
+                    b1: rm * a[1],
+                    a2: 0.0,
+                    b2: 0.0,
+                };
+                (t, rho_p - 0.5 * len, 0.5 * len)
+            }
+            _ => return None,
+        };
+        Some(Window {
+            t: t.bounded(),
+            lo: lo - margin,
+            hi: hi + margin,
+        })
+    }
+
+    /// Whether `t` keeps out of the window over `|θ − m| ≤ w`, `(c, s)` the
+    /// cosine and sine of `m`.
+    pub fn excludes(&self, c: f64, s: f64, w: f64) -> bool {
+        let v = self.t.enclose(c, s, w).value;
+        v.lo > self.hi || v.hi < self.lo
+    }
+}
+
 /// A pair's search problem at one pose: its profile `h` and the level
 /// below which a minimum of `h` is a minimum of `g` below the asked
 /// bound; or, for the plane pairs, the one minimum in closed form.
