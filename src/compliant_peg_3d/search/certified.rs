@@ -46,7 +46,7 @@
 //! them, but not certified, so such a search certifies no clearance
 //! ([`super::Search::find`]).
 
-use super::minimum::{Angles, Work, newton, push};
+use super::minimum::{Angles, Work, lower, newton, push};
 use super::order;
 use super::profile::{Profile, Window};
 use super::start;
@@ -212,14 +212,14 @@ fn search(
         let m = 0.5 * (lo + hi);
         let (s, c) = start::sin_cos(m);
         let w = half_width(lo, hi, m);
-        if let Some(win) = window
-            && win.excludes(c, s, w)
-        {
+        if let Some(out) = window.and_then(|win| win.outside(c, s, w)) {
             work.windowed = true;
+            lower(&mut work.window_floor, out);
             continue;
         }
         let e = prof.enclose(c, s, w, level);
         if e.value.lo >= level {
+            lower(&mut work.floor, e.value.lo);
             continue;
         }
         if e.d1.excludes_zero() || e.d2.hi < 0.0 {

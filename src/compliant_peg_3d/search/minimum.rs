@@ -17,7 +17,7 @@ pub type Angles = arrayvec::ArrayVec<f64, MAX_MINIMA>;
 
 /// What a search did: arcs visited and whether it ran out of budget or
 /// room.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Work {
     /// Arcs whose enclosures were evaluated.
     pub arcs: usize,
@@ -42,6 +42,17 @@ pub struct Work {
     /// Arcs were dropped because the pair's [`super::profile::Window`]
     /// excluded them (no valid contact there, whatever the gap).
     pub windowed: bool,
+    /// The least lower bound of `h` over the arcs dropped because `h` was
+    /// at least the level there (`None`: no such arc).
+    pub floor: Option<f64>,
+    /// The least distance (m) by which the window's coordinate kept out
+    /// of the window over the arcs it dropped (`None`: no such arc).
+    pub window_floor: Option<f64>,
+}
+
+/// `a` lowered to `v` (`None` stands for no bound yet).
+pub(super) fn lower(a: &mut Option<f64>, v: f64) {
+    *a = Some(a.map_or(v, |a| a.min(v)));
 }
 
 /// The zero of `h′` in `[lo, hi]`, `h′` increasing there, from the slopes

@@ -290,7 +290,8 @@ impl Search {
     /// away (by [`moved_within`]), the minima below [`TRACKED_BELOW`] on the arcs
     /// that search kept (the others keep a gap of at least `CLEARANCE −
     /// TRACK`); otherwise a full search for the minima below
-    /// [`CLEARANCE`], kept for the poses after it.
+    /// [`CLEARANCE`], kept for the poses after it, whose bound is the least
+    /// of its dropped arcs' floors (at least `CLEARANCE`).
     fn minima_tracked(
         &mut self,
         pair: Pair,
@@ -328,7 +329,16 @@ impl Search {
             kept,
             windowed,
         });
-        (out, CLEARANCE)
+        // Every local minimum off the dropped arcs was found: the gap is at
+        // least the dropped arcs' floors there.
+        let floor = self
+            .work
+            .floor
+            .map_or(f64::INFINITY, |h| profile::gap_at_least(pair, p, h));
+        (
+            out,
+            floor.min(self.work.window_floor.unwrap_or(f64::INFINITY)),
+        )
     }
 
     /// The penetrating, valid local minima of `pair`'s gap at pose `x`
@@ -337,10 +347,16 @@ impl Search {
     ///
     /// The search also finds the minima below [`CLEARANCE`]: when none
     /// penetrates and every arc was decided by its enclosures (no leaf:
-    /// [`Work::leaves`]), their least gap (or `CLEARANCE`) bounds the gap
-    /// of every point of the circle from below, and later calls at poses
-    /// that moved less than that return at once with no
-    /// contact (a body point moves by at most `|Δp| + 2|Δq| |b_B|`).
+    /// [`Work::leaves`]), their least gap, and on the arcs dropped the
+    /// least lower bound of the gap there ([`Work::floor`], at least
+    /// `CLEARANCE`) and of the distance out of the window
+    /// ([`Work::window_floor`]), bound from below the gap of every point
+    /// of the circle that can be a contact (the circle's least gap is a
+    /// local minimum: one found, or one on a dropped arc); later calls at
+    /// poses that moved less than that return at once with no contact (a
+    /// body point moves by at most `|Δp| + 2|Δq| |b_B|`). A search from a
+    /// tracked record bounds the rest of the circle by `TRACKED_BELOW`
+    /// only.
     pub fn find(
         &mut self,
         pair: Pair,
@@ -388,7 +404,7 @@ impl Search {
         // rounding) found its minima to the resolution of `f64` only: it
         // certifies nothing, and the next pose is searched again.
         let certain = self.work.unresolved == 0 && !self.work.flat && self.work.leaves == 0;
-        self.clear = (certain && lowest > 0.0).then_some(Clear {
+        self.clear = (certain && lowest > 0.0 && lowest.is_finite()).then_some(Clear {
             pose: *x,
             margin: lowest * (1.0 - 1e-9),
             windowed: self.work.windowed,

@@ -70,10 +70,12 @@ pub enum Profile {
 pub struct Window {
     /// The coordinate `t(θ)` (m), first harmonic only.
     pub t: Bounded,
-    /// The least valid `t` (m).
+    /// The least valid `t` (m), less the widening.
     pub lo: f64,
-    /// The greatest valid `t` (m).
+    /// The greatest valid `t` (m), plus the widening.
     pub hi: f64,
+    /// The widening `margin` of [`Window::of`] (m).
+    pub margin: f64,
 }
 
 impl Window {
@@ -107,15 +109,42 @@ impl Window {
             t: t.bounded(),
             lo: lo - margin,
             hi: hi + margin,
+            margin,
         })
     }
 
-    /// Whether `t` keeps out of the window over `|θ − m| ≤ w`, `(c, s)` the
-    /// cosine and sine of `m`.
-    pub fn excludes(&self, c: f64, s: f64, w: f64) -> bool {
+    /// When `t` keeps out of the widened window over `|θ − m| ≤ w`, `(c,
+    /// s)` the cosine and sine of `m`: a lower bound on how far (m) it
+    /// keeps out of the window itself (at least the widening, less a
+    /// rounding allowance).
+    pub fn outside(&self, c: f64, s: f64, w: f64) -> Option<f64> {
         let v = self.t.enclose(c, s, w).value;
-        v.lo > self.hi || v.hi < self.lo
+        let out = if v.lo > self.hi {
+            v.lo - self.hi
+        } else if v.hi < self.lo {
+            self.lo - v.hi
+        } else {
+            return None;
+        };
+        let ends = self.lo.abs().max(self.hi.abs());
+        Some((out + self.margin) * (1.0 - 1e-12) - 8.0 * f64::EPSILON * ends)
     }
+}
+
+/// A lower bound on `pair`'s gap (m) where its profile `h` is at least
+/// `h_lo` (the inverse of the levels of [`Problem::of`], widened by a few
+/// ulps of the body's size).
+pub fn gap_at_least(pair: Pair, p: &SVector<f64, 16>, h_lo: f64) -> f64 {
+    let (r, rho_p, big_r, rho_h) = (p[0], p[2], p[3], p[4]);
+    let root = |h: f64| h.max(0.0).sqrt();
+    let (gap, size) = match pair {
+        Pair::RimWall => (big_r - rho_p - root(-h_lo), big_r),
+        Pair::EdgeSide => (root(h_lo) - r - rho_h, big_r + rho_h),
+        Pair::RimEdge => (root(h_lo) - rho_p - rho_h, rho_p + rho_h),
+        // The plane pairs' one minimum is in closed form: no profile.
+        Pair::RimTop | Pair::RimBottom => return f64::NEG_INFINITY,
+    };
+    gap - gap.abs() * 1e-12 - 16.0 * f64::EPSILON * size
 }
 
 /// A pair's search problem at one pose: its profile `h` and the level
