@@ -80,7 +80,8 @@ pub struct Window {
 
 impl Window {
     /// The window of `pair` at pose `x`, widened by `margin` (m) at each
-    /// end; `None` for the pairs without one.
+    /// end; `None` for the pairs without one, and where the coordinate
+    /// stays inside the widened window all round the circle.
     pub fn of(
         pair: Pair,
         x: &SVector<f64, 7>,
@@ -105,6 +106,13 @@ impl Window {
             }
             _ => return None,
         };
+        // A coordinate that stays inside the widened window all round (its
+        // range `a₀ ± n₁`) can exclude no arc: no window (which only ever
+        // drops arcs, so none is always safe).
+        let amp = t.a1.hypot(t.b1);
+        if t.a0 - amp >= lo - margin && t.a0 + amp <= hi + margin {
+            return None;
+        }
         Some(Window {
             t: t.bounded(),
             lo: lo - margin,
