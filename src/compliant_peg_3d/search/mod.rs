@@ -301,8 +301,7 @@ impl Search {
         let mut out = Angles::new();
         self.work = Work::default();
         if let Some(t) = &self.tracked {
-            let near = moved_within(pair, p, (&t.pose, x), t.windowed, TRACK);
-            if near {
+            if moved_within(pair, p, (&t.pose, x), t.windowed, TRACK) {
                 if let Problem::Search { h, level } = Problem::of(pair, x, p, TRACKED_BELOW) {
                     let window = Window::of(pair, x, p, TRACKED_BELOW);
                     self.work =
@@ -315,7 +314,6 @@ impl Search {
                 return (out, TRACKED_BELOW);
             }
         }
-        if self.tracked.is_none() {}
         let Problem::Search { h, level } = Problem::of(pair, x, p, CLEARANCE) else {
             self.tracked = None;
             return (self.minima(pair, x, p, CLEARANCE), CLEARANCE);
