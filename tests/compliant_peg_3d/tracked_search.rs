@@ -94,29 +94,29 @@ fn compare(
     }
 }
 
-/// Walks of eight moves from poses near contact, each move of 1 nm to
-/// 1 mm, and, with `turns`, turned about the hole's axis by up to π as
-/// well (the same pose relative to the hole for the rim's pairs, the mouth
-/// edge's points moved along its circle for the peg's side).
-fn walks(prm: &Peg3dParams, seed: u64, starts: usize, turns: bool) -> Walks {
+/// Walks of eight moves by `step` from poses near contact of `pairs` in
+/// turn, each search from the walk's record compared with a fresh one.
+fn walk(
+    prm: &Peg3dParams,
+    seed: u64,
+    starts: usize,
+    pairs: &[Pair],
+    step: impl Fn(&SVector<f64, 7>, Pair, &mut Rng) -> SVector<f64, 7>,
+) -> Walks {
     let g = Geo::of(prm);
     let mut rng = Rng(seed);
     let mut w = Walks::default();
     for n in 0..starts {
-        let pair = Pair::ALL[n % 5];
+        let pair = pairs[n % pairs.len()];
         let start: Pose = near_contact(&g, pair, &mut rng);
         let mut s = Search::default();
         let mut x = start.x();
         find(&mut s, pair, prm, &x);
         for _ in 0..8 {
-            let size = 10f64.powf(rng.uniform(-9.0, -3.0));
-            x = moved(&x, size, &mut rng);
-            if turns {
-                x = turned(&x, rng.uniform(-PI, PI));
-            }
+            x = step(&x, pair, &mut rng);
             let kept = find(&mut s, pair, prm, &x);
             w.tracked += usize::from(s.work.tracked);
-            w.windowed += usize::from(s.work.windowed);
+            w.windowed += usize::from(s.work.windowed());
             let fresh = find(&mut Search::default(), pair, prm, &x);
             compare(pair, &x, &kept, &fresh, &mut w);
         }
@@ -124,39 +124,47 @@ fn walks(prm: &Peg3dParams, seed: u64, starts: usize, turns: bool) -> Walks {
     w
 }
 
+/// Walks of every pair, each move of 1 nm to 1 mm, and, with `turns`,
+/// turned about the hole's axis by up to π as well (the same pose
+/// relative to the hole for the rim's pairs, the mouth edge's points moved
+/// along its circle for the peg's side).
+fn walks(prm: &Peg3dParams, seed: u64, starts: usize, turns: bool) -> Walks {
+    walk(prm, seed, starts, &Pair::ALL, |x, _, rng| {
+        let size = 10f64.powf(rng.uniform(-9.0, -3.0));
+        let x = moved(x, size, rng);
+        if turns {
+            turned(&x, rng.uniform(-PI, PI))
+        } else {
+            x
+        }
+    })
+}
+
 /// Walks of the two pairs with a window (the rim against the bore wall,
-/// the mouth edge against the peg's side) from poses near contact, each
-/// move a slide of 1 µm to 0.1 mm along the window's coordinate (down or
-/// up the hole's axis for the wall, along the peg's axis for its side),
-/// which moves no gap and carries a contact into or out of the part of
-/// the surface that exists.
+/// the mouth edge against the peg's side), each move a slide of 1 µm to
+/// 0.1 mm along the window's coordinate (down or up the hole's axis for
+/// the wall, along the peg's axis for its side), which moves no gap and
+/// carries a contact into or out of the part of the surface that exists.
 fn walks_along(prm: &Peg3dParams, seed: u64, starts: usize) -> Walks {
-    let g = Geo::of(prm);
-    let mut rng = Rng(seed);
-    let mut w = Walks::default();
-    for n in 0..starts {
-        let pair = [Pair::RimWall, Pair::EdgeSide][n % 2];
-        let mut x = near_contact(&g, pair, &mut rng).x();
-        let mut s = Search::default();
-        find(&mut s, pair, prm, &x);
-        for _ in 0..8 {
+    walk(
+        prm,
+        seed,
+        starts,
+        &[Pair::RimWall, Pair::EdgeSide],
+        |x, pair, rng| {
             let size = 10f64.powf(rng.uniform(-6.0, -4.0));
             let sign = if rng.next_f64() < 0.5 { -1.0 } else { 1.0 };
             let along = match pair {
                 Pair::RimWall => Vector3::z(),
-                _ => pegdyn::compliant_peg_3d::axis_of(&x),
+                _ => pegdyn::compliant_peg_3d::axis_of(x),
             };
+            let mut x = *x;
             for i in 0..3 {
                 x[i] += sign * size * along[i];
             }
-            let kept = find(&mut s, pair, prm, &x);
-            w.tracked += usize::from(s.work.tracked);
-            w.windowed += usize::from(s.work.windowed);
-            let fresh = find(&mut Search::default(), pair, prm, &x);
-            compare(pair, &x, &kept, &fresh, &mut w);
-        }
-    }
-    w
+            x
+        },
+    )
 }
 
 fn check(w: &Walks, starts: usize) {

@@ -129,7 +129,7 @@ fn starts() -> [Arc; START] {
 }
 
 /// [`minima`] on the arcs where `window` admits a valid contact (the
-/// others are dropped: [`Work::windowed`]), with the arcs neither its
+/// others are dropped: [`Work::window_floor`]), with the arcs neither its
 /// level nor the window dropped into `kept`.
 pub fn minima_kept(
     prof: &Profile,
@@ -213,7 +213,6 @@ fn search(
         let (s, c) = start::sin_cos(m);
         let w = half_width(lo, hi, m);
         if let Some(out) = window.and_then(|win| win.outside(c, s, w)) {
-            work.windowed = true;
             lower(&mut work.window_floor, out);
             continue;
         }

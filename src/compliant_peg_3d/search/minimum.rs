@@ -39,15 +39,22 @@ pub struct Work {
     /// Searched only on the arcs an earlier full search at a nearby pose
     /// kept (the rest of the circle was certified clear from there).
     pub tracked: bool,
-    /// Arcs were dropped because the pair's [`super::profile::Window`]
-    /// excluded them (no valid contact there, whatever the gap).
-    pub windowed: bool,
     /// The least lower bound of `h` over the arcs dropped because `h` was
     /// at least the level there (`None`: no such arc).
     pub floor: Option<f64>,
     /// The least distance (m) by which the window's coordinate kept out
     /// of the window over the arcs it dropped (`None`: no such arc).
     pub window_floor: Option<f64>,
+}
+
+impl Work {
+    /// Whether arcs were dropped because the pair's
+    /// [`super::profile::Window`] excluded them (no valid contact there,
+    /// whatever the gap): by this search, or by the record a tracked
+    /// search started from.
+    pub fn windowed(&self) -> bool {
+        self.window_floor.is_some()
+    }
 }
 
 /// `a` lowered to `v` (`None` stands for no bound yet).

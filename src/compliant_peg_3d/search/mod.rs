@@ -52,7 +52,7 @@ use super::params::Peg3dParams;
 use nalgebra::SVector;
 
 pub use minimum::{Angles, MAX_MINIMA, Work};
-use profile::{Problem, Window};
+use profile::Problem;
 
 /// The minimum at `a` (from the profile) as a root of the generated
 /// function's own `g′`: one Newton step on the generated derivatives, kept
@@ -204,10 +204,9 @@ fn moved_to(
     let (r, len, rho_p, big_r, rho_h) = (p[0], p[1], p[2], p[3], p[4]);
     let rim = ((r - rho_p).powi(2) + (0.5 * len - rho_p).powi(2)).sqrt();
     let bound = match pair {
-        Pair::RimWall if windowed => d.norm() + 2.0 * dq * rim,
-        Pair::RimWall => (d[0] * d[0] + d[1] * d[1]).sqrt() + 2.0 * dq * rim,
+        Pair::RimWall if !windowed => (d[0] * d[0] + d[1] * d[1]).sqrt() + 2.0 * dq * rim,
+        Pair::RimWall | Pair::RimEdge => d.norm() + 2.0 * dq * rim,
         Pair::RimTop | Pair::RimBottom => d[2].abs() + 2.0 * dq * rim,
-        Pair::RimEdge => d.norm() + 2.0 * dq * rim,
         Pair::EdgeSide => {
             let axis = axis_of(b);
             let across = if windowed {
@@ -302,26 +301,29 @@ impl Search {
         self.work = Work::default();
         if let Some(t) = &self.tracked {
             if moved_within(pair, p, (&t.pose, x), t.windowed, TRACK) {
-                if let Problem::Search { h, level } = Problem::of(pair, x, p, TRACKED_BELOW) {
-                    let window = Window::of(pair, x, p, TRACKED_BELOW);
+                if let (Problem::Search { h, level }, window) =
+                    Problem::with_window(pair, x, p, TRACKED_BELOW)
+                {
                     self.work =
                         certified::minima_on(&h, level, window.as_ref(), &t.kept.arcs, &mut out);
                 }
                 self.work.tracked = true;
                 // The arcs the record's window dropped are still out of it
-                // (by `CLEARANCE − TRACK`), on the record's bound.
-                self.work.windowed |= t.windowed;
+                // by more than `CLEARANCE − TRACK`.
+                if t.windowed {
+                    minimum::lower(&mut self.work.window_floor, CLEARANCE - TRACK);
+                }
                 return (out, TRACKED_BELOW);
             }
         }
-        let Problem::Search { h, level } = Problem::of(pair, x, p, CLEARANCE) else {
+        let (Problem::Search { h, level }, window) = Problem::with_window(pair, x, p, CLEARANCE)
+        else {
             self.tracked = None;
             return (self.minima(pair, x, p, CLEARANCE), CLEARANCE);
         };
         let mut kept = certified::Kept::default();
-        let window = Window::of(pair, x, p, CLEARANCE);
         self.work = certified::minima_kept(&h, level, window.as_ref(), &mut out, &mut kept);
-        let windowed = self.work.windowed;
+        let windowed = self.work.windowed();
         self.tracked = kept.complete.then_some(Tracked {
             pose: *x,
             kept,
@@ -405,7 +407,7 @@ impl Search {
         self.clear = (certain && lowest > 0.0 && lowest.is_finite()).then_some(Clear {
             pose: *x,
             margin: lowest * (1.0 - 1e-9),
-            windowed: self.work.windowed,
+            windowed: self.work.windowed(),
         });
         merge::assign(pair, x, p, &mut out[first..]);
     }

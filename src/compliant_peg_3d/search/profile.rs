@@ -70,72 +70,45 @@ pub enum Profile {
 pub struct Window {
     /// The coordinate `t(θ)` (m), first harmonic only.
     pub t: Bounded,
-    /// The least valid `t` (m), less the widening.
+    /// The least valid `t` (m).
     pub lo: f64,
-    /// The greatest valid `t` (m), plus the widening.
+    /// The greatest valid `t` (m).
     pub hi: f64,
-    /// The widening `margin` of [`Window::of`] (m).
+    /// How far out of `[lo, hi]` (m) `t` must keep for an arc to be
+    /// dropped (the level's gap of the search).
     pub margin: f64,
 }
 
 impl Window {
-    /// The window of `pair` at pose `x`, widened by `margin` (m) at each
-    /// end; `None` for the pairs without one, and where the coordinate
-    /// stays inside the widened window all round the circle.
-    pub fn of(
-        pair: Pair,
-        x: &SVector<f64, 7>,
-        p: &SVector<f64, 16>,
-        margin: f64,
-    ) -> Option<Window> {
-        let (len, rho_p, big_r, rho_h, depth) = (p[1], p[2], p[3], p[4], p[5]);
-        let (t, lo, hi) = match pair {
-            Pair::RimWall => (rim(x, p).1, -depth, -rho_h),
-            Pair::EdgeSide => {
-                let a = columns(x)[2];
-                let rm = big_r + rho_h;
-                let oa = -x[0] * a[0] - x[1] * a[1] - (rho_h + x[2]) * a[2];
-                let t = Trig2 {
-                    a0: oa,
-                    a1: rm * a[0],
-                    b1: rm * a[1],
-                    a2: 0.0,
-                    b2: 0.0,
-                };
-                (t, rho_p - 0.5 * len, 0.5 * len)
-            }
-            _ => return None,
-        };
-        // A coordinate that stays inside the widened window all round (its
-        // range `a₀ ± n₁`) can exclude no arc: no window (which only ever
-        // drops arcs, so none is always safe).
+    /// The window of the coordinate `t` on `[lo, hi]`, dropping what keeps
+    /// more than `margin` out of it; `None` where `t` stays within
+    /// `margin` of the range all round the circle (its range `a₀ ± n₁`):
+    /// such a window could drop no arc, and no window (which only ever
+    /// drops arcs) is always safe.
+    fn new(t: Trig2, lo: f64, hi: f64, margin: f64) -> Option<Window> {
         let amp = t.a1.hypot(t.b1);
         if t.a0 - amp >= lo - margin && t.a0 + amp <= hi + margin {
             return None;
         }
         Some(Window {
             t: t.bounded(),
-            lo: lo - margin,
-            hi: hi + margin,
+            lo,
+            hi,
             margin,
         })
     }
 
-    /// When `t` keeps out of the widened window over `|θ − m| ≤ w`, `(c,
-    /// s)` the cosine and sine of `m`: a lower bound on how far (m) it
-    /// keeps out of the window itself (at least the widening, less a
-    /// rounding allowance).
+    /// When `t` keeps more than the margin out of the window over `|θ −
+    /// m| ≤ w`, `(c, s)` the cosine and sine of `m`: a lower bound on how
+    /// far (m) it keeps out (less a rounding allowance).
     pub fn outside(&self, c: f64, s: f64, w: f64) -> Option<f64> {
         let v = self.t.enclose(c, s, w).value;
-        let out = if v.lo > self.hi {
-            v.lo - self.hi
-        } else if v.hi < self.lo {
-            self.lo - v.hi
-        } else {
+        let out = (v.lo - self.hi).max(self.lo - v.hi);
+        if out <= self.margin {
             return None;
-        };
+        }
         let ends = self.lo.abs().max(self.hi.abs());
-        Some((out + self.margin) * (1.0 - 1e-12) - 8.0 * f64::EPSILON * ends)
+        Some(out * (1.0 - 1e-12) - 8.0 * f64::EPSILON * ends)
     }
 }
 
@@ -220,8 +193,10 @@ fn rim(x: &SVector<f64, 7>, p: &SVector<f64, 16>) -> (Trig2, Trig2) {
     (f, z)
 }
 
-/// `F = |u|² − (u·a)²` of the mouth circle against the peg's axis line.
-fn edge(x: &SVector<f64, 7>, p: &SVector<f64, 16>) -> Trig2 {
+/// `F = |u|² − (u·a)²` of the mouth circle against the peg's axis line,
+/// and the axial coordinate `u·a = o·a + R_m (a_x cos α + a_y sin α)` of
+/// its points.
+fn edge(x: &SVector<f64, 7>, p: &SVector<f64, 16>) -> (Trig2, Trig2) {
     let a = columns(x)[2];
     let (big_r, rho_h) = (p[3], p[4]);
     let rm = big_r + rho_h;
@@ -233,13 +208,21 @@ fn edge(x: &SVector<f64, 7>, p: &SVector<f64, 16>) -> Trig2 {
         o[0] * a[1] - o[1] * a[0],
     ];
     let axy = a[0] * a[0] + a[1] * a[1];
-    Trig2 {
+    let f = Trig2 {
         a0: cx[0] * cx[0] + cx[1] * cx[1] + cx[2] * cx[2] + rm * rm * (a[2] * a[2] + 0.5 * axy),
         a1: 2.0 * rm * (o[0] - oa * a[0]),
         b1: 2.0 * rm * (o[1] - oa * a[1]),
         a2: -0.5 * rm * rm * (a[0] * a[0] - a[1] * a[1]),
         b2: -rm * rm * a[0] * a[1],
-    }
+    };
+    let axial = Trig2 {
+        a0: oa,
+        a1: rm * a[0],
+        b1: rm * a[1],
+        a2: 0.0,
+        b2: 0.0,
+    };
+    (f, axial)
 }
 
 impl Problem {
@@ -247,7 +230,38 @@ impl Problem {
     /// minima of the gap below `below` (m), `p` the generated functions'
     /// parameter vector.
     pub fn of(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, below: f64) -> Problem {
-        let (r, rho_p, big_r, rho_h, depth) = (p[0], p[2], p[3], p[4], p[5]);
+        Problem::build(pair, x, p, below, false).0
+    }
+
+    /// [`Problem::of`] and, for the contact path, the pair's [`Window`]
+    /// dropping what keeps more than `below` out of the existing part of
+    /// its surface: the rim's tube-centre height against the bore wall's
+    /// `[−h_b, −ρ_h]`, the mouth edge's axial coordinate against the
+    /// side's `[ρ_p − L/2, L/2]` (built from the same coefficients).
+    pub fn with_window(
+        pair: Pair,
+        x: &SVector<f64, 7>,
+        p: &SVector<f64, 16>,
+        below: f64,
+    ) -> (Problem, Option<Window>) {
+        Problem::build(pair, x, p, below, true)
+    }
+
+    fn build(
+        pair: Pair,
+        x: &SVector<f64, 7>,
+        p: &SVector<f64, 16>,
+        below: f64,
+        windowed: bool,
+    ) -> (Problem, Option<Window>) {
+        let (r, len, rho_p, big_r, rho_h, depth) = (p[0], p[1], p[2], p[3], p[4], p[5]);
+        let window = |t, lo, hi| {
+            if windowed {
+                Window::new(t, lo, hi, below)
+            } else {
+                None
+            }
+        };
         let positive = |v: f64| if v > 0.0 { Some(v * v) } else { None };
         match pair {
             Pair::RimTop | Pair::RimBottom => {
@@ -255,44 +269,42 @@ impl Problem {
                 let plane = if pair == Pair::RimTop { 0.0 } else { -depth };
                 let amp = z.a1.hypot(z.b1);
                 if z.a0 - amp - rho_p - plane >= below {
-                    return Problem::Nothing;
+                    return (Problem::Nothing, None);
                 }
                 let angle =
                     (amp > 0.0).then(|| f64::atan2(-z.b1, -z.a1).rem_euclid(std::f64::consts::TAU));
-                Problem::Closed(angle)
+                (Problem::Closed(angle), None)
             }
             Pair::RimWall => {
-                let (f, _) = rim(x, p);
+                let (f, z) = rim(x, p);
                 let level = match positive(big_r - rho_p - below) {
                     Some(v) => -v,
                     None => f64::INFINITY,
                 };
-                Problem::Search {
-                    h: Profile::Trig((-f).bounded()),
-                    level,
-                }
+                let h = Profile::Trig((-f).bounded());
+                (Problem::Search { h, level }, window(z, -depth, -rho_h))
             }
             Pair::EdgeSide => match positive(r + rho_h + below) {
-                Some(level) => Problem::Search {
-                    h: Profile::Trig(edge(x, p).bounded()),
-                    level,
-                },
-                None => Problem::Nothing,
+                Some(level) => {
+                    let (f, axial) = edge(x, p);
+                    let h = Profile::Trig(f.bounded());
+                    let side = window(axial, rho_p - 0.5 * len, 0.5 * len);
+                    (Problem::Search { h, level }, side)
+                }
+                None => (Problem::Nothing, None),
             },
             Pair::RimEdge => match positive(rho_p + rho_h + below) {
                 Some(level) => {
                     let (f, mut z) = rim(x, p);
                     z.a0 += rho_h;
-                    Problem::Search {
-                        h: Profile::Tori {
-                            f: f.bounded(),
-                            z: z.bounded(),
-                            rm: big_r + rho_h,
-                        },
-                        level,
-                    }
+                    let h = Profile::Tori {
+                        f: f.bounded(),
+                        z: z.bounded(),
+                        rm: big_r + rho_h,
+                    };
+                    (Problem::Search { h, level }, None)
                 }
-                None => Problem::Nothing,
+                None => (Problem::Nothing, None),
             },
         }
     }
