@@ -29,30 +29,38 @@
 //! (the minimum before it in angle).
 
 use super::contact::{ContactPoint, MAX_CONTACTS, Pair, Saddle};
+use super::search::minimum::wrap;
 use nalgebra::SVector;
 use std::f64::consts::TAU;
 
-/// The maximum of `g` in `(lo, hi)` with `g′(lo) > 0 > g′(hi)`: Newton on
-/// `g′` with bisection on its sign. Returns the angle (unwrapped) and the
-/// gap there.
+/// The maximum of `g` in `(lo, hi)` with `g′(lo) > 0 > g′(hi)`, when it
+/// penetrates: Newton on `g′` with bisection on its sign. Returns the
+/// angle (unwrapped) and the penetration `−g > 0` there, or `None` when
+/// the col is out of contact.
 ///
 /// Only a col that penetrates matters to the rule (one with `g ≥ 0` is
 /// never subtracted), and every point of `(lo, hi)` has `g` at most the
-/// maximum's: so the first iterate with `g > 0` ends the search, returned
-/// in place of the maximum (a col out of contact, whose exact place is not
-/// needed). Where the col penetrates the iterates are the full search's.
+/// maximum's: so a point of the arc with `g > 0` shows the col out of
+/// contact, and its exact place is not needed. `apart(θ)` certifies
+/// `g(θ) > 0` without the generated function (the search's profile,
+/// [`super::search::Search::find`]); failing that, the first iterate with
+/// `g > 0` ends the search. Where the col penetrates the iterates are the
+/// full search's.
 fn col(
     pair: Pair,
     x: &SVector<f64, 7>,
     p: &SVector<f64, 16>,
-    mut lo: f64,
-    mut hi: f64,
-) -> (f64, f64) {
+    (mut lo, mut hi): (f64, f64),
+    apart: &impl Fn(f64) -> bool,
+) -> Option<(f64, f64)> {
     let mut a = 0.5 * (lo + hi);
+    if apart(wrap(a)) {
+        return None;
+    }
     for _ in 0..80 {
         let out = pair.eval(x, a, p);
         if out.gap > 0.0 {
-            return (a, out.gap);
+            return None;
         }
         let (d1, d2) = (out.d1, out.d2);
         if d1 > 0.0 {
@@ -72,14 +80,23 @@ fn col(
         }
         a = next;
     }
-    (a, pair.eval(x, a, p).gap)
+    let depth = -pair.eval(x, a, p).gap;
+    (depth > 0.0).then_some((a, depth))
 }
 
 /// Sets the [`ContactPoint::saddle`] of the points in `points` (the
 /// penetrating, valid minima of one pair, in any order; sorted by angle on
 /// return) by the inclusion–exclusion rule of this module: the col after
-/// each point in angle, when it penetrates and is subtracted.
-pub fn assign(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, points: &mut [ContactPoint]) {
+/// each point in angle, when it penetrates and is subtracted. `apart(θ)`
+/// (angle in `[0, 2π)`) is true only where the gap is certainly positive
+/// (it may always be false).
+pub fn assign(
+    pair: Pair,
+    x: &SVector<f64, 7>,
+    p: &SVector<f64, 16>,
+    points: &mut [ContactPoint],
+    apart: impl Fn(f64) -> bool,
+) {
     // One pair has at most MAX_CONTACTS points (the search's minima).
     let n = points.len().min(MAX_CONTACTS);
     let points = &mut points[..n];
@@ -87,30 +104,32 @@ pub fn assign(pair: Pair, x: &SVector<f64, 7>, p: &SVector<f64, 16>, points: &mu
         return;
     }
     points.sort_unstable_by(|a, b| a.angle.total_cmp(&b.angle));
-    // The col between point k and point k+1 (cyclically), with its
-    // penetration (≤ 0 when the profile leaves the overlap between them).
-    let mut cols = [(0.0, 0.0); MAX_CONTACTS];
+    // The penetrating col between point k and point k+1 (cyclically).
+    let mut cols = [None; MAX_CONTACTS];
     for (k, c) in cols.iter_mut().enumerate().take(n) {
         let lo = points[k].angle;
         let mut hi = points[(k + 1) % n].angle;
         if hi <= lo {
             hi += TAU;
         }
-        let (a, gap) = col(pair, x, p, lo, hi);
-        *c = (a, -gap);
+        *c = col(pair, x, p, (lo, hi), &apart);
     }
     let cols = &cols[..n];
     // One ring: keep the least penetrating col.
-    let keep = if cols.iter().all(|c| c.1 > 0.0) {
-        (0..n).min_by(|&a, &b| cols[a].1.total_cmp(&cols[b].1))
+    let keep = if cols.iter().all(Option::is_some) {
+        (0..n).min_by(|&a, &b| {
+            let depth = |k: usize| cols[k].map_or(0.0, |c| c.1);
+            depth(a).total_cmp(&depth(b))
+        })
     } else {
         None
     };
     for (k, pt) in points.iter_mut().enumerate() {
-        let (a, depth) = cols[k];
         pt.saddle = None;
-        if depth > 0.0 && keep != Some(k) {
-            let a = a.rem_euclid(TAU);
+        if let Some((a, depth)) = cols[k]
+            && keep != Some(k)
+        {
+            let a = wrap(a);
             let e = pair.eval(x, a, p);
             pt.saddle = Some(Saddle {
                 angle: a,

@@ -523,6 +523,10 @@ pub struct Tally {
     /// Largest gap and point differences at matched contacts (m).
     pub gap_err: f64,
     pub point_err: f64,
+    /// Reference contacts that exist (valid: on the part of each surface
+    /// that exists, the rim's outer half), compared with the contact
+    /// path's (`Search::find`), by pair.
+    pub valid: [usize; 5],
     /// Largest number of arcs one library search visited.
     pub max_arcs: usize,
     /// Reference evaluations.
@@ -539,6 +543,7 @@ impl Tally {
         self.searches += o.searches;
         for k in 0..5 {
             self.contacts[k] += o.contacts[k];
+            self.valid[k] += o.valid[k];
         }
         self.unresolved += o.unresolved;
         self.library_only += o.library_only;
@@ -652,6 +657,132 @@ pub fn compare(prm: &Peg3dParams, pv: &SVector<f64, 16>, x: &Pose, tally: &mut T
     }
 }
 
+/// Whether the minimum of `pair` at angle `a` is on the part of its
+/// surfaces that exists (the library's rule, [`Pair::valid`] and
+/// [`Pair::rim_faces_out`], on the generated geometry at that angle).
+fn valid_at(
+    prm: &Peg3dParams,
+    pv: &SVector<f64, 16>,
+    pair: Pair,
+    x: &SVector<f64, 7>,
+    a: f64,
+) -> bool {
+    let e = pair.eval(x, a, pv);
+    let axis = pegdyn::compliant_peg_3d::axis_of(x);
+    pair.valid(prm, &axis, &e.normal, &e.point, e.axial)
+        && pair.rim_faces_out(x, &e.normal, &e.point)
+}
+
+/// Compares the contacts of a fresh contact path (`Search::find`, with
+/// the pairs' windows and the plane pairs' certificates off their faces)
+/// with the reference minima below zero that are valid at their angles,
+/// into `tally`: each such minimum found with its depth and point to
+/// `TOL`, and each contact found a valid reference minimum (or a local
+/// minimum of the reference gap the grid did not show). A minimum whose
+/// validity changes within two grid spacings is skipped (its angle's
+/// rounding decides it), and so is one the library places within two grid
+/// spacings but judges the other way at its own angle (validity decided
+/// by rounding: a level rim over the mouth's round, whose normal is
+/// vertical to rounding, on the boundary of the rim's outer half).
+pub fn compare_contacts(prm: &Peg3dParams, pv: &SVector<f64, 16>, x: &Pose, tally: &mut Tally) {
+    let g = Geo::of(prm);
+    let xv = x.x();
+    let h = TAU / SAMPLES as f64;
+    for pair in Pair::ALL {
+        let mut out = pegdyn::compliant_peg_3d::Contacts::new();
+        Search::default().find(pair, prm, &xv, pv, &mut out);
+        let minima = Search::default().minima(pair, &xv, pv, 0.0);
+        let (refs, evals) = reference(&g, pair, x);
+        tally.evals += evals;
+        let mut matched = vec![false; out.len()];
+        let mut borderline = Vec::new();
+        for r in &refs {
+            if r.gap >= -GRAZING || r.gap < -DEEPEST || !r.resolved {
+                continue;
+            }
+            let valid = valid_at(prm, pv, pair, &xv, r.angle);
+            let near = [-2.0 * h, 2.0 * h].map(|d| valid_at(prm, pv, pair, &xv, r.angle + d));
+            let judged_apart = minima.iter().chain(out.iter().map(|c| &c.angle)).any(|&m| {
+                angle_distance(m, r.angle) <= 2.0 * h && valid_at(prm, pv, pair, &xv, m) != valid
+            });
+            if near.iter().any(|&v| v != valid) || judged_apart {
+                borderline.push(r.angle);
+                continue;
+            }
+            if !valid {
+                continue;
+            }
+            tally.valid[pair.index()] += 1;
+            let hit = out
+                .iter()
+                .enumerate()
+                .filter(|(_, c)| angle_distance(c.angle, r.angle) <= 2.0 * h)
+                .min_by(|a, b| {
+                    angle_distance(a.1.angle, r.angle)
+                        .total_cmp(&angle_distance(b.1.angle, r.angle))
+                });
+            let Some((i, c)) = hit else {
+                tally.fail(format!(
+                    "{pair:?} at {x:?}: valid contact at {} (gap {}) missed by the contact path",
+                    r.angle, r.gap
+                ));
+                continue;
+            };
+            matched[i] = true;
+            let ge = (-c.penetration - r.gap).abs();
+            let pe = (c.point - point(&g, pair, x, r.angle)).norm();
+            if ge > TOL || pe > TOL {
+                tally.fail(format!(
+                    "{pair:?} at {x:?}: contact at {} vs {}: depth error {ge:e}, point error {pe:e}",
+                    r.angle, c.angle
+                ));
+            }
+        }
+        for (i, c) in out.iter().enumerate() {
+            let depth = c.penetration;
+            if matched[i] || depth <= GRAZING || depth > DEEPEST {
+                continue;
+            }
+            if borderline
+                .iter()
+                .any(|&b| angle_distance(b, c.angle) <= 2.0 * h)
+            {
+                continue;
+            }
+            let near = refs
+                .iter()
+                .filter(|r| angle_distance(r.angle, c.angle) <= 2.0 * h && r.resolved);
+            let mut seen = false;
+            for r in near {
+                seen = true;
+                // A reference minimum at the depth thresholds' edge is
+                // compared on neither side; one off its surface is no
+                // contact.
+                if !valid_at(prm, pv, pair, &xv, r.angle) {
+                    tally.fail(format!(
+                        "{pair:?} at {x:?}: contact at {} (depth {depth}) where the reference's minimum is not valid",
+                        c.angle
+                    ));
+                }
+            }
+            if seen {
+                continue;
+            }
+            let gl = gap(&g, pair, x, c.angle);
+            let ok = [1e-3, 1e-5, 1e-7].iter().all(|&d| {
+                gap(&g, pair, x, c.angle + d) >= gl - 1e-15
+                    && gap(&g, pair, x, c.angle - d) >= gl - 1e-15
+            });
+            if !ok {
+                tally.fail(format!(
+                    "{pair:?} at {x:?}: contact at {} (depth {depth}) is no minimum",
+                    c.angle
+                ));
+            }
+        }
+    }
+}
+
 /// Runs `n` poses from seed `seed` (each pair in turn near contact).
 pub fn campaign(prm: &Peg3dParams, seed: u64, n: usize) -> Tally {
     let pv = prm.vector();
@@ -662,6 +793,7 @@ pub fn campaign(prm: &Peg3dParams, seed: u64, n: usize) -> Tally {
         let pair = Pair::ALL[k % 5];
         let x = near_contact(&g, pair, &mut rng);
         compare(prm, &pv, &x, &mut tally);
+        compare_contacts(prm, &pv, &x, &mut tally);
     }
     tally
 }

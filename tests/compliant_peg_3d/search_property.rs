@@ -23,12 +23,13 @@ const POSES: usize = 25_000;
 
 fn check(t: &Tally) {
     eprintln!(
-        "{} poses ({} searches): reference contacts by pair {:?}, unresolved plateaus {}, \
-         library-only minima {}, largest gap error {:e} m, point error {:e} m, most arcs {}, \
-         reference evaluations {}",
+        "{} poses ({} searches): reference contacts by pair {:?} (valid {:?}), unresolved \
+         plateaus {}, library-only minima {}, largest gap error {:e} m, point error {:e} m, \
+         most arcs {}, reference evaluations {}",
         t.poses,
         t.searches,
         t.contacts,
+        t.valid,
         t.unresolved,
         t.library_only,
         t.gap_err,
@@ -46,6 +47,14 @@ fn check(t: &Tally) {
     // Every pair is exercised near contact.
     for (k, &n) in t.contacts.iter().enumerate() {
         assert!(n > POSES / 50, "{:?}: only {n} contacts", Pair::ALL[k]);
+    }
+    // And the contact path's validity: every pair has valid contacts.
+    for (k, &n) in t.valid.iter().enumerate() {
+        assert!(
+            n > POSES / 200,
+            "{:?}: only {n} valid contacts",
+            Pair::ALL[k]
+        );
     }
 }
 

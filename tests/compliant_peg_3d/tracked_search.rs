@@ -10,9 +10,11 @@
 //! keep their records through a turn, the peg's side against the mouth
 //! edge does not).
 
-use crate::common::peg3d::fig9;
+use crate::common::peg3d::{fig9, orientation};
 use crate::common::rng::Rng;
-use crate::common::search_reference::{GRAZING, Geo, Pose, angle_distance, near_contact};
+use crate::common::search_reference::{
+    GRAZING, Geo, Pose, Tally, angle_distance, compare_contacts, near_contact,
+};
 use crate::insertion_split::insertion_peg;
 use nalgebra::{SVector, Unit, UnitQuaternion, Vector3};
 use pegdyn::compliant_peg_3d::{ContactPoint, Contacts, Pair, Peg3dParams, Search};
@@ -44,6 +46,7 @@ fn turned(x: &SVector<f64, 7>, phi: f64) -> SVector<f64, 7> {
 #[derive(Default)]
 struct Walks {
     tracked: usize,
+    cached: usize,
     windowed: usize,
     matched: usize,
     failures: Vec<String>,
@@ -104,18 +107,37 @@ fn walk(
     step: impl Fn(&SVector<f64, 7>, Pair, &mut Rng) -> SVector<f64, 7>,
 ) -> Walks {
     let g = Geo::of(prm);
+    walk_from(
+        prm,
+        seed,
+        starts,
+        pairs,
+        |pair, rng| near_contact(&g, pair, rng).x(),
+        step,
+    )
+}
+
+/// [`walk`] from the poses `begin` gives.
+fn walk_from(
+    prm: &Peg3dParams,
+    seed: u64,
+    starts: usize,
+    pairs: &[Pair],
+    begin: impl Fn(Pair, &mut Rng) -> SVector<f64, 7>,
+    step: impl Fn(&SVector<f64, 7>, Pair, &mut Rng) -> SVector<f64, 7>,
+) -> Walks {
     let mut rng = Rng(seed);
     let mut w = Walks::default();
     for n in 0..starts {
         let pair = pairs[n % pairs.len()];
-        let start: Pose = near_contact(&g, pair, &mut rng);
         let mut s = Search::default();
-        let mut x = start.x();
+        let mut x = begin(pair, &mut rng);
         find(&mut s, pair, prm, &x);
         for _ in 0..8 {
             x = step(&x, pair, &mut rng);
             let kept = find(&mut s, pair, prm, &x);
             w.tracked += usize::from(s.work.tracked);
+            w.cached += usize::from(s.work.cached);
             w.windowed += usize::from(s.work.windowed());
             let fresh = find(&mut Search::default(), pair, prm, &x);
             compare(pair, &x, &kept, &fresh, &mut w);
@@ -167,11 +189,97 @@ fn walks_along(prm: &Peg3dParams, seed: u64, starts: usize) -> Walks {
     )
 }
 
+/// Walks of the mouth edge against the peg's side, each move a turn of
+/// 0.1 µrad to 1 mrad about a random axis through the point of the peg's
+/// axis nearest the mouth's centre (where a leaning peg pivots: the move
+/// that brings the side's gap nearest its bound), then a spin about the
+/// peg's own axis by up to π (which moves no gap of the side).
+fn walks_pivoting(prm: &Peg3dParams, seed: u64, starts: usize) -> Walks {
+    walk(prm, seed, starts, &[Pair::EdgeSide], |x, _, rng| {
+        let angle = 10f64.powf(rng.uniform(-7.0, -3.0));
+        let axis = Unit::new_normalize(Vector3::from_fn(|_, _| rng.uniform(-1.0, 1.0)));
+        let turn = UnitQuaternion::from_axis_angle(&axis, angle);
+        let q0 = UnitQuaternion::new_normalize(nalgebra::Quaternion::new(x[3], x[4], x[5], x[6]));
+        let a = q0 * Vector3::z();
+        let p0 = Vector3::new(x[0], x[1], x[2]);
+        let o = Vector3::new(0.0, 0.0, -prm.mouth_fillet);
+        let pivot = p0 + a * (o - p0).dot(&a);
+        let p = pivot + turn * (p0 - pivot);
+        let spin = UnitQuaternion::from_axis_angle(&Vector3::z_axis(), rng.uniform(-PI, PI));
+        let q = turn * q0 * spin;
+        SVector::from([p.x, p.y, p.z, q.w, q.i, q.j, q.k])
+    })
+}
+
+/// Walks of the rim against the block's top face and the bore's bottom,
+/// from a rim tilted by up to 0.05 rad with its lowest point within 10 µm
+/// of the plane and its centre up to 1 mm past where the whole circle is
+/// over the hole (the top) or over the bottom's disc, each move a
+/// horizontal slide of 1 µm to 0.3 mm, which moves no gap of the plane and
+/// carries the rim from over the hole onto the face (or out past the bore
+/// wall over the bottom).
+fn walks_across(prm: &Peg3dParams, seed: u64, starts: usize) -> Walks {
+    let begin = |pair: Pair, rng: &mut Rng| near_a_face(prm, pair, rng);
+    walk_from(
+        prm,
+        seed,
+        starts,
+        &[Pair::RimTop, Pair::RimBottom],
+        begin,
+        |x, _, rng| slid(x, rng),
+    )
+}
+
+/// A rim tilted by up to 0.05 rad (half of them towards their offset,
+/// the lowest point outermost) with its lowest point within 10 µm of
+/// `pair`'s plane and its centre up to 1 mm past where the whole circle is
+/// over the hole (the top face) or over the bottom's disc.
+fn near_a_face(prm: &Peg3dParams, pair: Pair, rng: &mut Rng) -> SVector<f64, 7> {
+    let (rho_p, half) = (prm.rim_fillet, 0.5 * prm.length);
+    let rr = prm.peg_radius() - rho_p;
+    let gamma = rng.uniform(0.0, 0.05);
+    let phi = rng.uniform(-PI, PI);
+    // Half the rims lean towards their offset: the lowest point outermost.
+    let psi = if rng.next_f64() < 0.5 {
+        phi
+    } else {
+        rng.uniform(-PI, PI)
+    };
+    let q = orientation(gamma, psi, rng.uniform(-PI, PI));
+    let a = q * Vector3::z();
+    let (plane, edge) = if pair == Pair::RimTop {
+        (0.0, prm.bore_radius() + prm.mouth_fillet)
+    } else {
+        (-prm.bore_depth, prm.bore_radius())
+    };
+    let offset = rng.uniform(0.0, (edge - rr).max(0.0) + 1e-3);
+    let sign = if rng.next_f64() < 0.5 { -1.0 } else { 1.0 };
+    let gap = sign * 10f64.powf(rng.uniform(-9.0, -5.0));
+    let centre = Vector3::new(
+        offset * phi.cos(),
+        offset * phi.sin(),
+        plane + rho_p + gap + rr * gamma.sin(),
+    );
+    let p = centre - a * (rho_p - half);
+    SVector::from([p.x, p.y, p.z, q.w, q.i, q.j, q.k])
+}
+
+/// `x` slid horizontally by 1 µm to 0.3 mm in a random direction.
+fn slid(x: &SVector<f64, 7>, rng: &mut Rng) -> SVector<f64, 7> {
+    let size = 10f64.powf(rng.uniform(-6.0, -3.5));
+    let phi = rng.uniform(-PI, PI);
+    let mut x = *x;
+    x[0] += size * phi.cos();
+    x[1] += size * phi.sin();
+    x
+}
+
 fn check(w: &Walks, starts: usize) {
     eprintln!(
-        "{} tracked searches ({} windowed), {} contacts matched, {} failures",
+        "{} tracked searches ({} windowed), {} certified clear, {} contacts matched, {} failures",
         w.tracked,
         w.windowed,
+        w.cached,
         w.matched,
         w.failures.len()
     );
@@ -208,4 +316,66 @@ fn a_tracked_search_finds_the_fresh_searchs_contacts_when_the_peg_turns_about_th
 fn a_tracked_search_finds_the_fresh_searchs_contacts_on_the_insertion_peg() {
     let starts = 20_000;
     check(&walks(&insertion_peg(), 0x72AC_0002, starts, false), starts);
+}
+
+#[test]
+fn a_tracked_search_finds_the_fresh_searchs_contacts_as_the_peg_pivots_and_spins() {
+    let starts = 20_000;
+    check(&walks_pivoting(&fig9(), 0x72AC_0005, starts), starts);
+}
+
+#[test]
+fn a_search_certified_off_the_faces_finds_the_fresh_searchs_contacts_as_the_rim_slides_across() {
+    let starts = 20_000;
+    let w = walks_across(&fig9(), 0x72AC_0006, starts);
+    eprintln!(
+        "{} searches certified off the face, {} certified clear, {} contacts matched, {} failures",
+        w.windowed,
+        w.cached,
+        w.matched,
+        w.failures.len()
+    );
+    assert!(
+        w.failures.is_empty(),
+        "{}",
+        w.failures[..w.failures.len().min(10)].join("\n")
+    );
+    // The plane pairs keep no tracked record: the walks exercise the
+    // certificate off the face and its reuse, and meet contacts.
+    assert!(w.windowed > starts / 20, "{} off the face", w.windowed);
+    assert!(w.cached > starts, "{} certified clear", w.cached);
+    assert!(w.matched > starts, "{} contacts", w.matched);
+}
+
+#[test]
+fn the_contact_path_near_the_faces_edges_finds_the_dense_references_valid_contacts() {
+    // Rims near the top face's and the bottom's edges, where the plane
+    // pairs' certificates (the circle off the face, the one minimum off
+    // it) decide: every valid contact of the dense reference is found.
+    let prm = fig9();
+    let pv = prm.vector();
+    let mut rng = Rng(0x72AC_0007);
+    let mut tally = Tally::default();
+    for n in 0..4000 {
+        let pair = if n % 2 == 0 {
+            Pair::RimTop
+        } else {
+            Pair::RimBottom
+        };
+        let x = slid(&near_a_face(&prm, pair, &mut rng), &mut rng);
+        let pose = Pose {
+            p: [x[0], x[1], x[2]],
+            q: [x[3], x[4], x[5], x[6]],
+        };
+        compare_contacts(&prm, &pv, &pose, &mut tally);
+    }
+    eprintln!(
+        "valid reference contacts by pair {:?}, {} failures",
+        tally.valid, tally.failed
+    );
+    assert!(tally.failed == 0, "{}", tally.failures.join("\n"));
+    let planes = [Pair::RimTop.index(), Pair::RimBottom.index()];
+    for k in planes {
+        assert!(tally.valid[k] > 100, "{:?}", tally.valid);
+    }
 }

@@ -109,6 +109,13 @@ pub struct Kept {
     pub complete: bool,
 }
 
+impl Kept {
+    /// Whether the angle `a` (rad, in `[0, 2π)`) lies on one of the arcs.
+    pub fn covers(&self, a: f64) -> bool {
+        self.arcs.iter().any(|arc| arc.lo <= a && a <= arc.hi)
+    }
+}
+
 /// Every local minimum of `prof` with `h < level` (and possibly other
 /// local minima), angles in `[0, 2π)`, into `out`.
 pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
@@ -228,15 +235,15 @@ fn search(
         let leaf = depth >= DEPTH || m <= lo || m >= hi || !e.refinable;
         if e.d2.lo > 0.0 || leaf {
             keep(arc, inside);
-            let (s_lo, _) = prof.slope(lo);
+            let at_lo = prof.slope(lo);
             // The circle's end is its start: one evaluation for both.
-            let (s_hi, _) = prof.slope(if hi >= TAU { 0.0 } else { hi });
+            let at_hi = prof.slope(if hi >= TAU { 0.0 } else { hi });
             work.points += 2;
             if leaf {
                 work.leaves += 1;
             }
-            let found = s_lo <= 0.0 && s_hi >= 0.0;
-            if found && !push(out, newton(prof, lo, hi, s_lo, s_hi, &mut work)) {
+            let found = at_lo.0 <= 0.0 && at_hi.0 >= 0.0;
+            if found && !push(out, newton(prof, (lo, hi), at_lo, at_hi, &mut work)) {
                 work.unresolved += 1;
             }
             continue;

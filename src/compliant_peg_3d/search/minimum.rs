@@ -62,17 +62,20 @@ pub(super) fn lower(a: &mut Option<f64>, v: f64) {
     *a = Some(a.map_or(v, |a| a.min(v)));
 }
 
+/// The slope `h′` and curvature `h″` at an end of a bracket.
+pub(super) type End = (f64, f64);
+
 /// The zero of `h′` in `[lo, hi]`, `h′` increasing there, from the slopes
-/// `s_lo = h′(lo) ≤ 0 ≤ s_hi = h′(hi)`: Newton on `h′` from the end
-/// nearer the zero (by the slopes' sizes), with bisection whenever a step
-/// leaves the bracket or `h″ ≤ 0`. A zero at an end (a pose symmetric
-/// about that angle) is found in one step.
+/// and curvatures at the ends, `h′(lo) ≤ 0 ≤ h′(hi)`: Newton on `h′`,
+/// with bisection whenever a step leaves the bracket or `h″ ≤ 0`, from
+/// the Newton step off the end nearer the zero (by the slopes' sizes, with
+/// that end's own `h″`), or else the secant. A zero at an end (a pose
+/// symmetric about that angle) is found in one step, or none.
 pub(super) fn newton(
     prof: &Profile,
-    mut lo: f64,
-    mut hi: f64,
-    s_lo: f64,
-    s_hi: f64,
+    (mut lo, mut hi): (f64, f64),
+    (s_lo, c_lo): End,
+    (s_hi, c_hi): End,
     work: &mut Work,
 ) -> f64 {
     if s_lo == 0.0 {
@@ -81,7 +84,26 @@ pub(super) fn newton(
     if s_hi == 0.0 {
         return hi;
     }
-    let mut a = if -s_lo < s_hi { lo } else { hi };
+    let inside = |t: f64| t > lo && t < hi;
+    let (end, slope, curve) = if -s_lo < s_hi {
+        (lo, s_lo, c_lo)
+    } else {
+        (hi, s_hi, c_hi)
+    };
+    let step = end - slope / curve;
+    let secant = lo - s_lo * ((hi - lo) / (s_hi - s_lo));
+    let mut a = if curve > 0.0 && inside(step) {
+        step
+    } else if curve > 0.0 && (step - end).abs() <= 2.0 * f64::EPSILON * end.abs().max(1.0) {
+        // A step that rounds onto the end: the zero is there.
+        return end;
+    } else if inside(secant) {
+        secant
+    } else {
+        0.5 * (lo + hi)
+    };
+    // The last Newton step's length (`None` after a bisection).
+    let mut last: Option<f64> = None;
     for _ in 0..100 {
         let (d1, d2) = prof.slope(a);
         work.points += 1;
@@ -94,19 +116,27 @@ pub(super) fn newton(
             lo = a;
         }
         let newton = a - d1 / d2;
+        let resolution = 2.0 * f64::EPSILON * a.abs().max(1.0);
+        let step = (newton - a).abs();
         // A Newton step below the angle's resolution: `a` is the zero to
         // rounding (also where the zero lies on the bracket's end, which
         // a strict bracket test would otherwise bisect towards for ~50
         // steps: a pose symmetric about `0` or `π`).
-        if d2 > 0.0 && (newton - a).abs() <= 2.0 * f64::EPSILON * a.abs().max(1.0) {
+        if d2 > 0.0 && step <= resolution {
             return a;
         }
-        let next = if d2 > 0.0 && newton > lo && newton < hi {
-            newton
-        } else {
-            0.5 * (lo + hi)
-        };
-        if (next - a).abs() <= 2.0 * f64::EPSILON * a.abs().max(1.0) || next <= lo || next >= hi {
+        let converging = d2 > 0.0 && newton > lo && newton < hi;
+        // Quadratic convergence: the step after this one is about
+        // `step² / last` times this one's ratio, so the error left after
+        // this step is about `step³ / last²`; below the resolution, the
+        // step lands on the zero to rounding and needs no evaluation.
+        if converging && last.is_some_and(|l| step < l && step * step * step <= resolution * l * l)
+        {
+            return newton;
+        }
+        let next = if converging { newton } else { 0.5 * (lo + hi) };
+        last = converging.then_some(step);
+        if (next - a).abs() <= resolution || next <= lo || next >= hi {
             return next.clamp(lo, hi);
         }
         a = next;
@@ -114,13 +144,22 @@ pub(super) fn newton(
     a
 }
 
+/// `a` (rad) wrapped into `[0, 2π)`.
+pub fn wrap(a: f64) -> f64 {
+    if (0.0..TAU).contains(&a) {
+        return a;
+    }
+    let a = a.rem_euclid(TAU);
+    if a >= TAU { 0.0 } else { a }
+}
+
 /// Adds the angle `a` (wrapped into `[0, 2π)`) unless a minimum within
 /// `10⁻⁹` rad is there already; false when `out` is full.
 pub fn push(out: &mut Angles, a: f64) -> bool {
-    let a = a.rem_euclid(TAU);
-    let a = if a >= TAU { 0.0 } else { a };
+    let a = wrap(a);
+    // Both in [0, 2π): the distance along the circle.
     let near = |m: f64| {
-        let d = (m - a).rem_euclid(TAU);
+        let d = (m - a).abs();
         d.min(TAU - d) <= 1e-9
     };
     out.iter().any(|&m| near(m)) || out.try_push(a).is_ok()

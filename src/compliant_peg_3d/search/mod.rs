@@ -73,7 +73,7 @@ fn polish(
         if next != a && (next - a).abs() < 1e-9 {
             let en = pair.eval(x, next, p);
             if en.d1.abs() < e.d1.abs() {
-                return (next.rem_euclid(std::f64::consts::TAU), en);
+                return (minimum::wrap(next), en);
             }
         }
     }
@@ -111,18 +111,20 @@ struct Clear {
 /// - the rim against a horizontal plane: by at most the vertical one,
 ///   `|Δp_z| + 2|Δq| √(ϱ² + (L/2 − ρ_p)²)`;
 /// - the rim against the mouth edge: by the whole displacement;
-/// - the mouth edge's point `m` against the peg's axis line `(p, a)`:
-///   `|(m − p′) × a′| − |(m − p) × a|` is at most `|Δp × a′|` (the
-///   displacement across the new axis: sliding along its own axis moves
-///   no gap of the side) plus `|(m − p) × (a′ − a)| ≤ 2|Δq| |m − p|`, with
-///   `|m − p| ≤ R_m + |p − o|` (`o = −ρ_h e_z` the mouth's centre).
+/// - the mouth edge's point `m` against the peg's axis line: by the
+///   displacement across the axis of the axis point at the mouth, plus
+///   the axis's own turn times the mouth's reach from that point
+///   ([`side_moved`]: the side is a surface of revolution about the
+///   peg's axis, so a spin about it moves no gap).
 ///
 /// A search that dropped arcs by the pair's window ([`profile::Window`],
-/// `windowed`) also needs the window's coordinate to move less than the
-/// bound: for the rim against the bore wall the height of a rim point
-/// moves by at most `|Δp_z| + 2|Δq| √(ϱ² + (L/2 − ρ_p)²)`, for the peg's
-/// side the axial coordinate `(m − p)·a` by at most `|Δp| + 2|Δq| |m −
-/// p|`; such a bound counts the whole `|Δp|` for both.
+/// `windowed`), or certified the pair clear because its circle keeps off
+/// the part of the surface that exists ([`Problem::Off`]), also needs the
+/// window's coordinate to move less than the bound: the height of a rim
+/// point (the bore wall) and its distance from the hole's axis (the
+/// faces) move by at most `|Δp| + 2|Δq| √(ϱ² + (L/2 − ρ_p)²)`, the peg's
+/// side's axial coordinate by the bound of [`side_moved`]; such a bound
+/// counts the whole `|Δp|`.
 ///
 /// The sum is widened by `10⁻¹²` of itself and `8ε |Δp|` for its rounding.
 ///
@@ -201,24 +203,58 @@ fn moved_to(
     let d = b.fixed_rows::<3>(0) - a.fixed_rows::<3>(0);
     let (qa, qb) = (a.fixed_rows::<4>(3), b.fixed_rows::<4>(3));
     let dq = (qb - qa).norm().min((qb + qa).norm());
-    let (r, len, rho_p, big_r, rho_h) = (p[0], p[1], p[2], p[3], p[4]);
+    let (r, len, rho_p) = (p[0], p[1], p[2]);
     let rim = ((r - rho_p).powi(2) + (0.5 * len - rho_p).powi(2)).sqrt();
     let bound = match pair {
         Pair::RimWall if !windowed => (d[0] * d[0] + d[1] * d[1]).sqrt() + 2.0 * dq * rim,
         Pair::RimWall | Pair::RimEdge => d.norm() + 2.0 * dq * rim,
+        Pair::RimTop | Pair::RimBottom if windowed => d.norm() + 2.0 * dq * rim,
         Pair::RimTop | Pair::RimBottom => d[2].abs() + 2.0 * dq * rim,
-        Pair::EdgeSide => {
-            let axis = axis_of(b);
-            let across = if windowed {
-                d.norm()
-            } else {
-                (d - axis * d.dot(&axis)).norm()
-            };
-            let o = nalgebra::Vector3::new(a[0], a[1], a[2] + rho_h).norm();
-            across + 2.0 * dq * (big_r + rho_h + o)
-        }
+        Pair::EdgeSide => return side_moved(p, a, b, windowed),
     };
     bound * (1.0 + 1e-12) + 8.0 * f64::EPSILON * d.norm()
+}
+
+/// [`moved_to`] for the mouth edge against the peg's side: the side is a
+/// surface of revolution about the peg's axis line, so the gap of a mouth
+/// point `m` is `|(m − s) × a| − r − ρ_h` for any point `s` of the line
+/// and a spin about the axis moves no gap. With `s = p + t a` the axis
+/// point nearest the mouth's centre `o = −ρ_h e_z` at pose `a` (`t = (o −
+/// p)·a`) and `s′ = p′ + t a′` the same body point at pose `b`,
+///
+/// ```text
+/// (m − s′) × a′ = (m − s) × a + (m − s) × (a′ − a) − (s′ − s) × a′
+/// ```
+///
+/// so the distance changes by at most `|Δs × a′| + |m − s| |a′ − a|`,
+/// `|m − s| ≤ R + ρ_h + |s − o|`: the axis's turn `|a′ − a|` (not the
+/// body's, which counts the spin) about the point of the axis at the
+/// mouth (where a leaning peg pivots), not about its centre. The axial
+/// coordinate `(m − p)·a = (m − s)·a + t` of a windowed search changes by
+/// at most `|Δs| + |m − s| |a′ − a|`. The sum is widened for its rounding
+/// (the axes' components are within a few ulps).
+fn side_moved(
+    p: &SVector<f64, 16>,
+    a: &SVector<f64, 7>,
+    b: &SVector<f64, 7>,
+    windowed: bool,
+) -> f64 {
+    let (big_r, rho_h) = (p[3], p[4]);
+    let (axis_a, axis_b) = (axis_of(a), axis_of(b));
+    let (pa, pb) = (a.fixed_rows::<3>(0), b.fixed_rows::<3>(0));
+    let o = nalgebra::Vector3::new(0.0, 0.0, -rho_h);
+    let t = (o - pa).dot(&axis_a);
+    let s = pa + axis_a * t;
+    let ds = (pb + axis_b * t) - s;
+    let across = if windowed {
+        ds.norm()
+    } else {
+        (ds - axis_b * ds.dot(&axis_b)).norm()
+    };
+    let lever = big_r + rho_h + (s - o).norm();
+    let bound = across + lever * (axis_b - axis_a).norm();
+    let size = pa.norm() + pb.norm() + t.abs() + lever;
+    bound * (1.0 + 1e-12) + 16.0 * f64::EPSILON * size
 }
 
 /// A pair's full search at a pose, kept for the poses near it: the arcs
@@ -271,7 +307,7 @@ impl Search {
         let mut out = Angles::new();
         self.work = Work::default();
         match Problem::of(pair, x, p, below) {
-            Problem::Nothing => {}
+            Problem::Nothing | Problem::Off(_) | Problem::Invalid(_) => {}
             Problem::Closed(None) => self.work.flat = true,
             Problem::Closed(Some(a)) => {
                 minimum::push(&mut out, a);
@@ -316,10 +352,23 @@ impl Search {
                 return (out, TRACKED_BELOW);
             }
         }
-        let (Problem::Search { h, level }, window) = Problem::with_window(pair, x, p, CLEARANCE)
-        else {
-            self.tracked = None;
-            return (self.minima(pair, x, p, CLEARANCE), CLEARANCE);
+        let (h, level, window) = match Problem::with_window(pair, x, p, CLEARANCE) {
+            (Problem::Search { h, level }, window) => (h, level, window),
+            (Problem::Off(by), _) => {
+                // No valid contact while the circle keeps off the face.
+                self.tracked = None;
+                self.work.window_floor = Some(by);
+                return (out, by);
+            }
+            (Problem::Invalid(least), _) => {
+                // The one minimum is no contact; every gap is at least its.
+                self.tracked = None;
+                return (out, least);
+            }
+            _ => {
+                self.tracked = None;
+                return (self.minima(pair, x, p, CLEARANCE), CLEARANCE);
+            }
         };
         let mut kept = certified::Kept::default();
         self.work = certified::minima_kept(&h, level, window.as_ref(), &mut out, &mut kept);
@@ -409,6 +458,11 @@ impl Search {
             margin: lowest * (1.0 - 1e-9),
             windowed: self.work.windowed(),
         });
-        merge::assign(pair, x, p, &mut out[first..]);
+        // The record this search made or started from: off its kept arcs
+        // (when none was dropped by the window) the gap is at least
+        // `CLEARANCE − TRACK` > 0, so a col there is out of contact.
+        let tracked = self.tracked.as_ref().filter(|t| !t.windowed);
+        let apart = |a: f64| tracked.is_some_and(|t| !t.kept.covers(a));
+        merge::assign(pair, x, p, &mut out[first..], apart);
     }
 }

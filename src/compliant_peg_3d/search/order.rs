@@ -147,12 +147,12 @@ impl Decider<'_> {
                 // Convex: one minimum exactly when h′ changes sign, the
                 // end of the circle evaluated at its start (as the branch
                 // and bound does).
-                let (s_lo, _) = self.prof.slope(a.t);
-                let (s_hi, _) = self.prof.slope(if b.t >= TAU { 0.0 } else { b.t });
+                let lo = self.prof.slope(a.t);
+                let hi = self.prof.slope(if b.t >= TAU { 0.0 } else { b.t });
                 self.work.points += 2;
-                if s_lo <= 0.0
-                    && s_hi >= 0.0
-                    && !push(self.out, newton(self.prof, a.t, b.t, s_lo, s_hi, self.work))
+                if lo.0 <= 0.0
+                    && hi.0 >= 0.0
+                    && !push(self.out, newton(self.prof, (a.t, b.t), lo, hi, self.work))
                 {
                     self.work.unresolved += 1;
                 }

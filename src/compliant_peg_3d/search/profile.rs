@@ -128,6 +128,59 @@ pub fn gap_at_least(pair: Pair, p: &SVector<f64, 16>, h_lo: f64) -> f64 {
     gap - gap.abs() * 1e-12 - 16.0 * f64::EPSILON * size
 }
 
+/// How far (m) every point of the rim's tube-centre circle keeps
+/// horizontally out of the part of `pair`'s plane that exists, when it
+/// does: the top face is valid at radii `≥ R + ρ_h` (outside the mouth's
+/// round), the bottom at radii `≤ R` ([`Pair::valid`]). The contact point
+/// of the rim on a plane lies under its tube centre, at the radius `√F`;
+/// `F = |c_xy|²` keeps within `a₀ ± (n₁ + n₂)`. `None` where the circle
+/// may reach the face.
+fn off_face(pair: Pair, f: &Trig2, big_r: f64, rho_h: f64) -> Option<f64> {
+    let n1 = (f.a1 * f.a1 + f.b1 * f.b1).sqrt();
+    let n2 = (f.a2 * f.a2 + f.b2 * f.b2).sqrt();
+    // The range's rounding: a few ulps of its terms.
+    let slack = 1e-12 * (f.a0.abs() + n1 + n2);
+    let out = match pair {
+        Pair::RimTop => {
+            let edge = big_r + rho_h;
+            edge - (f.a0 + n1 + n2 + slack).max(0.0).sqrt()
+        }
+        Pair::RimBottom => (f.a0 - n1 - n2 - slack).max(0.0).sqrt() - big_r,
+        _ => return None,
+    };
+    let by = out * (1.0 - 1e-12) - 16.0 * f64::EPSILON * (big_r + rho_h);
+    (by > 0.0).then_some(by)
+}
+
+/// Whether the rim's tube centre at the angle of cosine and sine `(c, s)`
+/// lies clearly (by `10⁻⁹` of the radius) off the part of `pair`'s plane
+/// that exists (see [`off_face`]): its radius `√F` inside the top face's
+/// `R + ρ_h`, or outside the bottom's `R`.
+fn off_face_at(pair: Pair, f: &Trig2, (c, s): (f64, f64), big_r: f64, rho_h: f64) -> bool {
+    let radial = f.at(c, s)[0].max(0.0).sqrt();
+    match pair {
+        Pair::RimTop => radial < (big_r + rho_h) * (1.0 - 1e-9),
+        Pair::RimBottom => radial > big_r * (1.0 + 1e-9),
+        _ => false,
+    }
+}
+
+/// The level `T` of a pair's profile: `h < T` exactly where `g < below`
+/// (m); `None` for the plane pairs (no profile), and for the others where
+/// no point has a gap below `below` (the sum of the tubes' radii and
+/// `below` not positive). The bore wall's `h = −F` is below every level
+/// when `R − ρ_p − below ≤ 0`: its level is then `+∞`.
+pub fn level(pair: Pair, p: &SVector<f64, 16>, below: f64) -> Option<f64> {
+    let (r, rho_p, big_r, rho_h) = (p[0], p[2], p[3], p[4]);
+    let positive = |v: f64| if v > 0.0 { Some(v * v) } else { None };
+    match pair {
+        Pair::RimWall => Some(positive(big_r - rho_p - below).map_or(f64::INFINITY, |v| -v)),
+        Pair::EdgeSide => positive(r + rho_h + below),
+        Pair::RimEdge => positive(rho_p + rho_h + below),
+        Pair::RimTop | Pair::RimBottom => None,
+    }
+}
+
 /// A pair's search problem at one pose: its profile `h` and the level
 /// below which a minimum of `h` is a minimum of `g` below the asked
 /// bound; or, for the plane pairs, the one minimum in closed form.
@@ -144,6 +197,16 @@ pub enum Problem {
     Closed(Option<f64>),
     /// No point of the circle comes below the bound.
     Nothing,
+    /// No point of the circle is over the part of its plane that exists
+    /// (the block's top face outside the mouth's round, the bore's bottom
+    /// inside its wall): every tube-centre point keeps out of it
+    /// horizontally by at least this much (m). Only for the contact path
+    /// ([`Problem::with_window`]).
+    Off(f64),
+    /// The plane's one minimum lies off the part of the plane that exists:
+    /// no contact; every point's gap is at least this much (m, the
+    /// minimum's, less its rounding). Only for the contact path.
+    Invalid(f64),
 }
 
 /// `(e₁, e₂, a)`: the columns of the rotation matrix of the unit
@@ -254,7 +317,7 @@ impl Problem {
         below: f64,
         windowed: bool,
     ) -> (Problem, Option<Window>) {
-        let (r, len, rho_p, big_r, rho_h, depth) = (p[0], p[1], p[2], p[3], p[4], p[5]);
+        let (len, rho_p, big_r, rho_h, depth) = (p[1], p[2], p[3], p[4], p[5]);
         let window = |t, lo, hi| {
             if windowed {
                 Window::new(t, lo, hi, below)
@@ -262,14 +325,24 @@ impl Problem {
                 None
             }
         };
-        let positive = |v: f64| if v > 0.0 { Some(v * v) } else { None };
         match pair {
             Pair::RimTop | Pair::RimBottom => {
-                let (_, z) = rim(x, p);
+                let (f, z) = rim(x, p);
+                if windowed && let Some(by) = off_face(pair, &f, big_r, rho_h) {
+                    return (Problem::Off(by), None);
+                }
                 let plane = if pair == Pair::RimTop { 0.0 } else { -depth };
                 let amp = z.a1.hypot(z.b1);
-                if z.a0 - amp - rho_p - plane >= below {
+                let least = z.a0 - amp - rho_p - plane;
+                if least >= below {
                     return (Problem::Nothing, None);
+                }
+                if windowed
+                    && amp > 0.0
+                    && off_face_at(pair, &f, (-z.a1 / amp, -z.b1 / amp), big_r, rho_h)
+                {
+                    let size = z.a0.abs() + amp + rho_p + plane.abs();
+                    return (Problem::Invalid(least - 1e-12 * size), None);
                 }
                 let angle =
                     (amp > 0.0).then(|| f64::atan2(-z.b1, -z.a1).rem_euclid(std::f64::consts::TAU));
@@ -277,14 +350,11 @@ impl Problem {
             }
             Pair::RimWall => {
                 let (f, z) = rim(x, p);
-                let level = match positive(big_r - rho_p - below) {
-                    Some(v) => -v,
-                    None => f64::INFINITY,
-                };
+                let level = level(pair, p, below).unwrap_or(f64::INFINITY);
                 let h = Profile::Trig((-f).bounded());
                 (Problem::Search { h, level }, window(z, -depth, -rho_h))
             }
-            Pair::EdgeSide => match positive(r + rho_h + below) {
+            Pair::EdgeSide => match level(pair, p, below) {
                 Some(level) => {
                     let (f, axial) = edge(x, p);
                     let h = Profile::Trig(f.bounded());
@@ -293,7 +363,7 @@ impl Problem {
                 }
                 None => (Problem::Nothing, None),
             },
-            Pair::RimEdge => match positive(rho_p + rho_h + below) {
+            Pair::RimEdge => match level(pair, p, below) {
                 Some(level) => {
                     let (f, mut z) = rim(x, p);
                     z.a0 += rho_h;

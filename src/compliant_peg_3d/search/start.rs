@@ -41,9 +41,10 @@ static TABLE: LazyLock<[(f64, (f64, f64)); 2 * START]> = LazyLock::new(|| {
 /// `(sin t, cos t)`: from the table at the start arcs' ends and midpoints
 /// (the same values as `t.sin_cos()`), computed elsewhere.
 pub fn sin_cos(t: f64) -> (f64, f64) {
-    let j = (t * (2 * START) as f64 / TAU).round();
-    if (0.0..(2 * START) as f64).contains(&j) {
-        let (at, v) = TABLE[j as usize];
+    // The nearest table index (a truncating cast of `x + ½`, `x ≥ −½`).
+    let x = t * ((2 * START) as f64 / TAU) + 0.5;
+    if (0.0..(2 * START) as f64).contains(&x) {
+        let (at, v) = TABLE[x as usize];
         if at.to_bits() == t.to_bits() {
             return v;
         }
