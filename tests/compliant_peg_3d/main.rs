@@ -16,6 +16,7 @@ mod limits_planar;
 mod limits_rigid;
 mod limits_statics;
 mod modules;
+mod reuse_bounds;
 mod search_property;
 mod seated;
 mod side_wall;

@@ -15,7 +15,7 @@ use crate::common::rng::Rng;
 use crate::common::search_reference::{
     GRAZING, Geo, Pose, Tally, angle_distance, compare_contacts, near_contact,
 };
-use crate::insertion_split::insertion_peg;
+use crate::insertion_split::{insertion_peg, split_pose};
 use nalgebra::{SVector, Unit, UnitQuaternion, Vector3};
 use pegdyn::compliant_peg_3d::{ContactPoint, Contacts, Pair, Peg3dParams, Search};
 use std::f64::consts::PI;
@@ -378,4 +378,50 @@ fn the_contact_path_near_the_faces_edges_finds_the_dense_references_valid_contac
     for k in planes {
         assert!(tally.valid[k] > 100, "{:?}", tally.valid);
     }
+}
+
+#[test]
+fn a_tracked_search_finds_the_fresh_searchs_contacts_through_a_splitting_minimum() {
+    // The insertion run's split of one rim-on-mouth minimum into two about
+    // a col: walks from poses raised or lowered by up to 1 µm about it,
+    // each move up or down by 10⁻¹² to 10⁻⁶ m and aside by up to 1 µm, so
+    // that an arc its record decided convex may hold two minima now.
+    let prm = insertion_peg();
+    let starts = 4000;
+    let w = walk_from(
+        &prm,
+        0x72AC_0008,
+        starts,
+        &[Pair::RimEdge],
+        |_, rng| {
+            let mut x = split_pose();
+            x[2] += rng.uniform(-1e-6, 1e-6);
+            x[1] += rng.uniform(-1e-7, 1e-7);
+            x
+        },
+        |x, _, rng| {
+            let sign = if rng.next_f64() < 0.5 { -1.0 } else { 1.0 };
+            let mut x = *x;
+            x[2] += sign * 10f64.powf(rng.uniform(-12.0, -6.0));
+            x[1] += rng.uniform(-1e-6, 1e-6);
+            x
+        },
+    );
+    eprintln!(
+        "{} tracked searches, {} contacts matched, {} failures",
+        w.tracked,
+        w.matched,
+        w.failures.len()
+    );
+    assert!(
+        w.failures.is_empty(),
+        "{}",
+        w.failures[..w.failures.len().min(10)].join("\n")
+    );
+    assert!(
+        w.tracked > starts && w.matched > starts,
+        "{} {}",
+        w.tracked,
+        w.matched
+    );
 }

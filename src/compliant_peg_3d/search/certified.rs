@@ -49,6 +49,7 @@
 use super::minimum::{Angles, Work, lower, newton, push};
 use super::order;
 use super::profile::{Profile, Window};
+use super::reuse::{Carried, Kind, Note, Shift, carry};
 use super::start;
 use std::f64::consts::TAU;
 
@@ -105,6 +106,8 @@ pub const KEPT: usize = 32;
 pub struct Kept {
     /// The arcs, in the order they were decided.
     pub arcs: arrayvec::ArrayVec<Arc, KEPT>,
+    /// How each arc was decided, with its enclosures (the same order).
+    pub notes: arrayvec::ArrayVec<Note, KEPT>,
     /// Whether `arcs` and the level-dropped arcs cover the circle.
     pub complete: bool,
 }
@@ -119,7 +122,7 @@ impl Kept {
 /// Every local minimum of `prof` with `h < level` (and possibly other
 /// local minima), angles in `[0, 2π)`, into `out`.
 pub fn minima(prof: &Profile, level: f64, out: &mut Angles) -> Work {
-    search(prof, level, None, &starts(), out, None)
+    search(prof, level, None, &starts(), None, out, None)
 }
 
 /// The start arcs.
@@ -145,38 +148,60 @@ pub fn minima_kept(
     out: &mut Angles,
     kept: &mut Kept,
 ) -> Work {
-    search(prof, level, window, &starts(), out, Some(kept))
+    search(prof, level, window, &starts(), None, out, Some(kept))
 }
 
-/// Every local minimum of `prof` with `h < level` on the arcs `from`
-/// (and possibly other local minima), into `out`: the branch and bound
-/// started from those arcs instead of the start arcs. With the arcs of a
-/// [`Kept`] record taken at another pose, these are the minima below the
-/// level everywhere except on the arcs that record's level dropped.
+/// Every local minimum of `prof` with `h < level` on the arcs `from` kept
+/// by a search of the profile `was` (at another pose), and possibly other
+/// local minima, into `out`: the branch and bound started from those
+/// arcs instead of the start arcs. These are the minima below the level
+/// everywhere except on the arcs that record's level dropped. An arc whose
+/// decision there still holds by its margins against the change from `was`
+/// to `prof` ([`super::reuse`]) is not enclosed again ([`Work::reused`]).
 pub fn minima_on(
     prof: &Profile,
     level: f64,
     window: Option<&Window>,
-    from: &[Arc],
+    (from, was): (&Kept, &Profile),
     out: &mut Angles,
 ) -> Work {
-    search(prof, level, window, from, out, None)
+    let shift = Shift::between(was, prof).map(|s| (&from.notes[..], s));
+    search(prof, level, window, &from.arcs, shift, out, None)
+}
+
+/// A convex arc's (or a leaf's) one minimum below the level, if `h′`
+/// changes sign from `lo` to `hi`: its end slopes, then Newton.
+fn settle(prof: &Profile, (lo, hi): (f64, f64), leaf: bool, out: &mut Angles, work: &mut Work) {
+    let at_lo = prof.slope(lo);
+    // The circle's end is its start: one evaluation for both.
+    let at_hi = prof.slope(if hi >= TAU { 0.0 } else { hi });
+    work.points += 2;
+    if leaf {
+        work.leaves += 1;
+    }
+    let found = at_lo.0 <= 0.0 && at_hi.0 >= 0.0;
+    if found && !push(out, newton(prof, (lo, hi), at_lo, at_hi, work)) {
+        work.unresolved += 1;
+    }
 }
 
 /// The branch and bound from the arcs `from`, dropping the arcs outside
 /// `window` and recording into `kept` the arcs neither its level nor the
-/// window dropped.
+/// window dropped, with their decisions; `reuse` holds the decisions of
+/// the arcs `from` at another pose and the shift of the profile since.
 fn search(
     prof: &Profile,
     level: f64,
     window: Option<&Window>,
     from: &[Arc],
+    reuse: Option<(&[Note], Shift)>,
     out: &mut Angles,
     mut kept: Option<&mut Kept>,
 ) -> Work {
     let mut work = Work::default();
     if let Some(k) = kept.as_deref_mut() {
         k.arcs.clear();
+        k.notes.clear();
         k.complete = false;
     }
     if let Profile::Trig(f) = prof
@@ -186,25 +211,37 @@ fn search(
         return work;
     }
     let mut overflow = false;
-    let mut keep = |arc: Arc, inside: bool| {
+    let recording = kept.is_some();
+    let mut keep = |arc: Arc, inside: bool, note: Option<Note>| {
         if let Some(k) = kept.as_deref_mut()
             && !inside
-            && k.arcs.try_push(arc).is_err()
+            && let Some(note) = note
+            && (k.arcs.try_push(arc).is_err() || k.notes.try_push(note).is_err())
         {
             overflow = true;
         }
     };
+    // The note of an arc kept as `kind` with the enclosures `e` (only
+    // while recording: the parts cost two enclosures).
+    let note = |kind: Kind, e, (c, s, w)| {
+        recording.then(|| Note {
+            kind,
+            h: e,
+            parts: prof.parts(c, s, w),
+        })
+    };
     // The higher-derivative cut's last end points, shared by its arcs.
     let mut memo = order::Memo::default();
-    // An entry: the arc, and whether it lies inside an arc already
-    // recorded whole (a piece of an arc cut by a higher derivative).
-    let mut stack = arrayvec::ArrayVec::<(Arc, bool), STACK>::new();
-    for arc in from.iter().rev() {
-        if stack.try_push((*arc, false)).is_err() {
+    // An entry: the arc, whether it lies inside an arc already recorded
+    // whole (a piece of an arc cut by a higher derivative), and its index
+    // in `from` (whose decision `reuse` may carry).
+    let mut stack = arrayvec::ArrayVec::<(Arc, bool, Option<usize>), STACK>::new();
+    for (i, arc) in from.iter().enumerate().rev() {
+        if stack.try_push((*arc, false, Some(i))).is_err() {
             work.unresolved += 1;
         }
     }
-    while let Some((arc, inside)) = stack.pop() {
+    while let Some((arc, inside, from_index)) = stack.pop() {
         let Arc {
             lo,
             hi,
@@ -215,44 +252,67 @@ fn search(
             work.unresolved += 1 + stack.len();
             break;
         }
-        work.arcs += 1;
         let m = 0.5 * (lo + hi);
-        let (s, c) = start::sin_cos(m);
         let w = half_width(lo, hi, m);
-        if let Some(out) = window.and_then(|win| win.outside(c, s, w)) {
-            lower(&mut work.window_floor, out);
-            continue;
+        let mut sc = None;
+        if let Some(win) = window {
+            let (s, c) = start::sin_cos(m);
+            sc = Some((s, c));
+            if let Some(out) = win.outside(c, s, w) {
+                work.arcs += 1;
+                lower(&mut work.window_floor, out);
+                continue;
+            }
         }
+        let carried = reuse.as_ref().and_then(|(notes, shift)| {
+            let note = notes.get(from_index?)?;
+            Some(carry(note, shift.over(note)?, level))
+        });
+        match carried {
+            Some(Carried::Above(floor)) => {
+                work.reused += 1;
+                lower(&mut work.floor, floor);
+                continue;
+            }
+            Some(Carried::Clear) => {
+                work.reused += 1;
+                continue;
+            }
+            Some(Carried::Convex) => {
+                work.reused += 1;
+                settle(prof, (lo, hi), false, out, &mut work);
+                continue;
+            }
+            Some(Carried::Afresh) | None => {}
+        }
+        work.arcs += 1;
+        let (s, c) = sc.unwrap_or_else(|| start::sin_cos(m));
         let e = prof.enclose(c, s, w, level);
         if e.value.lo >= level {
             lower(&mut work.floor, e.value.lo);
             continue;
         }
         if e.d1.excludes_zero() || e.d2.hi < 0.0 {
-            keep(arc, inside);
+            let kind = if e.d1.excludes_zero() {
+                Kind::Monotone
+            } else {
+                Kind::Concave
+            };
+            keep(arc, inside, note(kind, e, (c, s, w)));
             continue;
         }
         let leaf = depth >= DEPTH || m <= lo || m >= hi || !e.refinable;
         if e.d2.lo > 0.0 || leaf {
-            keep(arc, inside);
-            let at_lo = prof.slope(lo);
-            // The circle's end is its start: one evaluation for both.
-            let at_hi = prof.slope(if hi >= TAU { 0.0 } else { hi });
-            work.points += 2;
-            if leaf {
-                work.leaves += 1;
-            }
-            let found = at_lo.0 <= 0.0 && at_hi.0 >= 0.0;
-            if found && !push(out, newton(prof, (lo, hi), at_lo, at_hi, &mut work)) {
-                work.unresolved += 1;
-            }
+            let kind = if leaf { Kind::Other } else { Kind::Convex };
+            keep(arc, inside, note(kind, e, (c, s, w)));
+            settle(prof, (lo, hi), leaf, out, &mut work);
             continue;
         }
         if higher && depth >= ORDER_DEPTH {
             let mut rest = order::Rest::new();
             if order::decide(prof, lo, hi, c, s, w, out, &mut work, &mut rest, &mut memo) {
                 work.ordered += 1;
-                keep(arc, inside);
+                keep(arc, inside, note(Kind::Other, e, (c, s, w)));
                 for (a, b) in rest {
                     let piece = Arc {
                         lo: a,
@@ -260,7 +320,7 @@ fn search(
                         depth: depth + 1,
                         higher: false,
                     };
-                    if stack.try_push((piece, true)).is_err() {
+                    if stack.try_push((piece, true, None)).is_err() {
                         work.unresolved += 1;
                     }
                 }
@@ -275,8 +335,8 @@ fn search(
             depth: depth + 1,
             higher,
         };
-        if stack.try_push((half(m, hi), inside)).is_err()
-            || stack.try_push((half(lo, m), inside)).is_err()
+        if stack.try_push((half(m, hi), inside, None)).is_err()
+            || stack.try_push((half(lo, m), inside, None)).is_err()
         {
             work.unresolved += 1;
         }

@@ -36,6 +36,10 @@ pub struct Work {
     pub leaves: usize,
     /// Arcs decided by the sign of `h‴` or `h⁗` ([`super::order`]).
     pub ordered: usize,
+    /// Arcs of a tracked record decided by their record's enclosures,
+    /// which still hold by their margins ([`super::reuse`]): not enclosed
+    /// again, and not in `arcs`.
+    pub reused: usize,
     /// Searched only on the arcs an earlier full search at a nearby pose
     /// kept (the rest of the circle was certified clear from there).
     pub tracked: bool,

@@ -42,6 +42,7 @@ pub mod interval;
 pub mod minimum;
 pub mod order;
 pub mod profile;
+pub mod reuse;
 pub mod start;
 pub mod tori;
 pub mod trig;
@@ -264,6 +265,8 @@ fn side_moved(
 #[derive(Clone, Debug, PartialEq)]
 struct Tracked {
     pose: SVector<f64, 7>,
+    /// The profile searched there.
+    profile: profile::Profile,
     kept: certified::Kept,
     /// Arcs were dropped by the pair's window ([`Clear::windowed`]).
     windowed: bool,
@@ -340,8 +343,13 @@ impl Search {
                 if let (Problem::Search { h, level }, window) =
                     Problem::with_window(pair, x, p, TRACKED_BELOW)
                 {
-                    self.work =
-                        certified::minima_on(&h, level, window.as_ref(), &t.kept.arcs, &mut out);
+                    self.work = certified::minima_on(
+                        &h,
+                        level,
+                        window.as_ref(),
+                        (&t.kept, &t.profile),
+                        &mut out,
+                    );
                 }
                 self.work.tracked = true;
                 // The arcs the record's window dropped are still out of it
@@ -375,6 +383,7 @@ impl Search {
         let windowed = self.work.windowed();
         self.tracked = kept.complete.then_some(Tracked {
             pose: *x,
+            profile: h,
             kept,
             windowed,
         });

@@ -393,6 +393,16 @@ impl Profile {
         }
     }
 
+    /// For the rim on the mouth edge, the enclosures of `F` and `Z` over
+    /// `|θ − m| ≤ w` (those [`Profile::enclose`] combines), `(c, s)` the
+    /// cosine and sine of `m`; `None` for a trigonometric profile.
+    pub fn parts(&self, c: f64, s: f64, w: f64) -> Option<(Enclosure, Enclosure)> {
+        match self {
+            Profile::Trig(_) => None,
+            Profile::Tori { f, z, .. } => Some((f.enclose(c, s, w), z.enclose(c, s, w))),
+        }
+    }
+
     /// Enclosures of `h, h′, …, h⁗` at the angle `t` (rad), or `None`
     /// where they cannot be bounded (the rim's circle through the hole's
     /// axis).
