@@ -252,18 +252,9 @@ fn search(
             work.unresolved += 1 + stack.len();
             break;
         }
-        let m = 0.5 * (lo + hi);
-        let w = half_width(lo, hi, m);
-        let mut sc = None;
-        if let Some(win) = window {
-            let (s, c) = start::sin_cos(m);
-            sc = Some((s, c));
-            if let Some(out) = win.outside(c, s, w) {
-                work.arcs += 1;
-                lower(&mut work.window_floor, out);
-                continue;
-            }
-        }
+        // A record's decision that still holds settles the arc before its
+        // window is asked: the window only ever drops arcs (a minimum it
+        // would have dropped is found, and is no contact).
         let carried = reuse.as_ref().and_then(|(notes, shift)| {
             let note = notes.get(from_index?)?;
             Some(carry(note, shift.over(note)?, level))
@@ -286,7 +277,13 @@ fn search(
             Some(Carried::Afresh) | None => {}
         }
         work.arcs += 1;
-        let (s, c) = sc.unwrap_or_else(|| start::sin_cos(m));
+        let m = 0.5 * (lo + hi);
+        let (s, c) = start::sin_cos(m);
+        let w = half_width(lo, hi, m);
+        if let Some(out) = window.and_then(|win| win.outside(c, s, w)) {
+            lower(&mut work.window_floor, out);
+            continue;
+        }
         let e = prof.enclose(c, s, w, level);
         if e.value.lo >= level {
             lower(&mut work.floor, e.value.lo);

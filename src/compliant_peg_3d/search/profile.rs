@@ -40,7 +40,7 @@
 use super::interval::Iv;
 use super::start;
 use super::tori;
-use super::trig::{Bounded, Enclosure, Trig2};
+use super::trig::{Bounded, Enclosure, Trig2, amplitude};
 use crate::compliant_peg_3d::contact::Pair;
 use nalgebra::SVector;
 
@@ -86,7 +86,7 @@ impl Window {
     /// such a window could drop no arc, and no window (which only ever
     /// drops arcs) is always safe.
     fn new(t: Trig2, lo: f64, hi: f64, margin: f64) -> Option<Window> {
-        let amp = t.a1.hypot(t.b1);
+        let amp = amplitude(t.a1, t.b1);
         if t.a0 - amp >= lo - margin && t.a0 + amp <= hi + margin {
             return None;
         }
@@ -332,20 +332,24 @@ impl Problem {
                     return (Problem::Off(by), None);
                 }
                 let plane = if pair == Pair::RimTop { 0.0 } else { -depth };
-                let amp = z.a1.hypot(z.b1);
+                let amp = amplitude(z.a1, z.b1);
                 let least = z.a0 - amp - rho_p - plane;
                 if least >= below {
                     return (Problem::Nothing, None);
                 }
+                // The minimum's direction (a rim level to rounding has none
+                // to trust).
+                let norm = (z.a1 * z.a1 + z.b1 * z.b1).sqrt();
                 if windowed
-                    && amp > 0.0
-                    && off_face_at(pair, &f, (-z.a1 / amp, -z.b1 / amp), big_r, rho_h)
+                    && norm > 1e-140
+                    && off_face_at(pair, &f, (-z.a1 / norm, -z.b1 / norm), big_r, rho_h)
                 {
                     let size = z.a0.abs() + amp + rho_p + plane.abs();
                     return (Problem::Invalid(least - 1e-12 * size), None);
                 }
+                let tilted = z.a1 != 0.0 || z.b1 != 0.0;
                 let angle =
-                    (amp > 0.0).then(|| f64::atan2(-z.b1, -z.a1).rem_euclid(std::f64::consts::TAU));
+                    tilted.then(|| f64::atan2(-z.b1, -z.a1).rem_euclid(std::f64::consts::TAU));
                 (Problem::Closed(angle), None)
             }
             Pair::RimWall => {

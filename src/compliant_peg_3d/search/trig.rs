@@ -27,6 +27,12 @@ use super::interval::{Iv, down, up};
 /// The rounding allowance per unit of `Sⱼ` (`64 u`).
 const ROUND: f64 = 32.0 * f64::EPSILON;
 
+/// An upper bound on `√(a² + b²)`: the rounded root of the rounded sum
+/// errs by under two ulps, and `10⁻¹⁵⁰` covers squares that underflow.
+pub fn amplitude(a: f64, b: f64) -> f64 {
+    (a * a + b * b).sqrt() * (1.0 + 4.0 * f64::EPSILON) + 1e-150
+}
+
 /// `a₀ + a₁ cos θ + b₁ sin θ + a₂ cos 2θ + b₂ sin 2θ`.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Trig2 {
@@ -103,9 +109,9 @@ impl Trig2 {
         ]
     }
 
-    /// `(n₁, n₂)`: the amplitudes of the two harmonics.
+    /// `(n₁, n₂)`: the amplitudes of the two harmonics, rounded up.
     pub fn amplitudes(&self) -> (f64, f64) {
-        (self.a1.hypot(self.b1), self.a2.hypot(self.b2))
+        (amplitude(self.a1, self.b1), amplitude(self.a2, self.b2))
     }
 
     /// Whether the polynomial is constant (no harmonic).
