@@ -13,8 +13,10 @@ use crate::common::search_reference::{Geo, near_contact};
 use crate::insertion_split::insertion_peg;
 use nalgebra::{SVector, Unit, UnitQuaternion, Vector3};
 use pegdyn::compliant_peg_3d::search::CLEARANCE;
+use pegdyn::compliant_peg_3d::search::interval::Iv;
 use pegdyn::compliant_peg_3d::search::profile::Problem;
-use pegdyn::compliant_peg_3d::search::reuse::{Kind, Note, Shift};
+use pegdyn::compliant_peg_3d::search::reuse::{Carried, Kind, Note, Shift, carry};
+use pegdyn::compliant_peg_3d::search::trig::Enclosure;
 use pegdyn::compliant_peg_3d::{Pair, Peg3dParams};
 use std::f64::consts::TAU;
 
@@ -96,4 +98,39 @@ fn a_profiles_change_between_nearby_poses_stays_within_the_reuse_bounds() {
             }
         }
     }
+}
+
+/// A note of `kind` with `h ∈ [0, 1]`, and `h′`, `h″` as given.
+fn note(kind: Kind, d1: (f64, f64), d2: (f64, f64)) -> Note {
+    Note {
+        kind,
+        h: Enclosure {
+            value: Iv::new(0.0, 1.0),
+            d1: Iv::new(d1.0, d1.1),
+            d2: Iv::new(d2.0, d2.1),
+            refinable: true,
+        },
+        parts: None,
+    }
+}
+
+#[test]
+fn a_decision_carries_while_its_margin_exceeds_the_change() {
+    let convex = note(Kind::Convex, (-1.0, 1.0), (0.5, 2.0));
+    assert_eq!(carry(&convex, [0.1, 0.1, 0.4], 0.5), Carried::Convex);
+    assert_eq!(carry(&convex, [0.1, 0.1, 0.6], 0.5), Carried::Afresh);
+    let rising = note(Kind::Monotone, (0.3, 1.0), (-1.0, 1.0));
+    assert_eq!(carry(&rising, [0.1, 0.2, 9.0], 0.5), Carried::Clear);
+    assert_eq!(carry(&rising, [0.1, 0.4, 0.0], 0.5), Carried::Afresh);
+    let falling = note(Kind::Monotone, (-1.0, -0.3), (-1.0, 1.0));
+    assert_eq!(carry(&falling, [0.1, 0.2, 0.0], 0.5), Carried::Clear);
+    assert_eq!(carry(&falling, [0.1, 0.4, 0.0], 0.5), Carried::Afresh);
+    let concave = note(Kind::Concave, (-1.0, 1.0), (-2.0, -0.5));
+    assert_eq!(carry(&concave, [0.1, 9.0, 0.4], 0.5), Carried::Clear);
+    assert_eq!(carry(&concave, [0.1, 0.0, 0.6], 0.5), Carried::Afresh);
+    // Above the level by more than the value's change: dropped; a leaf or
+    // an ordered cut is always decided afresh.
+    assert_eq!(carry(&convex, [0.1, 0.0, 0.0], -0.2), Carried::Above(-0.1));
+    let leaf = note(Kind::Other, (0.3, 1.0), (0.5, 2.0));
+    assert_eq!(carry(&leaf, [0.0; 3], 0.5), Carried::Afresh);
 }

@@ -70,47 +70,40 @@ pub(super) fn lower(a: &mut Option<f64>, v: f64) {
 pub(super) type End = (f64, f64);
 
 /// The zero of `h′` in `[lo, hi]`, `h′` increasing there, from the slopes
-/// and curvatures at the ends, `h′(lo) ≤ 0 ≤ h′(hi)`: Newton on `h′`,
-/// with bisection whenever a step leaves the bracket or `h″ ≤ 0`, from
-/// the Newton step off the end nearer the zero (by the slopes' sizes, with
-/// that end's own `h″`), or else the secant. A zero at an end (a pose
-/// symmetric about that angle) is found in one step, or none.
+/// and curvatures at the ends, `h′(lo) ≤ 0 ≤ h′(hi)`: Newton on `h′`
+/// from the end nearer the zero (by the slopes' sizes), with bisection
+/// whenever a step leaves the bracket or `h″ ≤ 0`. The first step uses
+/// that end's `h′`, `h″` as given (evaluated at the end itself: the
+/// circle's end `2π`, whose slope the search takes at `0`, is evaluated
+/// again). A zero at an end (a pose symmetric about that angle) is found
+/// in one step.
 pub(super) fn newton(
     prof: &Profile,
     (mut lo, mut hi): (f64, f64),
-    (s_lo, c_lo): End,
-    (s_hi, c_hi): End,
+    at_lo: End,
+    at_hi: End,
     work: &mut Work,
 ) -> f64 {
-    if s_lo == 0.0 {
+    if at_lo.0 == 0.0 {
         return lo;
     }
-    if s_hi == 0.0 {
+    if at_hi.0 == 0.0 {
         return hi;
     }
-    let inside = |t: f64| t > lo && t < hi;
-    let (end, slope, curve) = if -s_lo < s_hi {
-        (lo, s_lo, c_lo)
+    let from_lo = -at_lo.0 < at_hi.0;
+    let mut a = if from_lo { lo } else { hi };
+    let mut known = if from_lo {
+        Some(at_lo)
+    } else if hi < TAU {
+        Some(at_hi)
     } else {
-        (hi, s_hi, c_hi)
+        None
     };
-    let step = end - slope / curve;
-    let secant = lo - s_lo * ((hi - lo) / (s_hi - s_lo));
-    let mut a = if curve > 0.0 && inside(step) {
-        step
-    } else if curve > 0.0 && (step - end).abs() <= 2.0 * f64::EPSILON * end.abs().max(1.0) {
-        // A step that rounds onto the end: the zero is there.
-        return end;
-    } else if inside(secant) {
-        secant
-    } else {
-        0.5 * (lo + hi)
-    };
-    // The last Newton step's length (`None` after a bisection).
-    let mut last: Option<f64> = None;
     for _ in 0..100 {
-        let (d1, d2) = prof.slope(a);
-        work.points += 1;
+        let (d1, d2) = known.take().unwrap_or_else(|| {
+            work.points += 1;
+            prof.slope(a)
+        });
         if d1 == 0.0 {
             return a;
         }
@@ -121,25 +114,18 @@ pub(super) fn newton(
         }
         let newton = a - d1 / d2;
         let resolution = 2.0 * f64::EPSILON * a.abs().max(1.0);
-        let step = (newton - a).abs();
         // A Newton step below the angle's resolution: `a` is the zero to
         // rounding (also where the zero lies on the bracket's end, which
         // a strict bracket test would otherwise bisect towards for ~50
         // steps: a pose symmetric about `0` or `π`).
-        if d2 > 0.0 && step <= resolution {
+        if d2 > 0.0 && (newton - a).abs() <= resolution {
             return a;
         }
-        let converging = d2 > 0.0 && newton > lo && newton < hi;
-        // Quadratic convergence: the step after this one is about
-        // `step² / last` times this one's ratio, so the error left after
-        // this step is about `step³ / last²`; below the resolution, the
-        // step lands on the zero to rounding and needs no evaluation.
-        if converging && last.is_some_and(|l| step < l && step * step * step <= resolution * l * l)
-        {
-            return newton;
-        }
-        let next = if converging { newton } else { 0.5 * (lo + hi) };
-        last = converging.then_some(step);
+        let next = if d2 > 0.0 && newton > lo && newton < hi {
+            newton
+        } else {
+            0.5 * (lo + hi)
+        };
         if (next - a).abs() <= resolution || next <= lo || next >= hi {
             return next.clamp(lo, hi);
         }
