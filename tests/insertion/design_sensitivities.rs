@@ -814,7 +814,7 @@ fn the_least_no_jam_margin_has_the_one_point_slides_derivatives() {
     // friction, (1/μ) v_s²/(v³ √(1 + (v_s/v)²)) along the speed, zero
     // along the geometry and the wrist (central differences of plain runs
     // resolve them only to their noise, 1e-4 per unit). Here the
-    // elasticities lie within 3.2e-7 of these; over tolerances from 1e-9
+    // elasticities lie within 8.8e-7 of these; over tolerances from 1e-9
     // to 1e-11 the distance ranges from 4e-9 to 3e-5
     // (docs/sensitivities.md, "The least no-jam margin").
     let s = scene(&[
