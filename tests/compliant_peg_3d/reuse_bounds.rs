@@ -11,7 +11,7 @@ use crate::common::peg3d::fig9;
 use crate::common::rng::Rng;
 use crate::common::search_reference::{Geo, near_contact};
 use crate::insertion_split::insertion_peg;
-use nalgebra::{SVector, Unit, UnitQuaternion, Vector3};
+use crate::tracked_search::moved;
 use pegdyn::compliant_peg_3d::search::CLEARANCE;
 use pegdyn::compliant_peg_3d::search::interval::Iv;
 use pegdyn::compliant_peg_3d::search::profile::Problem;
@@ -19,17 +19,6 @@ use pegdyn::compliant_peg_3d::search::reuse::{Carried, Kind, Note, Shift, carry}
 use pegdyn::compliant_peg_3d::search::trig::Enclosure;
 use pegdyn::compliant_peg_3d::{Pair, Peg3dParams};
 use std::f64::consts::TAU;
-
-/// `x` moved by `size` (m) in a random direction and turned by
-/// `size / 0.02` rad about a random axis.
-fn moved(x: &SVector<f64, 7>, size: f64, rng: &mut Rng) -> SVector<f64, 7> {
-    let dir = Vector3::from_fn(|_, _| rng.uniform(-1.0, 1.0));
-    let axis = Unit::new_normalize(Vector3::from_fn(|_, _| rng.uniform(-1.0, 1.0)));
-    let q0 = UnitQuaternion::new_normalize(nalgebra::Quaternion::new(x[3], x[4], x[5], x[6]));
-    let q = UnitQuaternion::from_axis_angle(&axis, size / 0.02) * q0;
-    let p = Vector3::new(x[0], x[1], x[2]) + dir.normalize() * size;
-    SVector::from([p.x, p.y, p.z, q.w, q.i, q.j, q.k])
-}
 
 /// The largest ratio of change to bound seen for `h`, `h′`, `h″`, and
 /// the arcs compared, for `pair`; panics at a change above its bound.

@@ -22,7 +22,7 @@ use std::f64::consts::PI;
 
 /// `x` moved by `size` (m) in a random direction and turned by
 /// `size / 0.02` rad about a random axis.
-fn moved(x: &SVector<f64, 7>, size: f64, rng: &mut Rng) -> SVector<f64, 7> {
+pub(crate) fn moved(x: &SVector<f64, 7>, size: f64, rng: &mut Rng) -> SVector<f64, 7> {
     let dir = Vector3::from_fn(|_, _| rng.uniform(-1.0, 1.0));
     let axis = Unit::new_normalize(Vector3::from_fn(|_, _| rng.uniform(-1.0, 1.0)));
     let q0 = UnitQuaternion::new_normalize(nalgebra::Quaternion::new(x[3], x[4], x[5], x[6]));
@@ -274,7 +274,8 @@ fn slid(x: &SVector<f64, 7>, rng: &mut Rng) -> SVector<f64, 7> {
     x
 }
 
-fn check(w: &Walks, starts: usize) {
+/// Prints what the walks compared and fails on any mismatch.
+fn report(w: &Walks) {
     eprintln!(
         "{} tracked searches ({} windowed), {} certified clear, {} contacts matched, {} failures",
         w.tracked,
@@ -288,6 +289,10 @@ fn check(w: &Walks, starts: usize) {
         "{}",
         w.failures[..w.failures.len().min(10)].join("\n")
     );
+}
+
+fn check(w: &Walks, starts: usize) {
+    report(w);
     // The walks exercise the tracked search and meet contacts.
     assert!(w.tracked > starts, "{} tracked searches", w.tracked);
     assert!(w.windowed > starts / 10, "{} windowed searches", w.windowed);
@@ -328,18 +333,7 @@ fn a_tracked_search_finds_the_fresh_searchs_contacts_as_the_peg_pivots_and_spins
 fn a_search_certified_off_the_faces_finds_the_fresh_searchs_contacts_as_the_rim_slides_across() {
     let starts = 20_000;
     let w = walks_across(&fig9(), 0x72AC_0006, starts);
-    eprintln!(
-        "{} searches certified off the face, {} certified clear, {} contacts matched, {} failures",
-        w.windowed,
-        w.cached,
-        w.matched,
-        w.failures.len()
-    );
-    assert!(
-        w.failures.is_empty(),
-        "{}",
-        w.failures[..w.failures.len().min(10)].join("\n")
-    );
+    report(&w);
     // The plane pairs keep no tracked record: the walks exercise the
     // certificate off the face and its reuse, and meet contacts.
     assert!(w.windowed > starts / 20, "{} off the face", w.windowed);
@@ -407,17 +401,7 @@ fn a_tracked_search_finds_the_fresh_searchs_contacts_through_a_splitting_minimum
             x
         },
     );
-    eprintln!(
-        "{} tracked searches, {} contacts matched, {} failures",
-        w.tracked,
-        w.matched,
-        w.failures.len()
-    );
-    assert!(
-        w.failures.is_empty(),
-        "{}",
-        w.failures[..w.failures.len().min(10)].join("\n")
-    );
+    report(&w);
     assert!(
         w.tracked > starts && w.matched > starts,
         "{} {}",
