@@ -39,13 +39,15 @@ const CHUNK: usize = 10_000;
 fn report(t: &Tally, seconds: f64) {
     println!(
         "{} poses, {} pair searches, {seconds:.1} s wall: reference contacts by pair {:?} \
-         ({:?}), misses and other failures {}, unresolved plateaus {}, library-only minima {}, \
+         ({:?}), of them valid (compared with the contact path) {:?}, misses and other \
+         failures {}, unresolved plateaus {}, library-only minima {}, \
          largest gap error {:e} m, point error {:e} m (tolerance {TOL:e}), most arcs {}, \
          reference evaluations {} ({SAMPLES} samples per circle)",
         t.poses,
         t.searches,
         t.contacts,
         Pair::ALL,
+        t.valid,
         t.failed,
         t.unresolved,
         t.library_only,
