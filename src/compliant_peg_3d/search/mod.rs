@@ -307,9 +307,14 @@ impl Search {
         p: &SVector<f64, 16>,
         below: f64,
     ) -> Angles {
-        let mut out = Angles::new();
         self.work = Work::default();
-        match Problem::of(pair, x, p, below) {
+        self.minima_of(Problem::of(pair, x, p, below))
+    }
+
+    /// The minima of a search problem already built (see [`Search::minima`]).
+    fn minima_of(&mut self, problem: Problem) -> Angles {
+        let mut out = Angles::new();
+        match problem {
             Problem::Nothing | Problem::Off(_) | Problem::Invalid(_) => {}
             Problem::Closed(None) => self.work.flat = true,
             Problem::Closed(Some(a)) => {
@@ -373,9 +378,10 @@ impl Search {
                 self.tracked = None;
                 return (out, least);
             }
-            _ => {
+            // The plane pairs' closed form, or nothing below the clearance.
+            (problem, _) => {
                 self.tracked = None;
-                return (self.minima(pair, x, p, CLEARANCE), CLEARANCE);
+                return (self.minima_of(problem), CLEARANCE);
             }
         };
         let mut kept = certified::Kept::default();

@@ -136,8 +136,7 @@ pub fn gap_at_least(pair: Pair, p: &SVector<f64, 16>, h_lo: f64) -> f64 {
 /// `F = |c_xy|²` keeps within `a₀ ± (n₁ + n₂)`. `None` where the circle
 /// may reach the face.
 fn off_face(pair: Pair, f: &Trig2, big_r: f64, rho_h: f64) -> Option<f64> {
-    let n1 = (f.a1 * f.a1 + f.b1 * f.b1).sqrt();
-    let n2 = (f.a2 * f.a2 + f.b2 * f.b2).sqrt();
+    let (n1, n2) = f.amplitudes();
     // The range's rounding: a few ulps of its terms.
     let slack = 1e-12 * (f.a0.abs() + n1 + n2);
     let out = match pair {
@@ -170,7 +169,7 @@ fn off_face_at(pair: Pair, f: &Trig2, (c, s): (f64, f64), big_r: f64, rho_h: f64
 /// no point has a gap below `below` (the sum of the tubes' radii and
 /// `below` not positive). The bore wall's `h = −F` is below every level
 /// when `R − ρ_p − below ≤ 0`: its level is then `+∞`.
-pub fn level(pair: Pair, p: &SVector<f64, 16>, below: f64) -> Option<f64> {
+fn level(pair: Pair, p: &SVector<f64, 16>, below: f64) -> Option<f64> {
     let (r, rho_p, big_r, rho_h) = (p[0], p[2], p[3], p[4]);
     let positive = |v: f64| if v > 0.0 { Some(v * v) } else { None };
     match pair {

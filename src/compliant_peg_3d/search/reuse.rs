@@ -43,7 +43,7 @@
 
 use super::interval::{Iv, down};
 use super::profile::Profile;
-use super::trig::{Enclosure, Trig2};
+use super::trig::{Enclosure, Trig2, amplitude};
 
 /// How a kept arc was decided at the record's pose.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -80,8 +80,7 @@ fn changes(old: &Trig2, new: &Trig2) -> [f64; 3] {
         new.a2 - old.a2,
         new.b2 - old.b2,
     );
-    let n1 = (d1 * d1 + e1 * e1).sqrt();
-    let n2 = (d2 * d2 + e2 * e2).sqrt();
+    let (n1, n2) = (amplitude(d1, e1), amplitude(d2, e2));
     [
         widen(d0.abs() + n1 + n2),
         widen(n1 + 2.0 * n2),
